@@ -1,0 +1,1 @@
+//! Finite-element core (beams, springs, rigid links, sparse Cholesky).

@@ -1,0 +1,8 @@
+//! flexfem — a fast, validated 3D beam/shell finite-element solver for compliant mechanisms.
+//!
+//! Units throughout: mm, N, MPa, s, tonne; angles in radians inside the library, degrees in
+//! case files and results.
+
+pub mod fem;
+pub mod kinematics;
+pub mod material;

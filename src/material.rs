@@ -1,0 +1,74 @@
+//! Linear-elastic isotropic materials and the built-in library (SPEC.md §2).
+
+use serde::{Deserialize, Serialize};
+
+/// A linear-elastic isotropic material in the mm–N–MPa–tonne system.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Material {
+    /// Young's modulus E, MPa (N/mm²).
+    #[serde(rename = "E")]
+    pub e: f64,
+    /// Poisson's ratio ν, dimensionless, in (−1, 0.5).
+    pub nu: f64,
+    /// Density ρ, tonne/mm³ (Al 7075: 2.81e-9).
+    #[serde(default)]
+    pub density: f64,
+    /// Tensile yield strength, MPa.
+    #[serde(default = "default_strength", rename = "yield")]
+    pub yield_strength: f64,
+    /// Allowable (design) stress, MPa.
+    #[serde(default = "default_strength")]
+    pub allowable: f64,
+}
+
+fn default_strength() -> f64 {
+    f64::INFINITY
+}
+
+impl Material {
+    /// Aluminium 7075-T6 as used by Ruiz et al. (seed 000 §4–5): E = 72 GPa, ν = 0.33,
+    /// ρ = 2.81 g/cm³, yield 503 MPa, allowable 400 MPa.
+    pub const AL7075: Material = Material {
+        e: 72_000.0,
+        nu: 0.33,
+        density: 2.81e-9,
+        yield_strength: 503.0,
+        allowable: 400.0,
+    };
+    /// Nylon 66 as used for the 8R pan-tilt mechanism (seed 002): E = 3.3 GPa, ν = 0.33, ρ = 1.15 g/cm³.
+    /// Yield 80 MPa (typical datasheet value, dry), allowable 50 MPa.
+    pub const NYLON66: Material = Material {
+        e: 3_300.0,
+        nu: 0.33,
+        density: 1.15e-9,
+        yield_strength: 80.0,
+        allowable: 50.0,
+    };
+    /// Generic structural steel: E = 210 GPa (seed 004), ν = 0.3, ρ = 7.85 g/cm³, yield 355 MPa, allowable 235 MPa.
+    pub const STEEL: Material = Material {
+        e: 210_000.0,
+        nu: 0.3,
+        density: 7.85e-9,
+        yield_strength: 355.0,
+        allowable: 235.0,
+    };
+
+    /// Names accepted for built-in materials.
+    pub const BUILTIN_NAMES: [&'static str; 3] = ["Al7075", "nylon66", "steel"];
+
+    /// Looks up a built-in material by name (case-insensitive).
+    pub fn builtin(name: &str) -> Option<Material> {
+        match name.to_ascii_lowercase().as_str() {
+            "al7075" => Some(Self::AL7075),
+            "nylon66" => Some(Self::NYLON66),
+            "steel" => Some(Self::STEEL),
+            _ => None,
+        }
+    }
+
+    /// Shear modulus G = E / (2(1 + ν)), MPa.
+    pub fn shear_modulus(&self) -> f64 {
+        self.e / (2.0 * (1.0 + self.nu))
+    }
+}
