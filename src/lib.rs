@@ -4,5 +4,7 @@
 //! case files and results.
 
 pub mod fem;
+pub mod hinge;
 pub mod kinematics;
 pub mod material;
+pub mod report;
