@@ -1,0 +1,8 @@
+//! Rigid-body kinematics of the 3-PRS parallel mechanism: IKP, FKP, parasitic motion, passive
+//! joint rotations, Jacobians and the requirement sweep (SPEC.md §3).
+
+pub mod prs;
+pub mod workspace;
+
+pub use prs::{FkpSolution, IkpSolution, KinematicsError, Pose, Prs};
+pub use workspace::{PoseBox, WorkspaceRanges};
