@@ -1,0 +1,37 @@
+//! Peak stress of a hinge under a compliant-axis moment.
+//!
+//! Beam theory gives the nominal stress at the waist; the notch raises it by a
+//! stress-concentration factor. For circular notches in flat bending we use the fit
+//! K_t = (1 + t/(2ρ))^{9/20}, ρ the notch root radius, which Tian, Shirinzadeh & Zhang
+//! (Precision Engineering 34 (2010) 92–100, after Pilkey's *Peterson's Stress Concentration
+//! Factors*) and Chen et al. use for circular and filleted flexure hinges. Root radius:
+//! R for circular and corner-filleted notches, a_x²/a_y for the ellipse (its curvature radius
+//! at the waist), R for the turned neck (the same fit applied to the groove of a round bar — an
+//! approximation, noted in the result's `model`). A leaf has K_t = 1 (beam stress; the clamped
+//! re-entrant corners are not modelled).
+
+use std::f64::consts::PI;
+
+use super::profile::{Contour, Profile};
+
+/// Notch stress-concentration factor K_t (≥ 1).
+pub fn stress_concentration(profile: &Profile) -> f64 {
+    let (t, rho) = match profile.contour {
+        Contour::Circular { r, t } => (t, r),
+        Contour::Elliptical { ax, ay, t } => (t, ax * ax / ay),
+        Contour::CornerFilleted { r, t, .. } => (t, r),
+        Contour::SphericalNeck { t, r, .. } => (t, r),
+        Contour::Leaf { .. } => return 1.0,
+    };
+    (1.0 + t / (2.0 * rho)).powf(0.45)
+}
+
+/// Nominal (beam) peak bending stress at the waist per unit compliant-axis moment, MPa/(N·mm):
+/// 6/(w t²) for rectangles, 32/(π t³) for the turned neck (diameter t).
+pub fn nominal_stress_per_moment(profile: &Profile) -> f64 {
+    let t = profile.t_min();
+    match profile.contour {
+        Contour::SphericalNeck { .. } => 32.0 / (PI * t.powi(3)),
+        _ => 6.0 / (profile.w * t * t),
+    }
+}
