@@ -1,1 +1,36 @@
-//! Finite-element core (beams, springs, rigid links, sparse Cholesky).
+//! Finite-element core: 3D Timoshenko/Euler–Bernoulli beams, flexibility (compliance) elements,
+//! 6-DOF springs, rigid links by master–slave elimination, supports and prescribed displacements,
+//! sparse Cholesky (faer, behind [`solve`]), stress recovery and node compliance.
+//!
+//! Units: mm, N, MPa, tonne; rotations in radians. Every node carries six DOFs
+//! `ux uy uz rx ry rz` in global axes.
+//!
+//! Flow: [`model::Model`] (plain data) → [`constraints::DofMap`] (validated DOF numbering,
+//! rigid links eliminated) → [`assembly::Pattern`] (sparsity once per topology) + values →
+//! [`solve::SymbolicFactor`] / [`solve::Factor`] → [`analysis::System`] solves load cases →
+//! [`recovery`] (end forces, stresses, reactions).
+
+pub mod analysis;
+pub mod assembly;
+pub mod constraints;
+pub mod dof;
+pub mod element;
+pub mod error;
+pub mod lattice;
+pub mod model;
+pub mod recovery;
+pub mod section;
+pub mod solve;
+pub mod transform;
+
+pub use analysis::{solve_static, CaseResult, StaticResults, System};
+pub use dof::{Dof, NodeDof};
+pub use error::FemError;
+pub use model::{
+    Beam, Element, FlexElement, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink,
+    Spring, SpringAxes, Support,
+};
+pub use section::{Section, SectionProps};
+
+/// Result alias for the FEM core.
+pub type Result<T> = std::result::Result<T, FemError>;

@@ -1,0 +1,460 @@
+//! Linear static analysis: one factorisation per set of constrained DOFs, many load cases per
+//! factorisation, singular-model diagnosis, node compliance.
+
+use super::assembly::Pattern;
+use super::constraints::{DofMap, NONE};
+use super::dof::NodeDof;
+use super::error::FemError;
+use super::model::{Element, LoadCase, Model};
+use super::recovery::{self, ElementResult, Statics};
+use super::solve::{Factor, FactorError, Parallelism, SparseMatrix, SymbolicFactor};
+use nalgebra::Matrix6;
+
+/// Results of one load case.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CaseResult {
+    pub name: String,
+    /// Per node [ux, uy, uz (mm), rx, ry, rz (rad)], global axes.
+    pub displacements: Vec<[f64; 6]>,
+    /// Support reactions (force the support exerts on the structure) per constrained node,
+    /// sorted by node: [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)], global axes, zero on free DOFs.
+    /// Includes the loads of rigid-link slaves carried by a supported master.
+    pub reactions: Vec<(usize, [f64; 6])>,
+    /// Per element (model order): end forces, section forces, stresses, energy.
+    pub elements: Vec<ElementResult>,
+    /// Largest von Mises stress over all elements with stress points, MPa (`None` if no
+    /// element has stress points).
+    pub max_von_mises: Option<f64>,
+    /// Statics check (sums about the global origin).
+    pub statics: Statics,
+}
+
+/// Results of all load cases of a model, in model order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StaticResults {
+    pub load_cases: Vec<CaseResult>,
+}
+
+/// The reduced, factorised system for one set of constrained DOFs: DOF map, pattern, matrix,
+/// factor. Solve any number of load cases whose prescribed DOFs are exactly `prescribed`.
+#[derive(Debug, Clone)]
+pub struct System {
+    map: DofMap,
+    prescribed: Vec<NodeDof>,
+    pattern: Pattern,
+    k: SparseMatrix,
+    factor: Factor,
+}
+
+/// Prescribed DOFs of a load case, sorted.
+pub fn prescribed_dofs(case: &LoadCase) -> Vec<NodeDof> {
+    let mut v: Vec<NodeDof> = case
+        .displacements
+        .iter()
+        .map(|p| NodeDof {
+            node: p.node,
+            dof: p.dof,
+        })
+        .collect();
+    v.sort();
+    v.dedup();
+    v
+}
+
+impl System {
+    /// Validates the model, numbers the DOFs (supports + `prescribed` constrained, rigid links
+    /// eliminated), assembles, checks for unconstrained DOFs and free bodies, and factorises.
+    pub fn new(
+        model: &Model,
+        prescribed: &[NodeDof],
+        par: Parallelism,
+    ) -> Result<System, FemError> {
+        model.validate()?;
+        let map = DofMap::new(model, prescribed, None)?;
+        let pattern = Pattern::new(model, &map)?;
+        let symbolic = SymbolicFactor::new(pattern.sparse())?;
+        Self::build(model, map, prescribed, pattern, &symbolic, par)
+    }
+
+    /// Like [`System::new`] but reusing the pattern and symbolic factorisation of `other`
+    /// (same topology, e.g. another design of a sweep): only values and the numeric factor are
+    /// computed. Errors with `PatternMismatch` if the topology differs.
+    pub fn with_topology_of(
+        other: &System,
+        model: &Model,
+        par: Parallelism,
+    ) -> Result<System, FemError> {
+        model.validate()?;
+        let map = DofMap::new(model, &other.prescribed, None)?;
+        if !other.pattern.matches(model, &map) || map.eq_dof != other.map.eq_dof {
+            return Err(FemError::PatternMismatch(
+                "model topology differs from the reused system".into(),
+            ));
+        }
+        Self::build(
+            model,
+            map,
+            &other.prescribed,
+            other.pattern.clone(),
+            other.factor.symbolic(),
+            par,
+        )
+    }
+
+    fn build(
+        model: &Model,
+        map: DofMap,
+        prescribed: &[NodeDof],
+        pattern: Pattern,
+        symbolic: &SymbolicFactor,
+        par: Parallelism,
+    ) -> Result<System, FemError> {
+        let k = pattern.assemble(model, &map)?;
+        check_unconstrained(&map, &k)?;
+        check_free_bodies(model, &map)?;
+        let factor = match Factor::new(symbolic, &k, par) {
+            Ok(f) => f,
+            Err(FactorError::NotPositiveDefinite) => {
+                return Err(diagnose_mechanism(&map, &k, symbolic, par))
+            }
+            Err(FactorError::Other(s)) => return Err(FemError::Solver(s)),
+        };
+        Ok(System {
+            map,
+            prescribed: prescribed.to_vec(),
+            pattern,
+            k,
+            factor,
+        })
+    }
+
+    /// New element values (e.g. changed sections or materials, same topology and coordinates
+    /// topology-wise): reassemble on the same pattern and refactorise numerically.
+    pub fn refactor(&mut self, model: &Model) -> Result<(), FemError> {
+        let map = DofMap::new(model, &self.prescribed, None)?;
+        if map.eq_dof != self.map.eq_dof {
+            return Err(FemError::PatternMismatch(
+                "equation numbering changed".into(),
+            ));
+        }
+        let k = self.pattern.assemble(model, &map)?;
+        match self.factor.refactor(&k) {
+            Ok(()) => {}
+            Err(FactorError::NotPositiveDefinite) => {
+                return Err(diagnose_mechanism(
+                    &map,
+                    &k,
+                    self.factor.symbolic(),
+                    Parallelism::Sequential,
+                ))
+            }
+            Err(FactorError::Other(s)) => return Err(FemError::Solver(s)),
+        }
+        self.map = map;
+        self.k = k;
+        Ok(())
+    }
+
+    /// DOF map (equation numbering).
+    pub fn dof_map(&self) -> &DofMap {
+        &self.map
+    }
+    /// Reduced stiffness (lower triangle).
+    pub fn matrix(&self) -> &SparseMatrix {
+        &self.k
+    }
+    /// Pattern (reusable for sweeps).
+    pub fn pattern(&self) -> &Pattern {
+        &self.pattern
+    }
+    /// Numeric factor.
+    pub fn factor(&self) -> &Factor {
+        &self.factor
+    }
+    /// Prescribed DOFs this system was built for.
+    pub fn prescribed(&self) -> &[NodeDof] {
+        &self.prescribed
+    }
+
+    /// Solves several load cases with one batched solve. Each case must prescribe exactly the
+    /// DOFs of this system (values may differ).
+    pub fn solve_cases(
+        &self,
+        model: &Model,
+        cases: &[&LoadCase],
+    ) -> Result<Vec<CaseResult>, FemError> {
+        let n = self.map.n_eq();
+        let nd = model.n_dofs();
+        let mut rhs = Vec::with_capacity(n * cases.len());
+        let mut u_c_all = Vec::with_capacity(cases.len());
+        let mut f_all = Vec::with_capacity(cases.len());
+        for case in cases {
+            model.validate_case(case)?;
+            if prescribed_dofs(case) != self.prescribed {
+                return Err(FemError::LoadCase {
+                    case: case.name.clone(),
+                    reason: "its prescribed DOFs differ from the system's (use solve_static to group cases)".into(),
+                });
+            }
+            let mut f = vec![0.0; nd];
+            for l in &case.forces {
+                for d in 0..6 {
+                    f[6 * l.node + d] += l.f[d];
+                }
+            }
+            let mut u_c = vec![0.0; nd];
+            for p in &case.displacements {
+                u_c[6 * p.node + p.dof.index()] = p.value;
+            }
+            // f_red = Aᵀ (f − K u_c) with u_c expanded to slaves (none can be prescribed).
+            let u_c_full = self.map.expand(&vec![0.0; n], &u_c);
+            let mut g = f.clone();
+            if u_c_full.iter().any(|&v| v != 0.0) {
+                let ku = recovery::internal_forces(model, &u_c_full)?;
+                for (gi, ki) in g.iter_mut().zip(&ku) {
+                    *gi -= ki;
+                }
+            }
+            rhs.extend(self.map.reduce(&g));
+            u_c_all.push(u_c);
+            f_all.push(f);
+        }
+        self.factor.solve_in_place(&mut rhs, cases.len())?;
+        cases
+            .iter()
+            .enumerate()
+            .map(|(i, case)| {
+                let u = self.map.expand(&rhs[i * n..(i + 1) * n], &u_c_all[i]);
+                recovery::case_result(model, &self.map, &case.name, &u, &f_all[i])
+            })
+            .collect()
+    }
+
+    /// 6×6 compliance of `node` (displacement/rotation of the node per unit force/moment at the
+    /// node, global axes; mm/N, rad/N, rad/(N·mm)) with this system's constraints (prescribed
+    /// DOFs held at zero). Rows/columns of constrained DOFs are zero.
+    pub fn node_compliance(&self, model: &Model, node: usize) -> Result<Matrix6<f64>, FemError> {
+        if node >= model.nodes.len() {
+            return Err(FemError::NodeOutOfRange {
+                what: "node compliance".into(),
+                node,
+                n_nodes: model.nodes.len(),
+            });
+        }
+        let n = self.map.n_eq();
+        let nd = model.n_dofs();
+        let mut rhs = Vec::with_capacity(6 * n);
+        for d in 0..6 {
+            let mut f = vec![0.0; nd];
+            f[6 * node + d] = 1.0;
+            rhs.extend(self.map.reduce(&f));
+        }
+        self.factor.solve_in_place(&mut rhs, 6)?;
+        let zero = vec![0.0; nd];
+        let mut c = Matrix6::zeros();
+        for j in 0..6 {
+            let u = self.map.expand(&rhs[j * n..(j + 1) * n], &zero);
+            for i in 0..6 {
+                c[(i, j)] = u[6 * node + i];
+            }
+        }
+        Ok((c + c.transpose()) * 0.5)
+    }
+
+    /// 6×6 stiffness of `node` = inverse of [`System::node_compliance`]. Errors if any DOF of
+    /// the node is constrained (the compliance is then singular).
+    pub fn node_stiffness(&self, model: &Model, node: usize) -> Result<Matrix6<f64>, FemError> {
+        let c = self.node_compliance(model, node)?;
+        let rep = self.map.rep[node];
+        let fixed: Vec<NodeDof> = (0..6)
+            .filter(|&d| self.map.eq[6 * rep + d] == NONE)
+            .map(|d| NodeDof::from_global(6 * rep + d))
+            .collect();
+        if !fixed.is_empty() {
+            return Err(FemError::BadInput(format!(
+                "node {node}: no stiffness matrix, {} constrained",
+                super::dof::describe(&fixed)
+            )));
+        }
+        c.cholesky().map(|ch| ch.inverse()).ok_or_else(|| {
+            FemError::Solver(format!("node {node}: compliance not positive definite"))
+        })
+    }
+
+    /// Writes the reduced stiffness in Matrix Market format.
+    pub fn write_matrix_market(&self, path: &std::path::Path) -> Result<(), FemError> {
+        let mut f = std::fs::File::create(path)?;
+        self.k.write_matrix_market(&mut f)?;
+        Ok(())
+    }
+}
+
+/// Solves every load case of the model. Cases are grouped by their set of prescribed DOFs;
+/// each group shares one factorisation.
+pub fn solve_static(model: &Model) -> Result<StaticResults, FemError> {
+    solve_static_with(model, Parallelism::Rayon)
+}
+
+/// [`solve_static`] with explicit solver parallelism.
+pub fn solve_static_with(model: &Model, par: Parallelism) -> Result<StaticResults, FemError> {
+    model.validate()?;
+    let mut groups: Vec<(Vec<NodeDof>, Vec<usize>)> = Vec::new();
+    for (i, case) in model.load_cases.iter().enumerate() {
+        let key = prescribed_dofs(case);
+        match groups.iter_mut().find(|(k, _)| *k == key) {
+            Some((_, v)) => v.push(i),
+            None => groups.push((key, vec![i])),
+        }
+    }
+    let mut out: Vec<Option<CaseResult>> = vec![None; model.load_cases.len()];
+    for (key, idx) in groups {
+        // Check the constraint set with the case name for a precise message.
+        if let Some(&first) = idx.first() {
+            DofMap::new(model, &key, Some(&model.load_cases[first].name))?;
+        }
+        let sys = System::new(model, &key, par)?;
+        let cases: Vec<&LoadCase> = idx.iter().map(|&i| &model.load_cases[i]).collect();
+        for (i, r) in idx.iter().zip(sys.solve_cases(model, &cases)?) {
+            out[*i] = Some(r);
+        }
+    }
+    Ok(StaticResults {
+        load_cases: out.into_iter().flatten().collect(),
+    })
+}
+
+/// Free equations whose diagonal stiffness is zero (relative to the largest diagonal of the
+/// same kind — translations and rotations have different units).
+fn check_unconstrained(map: &DofMap, k: &SparseMatrix) -> Result<(), FemError> {
+    let d = k.diagonal();
+    let mut max = [0.0_f64; 2];
+    for (i, &v) in d.iter().enumerate() {
+        let kind = usize::from(map.eq_dof[i] % 6 >= 3);
+        max[kind] = max[kind].max(v.abs());
+    }
+    let dofs: Vec<NodeDof> = d
+        .iter()
+        .enumerate()
+        .filter(|&(i, &v)| {
+            let kind = usize::from(map.eq_dof[i] % 6 >= 3);
+            !(v > 1e-13 * max[kind])
+        })
+        .map(|(i, _)| map.describe_eq(i))
+        .collect();
+    if dofs.is_empty() {
+        Ok(())
+    } else {
+        Err(FemError::Unconstrained { dofs })
+    }
+}
+
+fn find(parent: &mut [usize], mut i: usize) -> usize {
+    while parent[i] != i {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    i
+}
+
+/// Connected parts (through elements and rigid links) without any support, prescribed DOF or
+/// ground spring.
+fn check_free_bodies(model: &Model, map: &DofMap) -> Result<(), FemError> {
+    let n = model.nodes.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    let mut grounded = vec![false; n];
+    for e in &model.elements {
+        let nodes = e.nodes();
+        if let Element::Spring(s) = e {
+            if s.b.is_none() {
+                if s.k.iter().any(|&k| k > 0.0) {
+                    grounded[map.rep[s.a]] = true;
+                }
+                continue;
+            }
+        }
+        if nodes.len() == 2 {
+            let (a, b) = (
+                find(&mut parent, map.rep[nodes[0]]),
+                find(&mut parent, map.rep[nodes[1]]),
+            );
+            parent[a] = b;
+        }
+    }
+    for &g in &map.constrained {
+        grounded[g / 6] = true;
+    }
+    let mut comp_grounded = vec![false; n];
+    for i in 0..n {
+        if grounded[i] {
+            let r = find(&mut parent, i);
+            comp_grounded[r] = true;
+        }
+    }
+    let mut free: Vec<usize> = Vec::new();
+    let mut first_root = NONE;
+    for i in 0..n {
+        let r = find(&mut parent, map.rep[i]);
+        if !comp_grounded[r] && (first_root == NONE || first_root == r) {
+            first_root = r;
+            free.push(i);
+        }
+    }
+    if free.is_empty() {
+        Ok(())
+    } else {
+        Err(FemError::FreeBody { nodes: free })
+    }
+}
+
+/// After a failed factorisation: inverse iteration on K + εD (D = diag K) finds the
+/// null-space motion; the DOFs that take part in it (energy-scaled amplitude ≥ 1 % of the
+/// largest) are reported.
+fn diagnose_mechanism(
+    map: &DofMap,
+    k: &SparseMatrix,
+    symbolic: &SymbolicFactor,
+    par: Parallelism,
+) -> FemError {
+    let d = k.diagonal();
+    let n = d.len();
+    for eps in [1e-12, 1e-10, 1e-8, 1e-6] {
+        let ks = k.shifted_scaled(eps);
+        let Ok(f) = Factor::new(symbolic, &ks, par) else {
+            continue;
+        };
+        // Deterministic pseudo-random start (no zero components).
+        let mut x: Vec<f64> = (0..n)
+            .map(|i| 1.0 + ((i as f64) * 0.618_033_988_75).fract())
+            .collect();
+        for _ in 0..4 {
+            let mut y: Vec<f64> = x.iter().zip(&d).map(|(xi, di)| xi * di).collect();
+            if f.solve_in_place(&mut y, 1).is_err() {
+                break;
+            }
+            let norm = y
+                .iter()
+                .zip(&d)
+                .map(|(yi, di)| yi * yi * di)
+                .sum::<f64>()
+                .sqrt();
+            if !(norm > 0.0 && norm.is_finite()) {
+                break;
+            }
+            x = y.iter().map(|v| v / norm).collect();
+        }
+        let amp: Vec<f64> = x
+            .iter()
+            .zip(&d)
+            .map(|(xi, di)| xi.abs() * di.abs().sqrt())
+            .collect();
+        let max = amp.iter().cloned().fold(0.0, f64::max);
+        let dofs: Vec<NodeDof> = amp
+            .iter()
+            .enumerate()
+            .filter(|&(_, &a)| a >= 1e-2 * max)
+            .map(|(i, _)| map.describe_eq(i))
+            .collect();
+        return FemError::Mechanism { dofs };
+    }
+    FemError::Solver("stiffness matrix is not positive definite (negative stiffness?)".into())
+}

@@ -1,0 +1,276 @@
+//! Recovery: element end forces and section forces in local axes, stresses at the section's
+//! critical points (von Mises), reactions and the statics check (PyNite's `_check_statics`).
+
+use super::analysis::CaseResult;
+use super::constraints::DofMap;
+use super::error::FemError;
+use super::model::{Element, Model};
+use super::section::{Section, SectionProps, StressPoint};
+use nalgebra::{SVector, Vector3};
+use rayon::prelude::*;
+
+/// Per-element results of a load case, local axes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ElementResult {
+    /// Forces the nodes exert on the element, f = k·d, at node 1 and node 2:
+    /// [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)] in element local axes (spring axes for springs;
+    /// for a ground spring the first entry is the spring force k·δ, the second is zero).
+    pub end_forces: [[f64; 6]; 2],
+    /// Internal section forces [N, Vy, Vz (N), T, My, Mz (N·mm)] at end 1 and end 2
+    /// (positive-face convention: N > 0 in tension; s₁ = −f₁, s₂ = f₂).
+    pub section_forces: [[f64; 6]; 2],
+    /// Largest von Mises stress at end 1 and end 2, MPa (`None` without stress points).
+    /// For unloaded prismatic beams the section forces vary linearly, so the ends bound the
+    /// element.
+    pub von_mises: Option<[f64; 2]>,
+    /// Strain energy ½ dᵀ k d, N·mm.
+    pub strain_energy: f64,
+}
+
+impl ElementResult {
+    /// Largest von Mises stress of the element, MPa.
+    pub fn max_von_mises(&self) -> Option<f64> {
+        self.von_mises.map(|v| v[0].max(v[1]))
+    }
+}
+
+/// Resultants about the global origin: [Fx, Fy, Fz, Mx, My, Mz] (N, N·mm).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Statics {
+    /// Sum of applied nodal loads.
+    pub loads: [f64; 6],
+    /// Sum of support reactions and ground-spring reactions.
+    pub reactions: [f64; 6],
+}
+
+impl Statics {
+    /// loads + reactions (zero for a balanced structure).
+    pub fn residual(&self) -> [f64; 6] {
+        std::array::from_fn(|i| self.loads[i] + self.reactions[i])
+    }
+
+    /// Is the residual below `rel` times the load/reaction scale (forces and moments checked
+    /// separately; moments scaled by the model size `length`, mm)?
+    pub fn is_balanced(&self, rel: f64, length: f64) -> bool {
+        let r = self.residual();
+        let fscale = (0..3)
+            .map(|i| self.loads[i].abs() + self.reactions[i].abs())
+            .fold(0.0, f64::max);
+        let mscale = (3..6)
+            .map(|i| self.loads[i].abs() + self.reactions[i].abs())
+            .fold(0.0, f64::max)
+            .max(fscale * length);
+        let tiny = f64::MIN_POSITIVE;
+        (0..3).all(|i| r[i].abs() <= rel * fscale.max(mscale / length.max(tiny)) + tiny)
+            && (3..6).all(|i| r[i].abs() <= rel * mscale + tiny)
+    }
+}
+
+/// Von Mises stress at one stress point for section forces s = [N, Vy, Vz, T, My, Mz]:
+/// σ = N/A + My·z/Iy − Mz·y/Iz, τxy = T·t_xy + Vy·vy_xy, τxz = T·t_xz + Vz·vz_xz,
+/// σ_vM = √(σ² + 3(τxy² + τxz²)), MPa.
+pub fn point_von_mises(p: &SectionProps, pt: &StressPoint, s: &[f64; 6]) -> f64 {
+    let sigma = s[0] / p.a + s[4] * pt.z / p.iy - s[5] * pt.y / p.iz;
+    let txy = s[3] * pt.t_xy + s[1] * pt.vy_xy;
+    let txz = s[3] * pt.t_xz + s[2] * pt.vz_xz;
+    (sigma * sigma + 3.0 * (txy * txy + txz * txz)).sqrt()
+}
+
+/// Largest von Mises stress over the section's stress points (MPa); for round sections the two
+/// exact peak-bending points (direction (−Mz, My)) are added. `None` for general sections.
+pub fn section_von_mises(section: &Section, p: &SectionProps, s: &[f64; 6]) -> Option<f64> {
+    let mut pts = section.stress_points();
+    if section.is_round() {
+        for sign in [1.0, -1.0] {
+            if let Some(pt) = section.round_point(-sign * s[5], sign * s[4]) {
+                pts.push(pt);
+            }
+        }
+    }
+    pts.iter()
+        .map(|pt| point_von_mises(p, pt, s))
+        .fold(None, |m, v| Some(m.map_or(v, |m: f64| m.max(v))))
+}
+
+fn node_vec(u: &[f64], n: usize) -> SVector<f64, 6> {
+    SVector::<f64, 6>::from_column_slice(&u[6 * n..6 * n + 6])
+}
+
+fn elem_vec(u: &[f64], nodes: [usize; 2]) -> SVector<f64, 12> {
+    let mut d = SVector::<f64, 12>::zeros();
+    d.fixed_rows_mut::<6>(0).copy_from(&node_vec(u, nodes[0]));
+    d.fixed_rows_mut::<6>(6).copy_from(&node_vec(u, nodes[1]));
+    d
+}
+
+/// Internal force vector p = Σₑ Kₑ uₑ (6 per node, global axes), ground springs included.
+pub fn internal_forces(model: &Model, u: &[f64]) -> Result<Vec<f64>, FemError> {
+    let mut p = vec![0.0; model.n_dofs()];
+    for ie in 0..model.elements.len() {
+        let em = model.element_matrix(ie)?;
+        let d = elem_vec(u, em.nodes);
+        let f = em.k * d;
+        for k in 0..em.n_nodes {
+            for i in 0..6 {
+                p[6 * em.nodes[k] + i] += f[6 * k + i];
+            }
+        }
+    }
+    Ok(p)
+}
+
+/// Results of element `ie` for the global displacement vector `u`.
+pub fn element_result(model: &Model, ie: usize, u: &[f64]) -> Result<ElementResult, FemError> {
+    match &model.elements[ie] {
+        Element::Spring(s) => {
+            let (b, k, n) = model.spring_b(ie)?;
+            let nodes = [s.a, s.b.unwrap_or(s.a)];
+            let mut d = elem_vec(u, nodes);
+            if n == 1 {
+                d.fixed_rows_mut::<6>(6).fill(0.0);
+            }
+            let delta = b * d;
+            let f: [f64; 6] = std::array::from_fn(|i| k[i] * delta[i]);
+            let energy = 0.5 * (0..6).map(|i| k[i] * delta[i] * delta[i]).sum::<f64>();
+            let end_forces = if n == 1 {
+                [f, [0.0; 6]]
+            } else {
+                [f.map(|v| -v), f]
+            };
+            Ok(ElementResult {
+                end_forces,
+                section_forces: [f, f],
+                von_mises: None,
+                strain_energy: energy,
+            })
+        }
+        e => {
+            let (k, t) = model.element_local(ie)?;
+            let nodes = match e {
+                Element::Beam(b) => b.nodes,
+                Element::Flex(f) => f.nodes,
+                Element::Spring(s) => [s.a, s.b.unwrap_or(s.a)],
+            };
+            let d = t * elem_vec(u, nodes);
+            let f = k * d;
+            let f1: [f64; 6] = std::array::from_fn(|i| f[i]);
+            let f2: [f64; 6] = std::array::from_fn(|i| f[6 + i]);
+            let s1 = f1.map(|v| -v);
+            let s2 = f2;
+            let von_mises = match e {
+                Element::Beam(b) => {
+                    let p = b.section.properties(b.material.nu);
+                    match (
+                        section_von_mises(&b.section, &p, &s1),
+                        section_von_mises(&b.section, &p, &s2),
+                    ) {
+                        (Some(a), Some(c)) => Some([a, c]),
+                        _ => None,
+                    }
+                }
+                _ => None,
+            };
+            Ok(ElementResult {
+                end_forces: [f1, f2],
+                section_forces: [s1, s2],
+                von_mises,
+                strain_energy: 0.5 * d.dot(&f),
+            })
+        }
+    }
+}
+
+fn resultant(x: [f64; 3], f: &[f64]) -> [f64; 6] {
+    let xv = Vector3::from(x);
+    let fv = Vector3::new(f[0], f[1], f[2]);
+    let m = xv.cross(&fv);
+    [f[0], f[1], f[2], m.x + f[3], m.y + f[4], m.z + f[5]]
+}
+
+fn add(acc: &mut [f64; 6], v: [f64; 6]) {
+    for i in 0..6 {
+        acc[i] += v[i];
+    }
+}
+
+/// Largest distance between nodes along any axis (statics tolerance scale), mm.
+pub fn model_size(model: &Model) -> f64 {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for x in &model.nodes {
+        for i in 0..3 {
+            lo[i] = lo[i].min(x[i]);
+            hi[i] = hi[i].max(x[i]);
+        }
+    }
+    (0..3).map(|i| hi[i] - lo[i]).fold(0.0, f64::max).max(1.0)
+}
+
+/// Builds the [`CaseResult`] from the full displacement vector `u` and the applied load
+/// vector `f` (6 per node). Reactions r = Aᵀ(K u − f) at constrained DOFs.
+pub fn case_result(
+    model: &Model,
+    map: &DofMap,
+    name: &str,
+    u: &[f64],
+    f: &[f64],
+) -> Result<CaseResult, FemError> {
+    let p = internal_forces(model, u)?;
+    let g: Vec<f64> = p.iter().zip(f).map(|(a, b)| a - b).collect();
+    let gi = map.to_independent(&g);
+    let mut reactions: Vec<(usize, [f64; 6])> = Vec::new();
+    for &c in &map.constrained {
+        let node = c / 6;
+        if reactions.last().map(|r| r.0) != Some(node) {
+            reactions.push((node, [0.0; 6]));
+        }
+        if let Some(r) = reactions.last_mut() {
+            r.1[c % 6] = gi[c];
+        }
+    }
+    let mut statics = Statics {
+        loads: [0.0; 6],
+        reactions: [0.0; 6],
+    };
+    for (n, x) in model.nodes.iter().enumerate() {
+        add(&mut statics.loads, resultant(*x, &f[6 * n..6 * n + 6]));
+    }
+    for (n, r) in &reactions {
+        add(&mut statics.reactions, resultant(model.nodes[*n], r));
+    }
+    for ie in 0..model.elements.len() {
+        if let Element::Spring(s) = &model.elements[ie] {
+            if s.b.is_none() {
+                let em = model.element_matrix(ie)?;
+                let fs = em.k.fixed_view::<6, 6>(0, 0) * node_vec(u, s.a);
+                let neg: Vec<f64> = fs.iter().map(|v| -v).collect();
+                add(&mut statics.reactions, resultant(model.nodes[s.a], &neg));
+            }
+        }
+    }
+    debug_assert!(
+        statics.is_balanced(1e-6, model_size(model)),
+        "statics check failed in load case {name:?}: loads {:?}, reactions {:?}",
+        statics.loads,
+        statics.reactions
+    );
+    let elements: Vec<ElementResult> = (0..model.elements.len())
+        .into_par_iter()
+        .map(|ie| element_result(model, ie, u))
+        .collect::<Result<_, _>>()?;
+    let max_von_mises = elements
+        .iter()
+        .filter_map(|e| e.max_von_mises())
+        .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
+    let displacements = (0..model.nodes.len())
+        .map(|n| std::array::from_fn(|i| u[6 * n + i]))
+        .collect();
+    Ok(CaseResult {
+        name: name.to_string(),
+        displacements,
+        reactions,
+        elements,
+        max_von_mises,
+        statics,
+    })
+}

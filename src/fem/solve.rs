@@ -1,0 +1,320 @@
+//! Sparse symmetric positive definite solve — the only file that names faer types.
+//!
+//! Structure and values are kept apart (faer 0.24): [`SparsePattern`] holds the lower-triangle
+//! pattern and the argsort that sums duplicate triplets; [`SymbolicFactor`] holds the AMD
+//! ordering and elimination structure (cheap to clone, reusable for every model with the same
+//! pattern); [`Factor`] holds the numeric L of LLᵀ and can be refactorised in place.
+
+use super::error::FemError;
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::linalg::cholesky::llt::factor::{LltError, LltRegularization};
+use faer::sparse::linalg::cholesky::{
+    factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymmetricOrdering,
+};
+use faer::sparse::{Argsort, Pair, SparseColMat, SymbolicSparseColMat};
+use faer::{Conj, MatMut, Par, Side};
+use std::io::Write;
+use std::sync::Arc;
+
+/// Threading of the factorisation and solves. Use `Sequential` when designs already run in
+/// parallel on rayon, so the two levels do not fight.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Parallelism {
+    Sequential,
+    /// faer's supernodal kernels on the global rayon pool.
+    #[default]
+    Rayon,
+}
+
+impl Parallelism {
+    fn par(self) -> Par {
+        match self {
+            Parallelism::Sequential => Par::Seq,
+            Parallelism::Rayon => Par::rayon(0),
+        }
+    }
+}
+
+/// Lower-triangle sparsity pattern of an n×n symmetric matrix plus the order in which triplet
+/// values are summed into it.
+#[derive(Debug, Clone)]
+pub struct SparsePattern {
+    symbolic: SymbolicSparseColMat<usize>,
+    argsort: Argsort<usize>,
+    n_triplets: usize,
+}
+
+impl SparsePattern {
+    /// Pattern from (row, col) index pairs with row ≥ col (lower triangle); duplicates allowed
+    /// (their values are summed).
+    pub fn new(n: usize, pairs: &[(usize, usize)]) -> Result<SparsePattern, FemError> {
+        if let Some(&(r, c)) = pairs.iter().find(|&&(r, c)| r < c || r >= n) {
+            return Err(FemError::PatternMismatch(format!(
+                "entry ({r}, {c}) is not in the lower triangle of a {n}×{n} matrix"
+            )));
+        }
+        let idx: Vec<Pair<usize, usize>> =
+            pairs.iter().map(|&(row, col)| Pair { row, col }).collect();
+        let (symbolic, argsort) = SymbolicSparseColMat::try_new_from_indices(n, n, &idx)
+            .map_err(|e| FemError::Solver(format!("pattern: {e:?}")))?;
+        Ok(SparsePattern {
+            symbolic,
+            argsort,
+            n_triplets: pairs.len(),
+        })
+    }
+
+    /// Matrix dimension.
+    pub fn n(&self) -> usize {
+        self.symbolic.nrows()
+    }
+
+    /// Stored (unique) entries of the lower triangle.
+    pub fn nnz(&self) -> usize {
+        self.symbolic.compute_nnz()
+    }
+
+    /// Number of triplets the pattern was built from (= length of a value vector).
+    pub fn n_triplets(&self) -> usize {
+        self.n_triplets
+    }
+
+    /// Sums triplet values (in the order of the pairs given to [`SparsePattern::new`]) into a
+    /// matrix with this pattern.
+    pub fn matrix(&self, values: &[f64]) -> Result<SparseMatrix, FemError> {
+        if values.len() != self.n_triplets {
+            return Err(FemError::PatternMismatch(format!(
+                "{} values for a pattern built from {} triplets",
+                values.len(),
+                self.n_triplets
+            )));
+        }
+        let mat = SparseColMat::new_from_argsort(self.symbolic.clone(), &self.argsort, values)
+            .map_err(|e| FemError::Solver(format!("fill: {e:?}")))?;
+        Ok(SparseMatrix { mat })
+    }
+}
+
+/// Symmetric matrix stored as its lower triangle (compressed sparse columns).
+#[derive(Debug, Clone)]
+pub struct SparseMatrix {
+    mat: SparseColMat<usize, f64>,
+}
+
+impl SparseMatrix {
+    /// Dimension.
+    pub fn n(&self) -> usize {
+        self.mat.nrows()
+    }
+
+    /// Stored entries (lower triangle).
+    pub fn nnz(&self) -> usize {
+        self.mat.val().len()
+    }
+
+    fn for_each(&self, mut f: impl FnMut(usize, usize, f64)) {
+        let sym = self.mat.symbolic();
+        let (cp, ri) = (sym.col_ptr(), sym.row_idx());
+        let val = self.mat.val();
+        for j in 0..self.n() {
+            for p in cp[j]..cp[j + 1] {
+                f(ri[p], j, val[p]);
+            }
+        }
+    }
+
+    /// Diagonal entries.
+    pub fn diagonal(&self) -> Vec<f64> {
+        let mut d = vec![0.0; self.n()];
+        self.for_each(|i, j, v| {
+            if i == j {
+                d[i] += v;
+            }
+        });
+        d
+    }
+
+    /// y = K·x using the symmetric lower storage.
+    pub fn mul_vec(&self, x: &[f64]) -> Vec<f64> {
+        let mut y = vec![0.0; self.n()];
+        self.for_each(|i, j, v| {
+            y[i] += v * x[j];
+            if i != j {
+                y[j] += v * x[i];
+            }
+        });
+        y
+    }
+
+    /// K + eps·diag(K) (the pattern must hold the diagonal, which
+    /// [`super::assembly::Pattern`] guarantees).
+    pub fn shifted_scaled(&self, eps: f64) -> SparseMatrix {
+        let mut out = self.clone();
+        let sym = self.mat.symbolic();
+        let (cp, ri) = (sym.col_ptr().to_vec(), sym.row_idx().to_vec());
+        let val = out.mat.val_mut();
+        for j in 0..cp.len().saturating_sub(1) {
+            for p in cp[j]..cp[j + 1] {
+                if ri[p] == j {
+                    val[p] *= 1.0 + eps;
+                }
+            }
+        }
+        out
+    }
+
+    /// Writes the lower triangle in Matrix Market coordinate format (`real symmetric`,
+    /// 1-based), e.g. to compare against CHOLMOD.
+    pub fn write_matrix_market(&self, w: &mut impl Write) -> std::io::Result<()> {
+        let mut w = std::io::BufWriter::new(w);
+        writeln!(w, "%%MatrixMarket matrix coordinate real symmetric")?;
+        writeln!(w, "% flexfem reduced stiffness (lower triangle)")?;
+        writeln!(w, "{} {} {}", self.n(), self.n(), self.nnz())?;
+        let mut res = Ok(());
+        self.for_each(|i, j, v| {
+            if res.is_ok() {
+                res = writeln!(w, "{} {} {:e}", i + 1, j + 1, v);
+            }
+        });
+        res?;
+        w.flush()
+    }
+}
+
+/// Ordering and elimination structure of the sparse Cholesky factor (AMD fill-reducing
+/// ordering; faer picks simplicial or supernodal). Cheap to clone (reference-counted).
+#[derive(Debug, Clone)]
+pub struct SymbolicFactor {
+    inner: Arc<SymbolicCholesky<usize>>,
+}
+
+impl SymbolicFactor {
+    /// Symbolic analysis of a pattern (once per topology).
+    pub fn new(pattern: &SparsePattern) -> Result<SymbolicFactor, FemError> {
+        let inner = factorize_symbolic_cholesky(
+            pattern.symbolic.as_ref(),
+            Side::Lower,
+            SymmetricOrdering::Amd,
+            Default::default(),
+        )
+        .map_err(|e| FemError::Solver(format!("symbolic factorisation: {e:?}")))?;
+        Ok(SymbolicFactor {
+            inner: Arc::new(inner),
+        })
+    }
+
+    /// Dimension.
+    pub fn n(&self) -> usize {
+        self.inner.nrows()
+    }
+
+    /// Number of stored values of L.
+    pub fn nnz_l(&self) -> usize {
+        self.inner.len_val()
+    }
+}
+
+/// Why a numeric factorisation failed.
+#[derive(Debug, Clone, PartialEq)]
+pub enum FactorError {
+    /// K is not positive definite: a mechanism (or a negative stiffness).
+    NotPositiveDefinite,
+    /// Anything else (memory, dimension mismatch).
+    Other(String),
+}
+
+/// Numeric LLᵀ factor.
+#[derive(Debug, Clone)]
+pub struct Factor {
+    symbolic: SymbolicFactor,
+    l_values: Vec<f64>,
+    par: Parallelism,
+}
+
+impl Factor {
+    /// Numeric factorisation of `k` (which must have the pattern the symbolic factor was built
+    /// from).
+    pub fn new(
+        symbolic: &SymbolicFactor,
+        k: &SparseMatrix,
+        par: Parallelism,
+    ) -> Result<Factor, FactorError> {
+        let mut f = Factor {
+            symbolic: symbolic.clone(),
+            l_values: Vec::new(),
+            par,
+        };
+        f.refactor(k)?;
+        Ok(f)
+    }
+
+    /// Numeric refactorisation with new values on the same pattern (no symbolic work, buffer
+    /// reused).
+    pub fn refactor(&mut self, k: &SparseMatrix) -> Result<(), FactorError> {
+        let sym = &self.symbolic.inner;
+        if k.n() != sym.nrows() {
+            return Err(FactorError::Other(format!(
+                "matrix is {}×{}, factor is {}×{}",
+                k.n(),
+                k.n(),
+                sym.nrows(),
+                sym.nrows()
+            )));
+        }
+        self.l_values.clear();
+        self.l_values.resize(sym.len_val(), 0.0);
+        let par = self.par.par();
+        let req = sym.factorize_numeric_llt_scratch::<f64>(par, Default::default());
+        let mut mem =
+            MemBuffer::try_new(req).map_err(|_| FactorError::Other("out of memory".into()))?;
+        let res = sym.factorize_numeric_llt::<f64>(
+            &mut self.l_values,
+            k.mat.as_ref(),
+            Side::Lower,
+            LltRegularization::default(),
+            par,
+            MemStack::new(&mut mem),
+            Default::default(),
+        );
+        match res {
+            Ok(_) => Ok(()),
+            Err(LltError::NonPositivePivot { .. }) => Err(FactorError::NotPositiveDefinite),
+        }
+    }
+
+    /// Dimension.
+    pub fn n(&self) -> usize {
+        self.symbolic.n()
+    }
+
+    /// The symbolic factor (to reuse on another model with the same pattern).
+    pub fn symbolic(&self) -> &SymbolicFactor {
+        &self.symbolic
+    }
+
+    /// Solves K·X = B in place for `ncols` right-hand sides stored column-major in `rhs`.
+    pub fn solve_in_place(&self, rhs: &mut [f64], ncols: usize) -> Result<(), FemError> {
+        let n = self.n();
+        if rhs.len() != n * ncols {
+            return Err(FemError::PatternMismatch(format!(
+                "right-hand side has {} values, expected {n}×{ncols}",
+                rhs.len()
+            )));
+        }
+        if n == 0 || ncols == 0 {
+            return Ok(());
+        }
+        let par = self.par.par();
+        let sym = &self.symbolic.inner;
+        let mut mem = MemBuffer::try_new(sym.solve_in_place_scratch::<f64>(ncols, par))
+            .map_err(|_| FemError::Solver("out of memory".into()))?;
+        let llt = LltRef::<'_, usize, f64>::new(sym, &self.l_values);
+        llt.solve_in_place_with_conj(
+            Conj::No,
+            MatMut::from_column_major_slice_mut(rhs, n, ncols),
+            par,
+            MemStack::new(&mut mem),
+        );
+        Ok(())
+    }
+}
