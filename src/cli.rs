@@ -120,7 +120,10 @@ pub fn run(cli: Cli) -> ExitCode {
                 Format::Json if out.is_none() => {
                     println!("{}", serde_json::to_string_pretty(&outcome.json).unwrap_or_default())
                 }
-                Format::Json => eprintln!("wrote {}", out.as_deref().unwrap_or(Path::new(".")).join("result.json").display()),
+                Format::Json => eprintln!(
+                    "wrote {}",
+                    out.as_deref().unwrap_or(Path::new(".")).join("result.json").display()
+                ),
                 Format::Md => print!("{}", outcome.report.markdown),
                 Format::Csv => print!("{}", outcome.report.csv),
             }

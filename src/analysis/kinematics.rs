@@ -116,7 +116,11 @@ fn fkp_row(s: [f64; 3], p: &Pose, iterations: usize) -> FkpRow {
 }
 
 /// Solves every query of the case.
-pub fn solve(case: &KinematicsCase, prs: &Prs, bx: Option<&workspace::PoseBox>) -> Result<KinematicsResult, AnalysisError> {
+pub fn solve(
+    case: &KinematicsCase,
+    prs: &Prs,
+    bx: Option<&workspace::PoseBox>,
+) -> Result<KinematicsResult, AnalysisError> {
     let mut ikp = Vec::with_capacity(case.ikp.len());
     for (i, q) in case.ikp.iter().enumerate() {
         let ctx = |e: crate::kinematics::KinematicsError| AnalysisError::new(format!("ikp[{i}]"), e.to_string());
@@ -139,7 +143,9 @@ pub fn solve(case: &KinematicsCase, prs: &Prs, bx: Option<&workspace::PoseBox>) 
     }
     let mut fkp = Vec::with_capacity(case.fkp.len());
     for (i, q) in case.fkp.iter().enumerate() {
-        let start = q.start.map(|p| prs.complete_pose(p.z, p.psi_deg.to_radians(), p.theta_deg.to_radians()));
+        let start = q
+            .start
+            .map(|p| prs.complete_pose(p.z, p.psi_deg.to_radians(), p.theta_deg.to_radians()));
         let sol = prs
             .fkp(q.s, start.as_ref())
             .map_err(|e| AnalysisError::new(format!("fkp[{i}]"), e.to_string()))?;
@@ -169,7 +175,9 @@ pub fn solve(case: &KinematicsCase, prs: &Prs, bx: Option<&workspace::PoseBox>) 
         ikp,
         fkp,
         workspace,
-        model: vec!["rigid-body 3-PRS: ideal prismatic, revolute and spherical joints, rigid legs and platform (seed 000 §3)"],
+        model: vec![
+            "rigid-body 3-PRS: ideal prismatic, revolute and spherical joints, rigid legs and platform (seed 000 §3)",
+        ],
     })
 }
 
@@ -184,7 +192,17 @@ pub fn report(r: &KinematicsResult) -> Report {
     let mut csv = String::new();
     if !r.fkp.is_empty() {
         md += "## Forward kinematics\n\n";
-        let mut t = Table::new(&["Δs₁ (µm)", "Δs₂ (µm)", "Δs₃ (µm)", "Δz (µm)", "ψ (DMS)", "θ (DMS)", "x (µm)", "y (µm)", "φ (DMS)"]);
+        let mut t = Table::new(&[
+            "Δs₁ (µm)",
+            "Δs₂ (µm)",
+            "Δs₃ (µm)",
+            "Δz (µm)",
+            "ψ (DMS)",
+            "θ (DMS)",
+            "x (µm)",
+            "y (µm)",
+            "φ (DMS)",
+        ]);
         csv += "kind,s1_mm,s2_mm,s3_mm,z_mm,psi_deg,theta_deg,x_mm,y_mm,phi_deg\n";
         for f in &r.fkp {
             let um = |v: f64| format!("{:.0}", v * 1000.0);
@@ -209,7 +227,17 @@ pub fn report(r: &KinematicsResult) -> Report {
     }
     if !r.ikp.is_empty() {
         md += "## Inverse kinematics\n\n";
-        let mut t = Table::new(&["z (mm)", "ψ (°)", "θ (°)", "s₁ (mm)", "s₂ (mm)", "s₃ (mm)", "x (µm)", "y (µm)", "φ (DMS)"]);
+        let mut t = Table::new(&[
+            "z (mm)",
+            "ψ (°)",
+            "θ (°)",
+            "s₁ (mm)",
+            "s₂ (mm)",
+            "s₃ (mm)",
+            "x (µm)",
+            "y (µm)",
+            "φ (DMS)",
+        ]);
         if csv.is_empty() {
             csv += "kind,z_mm,psi_deg,theta_deg,s1_mm,s2_mm,s3_mm,x_mm,y_mm,phi_deg\n";
         }
@@ -236,7 +264,11 @@ pub fn report(r: &KinematicsResult) -> Report {
     if let Some(w) = &r.workspace {
         md += &format!("## Requirement ranges over {} poses\n\n", w.poses);
         let mut t = Table::new(&["quantity", "min", "max"]);
-        t.row(vec!["stroke sᵢ (mm)".into(), format!("{:.3}", w.s[0]), format!("{:.3}", w.s[1])]);
+        t.row(vec![
+            "stroke sᵢ (mm)".into(),
+            format!("{:.3}", w.s[0]),
+            format!("{:.3}", w.s[1]),
+        ]);
         for (name, v) in [
             ("revolute Δαᵢ (°)", w.revolute_delta_deg),
             ("spherical βm (°)", w.spherical_m_deg),

@@ -17,7 +17,10 @@ pub struct AnalysisError {
 impl AnalysisError {
     /// An error in `context`.
     pub fn new(context: impl Into<String>, message: impl Into<String>) -> Self {
-        AnalysisError { context: context.into(), message: message.into() }
+        AnalysisError {
+            context: context.into(),
+            message: message.into(),
+        }
     }
 }
 
@@ -97,7 +100,11 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
         Case::Kinematics(k) => {
             let (prs, bx) = k.validate()?;
             let r = kinematics::solve(k, &prs, bx.as_ref())?;
-            Ok(Outcome { json: to_json(&r)?, report: kinematics::report(&r), files: vec![] })
+            Ok(Outcome {
+                json: to_json(&r)?,
+                report: kinematics::report(&r),
+                files: vec![],
+            })
         }
     }
 }

@@ -15,7 +15,10 @@ impl CaseError {
     /// An error at `path`.
     pub fn new(path: impl Into<String>, message: impl Into<String>) -> Self {
         let path = path.into();
-        CaseError { path: if path.is_empty() { ".".into() } else { path }, message: message.into() }
+        CaseError {
+            path: if path.is_empty() { ".".into() } else { path },
+            message: message.into(),
+        }
     }
 
     /// "value V is not allowed: RULE".
@@ -28,7 +31,9 @@ impl CaseError {
         if prefix.is_empty() {
             return self;
         }
-        self.path = if self.path == "." { prefix.to_string() } else if self.path.starts_with('[') {
+        self.path = if self.path == "." {
+            prefix.to_string()
+        } else if self.path.starts_with('[') {
             format!("{prefix}{}", self.path)
         } else {
             format!("{prefix}.{}", self.path)
@@ -92,7 +97,11 @@ pub mod check {
         if r[0] <= r[1] {
             Ok(())
         } else {
-            Err(CaseError::value(path, format!("[{}, {}]", r[0], r[1]), "a range must be [min, max] with min ≤ max"))
+            Err(CaseError::value(
+                path,
+                format!("[{}, {}]", r[0], r[1]),
+                "a range must be [min, max] with min ≤ max",
+            ))
         }
     }
 }

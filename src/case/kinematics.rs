@@ -47,7 +47,10 @@ impl MechanismSpec {
                 return Err(CaseError::new(path, "give either `alpha0_deg` or `a`, not both"));
             }
             (None, None) => {
-                return Err(CaseError::new(path, "missing field `alpha0_deg` (or `a`, the base radius in mm)"));
+                return Err(CaseError::new(
+                    path,
+                    "missing field `alpha0_deg` (or `a`, the base radius in mm)",
+                ));
             }
         };
         Ok(prs)
@@ -112,10 +115,19 @@ impl WorkspaceSpec {
             }
         }
         if !(2..=201).contains(&self.steps) {
-            return Err(CaseError::value(p("steps"), self.steps, "must be an integer in 2..=201"));
+            return Err(CaseError::value(
+                p("steps"),
+                self.steps,
+                "must be an integer in 2..=201",
+            ));
         }
         let rad = |r: [f64; 2]| [r[0].to_radians(), r[1].to_radians()];
-        Ok(PoseBox { z: self.z, psi: rad(self.psi_deg), theta: rad(self.theta_deg), steps: self.steps })
+        Ok(PoseBox {
+            z: self.z,
+            psi: rad(self.psi_deg),
+            theta: rad(self.theta_deg),
+            steps: self.steps,
+        })
     }
 }
 
@@ -149,13 +161,20 @@ impl KinematicsCase {
             for (k, v) in q.s.iter().enumerate() {
                 check::finite(&format!("fkp[{i}].s[{k}]"), *v)?;
                 if v.abs() > prs.l {
-                    return Err(CaseError::value(format!("fkp[{i}].s[{k}]"), v, format!("|s| must not exceed the leg length L = {} mm", prs.l)));
+                    return Err(CaseError::value(
+                        format!("fkp[{i}].s[{k}]"),
+                        v,
+                        format!("|s| must not exceed the leg length L = {} mm", prs.l),
+                    ));
                 }
             }
         }
         let bx = self.workspace.as_ref().map(|w| w.build("workspace")).transpose()?;
         if self.ikp.is_empty() && self.fkp.is_empty() && bx.is_none() {
-            return Err(CaseError::new(".", "nothing to do: give at least one of `ikp`, `fkp`, `workspace`"));
+            return Err(CaseError::new(
+                ".",
+                "nothing to do: give at least one of `ikp`, `fkp`, `workspace`",
+            ));
         }
         Ok((prs, bx))
     }

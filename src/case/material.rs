@@ -46,20 +46,39 @@ impl MaterialSpec {
     pub fn resolve(&self, path: &str) -> Result<Material, CaseError> {
         let m = match self {
             MaterialSpec::Name(n) => Material::builtin(n).ok_or_else(|| {
-                CaseError::value(path, format!("\"{n}\""), format!("unknown material; built-in names are {}", Material::BUILTIN_NAMES.join(", ")))
+                CaseError::value(
+                    path,
+                    format!("\"{n}\""),
+                    format!(
+                        "unknown material; built-in names are {}",
+                        Material::BUILTIN_NAMES.join(", ")
+                    ),
+                )
             })?,
             MaterialSpec::Custom(m) => *m,
         };
         check::positive(&format!("{path}.E"), m.e, "MPa")?;
         if !(m.nu > -1.0 && m.nu < 0.5) {
-            return Err(CaseError::value(format!("{path}.nu"), m.nu, "Poisson's ratio must lie in (−1, 0.5)"));
+            return Err(CaseError::value(
+                format!("{path}.nu"),
+                m.nu,
+                "Poisson's ratio must lie in (−1, 0.5)",
+            ));
         }
         check::non_negative(&format!("{path}.density"), m.density, "t/mm³")?;
-        if !(m.yield_strength > 0.0) {
-            return Err(CaseError::value(format!("{path}.yield"), m.yield_strength, "must be positive (MPa)"));
+        if m.yield_strength.is_nan() || m.yield_strength <= 0.0 {
+            return Err(CaseError::value(
+                format!("{path}.yield"),
+                m.yield_strength,
+                "must be positive (MPa)",
+            ));
         }
-        if !(m.allowable > 0.0) {
-            return Err(CaseError::value(format!("{path}.allowable"), m.allowable, "must be positive (MPa)"));
+        if m.allowable.is_nan() || m.allowable <= 0.0 {
+            return Err(CaseError::value(
+                format!("{path}.allowable"),
+                m.allowable,
+                "must be positive (MPa)",
+            ));
         }
         Ok(m)
     }

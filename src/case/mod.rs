@@ -38,7 +38,11 @@ impl Case {
 pub fn from_value<T: DeserializeOwned>(value: Value, prefix: &str) -> Result<T, CaseError> {
     serde_path_to_error::deserialize(value).map_err(|e| {
         let path = e.path().to_string();
-        CaseError::new(if path == "." { String::new() } else { path }, e.into_inner().to_string()).under(prefix)
+        CaseError::new(
+            if path == "." { String::new() } else { path },
+            e.into_inner().to_string(),
+        )
+        .under(prefix)
     })
 }
 
@@ -51,18 +55,35 @@ pub fn parse(text: &str) -> Result<Case, CaseError> {
 /// Parses a case already read as JSON.
 pub fn parse_value(mut value: Value) -> Result<Case, CaseError> {
     let Value::Object(map) = &mut value else {
-        return Err(CaseError::value(".", short(&value), "a case file must be a JSON object"));
+        return Err(CaseError::value(
+            ".",
+            short(&value),
+            "a case file must be a JSON object",
+        ));
     };
     let analysis = match map.remove("analysis") {
         Some(Value::String(s)) => s,
         Some(other) => {
-            return Err(CaseError::value("analysis", short(&other), format!("must be one of {}", ANALYSES.join(", "))))
+            return Err(CaseError::value(
+                "analysis",
+                short(&other),
+                format!("must be one of {}", ANALYSES.join(", ")),
+            ))
         }
-        None => return Err(CaseError::new("analysis", format!("missing field `analysis`; one of {}", ANALYSES.join(", ")))),
+        None => {
+            return Err(CaseError::new(
+                "analysis",
+                format!("missing field `analysis`; one of {}", ANALYSES.join(", ")),
+            ))
+        }
     };
     match analysis.as_str() {
         "kinematics" => Ok(Case::Kinematics(from_value(value, "")?)),
-        other => Err(CaseError::value("analysis", format!("\"{other}\""), format!("must be one of {}", ANALYSES.join(", ")))),
+        other => Err(CaseError::value(
+            "analysis",
+            format!("\"{other}\""),
+            format!("must be one of {}", ANALYSES.join(", ")),
+        )),
     }
 }
 

@@ -10,7 +10,10 @@ pub struct Table {
 impl Table {
     /// A table with these column headings.
     pub fn new(header: &[&str]) -> Self {
-        Table { header: header.iter().map(|s| s.to_string()).collect(), rows: vec![] }
+        Table {
+            header: header.iter().map(|s| s.to_string()).collect(),
+            rows: vec![],
+        }
     }
 
     /// Appends a row (cells beyond the header are ignored, missing ones left blank).
