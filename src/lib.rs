@@ -3,6 +3,9 @@
 //! Units throughout: mm, N, MPa, s, tonne; angles in radians inside the library, degrees in
 //! case files and results.
 
+pub mod analysis;
+pub mod case;
+pub mod cli;
 pub mod fem;
 pub mod hinge;
 pub mod kinematics;

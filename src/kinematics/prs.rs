@@ -16,7 +16,11 @@ use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 use thiserror::Error;
 
 /// Leg plane angles ξᵢ, rad.
-const XI: [f64; 3] = [0.0, 2.0 * std::f64::consts::FRAC_PI_3, 4.0 * std::f64::consts::FRAC_PI_3];
+const XI: [f64; 3] = [
+    0.0,
+    2.0 * std::f64::consts::FRAC_PI_3,
+    4.0 * std::f64::consts::FRAC_PI_3,
+];
 
 /// Errors of the rigid-body kinematics.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -184,7 +188,13 @@ impl Prs {
                 alpha0.to_degrees()
             )));
         }
-        let prs = Prs { l, b, a: b + l * alpha0.cos(), gamma, z0: l * alpha0.sin() };
+        let prs = Prs {
+            l,
+            b,
+            a: b + l * alpha0.cos(),
+            gamma,
+            z0: l * alpha0.sin(),
+        };
         prs.check_actuation()?;
         Ok(prs)
     }
@@ -202,7 +212,13 @@ impl Prs {
                 (a - b).abs()
             )));
         }
-        let prs = Prs { l, b, a, gamma, z0: h2.sqrt() };
+        let prs = Prs {
+            l,
+            b,
+            a,
+            gamma,
+            z0: h2.sqrt(),
+        };
         prs.check_actuation()?;
         Ok(prs)
     }
@@ -371,7 +387,12 @@ impl Prs {
             // R_S = Fᵢ₀ᵀ · R · R_im with R_im = Fᵢ₀(home) (SPEC.md §3).
             spherical[i] = intrinsic_xyz(&(fi.transpose() * r * f0));
         }
-        Ok(IkpSolution { s, pose, alpha, spherical })
+        Ok(IkpSolution {
+            s,
+            pose,
+            alpha,
+            spherical,
+        })
     }
 
     /// Leg-length residuals fᵢ = (|Bᵢ − Cᵢ|² − L²)/(2L), mm, and their Jacobian with respect to
@@ -457,7 +478,10 @@ impl Prs {
         // Reject other assembly modes: every leg must keep its home branch (e·(B − C) > 0).
         for (i, &si) in s.iter().enumerate() {
             let w = self.b_point(i, &pose) - self.c_point(i, si);
-            if self.e(i).dot(&w) <= 0.0 || q[1].abs() > std::f64::consts::FRAC_PI_2 || q[2].abs() > std::f64::consts::FRAC_PI_2 {
+            if self.e(i).dot(&w) <= 0.0
+                || q[1].abs() > std::f64::consts::FRAC_PI_2
+                || q[2].abs() > std::f64::consts::FRAC_PI_2
+            {
                 return Err(KinematicsError::NoConvergence {
                     strokes: s,
                     iterations,

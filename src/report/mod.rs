@@ -1,1 +1,4 @@
+//! Reports: Markdown, CSV, SVG and VTK views of results (formatting only).
+
+pub mod markdown;
 pub mod vtk;

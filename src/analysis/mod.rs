@@ -1,0 +1,110 @@
+//! Analyses: validated case → typed result → JSON/Markdown/CSV views.
+
+pub mod kinematics;
+
+use crate::case::{Case, CaseError};
+use std::fmt;
+
+/// A failed analysis (exit code 1): where it failed and why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AnalysisError {
+    /// Which query or load case failed, e.g. `fkp[2]`.
+    pub context: String,
+    /// What went wrong.
+    pub message: String,
+}
+
+impl AnalysisError {
+    /// An error in `context`.
+    pub fn new(context: impl Into<String>, message: impl Into<String>) -> Self {
+        AnalysisError {
+            context: context.into(),
+            message: message.into(),
+        }
+    }
+}
+
+impl fmt::Display for AnalysisError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "analysis failed at `{}`: {}", self.context, self.message)
+    }
+}
+
+impl std::error::Error for AnalysisError {}
+
+/// Why a case did not produce a result.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RunError {
+    /// The case file is wrong (exit 2).
+    Case(CaseError),
+    /// The analysis failed (exit 1).
+    Analysis(AnalysisError),
+}
+
+impl fmt::Display for RunError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            RunError::Case(e) => e.fmt(f),
+            RunError::Analysis(e) => e.fmt(f),
+        }
+    }
+}
+
+impl std::error::Error for RunError {}
+
+impl From<CaseError> for RunError {
+    fn from(e: CaseError) -> Self {
+        RunError::Case(e)
+    }
+}
+impl From<AnalysisError> for RunError {
+    fn from(e: AnalysisError) -> Self {
+        RunError::Analysis(e)
+    }
+}
+
+/// Human-readable views of a result.
+#[derive(Debug, Clone, Default)]
+pub struct Report {
+    /// Markdown report.
+    pub markdown: String,
+    /// CSV table of the main rows.
+    pub csv: String,
+}
+
+/// A finished analysis: the JSON result plus its reports and extra files (name, contents).
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    /// The JSON result (INTERFACE.md).
+    pub json: serde_json::Value,
+    /// Markdown and CSV views.
+    pub report: Report,
+    /// Extra output files (e.g. `.vtu`, `.svg`), written by `--out`.
+    pub files: Vec<(String, Vec<u8>)>,
+}
+
+fn to_json<T: serde::Serialize>(v: &T) -> Result<serde_json::Value, AnalysisError> {
+    serde_json::to_value(v).map_err(|e| AnalysisError::new("output", e.to_string()))
+}
+
+/// Validates a case (everything checked before solving).
+pub fn check(case: &Case) -> Result<(), CaseError> {
+    match case {
+        Case::Kinematics(k) => k.validate().map(|_| ()),
+    }
+}
+
+/// Validates and runs a case.
+pub fn run(case: &Case) -> Result<Outcome, RunError> {
+    match case {
+        Case::Kinematics(k) => {
+            let (prs, bx) = k.validate()?;
+            let r = kinematics::solve(k, &prs, bx.as_ref())?;
+            Ok(Outcome {
+                json: to_json(&r)?,
+                report: kinematics::report(&r),
+                files: vec![],
+            })
+        }
+    }
+}

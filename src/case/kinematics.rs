@@ -1,0 +1,181 @@
+//! The `kinematics` case: rigid-body 3-PRS queries.
+
+use super::error::{check, CaseError};
+use crate::kinematics::{PoseBox, Prs};
+use serde::Deserialize;
+
+/// 3-PRS geometry. Give either `alpha0_deg` or the base radius `a`.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MechanismSpec {
+    /// Leg length L between the revolute and spherical joint centres, mm.
+    #[serde(rename = "L")]
+    pub l: f64,
+    /// Platform radius b (centre to spherical joints), mm.
+    pub b: f64,
+    /// Leg angle to the horizontal at home α₀, degrees (then a = b + L·cos α₀).
+    #[serde(default)]
+    pub alpha0_deg: Option<f64>,
+    /// Base radius a (O to the zero-stroke slider points), mm; alternative to `alpha0_deg`.
+    #[serde(default)]
+    pub a: Option<f64>,
+    /// Actuator inclination γ, degrees (0 = horizontal radially inward, 90 = vertical).
+    #[serde(default)]
+    pub gamma_deg: f64,
+}
+
+impl MechanismSpec {
+    /// Validates and builds the mechanism; `path` is the JSON path of this object.
+    pub fn build(&self, path: &str) -> Result<Prs, CaseError> {
+        let p = |f: &str| format!("{path}.{f}");
+        check::positive(&p("L"), self.l, "mm")?;
+        check::positive(&p("b"), self.b, "mm")?;
+        check::within(&p("gamma_deg"), self.gamma_deg, -90.0, 90.0, "degrees")?;
+        let gamma = self.gamma_deg.to_radians();
+        let prs = match (self.alpha0_deg, self.a) {
+            (Some(al), None) => {
+                if !(al.is_finite() && al > 0.0 && al < 90.0) {
+                    return Err(CaseError::value(p("alpha0_deg"), al, "must lie in (0, 90) degrees"));
+                }
+                Prs::new(self.l, self.b, al.to_radians(), gamma).map_err(|e| CaseError::new(path, e.to_string()))?
+            }
+            (None, Some(a)) => {
+                check::positive(&p("a"), a, "mm")?;
+                Prs::with_base_radius(self.l, self.b, a, gamma).map_err(|e| CaseError::new(p("L"), e.to_string()))?
+            }
+            (Some(_), Some(_)) => {
+                return Err(CaseError::new(path, "give either `alpha0_deg` or `a`, not both"));
+            }
+            (None, None) => {
+                return Err(CaseError::new(
+                    path,
+                    "missing field `alpha0_deg` (or `a`, the base radius in mm)",
+                ));
+            }
+        };
+        Ok(prs)
+    }
+}
+
+/// An inverse-kinematics query: the independent pose coordinates, from home.
+#[derive(Debug, Clone, Copy, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PoseQuery {
+    /// Platform z displacement from home, mm.
+    #[serde(default)]
+    pub z: f64,
+    /// Rotation ψ about x, degrees.
+    #[serde(default)]
+    pub psi_deg: f64,
+    /// Rotation θ about y, degrees.
+    #[serde(default)]
+    pub theta_deg: f64,
+}
+
+/// A forward-kinematics query.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FkpQuery {
+    /// Actuator strokes s₁, s₂, s₃ from home, mm.
+    pub s: [f64; 3],
+    /// Newton start pose (default: home).
+    #[serde(default)]
+    pub start: Option<PoseQuery>,
+}
+
+/// A box of poses for the requirement sweep.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct WorkspaceSpec {
+    /// z range [min, max] from home, mm.
+    pub z: [f64; 2],
+    /// ψ range [min, max], degrees.
+    pub psi_deg: [f64; 2],
+    /// θ range [min, max], degrees.
+    pub theta_deg: [f64; 2],
+    /// Values per axis, ends included (2–201; default 9).
+    #[serde(default = "default_steps")]
+    pub steps: usize,
+}
+
+fn default_steps() -> usize {
+    9
+}
+
+impl WorkspaceSpec {
+    /// Validates and converts to radians.
+    pub fn build(&self, path: &str) -> Result<PoseBox, CaseError> {
+        let p = |f: &str| format!("{path}.{f}");
+        check::range(&p("z"), self.z)?;
+        check::range(&p("psi_deg"), self.psi_deg)?;
+        check::range(&p("theta_deg"), self.theta_deg)?;
+        for (f, r) in [("psi_deg", self.psi_deg), ("theta_deg", self.theta_deg)] {
+            for (k, v) in r.iter().enumerate() {
+                check::within(&format!("{}[{k}]", p(f)), *v, -89.0, 89.0, "degrees")?;
+            }
+        }
+        if !(2..=201).contains(&self.steps) {
+            return Err(CaseError::value(
+                p("steps"),
+                self.steps,
+                "must be an integer in 2..=201",
+            ));
+        }
+        let rad = |r: [f64; 2]| [r[0].to_radians(), r[1].to_radians()];
+        Ok(PoseBox {
+            z: self.z,
+            psi: rad(self.psi_deg),
+            theta: rad(self.theta_deg),
+            steps: self.steps,
+        })
+    }
+}
+
+/// `"analysis": "kinematics"`.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct KinematicsCase {
+    /// The mechanism geometry.
+    pub mechanism: MechanismSpec,
+    /// Inverse-kinematics queries.
+    #[serde(default)]
+    pub ikp: Vec<PoseQuery>,
+    /// Forward-kinematics queries.
+    #[serde(default)]
+    pub fkp: Vec<FkpQuery>,
+    /// Requirement sweep over a box of poses.
+    #[serde(default)]
+    pub workspace: Option<WorkspaceSpec>,
+}
+
+impl KinematicsCase {
+    /// Checks every field that the types do not (before anything is solved).
+    pub fn validate(&self) -> Result<(Prs, Option<PoseBox>), CaseError> {
+        let prs = self.mechanism.build("mechanism")?;
+        for (i, q) in self.ikp.iter().enumerate() {
+            check::finite(&format!("ikp[{i}].z"), q.z)?;
+            check::within(&format!("ikp[{i}].psi_deg"), q.psi_deg, -89.0, 89.0, "degrees")?;
+            check::within(&format!("ikp[{i}].theta_deg"), q.theta_deg, -89.0, 89.0, "degrees")?;
+        }
+        for (i, q) in self.fkp.iter().enumerate() {
+            for (k, v) in q.s.iter().enumerate() {
+                check::finite(&format!("fkp[{i}].s[{k}]"), *v)?;
+                if v.abs() > prs.l {
+                    return Err(CaseError::value(
+                        format!("fkp[{i}].s[{k}]"),
+                        v,
+                        format!("|s| must not exceed the leg length L = {} mm", prs.l),
+                    ));
+                }
+            }
+        }
+        let bx = self.workspace.as_ref().map(|w| w.build("workspace")).transpose()?;
+        if self.ikp.is_empty() && self.fkp.is_empty() && bx.is_none() {
+            return Err(CaseError::new(
+                ".",
+                "nothing to do: give at least one of `ikp`, `fkp`, `workspace`",
+            ));
+        }
+        Ok((prs, bx))
+    }
+}

@@ -1,0 +1,85 @@
+//! Material given by built-in name or as an object.
+
+use super::error::{check, CaseError};
+use crate::material::Material;
+use serde::{Deserialize, Deserializer};
+
+/// `"Al7075"` | `"nylon66"` | `"steel"` or `{"E", "nu", "density", "yield", "allowable"}`.
+#[derive(Debug, Clone, PartialEq, schemars::JsonSchema)]
+#[serde(untagged)]
+pub enum MaterialSpec {
+    /// A built-in material name.
+    Name(String),
+    /// Explicit properties (mm–N–MPa–tonne).
+    Custom(Material),
+}
+
+impl Default for MaterialSpec {
+    fn default() -> Self {
+        MaterialSpec::Name("Al7075".into())
+    }
+}
+
+impl<'de> Deserialize<'de> for MaterialSpec {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        use serde::de::Error;
+        let v = serde_json::Value::deserialize(d)?;
+        match v {
+            serde_json::Value::String(s) => Ok(MaterialSpec::Name(s)),
+            serde_json::Value::Object(_) => {
+                let m: Material = serde_path_to_error::deserialize(v).map_err(|e| {
+                    let p = e.path().to_string();
+                    D::Error::custom(format!("in material object at `{p}`: {}", e.inner()))
+                })?;
+                Ok(MaterialSpec::Custom(m))
+            }
+            other => Err(D::Error::custom(format!(
+                "invalid material {other}: expected a built-in name ({}) or an object {{\"E\", \"nu\", \"density\", \"yield\", \"allowable\"}}",
+                Material::BUILTIN_NAMES.join(", ")
+            ))),
+        }
+    }
+}
+
+impl MaterialSpec {
+    /// Resolves and validates the material; `path` is its JSON path.
+    pub fn resolve(&self, path: &str) -> Result<Material, CaseError> {
+        let m = match self {
+            MaterialSpec::Name(n) => Material::builtin(n).ok_or_else(|| {
+                CaseError::value(
+                    path,
+                    format!("\"{n}\""),
+                    format!(
+                        "unknown material; built-in names are {}",
+                        Material::BUILTIN_NAMES.join(", ")
+                    ),
+                )
+            })?,
+            MaterialSpec::Custom(m) => *m,
+        };
+        check::positive(&format!("{path}.E"), m.e, "MPa")?;
+        if !(m.nu > -1.0 && m.nu < 0.5) {
+            return Err(CaseError::value(
+                format!("{path}.nu"),
+                m.nu,
+                "Poisson's ratio must lie in (−1, 0.5)",
+            ));
+        }
+        check::non_negative(&format!("{path}.density"), m.density, "t/mm³")?;
+        if m.yield_strength.is_nan() || m.yield_strength <= 0.0 {
+            return Err(CaseError::value(
+                format!("{path}.yield"),
+                m.yield_strength,
+                "must be positive (MPa)",
+            ));
+        }
+        if m.allowable.is_nan() || m.allowable <= 0.0 {
+            return Err(CaseError::value(
+                format!("{path}.allowable"),
+                m.allowable,
+                "must be positive (MPa)",
+            ));
+        }
+        Ok(m)
+    }
+}

@@ -1,0 +1,50 @@
+//! Markdown formatting helpers (formatting only, no physics).
+
+/// A Markdown table built row by row.
+#[derive(Debug, Clone)]
+pub struct Table {
+    header: Vec<String>,
+    rows: Vec<Vec<String>>,
+}
+
+impl Table {
+    /// A table with these column headings.
+    pub fn new(header: &[&str]) -> Self {
+        Table {
+            header: header.iter().map(|s| s.to_string()).collect(),
+            rows: vec![],
+        }
+    }
+
+    /// Appends a row (cells beyond the header are ignored, missing ones left blank).
+    pub fn row(&mut self, cells: Vec<String>) {
+        self.rows.push(cells);
+    }
+
+    /// The table as GitHub-flavoured Markdown.
+    pub fn render(&self) -> String {
+        let n = self.header.len();
+        let mut out = format!("| {} |\n|{}\n", self.header.join(" | "), "---:|".repeat(n));
+        for r in &self.rows {
+            let cells: Vec<&str> = (0..n).map(|i| r.get(i).map_or("", String::as_str)).collect();
+            out += &format!("| {} |\n", cells.join(" | "));
+        }
+        out
+    }
+}
+
+/// An angle in degrees as degrees-minutes-seconds, rounded to the second, like the paper's
+/// tables: `8′59″`, `-1′38″`, `1°02′03″`.
+pub fn dms(deg: f64) -> String {
+    if !deg.is_finite() {
+        return "—".into();
+    }
+    let total = (deg.abs() * 3600.0).round() as u64;
+    let (d, m, s) = (total / 3600, (total / 60) % 60, total % 60);
+    let sign = if deg < 0.0 && total > 0 { "-" } else { "" };
+    if d > 0 {
+        format!("{sign}{d}°{m:02}′{s:02}″")
+    } else {
+        format!("{sign}{m}′{s:02}″")
+    }
+}

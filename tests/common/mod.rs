@@ -1,0 +1,51 @@
+//! Helpers shared by the integration tests: run the real binary in a temp dir.
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// Path of the built `flexfem` binary.
+pub fn bin() -> &'static str {
+    env!("CARGO_BIN_EXE_flexfem")
+}
+
+/// The crate root (bundled cases and meshes live here).
+pub fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// A fresh temporary directory unique to `name`.
+pub fn tempdir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("flexfem-test-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Runs `flexfem ARGS` in `dir`.
+pub fn run_in(dir: &Path, args: &[&str]) -> Output {
+    Command::new(bin()).args(args).current_dir(dir).output().unwrap()
+}
+
+/// Runs `flexfem ARGS` in the crate root.
+pub fn run(args: &[&str]) -> Output {
+    run_in(&root(), args)
+}
+
+/// Writes `text` as a case file in a temp dir and runs `flexfem run` on it.
+pub fn run_case_text(name: &str, text: &str) -> Output {
+    let d = tempdir(name);
+    let p = d.join("case.json");
+    std::fs::write(&p, text).unwrap();
+    run_in(&d, &["run", p.to_str().unwrap()])
+}
+
+/// stdout as text.
+pub fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+/// stderr as text.
+pub fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
