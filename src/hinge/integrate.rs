@@ -126,30 +126,60 @@ pub(crate) fn quadrature_points(a: f64, b: f64, map: Map, panels: usize, mut f: 
             }
         }
         Map::Arc { origin, radius, c } => {
-            // x = origin + radius sin(c tan ψ); the piece may lie on either side of the origin.
-            let psi = |x: f64| -> f64 {
-                let s = ((x - origin) / radius).clamp(-1.0, 1.0);
-                (s.asin() / c).atan()
-            };
-            let (p0, p1) = (psi(a), psi(b));
+            // φ = arc angle, x = origin + radius sin φ. Near the waist (φ < PEAK·c) use
+            // φ = c tan ψ; beyond, φ itself (smooth there). ∫_a^b f dx = ∫ f x'(p) dp holds for
+            // either orientation of the parameter, so mirrored pieces (radius < 0) need no care.
+            let phi_of = |x: f64| ((x - origin) / radius).clamp(-1.0, 1.0).asin();
+            let (fa, fb) = (phi_of(a), phi_of(b));
+            let split = PEAK * c;
             let n = panels.max(1);
-            let hl = (p1 - p0) / n as f64;
-            for p in 0..n {
-                let mid = p0 + (p as f64 + 0.5) * hl;
-                for k in 0..4 {
-                    for sgn in [-1.0, 1.0] {
-                        let ps = mid + sgn * 0.5 * hl * GL8_X[k];
-                        let tp = ps.tan();
-                        let phi = c * tp;
-                        let x = origin + radius * phi.sin();
-                        let dxdpsi = radius * phi.cos() * c * (1.0 + tp * tp);
-                        f(x, 0.5 * hl * GL8_W[k] * dxdpsi);
+            let tan_part = |p0: f64, p1: f64, f: &mut dyn FnMut(f64, f64)| {
+                let (q0, q1) = ((p0 / c).atan(), (p1 / c).atan());
+                let hl = (q1 - q0) / n as f64;
+                for p in 0..n {
+                    let mid = q0 + (p as f64 + 0.5) * hl;
+                    for k in 0..4 {
+                        for sgn in [-1.0, 1.0] {
+                            let ps = mid + sgn * 0.5 * hl * GL8_X[k];
+                            let tp = ps.tan();
+                            let phi = c * tp;
+                            let x = origin + radius * phi.sin();
+                            let dxdpsi = radius * phi.cos() * c * (1.0 + tp * tp);
+                            f(x, 0.5 * hl * GL8_W[k] * dxdpsi);
+                        }
                     }
                 }
+            };
+            let phi_part = |p0: f64, p1: f64, f: &mut dyn FnMut(f64, f64)| {
+                let hl = (p1 - p0) / n as f64;
+                for p in 0..n {
+                    let mid = p0 + (p as f64 + 0.5) * hl;
+                    for k in 0..4 {
+                        for sgn in [-1.0, 1.0] {
+                            let phi = mid + sgn * 0.5 * hl * GL8_X[k];
+                            f(origin + radius * phi.sin(), 0.5 * hl * GL8_W[k] * radius * phi.cos());
+                        }
+                    }
+                }
+            };
+            let (lo, hi) = if fa <= fb { (fa, fb) } else { (fb, fa) };
+            // Integrate over [lo, hi] in φ, then fix the orientation sign.
+            let orient = if fa <= fb { 1.0 } else { -1.0 };
+            let mut g = |x: f64, wgt: f64| f(x, orient * wgt);
+            if hi <= split {
+                tan_part(lo, hi, &mut g);
+            } else if lo >= split {
+                phi_part(lo, hi, &mut g);
+            } else {
+                tan_part(lo, split, &mut g);
+                phi_part(split, hi, &mut g);
             }
         }
     }
 }
+
+/// Arc pieces switch from the tan map to plain φ at φ = PEAK · c.
+pub(crate) const PEAK: f64 = 6.0;
 
 /// Flexibility integrals of the segment [x0, x1] (any order; x may be negative — the profile
 /// is symmetric) loaded at x1.

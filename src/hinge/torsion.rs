@@ -21,6 +21,7 @@
 //! layer of length √(EΓ/GJ) sits. The stiffness is banded (half-bandwidth 3) and solved by a
 //! banded Cholesky on the stack.
 
+use super::integrate::PEAK;
 use super::profile::{Map, Profile};
 use super::section::{rect_torsion_constant, rect_warping_constant};
 
@@ -112,15 +113,25 @@ fn half_nodes(profile: &Profile, mesh: TorsionMesh, out: &mut [f64; MAX_NODES / 
                     }
                 }
                 Map::Arc { origin, radius, c } => {
-                    let psi = |x: f64| (((x - origin) / radius).clamp(-1.0, 1.0).asin() / c).atan();
-                    let (p0, p1) = (psi(piece.x0), psi(piece.x1));
+                    let phi = |x: f64| ((x - origin) / radius).clamp(-1.0, 1.0).asin();
+                    let (f0, f1) = (phi(piece.x0), phi(piece.x1));
+                    let split = (PEAK * c).clamp(f0, f1);
+                    // Half the elements in the waist peak (tan map), half beyond (uniform φ).
+                    let n_tan = if split > f0 && split < f1 {
+                        ne / 2
+                    } else if split >= f1 {
+                        ne
+                    } else {
+                        0
+                    };
+                    let (q0, q1) = ((f0 / c).atan(), (split / c).atan());
                     for i in 1..=ne {
-                        out[n] = if i == ne {
-                            piece.x1
+                        let p = if i <= n_tan {
+                            c * (q0 + (q1 - q0) * i as f64 / n_tan as f64).tan()
                         } else {
-                            let p = p0 + (p1 - p0) * i as f64 / ne as f64;
-                            origin + radius * (c * p.tan()).sin()
+                            split + (f1 - split) * (i - n_tan) as f64 / (ne - n_tan) as f64
                         };
+                        out[n] = if i == ne { piece.x1 } else { origin + radius * p.sin() };
                         n += 1;
                     }
                 }
