@@ -71,8 +71,17 @@ impl Statics {
 /// σ_vM = √(σ² + 3(τxy² + τxz²)), MPa.
 pub fn point_von_mises(p: &SectionProps, pt: &StressPoint, s: &[f64; 6]) -> f64 {
     let sigma = s[0] / p.a + s[4] * pt.z / p.iy - s[5] * pt.y / p.iz;
-    let txy = s[3] * pt.t_xy + s[1] * pt.vy_xy;
-    let txz = s[3] * pt.t_xz + s[2] * pt.vz_xz;
+    let (mut txy, mut txz) = (s[3] * pt.t_xy + s[1] * pt.vy_xy, s[3] * pt.t_xz + s[2] * pt.vz_xz);
+    if pt.round_shear != 0.0 {
+        let v = s[1].hypot(s[2]);
+        let r = pt.y.hypot(pt.z);
+        if v > 0.0 && r > 0.0 {
+            let c = (pt.y * s[1] + pt.z * s[2]) / (r * v);
+            let f = pt.round_shear * (1.0 - c * c);
+            txy += f * s[1];
+            txz += f * s[2];
+        }
+    }
     (sigma * sigma + 3.0 * (txy * txy + txz * txz)).sqrt()
 }
 
@@ -132,11 +141,7 @@ pub fn element_result(model: &Model, ie: usize, u: &[f64]) -> Result<ElementResu
             let delta = b * d;
             let f: [f64; 6] = std::array::from_fn(|i| k[i] * delta[i]);
             let energy = 0.5 * (0..6).map(|i| k[i] * delta[i] * delta[i]).sum::<f64>();
-            let end_forces = if n == 1 {
-                [f, [0.0; 6]]
-            } else {
-                [f.map(|v| -v), f]
-            };
+            let end_forces = if n == 1 { [f, [0.0; 6]] } else { [f.map(|v| -v), f] };
             Ok(ElementResult {
                 end_forces,
                 section_forces: [f, f],
@@ -208,13 +213,7 @@ pub fn model_size(model: &Model) -> f64 {
 
 /// Builds the [`CaseResult`] from the full displacement vector `u` and the applied load
 /// vector `f` (6 per node). Reactions r = Aᵀ(K u − f) at constrained DOFs.
-pub fn case_result(
-    model: &Model,
-    map: &DofMap,
-    name: &str,
-    u: &[f64],
-    f: &[f64],
-) -> Result<CaseResult, FemError> {
+pub fn case_result(model: &Model, map: &DofMap, name: &str, u: &[f64], f: &[f64]) -> Result<CaseResult, FemError> {
     let p = internal_forces(model, u)?;
     let g: Vec<f64> = p.iter().zip(f).map(|(a, b)| a - b).collect();
     let gi = map.to_independent(&g);

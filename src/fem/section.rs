@@ -56,7 +56,9 @@ pub struct SectionProps {
 
 /// A point of the cross-section where stresses are evaluated, with stress coefficients per unit
 /// section force. Normal stress σ = N/A + My·z/Iy − Mz·y/Iz (from the props); shear
-/// τxy = T·`t_xy` + Vy·`vy_xy`, τxz = T·`t_xz` + Vz·`vz_xz`.
+/// τxy = T·`t_xy` + Vy·`vy_xy`, τxz = T·`t_xz` + Vz·`vz_xz`; on round sections the transverse
+/// shear is instead `round_shear`·(1 − s²)·(Vy, Vz), s = cosine between the point direction and
+/// V (Jourawski for the resultant shear force, which is not linear in Vy, Vz separately).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StressPoint {
     /// Local y coordinate, mm.
@@ -71,6 +73,8 @@ pub struct StressPoint {
     pub vy_xy: f64,
     /// τxz per unit Vz, 1/mm².
     pub vz_xz: f64,
+    /// Round sections: neutral-axis shear per unit resultant V (V·Q/(I·b)), 1/mm²; else 0.
+    pub round_shear: f64,
 }
 
 /// Rectangle torsion by the Saint-Venant series (Timoshenko & Goodier, Theory of Elasticity,
@@ -137,9 +141,7 @@ impl Section {
             if v.is_finite() && v > 0.0 {
                 Ok(())
             } else {
-                Err(format!(
-                    "section {name} must be positive and finite, got {v}"
-                ))
+                Err(format!("section {name} must be positive and finite, got {v}"))
             }
         };
         match *self {
@@ -151,20 +153,11 @@ impl Section {
             Section::Tube { d_out, d_in } => {
                 pos("d_out", d_out)?;
                 if !(d_in.is_finite() && d_in >= 0.0 && d_in < d_out) {
-                    return Err(format!(
-                        "tube d_in must satisfy 0 ≤ d_in < d_out = {d_out}, got {d_in}"
-                    ));
+                    return Err(format!("tube d_in must satisfy 0 ≤ d_in < d_out = {d_out}, got {d_in}"));
                 }
                 Ok(())
             }
-            Section::General {
-                a,
-                iy,
-                iz,
-                j,
-                asy,
-                asz,
-            } => {
+            Section::General { a, iy, iz, j, asy, asz } => {
                 pos("A", a)?;
                 pos("Iy", iy)?;
                 pos("Iz", iz)?;
@@ -223,21 +216,7 @@ impl Section {
                     asz: Some(kappa * a),
                 }
             }
-            Section::General {
-                a,
-                iy,
-                iz,
-                j,
-                asy,
-                asz,
-            } => SectionProps {
-                a,
-                iy,
-                iz,
-                j,
-                asy,
-                asz,
-            },
+            Section::General { a, iy, iz, j, asy, asz } => SectionProps { a, iy, iz, j, asy, asz },
         }
     }
 
@@ -272,6 +251,7 @@ impl Section {
                             t_xz: 0.0,
                             vy_xy: 0.0,
                             vz_xz: 0.0,
+                            round_shear: 0.0,
                         });
                     }
                 }
@@ -284,6 +264,7 @@ impl Section {
                         t_xz: s * tau_yface,
                         vy_xy: 0.0,
                         vz_xz: 1.5 / a,
+                        round_shear: 0.0,
                     });
                     // Face z = s·h/2: torsional shear along −y·s.
                     pts.push(StressPoint {
@@ -293,6 +274,7 @@ impl Section {
                         t_xz: 0.0,
                         vy_xy: 1.5 / a,
                         vz_xz: 0.0,
+                        round_shear: 0.0,
                     });
                 }
                 pts
@@ -333,8 +315,9 @@ impl Section {
             z,
             t_xy: -z / j,
             t_xz: y / j,
-            vy_xy: tau_na * (1.0 - ey * ey),
-            vz_xz: tau_na * (1.0 - ez * ez),
+            vy_xy: 0.0,
+            vz_xz: 0.0,
+            round_shear: tau_na,
         })
     }
 }
