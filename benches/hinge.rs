@@ -1,1 +1,82 @@
-fn main() {}
+//! Hinge characterisation throughput: one design at a time, and 10,000 designs with rayon.
+//! Brief target: ≥ 5,000 characterisations per second on 2 cores.
+
+use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use flexfem::hinge::{characterise, HingeSpec};
+use flexfem::material::Material;
+use rayon::prelude::*;
+use std::hint::black_box;
+
+/// 10,000 circular-notch and spherical-neck designs over the seed-000 design box (SPEC §6).
+fn designs() -> Vec<HingeSpec> {
+    (0..10_000)
+        .map(|i| {
+            let a = (i % 100) as f64 / 99.0;
+            let b = (i / 100) as f64 / 99.0;
+            if i % 2 == 0 {
+                HingeSpec::CircularNotch {
+                    r: 3.0 + 9.0 * a,
+                    t: 1.0 + 2.0 * b,
+                    w: 10.0,
+                    h: 10.0,
+                    blank_length: 20.0,
+                }
+            } else {
+                HingeSpec::SphericalNeck {
+                    l: 2.0 + 8.0 * a,
+                    t: 2.0 + 2.0 * b,
+                    r: 2.0 + 4.0 * a,
+                    h: 10.0,
+                    blank_length: 20.0,
+                }
+            }
+        })
+        .collect()
+}
+
+fn bench(c: &mut Criterion) {
+    let al = Material::AL7075;
+    let circ = HingeSpec::CircularNotch {
+        r: 8.0,
+        t: 2.0,
+        w: 10.0,
+        h: 10.0,
+        blank_length: 20.0,
+    };
+    let neck = HingeSpec::SphericalNeck {
+        l: 5.0,
+        t: 3.0,
+        r: 4.0,
+        h: 10.0,
+        blank_length: 20.0,
+    };
+    let mut g = c.benchmark_group("hinge");
+    g.throughput(Throughput::Elements(1));
+    g.bench_function("characterise_circular_notch", |b| {
+        b.iter(|| characterise(black_box(&circ), &al).unwrap())
+    });
+    g.bench_function("characterise_spherical_neck", |b| {
+        b.iter(|| characterise(black_box(&neck), &al).unwrap())
+    });
+    let ds = designs();
+    g.throughput(Throughput::Elements(ds.len() as u64));
+    g.sample_size(10);
+    g.bench_function("sweep_10000_single_thread", |b| {
+        b.iter(|| {
+            ds.iter()
+                .map(|d| characterise(d, &al).unwrap().hinge.k_bend)
+                .sum::<f64>()
+        })
+    });
+    g.bench_function("sweep_10000_rayon", |b| {
+        b.iter(|| {
+            ds.par_iter()
+                .map(|d| characterise(d, &al).unwrap().hinge.k_bend)
+                .sum::<f64>()
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

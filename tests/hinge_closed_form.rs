@@ -124,7 +124,8 @@ fn closed_forms_scale_as_length_cubed() {
     // scales a rotational stiffness E·L³ by λ³.
     let lam: f64 = 3.7;
     let l3 = lam.powi(3);
-    let checks: Vec<(&str, Box<dyn Fn(f64) -> f64>)> = vec![
+    type Scaled = Box<dyn Fn(f64) -> f64>;
+    let checks: Vec<(&str, Scaled)> = vec![
         (
             "pw_full",
             Box::new(|s| cf::paros_weisbord_full(8.0 * s, 2.0 * s, 10.0 * s, E)),

@@ -261,8 +261,8 @@ impl Profile {
                 if u <= l / 2.0 {
                     t
                 } else {
-                    // Diameter; for the shoulder beyond u = R the blank follows (u ≥ half_notch).
-                    arc(t, r, r, u - l / 2.0).max(t).min(f64::INFINITY)
+                    // Diameter 2 r(x) = t + 2(R − √(R² − u²)); beyond u = R the blank follows.
+                    arc(t, r, r, u - l / 2.0)
                 }
             }
         }

@@ -60,8 +60,71 @@ impl Default for TorsionMesh {
     }
 }
 
+/// Appends the nodes of [x0, x1] (x0 excluded, x1 included) with `ne` elements graded
+/// geometrically from both ends towards the middle, first sizes `h0` (at x0) and `h1` (at x1).
+fn graded(x0: f64, x1: f64, ne: usize, h0: f64, h1: f64, out: &mut [f64], n: &mut usize) {
+    let len = x1 - x0;
+    let ne = ne.max(2);
+    let (nl, nr) = (ne / 2, ne - ne / 2);
+    // Sizes of one side: h, h g, h g², … summing to `part`; g ≥ 1 by bisection.
+    let ratio = |h: f64, m: usize, part: f64| -> f64 {
+        let h = h.min(part / m as f64);
+        let f = |g: f64| {
+            if (g - 1.0).abs() < 1e-12 {
+                h * m as f64 - part
+            } else {
+                h * (g.powi(m as i32) - 1.0) / (g - 1.0) - part
+            }
+        };
+        let (mut lo, mut hi) = (1.0, 2.0);
+        while f(hi) < 0.0 {
+            hi *= 2.0;
+        }
+        for _ in 0..50 {
+            let mid = 0.5 * (lo + hi);
+            if f(mid) < 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    let xm = x0 + len * nl as f64 / ne as f64;
+    let gl = ratio(h0, nl, xm - x0);
+    let hl0 = h0.min((xm - x0) / nl as f64);
+    let mut x = x0;
+    let mut h = hl0;
+    for i in 0..nl {
+        x = if i + 1 == nl { xm } else { x + h };
+        h *= gl;
+        out[*n] = x;
+        *n += 1;
+    }
+    // Right side, built from x1 backwards.
+    let gr = ratio(h1, nr, x1 - xm);
+    let hr0 = h1.min((x1 - xm) / nr as f64);
+    let mut sizes = [0.0f64; 64];
+    let mut hh = hr0;
+    for s in sizes.iter_mut().take(nr) {
+        *s = hh;
+        hh *= gr;
+    }
+    let mut x = xm;
+    for i in (0..nr).rev() {
+        x = if i == 0 { x1 } else { x + sizes[i] };
+        out[*n] = x;
+        *n += 1;
+    }
+}
+
+/// Warping boundary-layer length √(EΓ/GJ) of the rectangle w × t.
+fn layer(w: f64, t: f64, e: f64, g: f64) -> f64 {
+    (e * rect_warping_constant(w, t) / (g * rect_torsion_constant(w, t))).sqrt()
+}
+
 /// Node coordinates of the half mesh x ≥ 0 (0 first); returns the count.
-fn half_nodes(profile: &Profile, mesh: TorsionMesh, out: &mut [f64; MAX_NODES / 2]) -> usize {
+fn half_nodes(profile: &Profile, mesh: TorsionMesh, e: f64, g: f64, out: &mut [f64; MAX_NODES / 2]) -> usize {
     let mut n = 0;
     out[n] = 0.0;
     n += 1;
@@ -70,47 +133,17 @@ fn half_nodes(profile: &Profile, mesh: TorsionMesh, out: &mut [f64; MAX_NODES / 
     for piece in pieces.as_slice() {
         let is_blank = piece.x0 >= hn;
         if is_blank {
-            // Geometric grading away from the notch: sizes h0·g^i summing to the blank length.
-            let ne = mesh.per_blank.max(1);
-            let len = piece.x1 - piece.x0;
-            let h0 = (profile.h / 16.0).min(len / ne as f64);
-            // Solve h0 (g^ne − 1)/(g − 1) = len for g by bisection (g ≥ 1).
-            let f = |g: f64| -> f64 {
-                if (g - 1.0).abs() < 1e-12 {
-                    h0 * ne as f64 - len
-                } else {
-                    h0 * (g.powi(ne as i32) - 1.0) / (g - 1.0) - len
-                }
-            };
-            let (mut lo, mut hi) = (1.0, 4.0);
-            while f(hi) < 0.0 {
-                hi *= 2.0;
-            }
-            for _ in 0..60 {
-                let mid = 0.5 * (lo + hi);
-                if f(mid) < 0.0 {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
-            let g = 0.5 * (lo + hi);
-            let mut x = piece.x0;
-            let mut hstep = h0;
-            for i in 0..ne {
-                x = if i + 1 == ne { piece.x1 } else { x + hstep };
-                hstep *= g;
-                out[n] = x;
-                n += 1;
-            }
+            // Boundary layers at the notch side (of the thinner section's length) and at the
+            // restrained end face.
+            let lb = layer(profile.w, profile.h, e, g);
+            let ln = layer(profile.w, profile.thickness(hn - 1e-9), e, g).min(lb);
+            graded(piece.x0, piece.x1, mesh.per_blank, ln / 2.0, lb / 2.0, out, &mut n);
         } else {
             let ne = mesh.per_piece.max(1);
             match piece.map {
                 Map::Linear => {
-                    for i in 1..=ne {
-                        out[n] = piece.x0 + (piece.x1 - piece.x0) * i as f64 / ne as f64;
-                        n += 1;
-                    }
+                    let l = layer(profile.w, profile.thickness(0.5 * (piece.x0 + piece.x1)), e, g);
+                    graded(piece.x0, piece.x1, ne, l / 2.0, l / 2.0, out, &mut n);
                 }
                 Map::Arc { origin, radius, c } => {
                     let phi = |x: f64| ((x - origin) / radius).clamp(-1.0, 1.0).asin();
@@ -145,7 +178,7 @@ fn half_nodes(profile: &Profile, mesh: TorsionMesh, out: &mut [f64; MAX_NODES / 
 /// faces, warping restrained at both faces. `e`, `g` in MPa.
 pub fn vlasov_torsion_stiffness(profile: &Profile, e: f64, g: f64, mesh: TorsionMesh) -> f64 {
     let mut half = [0.0; MAX_NODES / 2];
-    let nh = half_nodes(profile, mesh, &mut half);
+    let nh = half_nodes(profile, mesh, e, g, &mut half);
     // Full mesh: mirror.
     let mut xs = [0.0; MAX_NODES];
     let mut n = 0;
@@ -209,9 +242,7 @@ pub fn torsion_fe(xs: &[f64], props: impl Fn(f64) -> (f64, f64)) -> f64 {
     // ndof−1 (θ') at the end.
     let fixed = [0usize, 1, ndof - 1];
     for &dof in &fixed {
-        for d in 0..4 {
-            k[dof][d] = 0.0;
-        }
+        k[dof] = [0.0; 4];
         for d in 1..4 {
             if dof >= d {
                 k[dof - d][d] = 0.0;
