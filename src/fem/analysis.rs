@@ -64,7 +64,11 @@ pub fn prescribed_dofs(case: &LoadCase) -> Vec<NodeDof> {
 impl System {
     /// Validates the model, numbers the DOFs (supports + `prescribed` constrained, rigid links
     /// eliminated), assembles, checks for unconstrained DOFs and free bodies, and factorises.
-    pub fn new(model: &Model, prescribed: &[NodeDof], par: Parallelism) -> Result<System, FemError> {
+    pub fn new(
+        model: &Model,
+        prescribed: &[NodeDof],
+        par: Parallelism,
+    ) -> Result<System, FemError> {
         model.validate()?;
         let map = DofMap::new(model, prescribed, None)?;
         let pattern = Pattern::new(model, &map)?;
@@ -75,7 +79,11 @@ impl System {
     /// Like [`System::new`] but reusing the pattern and symbolic factorisation of `other`
     /// (same topology, e.g. another design of a sweep): only values and the numeric factor are
     /// computed. Errors with `PatternMismatch` if the topology differs.
-    pub fn with_topology_of(other: &System, model: &Model, par: Parallelism) -> Result<System, FemError> {
+    pub fn with_topology_of(
+        other: &System,
+        model: &Model,
+        par: Parallelism,
+    ) -> Result<System, FemError> {
         model.validate()?;
         let map = DofMap::new(model, &other.prescribed, None)?;
         if !other.pattern.matches(model, &map) || map.eq_dof != other.map.eq_dof {
@@ -106,7 +114,9 @@ impl System {
         check_free_bodies(model, &map)?;
         let factor = match Factor::new(symbolic, &k, par) {
             Ok(f) => f,
-            Err(FactorError::NotPositiveDefinite) => return Err(diagnose_mechanism(&map, &k, symbolic, par)),
+            Err(FactorError::NotPositiveDefinite) => {
+                return Err(diagnose_mechanism(&map, &k, symbolic, par))
+            }
             Err(FactorError::Other(s)) => return Err(FemError::Solver(s)),
         };
         Ok(System {
@@ -123,7 +133,9 @@ impl System {
     pub fn refactor(&mut self, model: &Model) -> Result<(), FemError> {
         let map = DofMap::new(model, &self.prescribed, None)?;
         if map.eq_dof != self.map.eq_dof {
-            return Err(FemError::PatternMismatch("equation numbering changed".into()));
+            return Err(FemError::PatternMismatch(
+                "equation numbering changed".into(),
+            ));
         }
         let k = self.pattern.assemble(model, &map)?;
         match self.factor.refactor(&k) {
@@ -166,7 +178,11 @@ impl System {
 
     /// Solves several load cases with one batched solve. Each case must prescribe exactly the
     /// DOFs of this system (values may differ).
-    pub fn solve_cases(&self, model: &Model, cases: &[&LoadCase]) -> Result<Vec<CaseResult>, FemError> {
+    pub fn solve_cases(
+        &self,
+        model: &Model,
+        cases: &[&LoadCase],
+    ) -> Result<Vec<CaseResult>, FemError> {
         let n = self.map.n_eq();
         let nd = model.n_dofs();
         let mut rhs = Vec::with_capacity(n * cases.len());
@@ -260,9 +276,9 @@ impl System {
                 super::dof::describe(&fixed)
             )));
         }
-        c.cholesky()
-            .map(|ch| ch.inverse())
-            .ok_or_else(|| FemError::Solver(format!("node {node}: compliance not positive definite")))
+        c.cholesky().map(|ch| ch.inverse()).ok_or_else(|| {
+            FemError::Solver(format!("node {node}: compliance not positive definite"))
+        })
     }
 
     /// Writes the reduced stiffness in Matrix Market format.
@@ -393,7 +409,12 @@ fn check_free_bodies(model: &Model, map: &DofMap) -> Result<(), FemError> {
 /// After a failed factorisation: inverse iteration on K + εD (D = diag K) finds the
 /// null-space motion; the DOFs that take part in it (energy-scaled amplitude ≥ 1 % of the
 /// largest) are reported.
-fn diagnose_mechanism(map: &DofMap, k: &SparseMatrix, symbolic: &SymbolicFactor, par: Parallelism) -> FemError {
+fn diagnose_mechanism(
+    map: &DofMap,
+    k: &SparseMatrix,
+    symbolic: &SymbolicFactor,
+    par: Parallelism,
+) -> FemError {
     let d = k.diagonal();
     let n = d.len();
     for eps in [1e-12, 1e-10, 1e-8, 1e-6] {
@@ -402,19 +423,30 @@ fn diagnose_mechanism(map: &DofMap, k: &SparseMatrix, symbolic: &SymbolicFactor,
             continue;
         };
         // Deterministic pseudo-random start (no zero components).
-        let mut x: Vec<f64> = (0..n).map(|i| 1.0 + ((i as f64) * 0.618_033_988_75).fract()).collect();
+        let mut x: Vec<f64> = (0..n)
+            .map(|i| 1.0 + ((i as f64) * 0.618_033_988_75).fract())
+            .collect();
         for _ in 0..4 {
             let mut y: Vec<f64> = x.iter().zip(&d).map(|(xi, di)| xi * di).collect();
             if f.solve_in_place(&mut y, 1).is_err() {
                 break;
             }
-            let norm = y.iter().zip(&d).map(|(yi, di)| yi * yi * di).sum::<f64>().sqrt();
+            let norm = y
+                .iter()
+                .zip(&d)
+                .map(|(yi, di)| yi * yi * di)
+                .sum::<f64>()
+                .sqrt();
             if !(norm > 0.0 && norm.is_finite()) {
                 break;
             }
             x = y.iter().map(|v| v / norm).collect();
         }
-        let amp: Vec<f64> = x.iter().zip(&d).map(|(xi, di)| xi.abs() * di.abs().sqrt()).collect();
+        let amp: Vec<f64> = x
+            .iter()
+            .zip(&d)
+            .map(|(xi, di)| xi.abs() * di.abs().sqrt())
+            .collect();
         let max = amp.iter().cloned().fold(0.0, f64::max);
         let dofs: Vec<NodeDof> = amp
             .iter()

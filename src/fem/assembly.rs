@@ -93,7 +93,10 @@ impl Pattern {
             let r = map.rep[nodes[0]];
             (map.element_eqs([r, r], 1), 1)
         } else {
-            (map.element_eqs([map.rep[nodes[0]], map.rep[nodes[1]]], 2), 2)
+            (
+                map.element_eqs([map.rep[nodes[0]], map.rep[nodes[1]]], 2),
+                2,
+            )
         }
     }
 
@@ -119,7 +122,10 @@ impl Pattern {
 
     /// Does this pattern fit `model` (same element node lists and equation count)?
     pub fn matches(&self, model: &Model, map: &DofMap) -> bool {
-        map.n_eq() == self.n_eq && element_topology(model).map(|t| t == self.topology).unwrap_or(false)
+        map.n_eq() == self.n_eq
+            && element_topology(model)
+                .map(|t| t == self.topology)
+                .unwrap_or(false)
     }
 
     /// Triplet values in pattern order, element matrices computed in parallel (rayon).

@@ -36,7 +36,11 @@ pub fn supported_dofs(model: &Model) -> Vec<usize> {
     let mut v: Vec<usize> = model
         .supports
         .iter()
-        .flat_map(|s| (0..6).filter(move |&d| s.fix[d]).map(move |d| 6 * s.node + d))
+        .flat_map(|s| {
+            (0..6)
+                .filter(move |&d| s.fix[d])
+                .map(move |d| 6 * s.node + d)
+        })
         .collect();
     v.sort_unstable();
     v.dedup();
@@ -50,7 +54,11 @@ impl DofMap {
     /// Errors on conflicting constraints: a node that is a slave of two links (or twice in one),
     /// a master that is itself a slave (chains are not resolved), a master listed as its own
     /// slave, a supported or prescribed slave DOF.
-    pub fn new(model: &Model, prescribed: &[NodeDof], case: Option<&str>) -> Result<DofMap, FemError> {
+    pub fn new(
+        model: &Model,
+        prescribed: &[NodeDof],
+        case: Option<&str>,
+    ) -> Result<DofMap, FemError> {
         let n = model.nodes.len();
         let mut slave_of = vec![NONE; n];
         for (il, link) in model.rigid_links.iter().enumerate() {

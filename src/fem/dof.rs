@@ -34,7 +34,9 @@ impl Dof {
 
     /// Parses `"ux"` … `"rz"` (case-insensitive).
     pub fn parse(s: &str) -> Option<Dof> {
-        Self::ALL.into_iter().find(|d| d.name().eq_ignore_ascii_case(s))
+        Self::ALL
+            .into_iter()
+            .find(|d| d.name().eq_ignore_ascii_case(s))
     }
 }
 

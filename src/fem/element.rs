@@ -84,7 +84,13 @@ pub fn beam_local_stiffness(e: f64, g: f64, p: &SectionProps, l: f64, shear: boo
 /// ```
 /// (shear terms dropped when `shear` is false or the shear area is `None`). Units: mm/N,
 /// 1/N (mixed), rad/(N·mm).
-pub fn cantilever_compliance(e: f64, g: f64, p: &SectionProps, l: f64, shear: bool) -> Matrix6<f64> {
+pub fn cantilever_compliance(
+    e: f64,
+    g: f64,
+    p: &SectionProps,
+    l: f64,
+    shear: bool,
+) -> Matrix6<f64> {
     let s = |a_s: Option<f64>| match (shear, a_s) {
         (true, Some(a)) => l / (g * a),
         _ => 0.0,
@@ -111,7 +117,8 @@ pub fn flex_b(l: f64) -> Mat6x12 {
     let mut b = Mat6x12::zeros();
     let r = rigid_arm(&Vector3::new(l, 0.0, 0.0));
     b.fixed_view_mut::<6, 6>(0, 0).copy_from(&(-r));
-    b.fixed_view_mut::<6, 6>(0, 6).copy_from(&Matrix6::identity());
+    b.fixed_view_mut::<6, 6>(0, 6)
+        .copy_from(&Matrix6::identity());
     b
 }
 

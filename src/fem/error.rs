@@ -8,7 +8,11 @@ use thiserror::Error;
 pub enum FemError {
     /// A node index outside `0..n_nodes`.
     #[error("{what} refers to node {node}, but the model has {n_nodes} nodes")]
-    NodeOutOfRange { what: String, node: usize, n_nodes: usize },
+    NodeOutOfRange {
+        what: String,
+        node: usize,
+        n_nodes: usize,
+    },
     /// Non-finite coordinate.
     #[error("node {node} has a non-finite coordinate")]
     BadNode { node: usize },
@@ -17,7 +21,11 @@ pub enum FemError {
     BadElement { element: usize, reason: String },
     /// The `up` vector of a beam is (nearly) parallel to its axis.
     #[error("element {element}: `up` vector is (nearly) parallel to the element axis (nodes {n1} → {n2}); give an `up` normal to the axis")]
-    UpParallel { element: usize, n1: usize, n2: usize },
+    UpParallel {
+        element: usize,
+        n1: usize,
+        n2: usize,
+    },
     /// Bad point mass, support, load … (with a description of the item).
     #[error("{0}")]
     BadInput(String),

@@ -8,7 +8,13 @@ use crate::material::Material;
 /// along the cell edges, all nodes of the bottom face (z = 0) clamped, one load case `"top"`
 /// with a total force `(0.1, 0.2, −1)·total` (N) spread over the top face nodes.
 /// DOFs: 6(n+1)³ (n = 31 gives 196 608).
-pub fn cubic_lattice(n: usize, cell: f64, section: Section, material: Material, total: f64) -> Model {
+pub fn cubic_lattice(
+    n: usize,
+    cell: f64,
+    section: Section,
+    material: Material,
+    total: f64,
+) -> Model {
     let m = n + 1;
     let id = |i: usize, j: usize, k: usize| (k * m + j) * m + i;
     let mut model = Model::new();
@@ -24,13 +30,31 @@ pub fn cubic_lattice(n: usize, cell: f64, section: Section, material: Material, 
             for i in 0..m {
                 let a = id(i, j, k);
                 if i + 1 < m {
-                    model.add_beam(Beam::new(a, id(i + 1, j, k), section, material, [0.0, 0.0, 1.0]));
+                    model.add_beam(Beam::new(
+                        a,
+                        id(i + 1, j, k),
+                        section,
+                        material,
+                        [0.0, 0.0, 1.0],
+                    ));
                 }
                 if j + 1 < m {
-                    model.add_beam(Beam::new(a, id(i, j + 1, k), section, material, [0.0, 0.0, 1.0]));
+                    model.add_beam(Beam::new(
+                        a,
+                        id(i, j + 1, k),
+                        section,
+                        material,
+                        [0.0, 0.0, 1.0],
+                    ));
                 }
                 if k + 1 < m {
-                    model.add_beam(Beam::new(a, id(i, j, k + 1), section, material, [1.0, 0.0, 0.0]));
+                    model.add_beam(Beam::new(
+                        a,
+                        id(i, j, k + 1),
+                        section,
+                        material,
+                        [1.0, 0.0, 0.0],
+                    ));
                 }
             }
         }

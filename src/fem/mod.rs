@@ -27,8 +27,8 @@ pub use analysis::{solve_static, CaseResult, StaticResults, System};
 pub use dof::{Dof, NodeDof};
 pub use error::FemError;
 pub use model::{
-    Beam, Element, FlexElement, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink, Spring, SpringAxes,
-    Support,
+    Beam, Element, FlexElement, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink,
+    Spring, SpringAxes, Support,
 };
 pub use section::{Section, SectionProps};
 

@@ -125,7 +125,10 @@ pub struct Support {
 impl Support {
     /// All six DOFs fixed (clamp).
     pub fn clamp(node: usize) -> Support {
-        Support { node, fix: [true; 6] }
+        Support {
+            node,
+            fix: [true; 6],
+        }
     }
     /// The given DOFs fixed.
     pub fn dofs(node: usize, dofs: &[Dof]) -> Support {
@@ -278,7 +281,10 @@ impl Model {
         }
         for (i, m) in self.masses.iter().enumerate() {
             self.check_node(|| format!("point mass {i}"), m.node)?;
-            if !(m.mass.is_finite() && m.mass >= 0.0 && m.inertia.iter().all(|v| v.is_finite() && *v >= 0.0)) {
+            if !(m.mass.is_finite()
+                && m.mass >= 0.0
+                && m.inertia.iter().all(|v| v.is_finite() && *v >= 0.0))
+            {
                 return Err(FemError::BadInput(format!(
                     "point mass {i}: mass and inertia must be finite and non-negative"
                 )));
@@ -304,7 +310,10 @@ impl Model {
         }
         let mut seen: Vec<NodeDof> = Vec::new();
         for (i, p) in case.displacements.iter().enumerate() {
-            self.check_node(|| format!("load case {:?} displacement {i}", case.name), p.node)?;
+            self.check_node(
+                || format!("load case {:?} displacement {i}", case.name),
+                p.node,
+            )?;
             if !p.value.is_finite() {
                 return Err(err(format!("displacement {i} is not finite")));
             }
@@ -329,7 +338,11 @@ impl Model {
         let (nodes, up) = match self.elements.get(ie) {
             Some(Element::Beam(b)) => (b.nodes, b.up),
             Some(Element::Flex(f)) => (f.nodes, f.up),
-            _ => return Err(FemError::BadInput(format!("element {ie} has no beam frame"))),
+            _ => {
+                return Err(FemError::BadInput(format!(
+                    "element {ie} has no beam frame"
+                )))
+            }
         };
         for &n in &nodes {
             self.check_node(|| format!("element {ie}"), n)?;
@@ -356,12 +369,18 @@ impl Model {
         };
         b.section
             .validate()
-            .map_err(|reason| FemError::BadElement { element: ie, reason })?;
+            .map_err(|reason| FemError::BadElement {
+                element: ie,
+                reason,
+            })?;
         let m = &b.material;
         if !(m.e.is_finite() && m.e > 0.0 && m.nu.is_finite() && m.nu > -1.0 && m.nu < 0.5) {
             return Err(FemError::BadElement {
                 element: ie,
-                reason: format!("material needs E > 0 and −1 < ν < 0.5 (E = {}, ν = {})", m.e, m.nu),
+                reason: format!(
+                    "material needs E > 0 and −1 < ν < 0.5 (E = {}, ν = {})",
+                    m.e, m.nu
+                ),
             });
         }
         Ok((b.section.properties(m.nu), m.e, m.shear_modulus()))
@@ -383,7 +402,9 @@ impl Model {
                     reason: "compliance must be finite, symmetric and positive definite".into(),
                 })?
             }
-            Element::Spring(_) => return Err(FemError::BadInput(format!("element {ie} is a spring"))),
+            Element::Spring(_) => {
+                return Err(FemError::BadInput(format!("element {ie} is a spring")))
+            }
         };
         Ok((k, t12(&lam)))
     }
@@ -470,7 +491,9 @@ impl Model {
     /// Tip stiffness C⁻¹ of a flexibility element (local axes at node 2).
     pub fn flex_tip_stiffness(&self, ie: usize) -> Result<Matrix6<f64>, FemError> {
         let Some(Element::Flex(f)) = self.elements.get(ie) else {
-            return Err(FemError::BadInput(format!("element {ie} is not a flexibility element")));
+            return Err(FemError::BadInput(format!(
+                "element {ie} is not a flexibility element"
+            )));
         };
         let c = Matrix6::from_fn(|i, j| f.compliance[i][j]);
         flex_tip_stiffness(&c).ok_or_else(|| FemError::BadElement {

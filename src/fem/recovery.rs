@@ -132,7 +132,11 @@ pub fn element_result(model: &Model, ie: usize, u: &[f64]) -> Result<ElementResu
             let delta = b * d;
             let f: [f64; 6] = std::array::from_fn(|i| k[i] * delta[i]);
             let energy = 0.5 * (0..6).map(|i| k[i] * delta[i] * delta[i]).sum::<f64>();
-            let end_forces = if n == 1 { [f, [0.0; 6]] } else { [f.map(|v| -v), f] };
+            let end_forces = if n == 1 {
+                [f, [0.0; 6]]
+            } else {
+                [f.map(|v| -v), f]
+            };
             Ok(ElementResult {
                 end_forces,
                 section_forces: [f, f],
@@ -204,7 +208,13 @@ pub fn model_size(model: &Model) -> f64 {
 
 /// Builds the [`CaseResult`] from the full displacement vector `u` and the applied load
 /// vector `f` (6 per node). Reactions r = Aᵀ(K u − f) at constrained DOFs.
-pub fn case_result(model: &Model, map: &DofMap, name: &str, u: &[f64], f: &[f64]) -> Result<CaseResult, FemError> {
+pub fn case_result(
+    model: &Model,
+    map: &DofMap,
+    name: &str,
+    u: &[f64],
+    f: &[f64],
+) -> Result<CaseResult, FemError> {
     let p = internal_forces(model, u)?;
     let g: Vec<f64> = p.iter().zip(f).map(|(a, b)| a - b).collect();
     let gi = map.to_independent(&g);

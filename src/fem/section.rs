@@ -137,7 +137,9 @@ impl Section {
             if v.is_finite() && v > 0.0 {
                 Ok(())
             } else {
-                Err(format!("section {name} must be positive and finite, got {v}"))
+                Err(format!(
+                    "section {name} must be positive and finite, got {v}"
+                ))
             }
         };
         match *self {
@@ -149,11 +151,20 @@ impl Section {
             Section::Tube { d_out, d_in } => {
                 pos("d_out", d_out)?;
                 if !(d_in.is_finite() && d_in >= 0.0 && d_in < d_out) {
-                    return Err(format!("tube d_in must satisfy 0 ≤ d_in < d_out = {d_out}, got {d_in}"));
+                    return Err(format!(
+                        "tube d_in must satisfy 0 ≤ d_in < d_out = {d_out}, got {d_in}"
+                    ));
                 }
                 Ok(())
             }
-            Section::General { a, iy, iz, j, asy, asz } => {
+            Section::General {
+                a,
+                iy,
+                iz,
+                j,
+                asy,
+                asz,
+            } => {
                 pos("A", a)?;
                 pos("Iy", iy)?;
                 pos("Iz", iz)?;
@@ -212,7 +223,21 @@ impl Section {
                     asz: Some(kappa * a),
                 }
             }
-            Section::General { a, iy, iz, j, asy, asz } => SectionProps { a, iy, iz, j, asy, asz },
+            Section::General {
+                a,
+                iy,
+                iz,
+                j,
+                asy,
+                asz,
+            } => SectionProps {
+                a,
+                iy,
+                iz,
+                j,
+                asy,
+                asz,
+            },
         }
     }
 

@@ -8,7 +8,9 @@
 use super::error::FemError;
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::cholesky::llt::factor::{LltError, LltRegularization};
-use faer::sparse::linalg::cholesky::{factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymmetricOrdering};
+use faer::sparse::linalg::cholesky::{
+    factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymmetricOrdering,
+};
 use faer::sparse::{Argsort, Pair, SparseColMat, SymbolicSparseColMat};
 use faer::{Conj, MatMut, Par, Side};
 use std::io::Write;
@@ -51,7 +53,8 @@ impl SparsePattern {
                 "entry ({r}, {c}) is not in the lower triangle of a {n}×{n} matrix"
             )));
         }
-        let idx: Vec<Pair<usize, usize>> = pairs.iter().map(|&(row, col)| Pair { row, col }).collect();
+        let idx: Vec<Pair<usize, usize>> =
+            pairs.iter().map(|&(row, col)| Pair { row, col }).collect();
         let (symbolic, argsort) = SymbolicSparseColMat::try_new_from_indices(n, n, &idx)
             .map_err(|e| FemError::Solver(format!("pattern: {e:?}")))?;
         Ok(SparsePattern {
@@ -195,7 +198,9 @@ impl SymbolicFactor {
             Default::default(),
         )
         .map_err(|e| FemError::Solver(format!("symbolic factorisation: {e:?}")))?;
-        Ok(SymbolicFactor { inner: Arc::new(inner) })
+        Ok(SymbolicFactor {
+            inner: Arc::new(inner),
+        })
     }
 
     /// Dimension.
@@ -229,7 +234,11 @@ pub struct Factor {
 impl Factor {
     /// Numeric factorisation of `k` (which must have the pattern the symbolic factor was built
     /// from).
-    pub fn new(symbolic: &SymbolicFactor, k: &SparseMatrix, par: Parallelism) -> Result<Factor, FactorError> {
+    pub fn new(
+        symbolic: &SymbolicFactor,
+        k: &SparseMatrix,
+        par: Parallelism,
+    ) -> Result<Factor, FactorError> {
         let mut f = Factor {
             symbolic: symbolic.clone(),
             l_values: Vec::new(),
@@ -256,7 +265,8 @@ impl Factor {
         self.l_values.resize(sym.len_val(), 0.0);
         let par = self.par.par();
         let req = sym.factorize_numeric_llt_scratch::<f64>(par, Default::default());
-        let mut mem = MemBuffer::try_new(req).map_err(|_| FactorError::Other("out of memory".into()))?;
+        let mut mem =
+            MemBuffer::try_new(req).map_err(|_| FactorError::Other("out of memory".into()))?;
         let res = sym.factorize_numeric_llt::<f64>(
             &mut self.l_values,
             k.mat.as_ref(),

@@ -38,7 +38,11 @@ pub fn frame_from_x_up(x: Vector3<f64>, up: Vector3<f64>) -> Option<Matrix3<f64>
     }
     let ez = ez_raw.normalize();
     let ey = ez.cross(&ex);
-    Some(Matrix3::from_rows(&[ex.transpose(), ey.transpose(), ez.transpose()]))
+    Some(Matrix3::from_rows(&[
+        ex.transpose(),
+        ey.transpose(),
+        ez.transpose(),
+    ]))
 }
 
 /// T = diag(Λ, Λ, Λ, Λ): d_local = T·d_global for a two-node element; K = Tᵀ k T.

@@ -50,7 +50,8 @@ pub fn i3(beta: f64) -> f64 {
 pub fn i4(beta: f64) -> f64 {
     let b = beta;
     let q = 2.0 * b + b * b;
-    (6.0 * b.powi(4) + 24.0 * b.powi(3) + 46.0 * b * b + 44.0 * b + 15.0) / (3.0 * q.powi(3) * (1.0 + b).powi(2))
+    (6.0 * b.powi(4) + 24.0 * b.powi(3) + 46.0 * b * b + 44.0 * b + 15.0)
+        / (3.0 * q.powi(3) * (1.0 + b).powi(2))
         + 2.0 * (4.0 * b * b + 8.0 * b + 5.0) / q.powf(3.5) * ((2.0 + b) / b).sqrt().atan()
 }
 

@@ -143,7 +143,12 @@ impl HingeSpec {
                 w,
                 h,
                 blank_length,
-            } => Profile::rectangular(Contour::Elliptical { ax, ay, t }, w, h, blank.unwrap_or(blank_length)),
+            } => Profile::rectangular(
+                Contour::Elliptical { ax, ay, t },
+                w,
+                h,
+                blank.unwrap_or(blank_length),
+            ),
             CornerFilleted {
                 l,
                 r,
@@ -151,7 +156,12 @@ impl HingeSpec {
                 w,
                 h,
                 blank_length,
-            } => Profile::rectangular(Contour::CornerFilleted { l, r, t }, w, h, blank.unwrap_or(blank_length)),
+            } => Profile::rectangular(
+                Contour::CornerFilleted { l, r, t },
+                w,
+                h,
+                blank.unwrap_or(blank_length),
+            ),
             Leaf {
                 l,
                 t,
@@ -319,7 +329,10 @@ pub fn closed_forms(spec: &HingeSpec, e: f64) -> BTreeMap<&'static str, f64> {
     match *spec {
         HingeSpec::CircularNotch { r, t, w, .. } => {
             m.insert("paros_weisbord_full", cf::paros_weisbord_full(r, t, w, e));
-            m.insert("paros_weisbord_simplified", cf::paros_weisbord_simplified(r, t, w, e));
+            m.insert(
+                "paros_weisbord_simplified",
+                cf::paros_weisbord_simplified(r, t, w, e),
+            );
             m.insert("wu_zhou", cf::wu_zhou(r, t, w, e));
             m.insert(
                 "smith_lobontiu_elliptical_ax_eq_ay",
@@ -333,7 +346,10 @@ pub fn closed_forms(spec: &HingeSpec, e: f64) -> BTreeMap<&'static str, f64> {
             );
         }
         HingeSpec::CornerFilleted { l, r, t, w, .. } => {
-            m.insert("lobontiu_corner_filleted", cf::lobontiu_corner_filleted(l, r, t, w, e));
+            m.insert(
+                "lobontiu_corner_filleted",
+                cf::lobontiu_corner_filleted(l, r, t, w, e),
+            );
         }
         HingeSpec::Leaf { l, t, w, .. } => {
             m.insert("euler_bernoulli", cf::leaf(l, t, w, e));
@@ -359,10 +375,7 @@ fn model_notes(profile: &Profile, material: &Material, kt: f64) -> Vec<String> {
     ];
     match profile.contour {
         Contour::SphericalNeck { .. } => {
-            v.push(
-                "torsion: Saint-Venant (circular waist, no warping); clipped-disk J blended between disk and square"
-                    .into(),
-            );
+            v.push("torsion: Saint-Venant (circular waist, no warping); clipped-disk J blended between disk and square".into());
             v.push(format!("stress: 32M/(pi t^3) at the waist x Kt = {kt:.4} (Kt = (1 + t/(2R))^(9/20), flat-notch fit applied to the turned neck)"));
         }
         _ => {

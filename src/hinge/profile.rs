@@ -186,7 +186,10 @@ impl Profile {
                     return Err(geom(
                         "R",
                         r,
-                        format!("must be <= l/2 = {} (two fillets fit in the notch length l)", l / 2.0),
+                        format!(
+                            "must be <= l/2 = {} (two fillets fit in the notch length l)",
+                            l / 2.0
+                        ),
                     ));
                 }
                 let straight = l / 2.0 - r;
@@ -198,7 +201,11 @@ impl Profile {
                 l / 2.0
             }
             Contour::SphericalNeck { .. } => {
-                return Err(geom("type", f64::NAN, "spherical_neck is built with Profile::neck"))
+                return Err(geom(
+                    "type",
+                    f64::NAN,
+                    "spherical_neck is built with Profile::neck",
+                ))
             }
         };
         Ok(Profile {

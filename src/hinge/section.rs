@@ -171,7 +171,8 @@ pub fn clipped_disk(r: f64, h: f64, nu: f64) -> Section {
     let seg_area = r2 * (alpha - (2.0 * alpha).sin() / 2.0);
     let area = PI * r2 - 4.0 * seg_area;
     let seg_perp = r4 / 2.0 * (alpha / 2.0 - (4.0 * alpha).sin() / 8.0);
-    let seg_par = 2.0 / 3.0 * r4 * (3.0 * alpha / 8.0 - (2.0 * alpha).sin() / 4.0 + (4.0 * alpha).sin() / 32.0);
+    let seg_par =
+        2.0 / 3.0 * r4 * (3.0 * alpha / 8.0 - (2.0 * alpha).sin() / 4.0 + (4.0 * alpha).sin() / 32.0);
     let i = PI * r4 / 4.0 - 2.0 * seg_perp - 2.0 * seg_par;
     let ip = 2.0 * i;
     let s = (r - c) / (c * (std::f64::consts::SQRT_2 - 1.0));
