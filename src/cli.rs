@@ -53,9 +53,7 @@ pub const EXIT_BAD_CASE: u8 = 2;
 pub const EXIT_FAILED: u8 = 1;
 
 fn read_case(path: &Path) -> Result<case::Case, CaseError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CaseError::new(".", format!("cannot read case file {}: {e}", path.display())))?;
-    case::parse(&text)
+    case::load(path)
 }
 
 fn fail(e: &RunError) -> ExitCode {
@@ -68,7 +66,7 @@ fn fail(e: &RunError) -> ExitCode {
 
 fn write_outputs(dir: &Path, outcome: &analysis::Outcome) -> std::io::Result<()> {
     std::fs::create_dir_all(dir)?;
-    let json = serde_json::to_string_pretty(&outcome.json).map_err(std::io::Error::other)?;
+    let json = crate::report::json::pretty(&outcome.json);
     write_atomic(&dir.join("result.json"), json.as_bytes())?;
     write_atomic(&dir.join("report.md"), outcome.report.markdown.as_bytes())?;
     if !outcome.report.csv.is_empty() {
@@ -118,7 +116,7 @@ pub fn run(cli: Cli) -> ExitCode {
             }
             match format {
                 Format::Json if out.is_none() => {
-                    println!("{}", serde_json::to_string_pretty(&outcome.json).unwrap_or_default())
+                    println!("{}", crate::report::json::pretty(&outcome.json))
                 }
                 Format::Json => eprintln!(
                     "wrote {}",

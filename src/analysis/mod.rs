@@ -1,5 +1,6 @@
 //! Analyses: validated case → typed result → JSON/Markdown/CSV views.
 
+pub mod fem_static;
 pub mod kinematics;
 
 use crate::case::{Case, CaseError};
@@ -91,6 +92,7 @@ fn to_json<T: serde::Serialize>(v: &T) -> Result<serde_json::Value, AnalysisErro
 pub fn check(case: &Case) -> Result<(), CaseError> {
     match case {
         Case::Kinematics(k) => k.validate().map(|_| ()),
+        Case::Static(s) => s.model.build().map(|_| ()),
     }
 }
 
@@ -103,6 +105,15 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
             Ok(Outcome {
                 json: to_json(&r)?,
                 report: kinematics::report(&r),
+                files: vec![],
+            })
+        }
+        Case::Static(s) => {
+            let model = s.model.build()?;
+            let (r, _raw) = fem_static::solve(&model)?;
+            Ok(Outcome {
+                json: to_json(&r)?,
+                report: fem_static::report(&r),
                 files: vec![],
             })
         }

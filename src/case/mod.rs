@@ -7,12 +7,14 @@
 pub mod error;
 pub mod kinematics;
 pub mod material;
+pub mod mesh;
 
 pub use error::CaseError;
 pub use material::MaterialSpec;
 
 use serde::de::DeserializeOwned;
 use serde_json::Value;
+use std::path::{Path, PathBuf};
 
 /// A parsed case file (not yet validated).
 #[derive(Debug, Clone, schemars::JsonSchema)]
@@ -20,16 +22,19 @@ use serde_json::Value;
 pub enum Case {
     /// 3-PRS rigid-body kinematics.
     Kinematics(kinematics::KinematicsCase),
+    /// Linear (or nonlinear) statics of a generic beam model.
+    Static(mesh::StaticCase),
 }
 
 /// The `analysis` names this build understands.
-pub const ANALYSES: &[&str] = &["kinematics"];
+pub const ANALYSES: &[&str] = &["kinematics", "static"];
 
 impl Case {
     /// The `analysis` name.
     pub fn analysis(&self) -> &'static str {
         match self {
             Case::Kinematics(_) => "kinematics",
+            Case::Static(_) => "static",
         }
     }
 }
@@ -46,14 +51,53 @@ pub fn from_value<T: DeserializeOwned>(value: Value, prefix: &str) -> Result<T, 
     })
 }
 
-/// Parses case-file text.
+/// Reads and parses a case file; files it refers to (`mesh`) are looked up beside it.
+pub fn load(path: &Path) -> Result<Case, CaseError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CaseError::new(".", format!("cannot read case file {}: {e}", path.display())))?;
+    parse_in(&text, path.parent())
+}
+
+/// Parses case-file text (relative file references resolve against the working folder).
 pub fn parse(text: &str) -> Result<Case, CaseError> {
+    parse_in(text, None)
+}
+
+/// Parses case-file text; relative file references resolve against `base` first.
+pub fn parse_in(text: &str, base: Option<&Path>) -> Result<Case, CaseError> {
     let value: Value = serde_json::from_str(text).map_err(|e| CaseError::new(".", format!("not valid JSON: {e}")))?;
-    parse_value(value)
+    parse_value(value, base)
+}
+
+/// Resolves a file named in a case: relative to `base` if it exists there, else as given.
+pub fn resolve_file(name: &str, base: Option<&Path>) -> PathBuf {
+    let p = Path::new(name);
+    match base {
+        Some(b) if p.is_relative() && b.join(p).exists() => b.join(p),
+        _ => p.to_path_buf(),
+    }
+}
+
+fn read_json(path_field: &str, name: &str, base: Option<&Path>) -> Result<Value, CaseError> {
+    let file = resolve_file(name, base);
+    let text = std::fs::read_to_string(&file).map_err(|e| {
+        CaseError::value(
+            path_field,
+            format!("\"{name}\""),
+            format!("cannot read {}: {e}", file.display()),
+        )
+    })?;
+    serde_json::from_str(&text).map_err(|e| {
+        CaseError::value(
+            path_field,
+            format!("\"{name}\""),
+            format!("{} is not valid JSON: {e}", file.display()),
+        )
+    })
 }
 
 /// Parses a case already read as JSON.
-pub fn parse_value(mut value: Value) -> Result<Case, CaseError> {
+pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseError> {
     let Value::Object(map) = &mut value else {
         return Err(CaseError::value(
             ".",
@@ -79,6 +123,31 @@ pub fn parse_value(mut value: Value) -> Result<Case, CaseError> {
     };
     match analysis.as_str() {
         "kinematics" => Ok(Case::Kinematics(from_value(value, "")?)),
+        "static" => {
+            let mesh_name = match map.remove("mesh") {
+                None | Some(Value::Null) => None,
+                Some(Value::String(s)) => Some(s),
+                Some(other) => return Err(CaseError::value("mesh", short(&other), "must be a file name (string)")),
+            };
+            let inline: mesh::MeshSpec = from_value(value, "")?;
+            let model = match &mesh_name {
+                Some(name) => {
+                    let mut mv = read_json("mesh", name, base)?;
+                    if let Value::Object(m) = &mut mv {
+                        m.remove("analysis");
+                    }
+                    let from_file: mesh::MeshSpec = from_value(mv, "").map_err(|e| {
+                        CaseError::new(
+                            "mesh",
+                            format!("in mesh file \"{name}\" at `{}`: {}", e.path, e.message),
+                        )
+                    })?;
+                    mesh::MeshSpec::merge_inline(from_file, inline)?
+                }
+                None => inline,
+            };
+            Ok(Case::Static(mesh::StaticCase { mesh: mesh_name, model }))
+        }
         other => Err(CaseError::value(
             "analysis",
             format!("\"{other}\""),

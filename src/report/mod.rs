@@ -1,4 +1,5 @@
 //! Reports: Markdown, CSV, SVG and VTK views of results (formatting only).
 
+pub mod json;
 pub mod markdown;
 pub mod vtk;

@@ -1,0 +1,118 @@
+//! The `static` analysis on a generic beam model.
+
+use super::{AnalysisError, Report};
+use crate::fem::{self, Model};
+use crate::report::markdown::Table;
+use serde::Serialize;
+
+/// One load case of a `static` result (INTERFACE.md).
+#[derive(Debug, Clone, Serialize)]
+pub struct StaticCaseRow {
+    /// Load-case name.
+    pub name: String,
+    /// Per node [ux, uy, uz (mm), rx, ry, rz (degrees)], global axes.
+    pub displacements: Vec<[f64; 6]>,
+    /// Per supported node [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)], in the order of `reaction_nodes`.
+    pub reactions: Vec<[f64; 6]>,
+    /// The supported nodes, ascending.
+    pub reaction_nodes: Vec<usize>,
+    /// Largest von Mises stress over all beams, MPa (`null` when no element has a stress).
+    pub max_von_mises: Option<f64>,
+    /// Largest von Mises stress per element, MPa (`null` for springs).
+    pub element_von_mises: Vec<Option<f64>>,
+    /// Sum of loads plus reactions (should vanish): [N, N, N, N·mm, N·mm, N·mm].
+    pub equilibrium_residual: [f64; 6],
+}
+
+/// Result of the `static` analysis.
+#[derive(Debug, Clone, Serialize)]
+pub struct StaticResult {
+    /// Load cases in input order.
+    pub load_cases: Vec<StaticCaseRow>,
+    /// Units of the output arrays.
+    pub units: Units,
+    /// Model notes.
+    pub model: Vec<String>,
+}
+
+/// Units of the `static` result.
+#[derive(Debug, Clone, Serialize)]
+pub struct Units {
+    /// Units of each displacement entry.
+    pub displacements: &'static str,
+    /// Units of each reaction entry.
+    pub reactions: &'static str,
+}
+
+/// Solves every load case of the model.
+pub fn solve(model: &Model) -> Result<(StaticResult, fem::StaticResults), AnalysisError> {
+    let res = fem::solve_static(model).map_err(|e| AnalysisError::new("model", e.to_string()))?;
+    let rows = res
+        .load_cases
+        .iter()
+        .map(|c| StaticCaseRow {
+            name: c.name.clone(),
+            displacements: c
+                .displacements
+                .iter()
+                .map(|d| {
+                    [
+                        d[0],
+                        d[1],
+                        d[2],
+                        d[3].to_degrees(),
+                        d[4].to_degrees(),
+                        d[5].to_degrees(),
+                    ]
+                })
+                .collect(),
+            reactions: c.reactions.iter().map(|(_, r)| *r).collect(),
+            reaction_nodes: c.reactions.iter().map(|(n, _)| *n).collect(),
+            max_von_mises: c.max_von_mises,
+            element_von_mises: c.elements.iter().map(|e| e.max_von_mises()).collect(),
+            equilibrium_residual: c.statics.residual(),
+        })
+        .collect();
+    let notes = vec![
+        "linear statics, small displacements".to_string(),
+        "beams: 2-node exact Timoshenko (Euler–Bernoulli where \"shear\": false); stresses at section critical points"
+            .to_string(),
+    ];
+    Ok((
+        StaticResult {
+            load_cases: rows,
+            units: Units {
+                displacements: "mm, mm, mm, deg, deg, deg",
+                reactions: "N, N, N, N·mm, N·mm, N·mm",
+            },
+            model: notes,
+        },
+        res,
+    ))
+}
+
+/// Markdown/CSV views.
+pub fn report(r: &StaticResult) -> Report {
+    let mut md = String::from("# Linear static analysis\n\n");
+    let mut csv = String::from("load_case,node,ux_mm,uy_mm,uz_mm,rx_deg,ry_deg,rz_deg\n");
+    for c in &r.load_cases {
+        md += &format!("## Load case `{}`\n\n", c.name);
+        if let Some(s) = c.max_von_mises {
+            md += &format!("Maximum von Mises stress: {s:.3} MPa.\n\n");
+        }
+        let mut t = Table::new(&["node", "ux (mm)", "uy (mm)", "uz (mm)", "rx (°)", "ry (°)", "rz (°)"]);
+        for (i, d) in c.displacements.iter().enumerate() {
+            let mut row = vec![i.to_string()];
+            row.extend(d.iter().map(|v| format!("{v:.6e}")));
+            t.row(row);
+            csv += &format!("{},{i},{},{},{},{},{},{}\n", c.name, d[0], d[1], d[2], d[3], d[4], d[5]);
+        }
+        if c.displacements.len() <= 200 {
+            md += &t.render();
+        } else {
+            md += &format!("({} nodes: see result.csv)\n", c.displacements.len());
+        }
+        md += "\n";
+    }
+    Report { markdown: md, csv }
+}

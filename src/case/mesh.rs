@@ -1,0 +1,525 @@
+//! The generic beam model (`static`, `modal`): inline or from `meshes/*.json` (INTERFACE.md).
+
+use super::error::{check, CaseError};
+use super::material::MaterialSpec;
+use crate::fem::{self, Dof};
+use serde::Deserialize;
+use std::collections::BTreeMap;
+
+/// A cross-section, by `shape`.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(tag = "shape", rename_all = "snake_case", deny_unknown_fields)]
+pub enum SectionSpec {
+    /// Solid rectangle: `h` along local z, `w` along local y (Iy = w·h³/12), mm.
+    Rect {
+        /// Width along local y, mm.
+        w: f64,
+        /// Height along local z, mm.
+        h: f64,
+    },
+    /// Solid circle of diameter `d`, mm.
+    Circle {
+        /// Diameter, mm.
+        d: f64,
+    },
+    /// Circular tube: outer diameter `d`, wall thickness `t`, mm.
+    Tube {
+        /// Outer diameter, mm.
+        d: f64,
+        /// Wall thickness, mm.
+        t: f64,
+    },
+    /// Explicit properties (mm², mm⁴); omitted shear areas mean no shear deformation.
+    General {
+        /// Area, mm².
+        #[serde(rename = "A")]
+        a: f64,
+        /// Second moment about local y, mm⁴.
+        #[serde(rename = "Iy")]
+        iy: f64,
+        /// Second moment about local z, mm⁴.
+        #[serde(rename = "Iz")]
+        iz: f64,
+        /// Torsion constant, mm⁴.
+        #[serde(rename = "J")]
+        j: f64,
+        /// Shear area for local y, mm².
+        #[serde(rename = "Asy", default)]
+        asy: Option<f64>,
+        /// Shear area for local z, mm².
+        #[serde(rename = "Asz", default)]
+        asz: Option<f64>,
+    },
+    /// Shell of thickness `t`, mm (shell elements).
+    Shell {
+        /// Thickness, mm.
+        t: f64,
+    },
+}
+
+/// A DOF name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, schemars::JsonSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum DofName {
+    /// Translation x.
+    Ux,
+    /// Translation y.
+    Uy,
+    /// Translation z.
+    Uz,
+    /// Rotation about x.
+    Rx,
+    /// Rotation about y.
+    Ry,
+    /// Rotation about z.
+    Rz,
+}
+
+impl DofName {
+    fn dof(self) -> Dof {
+        match self {
+            DofName::Ux => Dof::Ux,
+            DofName::Uy => Dof::Uy,
+            DofName::Uz => Dof::Uz,
+            DofName::Rx => Dof::Rx,
+            DofName::Ry => Dof::Ry,
+            DofName::Rz => Dof::Rz,
+        }
+    }
+}
+
+/// An element, by `type`.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum ElementSpec {
+    /// 2-node 3D beam (Timoshenko; `"shear": false` for Euler–Bernoulli).
+    Beam {
+        /// Node indices (0-based).
+        nodes: [usize; 2],
+        /// Section name (key of `sections`).
+        section: String,
+        /// Material name (key of `materials`).
+        material: String,
+        /// Vector fixing local z (its component normal to the axis).
+        up: [f64; 3],
+        /// Include shear deformation (default true).
+        #[serde(default = "yes")]
+        shear: bool,
+    },
+    /// 6-DOF spring between two nodes, or from one node to ground; stiffness in global axes
+    /// (N/mm, N·mm/rad).
+    Spring {
+        /// One node (to ground) or two.
+        nodes: Vec<usize>,
+        /// [kx, ky, kz, krx, kry, krz].
+        k: [f64; 6],
+    },
+    /// Point mass, tonne (rotary inertia tonne·mm² optional).
+    Mass {
+        /// Node index.
+        node: usize,
+        /// Mass, tonne.
+        mass: f64,
+        /// Rotary inertia about x, y, z, tonne·mm².
+        #[serde(default)]
+        inertia: [f64; 3],
+    },
+    /// Rigid link: every slave moves with the master as a rigid body.
+    Rigid {
+        /// Master node.
+        master: usize,
+        /// Slave nodes.
+        slaves: Vec<usize>,
+    },
+    /// 4-node flat shell.
+    Shell4 {
+        /// Node indices.
+        nodes: [usize; 4],
+        /// Section name (a `shell` section).
+        section: String,
+        /// Material name.
+        material: String,
+    },
+}
+
+fn yes() -> bool {
+    true
+}
+
+/// A support.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SupportSpec {
+    /// Node index.
+    pub node: usize,
+    /// DOFs fixed.
+    pub fix: Vec<DofName>,
+}
+
+/// A nodal load.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ForceSpec {
+    /// Node index.
+    pub node: usize,
+    /// [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)], global axes.
+    #[serde(rename = "F")]
+    pub f: [f64; 6],
+}
+
+/// A prescribed displacement.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct DisplacementSpec {
+    /// Node index.
+    pub node: usize,
+    /// Which DOF.
+    pub dof: DofName,
+    /// Value, mm or rad.
+    pub value: f64,
+}
+
+/// A load case.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct LoadCaseSpec {
+    /// Name shown in results.
+    pub name: String,
+    /// Nodal loads.
+    #[serde(default)]
+    pub forces: Vec<ForceSpec>,
+    /// Prescribed displacements.
+    #[serde(default)]
+    pub displacements: Vec<DisplacementSpec>,
+}
+
+/// The model part of a `static` or `modal` case (also the content of a mesh file).
+#[derive(Debug, Clone, Default, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MeshSpec {
+    /// Named materials.
+    #[serde(default)]
+    pub materials: BTreeMap<String, MaterialSpec>,
+    /// Named sections.
+    #[serde(default)]
+    pub sections: BTreeMap<String, SectionSpec>,
+    /// Node coordinates, mm.
+    #[serde(default)]
+    pub nodes: Vec<[f64; 3]>,
+    /// Elements.
+    #[serde(default)]
+    pub elements: Vec<ElementSpec>,
+    /// Rigid links (also accepted as elements of type `rigid`).
+    #[serde(default)]
+    pub rigid_links: Vec<RigidSpec>,
+    /// Supports.
+    #[serde(default)]
+    pub supports: Vec<SupportSpec>,
+    /// Load cases.
+    #[serde(default)]
+    pub load_cases: Vec<LoadCaseSpec>,
+}
+
+/// A rigid link.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RigidSpec {
+    /// Master node.
+    pub master: usize,
+    /// Slave nodes.
+    pub slaves: Vec<usize>,
+}
+
+/// `"analysis": "static"`: a model inline or from a `mesh` file, plus load cases.
+#[derive(Debug, Clone, schemars::JsonSchema)]
+pub struct StaticCase {
+    /// Path of a JSON mesh file (relative to the case file's folder, then to the working folder)
+    /// holding `materials`, `sections`, `nodes`, `elements`, `supports` and optionally `load_cases`.
+    pub mesh: Option<String>,
+    /// The inline model (or additions to the mesh: materials, sections, load cases).
+    #[serde(flatten)]
+    pub model: MeshSpec,
+}
+
+impl MeshSpec {
+    /// Combines a mesh file's model with inline additions: inline materials and sections are
+    /// added (inline wins on equal names), inline load cases replace the mesh's.
+    pub fn merge_inline(mut mesh: MeshSpec, inline: MeshSpec) -> Result<MeshSpec, CaseError> {
+        for (field, given) in [
+            ("nodes", !inline.nodes.is_empty()),
+            ("elements", !inline.elements.is_empty()),
+            ("supports", !inline.supports.is_empty()),
+            ("rigid_links", !inline.rigid_links.is_empty()),
+        ] {
+            if given {
+                return Err(CaseError::new(
+                    field,
+                    "the model comes from `mesh`: give nodes, elements, supports and rigid links there, not inline",
+                ));
+            }
+        }
+        mesh.materials.extend(inline.materials);
+        mesh.sections.extend(inline.sections);
+        if !inline.load_cases.is_empty() {
+            mesh.load_cases = inline.load_cases;
+        }
+        Ok(mesh)
+    }
+
+    /// Validates every reference and value and builds the FE model.
+    pub fn build(&self) -> Result<fem::Model, CaseError> {
+        let mut materials = BTreeMap::new();
+        for (k, m) in &self.materials {
+            materials.insert(k.as_str(), m.resolve(&format!("materials.{k}"))?);
+        }
+        let mut sections = BTreeMap::new();
+        for (k, s) in &self.sections {
+            sections.insert(k.as_str(), section(s, &format!("sections.{k}"))?);
+        }
+        if self.nodes.is_empty() {
+            return Err(CaseError::new("nodes", "the model has no nodes"));
+        }
+        let n = self.nodes.len();
+        let node_ref = |path: String, i: usize| -> Result<usize, CaseError> {
+            if i < n {
+                Ok(i)
+            } else {
+                Err(CaseError::value(
+                    path,
+                    i,
+                    format!("node index must be < {n} (the number of nodes)"),
+                ))
+            }
+        };
+        let mut model = fem::Model::new();
+        for (i, x) in self.nodes.iter().enumerate() {
+            for (k, v) in x.iter().enumerate() {
+                check::finite(&format!("nodes[{i}][{k}]"), *v)?;
+            }
+            model.add_node(*x);
+        }
+        let mut rigid: Vec<(String, RigidSpec)> = self
+            .rigid_links
+            .iter()
+            .enumerate()
+            .map(|(i, r)| (format!("rigid_links[{i}]"), r.clone()))
+            .collect();
+        for (ie, e) in self.elements.iter().enumerate() {
+            let p = format!("elements[{ie}]");
+            match e {
+                ElementSpec::Beam {
+                    nodes,
+                    section,
+                    material,
+                    up,
+                    shear,
+                } => {
+                    let a = node_ref(format!("{p}.nodes[0]"), nodes[0])?;
+                    let b = node_ref(format!("{p}.nodes[1]"), nodes[1])?;
+                    if a == b {
+                        return Err(CaseError::value(
+                            format!("{p}.nodes"),
+                            format!("[{a}, {b}]"),
+                            "a beam needs two different nodes",
+                        ));
+                    }
+                    let sec = *sections.get(section.as_str()).ok_or_else(|| {
+                        CaseError::value(
+                            format!("{p}.section"),
+                            format!("\"{section}\""),
+                            format!("unknown section; defined: {}", keys(&self.sections)),
+                        )
+                    })?;
+                    let Some(sec) = sec else {
+                        return Err(CaseError::value(
+                            format!("{p}.section"),
+                            format!("\"{section}\""),
+                            "a shell section cannot be used by a beam",
+                        ));
+                    };
+                    let mat = *materials.get(material.as_str()).ok_or_else(|| {
+                        CaseError::value(
+                            format!("{p}.material"),
+                            format!("\"{material}\""),
+                            format!("unknown material; defined: {}", keys(&self.materials)),
+                        )
+                    })?;
+                    let xa = self.nodes[a];
+                    let xb = self.nodes[b];
+                    let axis = [xb[0] - xa[0], xb[1] - xa[1], xb[2] - xa[2]];
+                    let len = norm(axis);
+                    if len <= 1e-12 {
+                        return Err(CaseError::value(
+                            format!("{p}.nodes"),
+                            format!("[{a}, {b}]"),
+                            "the two nodes coincide (zero-length beam)",
+                        ));
+                    }
+                    let un = norm(*up);
+                    let cross = norm([
+                        axis[1] * up[2] - axis[2] * up[1],
+                        axis[2] * up[0] - axis[0] * up[2],
+                        axis[0] * up[1] - axis[1] * up[0],
+                    ]);
+                    if !(un.is_finite() && un > 0.0 && cross > 1e-6 * len * un) {
+                        return Err(CaseError::value(
+                            format!("{p}.up"),
+                            format!("{up:?}"),
+                            "must be a non-zero vector not parallel to the beam axis",
+                        ));
+                    }
+                    let mut beam = fem::Beam::new(a, b, sec, mat, *up);
+                    if !shear {
+                        beam = beam.euler_bernoulli();
+                    }
+                    model.add_beam(beam);
+                }
+                ElementSpec::Spring { nodes, k } => {
+                    if nodes.is_empty() || nodes.len() > 2 {
+                        return Err(CaseError::value(
+                            format!("{p}.nodes"),
+                            format!("{nodes:?}"),
+                            "a spring has one node (to ground) or two",
+                        ));
+                    }
+                    for (i, kv) in k.iter().enumerate() {
+                        check::non_negative(&format!("{p}.k[{i}]"), *kv, "N/mm or N·mm/rad")?;
+                    }
+                    let a = node_ref(format!("{p}.nodes[0]"), nodes[0])?;
+                    let b = match nodes.get(1) {
+                        Some(&b) => Some(node_ref(format!("{p}.nodes[1]"), b)?),
+                        None => None,
+                    };
+                    model.add_element(fem::Element::Spring(fem::Spring {
+                        a,
+                        b,
+                        k: *k,
+                        axes: fem::SpringAxes::Global,
+                    }));
+                }
+                ElementSpec::Mass { node, mass, inertia } => {
+                    let node = node_ref(format!("{p}.node"), *node)?;
+                    check::non_negative(&format!("{p}.mass"), *mass, "tonne")?;
+                    for (i, v) in inertia.iter().enumerate() {
+                        check::non_negative(&format!("{p}.inertia[{i}]"), *v, "tonne·mm²")?;
+                    }
+                    model.masses.push(fem::PointMass {
+                        node,
+                        mass: *mass,
+                        inertia: *inertia,
+                    });
+                }
+                ElementSpec::Rigid { master, slaves } => {
+                    rigid.push((
+                        p,
+                        RigidSpec {
+                            master: *master,
+                            slaves: slaves.clone(),
+                        },
+                    ));
+                }
+                ElementSpec::Shell4 { .. } => {
+                    return Err(CaseError::value(
+                        format!("{p}.type"),
+                        "\"shell4\"",
+                        "shell elements are not available in this version (beam, spring, mass, rigid)",
+                    ));
+                }
+            }
+        }
+        for (p, r) in rigid {
+            let master = node_ref(format!("{p}.master"), r.master)?;
+            let mut slaves = Vec::with_capacity(r.slaves.len());
+            for (i, s) in r.slaves.iter().enumerate() {
+                slaves.push(node_ref(format!("{p}.slaves[{i}]"), *s)?);
+            }
+            model.rigid_links.push(fem::RigidLink { master, slaves });
+        }
+        for (i, s) in self.supports.iter().enumerate() {
+            let node = node_ref(format!("supports[{i}].node"), s.node)?;
+            let dofs: Vec<Dof> = s.fix.iter().map(|d| d.dof()).collect();
+            model.supports.push(fem::Support::dofs(node, &dofs));
+        }
+        if self.load_cases.is_empty() {
+            return Err(CaseError::new("load_cases", "at least one load case is needed"));
+        }
+        for (ic, c) in self.load_cases.iter().enumerate() {
+            let p = format!("load_cases[{ic}]");
+            let mut lc = fem::LoadCase::new(c.name.clone());
+            for (i, f) in c.forces.iter().enumerate() {
+                let node = node_ref(format!("{p}.forces[{i}].node"), f.node)?;
+                for (k, v) in f.f.iter().enumerate() {
+                    check::finite(&format!("{p}.forces[{i}].F[{k}]"), *v)?;
+                }
+                lc = lc.force(node, f.f);
+            }
+            for (i, d) in c.displacements.iter().enumerate() {
+                let node = node_ref(format!("{p}.displacements[{i}].node"), d.node)?;
+                check::finite(&format!("{p}.displacements[{i}].value"), d.value)?;
+                lc = lc.displacement(node, d.dof.dof(), d.value);
+            }
+            model.load_cases.push(lc);
+        }
+        Ok(model)
+    }
+}
+
+fn keys<V>(m: &BTreeMap<String, V>) -> String {
+    if m.is_empty() {
+        "none".into()
+    } else {
+        m.keys().map(|k| format!("\"{k}\"")).collect::<Vec<_>>().join(", ")
+    }
+}
+
+fn norm(v: [f64; 3]) -> f64 {
+    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+}
+
+/// Validates a section; `None` for a shell section.
+fn section(s: &SectionSpec, p: &str) -> Result<Option<fem::Section>, CaseError> {
+    let f = |k: &str| format!("{p}.{k}");
+    Ok(Some(match *s {
+        SectionSpec::Rect { w, h } => {
+            check::positive(&f("w"), w, "mm")?;
+            check::positive(&f("h"), h, "mm")?;
+            fem::Section::Rect { w, h }
+        }
+        SectionSpec::Circle { d } => {
+            check::positive(&f("d"), d, "mm")?;
+            fem::Section::Circle { d }
+        }
+        SectionSpec::Tube { d, t } => {
+            check::positive(&f("d"), d, "mm")?;
+            check::positive(&f("t"), t, "mm")?;
+            if 2.0 * t >= d {
+                return Err(CaseError::value(
+                    f("t"),
+                    t,
+                    format!("the wall must be thinner than half the diameter ({} mm)", d / 2.0),
+                ));
+            }
+            fem::Section::Tube {
+                d_out: d,
+                d_in: d - 2.0 * t,
+            }
+        }
+        SectionSpec::General { a, iy, iz, j, asy, asz } => {
+            check::positive(&f("A"), a, "mm²")?;
+            check::positive(&f("Iy"), iy, "mm⁴")?;
+            check::positive(&f("Iz"), iz, "mm⁴")?;
+            check::positive(&f("J"), j, "mm⁴")?;
+            if let Some(v) = asy {
+                check::positive(&f("Asy"), v, "mm²")?;
+            }
+            if let Some(v) = asz {
+                check::positive(&f("Asz"), v, "mm²")?;
+            }
+            fem::Section::General { a, iy, iz, j, asy, asz }
+        }
+        SectionSpec::Shell { t } => {
+            check::positive(&f("t"), t, "mm")?;
+            return Ok(None);
+        }
+    }))
+}
