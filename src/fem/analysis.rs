@@ -109,6 +109,9 @@ impl System {
             Err(FactorError::NotPositiveDefinite) => return Err(diagnose_mechanism(&map, &k, symbolic, par)),
             Err(FactorError::Other(s)) => return Err(FemError::Solver(s)),
         };
+        if has_tiny_pivot(&factor, &k) {
+            return Err(diagnose_mechanism(&map, &k, symbolic, par));
+        }
         Ok(System {
             map,
             prescribed: prescribed.to_vec(),
@@ -127,6 +130,14 @@ impl System {
         }
         let k = self.pattern.assemble(model, &map)?;
         match self.factor.refactor(&k) {
+            Ok(()) if has_tiny_pivot(&self.factor, &k) => {
+                return Err(diagnose_mechanism(
+                    &map,
+                    &k,
+                    self.factor.symbolic(),
+                    Parallelism::Sequential,
+                ))
+            }
             Ok(()) => {}
             Err(FactorError::NotPositiveDefinite) => {
                 return Err(diagnose_mechanism(
@@ -305,6 +316,15 @@ pub fn solve_static_with(model: &Model, par: Parallelism) -> Result<StaticResult
     Ok(StaticResults {
         load_cases: out.into_iter().flatten().collect(),
     })
+}
+
+/// Relative pivot below which an equation counts as a mechanism: L_jj² < PIVOT_TOL·K_jj means
+/// the DOF kept less than 1e-11 of its own stiffness after elimination — roundoff level for a
+/// zero-energy mode (legitimate flexure contrasts stay far above: (t/w)³ ~ 1e-6 for t/w = 1/100).
+pub const PIVOT_TOL: f64 = 1e-11;
+
+fn has_tiny_pivot(f: &Factor, k: &SparseMatrix) -> bool {
+    f.pivots().iter().zip(k.diagonal()).any(|(p, d)| !(*p > PIVOT_TOL * d))
 }
 
 /// Free equations whose diagonal stiffness is zero (relative to the largest diagonal of the

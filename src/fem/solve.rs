@@ -8,7 +8,11 @@
 use super::error::FemError;
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::cholesky::llt::factor::{LltError, LltRegularization};
-use faer::sparse::linalg::cholesky::{factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymmetricOrdering};
+use faer::sparse::linalg::cholesky::simplicial::SimplicialLltRef;
+use faer::sparse::linalg::cholesky::supernodal::SupernodalLltRef;
+use faer::sparse::linalg::cholesky::{
+    factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymbolicCholeskyRaw, SymmetricOrdering,
+};
 use faer::sparse::{Argsort, Pair, SparseColMat, SymbolicSparseColMat};
 use faer::{Conj, MatMut, Par, Side};
 use std::io::Write;
@@ -275,6 +279,50 @@ impl Factor {
     /// Dimension.
     pub fn n(&self) -> usize {
         self.symbolic.n()
+    }
+
+    /// Pivots of the factor, L_jj², in the original (unpermuted) equation order: the stiffness
+    /// left on each equation after eliminating the ones ordered before it.
+    pub fn pivots(&self) -> Vec<f64> {
+        let sym = &self.symbolic.inner;
+        let n = sym.nrows();
+        let mut piv_perm = vec![0.0; n];
+        match sym.raw() {
+            SymbolicCholeskyRaw::Simplicial(s) => {
+                let l = SimplicialLltRef::<'_, usize, f64>::new(s, &self.l_values);
+                let (cp, ri) = (s.col_ptr(), s.row_idx());
+                let vals = l.values();
+                for (j, p) in piv_perm.iter_mut().enumerate() {
+                    for k in cp[j]..cp[j + 1] {
+                        if ri[k] == j {
+                            *p = vals[k] * vals[k];
+                        }
+                    }
+                }
+            }
+            SymbolicCholeskyRaw::Supernodal(s) => {
+                let l = SupernodalLltRef::<'_, usize, f64>::new(s, &self.l_values);
+                for sn in 0..s.n_supernodes() {
+                    let node = l.supernode(sn);
+                    let (start, m) = (node.start(), node.val());
+                    for k in 0..m.ncols() {
+                        let v = m[(k, k)];
+                        piv_perm[start + k] = v * v;
+                    }
+                }
+            }
+        }
+        match sym.perm() {
+            Some(perm) => {
+                let fwd = perm.arrays().0;
+                let mut piv = vec![0.0; n];
+                for (i, &f) in fwd.iter().enumerate() {
+                    piv[f] = piv_perm[i];
+                }
+                piv
+            }
+            None => piv_perm,
+        }
     }
 
     /// The symbolic factor (to reuse on another model with the same pattern).
