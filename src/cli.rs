@@ -45,6 +45,20 @@ enum Command {
     },
     /// Print the JSON Schema of case files.
     Schema,
+    /// Batch runs: the full factorial of a `sweep` case, as JSON lines.
+    Sweep {
+        /// The sweep case file (`"analysis": "sweep"`).
+        case: PathBuf,
+        /// Run only the designs whose index ≡ K−1 (mod N).
+        #[arg(long, value_name = "K/N")]
+        shard: Option<String>,
+        /// Write the JSON lines to FILE (resumable) instead of stdout.
+        #[arg(long, value_name = "FILE.jsonl")]
+        out: Option<PathBuf>,
+        /// Also write a CSV table of parameters and scalar results.
+        #[arg(long, value_name = "FILE.csv")]
+        csv: Option<PathBuf>,
+    },
 }
 
 /// Exit code for a bad case file.
@@ -88,6 +102,9 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
 /// Runs the command line; returns the process exit code.
 pub fn run(cli: Cli) -> ExitCode {
     match cli.command {
+        Command::Sweep { case, shard, out, csv } => {
+            crate::design::sweep::run_cli(crate::design::sweep::SweepArgs { case, shard, out, csv })
+        }
         Command::Schema => {
             println!("{}", serde_json::to_string_pretty(&case::schema()).unwrap_or_default());
             ExitCode::SUCCESS

@@ -1,6 +1,7 @@
 //! Analyses: validated case → typed result → JSON/Markdown/CSV views.
 
 pub mod fem_static;
+pub mod hinge;
 pub mod kinematics;
 
 use crate::case::{Case, CaseError};
@@ -93,6 +94,8 @@ pub fn check(case: &Case) -> Result<(), CaseError> {
     match case {
         Case::Kinematics(k) => k.validate().map(|_| ()),
         Case::Static(s) => s.model.build().map(|_| ()),
+        Case::Hinge(h) => h.validate().map(|_| ()),
+        Case::Sweep(s) => s.build().map(|_| ()),
     }
 }
 
@@ -114,6 +117,19 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
             Ok(Outcome {
                 json: to_json(&r)?,
                 report: fem_static::report(&r),
+                files: vec![],
+            })
+        }
+        Case::Sweep(_) => Err(RunError::Case(CaseError::value(
+            "analysis",
+            "\"sweep\"",
+            "a sweep runs with `flexfem sweep CASE.json`, not `flexfem run`",
+        ))),
+        Case::Hinge(h) => {
+            let r = hinge::solve(h)?;
+            Ok(Outcome {
+                json: to_json(&r)?,
+                report: hinge::report(&r),
                 files: vec![],
             })
         }

@@ -5,9 +5,11 @@
 //! `serde_path_to_error` with unknown fields refused.
 
 pub mod error;
+pub mod hinge;
 pub mod kinematics;
 pub mod material;
 pub mod mesh;
+pub mod sweep;
 
 pub use error::CaseError;
 pub use material::MaterialSpec;
@@ -24,10 +26,14 @@ pub enum Case {
     Kinematics(kinematics::KinematicsCase),
     /// Linear (or nonlinear) statics of a generic beam model.
     Static(mesh::StaticCase),
+    /// One flexure hinge in its blank.
+    Hinge(hinge::HingeCase),
+    /// Batch runs over a base case.
+    Sweep(sweep::SweepCase),
 }
 
 /// The `analysis` names this build understands.
-pub const ANALYSES: &[&str] = &["kinematics", "static"];
+pub const ANALYSES: &[&str] = &["kinematics", "hinge", "static", "sweep"];
 
 impl Case {
     /// The `analysis` name.
@@ -35,6 +41,8 @@ impl Case {
         match self {
             Case::Kinematics(_) => "kinematics",
             Case::Static(_) => "static",
+            Case::Hinge(_) => "hinge",
+            Case::Sweep(_) => "sweep",
         }
     }
 }
@@ -123,6 +131,8 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
     };
     match analysis.as_str() {
         "kinematics" => Ok(Case::Kinematics(from_value(value, "")?)),
+        "hinge" => Ok(Case::Hinge(from_value(value, "")?)),
+        "sweep" => Ok(Case::Sweep(from_value(value, "")?)),
         "static" => {
             let mesh_name = match map.remove("mesh") {
                 None | Some(Value::Null) => None,

@@ -24,7 +24,11 @@ impl Table {
     /// The table as GitHub-flavoured Markdown.
     pub fn render(&self) -> String {
         let n = self.header.len();
-        let mut out = format!("| {} |\n|{}\n", self.header.join(" | "), "---:|".repeat(n));
+        let mut out = format!(
+            "| {} |\n|---|{}\n",
+            self.header.join(" | "),
+            "---:|".repeat(n.saturating_sub(1))
+        );
         for r in &self.rows {
             let cells: Vec<&str> = (0..n).map(|i| r.get(i).map_or("", String::as_str)).collect();
             out += &format!("| {} |\n", cells.join(" | "));
@@ -46,5 +50,22 @@ pub fn dms(deg: f64) -> String {
         format!("{sign}{d}°{m:02}′{s:02}″")
     } else {
         format!("{sign}{m}′{s:02}″")
+    }
+}
+
+/// `v` with `digits` significant digits, in plain or scientific notation as fits.
+pub fn sig(v: f64, digits: usize) -> String {
+    if !v.is_finite() {
+        return "—".into();
+    }
+    if v == 0.0 {
+        return "0".into();
+    }
+    let mag = v.abs().log10().floor() as i32;
+    if (-3..6).contains(&mag) {
+        let decimals = (digits as i32 - 1 - mag).max(0) as usize;
+        format!("{v:.decimals$}")
+    } else {
+        format!("{v:.prec$e}", prec = digits.saturating_sub(1))
     }
 }

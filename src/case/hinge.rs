@@ -1,0 +1,39 @@
+//! The `hinge` case: one flexure hinge in its blank.
+
+use super::error::CaseError;
+use super::material::MaterialSpec;
+use crate::hinge::{HingeError, HingeSpec};
+use crate::material::Material;
+use serde::Deserialize;
+
+/// `"analysis": "hinge"`.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct HingeCase {
+    /// Material (default Al7075).
+    #[serde(default)]
+    pub material: MaterialSpec,
+    /// The hinge, by `type` (SPEC §4): lengths in mm.
+    pub hinge: HingeSpec,
+}
+
+/// Maps a hinge-library error to the JSON path of the offending field.
+pub fn hinge_error(e: &HingeError, hinge_path: &str, material_path: &str) -> CaseError {
+    match e {
+        HingeError::InvalidGeometry { param, value, allowed } => {
+            CaseError::value(format!("{hinge_path}.{param}"), value, allowed)
+        }
+        HingeError::InvalidMaterial { param, value, allowed } => {
+            CaseError::value(format!("{material_path}.{param}"), value, allowed)
+        }
+    }
+}
+
+impl HingeCase {
+    /// Validates material and geometry (non-physical geometry is refused before solving).
+    pub fn validate(&self) -> Result<Material, CaseError> {
+        let m = self.material.resolve("material")?;
+        self.hinge.profile().map_err(|e| hinge_error(&e, "hinge", "material"))?;
+        Ok(m)
+    }
+}

@@ -1,0 +1,178 @@
+//! The `sweep` case: a base case and the values to vary (full factorial).
+
+use super::error::CaseError;
+use serde::Deserialize;
+use serde_json::{Map, Value};
+
+/// One varied parameter: a list of values, or an evenly spaced range.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(untagged)]
+pub enum VarySpec {
+    /// Explicit values (numbers, strings, objects…).
+    List(Vec<Value>),
+    /// `steps` values from `from` to `to`, ends included.
+    Range {
+        /// First value.
+        from: f64,
+        /// Last value.
+        to: f64,
+        /// Number of values (≥ 1; 1 gives `from`).
+        steps: usize,
+    },
+}
+
+/// `"analysis": "sweep"`.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SweepCase {
+    /// The case every design starts from (any analysis but `sweep`).
+    pub base: Value,
+    /// Dotted paths into `base` → values; the designs are every combination, the last path
+    /// varying fastest.
+    #[schemars(with = "std::collections::BTreeMap<String, VarySpec>")]
+    pub vary: Map<String, Value>,
+}
+
+/// A sweep ready to enumerate.
+#[derive(Debug, Clone)]
+pub struct Sweep {
+    /// The base case.
+    pub base: Value,
+    /// (dotted path, its values) in file order.
+    pub axes: Vec<(String, Vec<Value>)>,
+}
+
+impl Sweep {
+    /// Number of designs.
+    pub fn len(&self) -> usize {
+        self.axes.iter().map(|(_, v)| v.len()).product()
+    }
+
+    /// True when there is no design.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The parameters of design `index` (path → value), in axis order.
+    pub fn params(&self, mut index: usize) -> Map<String, Value> {
+        let mut picks = vec![0; self.axes.len()];
+        for (k, (_, vals)) in self.axes.iter().enumerate().rev() {
+            picks[k] = index % vals.len();
+            index /= vals.len();
+        }
+        self.axes
+            .iter()
+            .zip(picks)
+            .map(|((p, vals), i)| (p.clone(), vals[i].clone()))
+            .collect()
+    }
+
+    /// The case of design `index`: `base` with every varied path set.
+    pub fn design(&self, index: usize) -> Result<Value, CaseError> {
+        let mut v = self.base.clone();
+        for (path, val) in self.params(index) {
+            set_path(&mut v, &path, val).map_err(|m| CaseError::new(format!("vary.{path}"), m))?;
+        }
+        Ok(v)
+    }
+}
+
+/// Sets `value` at a dotted path (`hinge.t`, `load_cases.0.name`); the parent must exist.
+pub fn set_path(root: &mut Value, path: &str, value: Value) -> Result<(), String> {
+    let parts: Vec<&str> = path.split('.').collect();
+    let mut cur = root;
+    for (depth, part) in parts.iter().enumerate() {
+        let last = depth + 1 == parts.len();
+        cur = match cur {
+            Value::Object(m) => {
+                if last {
+                    m.insert(part.to_string(), value);
+                    return Ok(());
+                }
+                m.get_mut(*part)
+                    .ok_or_else(|| format!("`{}` does not exist in the base case", parts[..=depth].join(".")))?
+            }
+            Value::Array(a) => {
+                let i: usize = part
+                    .parse()
+                    .map_err(|_| format!("`{part}` must be an index into an array"))?;
+                let n = a.len();
+                let slot = a
+                    .get_mut(i)
+                    .ok_or_else(|| format!("index {i} is out of range (array of {n})"))?;
+                if last {
+                    *slot = value;
+                    return Ok(());
+                }
+                slot
+            }
+            _ => return Err(format!("`{}` is not an object or array", parts[..depth].join("."))),
+        };
+    }
+    Err("empty path".into())
+}
+
+impl SweepCase {
+    /// Validates the axes (the designs themselves are validated one by one when run).
+    pub fn build(&self) -> Result<Sweep, CaseError> {
+        if !self.base.is_object() {
+            return Err(CaseError::value(
+                "base",
+                super::short(&self.base),
+                "must be a case object",
+            ));
+        }
+        if self.base.get("analysis").and_then(Value::as_str) == Some("sweep") {
+            return Err(CaseError::value(
+                "base.analysis",
+                "\"sweep\"",
+                "a sweep cannot vary another sweep",
+            ));
+        }
+        if self.vary.is_empty() {
+            return Err(CaseError::new("vary", "give at least one parameter to vary"));
+        }
+        let mut axes = Vec::new();
+        for (path, spec) in &self.vary {
+            let p = format!("vary.{path}");
+            let spec: VarySpec = super::from_value(spec.clone(), &p)?;
+            let vals = match spec {
+                VarySpec::List(v) if v.is_empty() => return Err(CaseError::new(p, "the list of values is empty")),
+                VarySpec::List(v) => v,
+                VarySpec::Range { from, to, steps } => {
+                    if !(from.is_finite() && to.is_finite()) {
+                        return Err(CaseError::value(
+                            p,
+                            format!("{from}..{to}"),
+                            "range ends must be finite",
+                        ));
+                    }
+                    if steps == 0 || steps > 1_000_000 {
+                        return Err(CaseError::value(format!("{p}.steps"), steps, "must be in 1..=1000000"));
+                    }
+                    (0..steps)
+                        .map(|k| {
+                            let x = if steps == 1 {
+                                from
+                            } else {
+                                from + (to - from) * k as f64 / (steps - 1) as f64
+                            };
+                            Value::from(x)
+                        })
+                        .collect()
+                }
+            };
+            let mut probe = self.base.clone();
+            set_path(&mut probe, path, vals[0].clone()).map_err(|m| CaseError::new(p.clone(), m))?;
+            axes.push((path.clone(), vals));
+        }
+        let sweep = Sweep {
+            base: self.base.clone(),
+            axes,
+        };
+        if sweep.len() > 100_000_000 {
+            return Err(CaseError::value("vary", sweep.len(), "at most 100 000 000 designs"));
+        }
+        Ok(sweep)
+    }
+}

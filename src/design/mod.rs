@@ -1,0 +1,3 @@
+//! Design drivers: batch sweeps (and, later, sensitivities and optimisation).
+
+pub mod sweep;
