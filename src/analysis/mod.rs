@@ -3,6 +3,7 @@
 pub mod fem_static;
 pub mod hinge;
 pub mod kinematics;
+pub mod stage;
 
 use crate::case::{Case, CaseError};
 use std::fmt;
@@ -96,6 +97,8 @@ pub fn check(case: &Case) -> Result<(), CaseError> {
         Case::Static(s) => s.model.build().map(|_| ()),
         Case::Hinge(h) => h.validate().map(|_| ()),
         Case::Sweep(s) => s.build().map(|_| ()),
+        Case::Stage(s) => s.validate().map(|_| ()),
+        Case::FemVsFkp(s) => s.validate().map(|_| ()),
     }
 }
 
@@ -125,6 +128,15 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
             "\"sweep\"",
             "a sweep runs with `flexfem sweep CASE.json`, not `flexfem run`",
         ))),
+        Case::Stage(s) => {
+            let r = stage::run_stage(s)?;
+            Ok(Outcome { json: to_json(&r)?, report: stage::stage_report(&r), files: vec![] })
+        }
+        Case::FemVsFkp(s) => {
+            let r = stage::run_fem_vs_fkp(s)?;
+            let (report, files) = stage::fem_vs_fkp_report(&r);
+            Ok(Outcome { json: to_json(&r)?, report, files })
+        }
         Case::Hinge(h) => {
             let r = hinge::solve(h)?;
             Ok(Outcome {

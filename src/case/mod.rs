@@ -9,6 +9,7 @@ pub mod hinge;
 pub mod kinematics;
 pub mod material;
 pub mod mesh;
+pub mod stage;
 pub mod sweep;
 
 pub use error::CaseError;
@@ -30,10 +31,14 @@ pub enum Case {
     Hinge(hinge::HingeCase),
     /// Batch runs over a base case.
     Sweep(sweep::SweepCase),
+    /// The monolithic 3-PRS compliant stage.
+    Stage(stage::StageCase),
+    /// FEM versus rigid-body forward kinematics.
+    FemVsFkp(stage::FemVsFkpCase),
 }
 
 /// The `analysis` names this build understands.
-pub const ANALYSES: &[&str] = &["kinematics", "hinge", "static", "sweep"];
+pub const ANALYSES: &[&str] = &["kinematics", "hinge", "stage", "fem_vs_fkp", "static", "sweep"];
 
 impl Case {
     /// The `analysis` name.
@@ -43,6 +48,8 @@ impl Case {
             Case::Static(_) => "static",
             Case::Hinge(_) => "hinge",
             Case::Sweep(_) => "sweep",
+            Case::Stage(_) => "stage",
+            Case::FemVsFkp(_) => "fem_vs_fkp",
         }
     }
 }
@@ -133,6 +140,8 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
         "kinematics" => Ok(Case::Kinematics(from_value(value, "")?)),
         "hinge" => Ok(Case::Hinge(from_value(value, "")?)),
         "sweep" => Ok(Case::Sweep(from_value(value, "")?)),
+        "stage" => Ok(Case::Stage(from_value(value, "")?)),
+        "fem_vs_fkp" => Ok(Case::FemVsFkp(from_value(value, "")?)),
         "static" => {
             let mesh_name = match map.remove("mesh") {
                 None | Some(Value::Null) => None,

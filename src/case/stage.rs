@@ -1,0 +1,257 @@
+//! The `stage` and `fem_vs_fkp` cases: the monolithic 3-PRS compliant stage.
+
+use super::error::{check, CaseError};
+use super::kinematics::MechanismSpec;
+use super::material::MaterialSpec;
+use crate::hinge::HingeSpec;
+use crate::stage::{Drive, StageDesign, StageError};
+use serde::Deserialize;
+
+/// Leg cross-section.
+#[derive(Debug, Clone, Copy, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct LegSpec {
+    /// Width along the revolute axis, mm.
+    pub w: f64,
+    /// Height across it (the direction the revolute notch thins), mm.
+    pub h: f64,
+}
+
+/// A hinge of the stage; its width and blank come from the leg.
+#[derive(Debug, Clone, Copy, Deserialize, schemars::JsonSchema)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum StageHinge {
+    /// Circular notch: radius R, minimum thickness t, mm.
+    CircularNotch {
+        /// Notch radius, mm.
+        #[serde(rename = "R")]
+        r: f64,
+        /// Minimum thickness, mm.
+        t: f64,
+    },
+    /// Elliptical notch: semi-axes ax (along the leg), ay (depth), minimum thickness t, mm.
+    EllipticalNotch {
+        /// Semi-axis along the leg, mm.
+        ax: f64,
+        /// Semi-axis across, mm.
+        ay: f64,
+        /// Minimum thickness, mm.
+        t: f64,
+    },
+    /// Corner-filleted notch: length l, fillet radius R, thickness t, mm.
+    CornerFilleted {
+        /// Total notch length, mm.
+        l: f64,
+        /// Fillet radius, mm.
+        #[serde(rename = "R")]
+        r: f64,
+        /// Thickness, mm.
+        t: f64,
+    },
+    /// Leaf: length l, thickness t, mm.
+    Leaf {
+        /// Length, mm.
+        l: f64,
+        /// Thickness, mm.
+        t: f64,
+    },
+    /// Turned neck: diameter t over length l, fillet radius R, mm.
+    SphericalNeck {
+        /// Straight neck length, mm.
+        l: f64,
+        /// Neck diameter, mm.
+        t: f64,
+        /// Fillet radius, mm.
+        #[serde(rename = "R")]
+        r: f64,
+    },
+}
+
+impl StageHinge {
+    /// The full hinge spec in a w × h leg, blank length 0.
+    pub fn spec(&self, leg: &LegSpec) -> HingeSpec {
+        let (w, h) = (leg.w, leg.h);
+        match *self {
+            StageHinge::CircularNotch { r, t } => HingeSpec::CircularNotch { r, t, w, h, blank_length: 0.0 },
+            StageHinge::EllipticalNotch { ax, ay, t } => HingeSpec::EllipticalNotch { ax, ay, t, w, h, blank_length: 0.0 },
+            StageHinge::CornerFilleted { l, r, t } => HingeSpec::CornerFilleted { l, r, t, w, h, blank_length: 0.0 },
+            StageHinge::Leaf { l, t } => HingeSpec::Leaf { l, t, w, h, blank_length: 0.0 },
+            StageHinge::SphericalNeck { l, t, r } => HingeSpec::SphericalNeck { l, t, r, h: w.min(h), blank_length: 0.0 },
+        }
+    }
+}
+
+/// The `stage` object (INTERFACE.md).
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct StageSpec {
+    /// Leg length between hinge centres, mm.
+    #[serde(rename = "L")]
+    pub l: f64,
+    /// Platform radius, mm.
+    pub b: f64,
+    /// Leg angle to the horizontal at home, degrees (or give `a`).
+    #[serde(default)]
+    pub alpha0_deg: Option<f64>,
+    /// Base radius, mm (alternative to `alpha0_deg`).
+    #[serde(default)]
+    pub a: Option<f64>,
+    /// Actuator inclination, degrees.
+    #[serde(default)]
+    pub gamma_deg: f64,
+    /// Leg section, mm.
+    pub leg: LegSpec,
+    /// Revolute hinge at Cᵢ (compliant axis = revolute axis).
+    pub revolute: StageHinge,
+    /// Spherical hinge at Bᵢ.
+    pub spherical: StageHinge,
+    /// Replace hinges by exact joints, legs and platform stiff (consistency check with FKP).
+    #[serde(default)]
+    pub ideal_joints: bool,
+    /// Beam elements per leg (default 4).
+    #[serde(default = "default_leg_elements")]
+    pub leg_elements: usize,
+}
+
+fn default_leg_elements() -> usize {
+    4
+}
+
+/// One load case: actuator forces or strokes.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct StageLoadSpec {
+    /// Name shown in results.
+    pub name: String,
+    /// Actuator forces along the slider directions, N.
+    #[serde(default)]
+    pub actuator_forces: Option<[f64; 3]>,
+    /// Prescribed strokes along the slider directions, mm.
+    #[serde(default)]
+    pub actuator_strokes: Option<[f64; 3]>,
+}
+
+/// `"analysis": "stage"`.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct StageCase {
+    /// Material (default Al7075).
+    #[serde(default)]
+    pub material: MaterialSpec,
+    /// The stage.
+    pub stage: StageSpec,
+    /// Load cases.
+    pub load_cases: Vec<StageLoadSpec>,
+    /// Geometrically nonlinear analysis (not available yet: must be false).
+    #[serde(default)]
+    pub nonlinear: bool,
+}
+
+/// `"analysis": "fem_vs_fkp"`.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FemVsFkpCase {
+    /// Material (default Al7075).
+    #[serde(default)]
+    pub material: MaterialSpec,
+    /// The stage.
+    pub stage: StageSpec,
+    /// Stroke sets, mm.
+    pub strokes: Vec<[f64; 3]>,
+}
+
+/// Maps a stage-builder error to a case error under `stage`.
+pub fn stage_error(e: StageError) -> CaseError {
+    match e {
+        StageError::Geometry { field, message } if field.starts_with("material.") => CaseError::new(field, message),
+        StageError::Geometry { field, message } => CaseError::new(format!("stage.{field}"), message),
+        StageError::Fem(f) => CaseError::new("stage", f.to_string()),
+    }
+}
+
+impl StageSpec {
+    /// Validates and builds the design.
+    pub fn design(&self, material: &MaterialSpec) -> Result<StageDesign, CaseError> {
+        let material = material.resolve("material")?;
+        let mech = MechanismSpec { l: self.l, b: self.b, alpha0_deg: self.alpha0_deg, a: self.a, gamma_deg: self.gamma_deg };
+        let prs = mech.build("stage")?;
+        check::positive("stage.leg.w", self.leg.w, "mm")?;
+        check::positive("stage.leg.h", self.leg.h, "mm")?;
+        if matches!(self.revolute, StageHinge::SphericalNeck { .. }) {
+            return Err(CaseError::value("stage.revolute.type", "\"spherical_neck\"", "the revolute joint needs a notch with one compliant axis: circular_notch, elliptical_notch, corner_filleted or leaf"));
+        }
+        if let StageHinge::SphericalNeck { .. } = self.spherical {
+        } else {
+            return Err(CaseError::value("stage.spherical.type", "(a notch type)", "the spherical joint must be a spherical_neck (turned neck)"));
+        }
+        let d = StageDesign {
+            prs,
+            leg_w: self.leg.w,
+            leg_h: self.leg.h,
+            revolute: self.revolute.spec(&self.leg),
+            spherical: self.spherical.spec(&self.leg),
+            material,
+            ideal_joints: self.ideal_joints,
+            leg_elements: self.leg_elements,
+        };
+        d.validate().map_err(stage_error)?;
+        Ok(d)
+    }
+}
+
+impl StageCase {
+    /// Validates everything before solving.
+    pub fn validate(&self) -> Result<(StageDesign, Vec<(String, Drive)>), CaseError> {
+        let d = self.stage.design(&self.material)?;
+        if self.nonlinear {
+            return Err(CaseError::value("nonlinear", "true", "geometrically nonlinear stage analysis is not available in this version; use false"));
+        }
+        if self.load_cases.is_empty() {
+            return Err(CaseError::new("load_cases", "at least one load case is needed"));
+        }
+        let mut drives = Vec::with_capacity(self.load_cases.len());
+        for (i, lc) in self.load_cases.iter().enumerate() {
+            let p = format!("load_cases[{i}]");
+            let drive = match (lc.actuator_forces, lc.actuator_strokes) {
+                (Some(f), None) => {
+                    for (k, v) in f.iter().enumerate() {
+                        check::finite(&format!("{p}.actuator_forces[{k}]"), *v)?;
+                    }
+                    Drive::Forces(f)
+                }
+                (None, Some(s)) => {
+                    for (k, v) in s.iter().enumerate() {
+                        check::finite(&format!("{p}.actuator_strokes[{k}]"), *v)?;
+                        if v.abs() > 0.5 * d.prs.l {
+                            return Err(CaseError::value(format!("{p}.actuator_strokes[{k}]"), v, "a linear stage analysis takes strokes well below the leg length"));
+                        }
+                    }
+                    Drive::Strokes(s)
+                }
+                (Some(_), Some(_)) => return Err(CaseError::new(p, "give either `actuator_forces` or `actuator_strokes`, not both")),
+                (None, None) => return Err(CaseError::new(p, "missing `actuator_forces` or `actuator_strokes`")),
+            };
+            drives.push((lc.name.clone(), drive));
+        }
+        Ok((d, drives))
+    }
+}
+
+impl FemVsFkpCase {
+    /// Validates everything before solving.
+    pub fn validate(&self) -> Result<StageDesign, CaseError> {
+        let d = self.stage.design(&self.material)?;
+        if self.strokes.is_empty() {
+            return Err(CaseError::new("strokes", "give at least one stroke set"));
+        }
+        for (i, s) in self.strokes.iter().enumerate() {
+            for (k, v) in s.iter().enumerate() {
+                check::finite(&format!("strokes[{i}][{k}]"), *v)?;
+                if v.abs() > 0.5 * d.prs.l {
+                    return Err(CaseError::value(format!("strokes[{i}][{k}]"), v, "strokes must be well below the leg length"));
+                }
+            }
+        }
+        Ok(d)
+    }
+}

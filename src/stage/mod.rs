@@ -1,0 +1,429 @@
+//! The monolithic 3-PRS compliant stage as one beam FE model (SPEC.md §5; seed 000 §5).
+//!
+//! Leg i runs from the revolute centre Cᵢ to the spherical centre Bᵢ (home pose of
+//! [`crate::kinematics::Prs`]). Along it, from the slider up:
+//!
+//! * the **slider**: a rigid body guided along eᵢ. Its node sits at the lower end of the
+//!   revolute notch, Cᵢ − h_r·lᵢ, with a node frame (eᵢ, mᵢ, eᵢ × mᵢ): the five DOFs other than
+//!   the translation along eᵢ are fixed; that one carries the actuator force or the prescribed
+//!   stroke;
+//! * the **revolute notch** centred at Cᵢ, compliant axis mᵢ (the notch thins along nᵢ = lᵢ × mᵢ),
+//!   as one flexibility element whose 6×6 compliance is the exact variable-section Timoshenko
+//!   flexibility of the notch with Vlasov (warping-restrained) torsion ([`crate::hinge`]);
+//! * the **leg**: a prismatic w × h Timoshenko beam (w along mᵢ) from the top of the notch to
+//!   the bottom of the neck, in `leg_elements` elements;
+//! * the **spherical neck** centred at Bᵢ, one flexibility element;
+//! * the **platform**: a rigid body (rigid link from the platform centre P to the three neck
+//!   tops).
+//!
+//! With `ideal_joints` the hinges become exact releases (revolute: every DOF tied but the
+//! rotation about mᵢ; spherical: translations tied) and legs and platform are made 10⁶ times
+//! stiffer: the linear FE pose must then equal the linearised rigid-body kinematics.
+
+use crate::fem::{self, Dof, FemError, Model};
+use crate::hinge::{self, HingeSpec, Profile};
+use crate::kinematics::Prs;
+use crate::material::Material;
+use nalgebra::{Matrix3, Matrix6, Vector3};
+use thiserror::Error;
+
+/// Errors of the stage builder and solver.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum StageError {
+    /// Non-physical stage geometry (names the stage field).
+    #[error("stage field `{field}`: {message}")]
+    Geometry {
+        /// Field of the `stage` object, e.g. `revolute.t`.
+        field: String,
+        /// What is wrong and what is allowed.
+        message: String,
+    },
+    /// The FE model failed (singular, …).
+    #[error("stage FE model: {0}")]
+    Fem(#[from] FemError),
+}
+
+/// A stage design: geometry, hinges, material and modelling options.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StageDesign {
+    /// Rigid-body geometry (L, b, a, γ, home height).
+    pub prs: Prs,
+    /// Leg section width along the revolute axis mᵢ, mm.
+    pub leg_w: f64,
+    /// Leg section height along nᵢ, mm.
+    pub leg_h: f64,
+    /// Revolute notch (its w, h are the leg's; blank length 0).
+    pub revolute: HingeSpec,
+    /// Spherical neck (its h is the leg's; blank length 0).
+    pub spherical: HingeSpec,
+    /// Material of the monolithic stage.
+    pub material: Material,
+    /// Replace hinges by exact joints and make legs and platform stiff.
+    pub ideal_joints: bool,
+    /// Beam elements per leg (≥ 1).
+    pub leg_elements: usize,
+}
+
+/// Node and element numbers of one leg.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LegIds {
+    /// Slider node (bottom of the revolute notch).
+    pub slider: usize,
+    /// Top of the revolute notch.
+    pub rev_top: usize,
+    /// Bottom of the spherical neck.
+    pub sph_bottom: usize,
+    /// Top of the spherical neck (on the platform).
+    pub sph_top: usize,
+    /// Revolute hinge element (`usize::MAX` with ideal joints).
+    pub rev_element: usize,
+    /// Spherical hinge element (`usize::MAX` with ideal joints).
+    pub sph_element: usize,
+    /// Slider direction eᵢ.
+    pub e: Vector3<f64>,
+    /// Revolute axis mᵢ.
+    pub m: Vector3<f64>,
+    /// Leg axis lᵢ (C → B) at home.
+    pub l: Vector3<f64>,
+}
+
+/// The FE model of a stage design plus what is needed to read results.
+#[derive(Debug, Clone)]
+pub struct StageModel {
+    /// The design it was built from.
+    pub design: StageDesign,
+    /// The FE model (no load cases).
+    pub model: Model,
+    /// Platform centre node.
+    pub platform: usize,
+    /// Per-leg ids.
+    pub legs: [LegIds; 3],
+    /// Revolute notch profile (blank 0), for stresses.
+    pub rev_profile: Profile,
+    /// Spherical neck profile (blank 0), for stresses.
+    pub sph_profile: Profile,
+    /// Notch stress-concentration factors (revolute, spherical).
+    pub kt: [f64; 2],
+}
+
+/// How one load case drives the actuators.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Drive {
+    /// Actuator forces along eᵢ, N.
+    Forces([f64; 3]),
+    /// Prescribed strokes along eᵢ, mm.
+    Strokes([f64; 3]),
+}
+
+/// Platform pose change (linear: rotations are the small-rotation vector components).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PoseChange {
+    /// Translation of P, mm.
+    pub x: f64,
+    /// Translation of P, mm.
+    pub y: f64,
+    /// Translation of P, mm.
+    pub z: f64,
+    /// Rotation about x, rad.
+    pub psi: f64,
+    /// Rotation about y, rad.
+    pub theta: f64,
+    /// Rotation about z, rad.
+    pub phi: f64,
+}
+
+/// Result of one stage load case.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StageCaseResult {
+    /// Load-case name.
+    pub name: String,
+    /// Slider strokes along eᵢ, mm.
+    pub strokes: [f64; 3],
+    /// Actuator forces along eᵢ, N.
+    pub forces: [f64; 3],
+    /// Platform pose change.
+    pub platform: PoseChange,
+    /// Peak von Mises stress in each revolute hinge, MPa.
+    pub revolute_stress: [f64; 3],
+    /// Peak von Mises stress in each spherical hinge, MPa.
+    pub spherical_stress: [f64; 3],
+    /// Largest von Mises stress anywhere (hinges and legs), MPa.
+    pub max_von_mises: f64,
+    /// Raw FE result.
+    pub fe: fem::CaseResult,
+}
+
+impl StageCaseResult {
+    /// T = max σ_sph / max σ_rev (seed 000 §5).
+    pub fn t_ratio(&self) -> f64 {
+        let s = self.spherical_stress.iter().cloned().fold(0.0, f64::max);
+        let r = self.revolute_stress.iter().cloned().fold(0.0, f64::max);
+        s / r
+    }
+}
+
+fn geometry_err(field: &str, message: impl Into<String>) -> StageError {
+    StageError::Geometry { field: field.into(), message: message.into() }
+}
+
+fn hinge_err(prefix: &str, e: hinge::HingeError) -> StageError {
+    match e {
+        hinge::HingeError::InvalidGeometry { param, value, allowed } => {
+            geometry_err(&format!("{prefix}.{param}"), format!("value {value} is not allowed: {allowed}"))
+        }
+        hinge::HingeError::InvalidMaterial { param, value, allowed } => {
+            geometry_err(&format!("material.{param}"), format!("value {value} is not allowed: {allowed}"))
+        }
+    }
+}
+
+/// Frame rows (local x, y, z in global coordinates) as the array the FE model takes.
+fn rows(x: Vector3<f64>, y: Vector3<f64>, z: Vector3<f64>) -> [[f64; 3]; 3] {
+    [[x[0], x[1], x[2]], [y[0], y[1], y[2]], [z[0], z[1], z[2]]]
+}
+
+fn arr(v: Vector3<f64>) -> [f64; 3] {
+    [v[0], v[1], v[2]]
+}
+
+/// The 6×6 compliance of a hinge (blank 0) with the warping-restrained torsion of
+/// [`hinge::characterise`], in hinge axes (x along the hinge, y compliant axis, z across).
+fn hinge_compliance(spec: &HingeSpec, material: &Material, prefix: &str) -> Result<[[f64; 6]; 6], StageError> {
+    let r = hinge::characterise(spec, material).map_err(|e| hinge_err(prefix, e))?;
+    Ok(r.notch_only.compliance)
+}
+
+impl StageDesign {
+    /// Checks the design before anything is built.
+    pub fn validate(&self) -> Result<(Profile, Profile), StageError> {
+        for (f, v) in [("leg.w", self.leg_w), ("leg.h", self.leg_h)] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(geometry_err(f, format!("value {v} is not allowed: must be a positive length (mm)")));
+            }
+        }
+        if self.leg_elements == 0 || self.leg_elements > 1000 {
+            return Err(geometry_err("leg_elements", format!("value {} is not allowed: must be in 1..=1000", self.leg_elements)));
+        }
+        let rp = self.revolute.profile().map_err(|e| hinge_err("revolute", e))?;
+        let sp = self.spherical.profile().map_err(|e| hinge_err("spherical", e))?;
+        let used = rp.half_notch + sp.half_notch;
+        if used >= self.prs.l {
+            return Err(geometry_err(
+                "L",
+                format!(
+                    "value {} is not allowed: the revolute notch (half-length {:.3} mm) and the spherical neck (half-length {:.3} mm) must fit in the leg length",
+                    self.prs.l, rp.half_notch, sp.half_notch
+                ),
+            ));
+        }
+        let clearance = self.prs.a_point(0).norm() - self.prs.b;
+        let _ = clearance;
+        Ok((rp, sp))
+    }
+
+    /// Builds the FE model (no load cases).
+    pub fn build(&self) -> Result<StageModel, StageError> {
+        let (rp, sp) = self.validate()?;
+        let prs = &self.prs;
+        let mut model = Model::new();
+        let stiff = if self.ideal_joints { 1e6 } else { 1.0 };
+        let leg_material = Material { e: self.material.e * stiff, ..self.material };
+        let p = model.add_node(arr(prs.p_home()));
+        let rev_c = if self.ideal_joints { None } else { Some(hinge_compliance(&self.revolute, &self.material, "revolute")?) };
+        let sph_c = if self.ideal_joints { None } else { Some(hinge_compliance(&self.spherical, &self.material, "spherical")?) };
+        let (hr, hs) = if self.ideal_joints { (0.0, 0.0) } else { (rp.half_notch, sp.half_notch) };
+        let mut legs = Vec::with_capacity(3);
+        let mut platform_slaves = Vec::with_capacity(3);
+        for i in 0..3 {
+            let c = prs.a_point(i);
+            let b = prs.b_home(i);
+            let l = (b - c) / prs.l;
+            let m = prs.m(i);
+            let n = l.cross(&m);
+            let e = prs.e(i);
+            let slider = model.add_node(arr(c - hr * l));
+            model.set_frame(slider, rows(e, m, e.cross(&m)));
+            model.supports.push(fem::Support::dofs(slider, &[Dof::Uy, Dof::Uz, Dof::Rx, Dof::Ry, Dof::Rz]));
+            let rev_top = if self.ideal_joints {
+                let top = model.add_node(arr(c));
+                model.set_frame(top, rows(e, m, e.cross(&m)));
+                // Revolute: everything tied but the rotation about mᵢ (local y of the frame).
+                model.ties.push(fem::Tie { a: slider, b: top, dofs: [true, true, true, true, false, true] });
+                top
+            } else {
+                model.add_node(arr(c + hr * l))
+            };
+            let rev_element = match rev_c {
+                Some(cmp) => model.add_element(fem::Element::Flex(fem::FlexElement {
+                    nodes: [slider, rev_top],
+                    compliance: cmp,
+                    up: arr(n),
+                })),
+                None => usize::MAX,
+            };
+            // The leg beam from the top of the notch to the bottom of the neck.
+            let start = c + hr * l;
+            let end = b - hs * l;
+            let mut prev = rev_top;
+            for k in 1..=self.leg_elements {
+                let x = start + (end - start) * (k as f64 / self.leg_elements as f64);
+                let node = model.add_node(arr(x));
+                // Section h along local z = nᵢ, w along local y = mᵢ (`up` = nᵢ).
+                model.add_beam(fem::Beam::new(prev, node, fem::Section::Rect { w: self.leg_w, h: self.leg_h }, leg_material, arr(n)));
+                prev = node;
+            }
+            let sph_bottom = prev;
+            let (sph_top, sph_element) = match sph_c {
+                Some(cmp) => {
+                    let top = model.add_node(arr(b + hs * l));
+                    let el = model.add_element(fem::Element::Flex(fem::FlexElement {
+                        nodes: [sph_bottom, top],
+                        compliance: cmp,
+                        up: arr(n),
+                    }));
+                    (top, el)
+                }
+                None => {
+                    // Spherical: translations tied, rotations free; the platform point is an
+                    // independent node joined to P by a stiff beam (see the module docs).
+                    let top = model.add_node(arr(b));
+                    model.ties.push(fem::Tie { a: top, b: sph_bottom, dofs: [true, true, true, false, false, false] });
+                    (top, usize::MAX)
+                }
+            };
+            platform_slaves.push(sph_top);
+            legs.push(LegIds { slider, rev_top, sph_bottom, sph_top, rev_element, sph_element, e, m, l });
+        }
+        if self.ideal_joints {
+            let d = 2.0 * self.leg_w.max(self.leg_h);
+            for &s in &platform_slaves {
+                let axis = Vector3::from(model.nodes[s]) - Vector3::from(model.nodes[p]);
+                let up = if axis.cross(&Vector3::z()).norm() > 1e-9 * axis.norm() { Vector3::z() } else { Vector3::x() };
+                model.add_beam(fem::Beam::new(p, s, fem::Section::Circle { d }, leg_material, arr(up)));
+            }
+        } else {
+            model.rigid_links.push(fem::RigidLink { master: p, slaves: platform_slaves });
+        }
+        let legs = [legs[0], legs[1], legs[2]];
+        let kt = [hinge::stress::stress_concentration(&rp), hinge::stress::stress_concentration(&sp)];
+        Ok(StageModel { design: self.clone(), model, platform: p, legs, rev_profile: rp, sph_profile: sp, kt })
+    }
+}
+
+/// Peak von Mises stress along a hinge element from its end section forces (linear moment
+/// variation: no loads act inside the hinge). Bending stress at the extreme fibres times the
+/// notch factor K_t, plus axial stress; torsional shear τ = T·c/J (exact for thin sections,
+/// conservative for thick ones); σ_vm = √(σ² + 3τ²) combining both peaks (conservative).
+pub fn hinge_peak_stress(profile: &Profile, nu: f64, kt: f64, sf: &[[f64; 6]; 2], neck: bool) -> f64 {
+    let half = profile.half_notch;
+    const N: usize = 41;
+    let mut peak: f64 = 0.0;
+    for k in 0..N {
+        let s = k as f64 / (N - 1) as f64;
+        let x = -half + 2.0 * half * s;
+        let f: [f64; 6] = std::array::from_fn(|j| sf[0][j] * (1.0 - s) + sf[1][j] * s);
+        let sec = profile.section(x, nu);
+        let (sigma, tau) = if neck {
+            let r = 0.5 * profile.thickness(x);
+            let c = r.min(0.5 * profile.h);
+            let m = (f[4] * f[4] + f[5] * f[5]).sqrt();
+            (f[0].abs() / sec.area + kt * m * c / sec.i_bend, f[3].abs() * r.min(0.5 * profile.h) / sec.j)
+        } else {
+            let t = profile.thickness(x);
+            let w = profile.w;
+            let sig = f[0].abs() / sec.area + kt * f[4].abs() * 0.5 * t / sec.i_bend + f[5].abs() * 0.5 * w / sec.i_bend_off;
+            (sig, f[3].abs() * t.min(w) / sec.j)
+        };
+        peak = peak.max((sigma * sigma + 3.0 * tau * tau).sqrt());
+    }
+    peak
+}
+
+impl StageModel {
+    /// An FE load case for a drive.
+    pub fn load_case(&self, name: &str, drive: Drive) -> fem::LoadCase {
+        let mut lc = fem::LoadCase::new(name);
+        for (i, leg) in self.legs.iter().enumerate() {
+            match drive {
+                Drive::Forces(f) => {
+                    let v = leg.e * f[i];
+                    lc = lc.force(leg.slider, [v[0], v[1], v[2], 0.0, 0.0, 0.0]);
+                }
+                Drive::Strokes(s) => lc = lc.displacement(leg.slider, Dof::Ux, s[i]),
+            }
+        }
+        lc
+    }
+
+    /// Solves load cases (grouped by drive kind so each group shares one factorisation).
+    pub fn solve(&self, cases: &[(String, Drive)]) -> Result<Vec<StageCaseResult>, StageError> {
+        let mut model = self.model.clone();
+        model.load_cases = cases.iter().map(|(n, d)| self.load_case(n, *d)).collect();
+        let res = fem::solve_static(&model)?;
+        Ok(res.load_cases.into_iter().map(|fe| self.read(fe)).collect())
+    }
+
+    /// Reads stage quantities from an FE load-case result.
+    pub fn read(&self, fe: fem::CaseResult) -> StageCaseResult {
+        let nu = self.design.material.nu;
+        let mut strokes = [0.0; 3];
+        let mut forces = [0.0; 3];
+        let mut rev = [0.0; 3];
+        let mut sph = [0.0; 3];
+        for (i, leg) in self.legs.iter().enumerate() {
+            let u = &fe.displacements[leg.slider];
+            strokes[i] = leg.e.dot(&Vector3::new(u[0], u[1], u[2]));
+            // Actuator force along eᵢ = the force the guide exerts on the slider along eᵢ plus
+            // any applied load: equilibrium of the slider along eᵢ.
+            let applied = fe.applied_force(leg.slider);
+            let reaction = fe.reaction(leg.slider);
+            let along = |v: [f64; 6]| leg.e.dot(&Vector3::new(v[0], v[1], v[2]));
+            forces[i] = along(applied) + along(reaction);
+            if leg.rev_element != usize::MAX {
+                let sf = &fe.elements[leg.rev_element].section_forces;
+                rev[i] = hinge_peak_stress(&self.rev_profile, nu, self.kt[0], sf, false);
+            }
+            if leg.sph_element != usize::MAX {
+                let sf = &fe.elements[leg.sph_element].section_forces;
+                sph[i] = hinge_peak_stress(&self.sph_profile, nu, self.kt[1], sf, true);
+            }
+        }
+        let up = fe.displacements[self.platform];
+        let beams = fe.max_von_mises.unwrap_or(0.0);
+        let max_vm = rev.iter().chain(sph.iter()).cloned().fold(beams, f64::max);
+        StageCaseResult {
+            name: fe.name.clone(),
+            strokes,
+            forces,
+            platform: PoseChange { x: up[0], y: up[1], z: up[2], psi: up[3], theta: up[4], phi: up[5] },
+            revolute_stress: rev,
+            spherical_stress: sph,
+            max_von_mises: max_vm,
+            fe,
+        }
+    }
+
+    /// 6×6 compliance of the platform centre with the sliders held (mm, N, rad).
+    pub fn platform_compliance(&self) -> Result<Matrix6<f64>, StageError> {
+        let mut model = self.model.clone();
+        model.load_cases.clear();
+        let sys = fem::System::new(&model, &[], fem::solve::Parallelism::None)?;
+        Ok(sys.node_compliance(&model, self.platform)?)
+    }
+}
+
+/// Total actuator force per mm of stroke for a pure-z motion, N/mm: the sum of the actuator
+/// forces when every stroke follows the linearised IKP of a unit z lift.
+pub fn stiffness_z(stage: &StageModel) -> Result<(f64, StageCaseResult), StageError> {
+    let j = stage.design.prs.actuation_jacobian(0.0, 0.0, 0.0).map_err(|e| geometry_err("L", e.to_string()))?;
+    let s = [j[(0, 0)], j[(1, 0)], j[(2, 0)]];
+    let mut r = stage.solve(&[("unit_z".to_string(), Drive::Strokes(s))])?;
+    let r = r.remove(0);
+    let total: f64 = r.forces.iter().sum();
+    Ok((total / (s.iter().sum::<f64>() / 3.0), r))
+}
+
+/// Frame helper re-exported for tests.
+pub fn frame_of(leg: &LegIds) -> Matrix3<f64> {
+    Matrix3::from_rows(&[leg.e.transpose(), leg.m.transpose(), leg.e.cross(&leg.m).transpose()])
+}
