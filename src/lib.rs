@@ -11,5 +11,5 @@ pub mod fem;
 pub mod hinge;
 pub mod kinematics;
 pub mod material;
-pub mod stage;
 pub mod report;
+pub mod stage;

@@ -130,12 +130,20 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
         ))),
         Case::Stage(s) => {
             let r = stage::run_stage(s)?;
-            Ok(Outcome { json: to_json(&r)?, report: stage::stage_report(&r), files: vec![] })
+            Ok(Outcome {
+                json: to_json(&r)?,
+                report: stage::stage_report(&r),
+                files: vec![],
+            })
         }
         Case::FemVsFkp(s) => {
             let r = stage::run_fem_vs_fkp(s)?;
             let (report, files) = stage::fem_vs_fkp_report(&r);
-            Ok(Outcome { json: to_json(&r)?, report, files })
+            Ok(Outcome {
+                json: to_json(&r)?,
+                report,
+                files,
+            })
         }
         Case::Hinge(h) => {
             let r = hinge::solve(h)?;

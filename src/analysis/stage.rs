@@ -27,13 +27,27 @@ pub struct PoseOut {
 
 impl From<PoseChange> for PoseOut {
     fn from(p: PoseChange) -> Self {
-        PoseOut { x: p.x, y: p.y, z: p.z, psi_deg: p.psi.to_degrees(), theta_deg: p.theta.to_degrees(), phi_deg: p.phi.to_degrees() }
+        PoseOut {
+            x: p.x,
+            y: p.y,
+            z: p.z,
+            psi_deg: p.psi.to_degrees(),
+            theta_deg: p.theta.to_degrees(),
+            phi_deg: p.phi.to_degrees(),
+        }
     }
 }
 
 impl From<Pose> for PoseOut {
     fn from(p: Pose) -> Self {
-        PoseOut { x: p.x, y: p.y, z: p.z, psi_deg: p.psi.to_degrees(), theta_deg: p.theta.to_degrees(), phi_deg: p.phi.to_degrees() }
+        PoseOut {
+            x: p.x,
+            y: p.y,
+            z: p.z,
+            psi_deg: p.psi.to_degrees(),
+            theta_deg: p.theta.to_degrees(),
+            phi_deg: p.phi.to_degrees(),
+        }
     }
 }
 
@@ -115,9 +129,16 @@ fn row(r: &StageCaseResult, allowable: f64) -> StageRow {
         forces: r.forces,
         platform: r.platform.into(),
         max_von_mises: r.max_von_mises,
-        hinge_stress: HingeStress { revolute: r.revolute_stress, spherical: r.spherical_stress },
+        hinge_stress: HingeStress {
+            revolute: r.revolute_stress,
+            spherical: r.spherical_stress,
+        },
         t: r.t_ratio(),
-        factor_at_allowable: if r.max_von_mises > 0.0 { allowable / r.max_von_mises } else { f64::INFINITY },
+        factor_at_allowable: if r.max_von_mises > 0.0 {
+            allowable / r.max_von_mises
+        } else {
+            f64::INFINITY
+        },
     }
 }
 
@@ -169,10 +190,17 @@ pub fn run_stage(case: &StageCase) -> Result<StageResult, RunError> {
     let allowable = design.material.allowable;
     let results = s.solve(&drives).map_err(fem_err)?;
     let (stiffness_z, _) = stage::stiffness_z(&s).map_err(fem_err)?;
-    let unit = s.solve(&[("unit_force".into(), Drive::Forces([1.0; 3]))]).map_err(fem_err)?;
+    let unit = s
+        .solve(&[("unit_force".into(), Drive::Forces([1.0; 3]))])
+        .map_err(fem_err)?;
     let u = &unit[0];
     let k = allowable / u.max_von_mises;
-    let at_allowable = AtAllowable { allowable, force: k, stroke: k * u.strokes.iter().sum::<f64>() / 3.0, z: k * u.platform.z };
+    let at_allowable = AtAllowable {
+        allowable,
+        force: k,
+        stroke: k * u.strokes.iter().sum::<f64>() / 3.0,
+        z: k * u.platform.z,
+    };
     Ok(StageResult {
         load_cases: results.iter().map(|r| row(r, allowable)).collect(),
         stiffness_z,
@@ -185,7 +213,18 @@ pub fn run_stage(case: &StageCase) -> Result<StageResult, RunError> {
 /// Markdown/CSV of a stage result.
 pub fn stage_report(r: &StageResult) -> Report {
     let mut md = String::from("# 3-PRS compliant stage (linear FEM)\n\n");
-    let mut t = Table::new(&["load case", "F₁, F₂, F₃ (N)", "s₁, s₂, s₃ (mm)", "Δz (µm)", "ψ", "θ", "σ_rev (MPa)", "σ_sph (MPa)", "σ_max (MPa)", "T"]);
+    let mut t = Table::new(&[
+        "load case",
+        "F₁, F₂, F₃ (N)",
+        "s₁, s₂, s₃ (mm)",
+        "Δz (µm)",
+        "ψ",
+        "θ",
+        "σ_rev (MPa)",
+        "σ_sph (MPa)",
+        "σ_max (MPa)",
+        "T",
+    ]);
     let mut csv = String::from("name,F1,F2,F3,s1,s2,s3,x,y,z,psi_deg,theta_deg,phi_deg,max_von_mises,T\n");
     let f3 = |v: [f64; 3], d: usize| format!("{:.d$}, {:.d$}, {:.d$}", v[0], v[1], v[2]);
     for c in &r.load_cases {
@@ -205,7 +244,21 @@ pub fn stage_report(r: &StageResult) -> Report {
         let p = &c.platform;
         csv += &format!(
             "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
-            c.name, c.forces[0], c.forces[1], c.forces[2], c.strokes[0], c.strokes[1], c.strokes[2], p.x, p.y, p.z, p.psi_deg, p.theta_deg, p.phi_deg, c.max_von_mises, c.t
+            c.name,
+            c.forces[0],
+            c.forces[1],
+            c.forces[2],
+            c.strokes[0],
+            c.strokes[1],
+            c.strokes[2],
+            p.x,
+            p.y,
+            p.z,
+            p.psi_deg,
+            p.theta_deg,
+            p.phi_deg,
+            c.max_von_mises,
+            c.t
         );
     }
     md += &t.render();
@@ -268,15 +321,28 @@ fn diff(a: PoseOut, b: PoseOut) -> PoseOut {
 pub fn run_fem_vs_fkp(case: &FemVsFkpCase) -> Result<FemVsFkpResult, RunError> {
     let design = case.validate()?;
     let s = design.build().map_err(fem_err)?;
-    let drives: Vec<(String, Drive)> =
-        case.strokes.iter().enumerate().map(|(i, st)| (format!("strokes[{i}]"), Drive::Strokes(*st))).collect();
+    let drives: Vec<(String, Drive)> = case
+        .strokes
+        .iter()
+        .enumerate()
+        .map(|(i, st)| (format!("strokes[{i}]"), Drive::Strokes(*st)))
+        .collect();
     let fem = s.solve(&drives).map_err(fem_err)?;
     let mut rows = Vec::with_capacity(case.strokes.len());
     for (i, (st, f)) in case.strokes.iter().zip(&fem).enumerate() {
-        let k = design.prs.fkp(*st, None).map_err(|e| AnalysisError::new(format!("strokes[{i}]"), e.to_string()))?;
+        let k = design
+            .prs
+            .fkp(*st, None)
+            .map_err(|e| AnalysisError::new(format!("strokes[{i}]"), e.to_string()))?;
         let fkp: PoseOut = k.pose.into();
         let lin: PoseOut = f.platform.into();
-        rows.push(FkpRow { strokes: *st, fkp, fem_linear: lin, fem_nonlinear: None, linear_minus_fkp: diff(lin, fkp) });
+        rows.push(FkpRow {
+            strokes: *st,
+            fkp,
+            fem_linear: lin,
+            fem_nonlinear: None,
+            linear_minus_fkp: diff(lin, fkp),
+        });
     }
     Ok(FemVsFkpResult {
         rows,
@@ -287,9 +353,27 @@ pub fn run_fem_vs_fkp(case: &FemVsFkpCase) -> Result<FemVsFkpResult, RunError> {
 
 /// Markdown report laid out like seed 000 Tables 4–6, CSV, and the SVG plot.
 pub fn fem_vs_fkp_report(r: &FemVsFkpResult) -> (Report, Vec<(String, Vec<u8>)>) {
-    let mut md = String::from("# FEM versus rigid-body forward kinematics (seed 000 Tables 4–6 layout)\n\n## Predictions\n\n");
-    let mut t = Table::new(&["Δs₁ (µm)", "Δs₂ (µm)", "Δs₃ (µm)", "Δz FEM (µm)", "Δz FKP (µm)", "ψ FEM", "ψ FKP", "θ FEM", "θ FKP"]);
-    let mut d = Table::new(&["Δs₁ (µm)", "Δs₂ (µm)", "Δs₃ (µm)", "|Δz FEM − FKP| (µm)", "|ψ FEM − FKP|", "|θ FEM − FKP|"]);
+    let mut md =
+        String::from("# FEM versus rigid-body forward kinematics (seed 000 Tables 4–6 layout)\n\n## Predictions\n\n");
+    let mut t = Table::new(&[
+        "Δs₁ (µm)",
+        "Δs₂ (µm)",
+        "Δs₃ (µm)",
+        "Δz FEM (µm)",
+        "Δz FKP (µm)",
+        "ψ FEM",
+        "ψ FKP",
+        "θ FEM",
+        "θ FKP",
+    ]);
+    let mut d = Table::new(&[
+        "Δs₁ (µm)",
+        "Δs₂ (µm)",
+        "Δs₃ (µm)",
+        "|Δz FEM − FKP| (µm)",
+        "|ψ FEM − FKP|",
+        "|θ FEM − FKP|",
+    ]);
     let mut csv = String::from("s1,s2,s3,z_fem,z_fkp,psi_fem_deg,psi_fkp_deg,theta_fem_deg,theta_fkp_deg\n");
     let um = |v: f64| format!("{:.0}", v * 1000.0);
     let mut pts = Vec::new();
@@ -316,17 +400,36 @@ pub fn fem_vs_fkp_report(r: &FemVsFkpResult) -> (Report, Vec<(String, Vec<u8>)>)
         ]);
         csv += &format!(
             "{},{},{},{},{},{},{},{},{}\n",
-            s[0], s[1], s[2], row.fem_linear.z, row.fkp.z, row.fem_linear.psi_deg, row.fkp.psi_deg, row.fem_linear.theta_deg, row.fkp.theta_deg
+            s[0],
+            s[1],
+            s[2],
+            row.fem_linear.z,
+            row.fkp.z,
+            row.fem_linear.psi_deg,
+            row.fkp.psi_deg,
+            row.fem_linear.theta_deg,
+            row.fkp.theta_deg
         );
         pts.push(((s[0] + s[1] + s[2]) / 3.0, (row.linear_minus_fkp.z * 1000.0).abs()));
     }
     md += &t.render();
     md += "\n## Differences (linear FEM vs FKP)\n\n";
     md += &d.render();
-    md += &format!("\nNonlinear FEM: {}.\n\n![|FEM − FKP| in z against mean stroke](fem_vs_fkp.svg)\n\n## Model\n\n", r.fem_nonlinear_note);
+    md += &format!(
+        "\nNonlinear FEM: {}.\n\n![|FEM − FKP| in z against mean stroke](fem_vs_fkp.svg)\n\n## Model\n\n",
+        r.fem_nonlinear_note
+    );
     for n in &r.model {
         md += &format!("- {n}\n");
     }
-    let plot = svg::scatter("|Δz FEM − Δz FKP| against mean stroke", "mean stroke (mm)", "|Δz FEM − FKP| (µm)", &[("linear FEM", &pts)]);
-    (Report { markdown: md, csv }, vec![("fem_vs_fkp.svg".into(), plot.into_bytes())])
+    let plot = svg::scatter(
+        "|Δz FEM − Δz FKP| against mean stroke",
+        "mean stroke (mm)",
+        "|Δz FEM − FKP| (µm)",
+        &[("linear FEM", &pts)],
+    );
+    (
+        Report { markdown: md, csv },
+        vec![("fem_vs_fkp.svg".into(), plot.into_bytes())],
+    )
 }

@@ -72,11 +72,43 @@ impl StageHinge {
     pub fn spec(&self, leg: &LegSpec) -> HingeSpec {
         let (w, h) = (leg.w, leg.h);
         match *self {
-            StageHinge::CircularNotch { r, t } => HingeSpec::CircularNotch { r, t, w, h, blank_length: 0.0 },
-            StageHinge::EllipticalNotch { ax, ay, t } => HingeSpec::EllipticalNotch { ax, ay, t, w, h, blank_length: 0.0 },
-            StageHinge::CornerFilleted { l, r, t } => HingeSpec::CornerFilleted { l, r, t, w, h, blank_length: 0.0 },
-            StageHinge::Leaf { l, t } => HingeSpec::Leaf { l, t, w, h, blank_length: 0.0 },
-            StageHinge::SphericalNeck { l, t, r } => HingeSpec::SphericalNeck { l, t, r, h: w.min(h), blank_length: 0.0 },
+            StageHinge::CircularNotch { r, t } => HingeSpec::CircularNotch {
+                r,
+                t,
+                w,
+                h,
+                blank_length: 0.0,
+            },
+            StageHinge::EllipticalNotch { ax, ay, t } => HingeSpec::EllipticalNotch {
+                ax,
+                ay,
+                t,
+                w,
+                h,
+                blank_length: 0.0,
+            },
+            StageHinge::CornerFilleted { l, r, t } => HingeSpec::CornerFilleted {
+                l,
+                r,
+                t,
+                w,
+                h,
+                blank_length: 0.0,
+            },
+            StageHinge::Leaf { l, t } => HingeSpec::Leaf {
+                l,
+                t,
+                w,
+                h,
+                blank_length: 0.0,
+            },
+            StageHinge::SphericalNeck { l, t, r } => HingeSpec::SphericalNeck {
+                l,
+                t,
+                r,
+                h: w.min(h),
+                blank_length: 0.0,
+            },
         }
     }
 }
@@ -173,7 +205,13 @@ impl StageSpec {
     /// Validates and builds the design.
     pub fn design(&self, material: &MaterialSpec) -> Result<StageDesign, CaseError> {
         let material = material.resolve("material")?;
-        let mech = MechanismSpec { l: self.l, b: self.b, alpha0_deg: self.alpha0_deg, a: self.a, gamma_deg: self.gamma_deg };
+        let mech = MechanismSpec {
+            l: self.l,
+            b: self.b,
+            alpha0_deg: self.alpha0_deg,
+            a: self.a,
+            gamma_deg: self.gamma_deg,
+        };
         let prs = mech.build("stage")?;
         check::positive("stage.leg.w", self.leg.w, "mm")?;
         check::positive("stage.leg.h", self.leg.h, "mm")?;
@@ -182,7 +220,11 @@ impl StageSpec {
         }
         if let StageHinge::SphericalNeck { .. } = self.spherical {
         } else {
-            return Err(CaseError::value("stage.spherical.type", "(a notch type)", "the spherical joint must be a spherical_neck (turned neck)"));
+            return Err(CaseError::value(
+                "stage.spherical.type",
+                "(a notch type)",
+                "the spherical joint must be a spherical_neck (turned neck)",
+            ));
         }
         let d = StageDesign {
             prs,
@@ -204,7 +246,11 @@ impl StageCase {
     pub fn validate(&self) -> Result<(StageDesign, Vec<(String, Drive)>), CaseError> {
         let d = self.stage.design(&self.material)?;
         if self.nonlinear {
-            return Err(CaseError::value("nonlinear", "true", "geometrically nonlinear stage analysis is not available in this version; use false"));
+            return Err(CaseError::value(
+                "nonlinear",
+                "true",
+                "geometrically nonlinear stage analysis is not available in this version; use false",
+            ));
         }
         if self.load_cases.is_empty() {
             return Err(CaseError::new("load_cases", "at least one load case is needed"));
@@ -223,12 +269,21 @@ impl StageCase {
                     for (k, v) in s.iter().enumerate() {
                         check::finite(&format!("{p}.actuator_strokes[{k}]"), *v)?;
                         if v.abs() > 0.5 * d.prs.l {
-                            return Err(CaseError::value(format!("{p}.actuator_strokes[{k}]"), v, "a linear stage analysis takes strokes well below the leg length"));
+                            return Err(CaseError::value(
+                                format!("{p}.actuator_strokes[{k}]"),
+                                v,
+                                "a linear stage analysis takes strokes well below the leg length",
+                            ));
                         }
                     }
                     Drive::Strokes(s)
                 }
-                (Some(_), Some(_)) => return Err(CaseError::new(p, "give either `actuator_forces` or `actuator_strokes`, not both")),
+                (Some(_), Some(_)) => {
+                    return Err(CaseError::new(
+                        p,
+                        "give either `actuator_forces` or `actuator_strokes`, not both",
+                    ))
+                }
                 (None, None) => return Err(CaseError::new(p, "missing `actuator_forces` or `actuator_strokes`")),
             };
             drives.push((lc.name.clone(), drive));
@@ -248,7 +303,11 @@ impl FemVsFkpCase {
             for (k, v) in s.iter().enumerate() {
                 check::finite(&format!("strokes[{i}][{k}]"), *v)?;
                 if v.abs() > 0.5 * d.prs.l {
-                    return Err(CaseError::value(format!("strokes[{i}][{k}]"), v, "strokes must be well below the leg length"));
+                    return Err(CaseError::value(
+                        format!("strokes[{i}][{k}]"),
+                        v,
+                        "strokes must be well below the leg length",
+                    ));
                 }
             }
         }

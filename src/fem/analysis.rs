@@ -360,7 +360,7 @@ fn find(parent: &mut [usize], mut i: usize) -> usize {
     i
 }
 
-/// Connected parts (through elements and rigid links) without any support, prescribed DOF or
+/// Connected parts (through elements, rigid links and ties) without any support, prescribed DOF or
 /// ground spring.
 fn check_free_bodies(model: &Model, map: &DofMap) -> Result<(), FemError> {
     let n = model.nodes.len();
@@ -381,6 +381,12 @@ fn check_free_bodies(model: &Model, map: &DofMap) -> Result<(), FemError> {
                 find(&mut parent, map.rep[nodes[0]]),
                 find(&mut parent, map.rep[nodes[1]]),
             );
+            parent[a] = b;
+        }
+    }
+    for t in &model.ties {
+        if t.dofs.iter().any(|&d| d) {
+            let (a, b) = (find(&mut parent, map.rep[t.a]), find(&mut parent, map.rep[t.b]));
             parent[a] = b;
         }
     }

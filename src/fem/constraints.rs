@@ -29,6 +29,22 @@ pub struct DofMap {
     pub eq_dof: Vec<usize>,
     /// Constrained (supported or prescribed) global DOFs of independent nodes, sorted.
     pub constrained: Vec<usize>,
+    /// Tied DOFs: global DOF → the DOF it equals (its root, never itself tied). Sorted by key.
+    pub alias: Vec<(usize, usize)>,
+    /// Independent nodes with a frame (their DOFs are local: d_global = arm · d_local).
+    pub framed: Vec<usize>,
+}
+
+/// 6×6 block-diagonal diag(Fᵀ, Fᵀ) taking local DOFs of a frame with rows `f` to global.
+pub fn frame_block(f: &[[f64; 3]; 3]) -> Matrix6<f64> {
+    let mut t = Matrix6::zeros();
+    for i in 0..3 {
+        for j in 0..3 {
+            t[(i, j)] = f[j][i];
+            t[(i + 3, j + 3)] = f[j][i];
+        }
+    }
+    t
 }
 
 /// Global DOFs fixed by the model's supports, sorted and deduplicated.
@@ -97,11 +113,73 @@ impl DofMap {
         let mut arm = vec![None; n];
         for (s, &il) in slave_of.iter().enumerate() {
             if il != NONE {
+                if model.frames.contains_key(&s) {
+                    return Err(FemError::OverConstrained(format!(
+                        "node {s} has a frame but is a slave of rigid link {il}; its motion is fixed by master {} — give the frame to an independent node",
+                        model.rigid_links[il].master
+                    )));
+                }
                 let m = model.rigid_links[il].master;
                 rep[s] = m;
                 let a = Vector3::from(model.nodes[s]) - Vector3::from(model.nodes[m]);
-                arm[s] = Some(rigid_arm(&a));
+                let mut r = rigid_arm(&a);
+                if let Some(f) = model.frames.get(&m) {
+                    r *= frame_block(f);
+                }
+                arm[s] = Some(r);
             }
+        }
+        let mut framed = Vec::new();
+        for (&node, f) in &model.frames {
+            if node < n && slave_of[node] == NONE {
+                arm[node] = Some(frame_block(f));
+                framed.push(node);
+            }
+        }
+        // Ties: DOF 6b+d equals DOF 6a+d. Resolve chains to a root that is not itself tied.
+        let mut tied_to: std::collections::BTreeMap<usize, usize> = std::collections::BTreeMap::new();
+        for (it, t) in model.ties.iter().enumerate() {
+            for node in [t.a, t.b] {
+                if node >= n {
+                    return Err(FemError::NodeOutOfRange {
+                        what: format!("tie {it}"),
+                        node,
+                        n_nodes: n,
+                    });
+                }
+                if slave_of[node] != NONE {
+                    return Err(FemError::OverConstrained(format!(
+                        "tie {it}: node {node} is a slave of rigid link {}; tie an independent node (e.g. its master {}) instead",
+                        slave_of[node],
+                        model.rigid_links[slave_of[node]].master
+                    )));
+                }
+            }
+            for d in (0..6).filter(|&d| t.dofs[d]) {
+                let gb = 6 * t.b + d;
+                if tied_to.insert(gb, 6 * t.a + d).is_some() {
+                    return Err(FemError::OverConstrained(format!(
+                        "{} is tied twice (tie {it} and an earlier tie): redundant ties",
+                        NodeDof::from_global(gb)
+                    )));
+                }
+            }
+        }
+        let mut alias = Vec::with_capacity(tied_to.len());
+        for (&g, _) in &tied_to {
+            let mut root = g;
+            let mut steps = 0;
+            while let Some(&next) = tied_to.get(&root) {
+                root = next;
+                steps += 1;
+                if steps > tied_to.len() {
+                    return Err(FemError::OverConstrained(format!(
+                        "ties form a loop through {}",
+                        NodeDof::from_global(g)
+                    )));
+                }
+            }
+            alias.push((g, root));
         }
         let mut constrained = supported_dofs(model);
         for &g in &constrained {
@@ -148,6 +226,16 @@ impl DofMap {
         }
         constrained.sort_unstable();
         constrained.dedup();
+        for &(g, root) in &alias {
+            if constrained.binary_search(&g).is_ok() {
+                return Err(FemError::OverConstrained(format!(
+                    "{} is both tied to {} and supported or prescribed; constrain {} instead",
+                    NodeDof::from_global(g),
+                    NodeDof::from_global(root),
+                    NodeDof::from_global(root)
+                )));
+            }
+        }
         let mut eq = vec![NONE; 6 * n];
         let mut eq_dof = Vec::with_capacity(6 * n);
         let mut ci = 0;
@@ -163,9 +251,15 @@ impl DofMap {
                 if ci < constrained.len() && constrained[ci] == g {
                     continue;
                 }
+                if tied_to.contains_key(&g) {
+                    continue;
+                }
                 eq[g] = eq_dof.len();
                 eq_dof.push(g);
             }
+        }
+        for &(g, root) in &alias {
+            eq[g] = eq[root];
         }
         Ok(DofMap {
             rep,
@@ -173,6 +267,8 @@ impl DofMap {
             eq,
             eq_dof,
             constrained,
+            alias,
+            framed,
         })
     }
 
@@ -221,18 +317,34 @@ impl DofMap {
 
     /// Moves a global nodal vector (6 per node) onto independent nodes: f_m += Rᵀ f_s for
     /// every slave s of master m (force resultant and moment about the master preserved).
+    ///
+    /// Framed independent nodes get their own load in local axes (Λ f); tied DOFs pass their
+    /// load to the DOF they are tied to.
     pub fn to_independent(&self, f: &[f64]) -> Vec<f64> {
         let mut out = f.to_vec();
+        for &node in &self.framed {
+            if let Some(r) = &self.arm[node] {
+                let fl = r.transpose() * Vector6::from_column_slice(&f[6 * node..6 * node + 6]);
+                out[6 * node..6 * node + 6].copy_from_slice(fl.as_slice());
+            }
+        }
         for (node, arm) in self.arm.iter().enumerate() {
+            let m = self.rep[node];
+            if m == node {
+                continue;
+            }
             if let Some(r) = arm {
                 let fs = Vector6::from_column_slice(&f[6 * node..6 * node + 6]);
                 let fm = r.transpose() * fs;
-                let m = self.rep[node];
                 for d in 0..6 {
                     out[6 * m + d] += fm[d];
                     out[6 * node + d] = 0.0;
                 }
             }
+        }
+        for &(g, root) in &self.alias {
+            out[root] += out[g];
+            out[g] = 0.0;
         }
         out
     }
@@ -253,12 +365,25 @@ impl DofMap {
         for (i, &g) in self.eq_dof.iter().enumerate() {
             u[g] = q[i];
         }
+        for &(g, root) in &self.alias {
+            u[g] = u[root];
+        }
+        // Slaves from their masters' (possibly local) DOFs, then framed nodes to global.
         for (node, arm) in self.arm.iter().enumerate() {
+            let m = self.rep[node];
+            if m == node {
+                continue;
+            }
             if let Some(r) = arm {
-                let m = self.rep[node];
                 let um = Vector6::from_column_slice(&u[6 * m..6 * m + 6]);
                 let us = r * um;
                 u[6 * node..6 * node + 6].copy_from_slice(us.as_slice());
+            }
+        }
+        for &node in &self.framed {
+            if let Some(r) = &self.arm[node] {
+                let ug = r * Vector6::from_column_slice(&u[6 * node..6 * node + 6]);
+                u[6 * node..6 * node + 6].copy_from_slice(ug.as_slice());
             }
         }
         u

@@ -23,12 +23,12 @@ pub mod section;
 pub mod solve;
 pub mod transform;
 
-pub use analysis::{solve_static, CaseResult, StaticResults, System};
+pub use analysis::{solve_static, solve_static_with, CaseResult, StaticResults, System};
 pub use dof::{Dof, NodeDof};
 pub use error::FemError;
 pub use model::{
     Beam, Element, FlexElement, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink, Spring, SpringAxes,
-    Support,
+    Support, Tie,
 };
 pub use section::{Section, SectionProps};
 

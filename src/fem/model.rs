@@ -145,6 +145,18 @@ pub struct RigidLink {
     pub slaves: Vec<usize>,
 }
 
+/// A tie between two coincident nodes: the listed DOFs of `b` equal those of `a` (in the
+/// nodes' common frame, see [`Model::frames`]); the others stay independent. An exact joint
+/// release (a revolute joint ties all but one rotation, a spherical joint the translations),
+/// eliminated from the system like a rigid link: no penalty.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tie {
+    pub a: usize,
+    pub b: usize,
+    /// Tied DOFs in order ux uy uz rx ry rz (of the frame).
+    pub dofs: [bool; 6],
+}
+
 /// Lumped mass at a node (stored for modal analysis).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PointMass {
@@ -208,6 +220,13 @@ pub struct Model {
     pub rigid_links: Vec<RigidLink>,
     pub masses: Vec<PointMass>,
     pub load_cases: Vec<LoadCase>,
+    /// Node frames: rows are the node's local x, y, z axes in global coordinates (orthonormal,
+    /// right-handed). Supports, prescribed displacements and ties of a framed node act on its
+    /// local DOFs (skew supports, sliders on inclined guides); loads, displacements and
+    /// reactions in results stay global.
+    pub frames: std::collections::BTreeMap<usize, [[f64; 3]; 3]>,
+    /// Ties (exact joint releases) between coincident nodes.
+    pub ties: Vec<Tie>,
 }
 
 /// A global element matrix on its nodes (`n_nodes` = 1 or 2; for 1 only the top-left 6×6 is
@@ -238,6 +257,10 @@ impl Model {
     /// Adds a beam and returns its element index.
     pub fn add_beam(&mut self, b: Beam) -> usize {
         self.add_element(Element::Beam(b))
+    }
+    /// Gives `node` a frame (rows: local x, y, z in global coordinates).
+    pub fn set_frame(&mut self, node: usize, rows: [[f64; 3]; 3]) {
+        self.frames.insert(node, rows);
     }
     /// Number of global DOFs (6 per node).
     pub fn n_dofs(&self) -> usize {
@@ -274,6 +297,51 @@ impl Model {
             self.check_node(|| format!("rigid link {i} (master)"), l.master)?;
             for &s in &l.slaves {
                 self.check_node(|| format!("rigid link {i} (slave)"), s)?;
+            }
+        }
+        for (&node, f) in &self.frames {
+            self.check_node(|| "node frame".to_string(), node)?;
+            let m = nalgebra::Matrix3::from_row_slice(&[
+                f[0][0], f[0][1], f[0][2], f[1][0], f[1][1], f[1][2], f[2][0], f[2][1], f[2][2],
+            ]);
+            let err = (m * m.transpose() - nalgebra::Matrix3::identity()).norm();
+            if !(err < 1e-9 && m.determinant() > 0.0) {
+                return Err(FemError::BadInput(format!(
+                    "node {node}: its frame must be orthonormal and right-handed (rows {f:?})"
+                )));
+            }
+        }
+        for (i, t) in self.ties.iter().enumerate() {
+            self.check_node(|| format!("tie {i}"), t.a)?;
+            self.check_node(|| format!("tie {i}"), t.b)?;
+            if t.a == t.b {
+                return Err(FemError::BadInput(format!("tie {i}: ties node {} to itself", t.a)));
+            }
+            let (xa, xb) = (self.nodes[t.a], self.nodes[t.b]);
+            let dist = ((xa[0] - xb[0]).powi(2) + (xa[1] - xb[1]).powi(2) + (xa[2] - xb[2]).powi(2)).sqrt();
+            let scale = xa.iter().chain(xb.iter()).fold(1.0f64, |m, v| m.max(v.abs()));
+            if dist > 1e-9 * scale {
+                return Err(FemError::BadInput(format!(
+                    "tie {i}: nodes {} and {} are {dist} mm apart; a tie joins coincident nodes",
+                    t.a, t.b
+                )));
+            }
+            let fa = self.frames.get(&t.a);
+            let fb = self.frames.get(&t.b);
+            let same = match (fa, fb) {
+                (None, None) => true,
+                (Some(x), Some(y)) => x
+                    .iter()
+                    .flatten()
+                    .zip(y.iter().flatten())
+                    .all(|(p, q)| (p - q).abs() < 1e-12),
+                _ => false,
+            };
+            if !same {
+                return Err(FemError::BadInput(format!(
+                    "tie {i}: nodes {} and {} must have the same frame (or none)",
+                    t.a, t.b
+                )));
             }
         }
         for (i, m) in self.masses.iter().enumerate() {

@@ -227,6 +227,15 @@ pub fn case_result(model: &Model, map: &DofMap, name: &str, u: &[f64], f: &[f64]
             r.1[c % 6] = gi[c];
         }
     }
+    // Framed nodes: reactions were found in the node frame; report them in global axes.
+    for (node, r) in reactions.iter_mut() {
+        if map.framed.contains(node) {
+            if let Some(t) = &map.arm[*node] {
+                let g = t * nalgebra::Vector6::from_column_slice(r);
+                *r = std::array::from_fn(|i| g[i]);
+            }
+        }
+    }
     let mut statics = Statics {
         loads: [0.0; 6],
         reactions: [0.0; 6],

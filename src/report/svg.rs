@@ -4,7 +4,11 @@
 pub fn scatter(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])]) -> String {
     let (w, h) = (640.0, 420.0);
     let (l, r, t, b) = (70.0, 20.0, 40.0, 55.0);
-    let pts: Vec<(f64, f64)> = series.iter().flat_map(|(_, p)| p.iter().copied()).filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
+    let pts: Vec<(f64, f64)> = series
+        .iter()
+        .flat_map(|(_, p)| p.iter().copied())
+        .filter(|(x, y)| x.is_finite() && y.is_finite())
+        .collect();
     let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64, f64::NEG_INFINITY);
     for &(x, y) in &pts {
         x0 = x0.min(x);
@@ -32,28 +36,80 @@ pub fn scatter(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64,
         w / 2.0,
         esc(title)
     );
-    out += &format!("<line x1=\"{l}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"black\"/>\n", h - b, w - r, h - b);
-    out += &format!("<line x1=\"{l}\" y1=\"{t}\" x2=\"{l}\" y2=\"{}\" stroke=\"black\"/>\n", h - b);
+    out += &format!(
+        "<line x1=\"{l}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"black\"/>\n",
+        h - b,
+        w - r,
+        h - b
+    );
+    out += &format!(
+        "<line x1=\"{l}\" y1=\"{t}\" x2=\"{l}\" y2=\"{}\" stroke=\"black\"/>\n",
+        h - b
+    );
     for k in 0..=5 {
         let xv = x0 + (x1 - x0) * k as f64 / 5.0;
         let yv = y0 + (y1 - y0) * k as f64 / 5.0;
-        out += &format!("<text x=\"{:.1}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", sx(xv), h - b + 18.0, super::markdown::sig(xv, 3));
-        out += &format!("<text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{}</text>\n", l - 6.0, sy(yv) + 4.0, super::markdown::sig(yv, 3));
-        out += &format!("<line x1=\"{l}\" y1=\"{:.1}\" x2=\"{}\" y2=\"{:.1}\" stroke=\"#ddd\"/>\n", sy(yv), w - r, sy(yv));
+        out += &format!(
+            "<text x=\"{:.1}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n",
+            sx(xv),
+            h - b + 18.0,
+            super::markdown::sig(xv, 3)
+        );
+        out += &format!(
+            "<text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">{}</text>\n",
+            l - 6.0,
+            sy(yv) + 4.0,
+            super::markdown::sig(yv, 3)
+        );
+        out += &format!(
+            "<line x1=\"{l}\" y1=\"{:.1}\" x2=\"{}\" y2=\"{:.1}\" stroke=\"#ddd\"/>\n",
+            sy(yv),
+            w - r,
+            sy(yv)
+        );
     }
-    out += &format!("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", (l + w - r) / 2.0, h - 12.0, esc(xlabel));
-    out += &format!("<text x=\"16\" y=\"{}\" text-anchor=\"middle\" transform=\"rotate(-90 16 {})\">{}</text>\n", (t + h - b) / 2.0, (t + h - b) / 2.0, esc(ylabel));
+    out += &format!(
+        "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n",
+        (l + w - r) / 2.0,
+        h - 12.0,
+        esc(xlabel)
+    );
+    out += &format!(
+        "<text x=\"16\" y=\"{}\" text-anchor=\"middle\" transform=\"rotate(-90 16 {})\">{}</text>\n",
+        (t + h - b) / 2.0,
+        (t + h - b) / 2.0,
+        esc(ylabel)
+    );
     let colours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd"];
     for (si, (name, p)) in series.iter().enumerate() {
         let c = colours[si % colours.len()];
-        let mut sorted: Vec<(f64, f64)> = p.iter().copied().filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
+        let mut sorted: Vec<(f64, f64)> = p
+            .iter()
+            .copied()
+            .filter(|(x, y)| x.is_finite() && y.is_finite())
+            .collect();
         sorted.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let path: Vec<String> = sorted.iter().map(|&(x, y)| format!("{:.1},{:.1}", sx(x), sy(y))).collect();
-        out += &format!("<polyline fill=\"none\" stroke=\"{c}\" points=\"{}\"/>\n", path.join(" "));
+        let path: Vec<String> = sorted
+            .iter()
+            .map(|&(x, y)| format!("{:.1},{:.1}", sx(x), sy(y)))
+            .collect();
+        out += &format!(
+            "<polyline fill=\"none\" stroke=\"{c}\" points=\"{}\"/>\n",
+            path.join(" ")
+        );
         for &(x, y) in &sorted {
-            out += &format!("<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"4\" fill=\"{c}\"/>\n", sx(x), sy(y));
+            out += &format!(
+                "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"4\" fill=\"{c}\"/>\n",
+                sx(x),
+                sy(y)
+            );
         }
-        out += &format!("<text x=\"{}\" y=\"{}\" fill=\"{c}\">{}</text>\n", l + 10.0, t + 16.0 + 16.0 * si as f64, esc(name));
+        out += &format!(
+            "<text x=\"{}\" y=\"{}\" fill=\"{c}\">{}</text>\n",
+            l + 10.0,
+            t + 16.0 + 16.0 * si as f64,
+            esc(name)
+        );
     }
     out += "</svg>\n";
     out

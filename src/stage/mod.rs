@@ -28,7 +28,7 @@ use nalgebra::{Matrix3, Matrix6, Vector3};
 use thiserror::Error;
 
 /// Errors of the stage builder and solver.
-#[derive(Debug, Error, Clone, PartialEq)]
+#[derive(Debug, Error)]
 pub enum StageError {
     /// Non-physical stage geometry (names the stage field).
     #[error("stage field `{field}`: {message}")]
@@ -163,17 +163,22 @@ impl StageCaseResult {
 }
 
 fn geometry_err(field: &str, message: impl Into<String>) -> StageError {
-    StageError::Geometry { field: field.into(), message: message.into() }
+    StageError::Geometry {
+        field: field.into(),
+        message: message.into(),
+    }
 }
 
 fn hinge_err(prefix: &str, e: hinge::HingeError) -> StageError {
     match e {
-        hinge::HingeError::InvalidGeometry { param, value, allowed } => {
-            geometry_err(&format!("{prefix}.{param}"), format!("value {value} is not allowed: {allowed}"))
-        }
-        hinge::HingeError::InvalidMaterial { param, value, allowed } => {
-            geometry_err(&format!("material.{param}"), format!("value {value} is not allowed: {allowed}"))
-        }
+        hinge::HingeError::InvalidGeometry { param, value, allowed } => geometry_err(
+            &format!("{prefix}.{param}"),
+            format!("value {value} is not allowed: {allowed}"),
+        ),
+        hinge::HingeError::InvalidMaterial { param, value, allowed } => geometry_err(
+            &format!("material.{param}"),
+            format!("value {value} is not allowed: {allowed}"),
+        ),
     }
 }
 
@@ -198,11 +203,17 @@ impl StageDesign {
     pub fn validate(&self) -> Result<(Profile, Profile), StageError> {
         for (f, v) in [("leg.w", self.leg_w), ("leg.h", self.leg_h)] {
             if !(v.is_finite() && v > 0.0) {
-                return Err(geometry_err(f, format!("value {v} is not allowed: must be a positive length (mm)")));
+                return Err(geometry_err(
+                    f,
+                    format!("value {v} is not allowed: must be a positive length (mm)"),
+                ));
             }
         }
         if self.leg_elements == 0 || self.leg_elements > 1000 {
-            return Err(geometry_err("leg_elements", format!("value {} is not allowed: must be in 1..=1000", self.leg_elements)));
+            return Err(geometry_err(
+                "leg_elements",
+                format!("value {} is not allowed: must be in 1..=1000", self.leg_elements),
+            ));
         }
         let rp = self.revolute.profile().map_err(|e| hinge_err("revolute", e))?;
         let sp = self.spherical.profile().map_err(|e| hinge_err("spherical", e))?;
@@ -227,11 +238,26 @@ impl StageDesign {
         let prs = &self.prs;
         let mut model = Model::new();
         let stiff = if self.ideal_joints { 1e6 } else { 1.0 };
-        let leg_material = Material { e: self.material.e * stiff, ..self.material };
+        let leg_material = Material {
+            e: self.material.e * stiff,
+            ..self.material
+        };
         let p = model.add_node(arr(prs.p_home()));
-        let rev_c = if self.ideal_joints { None } else { Some(hinge_compliance(&self.revolute, &self.material, "revolute")?) };
-        let sph_c = if self.ideal_joints { None } else { Some(hinge_compliance(&self.spherical, &self.material, "spherical")?) };
-        let (hr, hs) = if self.ideal_joints { (0.0, 0.0) } else { (rp.half_notch, sp.half_notch) };
+        let rev_c = if self.ideal_joints {
+            None
+        } else {
+            Some(hinge_compliance(&self.revolute, &self.material, "revolute")?)
+        };
+        let sph_c = if self.ideal_joints {
+            None
+        } else {
+            Some(hinge_compliance(&self.spherical, &self.material, "spherical")?)
+        };
+        let (hr, hs) = if self.ideal_joints {
+            (0.0, 0.0)
+        } else {
+            (rp.half_notch, sp.half_notch)
+        };
         let mut legs = Vec::with_capacity(3);
         let mut platform_slaves = Vec::with_capacity(3);
         for i in 0..3 {
@@ -243,12 +269,19 @@ impl StageDesign {
             let e = prs.e(i);
             let slider = model.add_node(arr(c - hr * l));
             model.set_frame(slider, rows(e, m, e.cross(&m)));
-            model.supports.push(fem::Support::dofs(slider, &[Dof::Uy, Dof::Uz, Dof::Rx, Dof::Ry, Dof::Rz]));
+            model.supports.push(fem::Support::dofs(
+                slider,
+                &[Dof::Uy, Dof::Uz, Dof::Rx, Dof::Ry, Dof::Rz],
+            ));
             let rev_top = if self.ideal_joints {
                 let top = model.add_node(arr(c));
                 model.set_frame(top, rows(e, m, e.cross(&m)));
                 // Revolute: everything tied but the rotation about mᵢ (local y of the frame).
-                model.ties.push(fem::Tie { a: slider, b: top, dofs: [true, true, true, true, false, true] });
+                model.ties.push(fem::Tie {
+                    a: slider,
+                    b: top,
+                    dofs: [true, true, true, true, false, true],
+                });
                 top
             } else {
                 model.add_node(arr(c + hr * l))
@@ -269,7 +302,16 @@ impl StageDesign {
                 let x = start + (end - start) * (k as f64 / self.leg_elements as f64);
                 let node = model.add_node(arr(x));
                 // Section h along local z = nᵢ, w along local y = mᵢ (`up` = nᵢ).
-                model.add_beam(fem::Beam::new(prev, node, fem::Section::Rect { w: self.leg_w, h: self.leg_h }, leg_material, arr(n)));
+                model.add_beam(fem::Beam::new(
+                    prev,
+                    node,
+                    fem::Section::Rect {
+                        w: self.leg_w,
+                        h: self.leg_h,
+                    },
+                    leg_material,
+                    arr(n),
+                ));
                 prev = node;
             }
             let sph_bottom = prev;
@@ -287,26 +329,58 @@ impl StageDesign {
                     // Spherical: translations tied, rotations free; the platform point is an
                     // independent node joined to P by a stiff beam (see the module docs).
                     let top = model.add_node(arr(b));
-                    model.ties.push(fem::Tie { a: top, b: sph_bottom, dofs: [true, true, true, false, false, false] });
+                    model.ties.push(fem::Tie {
+                        a: top,
+                        b: sph_bottom,
+                        dofs: [true, true, true, false, false, false],
+                    });
                     (top, usize::MAX)
                 }
             };
             platform_slaves.push(sph_top);
-            legs.push(LegIds { slider, rev_top, sph_bottom, sph_top, rev_element, sph_element, e, m, l });
+            legs.push(LegIds {
+                slider,
+                rev_top,
+                sph_bottom,
+                sph_top,
+                rev_element,
+                sph_element,
+                e,
+                m,
+                l,
+            });
         }
         if self.ideal_joints {
             let d = 2.0 * self.leg_w.max(self.leg_h);
             for &s in &platform_slaves {
                 let axis = Vector3::from(model.nodes[s]) - Vector3::from(model.nodes[p]);
-                let up = if axis.cross(&Vector3::z()).norm() > 1e-9 * axis.norm() { Vector3::z() } else { Vector3::x() };
+                let up = if axis.cross(&Vector3::z()).norm() > 1e-9 * axis.norm() {
+                    Vector3::z()
+                } else {
+                    Vector3::x()
+                };
                 model.add_beam(fem::Beam::new(p, s, fem::Section::Circle { d }, leg_material, arr(up)));
             }
         } else {
-            model.rigid_links.push(fem::RigidLink { master: p, slaves: platform_slaves });
+            model.rigid_links.push(fem::RigidLink {
+                master: p,
+                slaves: platform_slaves,
+            });
         }
         let legs = [legs[0], legs[1], legs[2]];
-        let kt = [hinge::stress::stress_concentration(&rp), hinge::stress::stress_concentration(&sp)];
-        Ok(StageModel { design: self.clone(), model, platform: p, legs, rev_profile: rp, sph_profile: sp, kt })
+        let kt = [
+            hinge::stress::stress_concentration(&rp),
+            hinge::stress::stress_concentration(&sp),
+        ];
+        Ok(StageModel {
+            design: self.clone(),
+            model,
+            platform: p,
+            legs,
+            rev_profile: rp,
+            sph_profile: sp,
+            kt,
+        })
     }
 }
 
@@ -327,11 +401,15 @@ pub fn hinge_peak_stress(profile: &Profile, nu: f64, kt: f64, sf: &[[f64; 6]; 2]
             let r = 0.5 * profile.thickness(x);
             let c = r.min(0.5 * profile.h);
             let m = (f[4] * f[4] + f[5] * f[5]).sqrt();
-            (f[0].abs() / sec.area + kt * m * c / sec.i_bend, f[3].abs() * r.min(0.5 * profile.h) / sec.j)
+            (
+                f[0].abs() / sec.area + kt * m * c / sec.i_bend,
+                f[3].abs() * r.min(0.5 * profile.h) / sec.j,
+            )
         } else {
             let t = profile.thickness(x);
             let w = profile.w;
-            let sig = f[0].abs() / sec.area + kt * f[4].abs() * 0.5 * t / sec.i_bend + f[5].abs() * 0.5 * w / sec.i_bend_off;
+            let sig =
+                f[0].abs() / sec.area + kt * f[4].abs() * 0.5 * t / sec.i_bend + f[5].abs() * 0.5 * w / sec.i_bend_off;
             (sig, f[3].abs() * t.min(w) / sec.j)
         };
         peak = peak.max((sigma * sigma + 3.0 * tau * tau).sqrt());
@@ -359,12 +437,17 @@ impl StageModel {
     pub fn solve(&self, cases: &[(String, Drive)]) -> Result<Vec<StageCaseResult>, StageError> {
         let mut model = self.model.clone();
         model.load_cases = cases.iter().map(|(n, d)| self.load_case(n, *d)).collect();
-        let res = fem::solve_static(&model)?;
-        Ok(res.load_cases.into_iter().map(|fe| self.read(fe)).collect())
+        let res = fem::solve_static_with(&model, fem::solve::Parallelism::Sequential)?;
+        Ok(res
+            .load_cases
+            .into_iter()
+            .zip(cases)
+            .map(|(fe, (_, d))| self.read(fe, *d))
+            .collect())
     }
 
-    /// Reads stage quantities from an FE load-case result.
-    pub fn read(&self, fe: fem::CaseResult) -> StageCaseResult {
+    /// Reads stage quantities from an FE load-case result driven by `drive`.
+    pub fn read(&self, fe: fem::CaseResult, drive: Drive) -> StageCaseResult {
         let nu = self.design.material.nu;
         let mut strokes = [0.0; 3];
         let mut forces = [0.0; 3];
@@ -373,12 +456,16 @@ impl StageModel {
         for (i, leg) in self.legs.iter().enumerate() {
             let u = &fe.displacements[leg.slider];
             strokes[i] = leg.e.dot(&Vector3::new(u[0], u[1], u[2]));
-            // Actuator force along eᵢ = the force the guide exerts on the slider along eᵢ plus
-            // any applied load: equilibrium of the slider along eᵢ.
-            let applied = fe.applied_force(leg.slider);
-            let reaction = fe.reaction(leg.slider);
-            let along = |v: [f64; 6]| leg.e.dot(&Vector3::new(v[0], v[1], v[2]));
-            forces[i] = along(applied) + along(reaction);
+            // Actuator force along eᵢ: the applied force, or with a prescribed stroke the
+            // reaction of the stroke DOF (the guide's other reactions are normal to eᵢ).
+            forces[i] = match drive {
+                Drive::Forces(f) => f[i],
+                Drive::Strokes(_) => fe
+                    .reactions
+                    .iter()
+                    .find(|(n, _)| *n == leg.slider)
+                    .map_or(0.0, |(_, r)| leg.e.dot(&Vector3::new(r[0], r[1], r[2]))),
+            };
             if leg.rev_element != usize::MAX {
                 let sf = &fe.elements[leg.rev_element].section_forces;
                 rev[i] = hinge_peak_stress(&self.rev_profile, nu, self.kt[0], sf, false);
@@ -395,7 +482,14 @@ impl StageModel {
             name: fe.name.clone(),
             strokes,
             forces,
-            platform: PoseChange { x: up[0], y: up[1], z: up[2], psi: up[3], theta: up[4], phi: up[5] },
+            platform: PoseChange {
+                x: up[0],
+                y: up[1],
+                z: up[2],
+                psi: up[3],
+                theta: up[4],
+                phi: up[5],
+            },
             revolute_stress: rev,
             spherical_stress: sph,
             max_von_mises: max_vm,
@@ -407,7 +501,7 @@ impl StageModel {
     pub fn platform_compliance(&self) -> Result<Matrix6<f64>, StageError> {
         let mut model = self.model.clone();
         model.load_cases.clear();
-        let sys = fem::System::new(&model, &[], fem::solve::Parallelism::None)?;
+        let sys = fem::System::new(&model, &[], fem::solve::Parallelism::Sequential)?;
         Ok(sys.node_compliance(&model, self.platform)?)
     }
 }
@@ -415,7 +509,11 @@ impl StageModel {
 /// Total actuator force per mm of stroke for a pure-z motion, N/mm: the sum of the actuator
 /// forces when every stroke follows the linearised IKP of a unit z lift.
 pub fn stiffness_z(stage: &StageModel) -> Result<(f64, StageCaseResult), StageError> {
-    let j = stage.design.prs.actuation_jacobian(0.0, 0.0, 0.0).map_err(|e| geometry_err("L", e.to_string()))?;
+    let j = stage
+        .design
+        .prs
+        .actuation_jacobian(0.0, 0.0, 0.0)
+        .map_err(|e| geometry_err("L", e.to_string()))?;
     let s = [j[(0, 0)], j[(1, 0)], j[(2, 0)]];
     let mut r = stage.solve(&[("unit_z".to_string(), Drive::Strokes(s))])?;
     let r = r.remove(0);
