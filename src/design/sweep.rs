@@ -462,7 +462,7 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         match stream {
             Stream::File(f) => f
                 .write_all(buf)
-                .map_err(io_context("append to", partial.as_deref().unwrap_or(Path::new(""))))?,
+                .map_err(|e| io_context("append to", partial.as_deref().unwrap_or(Path::new("")))(e))?,
             Stream::Stdout(s) => {
                 let write = || -> io::Result<()> {
                     let mut lock = s.lock();
