@@ -66,6 +66,11 @@ fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
     p
 }
 
+/// Removes a passing test's temp dir (a failing test leaves it for inspection).
+fn cleanup(d: &Path) {
+    let _ = std::fs::remove_dir_all(d);
+}
+
 fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs()
 }
@@ -108,6 +113,7 @@ fn bundled_hinge_sweep_writes_55_sorted_lines_with_params() {
     // Thicker waist at the same radius is stiffer: t = 3 vs t = 1 at R = 8.
     let k = |i: usize| lines[i]["result"]["k_bend"].as_f64().unwrap();
     assert!(k(4 * 11 + 6) > k(2 * 11 + 6) && k(2 * 11 + 6) > k(6));
+    cleanup(&d);
 }
 
 /// Without `--out` the lines stream to stdout: each one valid JSON, every index once.
@@ -127,6 +133,7 @@ fn stdout_streaming_gives_valid_json_lines() {
         assert_eq!(keys, ["index", "params", "result"]);
     }
     assert_eq!(std::fs::read_dir(&d).unwrap().count(), 0, "no files without --out");
+    cleanup(&d);
 }
 
 /// Shards 1/3 + 2/3 + 3/3 are the unsharded run as a set of lines, each with its residue.
@@ -164,6 +171,7 @@ fn shards_concatenated_equal_the_unsharded_run() {
         sorted_lines(&from_files),
         sorted_lines(&std::fs::read_to_string(&full).unwrap())
     );
+    cleanup(&d);
 }
 
 /// A killed sweep resumes: lines in FILE.jsonl and FILE.jsonl.partial are kept, a torn last
@@ -212,6 +220,7 @@ fn resume_after_interruption_runs_only_missing_designs() {
     ok(&o);
     assert_eq!(summary(&o), [55, 5, 50, 0]);
     assert_eq!(std::fs::read_to_string(&out).unwrap(), fresh_text);
+    cleanup(&d);
 }
 
 const T_UP_TO_12: &str = r#"{"analysis": "sweep",
@@ -253,6 +262,7 @@ fn design_with_t_not_below_h_is_an_error_row_and_the_rest_finish() {
             direct["k_bend"].as_f64().unwrap()
         ) < 1e-9
     );
+    cleanup(&d);
 }
 
 /// CSV: header `index, varied paths, flattened result leaves…, error`, one row per design.
@@ -297,6 +307,7 @@ fn csv_has_a_header_and_one_row_per_design() {
         }
     }
     assert_eq!(rows.iter().filter(|r| r.contains("hinge.t: value")).count(), 4);
+    cleanup(&d);
 }
 
 /// Bad `--shard` values exit 2 with a message, before anything runs.
@@ -320,6 +331,7 @@ fn bad_shard_values_exit_2() {
         );
         assert!(stdout(&o).is_empty());
     }
+    cleanup(&d);
 }
 
 /// A sweep file that is itself wrong exits 2 naming the JSON path; so does a non-sweep case.
@@ -356,6 +368,7 @@ fn bad_sweep_files_exit_2_naming_the_path() {
     assert!(stderr(&o).contains("`analysis`"), "{}", stderr(&o));
     let o = sweep(&d, &[d.join("missing.json").to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(2));
+    cleanup(&d);
 }
 
 /// `mesh` paths in the base resolve beside the sweep file, not the working folder; results are
@@ -405,6 +418,8 @@ fn mesh_paths_resolve_beside_the_sweep_file() {
     let direct: Value = serde_json::from_str(&stdout(&direct)).unwrap();
     let uz_run = direct["load_cases"][0]["displacements"][10][2].as_f64().unwrap();
     assert!(rel(uz[0], uz_run) < 1e-12);
+    cleanup(&d);
+    cleanup(&std::env::temp_dir().join(format!("flexfem-test-{}-mesh-direct", std::process::id())));
 }
 
 /// The real thing: kill a running sweep (SIGKILL) once its partial file holds some lines, then
@@ -454,4 +469,5 @@ fn killed_sweep_resumes_from_its_partial_file() {
         (0..5000).collect::<Vec<_>>()
     );
     assert!(!partial.exists());
+    cleanup(&d);
 }

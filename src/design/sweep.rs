@@ -462,7 +462,7 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         match stream {
             Stream::File(f) => f
                 .write_all(buf)
-                .map_err(io_context("append to", partial.as_deref().unwrap_or(Path::new(""))))?,
+                .map_err(|e| io_context("append to", partial.as_deref().unwrap_or(Path::new("")))(e))?,
             Stream::Stdout(s) => {
                 let write = || -> io::Result<()> {
                     let mut lock = s.lock();
@@ -512,7 +512,8 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
     };
     if let (Some(csv), Some(lines)) = (&args.csv, csv_lines) {
         let axes: Vec<&str> = sweep.axes.iter().map(|(p, _)| p.as_str()).collect();
-        let text = table::csv(&axes, lines.iter().map(String::as_str));
+        let lines: Vec<&str> = lines.iter().map(String::as_str).collect();
+        let text = table::csv(&axes, &lines);
         write_atomic(csv, text.as_bytes()).map_err(io_context("write", csv))?;
     }
 

@@ -5,25 +5,31 @@
 //! are flattened by position (`compliance.2.4`, `load_cases.0.name`); longer arrays
 //! (per-node displacements, mode shapes) and arrays of strings (notes) are left out.
 
-use serde_json::{Map, Value};
+use rayon::prelude::*;
+use serde_json::Value;
 use std::collections::HashMap;
+use std::fmt::Write as _;
 
 /// Longest array flattened into columns.
 pub const MAX_ARRAY: usize = 16;
 
-/// Appends the scalar leaves of `v` under `prefix` to `out` as (dotted name, text).
-pub fn flatten(prefix: &str, v: &Value, out: &mut Vec<(String, String)>) {
-    let key = |k: &str| {
-        if prefix.is_empty() {
-            k.to_string()
-        } else {
-            format!("{prefix}.{k}")
+/// Calls `f(dotted name, leaf)` for every scalar leaf of `v`, `name` holding the prefix (it is
+/// used as the working buffer and restored on return).
+pub fn visit_leaves<'v>(name: &mut String, v: &'v Value, f: &mut impl FnMut(&str, &'v Value)) {
+    let enter = |name: &mut String, key: &dyn std::fmt::Display| {
+        let len = name.len();
+        if len > 0 {
+            name.push('.');
         }
+        let _ = write!(name, "{key}");
+        len
     };
     match v {
         Value::Object(m) => {
             for (k, x) in m {
-                flatten(&key(k), x, out);
+                let len = enter(name, k);
+                visit_leaves(name, x, f);
+                name.truncate(len);
             }
         }
         Value::Array(a) => {
@@ -31,89 +37,123 @@ pub fn flatten(prefix: &str, v: &Value, out: &mut Vec<(String, String)>) {
                 return;
             }
             for (i, x) in a.iter().enumerate() {
-                flatten(&key(&i.to_string()), x, out);
+                let len = enter(name, &i);
+                visit_leaves(name, x, f);
+                name.truncate(len);
             }
         }
-        scalar => out.push((prefix.to_string(), cell(scalar))),
+        scalar => f(name, scalar),
     }
 }
 
-/// A parameter or leaf as cell text: strings bare, everything else as JSON.
-fn cell(v: &Value) -> String {
+/// The scalar leaves of `v` under `prefix` as (dotted name, cell text).
+pub fn flatten(prefix: &str, v: &Value, out: &mut Vec<(String, String)>) {
+    let mut name = prefix.to_string();
+    visit_leaves(&mut name, v, &mut |n, x| {
+        let mut text = String::new();
+        push_cell(&mut text, Some(x));
+        out.push((n.to_string(), text));
+    });
+}
+
+/// Appends a parameter or leaf as a CSV field: strings bare (quoted when RFC 4180 needs it),
+/// null and missing empty, everything else as JSON.
+fn push_cell(out: &mut String, v: Option<&Value>) {
     match v {
-        Value::String(s) => s.clone(),
-        Value::Null => String::new(),
-        other => other.to_string(),
+        None | Some(Value::Null) => {}
+        Some(Value::String(s)) => push_text(out, s),
+        Some(Value::Number(n)) => {
+            let _ = write!(out, "{n}");
+        }
+        Some(other) => push_text(out, &other.to_string()),
     }
 }
 
-/// Quotes a CSV field when it needs it (RFC 4180).
-fn quote(s: &str) -> String {
+fn push_text(out: &mut String, s: &str) {
     if s.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
+        out.push('"');
+        out.push_str(&s.replace('"', "\"\""));
+        out.push('"');
     } else {
-        s.to_string()
+        out.push_str(s);
     }
 }
 
 /// The CSV table of sweep `lines` (already in index order) for a sweep varying `axes`.
 /// Result columns are the union of the rows' leaves, in order of first appearance.
-pub fn csv<'a>(axes: &[&str], lines: impl IntoIterator<Item = &'a str>) -> String {
+/// Lines are parsed and rendered in parallel (rayon); unparseable lines are skipped.
+pub fn csv(axes: &[&str], lines: &[&str]) -> String {
+    let rows: Vec<Value> = lines
+        .par_iter()
+        .filter_map(|l| serde_json::from_str::<Value>(l).ok().filter(Value::is_object))
+        .collect();
+
+    // Columns in order of first appearance; each row's leaves as (column, value).
     let mut columns: Vec<String> = Vec::new();
     let mut column_of: HashMap<String, usize> = HashMap::new();
-    let mut rows: Vec<(String, Vec<String>, Vec<(usize, String)>, String)> = Vec::new();
-    for line in lines {
-        let Ok(Value::Object(m)) = serde_json::from_str::<Value>(line) else {
-            continue;
-        };
-        let index = m.get("index").map(cell).unwrap_or_default();
-        let empty = Map::new();
-        let params = m.get("params").and_then(Value::as_object).unwrap_or(&empty);
-        let params: Vec<String> = axes
-            .iter()
-            .map(|a| params.get(*a).map(cell).unwrap_or_default())
-            .collect();
-        let mut leaves = Vec::new();
-        if let Some(result) = m.get("result") {
-            flatten("", result, &mut leaves);
-        }
-        let cells = leaves
-            .into_iter()
-            .map(|(name, text)| {
-                let next = columns.len();
-                let c = *column_of.entry(name.clone()).or_insert(next);
-                if c == next {
-                    columns.push(name);
-                }
-                (c, text)
-            })
-            .collect();
-        let error = m.get("error").map(cell).unwrap_or_default();
-        rows.push((index, params, cells, error));
-    }
+    let mut name = String::new();
+    let leaves: Vec<Vec<(usize, &Value)>> = rows
+        .iter()
+        .map(|row| {
+            let mut cells = Vec::new();
+            if let Some(result) = row.get("result") {
+                name.clear();
+                visit_leaves(&mut name, result, &mut |n, x| {
+                    let c = match column_of.get(n) {
+                        Some(&c) => c,
+                        None => {
+                            column_of.insert(n.to_string(), columns.len());
+                            columns.push(n.to_string());
+                            columns.len() - 1
+                        }
+                    };
+                    cells.push((c, x));
+                });
+            }
+            cells
+        })
+        .collect();
 
     let mut out = String::new();
-    let header: Vec<String> = std::iter::once("index")
+    let header = std::iter::once("index")
         .chain(axes.iter().copied())
         .chain(columns.iter().map(String::as_str))
-        .chain(std::iter::once("error"))
-        .map(quote)
-        .collect();
-    out += &header.join(",");
-    out.push('\n');
-    for (index, params, cells, error) in rows {
-        let mut result = vec![String::new(); columns.len()];
-        for (c, text) in cells {
-            result[c] = text;
+        .chain(std::iter::once("error"));
+    for (i, h) in header.enumerate() {
+        if i > 0 {
+            out.push(',');
         }
-        let fields: Vec<String> = std::iter::once(index)
-            .chain(params)
-            .chain(result)
-            .chain(std::iter::once(error))
-            .map(|s| quote(&s))
-            .collect();
-        out += &fields.join(",");
-        out.push('\n');
+        push_text(&mut out, h);
+    }
+    out.push('\n');
+    let body: Vec<String> = rows
+        .par_iter()
+        .zip(&leaves)
+        .map(|(row, cells)| {
+            let mut by_column: Vec<Option<&Value>> = vec![None; columns.len()];
+            for &(c, x) in cells {
+                by_column[c] = Some(x);
+            }
+            let params = row.get("params");
+            let mut line = String::with_capacity(24 * (by_column.len() + axes.len() + 2));
+            push_cell(&mut line, row.get("index"));
+            for a in axes {
+                line.push(',');
+                push_cell(&mut line, params.and_then(|p| p.get(*a)));
+            }
+            for x in by_column {
+                line.push(',');
+                push_cell(&mut line, x);
+            }
+            line.push(',');
+            push_cell(&mut line, row.get("error"));
+            line.push('\n');
+            line
+        })
+        .collect();
+    out.reserve(body.iter().map(String::len).sum());
+    for line in body {
+        out.push_str(&line);
     }
     out
 }
@@ -154,7 +194,7 @@ mod tests {
             r#"{"index":0,"params":{"a":1},"error":"a: bad, very"}"#,
             r#"{"index":1,"params":{"a":2},"result":{"x":3,"y":{"z":4}}}"#,
         ];
-        let t = csv(&["a"], lines);
+        let t = csv(&["a"], &lines);
         assert_eq!(t, "index,a,x,y.z,error\n0,1,,,\"a: bad, very\"\n1,2,3,4,\n");
     }
 }
