@@ -104,6 +104,10 @@ pub struct StageModel {
     pub sph_profile: Profile,
     /// Notch stress-concentration factors (revolute, spherical).
     pub kt: [f64; 2],
+    /// Characterisation of the revolute notch alone (blank 0).
+    pub rev_hinge: hinge::Stiffness,
+    /// Characterisation of the spherical neck alone (blank 0).
+    pub sph_hinge: hinge::Stiffness,
 }
 
 /// How one load case drives the actuators.
@@ -193,9 +197,9 @@ fn arr(v: Vector3<f64>) -> [f64; 3] {
 
 /// The 6×6 compliance of a hinge (blank 0) with the warping-restrained torsion of
 /// [`hinge::characterise`], in hinge axes (x along the hinge, y compliant axis, z across).
-fn hinge_compliance(spec: &HingeSpec, material: &Material, prefix: &str) -> Result<[[f64; 6]; 6], StageError> {
+fn hinge_notch(spec: &HingeSpec, material: &Material, prefix: &str) -> Result<hinge::Stiffness, StageError> {
     let r = hinge::characterise(spec, material).map_err(|e| hinge_err(prefix, e))?;
-    Ok(r.notch_only.compliance)
+    Ok(r.notch_only)
 }
 
 impl StageDesign {
@@ -243,16 +247,10 @@ impl StageDesign {
             ..self.material
         };
         let p = model.add_node(arr(prs.p_home()));
-        let rev_c = if self.ideal_joints {
-            None
-        } else {
-            Some(hinge_compliance(&self.revolute, &self.material, "revolute")?)
-        };
-        let sph_c = if self.ideal_joints {
-            None
-        } else {
-            Some(hinge_compliance(&self.spherical, &self.material, "spherical")?)
-        };
+        let rev_h = hinge_notch(&self.revolute, &self.material, "revolute")?;
+        let sph_h = hinge_notch(&self.spherical, &self.material, "spherical")?;
+        let rev_c = if self.ideal_joints { None } else { Some(rev_h.compliance) };
+        let sph_c = if self.ideal_joints { None } else { Some(sph_h.compliance) };
         let (hr, hs) = if self.ideal_joints {
             (0.0, 0.0)
         } else {
@@ -380,6 +378,8 @@ impl StageDesign {
             rev_profile: rp,
             sph_profile: sp,
             kt,
+            rev_hinge: rev_h,
+            sph_hinge: sph_h,
         })
     }
 }
