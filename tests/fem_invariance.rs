@@ -122,8 +122,8 @@ proptest! {
             prop_assert!((e0.strain_energy - e1.strain_energy).abs() <= 1e-9 * e0.strain_energy.abs().max(1e-12));
         }
         let r = rot6(&q, c0.reactions[0].1);
-        for d in 0..6 {
-            prop_assert!((c1.reactions[0].1[d] - r[d]).abs() <= 1e-9 * 1000.0);
+        for (a, b) in c1.reactions[0].1.iter().zip(&r) {
+            prop_assert!((a - b).abs() <= 1e-9 * 1000.0);
         }
         prop_assert!(c1.statics.is_balanced(1e-9, 100.0));
     }

@@ -324,7 +324,10 @@ pub fn solve_static_with(model: &Model, par: Parallelism) -> Result<StaticResult
 pub const PIVOT_TOL: f64 = 1e-11;
 
 fn has_tiny_pivot(f: &Factor, k: &SparseMatrix) -> bool {
-    f.pivots().iter().zip(k.diagonal()).any(|(p, d)| !(*p > PIVOT_TOL * d))
+    f.pivots()
+        .iter()
+        .zip(k.diagonal())
+        .any(|(p, d)| p.is_nan() || *p <= PIVOT_TOL * d)
 }
 
 /// Free equations whose diagonal stiffness is zero (relative to the largest diagonal of the
@@ -341,7 +344,7 @@ fn check_unconstrained(map: &DofMap, k: &SparseMatrix) -> Result<(), FemError> {
         .enumerate()
         .filter(|&(i, &v)| {
             let kind = usize::from(map.eq_dof[i] % 6 >= 3);
-            !(v > 1e-13 * max[kind])
+            v.is_nan() || v <= 1e-13 * max[kind]
         })
         .map(|(i, _)| map.describe_eq(i))
         .collect();
@@ -394,11 +397,9 @@ fn check_free_bodies(model: &Model, map: &DofMap) -> Result<(), FemError> {
         grounded[g / 6] = true;
     }
     let mut comp_grounded = vec![false; n];
-    for i in 0..n {
-        if grounded[i] {
-            let r = find(&mut parent, i);
-            comp_grounded[r] = true;
-        }
+    for (i, _) in grounded.iter().enumerate().filter(|(_, g)| **g) {
+        let r = find(&mut parent, i);
+        comp_grounded[r] = true;
     }
     let mut free: Vec<usize> = Vec::new();
     let mut first_root = NONE;

@@ -31,8 +31,7 @@ fn for_each_pair(eqs: &[usize; 12], n: usize, mut f: impl FnMut(usize, usize, us
         if ea == NONE {
             continue;
         }
-        for b in 0..n {
-            let eb = eqs[b];
+        for (b, &eb) in eqs.iter().enumerate().take(n) {
             if eb != NONE && ea >= eb {
                 f(a, b, ea, eb);
             }

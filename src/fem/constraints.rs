@@ -239,8 +239,8 @@ impl DofMap {
         let mut eq = vec![NONE; 6 * n];
         let mut eq_dof = Vec::with_capacity(6 * n);
         let mut ci = 0;
-        for node in 0..n {
-            if rep[node] != node {
+        for (node, &r) in rep.iter().enumerate() {
+            if r != node {
                 continue;
             }
             for d in 0..6 {

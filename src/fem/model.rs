@@ -404,7 +404,7 @@ impl Model {
         }
         let (x1, x2) = (self.nodes[nodes[0]], self.nodes[nodes[1]]);
         let d = Vector3::from(x2) - Vector3::from(x1);
-        if !(d.norm() > 0.0) {
+        if d.norm().is_nan() || d.norm() <= 0.0 {
             return Err(FemError::BadElement {
                 element: ie,
                 reason: format!("zero length (nodes {} and {} coincide)", nodes[0], nodes[1]),
@@ -477,7 +477,7 @@ impl Model {
             SpringAxes::Frame(rows) => {
                 let lam = Matrix3::from_fn(|i, j| rows[i][j]);
                 let ortho = (lam * lam.transpose() - Matrix3::identity()).amax();
-                if !(ortho < 1e-9) || !(lam.determinant() > 0.0) {
+                if ortho.is_nan() || ortho >= 1e-9 || lam.determinant().is_nan() || lam.determinant() <= 0.0 {
                     return Err(FemError::BadElement {
                         element: ie,
                         reason: "spring axes must be orthonormal and right-handed".into(),

@@ -11,7 +11,7 @@
 use std::f64::consts::PI;
 
 /// ζ(5), Apéry-like constant used by the rectangle torsion series.
-const ZETA5: f64 = 1.036_927_755_143_369_9;
+const ZETA5: f64 = 1.036_927_755_143_37;
 /// Catalan's constant G = Σ (−1)ᵏ/(2k+1)².
 const CATALAN: f64 = 0.915_965_594_177_219;
 
