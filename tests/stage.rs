@@ -107,8 +107,8 @@ proptest! {
         prop_assert!((p.psi - k.psi).abs() < tol, "ψ {} vs {}", p.psi, k.psi);
         prop_assert!((p.theta - k.theta).abs() < tol, "θ {} vs {}", p.theta, k.theta);
         prop_assert!((p.phi - k.phi).abs() < tol);
-        for i in 0..3 {
-            prop_assert!((r.strokes[i] - s[i]).abs() < 1e-12);
+        for (got, want) in r.strokes.iter().zip(s) {
+            prop_assert!((got - want).abs() < 1e-12);
         }
     }
 }

@@ -166,7 +166,7 @@ impl DofMap {
             }
         }
         let mut alias = Vec::with_capacity(tied_to.len());
-        for (&g, _) in &tied_to {
+        for &g in tied_to.keys() {
             let mut root = g;
             let mut steps = 0;
             while let Some(&next) = tied_to.get(&root) {

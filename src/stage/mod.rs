@@ -249,8 +249,16 @@ impl StageDesign {
         let p = model.add_node(arr(prs.p_home()));
         let rev_h = hinge_notch(&self.revolute, &self.material, "revolute")?;
         let sph_h = hinge_notch(&self.spherical, &self.material, "spherical")?;
-        let rev_c = if self.ideal_joints { None } else { Some(rev_h.compliance) };
-        let sph_c = if self.ideal_joints { None } else { Some(sph_h.compliance) };
+        let rev_c = if self.ideal_joints {
+            None
+        } else {
+            Some(rev_h.compliance)
+        };
+        let sph_c = if self.ideal_joints {
+            None
+        } else {
+            Some(sph_h.compliance)
+        };
         let (hr, hs) = if self.ideal_joints {
             (0.0, 0.0)
         } else {
