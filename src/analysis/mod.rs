@@ -1,5 +1,6 @@
 //! Analyses: validated case → typed result → JSON/Markdown/CSV views.
 
+pub mod design;
 pub mod fem_static;
 pub mod hinge;
 pub mod kinematics;
@@ -99,6 +100,8 @@ pub fn check(case: &Case) -> Result<(), CaseError> {
         Case::Sweep(s) => s.build().map(|_| ()),
         Case::Stage(s) => s.validate().map(|_| ()),
         Case::FemVsFkp(s) => s.validate().map(|_| ()),
+        Case::Sensitivity(s) => s.validate().map(|_| ()),
+        Case::Design(s) => s.validate().map(|_| ()),
     }
 }
 
@@ -143,6 +146,22 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
                 json: to_json(&r)?,
                 report,
                 files,
+            })
+        }
+        Case::Sensitivity(s) => {
+            let r = design::run_sensitivity(s)?;
+            Ok(Outcome {
+                json: to_json(&r)?,
+                report: design::sensitivity_report(&r),
+                files: vec![],
+            })
+        }
+        Case::Design(s) => {
+            let r = design::run_design(s)?;
+            Ok(Outcome {
+                json: to_json(&r)?,
+                report: design::design_report(&r),
+                files: vec![],
             })
         }
         Case::Hinge(h) => {

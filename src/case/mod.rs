@@ -4,6 +4,7 @@
 //! value, `analysis` picks the shape, and the rest is deserialised through
 //! `serde_path_to_error` with unknown fields refused.
 
+pub mod design;
 pub mod error;
 pub mod hinge;
 pub mod kinematics;
@@ -35,10 +36,23 @@ pub enum Case {
     Stage(stage::StageCase),
     /// FEM versus rigid-body forward kinematics.
     FemVsFkp(stage::FemVsFkpCase),
+    /// Table-1 sensitivities of the stage design.
+    Sensitivity(design::SensitivityCase),
+    /// Requirement-driven sizing of the stage hinges.
+    Design(design::DesignCase),
 }
 
 /// The `analysis` names this build understands.
-pub const ANALYSES: &[&str] = &["kinematics", "hinge", "stage", "fem_vs_fkp", "static", "sweep"];
+pub const ANALYSES: &[&str] = &[
+    "kinematics",
+    "hinge",
+    "stage",
+    "fem_vs_fkp",
+    "sensitivity",
+    "design",
+    "static",
+    "sweep",
+];
 
 impl Case {
     /// The `analysis` name.
@@ -50,6 +64,8 @@ impl Case {
             Case::Sweep(_) => "sweep",
             Case::Stage(_) => "stage",
             Case::FemVsFkp(_) => "fem_vs_fkp",
+            Case::Sensitivity(_) => "sensitivity",
+            Case::Design(_) => "design",
         }
     }
 }
@@ -142,6 +158,8 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
         "sweep" => Ok(Case::Sweep(from_value(value, "")?)),
         "stage" => Ok(Case::Stage(from_value(value, "")?)),
         "fem_vs_fkp" => Ok(Case::FemVsFkp(from_value(value, "")?)),
+        "sensitivity" => Ok(Case::Sensitivity(from_value(value, "")?)),
+        "design" => Ok(Case::Design(from_value(value, "")?)),
         "static" => {
             let mesh_name = match map.remove("mesh") {
                 None | Some(Value::Null) => None,

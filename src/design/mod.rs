@@ -1,4 +1,5 @@
 //! Design drivers: batch sweeps (and, later, sensitivities and optimisation).
 
+pub mod stage_design;
 pub mod sweep;
 pub mod table;

@@ -1,0 +1,176 @@
+//! The `sensitivity` and `design` cases (seed 000 Table 1, Fig. 11).
+
+use super::error::{check, CaseError};
+use super::material::MaterialSpec;
+use super::stage::StageSpec;
+use crate::design::stage_design::{self, Requirements, PARAMETERS};
+use crate::stage::StageDesign;
+use serde::Deserialize;
+
+/// `"analysis": "sensitivity"`.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SensitivityCase {
+    /// Material (default Al7075).
+    #[serde(default)]
+    pub material: MaterialSpec,
+    /// The base design (circular-notch revolute, spherical-neck spherical hinges).
+    pub stage: StageSpec,
+    /// Relative increase of each parameter (0.5 = +50 %).
+    #[serde(default = "default_increment")]
+    pub increment: f64,
+    /// Kinematic requirement box for the hinge rotation demand: z travel ±, mm (default 2).
+    #[serde(default = "default_z")]
+    pub z_travel: f64,
+    /// Tilt ±, degrees (default 0.2).
+    #[serde(default = "default_tilt")]
+    pub tilt_deg: f64,
+}
+
+fn default_increment() -> f64 {
+    0.1
+}
+fn default_z() -> f64 {
+    2.0
+}
+fn default_tilt() -> f64 {
+    0.2
+}
+
+/// Requirements of a `design` case.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RequirementsSpec {
+    /// Platform z travel (±) to reach at the allowable stress, mm.
+    pub z_travel: f64,
+    /// Allowable stress, MPa (default: the material's).
+    #[serde(default)]
+    pub allowable: Option<f64>,
+    /// Range of T = σ_sph/σ_rev (default [0.8, 1.2]).
+    #[serde(rename = "T", default = "default_t")]
+    pub t: [f64; 2],
+    /// Platform tilt (±) the hinges must allow, degrees (default 0.2).
+    #[serde(default = "default_tilt")]
+    pub tilt_deg: f64,
+}
+
+fn default_t() -> [f64; 2] {
+    [0.8, 1.2]
+}
+
+/// Bounds of the design parameters, mm: `[min, max]` each.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct BoundsSpec {
+    /// Revolute notch minimum thickness.
+    pub t_rev: [f64; 2],
+    /// Revolute notch radius.
+    #[serde(rename = "R_rev")]
+    pub r_rev: [f64; 2],
+    /// Spherical neck diameter.
+    pub t_sph: [f64; 2],
+    /// Spherical neck fillet radius.
+    #[serde(rename = "R_sph")]
+    pub r_sph: [f64; 2],
+    /// Spherical neck length.
+    pub l_sph: [f64; 2],
+}
+
+/// `"analysis": "design"`.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct DesignCase {
+    /// Material (default Al7075).
+    #[serde(default)]
+    pub material: MaterialSpec,
+    /// The starting design (its geometry L, b, α₀, γ and leg are kept).
+    pub stage: StageSpec,
+    /// Requirements.
+    pub requirements: RequirementsSpec,
+    /// Parameter bounds.
+    pub bounds: BoundsSpec,
+    /// Quasi-random designs sampled before the local search (default 256).
+    #[serde(default = "default_samples")]
+    pub samples: usize,
+}
+
+fn default_samples() -> usize {
+    256
+}
+
+fn check_loop_design(d: &StageDesign) -> Result<(), CaseError> {
+    stage_design::params_of(d).map_err(|m| CaseError::new("stage", m))?;
+    Ok(())
+}
+
+impl SensitivityCase {
+    /// Validates before solving.
+    pub fn validate(&self) -> Result<StageDesign, CaseError> {
+        let d = self.stage.design(&self.material)?;
+        check_loop_design(&d)?;
+        if !(self.increment.is_finite() && self.increment > 0.0 && self.increment <= 2.0) {
+            return Err(CaseError::value(
+                "increment",
+                self.increment,
+                "must be a relative increase in (0, 2] (0.1 = +10 %)",
+            ));
+        }
+        // The increased design must still be buildable.
+        let p = stage_design::params_of(&d).map_err(|m| CaseError::new("stage", m))?;
+        for (k, name) in PARAMETERS.iter().enumerate() {
+            let mut q = p;
+            q[k] *= 1.0 + self.increment;
+            stage_design::with_params(&d, &q).validate().map_err(|e| {
+                CaseError::value(
+                    "increment",
+                    self.increment,
+                    format!("increasing {name} to {} gives an invalid stage: {e}", q[k]),
+                )
+            })?;
+        }
+        check::positive("z_travel", self.z_travel, "mm")?;
+        check::within("tilt_deg", self.tilt_deg, 0.0, 10.0, "degrees")?;
+        Ok(d)
+    }
+}
+
+impl DesignCase {
+    /// Validates before solving.
+    pub fn validate(&self) -> Result<(StageDesign, [[f64; 2]; 5], Requirements), CaseError> {
+        let d = self.stage.design(&self.material)?;
+        check_loop_design(&d)?;
+        let r = &self.requirements;
+        check::positive("requirements.z_travel", r.z_travel, "mm")?;
+        let allowable = r.allowable.unwrap_or(d.material.allowable);
+        check::positive("requirements.allowable", allowable, "MPa")?;
+        check::range("requirements.T", r.t)?;
+        check::positive("requirements.T[0]", r.t[0], "")?;
+        check::within("requirements.tilt_deg", r.tilt_deg, 0.0, 10.0, "degrees")?;
+        let b = &self.bounds;
+        let bounds = [b.t_rev, b.r_rev, b.t_sph, b.r_sph, b.l_sph];
+        let names = [
+            "bounds.t_rev",
+            "bounds.R_rev",
+            "bounds.t_sph",
+            "bounds.R_sph",
+            "bounds.l_sph",
+        ];
+        for (name, bd) in names.iter().zip(&bounds) {
+            check::range(name, *bd)?;
+            check::positive(&format!("{name}[0]"), bd[0], "mm")?;
+        }
+        if !(1..=100_000).contains(&self.samples) {
+            return Err(CaseError::value("samples", self.samples, "must be in 1..=100000"));
+        }
+        Ok((
+            d,
+            bounds,
+            Requirements {
+                z_travel: r.z_travel,
+                allowable,
+                t_range: r.t,
+                tilt: r.tilt_deg.to_radians(),
+            },
+        ))
+    }
+}
