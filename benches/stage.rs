@@ -22,6 +22,35 @@ fn bench(c: &mut Criterion) {
             s.solve(black_box(&drives)).expect("solves")
         })
     });
+    // A sweep of 1,000 stage designs (full `stage` analysis each: the load case, reach at the
+    // allowable, structural stiffness, platform compliance); target ≥ 2,000 designs/s on 2 cores.
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut sweep = flexfem::design::sweep::load(&root.join("cases/ruiz2019_stage_sweep.json")).expect("bundled sweep");
+    sweep.axes[0].1 = (0..10)
+        .map(|k| serde_json::Value::from(1.5 + 0.15 * k as f64))
+        .collect();
+    sweep.axes[1].1 = (0..10).map(|k| serde_json::Value::from(5.0 + 0.7 * k as f64)).collect();
+    sweep.axes[2].1 = (0..10)
+        .map(|k| serde_json::Value::from(2.5 + 0.15 * k as f64))
+        .collect();
+    sweep.axes[3].1 = vec![serde_json::Value::from(5.0)];
+    let skip = std::collections::HashSet::new();
+    let mut g = c.benchmark_group("stage_sweep");
+    g.throughput(criterion::Throughput::Elements(sweep.len() as u64));
+    g.sample_size(10);
+    g.bench_function("1000_designs", |b| {
+        b.iter(|| {
+            flexfem::design::sweep::run_sweep(
+                &sweep,
+                Some(root),
+                flexfem::design::sweep::Shard::ALL,
+                &skip,
+                |_| Ok(()),
+            )
+            .expect("runs")
+        })
+    });
+    g.finish();
     let s = design.build().expect("builds");
     let strokes = vec![("row1".to_string(), Drive::Strokes([1.395, 1.531, 1.306]))];
     c.bench_function("stage_solve_prebuilt_strokes", |b| {

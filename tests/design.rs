@@ -112,3 +112,35 @@ fn impossible_requirements_name_the_binding_constraint() {
     let msg = v["message"].as_str().unwrap();
     assert!(msg.contains("z_travel") || msg.contains("rotation_stress"), "{msg}");
 }
+
+#[test]
+fn stage_sweep_writes_lines_csv_and_plot() {
+    // Issue 7: stage sweeps through `flexfem sweep`, `--out` gives CSV plus an SVG plot.
+    let d = tempdir("stage_sweep");
+    let case = root().join("cases/ruiz2019_stage_sweep.json");
+    let out = run_in(&d, &["sweep", case.to_str().unwrap(), "--out", "s.jsonl"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let lines = std::fs::read_to_string(d.join("s.jsonl")).unwrap();
+    assert_eq!(lines.lines().count(), 256);
+    // The design with the paper's hinges (t_rev 2, R_rev 8, t_sph 3, l_sph 5) equals a direct
+    // stage run: 68.4 N/mm (see tests/stage.rs for the Table 2 comparison).
+    let paper = lines
+        .lines()
+        .map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap())
+        .find(|v| {
+            let p = &v["params"];
+            p["stage.revolute.t"] == 2.0
+                && p["stage.revolute.R"] == 8
+                && p["stage.spherical.t"] == 3.0
+                && p["stage.spherical.l"] == 5
+        })
+        .unwrap();
+    let direct = run(&["run", "cases/ruiz2019_stage.json"]);
+    let dv: serde_json::Value = serde_json::from_str(&stdout(&direct)).unwrap();
+    assert!((f(&paper["result"]["stiffness_z"]) / f(&dv["stiffness_z"]) - 1.0).abs() < 1e-9);
+    let csv = std::fs::read_to_string(d.join("s.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 257);
+    assert!(csv.lines().next().unwrap().contains("stiffness_z"));
+    let svg = std::fs::read_to_string(d.join("s.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.matches("<circle").count() == 256);
+}

@@ -163,8 +163,7 @@ pub fn model_notes(s: &StageModel) -> Vec<String> {
     v
 }
 
-fn platform_stiffness(s: &StageModel) -> Result<PlatformStiffness, RunError> {
-    let c = s.platform_compliance().map_err(fem_err)?;
+fn platform_stiffness(c: nalgebra::Matrix6<f64>) -> PlatformStiffness {
     let eig = |m: nalgebra::Matrix3<f64>| -> [f64; 2] {
         match m.try_inverse() {
             Some(k) => {
@@ -176,24 +175,32 @@ fn platform_stiffness(s: &StageModel) -> Result<PlatformStiffness, RunError> {
     };
     let ct = c.fixed_view::<3, 3>(0, 0).into_owned();
     let cr = c.fixed_view::<3, 3>(3, 3).into_owned();
-    Ok(PlatformStiffness {
+    PlatformStiffness {
         compliance: std::array::from_fn(|i| std::array::from_fn(|j| c[(i, j)])),
         translational_eigen: eig(ct),
         rotational_eigen: eig(cr),
-    })
+    }
 }
 
 /// Runs a `stage` case.
 pub fn run_stage(case: &StageCase) -> Result<StageResult, RunError> {
-    let (design, drives) = case.validate()?;
+    let (design, mut drives) = case.validate()?;
     let s = design.build().map_err(fem_err)?;
     let allowable = design.material.allowable;
-    let results = s.solve(&drives).map_err(fem_err)?;
-    let (stiffness_z, _) = stage::stiffness_z(&s).map_err(fem_err)?;
-    let unit = s
-        .solve(&[("unit_force".into(), Drive::Forces([1.0; 3]))])
-        .map_err(fem_err)?;
-    let u = &unit[0];
+    let n = drives.len();
+    // One pass: the user's cases, a unit force on every actuator (reach at the allowable) and a
+    // unit pure-z stroke set (structural stiffness), plus the platform compliance.
+    let j = design
+        .prs
+        .actuation_jacobian(0.0, 0.0, 0.0)
+        .map_err(|e| AnalysisError::new("stage", e.to_string()))?;
+    let unit_z = [j[(0, 0)], j[(1, 0)], j[(2, 0)]];
+    drives.push(("unit_force".into(), Drive::Forces([1.0; 3])));
+    drives.push(("unit_z".into(), Drive::Strokes(unit_z)));
+    let a = s.analyse(&drives, true).map_err(fem_err)?;
+    let u = &a.cases[n];
+    let z = &a.cases[n + 1];
+    let stiffness_z = z.forces.iter().sum::<f64>() / (unit_z.iter().sum::<f64>() / 3.0);
     let k = allowable / u.max_von_mises;
     let at_allowable = AtAllowable {
         allowable,
@@ -201,11 +208,14 @@ pub fn run_stage(case: &StageCase) -> Result<StageResult, RunError> {
         stroke: k * u.strokes.iter().sum::<f64>() / 3.0,
         z: k * u.platform.z,
     };
+    let compliance = a
+        .compliance
+        .ok_or_else(|| AnalysisError::new("stage", "no platform compliance"))?;
     Ok(StageResult {
-        load_cases: results.iter().map(|r| row(r, allowable)).collect(),
+        load_cases: a.cases[..n].iter().map(|r| row(r, allowable)).collect(),
         stiffness_z,
         at_allowable,
-        platform_stiffness: platform_stiffness(&s)?,
+        platform_stiffness: platform_stiffness(compliance),
         model: model_notes(&s),
     })
 }

@@ -503,6 +503,20 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
                     all.lines.len()
                 );
             }
+            // Stage sweeps: a CSV and an SVG plot beside the JSON lines.
+            if sweep.base.get("analysis").and_then(|a| a.as_str()) == Some("stage") {
+                let lines: Vec<String> = all.lines.values().cloned().collect();
+                if let Some(svg) = super::plots::stage_sweep_svg(&lines) {
+                    let p = out.with_extension("svg");
+                    write_atomic(&p, svg.as_bytes()).map_err(io_context("write", &p))?;
+                }
+                if args.csv.is_none() {
+                    let p = out.with_extension("csv");
+                    let axes: Vec<&str> = sweep.axes.iter().map(|(p, _)| p.as_str()).collect();
+                    let refs: Vec<&str> = lines.iter().map(String::as_str).collect();
+                    write_atomic(&p, table::csv(&axes, &refs).as_bytes()).map_err(io_context("write", &p))?;
+                }
+            }
             args.csv.as_ref().map(|_| all.lines.into_values().collect())
         }
         _ => state.kept.map(|mut k| {

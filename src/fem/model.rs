@@ -526,10 +526,12 @@ impl Model {
                     Element::Flex(f) => f.nodes,
                     Element::Spring(s) => [s.a, s.b.unwrap_or(s.a)],
                 };
+                // t = diag(Λ, Λ, Λ, Λ): rotate block-wise.
+                let lam: nalgebra::Matrix3<f64> = t.fixed_view::<3, 3>(0, 0).into_owned();
                 Ok(ElementMatrix {
                     nodes,
                     n_nodes: 2,
-                    k: t.transpose() * k * t,
+                    k: super::transform::rotate12(&k, &lam),
                 })
             }
         }

@@ -99,6 +99,26 @@ pub struct RectTorsion {
 /// precision (the slowly converging parts are summed in closed form through ζ(5) and Catalan's
 /// constant; the remainders decay like e^(−nπa/b)).
 pub fn rect_torsion(s1: f64, s2: f64) -> RectTorsion {
+    // Designs reuse a few leg sections many times: remember the last results on this thread.
+    thread_local! {
+        static MEMO: std::cell::RefCell<Vec<((u64, u64), RectTorsion)>> = const { std::cell::RefCell::new(Vec::new()) };
+    }
+    let key = (s1.to_bits(), s2.to_bits());
+    if let Some(hit) = MEMO.with(|m| m.borrow().iter().find(|(k, _)| *k == key).map(|(_, v)| *v)) {
+        return hit;
+    }
+    let out = rect_torsion_series(s1, s2);
+    MEMO.with(|m| {
+        let mut m = m.borrow_mut();
+        if m.len() >= 16 {
+            m.remove(0);
+        }
+        m.push((key, out));
+    });
+    out
+}
+
+fn rect_torsion_series(s1: f64, s2: f64) -> RectTorsion {
     let (a, b) = if s1 >= s2 { (s1, s2) } else { (s2, s1) };
     let r = a / b;
     // Σ_{n odd} tanh(nπr/2)/n⁵ = (31/32)ζ(5) − Σ_{n odd} (1 − tanh)/n⁵

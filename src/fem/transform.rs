@@ -50,6 +50,20 @@ pub fn t12(lam: &Matrix3<f64>) -> Mat12 {
     t
 }
 
+/// K = Tᵀ k T for T = diag(Λ, Λ, Λ, Λ), computed block by block (K_ij = Λᵀ k_ij Λ on the
+/// sixteen 3×3 blocks): a quarter of the work of the full 12×12 products.
+pub fn rotate12(k: &Mat12, lam: &Matrix3<f64>) -> Mat12 {
+    let mut out = Mat12::zeros();
+    let lt = lam.transpose();
+    for bi in 0..4 {
+        for bj in 0..4 {
+            let blk: Matrix3<f64> = k.fixed_view::<3, 3>(3 * bi, 3 * bj).into_owned();
+            out.fixed_view_mut::<3, 3>(3 * bi, 3 * bj).copy_from(&(lt * blk * lam));
+        }
+    }
+    out
+}
+
 /// diag(Λ, Λ) for one node.
 pub fn t6(lam: &Matrix3<f64>) -> Matrix6<f64> {
     let mut t = Matrix6::zeros();

@@ -312,6 +312,15 @@ pub fn characterise(spec: &HingeSpec, material: &Material) -> Result<HingeResult
     })
 }
 
+/// Stiffness, compliance and stress of the notch alone (blank length 0), without the closed
+/// forms: what the stage builder needs per design.
+pub fn notch_stiffness(spec: &HingeSpec, material: &Material) -> Result<Stiffness, HingeError> {
+    check_material(material)?;
+    let notch = spec.profile_with_blank(Some(0.0))?;
+    let kt = stress::stress_concentration(&notch);
+    Ok(stiffness_of(&notch, material, kt))
+}
+
 /// Closed-form compliant-axis stiffnesses applicable to the family (notch alone).
 pub fn closed_forms(spec: &HingeSpec, e: f64) -> BTreeMap<&'static str, f64> {
     use closed_form as cf;

@@ -198,8 +198,7 @@ fn arr(v: Vector3<f64>) -> [f64; 3] {
 /// The 6×6 compliance of a hinge (blank 0) with the warping-restrained torsion of
 /// [`hinge::characterise`], in hinge axes (x along the hinge, y compliant axis, z across).
 fn hinge_notch(spec: &HingeSpec, material: &Material, prefix: &str) -> Result<hinge::Stiffness, StageError> {
-    let r = hinge::characterise(spec, material).map_err(|e| hinge_err(prefix, e))?;
-    Ok(r.notch_only)
+    hinge::notch_stiffness(spec, material).map_err(|e| hinge_err(prefix, e))
 }
 
 impl StageDesign {
@@ -443,15 +442,55 @@ impl StageModel {
 
     /// Solves load cases (grouped by drive kind so each group shares one factorisation).
     pub fn solve(&self, cases: &[(String, Drive)]) -> Result<Vec<StageCaseResult>, StageError> {
-        let mut model = self.model.clone();
-        model.load_cases = cases.iter().map(|(n, d)| self.load_case(n, *d)).collect();
-        let res = fem::solve_static_with(&model, fem::solve::Parallelism::Sequential)?;
-        Ok(res
-            .load_cases
-            .into_iter()
-            .zip(cases)
-            .map(|(fe, (_, d))| self.read(fe, *d))
-            .collect())
+        Ok(self.analyse(cases, false)?.cases)
+    }
+
+    /// Slider stroke DOFs (local ux of each slider frame), sorted.
+    fn stroke_dofs(&self) -> Vec<fem::NodeDof> {
+        let mut v: Vec<fem::NodeDof> = self
+            .legs
+            .iter()
+            .map(|l| fem::NodeDof {
+                node: l.slider,
+                dof: Dof::Ux,
+            })
+            .collect();
+        v.sort();
+        v
+    }
+
+    /// Solves load cases and, if asked, the 6×6 compliance of the platform centre with the
+    /// sliders held. Force-driven cases share one factorisation, stroke-driven cases (and the
+    /// compliance) another. Within a thread the pattern and symbolic factorisation of the last
+    /// stage of the same topology are reused (sweeps and the design loop refactor numerically
+    /// only).
+    pub fn analyse(&self, cases: &[(String, Drive)], compliance: bool) -> Result<StageAnalysis, StageError> {
+        let model = &self.model;
+        let mut out: Vec<Option<StageCaseResult>> = vec![None; cases.len()];
+        let lcs: Vec<fem::LoadCase> = cases.iter().map(|(n, d)| self.load_case(n, *d)).collect();
+        let mut platform_compliance = None;
+        for strokes in [false, true] {
+            let idx: Vec<usize> = (0..cases.len())
+                .filter(|&i| matches!(cases[i].1, Drive::Strokes(_)) == strokes)
+                .collect();
+            if idx.is_empty() && !(strokes && compliance) {
+                continue;
+            }
+            let prescribed = if strokes { self.stroke_dofs() } else { Vec::new() };
+            let sys = cached_system(model, &prescribed, usize::from(strokes))?;
+            let refs: Vec<&fem::LoadCase> = idx.iter().map(|&i| &lcs[i]).collect();
+            let res = sys.solve_cases(model, &refs)?;
+            for (&i, r) in idx.iter().zip(res) {
+                out[i] = Some(self.read(r, cases[i].1));
+            }
+            if strokes && compliance {
+                platform_compliance = Some(sys.node_compliance(model, self.platform)?);
+            }
+        }
+        Ok(StageAnalysis {
+            cases: out.into_iter().flatten().collect(),
+            compliance: platform_compliance,
+        })
     }
 
     /// Reads stage quantities from an FE load-case result driven by `drive`.
@@ -507,11 +546,42 @@ impl StageModel {
 
     /// 6×6 compliance of the platform centre with the sliders held (mm, N, rad).
     pub fn platform_compliance(&self) -> Result<Matrix6<f64>, StageError> {
-        let mut model = self.model.clone();
-        model.load_cases.clear();
-        let sys = fem::System::new(&model, &[], fem::solve::Parallelism::Sequential)?;
-        Ok(sys.node_compliance(&model, self.platform)?)
+        let a = self.analyse(&[], true)?;
+        a.compliance
+            .ok_or_else(|| StageError::Fem(FemError::Solver("no compliance computed".into())))
     }
+}
+
+/// Results of [`StageModel::analyse`].
+#[derive(Debug, Clone)]
+pub struct StageAnalysis {
+    /// Load-case results in input order.
+    pub cases: Vec<StageCaseResult>,
+    /// Platform-centre compliance with the sliders held, if asked.
+    pub compliance: Option<Matrix6<f64>>,
+}
+
+thread_local! {
+    /// The last factorised stage system of this thread, per drive kind (forces, strokes).
+    static LAST: std::cell::RefCell<[Option<fem::System>; 2]> = const { std::cell::RefCell::new([None, None]) };
+}
+
+/// A factorised system for `model`, reusing the pattern and symbolic factorisation of the last
+/// system of the same kind on this thread when the topology matches.
+fn cached_system(model: &Model, prescribed: &[fem::NodeDof], kind: usize) -> Result<fem::System, StageError> {
+    let par = fem::solve::Parallelism::Sequential;
+    let reused = LAST.with(|c| {
+        c.borrow()[kind]
+            .as_ref()
+            .filter(|s| s.prescribed() == prescribed)
+            .and_then(|s| fem::System::with_topology_of(s, model, par).ok())
+    });
+    let sys = match reused {
+        Some(s) => s,
+        None => fem::System::new(model, prescribed, par)?,
+    };
+    LAST.with(|c| c.borrow_mut()[kind] = Some(sys.clone()));
+    Ok(sys)
 }
 
 /// Total actuator force per mm of stroke for a pure-z motion, N/mm: the sum of the actuator
