@@ -153,3 +153,42 @@ fn every_bundled_case_checks_and_runs() {
     }
     assert!(n >= 1);
 }
+
+#[test]
+fn out_dir_writes_vtu_for_static_and_stage() {
+    // `--out` writes one .vtu per load case (ParaView unstructured grid, line cells, von Mises
+    // per cell), for generic models and for the stage.
+    let d = tempdir("vtu");
+    for (case, file, cells) in [
+        ("cases/static_cantilever.json", "tip.vtu", 2),
+        ("cases/ruiz2019_stage.json", "stage_F20.vtu", 18),
+    ] {
+        let out = run_in(&d, &["run", root().join(case).to_str().unwrap(), "--out", "o"]);
+        assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+        let vtu = std::fs::read_to_string(d.join("o").join(file)).unwrap();
+        assert!(
+            vtu.starts_with("<?xml") && vtu.trim_end().ends_with("</VTKFile>"),
+            "{file}"
+        );
+        assert!(vtu.contains(&format!("NumberOfCells=\"{cells}\"")), "{file}");
+        assert!(
+            vtu.contains("Name=\"von_mises\"") && vtu.contains("Name=\"displacement\""),
+            "{file}"
+        );
+    }
+}
+
+#[test]
+fn static_case_reproduces_a_cantilever() {
+    // Bundled static case: 100 mm Al cantilever 10×10, tip load 10 N (Euler–Bernoulli):
+    // δ = PL³/(3EI) = 0.0555556 mm, root stress 6PL/(wh²) = 6 MPa; reactions balance the load.
+    let out = run(&["run", "cases/static_cantilever.json"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    let c = &v["load_cases"][0];
+    let uz = c["displacements"][2][2].as_f64().unwrap();
+    let expect = -10.0 * 100f64.powi(3) / (3.0 * 72_000.0 * 10f64.powi(4) / 12.0);
+    assert!((uz / expect - 1.0).abs() < 1e-9, "{uz} vs {expect}");
+    assert!((c["max_von_mises"].as_f64().unwrap() - 6.0).abs() < 1e-9);
+    assert!((c["reactions"][0][2].as_f64().unwrap() - 10.0).abs() < 1e-9);
+}

@@ -116,3 +116,54 @@ pub fn report(r: &StaticResult) -> Report {
     }
     Report { markdown: md, csv }
 }
+
+/// A `.vtu` of one load case: deformed shape (true scale), displacement and rotation point
+/// data, and von Mises per element (`cell_stress` overrides the beam values, e.g. hinge peak
+/// stresses; missing values are 0). Ground springs are not drawn.
+pub fn vtu(model: &Model, case: &fem::CaseResult, cell_stress: &[(usize, f64)]) -> Result<String, AnalysisError> {
+    let mut lines = Vec::new();
+    let mut vm = Vec::new();
+    for (ie, e) in model.elements.iter().enumerate() {
+        let nodes = e.nodes();
+        if nodes.len() == 2 {
+            lines.push([nodes[0], nodes[1]]);
+            let v = cell_stress
+                .iter()
+                .find(|(i, _)| *i == ie)
+                .map(|(_, v)| *v)
+                .or_else(|| case.elements.get(ie).and_then(|r| r.max_von_mises()))
+                .unwrap_or(0.0);
+            vm.push(v);
+        }
+    }
+    let disp: Vec<[f64; 3]> = case.displacements.iter().map(|d| [d[0], d[1], d[2]]).collect();
+    let rot: Vec<[f64; 3]> = case.displacements.iter().map(|d| [d[3], d[4], d[5]]).collect();
+    let mesh = crate::report::vtk::VtuMesh {
+        points: &model.nodes,
+        lines: &lines,
+        displacement: &disp,
+        rotation: &rot,
+        cell_scalars: vec![("von_mises", &vm)],
+        deform_scale: 1.0,
+    };
+    crate::report::vtk::to_string(&mesh).map_err(|e| AnalysisError::new("vtu", e.to_string()))
+}
+
+/// A file name made of the safe characters of `name`.
+pub fn file_stem(name: &str) -> String {
+    let s: String = name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    if s.is_empty() {
+        "case".into()
+    } else {
+        s
+    }
+}

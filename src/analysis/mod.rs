@@ -107,23 +107,29 @@ pub fn check(case: &Case) -> Result<(), CaseError> {
 
 /// Validates and runs a case.
 pub fn run(case: &Case) -> Result<Outcome, RunError> {
+    let plain = |json, report| Outcome {
+        json,
+        report,
+        files: vec![],
+    };
     match case {
         Case::Kinematics(k) => {
             let (prs, bx) = k.validate()?;
             let r = kinematics::solve(k, &prs, bx.as_ref())?;
-            Ok(Outcome {
-                json: to_json(&r)?,
-                report: kinematics::report(&r),
-                files: vec![],
-            })
+            Ok(plain(to_json(&r)?, kinematics::report(&r)))
         }
         Case::Static(s) => {
             let model = s.model.build()?;
-            let (r, _raw) = fem_static::solve(&model)?;
+            let (r, raw) = fem_static::solve(&model)?;
+            let mut files = Vec::new();
+            for c in &raw.load_cases {
+                let text = fem_static::vtu(&model, c, &[])?;
+                files.push((format!("{}.vtu", fem_static::file_stem(&c.name)), text.into_bytes()));
+            }
             Ok(Outcome {
                 json: to_json(&r)?,
                 report: fem_static::report(&r),
-                files: vec![],
+                files,
             })
         }
         Case::Sweep(_) => Err(RunError::Case(CaseError::value(
@@ -132,11 +138,11 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
             "a sweep runs with `flexfem sweep CASE.json`, not `flexfem run`",
         ))),
         Case::Stage(s) => {
-            let r = stage::run_stage(s)?;
+            let (r, files) = stage::run_stage_with_files(s)?;
             Ok(Outcome {
                 json: to_json(&r)?,
                 report: stage::stage_report(&r),
-                files: vec![],
+                files,
             })
         }
         Case::FemVsFkp(s) => {
@@ -150,27 +156,15 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
         }
         Case::Sensitivity(s) => {
             let r = design::run_sensitivity(s)?;
-            Ok(Outcome {
-                json: to_json(&r)?,
-                report: design::sensitivity_report(&r),
-                files: vec![],
-            })
+            Ok(plain(to_json(&r)?, design::sensitivity_report(&r)))
         }
         Case::Design(s) => {
             let r = design::run_design(s)?;
-            Ok(Outcome {
-                json: to_json(&r)?,
-                report: design::design_report(&r),
-                files: vec![],
-            })
+            Ok(plain(to_json(&r)?, design::design_report(&r)))
         }
         Case::Hinge(h) => {
             let r = hinge::solve(h)?;
-            Ok(Outcome {
-                json: to_json(&r)?,
-                report: hinge::report(&r),
-                files: vec![],
-            })
+            Ok(plain(to_json(&r)?, hinge::report(&r)))
         }
     }
 }

@@ -184,6 +184,16 @@ fn platform_stiffness(c: nalgebra::Matrix6<f64>) -> PlatformStiffness {
 
 /// Runs a `stage` case.
 pub fn run_stage(case: &StageCase) -> Result<StageResult, RunError> {
+    Ok(run_stage_inner(case, false)?.0)
+}
+
+/// Runs a `stage` case and renders one `.vtu` per load case (deformed stage, displacements,
+/// von Mises per element with the hinge peak stresses on the hinge elements).
+pub fn run_stage_with_files(case: &StageCase) -> Result<(StageResult, Vec<(String, Vec<u8>)>), RunError> {
+    run_stage_inner(case, true)
+}
+
+fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, Vec<(String, Vec<u8>)>), RunError> {
     let (design, mut drives) = case.validate()?;
     let s = design.build().map_err(fem_err)?;
     let allowable = design.material.allowable;
@@ -211,13 +221,29 @@ pub fn run_stage(case: &StageCase) -> Result<StageResult, RunError> {
     let compliance = a
         .compliance
         .ok_or_else(|| AnalysisError::new("stage", "no platform compliance"))?;
-    Ok(StageResult {
+    let mut out_files = Vec::new();
+    if files {
+        for c in &a.cases[..n] {
+            let mut cell = Vec::new();
+            for (i, leg) in s.legs.iter().enumerate() {
+                cell.push((leg.rev_element, c.revolute_stress[i]));
+                cell.push((leg.sph_element, c.spherical_stress[i]));
+            }
+            let text = super::fem_static::vtu(&s.model, &c.fe, &cell)?;
+            out_files.push((
+                format!("stage_{}.vtu", super::fem_static::file_stem(&c.name)),
+                text.into_bytes(),
+            ));
+        }
+    }
+    let result = StageResult {
         load_cases: a.cases[..n].iter().map(|r| row(r, allowable)).collect(),
         stiffness_z,
         at_allowable,
         platform_stiffness: platform_stiffness(compliance),
         model: model_notes(&s),
-    })
+    };
+    Ok((result, out_files))
 }
 
 /// Markdown/CSV of a stage result.
