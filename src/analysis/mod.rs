@@ -76,6 +76,9 @@ pub struct Report {
     pub csv: String,
 }
 
+/// Extra output files: (file name, contents).
+pub type Files = Vec<(String, Vec<u8>)>;
+
 /// A finished analysis: the JSON result plus its reports and extra files (name, contents).
 #[derive(Debug, Clone)]
 pub struct Outcome {
@@ -84,7 +87,7 @@ pub struct Outcome {
     /// Markdown and CSV views.
     pub report: Report,
     /// Extra output files (e.g. `.vtu`, `.svg`), written by `--out`.
-    pub files: Vec<(String, Vec<u8>)>,
+    pub files: Files,
 }
 
 fn to_json<T: serde::Serialize>(v: &T) -> Result<serde_json::Value, AnalysisError> {

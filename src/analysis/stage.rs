@@ -189,11 +189,11 @@ pub fn run_stage(case: &StageCase) -> Result<StageResult, RunError> {
 
 /// Runs a `stage` case and renders one `.vtu` per load case (deformed stage, displacements,
 /// von Mises per element with the hinge peak stresses on the hinge elements).
-pub fn run_stage_with_files(case: &StageCase) -> Result<(StageResult, Vec<(String, Vec<u8>)>), RunError> {
+pub fn run_stage_with_files(case: &StageCase) -> Result<(StageResult, super::Files), RunError> {
     run_stage_inner(case, true)
 }
 
-fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, Vec<(String, Vec<u8>)>), RunError> {
+fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super::Files), RunError> {
     let (design, mut drives) = case.validate()?;
     let s = design.build().map_err(fem_err)?;
     let allowable = design.material.allowable;
@@ -388,7 +388,7 @@ pub fn run_fem_vs_fkp(case: &FemVsFkpCase) -> Result<FemVsFkpResult, RunError> {
 }
 
 /// Markdown report laid out like seed 000 Tables 4–6, CSV, and the SVG plot.
-pub fn fem_vs_fkp_report(r: &FemVsFkpResult) -> (Report, Vec<(String, Vec<u8>)>) {
+pub fn fem_vs_fkp_report(r: &FemVsFkpResult) -> (Report, super::Files) {
     let mut md =
         String::from("# FEM versus rigid-body forward kinematics (seed 000 Tables 4–6 layout)\n\n## Predictions\n\n");
     let mut t = Table::new(&[
