@@ -192,3 +192,18 @@ fn static_case_reproduces_a_cantilever() {
     assert!((c["max_von_mises"].as_f64().unwrap() - 6.0).abs() < 1e-9);
     assert!((c["reactions"][0][2].as_f64().unwrap() - 10.0).abs() < 1e-9);
 }
+
+#[test]
+fn readme_worked_example_matches_the_program() {
+    // The README's first command and the table it shows.
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let cmd = "cargo run --release -- run cases/ruiz2019_stage.json --format md";
+    assert!(readme.contains(cmd));
+    let out = run(&["run", "cases/ruiz2019_stage.json", "--format", "md"]);
+    assert_eq!(out.status.code(), Some(0));
+    let md = stdout(&out);
+    for line in md.lines().filter(|l| l.starts_with("| F") || l.starts_with("Structural stiffness")) {
+        assert!(readme.contains(line), "README is out of date: {line}");
+    }
+    assert!(md.contains("| F20 | 20.00, 20.00, 20.00 | 0.8770, 0.8770, 0.8770 | 876.2 |"));
+}
