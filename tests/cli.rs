@@ -202,7 +202,10 @@ fn readme_worked_example_matches_the_program() {
     let out = run(&["run", "cases/ruiz2019_stage.json", "--format", "md"]);
     assert_eq!(out.status.code(), Some(0));
     let md = stdout(&out);
-    for line in md.lines().filter(|l| l.starts_with("| F") || l.starts_with("Structural stiffness")) {
+    for line in md
+        .lines()
+        .filter(|l| l.starts_with("| F") || l.starts_with("Structural stiffness"))
+    {
         assert!(readme.contains(line), "README is out of date: {line}");
     }
     assert!(md.contains("| F20 | 20.00, 20.00, 20.00 | 0.8770, 0.8770, 0.8770 | 876.2 |"));

@@ -105,3 +105,33 @@ fn lattice_200k_timing_and_matrix_market() {
         r.load_cases[0].max_von_mises
     );
 }
+
+#[test]
+fn bundled_lattice_mesh_is_the_generator_model() {
+    // meshes/lattice_3x3x3.json is `cubic_lattice(3, 20 mm, Ø2 mm struts, Al 7075, 100 N)`
+    // written out in the case format: running it through `static` gives the generator's answer.
+    use flexfem::case::{self, Case};
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let Case::Static(sc) = case::load(&root.join("cases/static_lattice.json")).unwrap() else {
+        panic!()
+    };
+    let from_file = sc.model.build().unwrap();
+    let generated = flexfem::fem::lattice::cubic_lattice(
+        3,
+        20.0,
+        flexfem::fem::Section::Circle { d: 2.0 },
+        flexfem::material::Material::AL7075,
+        100.0,
+    );
+    let a = flexfem::fem::solve_static(&from_file).unwrap();
+    let b = flexfem::fem::solve_static(&generated).unwrap();
+    let (ua, ub) = (&a.load_cases[0].displacements, &b.load_cases[0].displacements);
+    assert_eq!(ua.len(), 64);
+    let scale = ub.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+    for (x, y) in ua.iter().flatten().zip(ub.iter().flatten()) {
+        assert!((x - y).abs() <= 1e-9 * scale);
+    }
+    // Statics: the 100 N resultant (with 10 % and 20 % side components) is carried to the base.
+    let res = a.load_cases[0].statics.residual();
+    assert!(res.iter().all(|v| v.abs() < 1e-6 * 100.0 * 60.0), "{res:?}");
+}
