@@ -454,6 +454,54 @@ impl StageModel {
             .collect())
     }
 
+    /// Geometrically nonlinear solve of load cases (co-rotational hinges and legs, rigid
+    /// platform exact under finite rotation; see [`crate::fem::nonlinear`]) in `steps` load
+    /// steps. The model is the linear one (one flexibility element per hinge, same
+    /// compliances), so small strokes reproduce [`StageModel::solve`]. The platform angles are
+    /// extracted from its rotation matrix R = Ry(θ)·Rx(ψ)·Rz(φ) ([`pose_angles`]); hinge
+    /// stresses come from the section forces in the hinges' deformed frames.
+    pub fn solve_nonlinear(&self, cases: &[(String, Drive)], steps: usize) -> Result<Vec<StageCaseResult>, StageError> {
+        self.solve_nonlinear_with(cases, &self.nonlinear_options(steps))
+    }
+
+    /// Default nonlinear options for the stage: `steps` load steps, sequential solver.
+    pub fn nonlinear_options(&self, steps: usize) -> fem::NonlinearOptions {
+        fem::NonlinearOptions {
+            steps: steps.max(1),
+            track: vec![fem::NodeDof {
+                node: self.platform,
+                dof: Dof::Uz,
+            }],
+            ..Default::default()
+        }
+    }
+
+    /// [`StageModel::solve_nonlinear`] with explicit solver options.
+    pub fn solve_nonlinear_with(
+        &self,
+        cases: &[(String, Drive)],
+        opts: &fem::NonlinearOptions,
+    ) -> Result<Vec<StageCaseResult>, StageError> {
+        let mut model = self.model.clone();
+        model.load_cases = cases.iter().map(|(n, d)| self.load_case(n, *d)).collect();
+        let res = fem::solve_nonlinear(&model, opts)?;
+        Ok(res
+            .load_cases
+            .into_iter()
+            .zip(cases)
+            .map(|(nl, (_, d))| {
+                let r = nl.rotations[self.platform];
+                let rm = Matrix3::from_fn(|i, j| r[i][j]);
+                let (psi, theta, phi) = pose_angles(&rm);
+                let mut out = self.read(nl.fe, *d);
+                out.platform.psi = psi;
+                out.platform.theta = theta;
+                out.platform.phi = phi;
+                out
+            })
+            .collect())
+    }
+
     /// Reads stage quantities from an FE load-case result driven by `drive`.
     pub fn read(&self, fe: fem::CaseResult, drive: Drive) -> StageCaseResult {
         let nu = self.design.material.nu;
@@ -527,6 +575,16 @@ pub fn stiffness_z(stage: &StageModel) -> Result<(f64, StageCaseResult), StageEr
     let r = r.remove(0);
     let total: f64 = r.forces.iter().sum();
     Ok((total / (s.iter().sum::<f64>() / 3.0), r))
+}
+
+/// Angles (ψ, θ, φ) of R = Ry(θ)·Rx(ψ)·Rz(φ) (the platform orientation of
+/// [`crate::kinematics::prs::orientation`]), rad: row 2 of R is (cψ sφ, cψ cφ, −sψ) and its
+/// column 3 is (sθ cψ, −sψ, cθ cψ).
+pub fn pose_angles(r: &Matrix3<f64>) -> (f64, f64, f64) {
+    let psi = (-r[(1, 2)]).atan2((r[(1, 0)].powi(2) + r[(1, 1)].powi(2)).sqrt());
+    let phi = r[(1, 0)].atan2(r[(1, 1)]);
+    let theta = r[(0, 2)].atan2(r[(2, 2)]);
+    (psi, theta, phi)
 }
 
 /// Frame helper re-exported for tests.
