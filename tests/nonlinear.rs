@@ -26,7 +26,7 @@ fn cantilever(l: f64, n: usize, section: Section, m: Material) -> Model {
         model.add_node([l * i as f64 / n as f64, 0.0, 0.0]);
     }
     for i in 0..n {
-        model.add_beam(Beam::new(i, i + 1, section.clone(), m, [0.0, 0.0, 1.0]).euler_bernoulli());
+        model.add_beam(Beam::new(i, i + 1, section, m, [0.0, 0.0, 1.0]).euler_bernoulli());
     }
     model.supports.push(Support::clamp(0));
     model
@@ -150,7 +150,7 @@ fn tip_force_matches_elliptic_integrals() {
             "{alpha}: {h_ref} {v_ref}"
         );
         let p = alpha * m.e / (l * l);
-        let mut model = cantilever(l, n, sec.clone(), m);
+        let mut model = cantilever(l, n, sec, m);
         model
             .load_cases
             .push(LoadCase::new("P").force(n, [0.0, -p, 0.0, 0.0, 0.0, 0.0]));
@@ -223,7 +223,7 @@ fn bathe_bolourchi_45_degree_bend() {
         model.add_node([r * a.sin(), r * (1.0 - a.cos()), 0.0]);
     }
     for i in 0..n {
-        model.add_beam(Beam::new(i, i + 1, sec.clone(), m, [0.0, 0.0, 1.0]));
+        model.add_beam(Beam::new(i, i + 1, sec, m, [0.0, 0.0, 1.0]));
     }
     model.supports.push(Support::clamp(0));
     model

@@ -116,7 +116,10 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
         }
         Case::Static(s) => {
             let model = s.model.build()?;
-            let (r, _raw) = fem_static::solve(&model)?;
+            let r = match s.steps.filter(|_| s.nonlinear) {
+                Some(steps) => fem_static::solve_nonlinear(&model, steps)?,
+                None => fem_static::solve(&model)?.0,
+            };
             Ok(Outcome {
                 json: to_json(&r)?,
                 report: fem_static::report(&r),

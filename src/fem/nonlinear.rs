@@ -138,12 +138,12 @@ enum ElemData {
     Corot {
         nodes: [usize; 2],
         geom: CorotGeometry,
-        k_local: Mat12,
+        k_local: Box<Mat12>,
     },
     Spring {
         nodes: [usize; 2],
         n_nodes: usize,
-        b: SMatrix<f64, 6, 12>,
+        b: Box<SMatrix<f64, 6, 12>>,
         k: [f64; 6],
     },
 }
@@ -156,7 +156,7 @@ fn element_data(model: &Model) -> Result<Vec<ElemData>, FemError> {
                 Ok(ElemData::Spring {
                     nodes: [s.a, s.b.unwrap_or(s.a)],
                     n_nodes: n,
-                    b,
+                    b: Box::new(b),
                     k,
                 })
             }
@@ -176,7 +176,7 @@ fn element_data(model: &Model) -> Result<Vec<ElemData>, FemError> {
                         r0: lam.transpose(),
                         l0: l,
                     },
-                    k_local,
+                    k_local: Box::new(k_local),
                 })
             }
         })
@@ -350,7 +350,7 @@ impl CaseCtx<'_> {
                     }
                 }
                 let kd = Matrix6::from_diagonal(&Vector6::from(*k));
-                let km = b.transpose() * kd * b;
+                let km = b.transpose() * kd * **b;
                 let f = km * d;
                 Some((*nodes, *n_nodes, km, std::array::from_fn(|i| f[i])))
             }
@@ -419,7 +419,7 @@ impl CaseCtx<'_> {
                 let eqs = self.map.element_eqs([m, m], 1);
                 for_each_pair(&eqs, 6, |a, b, _, _| values.push(k12[(a, b)]));
             }
-            values.extend(std::iter::repeat_n(0.0, self.n_eq()));
+            values.resize(values.len() + self.n_eq(), 0.0);
             if values.iter().any(|v| !v.is_finite()) {
                 return None;
             }
@@ -933,7 +933,7 @@ fn finish(
                         dvec[6 * s + 3 + j] = rv[j];
                     }
                 }
-                let delta = b * dvec;
+                let delta = **b * dvec;
                 let fs: [f64; 6] = std::array::from_fn(|i| k[i] * delta[i]);
                 let energy = 0.5 * (0..6).map(|i| k[i] * delta[i] * delta[i]).sum::<f64>();
                 let end_forces = if *n_nodes == 1 {
@@ -979,14 +979,14 @@ fn finish(
     };
     for n in 0..nn {
         let v = resultant(pos(n), &f_app[6 * n..6 * n + 6]);
-        for i in 0..6 {
-            statics.loads[i] += v[i];
+        for (a, b) in statics.loads.iter_mut().zip(v) {
+            *a += b;
         }
     }
     for (n, r) in &reactions {
         let v = resultant(pos(*n), r);
-        for i in 0..6 {
-            statics.reactions[i] += v[i];
+        for (a, b) in statics.reactions.iter_mut().zip(v) {
+            *a += b;
         }
     }
     let max_von_mises = elements
