@@ -455,3 +455,89 @@ fn stage_table4_nonlinear() {
     }
     assert!((a[0].max_von_mises / b[0].max_von_mises - 1.0).abs() < 1e-5);
 }
+
+mod common;
+use common::*;
+
+fn json(out: &std::process::Output) -> serde_json::Value {
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(out));
+    serde_json::from_str(&stdout(out)).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The bundled nonlinear stage case: rows 1 and 4 of Table 4 by strokes (nonlinear Δz as in
+/// `stage_table4_nonlinear`), and equal forces.
+#[test]
+fn bundled_nonlinear_stage_case() {
+    let v = json(&run(&["run", "cases/ruiz2019_stage_nonlinear.json"]));
+    assert_eq!(v["nonlinear"], serde_json::Value::Bool(true));
+    let rows = v["load_cases"].as_array().unwrap_or_else(|| panic!("no rows"));
+    let z = |i: usize| rows[i]["platform"]["z"].as_f64().unwrap_or(f64::NAN) * 1000.0;
+    assert!(
+        (z(0) - 1385.7).abs() < 1.0 && (z(1) + 1506.5).abs() < 1.0,
+        "{} {}",
+        z(0),
+        z(1)
+    );
+    assert!(z(2) > 2600.0 && rows[2]["max_von_mises"].as_f64().unwrap_or(0.0) > 0.0);
+}
+
+/// `fem_vs_fkp` fills the nonlinear FEM column and its difference to the FKP.
+#[test]
+fn fem_vs_fkp_has_the_nonlinear_column() {
+    let v = json(&run(&["run", "cases/ruiz2019_fem_vs_fkp.json"]));
+    let rows = v["rows"].as_array().unwrap_or_else(|| panic!("no rows"));
+    for (row, z) in rows.iter().zip([1385.7, 722.0, -629.6, -1506.5]) {
+        let zn = row["fem_nonlinear"]["z"].as_f64().unwrap_or(f64::NAN) * 1000.0;
+        assert!((zn - z).abs() < 1.0, "{zn} vs {z}");
+        let d = row["nonlinear_minus_fkp"]["z"].as_f64().unwrap_or(f64::NAN) * 1000.0;
+        let dl = row["linear_minus_fkp"]["z"].as_f64().unwrap_or(f64::NAN) * 1000.0;
+        assert!(d.abs() < dl.abs());
+    }
+}
+
+/// `static` with `"nonlinear": true`: the end-moment circle through the CLI, and the `steps`
+/// field validated with its JSON path.
+#[test]
+fn static_nonlinear_case_and_steps_validation() {
+    let case = |extra: &str| {
+        format!(
+            r#"{{"analysis": "static", {extra}
+             "materials": {{"m": {{"E": 10000, "nu": 0.3}}}},
+             "sections": {{"s": {{"shape": "rect", "w": 1, "h": 1}}}},
+             "nodes": [[0,0,0],[25,0,0],[50,0,0],[75,0,0],[100,0,0]],
+             "elements": [{{"type": "beam", "nodes": [0,1], "section": "s", "material": "m", "up": [0,0,1]}},
+                          {{"type": "beam", "nodes": [1,2], "section": "s", "material": "m", "up": [0,0,1]}},
+                          {{"type": "beam", "nodes": [2,3], "section": "s", "material": "m", "up": [0,0,1]}},
+                          {{"type": "beam", "nodes": [3,4], "section": "s", "material": "m", "up": [0,0,1]}}],
+             "supports": [{{"node": 0, "fix": ["ux","uy","uz","rx","ry","rz"]}}],
+             "load_cases": [{{"name": "M", "forces": [{{"node": 4, "F": [0,0,0,0,0,{}]}}]}}]}}"#,
+            2.0 * PI * 1e4 / 12.0 / 100.0
+        )
+    };
+    let v = json(&run_case_text("nl_static", &case(r#""nonlinear": true, "steps": 8,"#)));
+    let tip = &v["load_cases"][0]["displacements"][4];
+    let ux = tip[0].as_f64().unwrap_or(f64::NAN);
+    let uy = tip[1].as_f64().unwrap_or(f64::NAN);
+    assert!(
+        (ux + 100.0).abs() < 0.5 && uy.abs() < 0.5,
+        "tip displacement {ux}, {uy}"
+    );
+    for (extra, msg) in [
+        (r#""nonlinear": true, "steps": 0,"#, "`steps`"),
+        (r#""steps": 5,"#, "`steps`"),
+        (r#""nonlinear": "yes","#, "`nonlinear`"),
+        (r#""nonlinear": true, "steps": -3,"#, "`steps`"),
+    ] {
+        let out = run_case_text("nl_static_bad", &case(extra));
+        assert_eq!(out.status.code(), Some(2), "{extra}: {}", stderr(&out));
+        assert!(stderr(&out).contains(msg), "{extra}: {}", stderr(&out));
+    }
+    let stage_bad = r#"{"analysis": "stage", "material": "Al7075",
+        "stage": {"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": 0, "leg": {"w": 10, "h": 10},
+                  "revolute": {"type": "circular_notch", "R": 8, "t": 2},
+                  "spherical": {"type": "spherical_neck", "l": 5, "t": 3, "R": 4}},
+        "load_cases": [{"name": "x", "actuator_strokes": [1, 1, 1]}], "nonlinear": true, "steps": 100000}"#;
+    let out = run_case_text("nl_stage_bad", stage_bad);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(stderr(&out).contains("`steps`"), "{}", stderr(&out));
+}
