@@ -22,6 +22,13 @@ fn bench(c: &mut Criterion) {
     c.bench_function("stage_nonlinear_row1_20_steps", |b| {
         b.iter(|| s.solve_nonlinear(black_box(&strokes), 20).expect("solves"))
     });
+    let opts = s.nonlinear_options(20);
+    c.bench_function("stage_nonlinear_row1_20_steps_8_hinge_segments", |b| {
+        b.iter(|| {
+            s.solve_nonlinear_segments(black_box(&strokes), &opts, 8)
+                .expect("solves")
+        })
+    });
     let forces = vec![("F40".to_string(), Drive::Forces([40.0, 40.0, 40.0]))];
     c.bench_function("stage_nonlinear_f40_20_steps", |b| {
         b.iter(|| s.solve_nonlinear(black_box(&forces), 20).expect("solves"))

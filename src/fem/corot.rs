@@ -151,7 +151,8 @@ pub struct Kinematics {
 /// Kinematics of the element (see the module docs). `None` for a degenerate configuration
 /// (zero length, r₁ parallel to q, non-finite input).
 pub fn kinematics(g: &CorotGeometry, n1: &NodeState, n2: &NodeState) -> Option<Kinematics> {
-    let x21 = g.x2 + n2.u - g.x1 - n1.u;
+    // (X₂ − X₁) + (u₂ − u₁): round-off relative to the element length, not to the coordinates.
+    let x21 = (g.x2 - g.x1) + (n2.u - n1.u);
     let ln = x21.norm();
     if !(ln > 0.0 && ln.is_finite()) {
         return None;

@@ -523,6 +523,7 @@ fn newton(ctx: &CaseCtx, st: &mut State, lambda: f64, opts: &NonlinearOptions) -
     let mut last_dq: Option<Vec<f64>> = None;
     let mut r0 = f64::NAN;
     let mut r_prev = f64::INFINITY;
+    let (mut best, mut stall) = (f64::INFINITY, 0);
     for it in 0..=opts.max_iterations {
         let ev = ctx.evaluate(st, lambda, true).ok_or_else(|| StepFail {
             residual: f64::NAN,
@@ -532,6 +533,7 @@ fn newton(ctx: &CaseCtx, st: &mut State, lambda: f64, opts: &NonlinearOptions) -
         if it == 0 {
             r0 = rn;
         }
+
         let force_ok = rn <= opts.tol_residual * ev.reference || ev.reference == 0.0;
         let energy_ok = match &last_dq {
             None => rn == 0.0 || ev.reference == 0.0,
@@ -544,6 +546,15 @@ fn newton(ctx: &CaseCtx, st: &mut State, lambda: f64, opts: &NonlinearOptions) -
         // deformations the residual stalls near ε·(element forces). Accept when the correction's
         // energy is negligible and the residual no longer decreases.
         if energy_ok && it > 1 && rn > 0.1 * r_prev && rn <= 1e-5 * ev.reference {
+            return Ok(it);
+        }
+        if rn < 0.5 * best {
+            best = rn;
+            stall = 0;
+        } else {
+            stall += 1;
+        }
+        if stall >= 3 && best <= 1e-5 * ev.reference {
             return Ok(it);
         }
         r_prev = rn;
