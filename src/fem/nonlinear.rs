@@ -524,6 +524,7 @@ fn newton(ctx: &CaseCtx, st: &mut State, lambda: f64, opts: &NonlinearOptions) -
     let mut r0 = f64::NAN;
     let mut r_prev = f64::INFINITY;
     let (mut best, mut stall) = (f64::INFINITY, 0);
+    let mut acc = vec![0.0; ctx.n_eq()];
     for it in 0..=opts.max_iterations {
         let ev = ctx.evaluate(st, lambda, true).ok_or_else(|| StepFail {
             residual: f64::NAN,
@@ -540,6 +541,14 @@ fn newton(ctx: &CaseCtx, st: &mut State, lambda: f64, opts: &NonlinearOptions) -
             Some(dq) => dot(dq, &ev.r).abs() <= opts.tol_energy * e0.max(f64::MIN_POSITIVE),
         };
         if force_ok && (energy_ok || rn <= 1e-3 * opts.tol_residual * ev.reference) {
+            return Ok(it);
+        }
+        // Displacement + energy: for mechanisms moving almost force-free (ideal joints), the
+        // force reference is itself round-off, so converge on the corrections instead.
+        let disp_ok = last_dq
+            .as_ref()
+            .is_some_and(|dq| norm(dq) <= 1e-10 * acc.iter().map(|v| v * v).sum::<f64>().sqrt());
+        if energy_ok && disp_ok {
             return Ok(it);
         }
         // Round-off floor: the co-rotated frame comes from nodal positions, so for tiny
@@ -585,6 +594,9 @@ fn newton(ctx: &CaseCtx, st: &mut State, lambda: f64, opts: &NonlinearOptions) -
             e0 = dot(&dq, &ev.r).abs();
         }
         ctx.apply(st, &dq, None);
+        for (a, d) in acc.iter_mut().zip(&dq) {
+            *a += d;
+        }
         last_dq = Some(dq);
     }
     Err(StepFail {
