@@ -30,7 +30,7 @@ use super::constraints::{frame_block, DofMap, NONE};
 use super::corot::{self, CorotGeometry, NodeState};
 use super::dof::NodeDof;
 use super::error::FemError;
-use super::model::{Element, LoadCase, Model};
+use super::model::{Beam, Element, FlexElement, LoadCase, Model};
 use super::recovery::{section_von_mises, ElementResult, Statics};
 use super::solve::{Factor, Parallelism, SparsePattern, SymbolicFactor};
 use super::transform::{rigid_arm, skew, Mat12};
@@ -160,12 +160,8 @@ fn element_data(model: &Model) -> Result<Vec<ElemData>, FemError> {
                     k,
                 })
             }
-            e => {
-                let nodes = match e {
-                    Element::Beam(b) => b.nodes,
-                    Element::Flex(f) => f.nodes,
-                    Element::Spring(_) => unreachable_nodes(),
-                };
+            Element::Beam(Beam { nodes, .. }) | Element::Flex(FlexElement { nodes, .. }) => {
+                let nodes = *nodes;
                 let (lam, l) = model.element_frame(ie)?;
                 let (k_local, _) = model.element_local(ie)?;
                 Ok(ElemData::Corot {
@@ -181,10 +177,6 @@ fn element_data(model: &Model) -> Result<Vec<ElemData>, FemError> {
             }
         })
         .collect()
-}
-
-fn unreachable_nodes() -> [usize; 2] {
-    [0, 0]
 }
 
 /// Nodal state: translations and rotation matrices.
@@ -752,7 +744,6 @@ fn arc_length(
     name: &str,
     path: &mut Vec<PathPoint>,
 ) -> Result<(usize, usize, usize, f64), FemError> {
-    let n = ctx.n_eq();
     let arms = ctx.arms(st);
     let f_red_full = ctx.to_independent(&arms, &ctx.f_ext);
     let f_red: Vec<f64> = ctx.map.eq_dof.iter().map(|&g| f_red_full[g]).collect();
@@ -784,7 +775,7 @@ fn arc_length(
         };
         let dlam = sign * dl_arc / dtn;
         if lambda + dlam >= 1.0 - 1e-12 {
-            let (it, s, c, l) = load_control(ctx, st, lambda, &one_step(opts, 1.0 - lambda), name, path, steps)?;
+            let (it, s, c, l) = load_control(ctx, st, lambda, &one_step(opts), name, path, steps)?;
             return Ok((iterations + it, steps + s, cuts + c, l));
         }
         // Predictor.
@@ -862,12 +853,11 @@ fn arc_length(
                 }
             }
         }
-        let _ = n;
     }
     Err(fail(name, steps, lambda, f64::NAN, "arc length: too many steps"))
 }
 
-fn one_step(opts: &NonlinearOptions, _span: f64) -> NonlinearOptions {
+fn one_step(opts: &NonlinearOptions) -> NonlinearOptions {
     NonlinearOptions {
         steps: 1,
         ..opts.clone()
@@ -939,10 +929,9 @@ fn finish(
                 frames.push(std::array::from_fn(|i| std::array::from_fn(|j| rt[(i, j)])));
             }
             ElemData::Spring { nodes, n_nodes, b, k } => {
-                let (_, _, km, f) = ctx
+                let (_, _, _, f) = ctx
                     .element_response(st, ie, false)
                     .ok_or_else(|| fail(name, steps, lambda, f64::NAN, format!("element {ie} degenerate")))?;
-                let _ = km;
                 for s in 0..*n_nodes {
                     for d in 0..6 {
                         f_int[6 * nodes[s] + d] += f[6 * s + d];
