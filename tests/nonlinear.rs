@@ -650,3 +650,36 @@ fn ideal_joint_stage_follows_the_fkp_at_finite_strokes() {
         assert!((lin[i].platform.z - k.z).abs() > 10e-3);
     }
 }
+
+/// `hinge` with `"nonlinear": true`: the large-rotation curve of the seed-000 revolute notch in
+/// its 20 mm blanks reaches the allowable stress; at ~1.5° the geometric effect is of order θ²
+/// (the rotation at the allowable differs from the linear one by < 0.1 %), the moment at the
+/// notch centre falls below F·lever as the lever rotates, and the linear FE rotation at the
+/// allowable matches the characterisation's `max_rotation_deg` to 1 %.
+#[test]
+fn hinge_large_rotation_curve() {
+    let text = r#"{"analysis": "hinge", "material": "Al7075", "nonlinear": true, "steps": 10,
+        "hinge": {"type": "circular_notch", "R": 8, "t": 2, "w": 10, "h": 10, "blank_length": 20}}"#;
+    let v = json(&run_case_text("nl_hinge", text));
+    let lr = &v["large_rotation"];
+    let f = |x: &serde_json::Value| x.as_f64().unwrap_or(f64::NAN);
+    let a = f(&lr["rotation_at_allowable_deg"]);
+    let b = f(&lr["linear_rotation_at_allowable_deg"]);
+    println!(
+        "hinge: rotation at allowable {a}° (linear {b}°), max_rotation_deg {}",
+        f(&v["max_rotation_deg"])
+    );
+    assert!(a > 1.0 && (a / b - 1.0).abs() < 1e-3, "{a} vs {b}");
+    assert!((b / f(&v["max_rotation_deg"]) - 1.0).abs() < 0.01);
+    let pts = lr["points"].as_array().unwrap_or_else(|| panic!("no points"));
+    let last = &pts[pts.len() - 1];
+    assert!(f(&last["max_stress"]) > 400.0);
+    let lever = 8.0 + 1.0 + 20.0; // upper bound on the lever: blank + notch half-lengths
+    assert!(f(&last["moment"]) < f(&last["force"]) * lever);
+    let out = run_case_text(
+        "nl_hinge_bad",
+        &text.replace(r#""nonlinear": true, "steps": 10,"#, r#""steps": 10,"#),
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(stderr(&out).contains("`steps`"), "{}", stderr(&out));
+}

@@ -150,9 +150,13 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
         }
         Case::Hinge(h) => {
             let r = hinge::solve(h)?;
+            let mut report = hinge::report(&r.result);
+            if let Some(lr) = &r.large_rotation {
+                report.markdown += &hinge::large_rotation_report(lr);
+            }
             Ok(Outcome {
                 json: to_json(&r)?,
-                report: hinge::report(&r),
+                report,
                 files: vec![],
             })
         }
