@@ -3,15 +3,183 @@
 use super::Report;
 use crate::case::hinge::{hinge_error, HingeCase};
 use crate::case::CaseError;
-use crate::hinge::{characterise, HingeResult};
+use crate::fem::{Element, FlexElement, LoadCase, Model, Support};
+use crate::hinge::{characterise, segment_compliance, HingeResult};
+use crate::material::Material;
 use crate::report::markdown::{sig, Table};
+use serde::Serialize;
+
+/// Result of the `hinge` analysis: the characterisation, plus the large-rotation curve when
+/// the case asks for it.
+#[derive(Debug, Clone, Serialize)]
+pub struct HingeOut {
+    #[serde(flatten)]
+    pub result: HingeResult,
+    /// Large-rotation response (`"nonlinear": true` only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub large_rotation: Option<LargeRotation>,
+}
+
+/// One point of the large-rotation curve.
+#[derive(Debug, Clone, Serialize)]
+pub struct LargeRotationPoint {
+    /// Transverse end force, N.
+    pub force: f64,
+    /// Moment about the compliant axis at the notch centre, deformed configuration, N·mm.
+    pub moment: f64,
+    /// Compliant-axis rotation of the loaded blank end face, degrees.
+    pub rotation_deg: f64,
+    /// The linear FE rotation for the same force, degrees.
+    pub linear_rotation_deg: f64,
+    /// Peak von Mises stress in the notch, MPa.
+    pub max_stress: f64,
+}
+
+/// Moment–rotation curve of the hinge in its blank at large rotation.
+#[derive(Debug, Clone, Serialize)]
+pub struct LargeRotation {
+    /// How the hinge is loaded.
+    pub load: String,
+    /// Points, increasing force, up to (just past) the allowable stress.
+    pub points: Vec<LargeRotationPoint>,
+    /// Rotation at the allowable stress (linear interpolation between points), degrees.
+    pub rotation_at_allowable_deg: Option<f64>,
+    /// The same from the linear FE model, degrees.
+    pub linear_rotation_at_allowable_deg: Option<f64>,
+}
 
 /// Characterises the hinge of the case.
-pub fn solve(case: &HingeCase) -> Result<HingeResult, super::RunError> {
+pub fn solve(case: &HingeCase) -> Result<HingeOut, super::RunError> {
     let m = case.validate()?;
-    characterise(&case.hinge, &m).map_err(|e| {
+    let result = characterise(&case.hinge, &m).map_err(|e| {
         let ce: CaseError = hinge_error(&e, "hinge", "material");
         super::RunError::Case(ce)
+    })?;
+    let large_rotation = match (case.nonlinear, case.steps) {
+        (true, steps) => Some(large_rotation(case, &m, &result, steps.unwrap_or(20))?),
+        _ => None,
+    };
+    Ok(HingeOut { result, large_rotation })
+}
+
+/// The hinge in its blank as a chain of co-rotational flexibility elements along x (blank,
+/// 16 notch segments, blank; compliances of the sub-intervals), clamped at x = −half-length,
+/// loaded at the other end face by a force along z fixed in direction (bending about the
+/// compliant axis y). Each force level is solved from the undeformed state in `steps` steps.
+fn large_rotation(
+    case: &HingeCase,
+    m: &Material,
+    r: &HingeResult,
+    steps: usize,
+) -> Result<LargeRotation, super::RunError> {
+    let err = |e: crate::fem::FemError| super::RunError::Analysis(super::AnalysisError::new("hinge", e.to_string()));
+    let profile = case
+        .hinge
+        .profile()
+        .map_err(|e| super::RunError::Case(hinge_error(&e, "hinge", "material")))?;
+    let (half, hn) = (profile.half_length(), profile.half_notch);
+    let mut xs = vec![-half];
+    if profile.blank > 0.0 {
+        xs.push(-hn);
+    }
+    let n = 16;
+    for k in 1..=n {
+        xs.push(-hn + 2.0 * hn * k as f64 / n as f64);
+    }
+    if profile.blank > 0.0 {
+        xs.push(half);
+    }
+    let mut model = Model::new();
+    for &x in &xs {
+        model.add_node([x, 0.0, 0.0]);
+    }
+    let first_notch = usize::from(profile.blank > 0.0);
+    for (i, w) in xs.windows(2).enumerate() {
+        let c = segment_compliance(&profile, m, w[0], w[1]);
+        model.add_element(Element::Flex(FlexElement {
+            nodes: [i, i + 1],
+            compliance: std::array::from_fn(|a| std::array::from_fn(|b| c[(a, b)])),
+            up: [0.0, 0.0, 1.0],
+        }));
+    }
+    let last_notch = first_notch + n - 1;
+    let tip = xs.len() - 1;
+    let centre = first_notch + n / 2;
+    model.supports.push(Support::clamp(0));
+    let neck = matches!(profile.contour, crate::hinge::Contour::SphericalNeck { .. });
+    let kt = r.stress_concentration;
+    let peak = |fe: &crate::fem::CaseResult| {
+        let sf = [
+            fe.elements[first_notch].section_forces[0],
+            fe.elements[last_notch].section_forces[1],
+        ];
+        crate::stage::hinge_peak_stress(&profile, m.nu, kt, &sf, neck)
+    };
+    // Linear response to a unit force: rotation and stress per newton.
+    model.load_cases = vec![LoadCase::new("unit").force(tip, [0.0, 0.0, 1.0, 0.0, 0.0, 0.0])];
+    let lin = crate::fem::solve_static_with(&model, crate::fem::solve::Parallelism::Sequential).map_err(err)?;
+    let lin = &lin.load_cases[0];
+    let rot1 = lin.displacements[tip][4];
+    let sig1 = peak(lin);
+    if !(sig1 > 0.0 && rot1.is_finite()) {
+        return Err(err(crate::fem::FemError::BadInput(
+            "hinge: no bending stress under a transverse force".into(),
+        )));
+    }
+    let f_allow = m.allowable / sig1;
+    let levels: Vec<f64> = (1..=12).map(|k| 1.2 * f_allow * k as f64 / 12.0).collect();
+    model.load_cases = levels
+        .iter()
+        .enumerate()
+        .map(|(k, f)| LoadCase::new(format!("F{k}")).force(tip, [0.0, 0.0, *f, 0.0, 0.0, 0.0]))
+        .collect();
+    let opts = crate::fem::NonlinearOptions {
+        steps,
+        ..Default::default()
+    };
+    let nl = crate::fem::solve_nonlinear(&model, &opts).map_err(err)?;
+    let points: Vec<LargeRotationPoint> = nl
+        .load_cases
+        .iter()
+        .zip(&levels)
+        .map(|(c, &f)| {
+            let d = &c.fe.displacements;
+            let dx = (xs[tip] + d[tip][0]) - (xs[centre] + d[centre][0]);
+            LargeRotationPoint {
+                force: f,
+                moment: f * dx.abs(),
+                rotation_deg: d[tip][4].abs().to_degrees(),
+                linear_rotation_deg: (f * rot1).abs().to_degrees(),
+                max_stress: peak(&c.fe),
+            }
+        })
+        .collect();
+    let at_allowable = |get: &dyn Fn(&LargeRotationPoint) -> f64, stress: &dyn Fn(&LargeRotationPoint) -> f64| {
+        let mut prev: Option<&LargeRotationPoint> = None;
+        for p in &points {
+            if stress(p) >= m.allowable {
+                return Some(match prev {
+                    None => get(p) * m.allowable / stress(p),
+                    Some(q) => {
+                        let t = (m.allowable - stress(q)) / (stress(p) - stress(q));
+                        get(q) + t * (get(p) - get(q))
+                    }
+                });
+            }
+            prev = Some(p);
+        }
+        None
+    };
+    let rotation_at_allowable_deg = at_allowable(&|p| p.rotation_deg, &|p| p.max_stress);
+    let linear_rotation_at_allowable_deg = at_allowable(&|p| p.linear_rotation_deg, &|p| p.force * sig1);
+    Ok(LargeRotation {
+        load: format!(
+            "transverse end force (fixed direction) at the blank end face, {:.3} mm from the notch centre; clamped opposite face; 16 co-rotational flexibility elements over the notch",
+            half
+        ),
+        points,
+        rotation_at_allowable_deg,
+        linear_rotation_at_allowable_deg,
     })
 }
 
@@ -70,4 +238,30 @@ pub fn report(r: &HingeResult) -> Report {
         h.k_bend, h.k_bend_off, h.k_torsion, h.k_axial, h.stress_per_moment, h.max_rotation_deg
     );
     Report { markdown: md, csv }
+}
+
+/// Markdown section of the large-rotation curve.
+pub fn large_rotation_report(lr: &LargeRotation) -> String {
+    let mut md = format!("\n## Large rotation\n\nLoad: {}.\n\n", lr.load);
+    let mut t = Table::new(&[
+        "F (N)",
+        "M centre (N·mm)",
+        "θ nonlinear (°)",
+        "θ linear (°)",
+        "σ_max (MPa)",
+    ]);
+    for p in &lr.points {
+        t.row(vec![
+            sig(p.force, 5),
+            sig(p.moment, 5),
+            format!("{:.4}", p.rotation_deg),
+            format!("{:.4}", p.linear_rotation_deg),
+            format!("{:.1}", p.max_stress),
+        ]);
+    }
+    md += &t.render();
+    if let (Some(a), Some(b)) = (lr.rotation_at_allowable_deg, lr.linear_rotation_at_allowable_deg) {
+        md += &format!("\nRotation at the allowable stress: {a:.4}° (linear FE {b:.4}°).\n");
+    }
+    md
 }

@@ -123,12 +123,18 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
         }
         Case::Static(s) => {
             let model = s.model.build()?;
-            let (r, raw) = fem_static::solve(&model)?;
             let mut files = Vec::new();
-            for c in &raw.load_cases {
-                let text = fem_static::vtu(&model, c, &[])?;
-                files.push((format!("{}.vtu", fem_static::file_stem(&c.name)), text.into_bytes()));
-            }
+            let r = match s.steps.filter(|_| s.nonlinear) {
+                Some(steps) => fem_static::solve_nonlinear(&model, steps)?,
+                None => {
+                    let (r, raw) = fem_static::solve(&model)?;
+                    for c in &raw.load_cases {
+                        let text = fem_static::vtu(&model, c, &[])?;
+                        files.push((format!("{}.vtu", fem_static::file_stem(&c.name)), text.into_bytes()));
+                    }
+                    r
+                }
+            };
             Ok(Outcome {
                 json: to_json(&r)?,
                 report: fem_static::report(&r),
@@ -167,7 +173,11 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
         }
         Case::Hinge(h) => {
             let r = hinge::solve(h)?;
-            Ok(plain(to_json(&r)?, hinge::report(&r)))
+            let mut report = hinge::report(&r.result);
+            if let Some(lr) = &r.large_rotation {
+                report.markdown += &hinge::large_rotation_report(lr);
+            }
+            Ok(plain(to_json(&r)?, report))
         }
     }
 }

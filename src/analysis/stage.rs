@@ -120,6 +120,8 @@ pub struct StageResult {
     pub platform_stiffness: PlatformStiffness,
     /// Idealisations.
     pub model: Vec<String>,
+    /// Were the load cases solved geometrically nonlinear?
+    pub nonlinear: bool,
 }
 
 fn row(r: &StageCaseResult, allowable: f64) -> StageRow {
@@ -197,20 +199,31 @@ fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super:
     let (design, mut drives) = case.validate()?;
     let s = design.build().map_err(fem_err)?;
     let allowable = design.material.allowable;
-    let n = drives.len();
-    // One pass: the user's cases, a unit force on every actuator (reach at the allowable) and a
-    // unit pure-z stroke set (structural stiffness), plus the platform compliance.
+    // One linear pass: the user's cases, a unit force on every actuator (reach at the allowable)
+    // and a unit pure-z stroke set (structural stiffness), plus the platform compliance.
     let j = design
         .prs
         .actuation_jacobian(0.0, 0.0, 0.0)
         .map_err(|e| AnalysisError::new("stage", e.to_string()))?;
     let unit_z = [j[(0, 0)], j[(1, 0)], j[(2, 0)]];
+    let user = drives.clone();
     drives.push(("unit_force".into(), Drive::Forces([1.0; 3])));
     drives.push(("unit_z".into(), Drive::Strokes(unit_z)));
-    let a = s.analyse(&drives, true).map_err(fem_err)?;
-    let u = &a.cases[n];
-    let z = &a.cases[n + 1];
+    let mut a = s.analyse(&drives, true).map_err(fem_err)?;
+    let z = a
+        .cases
+        .pop()
+        .ok_or_else(|| AnalysisError::new("stage", "unit-z case missing"))?;
+    let u = a
+        .cases
+        .pop()
+        .ok_or_else(|| AnalysisError::new("stage", "unit-force case missing"))?;
+    let u = &u;
     let stiffness_z = z.forces.iter().sum::<f64>() / (unit_z.iter().sum::<f64>() / 3.0);
+    let results = match case.nonlinear_steps() {
+        Some(steps) => s.solve_nonlinear(&user, steps).map_err(fem_err)?,
+        None => std::mem::take(&mut a.cases),
+    };
     let k = allowable / u.max_von_mises;
     let at_allowable = AtAllowable {
         allowable,
@@ -223,7 +236,7 @@ fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super:
         .ok_or_else(|| AnalysisError::new("stage", "no platform compliance"))?;
     let mut out_files = Vec::new();
     if files {
-        for c in &a.cases[..n] {
+        for c in &results {
             let mut cell = Vec::new();
             for (i, leg) in s.legs.iter().enumerate() {
                 cell.push((leg.rev_element, c.revolute_stress[i]));
@@ -236,19 +249,31 @@ fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super:
             ));
         }
     }
+    let mut model = model_notes(&s);
+    if let Some(steps) = case.nonlinear_steps() {
+        model[0] = format!("load cases: geometrically nonlinear statics (co-rotational legs and hinges, rigid platform exact under finite rotation, Newton-Raphson in {steps} load steps); stiffness_z, at_allowable and platform_stiffness stay linear");
+    }
     let result = StageResult {
-        load_cases: a.cases[..n].iter().map(|r| row(r, allowable)).collect(),
+        load_cases: results.iter().map(|r| row(r, allowable)).collect(),
         stiffness_z,
         at_allowable,
         platform_stiffness: platform_stiffness(compliance),
-        model: model_notes(&s),
+        model,
+        nonlinear: case.nonlinear,
     };
     Ok((result, out_files))
 }
 
 /// Markdown/CSV of a stage result.
 pub fn stage_report(r: &StageResult) -> Report {
-    let mut md = String::from("# 3-PRS compliant stage (linear FEM)\n\n");
+    let mut md = format!(
+        "# 3-PRS compliant stage ({} FEM)\n\n",
+        if r.nonlinear {
+            "geometrically nonlinear"
+        } else {
+            "linear"
+        }
+    );
     let mut t = Table::new(&[
         "load case",
         "F₁, F₂, F₃ (N)",
@@ -325,10 +350,12 @@ pub struct FkpRow {
     pub fkp: PoseOut,
     /// Linear FEM.
     pub fem_linear: PoseOut,
-    /// Geometrically nonlinear FEM (`null` until available).
+    /// Geometrically nonlinear FEM (co-rotational; angles from the platform rotation matrix).
     pub fem_nonlinear: Option<PoseOut>,
     /// fem_linear − fkp.
     pub linear_minus_fkp: PoseOut,
+    /// fem_nonlinear − fkp.
+    pub nonlinear_minus_fkp: Option<PoseOut>,
 }
 
 /// Result of `fem_vs_fkp`.
@@ -336,8 +363,8 @@ pub struct FkpRow {
 pub struct FemVsFkpResult {
     /// Rows in input order.
     pub rows: Vec<FkpRow>,
-    /// Why `fem_nonlinear` is null.
-    pub fem_nonlinear_note: &'static str,
+    /// How `fem_nonlinear` was computed.
+    pub fem_nonlinear_note: String,
     /// Idealisations.
     pub model: Vec<String>,
 }
@@ -364,30 +391,41 @@ pub fn run_fem_vs_fkp(case: &FemVsFkpCase) -> Result<FemVsFkpResult, RunError> {
         .map(|(i, st)| (format!("strokes[{i}]"), Drive::Strokes(*st)))
         .collect();
     let fem = s.solve(&drives).map_err(fem_err)?;
+    let steps = case.nonlinear_steps();
+    let fem_nl = s.solve_nonlinear(&drives, steps).map_err(fem_err)?;
     let mut rows = Vec::with_capacity(case.strokes.len());
-    for (i, (st, f)) in case.strokes.iter().zip(&fem).enumerate() {
+    for (i, ((st, f), g)) in case.strokes.iter().zip(&fem).zip(&fem_nl).enumerate() {
         let k = design
             .prs
             .fkp(*st, None)
             .map_err(|e| AnalysisError::new(format!("strokes[{i}]"), e.to_string()))?;
         let fkp: PoseOut = k.pose.into();
         let lin: PoseOut = f.platform.into();
+        let nl: PoseOut = g.platform.into();
         rows.push(FkpRow {
             strokes: *st,
             fkp,
             fem_linear: lin,
-            fem_nonlinear: None,
+            fem_nonlinear: Some(nl),
             linear_minus_fkp: diff(lin, fkp),
+            nonlinear_minus_fkp: Some(diff(nl, fkp)),
         });
     }
     Ok(FemVsFkpResult {
         rows,
-        fem_nonlinear_note: "geometrically nonlinear FEM is not available in this version",
-        model: model_notes(&s),
+        model: {
+            let mut m = model_notes(&s);
+            m[0] = "fem_linear: linear statics, small displacements; fem_nonlinear: geometrically nonlinear statics of the same model (co-rotational legs and hinges, rigid platform exact under finite rotation)".to_string();
+            m
+        },
+        fem_nonlinear_note: format!(
+            "co-rotational FEM (large rotations, small strains), same hinge and leg model as the linear FEM, Newton-Raphson in {steps} stroke steps; platform angles from its rotation matrix R = Ry(θ)·Rx(ψ)·Rz(φ)"
+        ),
     })
 }
 
-/// Markdown report laid out like seed 000 Tables 4–6, CSV, and the SVG plot.
+/// Markdown report laid out like seed 000 Tables 4–6 (linear FEM, nonlinear FEM and FKP side
+/// by side), CSV, and the SVG plot of |FEM − FKP| for both FEM columns.
 pub fn fem_vs_fkp_report(r: &FemVsFkpResult) -> (Report, super::Files) {
     let mut md =
         String::from("# FEM versus rigid-body forward kinematics (seed 000 Tables 4–6 layout)\n\n## Predictions\n\n");
@@ -395,61 +433,88 @@ pub fn fem_vs_fkp_report(r: &FemVsFkpResult) -> (Report, super::Files) {
         "Δs₁ (µm)",
         "Δs₂ (µm)",
         "Δs₃ (µm)",
-        "Δz FEM (µm)",
+        "Δz linear FEM (µm)",
+        "Δz nonlinear FEM (µm)",
         "Δz FKP (µm)",
-        "ψ FEM",
+        "ψ linear FEM",
+        "ψ nonlinear FEM",
         "ψ FKP",
-        "θ FEM",
+        "θ linear FEM",
+        "θ nonlinear FEM",
         "θ FKP",
     ]);
     let mut d = Table::new(&[
         "Δs₁ (µm)",
         "Δs₂ (µm)",
         "Δs₃ (µm)",
-        "|Δz FEM − FKP| (µm)",
-        "|ψ FEM − FKP|",
-        "|θ FEM − FKP|",
+        "|Δz lin − FKP| (µm)",
+        "|Δz nl − FKP| (µm)",
+        "|ψ lin − FKP|",
+        "|ψ nl − FKP|",
+        "|θ lin − FKP|",
+        "|θ nl − FKP|",
     ]);
-    let mut csv = String::from("s1,s2,s3,z_fem,z_fkp,psi_fem_deg,psi_fkp_deg,theta_fem_deg,theta_fkp_deg\n");
+    let mut csv = String::from(
+        "s1,s2,s3,z_fem,z_fem_nl,z_fkp,psi_fem_deg,psi_fem_nl_deg,psi_fkp_deg,theta_fem_deg,theta_fem_nl_deg,theta_fkp_deg\n",
+    );
     let um = |v: f64| format!("{:.0}", v * 1000.0);
+    let opt = |v: Option<f64>, f: &dyn Fn(f64) -> String| v.map_or_else(|| "–".to_string(), f);
+    let z1 = |v: f64| format!("{:.1}", v * 1000.0);
     let mut pts = Vec::new();
+    let mut pts_nl = Vec::new();
     for row in &r.rows {
         let s = row.strokes;
+        let nl = row.fem_nonlinear;
+        let nd = row.nonlinear_minus_fkp;
         t.row(vec![
             um(s[0]),
             um(s[1]),
             um(s[2]),
-            format!("{:.1}", row.fem_linear.z * 1000.0),
-            format!("{:.1}", row.fkp.z * 1000.0),
+            z1(row.fem_linear.z),
+            opt(nl.map(|p| p.z), &z1),
+            z1(row.fkp.z),
             dms(row.fem_linear.psi_deg),
+            opt(nl.map(|p| p.psi_deg), &dms),
             dms(row.fkp.psi_deg),
             dms(row.fem_linear.theta_deg),
+            opt(nl.map(|p| p.theta_deg), &dms),
             dms(row.fkp.theta_deg),
         ]);
         d.row(vec![
             um(s[0]),
             um(s[1]),
             um(s[2]),
-            format!("{:.1}", (row.linear_minus_fkp.z * 1000.0).abs()),
+            z1(row.linear_minus_fkp.z.abs()),
+            opt(nd.map(|p| p.z.abs()), &z1),
             dms(row.linear_minus_fkp.psi_deg.abs()),
+            opt(nd.map(|p| p.psi_deg.abs()), &dms),
             dms(row.linear_minus_fkp.theta_deg.abs()),
+            opt(nd.map(|p| p.theta_deg.abs()), &dms),
         ]);
+        let num = |v: Option<f64>| v.map_or_else(String::new, |x| x.to_string());
         csv += &format!(
-            "{},{},{},{},{},{},{},{},{}\n",
+            "{},{},{},{},{},{},{},{},{},{},{},{}\n",
             s[0],
             s[1],
             s[2],
             row.fem_linear.z,
+            num(nl.map(|p| p.z)),
             row.fkp.z,
             row.fem_linear.psi_deg,
+            num(nl.map(|p| p.psi_deg)),
             row.fkp.psi_deg,
             row.fem_linear.theta_deg,
+            num(nl.map(|p| p.theta_deg)),
             row.fkp.theta_deg
         );
-        pts.push(((s[0] + s[1] + s[2]) / 3.0, (row.linear_minus_fkp.z * 1000.0).abs()));
+        let mean = (s[0] + s[1] + s[2]) / 3.0;
+        pts.push((mean, (row.linear_minus_fkp.z * 1000.0).abs()));
+        if let Some(p) = nd {
+            pts_nl.push((mean, (p.z * 1000.0).abs()));
+        }
     }
     md += &t.render();
-    md += "\n## Differences (linear FEM vs FKP)\n\n";
+    md += "\n## Differences to the FKP (linear and nonlinear FEM)\n\n";
     md += &d.render();
     md += &format!(
         "\nNonlinear FEM: {}.\n\n![|FEM − FKP| in z against mean stroke](fem_vs_fkp.svg)\n\n## Model\n\n",
@@ -462,7 +527,7 @@ pub fn fem_vs_fkp_report(r: &FemVsFkpResult) -> (Report, super::Files) {
         "|Δz FEM − Δz FKP| against mean stroke",
         "mean stroke (mm)",
         "|Δz FEM − FKP| (µm)",
-        &[("linear FEM", &pts)],
+        &[("linear FEM", &pts), ("nonlinear FEM", &pts_nl)],
     );
     (
         Report { markdown: md, csv },

@@ -15,6 +15,13 @@ pub struct HingeCase {
     pub material: MaterialSpec,
     /// The hinge, by `type` (SPEC §4): lengths in mm.
     pub hinge: HingeSpec,
+    /// Also trace the large-rotation response (geometrically nonlinear FE of the hinge in its
+    /// blank under a transverse end force) up to the allowable stress.
+    #[serde(default)]
+    pub nonlinear: bool,
+    /// Load steps per point of the nonlinear curve (default 20; only with `"nonlinear": true`).
+    #[serde(default)]
+    pub steps: Option<usize>,
 }
 
 /// Maps a hinge-library error to the JSON path of the offending field.
@@ -33,6 +40,7 @@ impl HingeCase {
     /// Validates material and geometry (non-physical geometry is refused before solving).
     pub fn validate(&self) -> Result<Material, CaseError> {
         let m = self.material.resolve("material")?;
+        super::stage::check_steps("steps", self.steps, self.nonlinear)?;
         self.hinge.profile().map_err(|e| hinge_error(&e, "hinge", "material"))?;
         Ok(m)
     }

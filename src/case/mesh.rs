@@ -239,6 +239,13 @@ pub struct StaticCase {
     /// The inline model (or additions to the mesh: materials, sections, load cases).
     #[serde(flatten)]
     pub model: MeshSpec,
+    /// Geometrically nonlinear statics (co-rotational beams, Newton–Raphson in load steps).
+    #[serde(default)]
+    pub nonlinear: bool,
+    /// Load steps of the nonlinear analysis (default 20; only with `"nonlinear": true`). After
+    /// parsing: the steps to use when nonlinear, `None` when linear.
+    #[serde(default)]
+    pub steps: Option<usize>,
 }
 
 impl MeshSpec {

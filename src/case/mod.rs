@@ -166,6 +166,25 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                 Some(Value::String(s)) => Some(s),
                 Some(other) => return Err(CaseError::value("mesh", short(&other), "must be a file name (string)")),
             };
+            let nonlinear = match map.remove("nonlinear") {
+                None | Some(Value::Null) => false,
+                Some(Value::Bool(b)) => b,
+                Some(other) => return Err(CaseError::value("nonlinear", short(&other), "must be true or false")),
+            };
+            let steps = match map.remove("steps") {
+                None | Some(Value::Null) => None,
+                Some(v) => match v.as_u64() {
+                    Some(n) => Some(usize::try_from(n).unwrap_or(usize::MAX)),
+                    None => {
+                        return Err(CaseError::value(
+                            "steps",
+                            short(&v),
+                            "must be a positive integer (number of load steps)",
+                        ))
+                    }
+                },
+            };
+            let steps = stage::check_steps("steps", steps, nonlinear)?;
             let inline: mesh::MeshSpec = from_value(value, "")?;
             let model = match &mesh_name {
                 Some(name) => {
@@ -183,7 +202,12 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                 }
                 None => inline,
             };
-            Ok(Case::Static(mesh::StaticCase { mesh: mesh_name, model }))
+            Ok(Case::Static(mesh::StaticCase {
+                mesh: mesh_name,
+                model,
+                nonlinear,
+                steps,
+            }))
         }
         other => Err(CaseError::value(
             "analysis",

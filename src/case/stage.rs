@@ -174,9 +174,32 @@ pub struct StageCase {
     pub stage: StageSpec,
     /// Load cases.
     pub load_cases: Vec<StageLoadSpec>,
-    /// Geometrically nonlinear analysis (not available yet: must be false).
+    /// Geometrically nonlinear analysis (co-rotational FEM, Newton–Raphson with load steps).
     #[serde(default)]
     pub nonlinear: bool,
+    /// Load steps of the nonlinear analysis (default 20; only with `"nonlinear": true`).
+    #[serde(default)]
+    pub steps: Option<usize>,
+}
+
+/// Default number of nonlinear load steps.
+pub const DEFAULT_STEPS: usize = 20;
+
+/// Checks an optional `steps` field (JSON path `path`): 1..=10000, and only when `nonlinear`.
+pub fn check_steps(path: &str, steps: Option<usize>, nonlinear: bool) -> Result<Option<usize>, CaseError> {
+    match (steps, nonlinear) {
+        (Some(n), _) if !(1..=10_000).contains(&n) => Err(CaseError::value(
+            path,
+            n,
+            "the number of load steps must be in 1..=10000",
+        )),
+        (Some(_), false) => Err(CaseError::new(
+            path,
+            "load steps apply to a nonlinear analysis only: add \"nonlinear\": true or remove \"steps\"",
+        )),
+        (s, true) => Ok(Some(s.unwrap_or(DEFAULT_STEPS))),
+        (None, false) => Ok(None),
+    }
 }
 
 /// `"analysis": "fem_vs_fkp"`.
@@ -190,6 +213,9 @@ pub struct FemVsFkpCase {
     pub stage: StageSpec,
     /// Stroke sets, mm.
     pub strokes: Vec<[f64; 3]>,
+    /// Load steps of the nonlinear FEM column (default 20).
+    #[serde(default)]
+    pub steps: Option<usize>,
 }
 
 /// Maps a stage-builder error to a case error under `stage`.
@@ -245,13 +271,7 @@ impl StageCase {
     /// Validates everything before solving.
     pub fn validate(&self) -> Result<(StageDesign, Vec<(String, Drive)>), CaseError> {
         let d = self.stage.design(&self.material)?;
-        if self.nonlinear {
-            return Err(CaseError::value(
-                "nonlinear",
-                "true",
-                "geometrically nonlinear stage analysis is not available in this version; use false",
-            ));
-        }
+        check_steps("steps", self.steps, self.nonlinear)?;
         if self.load_cases.is_empty() {
             return Err(CaseError::new("load_cases", "at least one load case is needed"));
         }
@@ -292,10 +312,23 @@ impl StageCase {
     }
 }
 
+impl StageCase {
+    /// Load steps when the analysis is nonlinear, `None` for linear.
+    pub fn nonlinear_steps(&self) -> Option<usize> {
+        self.nonlinear.then(|| self.steps.unwrap_or(DEFAULT_STEPS))
+    }
+}
+
 impl FemVsFkpCase {
+    /// Load steps of the nonlinear FEM column.
+    pub fn nonlinear_steps(&self) -> usize {
+        self.steps.unwrap_or(DEFAULT_STEPS)
+    }
+
     /// Validates everything before solving.
     pub fn validate(&self) -> Result<StageDesign, CaseError> {
         let d = self.stage.design(&self.material)?;
+        check_steps("steps", self.steps, true)?;
         if self.strokes.is_empty() {
             return Err(CaseError::new("strokes", "give at least one stroke set"));
         }

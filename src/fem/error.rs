@@ -42,6 +42,18 @@ pub enum FemError {
     /// The values given do not fit the pattern (model topology changed).
     #[error("pattern mismatch: {0}")]
     PatternMismatch(String),
+    /// The nonlinear solver could not reach equilibrium (after all step cuts), or the
+    /// configuration became degenerate.
+    #[error(
+        "nonlinear solve, load case {case:?}: {reason} (step {step}, load factor {lambda:.6}, residual {residual:.3e})"
+    )]
+    NonConvergence {
+        case: String,
+        step: usize,
+        lambda: f64,
+        residual: f64,
+        reason: String,
+    },
     /// File output.
     #[error("i/o: {0}")]
     Io(#[from] std::io::Error),

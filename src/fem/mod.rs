@@ -13,11 +13,13 @@
 pub mod analysis;
 pub mod assembly;
 pub mod constraints;
+pub mod corot;
 pub mod dof;
 pub mod element;
 pub mod error;
 pub mod lattice;
 pub mod model;
+pub mod nonlinear;
 pub mod recovery;
 pub mod section;
 pub mod solve;
@@ -30,6 +32,7 @@ pub use model::{
     Beam, Element, FlexElement, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink, Spring, SpringAxes,
     Support, Tie,
 };
+pub use nonlinear::{solve_nonlinear, NonlinearCase, NonlinearOptions, NonlinearResults, PathPoint};
 pub use section::{Section, SectionProps};
 
 /// Result alias for the FEM core.

@@ -1,0 +1,43 @@
+//! Geometrically nonlinear stage load case (seed 000 Table 4 row 1 strokes), 20 load steps,
+//! co-rotational hinges and legs (target < 100 ms).
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use flexfem::case::{self, Case};
+use flexfem::stage::Drive;
+use std::hint::black_box;
+
+const CASE: &str = r#"{"analysis": "stage", "material": "Al7075",
+  "stage": {"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": 0, "leg": {"w": 10, "h": 10},
+            "revolute": {"type": "circular_notch", "R": 8, "t": 2},
+            "spherical": {"type": "spherical_neck", "l": 5, "t": 3, "R": 4}},
+  "load_cases": [{"name": "F20", "actuator_forces": [20, 20, 20]}]}"#;
+
+fn bench(c: &mut Criterion) {
+    let Ok(Case::Stage(sc)) = case::parse(CASE) else {
+        panic!("bench case must parse")
+    };
+    let (design, _) = sc.validate().expect("valid");
+    let s = design.build().expect("builds");
+    let strokes = vec![("row1".to_string(), Drive::Strokes([1.395, 1.531, 1.306]))];
+    c.bench_function("stage_nonlinear_row1_20_steps", |b| {
+        b.iter(|| s.solve_nonlinear(black_box(&strokes), 20).expect("solves"))
+    });
+    let opts = s.nonlinear_options(20);
+    c.bench_function("stage_nonlinear_row1_20_steps_8_hinge_segments", |b| {
+        b.iter(|| {
+            s.solve_nonlinear_segments(black_box(&strokes), &opts, 8)
+                .expect("solves")
+        })
+    });
+    let forces = vec![("F40".to_string(), Drive::Forces([40.0, 40.0, 40.0]))];
+    c.bench_function("stage_nonlinear_f40_20_steps", |b| {
+        b.iter(|| s.solve_nonlinear(black_box(&forces), 20).expect("solves"))
+    });
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default().sample_size(10).measurement_time(std::time::Duration::from_secs(3)).warm_up_time(std::time::Duration::from_millis(500));
+    targets = bench
+}
+criterion_main!(benches);

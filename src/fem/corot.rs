@@ -1,0 +1,409 @@
+//! Co-rotational kinematics of the two-node 3D beam and flexibility element (large rotations,
+//! small strains), after J.-M. Battini & C. Pacoste, "Co-rotational beam elements with warping
+//! effects in instability problems", CMAME 191 (2002) 1755–1789, §3, and M. A. Crisfield,
+//! "A consistent co-rotational formulation for non-linear, three-dimensional, beam-elements",
+//! CMAME 81 (1990) 131–150.
+//!
+//! The element's rigid motion is split off by the co-rotated frame Rr = [r₁ r₂ r₃]:
+//!
+//! ```text
+//! r₁ = (x₂ − x₁)/lₙ,   q = ½(R₁R₀e₂ + R₂R₀e₂),   r₃ = r₁ × q/|r₁ × q|,   r₂ = r₃ × r₁
+//! ū = lₙ − l₀,         θ̄ᵢ = log(Rrᵀ Rᵢ R₀)       (i = 1, 2)
+//! ```
+//! (R₀: columns are the initial local axes; Rᵢ: nodal rotations, updated multiplicatively
+//! Rᵢ ← exp(δwᵢ)Rᵢ with the spatial spin δwᵢ as rotational increment). The seven local
+//! deformations p = [ū, θ̄₁, θ̄₂] feed the element's *linear* local stiffness k (Timoshenko
+//! beam [`super::element::beam_local_stiffness`] or flexibility element
+//! [`super::element::flex_local_stiffness`]) on the DOFs (u₂; θx₁ θy₁ θz₁; θx₂ θy₂ θz₂), the
+//! other five local DOFs being zero in the co-rotated frame (node 1 at the origin, node 2 on r₁).
+//!
+//! First variation δp = B δd (δd = [δu₁ δw₁ δu₂ δw₂], global):
+//!
+//! ```text
+//! δū  = r·δd,  r = [−r₁ᵀ 0 r₁ᵀ 0]
+//! δθ̄ᵢ = Ts⁻¹(θ̄ᵢ) Pᵢ Eᵀ δd,   P = [[0 I 0 0]; [0 0 0 I]] − [Gᵀ; Gᵀ],   E = diag(Rr, Rr, Rr, Rr)
+//! Gᵀ = [[0 0 η/lₙ  η₁₂/2 −η₁₁/2 0  0 0 −η/lₙ  η₂₂/2 −η₂₁/2 0]
+//!       [0 0 1/lₙ  0 0 0           0 0 −1/lₙ  0 0 0]
+//!       [0 −1/lₙ 0 0 0 0           0 1/lₙ 0   0 0 0]]
+//! Ts⁻¹(θ) = a I + (1 − a) e eᵀ − ½[θ×],  a = (θ/2)/tan(θ/2),  e = θ/|θ|
+//! ```
+//! with η = q₁/q₂, ηᵢⱼ = qᵢⱼ/q₂ (components of q and qᵢ = RᵢR₀e₂ in the co-rotated frame).
+//! Internal force f = Bᵀ k₇ p (exact first variation of the strain energy ½ pᵀk₇p); tangent
+//! K = Bᵀ k₇ B + ∂(Bᵀ f₇)/∂d|_{f₇ fixed}: the material part is closed form, the geometric part
+//! (the derivative of B: the terms D, Q, a, K_h of Battini–Pacoste eqs. (40)–(48)) is
+//! evaluated by central differences of the closed-form B at fixed local forces (12 pairs of
+//! B evaluations, relative error ~1e-10), so K is the consistent tangent to that accuracy.
+
+use super::transform::{skew, Mat12};
+use nalgebra::{Matrix3, Rotation3, SMatrix, SVector, Vector3};
+
+/// 7×12 matrix.
+pub type Mat7x12 = SMatrix<f64, 7, 12>;
+/// 7×7 matrix.
+pub type Mat7 = SMatrix<f64, 7, 7>;
+/// 7-vector.
+pub type Vec7 = SVector<f64, 7>;
+/// 12-vector.
+pub type Vec12 = SVector<f64, 12>;
+
+/// Local DOFs (of the 12) that carry the co-rotational deformations [ū, θ̄₁, θ̄₂].
+pub const LOCAL_IDX: [usize; 7] = [6, 3, 4, 5, 9, 10, 11];
+
+/// Rotation matrix exp([θ×]) (Rodrigues).
+pub fn rot_exp(theta: &Vector3<f64>) -> Matrix3<f64> {
+    Rotation3::new(*theta).into_inner()
+}
+
+/// Rotation vector θ with exp([θ×]) = R (|θ| ≤ π). Accurate for small angles (from the skew
+/// part, no arccos); near π the axis comes from the symmetric part.
+pub fn rot_log(r: &Matrix3<f64>) -> Vector3<f64> {
+    let ax = 0.5 * Vector3::new(r[(2, 1)] - r[(1, 2)], r[(0, 2)] - r[(2, 0)], r[(1, 0)] - r[(0, 1)]);
+    let s = ax.norm();
+    let c = 0.5 * (r.trace() - 1.0);
+    let theta = s.atan2(c);
+    let v = if c > -0.9 {
+        // θ/sin θ → 1 as θ → 0.
+        if s < 1e-300 {
+            Vector3::zeros()
+        } else {
+            ax * (theta / s)
+        }
+    } else {
+        // (R + Rᵀ)/2 = cos θ I + (1 − cos θ) n nᵀ.
+        let b = (0.5 * (r + r.transpose()) - Matrix3::identity() * c) / (1.0 - c);
+        let mut k = 0;
+        for i in 1..3 {
+            if b[(i, i)] > b[(k, k)] {
+                k = i;
+            }
+        }
+        let mut n = b.column(k).into_owned();
+        let nn = n.norm();
+        if nn > 0.0 {
+            n /= nn;
+        }
+        if n.dot(&ax) < 0.0 {
+            n = -n;
+        }
+        n * theta
+    };
+    if v.iter().all(|x| x.is_finite()) {
+        v
+    } else {
+        Vector3::zeros()
+    }
+}
+
+/// Ts⁻¹(θ): maps a spatial spin δw of R = exp(θ) to the additive variation δθ
+/// (Battini–Pacoste 2002 eq. (14)).
+pub fn ts_inv(theta: &Vector3<f64>) -> Matrix3<f64> {
+    let t = theta.norm();
+    if t < 1e-8 {
+        return Matrix3::identity() - 0.5 * skew(theta);
+    }
+    let h = 0.5 * t;
+    let a = h / h.tan();
+    let e = theta / t;
+    Matrix3::identity() * a + (1.0 - a) * e * e.transpose() - 0.5 * skew(theta)
+}
+
+/// Reference geometry of a co-rotational element.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CorotGeometry {
+    /// Initial node coordinates, mm.
+    pub x1: Vector3<f64>,
+    pub x2: Vector3<f64>,
+    /// Initial local axes as columns (R₀ = Λᵀ).
+    pub r0: Matrix3<f64>,
+    /// Initial length, mm.
+    pub l0: f64,
+}
+
+/// Current nodal state of an element: translations (mm) and rotation matrices.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NodeState {
+    pub u: Vector3<f64>,
+    pub r: Matrix3<f64>,
+}
+
+impl Default for NodeState {
+    fn default() -> Self {
+        NodeState {
+            u: Vector3::zeros(),
+            r: Matrix3::identity(),
+        }
+    }
+}
+
+/// Kinematics of one element at one configuration.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Kinematics {
+    /// Co-rotated frame Rr (columns r₁ r₂ r₃).
+    pub rr: Matrix3<f64>,
+    /// Local deformations p = [ū, θ̄₁, θ̄₂].
+    pub p: Vec7,
+    /// δp = B δd.
+    pub b: Mat7x12,
+    /// Current length, mm.
+    pub ln: f64,
+}
+
+/// Kinematics of the element (see the module docs). `None` for a degenerate configuration
+/// (zero length, r₁ parallel to q, non-finite input).
+pub fn kinematics(g: &CorotGeometry, n1: &NodeState, n2: &NodeState) -> Option<Kinematics> {
+    // (X₂ − X₁) + (u₂ − u₁): round-off relative to the element length, not to the coordinates.
+    let x21 = (g.x2 - g.x1) + (n2.u - n1.u);
+    let ln = x21.norm();
+    if !(ln > 0.0 && ln.is_finite()) {
+        return None;
+    }
+    let r1 = x21 / ln;
+    let e2 = g.r0.column(1).into_owned();
+    let q1 = n1.r * e2;
+    let q2 = n2.r * e2;
+    let q = 0.5 * (q1 + q2);
+    let r3 = r1.cross(&q);
+    let n3 = r3.norm();
+    if !(n3 > 1e-12 && n3.is_finite()) {
+        return None;
+    }
+    let r3 = r3 / n3;
+    let r2 = r3.cross(&r1);
+    let rr = Matrix3::from_columns(&[r1, r2, r3]);
+    let rrt = rr.transpose();
+    let th1 = rot_log(&(rrt * n1.r * g.r0));
+    let th2 = rot_log(&(rrt * n2.r * g.r0));
+    let ql = rrt * q;
+    let q1l = rrt * q1;
+    let q2l = rrt * q2;
+    let eta = ql[0] / ql[1];
+    let (e11, e12) = (q1l[0] / ql[1], q1l[1] / ql[1]);
+    let (e21, e22) = (q2l[0] / ql[1], q2l[1] / ql[1]);
+    // Gᵀ (3×12, local components).
+    let mut gt = SMatrix::<f64, 3, 12>::zeros();
+    gt[(0, 2)] = eta / ln;
+    gt[(0, 3)] = 0.5 * e12;
+    gt[(0, 4)] = -0.5 * e11;
+    gt[(0, 8)] = -eta / ln;
+    gt[(0, 9)] = 0.5 * e22;
+    gt[(0, 10)] = -0.5 * e21;
+    gt[(1, 2)] = 1.0 / ln;
+    gt[(1, 8)] = -1.0 / ln;
+    gt[(2, 1)] = -1.0 / ln;
+    gt[(2, 7)] = 1.0 / ln;
+    // P Eᵀ: Pᵢ = [spin of node i, local] − Gᵀ; Eᵀ rotates every 3-block to local.
+    let mut b = Mat7x12::zeros();
+    for j in 0..3 {
+        b[(0, j)] = -r1[j];
+        b[(0, 6 + j)] = r1[j];
+    }
+    for (i, th) in [(0usize, &th1), (1usize, &th2)] {
+        let mut pi = -gt;
+        for k in 0..3 {
+            pi[(k, 3 + 6 * i + k)] += 1.0;
+        }
+        // Pᵢ Eᵀ: column block c of Pᵢ times Rrᵀ.
+        let mut pe = SMatrix::<f64, 3, 12>::zeros();
+        for c in 0..4 {
+            let blk = pi.fixed_view::<3, 3>(0, 3 * c) * rrt;
+            pe.fixed_view_mut::<3, 3>(0, 3 * c).copy_from(&blk);
+        }
+        let rows = ts_inv(th) * pe;
+        b.fixed_view_mut::<3, 12>(1 + 3 * i, 0).copy_from(&rows);
+    }
+    let mut p = Vec7::zeros();
+    // ū = (lₙ² − l₀²)/(lₙ + l₀) with lₙ² − l₀² = (2 X₂₁ + Δ)·Δ: no cancellation for small Δ.
+    let dx = n2.u - n1.u;
+    let x0 = g.x2 - g.x1;
+    p[0] = (2.0 * x0 + dx).dot(&dx) / (ln + g.l0);
+    p.fixed_rows_mut::<3>(1).copy_from(&th1);
+    p.fixed_rows_mut::<3>(4).copy_from(&th2);
+    Some(Kinematics { rr, p, b, ln })
+}
+
+/// The 7×7 block of a 12×12 local stiffness on [`LOCAL_IDX`].
+pub fn k7_of(k: &Mat12) -> Mat7 {
+    Mat7::from_fn(|i, j| k[(LOCAL_IDX[i], LOCAL_IDX[j])])
+}
+
+/// Local 12-vector d = [0 0 0 θ̄₁ ū 0 0 θ̄₂] of the deformations p.
+pub fn local_d(p: &Vec7) -> Vec12 {
+    let mut d = Vec12::zeros();
+    for (i, &l) in LOCAL_IDX.iter().enumerate() {
+        d[l] = p[i];
+    }
+    d
+}
+
+/// Internal force, tangent and local results of one element.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CorotResponse {
+    /// Global internal force on [node 1, node 2] (N, N·mm).
+    pub f: Vec12,
+    /// Consistent tangent (not symmetrised), global.
+    pub k: Mat12,
+    /// Local end forces f = k d of the linear local element in the co-rotated frame.
+    pub f_local: Vec12,
+    /// Local deformations.
+    pub d_local: Vec12,
+    /// Co-rotated frame.
+    pub rr: Matrix3<f64>,
+}
+
+fn perturbed(n: &NodeState, j: usize, h: f64) -> NodeState {
+    let mut m = *n;
+    if j < 3 {
+        m.u[j] += h;
+    } else {
+        let mut w = Vector3::zeros();
+        w[j - 3] = h;
+        m.r = rot_exp(&w) * n.r;
+    }
+    m
+}
+
+/// Internal force and consistent tangent of a co-rotational element with linear local
+/// stiffness `k_local` (12×12, local axes of the initial frame). `with_tangent = false`
+/// skips the tangent (zero matrix). `None` for a degenerate configuration.
+pub fn response(
+    g: &CorotGeometry,
+    k_local: &Mat12,
+    n1: &NodeState,
+    n2: &NodeState,
+    with_tangent: bool,
+) -> Option<CorotResponse> {
+    let kin = kinematics(g, n1, n2)?;
+    let k7 = k7_of(k_local);
+    let f7 = k7 * kin.p;
+    let f = kin.b.transpose() * f7;
+    let d_local = local_d(&kin.p);
+    let f_local = k_local * d_local;
+    let mut k = Mat12::zeros();
+    if with_tangent {
+        k = kin.b.transpose() * k7 * kin.b;
+        // Geometric part: central differences of Bᵀ f₇ at fixed f₇.
+        let ht = 1e-6 * g.l0.max(1e-12);
+        let hr = 1e-6;
+        for j in 0..12 {
+            let (node, dof) = (j / 6, j % 6);
+            let h = if dof < 3 { ht } else { hr };
+            let mut cols = [Vec12::zeros(); 2];
+            for (s, col) in [h, -h].iter().zip(cols.iter_mut()) {
+                let (a, b) = if node == 0 {
+                    (perturbed(n1, dof, *s), *n2)
+                } else {
+                    (*n1, perturbed(n2, dof, *s))
+                };
+                let kp = kinematics(g, &a, &b)?;
+                *col = kp.b.transpose() * f7;
+            }
+            let dcol = (cols[0] - cols[1]) / (2.0 * h);
+            for i in 0..12 {
+                k[(i, j)] += dcol[i];
+            }
+        }
+    }
+    if f.iter().any(|v| !v.is_finite()) || k.iter().any(|v| !v.is_finite()) {
+        return None;
+    }
+    Some(CorotResponse {
+        f,
+        k,
+        f_local,
+        d_local,
+        rr: kin.rr,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn geom() -> CorotGeometry {
+        CorotGeometry {
+            x1: Vector3::new(0.0, 0.0, 0.0),
+            x2: Vector3::new(10.0, 2.0, -1.0),
+            r0: crate::fem::transform::beam_frame([0.0; 3], [10.0, 2.0, -1.0], [0.0, 0.0, 1.0])
+                .map(|(l, _)| l.transpose())
+                .unwrap_or_else(Matrix3::identity),
+            l0: (105.0f64).sqrt(),
+        }
+    }
+
+    fn energy(g: &CorotGeometry, k7: &Mat7, a: &NodeState, b: &NodeState) -> f64 {
+        let kin = kinematics(g, a, b).unwrap_or_else(|| panic!("degenerate"));
+        0.5 * kin.p.dot(&(k7 * kin.p))
+    }
+
+    fn state() -> (NodeState, NodeState) {
+        (
+            NodeState {
+                u: Vector3::new(0.3, -0.2, 0.5),
+                r: rot_exp(&Vector3::new(0.4, -0.3, 0.7)),
+            },
+            NodeState {
+                u: Vector3::new(-1.0, 2.0, 0.7),
+                r: rot_exp(&Vector3::new(-0.2, 0.5, 0.9)),
+            },
+        )
+    }
+
+    fn k_local() -> Mat12 {
+        let p = crate::fem::Section::Rect { w: 1.0, h: 2.0 }.properties(0.3);
+        crate::fem::element::beam_local_stiffness(1000.0, 400.0, &p, 105f64.sqrt(), true)
+    }
+
+    /// f = ∂U/∂d (spin variations) and K = ∂f/∂d, by finite differences of the energy and force.
+    #[test]
+    fn force_and_tangent_are_consistent() {
+        let g = geom();
+        let kl = k_local();
+        let k7 = k7_of(&kl);
+        let (a, b) = state();
+        let r = response(&g, &kl, &a, &b, true).unwrap_or_else(|| panic!("degenerate"));
+        let h = 1e-6;
+        for j in 0..12 {
+            let (node, dof) = (j / 6, j % 6);
+            let e = |s: f64| {
+                let (x, y) = if node == 0 {
+                    (perturbed(&a, dof, s), b)
+                } else {
+                    (a, perturbed(&b, dof, s))
+                };
+                (energy(&g, &k7, &x, &y), response(&g, &kl, &x, &y, false).map(|r| r.f))
+            };
+            let (ep, fp) = e(h);
+            let (em, fm) = e(-h);
+            let fd = (ep - em) / (2.0 * h);
+            assert!((fd - r.f[j]).abs() < 1e-5 * r.f.amax(), "f[{j}]: {fd} vs {}", r.f[j]);
+            let (fp, fm) = (fp.unwrap_or_default(), fm.unwrap_or_default());
+            let col = (fp - fm) / (2.0 * h);
+            for i in 0..12 {
+                assert!(
+                    (col[i] - r.k[(i, j)]).abs() < 1e-5 * r.k.amax(),
+                    "K[{i},{j}]: {} vs {}",
+                    col[i],
+                    r.k[(i, j)]
+                );
+            }
+        }
+    }
+
+    /// A rigid motion gives no deformation and no force.
+    #[test]
+    fn rigid_motion_is_force_free() {
+        let g = geom();
+        let rot = rot_exp(&Vector3::new(1.0, -2.0, 0.5));
+        let t = Vector3::new(3.0, 4.0, -5.0);
+        let a = NodeState {
+            u: rot * g.x1 + t - g.x1,
+            r: rot,
+        };
+        let b = NodeState {
+            u: rot * g.x2 + t - g.x2,
+            r: rot,
+        };
+        let r = response(&g, &k_local(), &a, &b, false).unwrap_or_else(|| panic!("degenerate"));
+        assert!(r.f.amax() < 1e-9, "{:?}", r.f);
+    }
+}
