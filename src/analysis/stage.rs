@@ -5,7 +5,7 @@ use crate::case::stage::{stage_error, FemVsFkpCase, StageCase};
 use crate::kinematics::Pose;
 use crate::report::markdown::{dms, sig, Table};
 use crate::report::svg;
-use crate::stage::{self, Drive, PoseChange, StageCaseResult, StageModel};
+use crate::stage::{self, Drive, StageCaseResult, StageModel};
 use serde::Serialize;
 
 /// A platform pose in output units: mm and degrees.
@@ -23,19 +23,6 @@ pub struct PoseOut {
     pub theta_deg: f64,
     /// degrees.
     pub phi_deg: f64,
-}
-
-impl From<PoseChange> for PoseOut {
-    fn from(p: PoseChange) -> Self {
-        PoseOut {
-            x: p.x,
-            y: p.y,
-            z: p.z,
-            psi_deg: p.psi.to_degrees(),
-            theta_deg: p.theta.to_degrees(),
-            phi_deg: p.phi.to_degrees(),
-        }
-    }
 }
 
 impl From<Pose> for PoseOut {

@@ -119,22 +119,10 @@ pub enum Drive {
     Strokes([f64; 3]),
 }
 
-/// Platform pose change (linear: rotations are the small-rotation vector components).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct PoseChange {
-    /// Translation of P, mm.
-    pub x: f64,
-    /// Translation of P, mm.
-    pub y: f64,
-    /// Translation of P, mm.
-    pub z: f64,
-    /// Rotation about x, rad.
-    pub psi: f64,
-    /// Rotation about y, rad.
-    pub theta: f64,
-    /// Rotation about z, rad.
-    pub phi: f64,
-}
+/// Platform pose change from home: the kinematics' [`Pose`](crate::kinematics::Pose) (x, y, z in
+/// mm; ψ, θ, φ in rad — in linear analyses the small-rotation vector components, in nonlinear
+/// ones the angles of R = Ry(θ)·Rx(ψ)·Rz(φ)).
+pub type PoseChange = crate::kinematics::Pose;
 
 /// Result of one stage load case.
 #[derive(Debug, Clone, PartialEq)]
