@@ -17,9 +17,12 @@ pub mod dof;
 pub mod element;
 pub mod error;
 pub mod lattice;
+pub mod mass;
+pub mod modal;
 pub mod model;
 pub mod recovery;
 pub mod section;
+pub mod shell;
 pub mod solve;
 pub mod transform;
 
@@ -27,7 +30,7 @@ pub use analysis::{solve_static, solve_static_with, CaseResult, StaticResults, S
 pub use dof::{Dof, NodeDof};
 pub use error::FemError;
 pub use model::{
-    Beam, Element, FlexElement, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink, Spring, SpringAxes,
+    Beam, Element, FlexElement, Shell4, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink, Spring, SpringAxes,
     Support, Tie,
 };
 pub use section::{Section, SectionProps};
