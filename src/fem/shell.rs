@@ -4,8 +4,9 @@
 //!   constant-Jacobian correction, so the patch test passes; E. L. Wilson et al. 1973,
 //!   R. L. Taylor et al., IJNME 10 (1976) 1211), condensed statically, plus the drilling rotation
 //!   by Hughes–Brezzi penalty γ·t∫(θz − ½(∂v/∂x − ∂u/∂y))² dA with γ = G evaluated at the centre
-//!   (T. J. R. Hughes, F. Brezzi, CMAME 72 (1989) 105; one point, so it cannot lock) and a weak
-//!   hourglass term γₕ = 10⁻³·G on the θz checkerboard mode that one point leaves free.
+//!   (T. J. R. Hughes, F. Brezzi, CMAME 72 (1989) 105; one point, so it cannot lock) plus the
+//!   same penalty 2×2-integrated with 10⁻³·G, which removes the zero-energy θz patterns (linear
+//!   and checkerboard) that one point leaves free.
 //! * **Bending and transverse shear**: MITC4 (E. N. Dvorkin, K.-J. Bathe, Eng. Comput. 1 (1984)
 //!   77): Reissner–Mindlin curvatures from bilinear rotations, 2×2 Gauss; covariant transverse
 //!   shear strains tied at the edge midpoints (γ_ξ at (0, ±1), γ_η at (±1, 0)), shear factor 5/6.
@@ -32,8 +33,8 @@ const ETA: [f64; 4] = [-1.0, -1.0, 1.0, 1.0];
 const G2: f64 = 0.577_350_269_189_625_8;
 /// Shear correction factor of the Reissner–Mindlin plate.
 const KAPPA: f64 = 5.0 / 6.0;
-/// Hourglass (checkerboard) stabilisation of the drilling rotation, relative to γ = G.
-const DRILL_HOURGLASS: f64 = 1e-3;
+/// Weight of the fully integrated drilling penalty, relative to γ = G.
+const DRILL_STAB: f64 = 1e-3;
 
 /// Geometry of one element: local frame, projected node coordinates, warping offsets.
 #[derive(Debug, Clone, PartialEq)]
@@ -194,11 +195,20 @@ fn membrane(xy: &[[f64; 2]; 4], t: f64, mat: &Material) -> Option<SMatrix<f64, 1
     }
     let area = 4.0 * det0;
     k += r * r.transpose() * (g * t * area);
-    let mut h = SVector::<f64, 12>::zeros();
-    for i in 0..4 {
-        h[3 * i + 2] = 0.25 * XI[i] * ETA[i];
+    // Weak 2×2 penalty: removes the zero-energy θz patterns that the centre point leaves
+    // (linear and checkerboard ω with zero mean).
+    for &xi in &[-G2, G2] {
+        for &eta in &[-G2, G2] {
+            let (n, dx, dy, det, _) = cartesian(xy, xi, eta)?;
+            let mut r = SVector::<f64, 12>::zeros();
+            for i in 0..4 {
+                r[3 * i] = 0.5 * dy[i];
+                r[3 * i + 1] = -0.5 * dx[i];
+                r[3 * i + 2] = n[i];
+            }
+            k += r * r.transpose() * (DRILL_STAB * g * t * det);
+        }
     }
-    k += h * h.transpose() * (DRILL_HOURGLASS * g * t * area);
     Some((k + k.transpose()) * 0.5)
 }
 

@@ -147,6 +147,20 @@ impl SparseMatrix {
         y
     }
 
+    /// a·self + b·other for two matrices on the same pattern (e.g. K − σM from one
+    /// [`SparsePattern`]); `None` if the patterns differ.
+    pub fn lin_comb(&self, a: f64, other: &SparseMatrix, b: f64) -> Option<SparseMatrix> {
+        let (s1, s2) = (self.mat.symbolic(), other.mat.symbolic());
+        if s1.col_ptr() != s2.col_ptr() || s1.row_idx() != s2.row_idx() {
+            return None;
+        }
+        let mut out = self.clone();
+        for (v, w) in out.mat.val_mut().iter_mut().zip(other.mat.val()) {
+            *v = a * *v + b * w;
+        }
+        Some(out)
+    }
+
     /// K + eps·diag(K) (the pattern must hold the diagonal, which
     /// [`super::assembly::Pattern`] guarantees).
     pub fn shifted_scaled(&self, eps: f64) -> SparseMatrix {
