@@ -77,6 +77,8 @@ pub fn solve(model: &Model) -> Result<(StaticResult, fem::StaticResults), Analys
         "linear statics, small displacements".to_string(),
         "beams: 2-node exact Timoshenko (Euler–Bernoulli where \"shear\": false); stresses at section critical points"
             .to_string(),
+        "shells: 4-node flat shell (membrane with drilling rotation, MITC4 bending/shear); von Mises at the element centre, max of top/mid/bottom"
+            .to_string(),
     ];
     Ok((
         StaticResult {
@@ -115,4 +117,43 @@ pub fn report(r: &StaticResult) -> Report {
         md += "\n";
     }
     Report { markdown: md, csv }
+}
+
+/// One `.vtu` per load case (`static_<k>.vtu`): lines and quads, displacement and rotation, and
+/// the element von Mises stress (max over the ends / shell surfaces; 0 where none).
+pub fn vtu_files(model: &Model, res: &fem::StaticResults) -> Result<Vec<(String, Vec<u8>)>, AnalysisError> {
+    let (lines, quads) = super::modal::cells(model);
+    let mut order: Vec<usize> = Vec::new();
+    let mut line_elems = Vec::new();
+    let mut quad_elems = Vec::new();
+    for (ie, e) in model.elements.iter().enumerate() {
+        match e {
+            fem::Element::Shell4(_) => quad_elems.push(ie),
+            fem::Element::Spring(s) if s.b.is_none() => {}
+            _ => line_elems.push(ie),
+        }
+    }
+    order.extend(line_elems);
+    order.extend(quad_elems);
+    let mut files = Vec::new();
+    for (k, c) in res.load_cases.iter().enumerate() {
+        let disp: Vec<[f64; 3]> = c.displacements.iter().map(|d| [d[0], d[1], d[2]]).collect();
+        let rot: Vec<[f64; 3]> = c.displacements.iter().map(|d| [d[3], d[4], d[5]]).collect();
+        let vm: Vec<f64> = order
+            .iter()
+            .map(|&ie| c.elements.get(ie).and_then(|e| e.max_von_mises()).unwrap_or(0.0))
+            .collect();
+        let mesh = crate::report::vtk::VtuMesh {
+            points: &model.nodes,
+            lines: &lines,
+            quads: &quads,
+            displacement: &disp,
+            rotation: &rot,
+            cell_scalars: vec![("von_mises", &vm)],
+            ..Default::default()
+        };
+        let text = crate::report::vtk::to_string(&mesh).map_err(|e| AnalysisError::new("output", e.to_string()))?;
+        files.push((format!("static_{}.vtu", k + 1), text.into_bytes()));
+    }
+    Ok(files)
 }

@@ -3,6 +3,7 @@
 pub mod fem_static;
 pub mod hinge;
 pub mod kinematics;
+pub mod modal;
 pub mod stage;
 
 use crate::case::{Case, CaseError};
@@ -99,6 +100,7 @@ pub fn check(case: &Case) -> Result<(), CaseError> {
         Case::Sweep(s) => s.build().map(|_| ()),
         Case::Stage(s) => s.validate().map(|_| ()),
         Case::FemVsFkp(s) => s.validate().map(|_| ()),
+        Case::Modal(m) => m.model.build_model(false).map(|_| ()),
     }
 }
 
@@ -116,11 +118,20 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
         }
         Case::Static(s) => {
             let model = s.model.build()?;
-            let (r, _raw) = fem_static::solve(&model)?;
+            let (r, raw) = fem_static::solve(&model)?;
             Ok(Outcome {
                 json: to_json(&r)?,
                 report: fem_static::report(&r),
-                files: vec![],
+                files: fem_static::vtu_files(&model, &raw)?,
+            })
+        }
+        Case::Modal(m) => {
+            let model = m.model.build_model(false)?;
+            let (r, raw) = modal::solve(&model, m.modes, m.shift_hz)?;
+            Ok(Outcome {
+                json: to_json(&r)?,
+                report: modal::report(&r),
+                files: vec![("modes.vtu".to_string(), modal::vtu(&model, &raw)?)],
             })
         }
         Case::Sweep(_) => Err(RunError::Case(CaseError::value(

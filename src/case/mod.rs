@@ -35,10 +35,12 @@ pub enum Case {
     Stage(stage::StageCase),
     /// FEM versus rigid-body forward kinematics.
     FemVsFkp(stage::FemVsFkpCase),
+    /// Natural frequencies and mode shapes of a generic beam/shell model.
+    Modal(mesh::ModalCase),
 }
 
 /// The `analysis` names this build understands.
-pub const ANALYSES: &[&str] = &["kinematics", "hinge", "stage", "fem_vs_fkp", "static", "sweep"];
+pub const ANALYSES: &[&str] = &["kinematics", "hinge", "stage", "fem_vs_fkp", "static", "modal", "sweep"];
 
 impl Case {
     /// The `analysis` name.
@@ -50,6 +52,7 @@ impl Case {
             Case::Sweep(_) => "sweep",
             Case::Stage(_) => "stage",
             Case::FemVsFkp(_) => "fem_vs_fkp",
+            Case::Modal(_) => "modal",
         }
     }
 }
@@ -142,11 +145,34 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
         "sweep" => Ok(Case::Sweep(from_value(value, "")?)),
         "stage" => Ok(Case::Stage(from_value(value, "")?)),
         "fem_vs_fkp" => Ok(Case::FemVsFkp(from_value(value, "")?)),
-        "static" => {
+        "static" | "modal" => {
             let mesh_name = match map.remove("mesh") {
                 None | Some(Value::Null) => None,
                 Some(Value::String(s)) => Some(s),
                 Some(other) => return Err(CaseError::value("mesh", short(&other), "must be a file name (string)")),
+            };
+            let modal = if analysis == "modal" {
+                let modes = match map.remove("modes") {
+                    Some(Value::Number(n)) => match n.as_u64() {
+                        Some(k) if (1..=1000).contains(&k) => k as usize,
+                        _ => return Err(CaseError::value("modes", n.to_string(), "must be an integer from 1 to 1000")),
+                    },
+                    Some(other) => {
+                        return Err(CaseError::value("modes", short(&other), "must be an integer from 1 to 1000"))
+                    }
+                    None => return Err(CaseError::new("modes", "missing field `modes` (number of modes wanted)")),
+                };
+                let shift_hz = match map.remove("shift_hz") {
+                    None | Some(Value::Null) => None,
+                    Some(Value::Number(n)) => match n.as_f64() {
+                        Some(f) if f.is_finite() && f >= 0.0 => Some(f),
+                        _ => return Err(CaseError::value("shift_hz", n.to_string(), "must be a frequency ≥ 0, Hz")),
+                    },
+                    Some(other) => return Err(CaseError::value("shift_hz", short(&other), "must be a frequency ≥ 0, Hz")),
+                };
+                Some((modes, shift_hz))
+            } else {
+                None
             };
             let inline: mesh::MeshSpec = from_value(value, "")?;
             let model = match &mesh_name {
@@ -165,7 +191,15 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                 }
                 None => inline,
             };
-            Ok(Case::Static(mesh::StaticCase { mesh: mesh_name, model }))
+            Ok(match modal {
+                Some((modes, shift_hz)) => Case::Modal(mesh::ModalCase {
+                    mesh: mesh_name,
+                    modes,
+                    shift_hz,
+                    model,
+                }),
+                None => Case::Static(mesh::StaticCase { mesh: mesh_name, model }),
+            })
         }
         other => Err(CaseError::value(
             "analysis",
