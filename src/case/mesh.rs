@@ -131,7 +131,7 @@ pub enum ElementSpec {
         /// Slave nodes.
         slaves: Vec<usize>,
     },
-    /// 4-node flat shell.
+    /// 4-node flat shell (a triangle as the degenerate quad [a, b, c, c]).
     Shell4 {
         /// Node indices.
         nodes: [usize; 4],
@@ -449,13 +449,14 @@ impl MeshSpec {
                     for (k, &nd) in nodes.iter().enumerate() {
                         ns[k] = node_ref(format!("{p}.nodes[{k}]"), nd)?;
                     }
+                    // A triangle may be given as a degenerate quad [a, b, c, c].
                     for a in 0..4 {
                         for b in 0..a {
-                            if ns[a] == ns[b] {
+                            if ns[a] == ns[b] && !(a == 3 && b == 2) {
                                 return Err(CaseError::value(
                                     format!("{p}.nodes"),
                                     format!("{ns:?}"),
-                                    "a shell4 needs four different nodes",
+                                    "a shell4 needs four different nodes (or [a, b, c, c] for a triangle)",
                                 ));
                             }
                         }

@@ -5,6 +5,7 @@
 //! `serde_path_to_error` with unknown fields refused.
 
 pub mod error;
+pub mod gmsh;
 pub mod hinge;
 pub mod kinematics;
 pub mod material;
@@ -174,8 +175,30 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
             } else {
                 None
             };
+            let gmsh_map = match map.remove("gmsh") {
+                None | Some(Value::Null) => None,
+                Some(v) => Some(from_value::<gmsh::GmshMapping>(v, "gmsh")?),
+            };
             let inline: mesh::MeshSpec = from_value(value, "")?;
             let model = match &mesh_name {
+                Some(name) if name.ends_with(".msh") => {
+                    let Some(mapping) = gmsh_map else {
+                        return Err(CaseError::new(
+                            "gmsh",
+                            "a .msh mesh needs a `gmsh` mapping: {\"groups\": {\"NAME\": {\"section\", \"material\"} or {\"fix\": [...]}}}",
+                        ));
+                    };
+                    let file = resolve_file(name, base);
+                    let text = std::fs::read_to_string(&file).map_err(|e| {
+                        CaseError::value("mesh", format!("\"{name}\""), format!("cannot read {}: {e}", file.display()))
+                    })?;
+                    let (from_file, _notes) = gmsh::parse_msh(&text, &mapping)
+                        .map_err(|e| CaseError::new(e.path.clone(), format!("in {name}: {}", e.message)))?;
+                    mesh::MeshSpec::merge_inline(from_file, inline)?
+                }
+                Some(_) if gmsh_map.is_some() => {
+                    return Err(CaseError::new("gmsh", "a `gmsh` mapping is only used with a .msh mesh file"))
+                }
                 Some(name) => {
                     let mut mv = read_json("mesh", name, base)?;
                     if let Value::Object(m) = &mut mv {
@@ -188,6 +211,9 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                         )
                     })?;
                     mesh::MeshSpec::merge_inline(from_file, inline)?
+                }
+                None if gmsh_map.is_some() => {
+                    return Err(CaseError::new("gmsh", "a `gmsh` mapping is only used with a .msh mesh file"))
                 }
                 None => inline,
             };

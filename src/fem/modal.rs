@@ -13,7 +13,8 @@ use super::assembly::{MatrixKind, Pattern};
 use super::constraints::DofMap;
 use super::error::FemError;
 use super::model::Model;
-use super::solve::{Factor, FactorError, Parallelism, SparseMatrix, SymbolicFactor};
+use super::solve::{Factor, FactorError, FullSymmetric, Parallelism, SparseMatrix, SymbolicFactor};
+use rayon::prelude::*;
 use nalgebra::{DMatrix, Vector3, Vector6};
 
 /// Options of [`solve_modal`].
@@ -36,7 +37,7 @@ impl ModalOptions {
         ModalOptions {
             n_modes: n,
             shift: None,
-            tol: 1e-9,
+            tol: 1e-6,
             par: Parallelism::Rayon,
         }
     }
@@ -90,14 +91,38 @@ fn random_vec(n: usize, seed: u64) -> Vec<f64> {
         .collect()
 }
 
+const CHUNK: usize = 4096;
+
 fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
+    a.par_chunks(CHUNK)
+        .zip(b.par_chunks(CHUNK))
+        .map(|(x, y)| x.iter().zip(y).map(|(p, q)| p * q).sum::<f64>())
+        .sum()
 }
 
 fn axpy(y: &mut [f64], a: f64, x: &[f64]) {
-    for (yi, xi) in y.iter_mut().zip(x) {
-        *yi += a * xi;
-    }
+    y.par_chunks_mut(CHUNK).zip(x.par_chunks(CHUNK)).for_each(|(ys, xs)| {
+        for (yi, xi) in ys.iter_mut().zip(xs) {
+            *yi += a * xi;
+        }
+    });
+}
+
+/// Coefficients (M vᵢ)ᵀ x for every basis vector at once (one parallel pass per vector).
+fn dots(mbasis: &[Vec<f64>], x: &[f64]) -> Vec<f64> {
+    mbasis.par_iter().map(|mv| mv.iter().zip(x).map(|(p, q)| p * q).sum()).collect()
+}
+
+/// x −= Σ cᵢ vᵢ, in parallel over chunks of x.
+fn subtract(x: &mut [f64], basis: &[Vec<f64>], c: &[f64]) {
+    x.par_chunks_mut(CHUNK).enumerate().for_each(|(k, xs)| {
+        let (off, len) = (k * CHUNK, xs.len());
+        for (v, &ci) in basis.iter().zip(c) {
+            for (xi, vi) in xs.iter_mut().zip(&v[off..off + len]) {
+                *xi -= ci * vi;
+            }
+        }
+    });
 }
 
 /// Rigid-body motion vectors in equation space: unit translation along global x, y, z and unit
@@ -185,7 +210,7 @@ pub fn solve_modal(model: &Model, opts: &ModalOptions) -> Result<ModalResults, F
     {
         return Err(singular(model, &map, &k));
     }
-    let (theta, x, steps) = lanczos(&factor, &m, n, opts.n_modes.min(n), opts.tol)?;
+    let (theta, x, steps) = lanczos(&factor, &m.full(), n, opts.n_modes.min(n), opts.tol)?;
     let rigid = rigid_vectors(model, &map);
     let mr: Vec<Vec<f64>> = rigid.iter().map(|r| m.mul_vec(r)).collect();
     let total_mass: [f64; 6] = std::array::from_fn(|d| dot(&rigid[d], &mr[d]));
@@ -258,41 +283,53 @@ struct Ortho {
     coef_new: Vec<Vec<f64>>,
 }
 
-fn orthonormalise(m: &SparseMatrix, basis: &[Vec<f64>], mbasis: &[Vec<f64>], cols: Vec<Vec<f64>>) -> Ortho {
+fn orthonormalise(m: &FullSymmetric, basis: &[Vec<f64>], mbasis: &[Vec<f64>], mut cols: Vec<Vec<f64>>) -> Ortho {
     let p = cols.len();
+    let nb = basis.len();
     let mut out = Ortho {
         vecs: Vec::new(),
         mvecs: Vec::new(),
-        coef_old: vec![vec![0.0; basis.len()]; p],
+        coef_old: vec![vec![0.0; nb]; p],
         coef_new: vec![Vec::new(); p],
     };
-    for (c, mut x) in cols.into_iter().enumerate() {
-        let scale0 = x.iter().fold(0.0f64, |s, v| s.max(v.abs()));
-        for _ in 0..2 {
-            for (i, (v, mv)) in basis.iter().zip(mbasis).enumerate() {
-                let h = dot(mv, &x);
-                out.coef_old[c][i] += h;
-                axpy(&mut x, -h, v);
+    let scale0: Vec<f64> = cols.iter().map(|x| x.iter().fold(0.0f64, |s, v| s.max(v.abs()))).collect();
+    // Against the old basis, the whole block at once (each basis vector read once per pass).
+    for _ in 0..2 {
+        if nb == 0 {
+            break;
+        }
+        let h: Vec<Vec<f64>> = mbasis
+            .par_iter()
+            .map(|mv| cols.iter().map(|x| mv.iter().zip(x).map(|(a, b)| a * b).sum()).collect())
+            .collect();
+        for (c, x) in cols.iter_mut().enumerate() {
+            let hc: Vec<f64> = h.iter().map(|row| row[c]).collect();
+            subtract(x, basis, &hc);
+            for (ci, hi) in out.coef_old[c].iter_mut().zip(&hc) {
+                *ci += hi;
             }
-            for (l, (v, mv)) in out.vecs.iter().zip(&out.mvecs).enumerate() {
-                let h = dot(mv, &x);
-                if out.coef_new[c].len() <= l {
-                    out.coef_new[c].resize(l + 1, 0.0);
-                }
-                out.coef_new[c][l] += h;
-                axpy(&mut x, -h, v);
+        }
+    }
+    // Within the block (Gram–Schmidt twice).
+    for (c, mut x) in cols.into_iter().enumerate() {
+        for _ in 0..2 {
+            let h = dots(&out.mvecs, &x);
+            subtract(&mut x, &out.vecs, &h);
+            if out.coef_new[c].len() < h.len() {
+                out.coef_new[c].resize(h.len(), 0.0);
+            }
+            for (ci, hi) in out.coef_new[c].iter_mut().zip(&h) {
+                *ci += hi;
             }
         }
         let mx = m.mul_vec(&x);
         let nrm = dot(&x, &mx).max(0.0).sqrt();
         let scale = x.iter().fold(0.0f64, |s, v| s.max(v.abs()));
-        out.coef_new[c].resize(out.vecs.len() + 1, 0.0);
-        if nrm.is_finite() && nrm > 0.0 && scale > 1e-9 * scale0 {
-            out.coef_new[c][out.vecs.len()] = nrm;
+        out.coef_new[c].resize(out.vecs.len(), 0.0);
+        if nrm.is_finite() && nrm > 0.0 && scale > 1e-9 * scale0[c] {
+            out.coef_new[c].push(nrm);
             out.vecs.push(x.iter().map(|v| v / nrm).collect());
             out.mvecs.push(mx.iter().map(|v| v / nrm).collect());
-        } else {
-            out.coef_new[c].pop();
         }
     }
     out
@@ -305,14 +342,15 @@ const BLOCK: usize = 6;
 /// Block shift-invert Lanczos (full reorthogonalisation, Rayleigh–Ritz on the whole basis):
 /// returns the `nev` largest θ of S = A⁻¹M (descending), their M-orthonormal Ritz vectors,
 /// and the number of linear solves.
-fn lanczos(a: &Factor, m: &SparseMatrix, n: usize, nev: usize, tol: f64) -> Result<(Vec<f64>, Vec<Vec<f64>>, usize), FemError> {
+fn lanczos(a: &Factor, m: &FullSymmetric, n: usize, nev: usize, tol: f64) -> Result<(Vec<f64>, Vec<Vec<f64>>, usize), FemError> {
     let p = BLOCK.min(n);
-    let apply = |vs: &[Vec<f64>]| -> Result<Vec<Vec<f64>>, FemError> {
-        let mut rhs = Vec::with_capacity(n * vs.len());
-        for v in vs {
-            rhs.extend(m.mul_vec(v));
+    // S·v = A⁻¹(M v); callers pass M v (stored with the basis) or M·random.
+    let apply = |mvs: &[Vec<f64>]| -> Result<Vec<Vec<f64>>, FemError> {
+        let mut rhs = Vec::with_capacity(n * mvs.len());
+        for mv in mvs {
+            rhs.extend_from_slice(mv);
         }
-        a.solve_in_place(&mut rhs, vs.len())?;
+        a.solve_in_place(&mut rhs, mvs.len())?;
         Ok(rhs.chunks(n).map(|c| c.to_vec()).collect())
     };
     let mut seed = 1u64;
@@ -327,7 +365,8 @@ fn lanczos(a: &Factor, m: &SparseMatrix, n: usize, nev: usize, tol: f64) -> Resu
     let mut basis: Vec<Vec<f64>> = Vec::new();
     let mut mbasis: Vec<Vec<f64>> = Vec::new();
     // Start block: S·random (removes M-null components).
-    let start = orthonormalise(m, &basis, &mbasis, apply(&randoms(p))?);
+    let mr: Vec<Vec<f64>> = randoms(p).iter().map(|r| m.mul_vec(r)).collect();
+    let start = orthonormalise(m, &basis, &mbasis, apply(&mr)?);
     basis.extend(start.vecs);
     mbasis.extend(start.mvecs);
     if basis.is_empty() {
@@ -344,7 +383,7 @@ fn lanczos(a: &Factor, m: &SparseMatrix, n: usize, nev: usize, tol: f64) -> Resu
                 "Lanczos: only {done_cols} modes with mass exist, {nev} requested"
             )));
         }
-        let images = apply(&basis[done_cols..])?;
+        let images = apply(&mbasis[done_cols..])?;
         solves += block.len();
         let orth = orthonormalise(m, &basis, &mbasis, images);
         let n_old = basis.len();
@@ -416,7 +455,8 @@ fn lanczos(a: &Factor, m: &SparseMatrix, n: usize, nev: usize, tol: f64) -> Resu
         }
         if n_new == 0 {
             // Invariant subspace: continue from fresh random directions.
-            let fresh = orthonormalise(m, &basis, &mbasis, apply(&randoms(p))?);
+            let mr: Vec<Vec<f64>> = randoms(p).iter().map(|r| m.mul_vec(r)).collect();
+            let fresh = orthonormalise(m, &basis, &mbasis, apply(&mr)?);
             solves += p;
             if fresh.vecs.is_empty() {
                 return Err(FemError::Solver(format!(
