@@ -47,7 +47,11 @@ fn cantilever_beam_frequencies() {
         for j in 0..2 {
             let f = r.modes[2 * k + j].frequency_hz;
             let err = (f - f_ref) / f_ref;
-            eprintln!("cantilever mode {}: {f:.4} Hz vs {f_ref:.4} Hz ({:.4} %)", 2 * k + j + 1, 100.0 * err);
+            eprintln!(
+                "cantilever mode {}: {f:.4} Hz vs {f_ref:.4} Hz ({:.4} %)",
+                2 * k + j + 1,
+                100.0 * err
+            );
             assert!(err.abs() < 0.005, "mode {}: {f} vs {f_ref}", 2 * k + j + 1);
         }
     }
@@ -73,7 +77,11 @@ fn free_free_beam_six_rigid_modes_then_bending() {
         for j in 0..2 {
             let f = r.modes[6 + 2 * k + j].frequency_hz;
             let err = (f - f_ref) / f_ref;
-            eprintln!("free-free mode {}: {f:.4} Hz vs {f_ref:.4} Hz ({:.4} %)", 7 + 2 * k + j, 100.0 * err);
+            eprintln!(
+                "free-free mode {}: {f:.4} Hz vs {f_ref:.4} Hz ({:.4} %)",
+                7 + 2 * k + j,
+                100.0 * err
+            );
             assert!(err.abs() < 0.005);
         }
     }
@@ -121,11 +129,22 @@ fn simply_supported_square_plate_leissa() {
     let d = al.e * t.powi(3) / (12.0 * (1.0 - al.nu * al.nu));
     let w = |mm: f64, nn: f64| PI * PI * (mm * mm + nn * nn) / (a * a) * (d / (al.density * t)).sqrt() / (2.0 * PI);
     // (1,1), (1,2), (2,1), (2,2), (1,3), (3,1) — Leissa eq. 4.20; 32×32 mesh, a/t = 200.
-    let refs = [w(1.0, 1.0), w(1.0, 2.0), w(2.0, 1.0), w(2.0, 2.0), w(1.0, 3.0), w(3.0, 1.0)];
+    let refs = [
+        w(1.0, 1.0),
+        w(1.0, 2.0),
+        w(2.0, 1.0),
+        w(2.0, 2.0),
+        w(1.0, 3.0),
+        w(3.0, 1.0),
+    ];
     for (k, f_ref) in refs.iter().enumerate() {
         let f = r.modes[k].frequency_hz;
         let err = (f - f_ref) / f_ref;
-        eprintln!("SS plate mode {}: {f:.3} Hz vs {f_ref:.3} Hz ({:.3} %)", k + 1, 100.0 * err);
+        eprintln!(
+            "SS plate mode {}: {f:.3} Hz vs {f_ref:.3} Hz ({:.3} %)",
+            k + 1,
+            100.0 * err
+        );
         assert!(err.abs() < 0.01);
     }
 }
@@ -136,7 +155,13 @@ fn free_free_mixed_model_has_six_zero_modes() {
     let (mut m, _) = plate(6, 60.0, 1.0, Material::AL7075);
     let b0 = m.add_node([0.0, 30.0, 5.0]);
     let b1 = m.add_node([60.0, 30.0, 5.0]);
-    m.add_beam(Beam::new(b0, b1, Section::Rect { w: 2.0, h: 4.0 }, Material::AL7075, [0.0, 0.0, 1.0]));
+    m.add_beam(Beam::new(
+        b0,
+        b1,
+        Section::Rect { w: 2.0, h: 4.0 },
+        Material::AL7075,
+        [0.0, 0.0, 1.0],
+    ));
     m.rigid_links.push(RigidLink {
         master: 3 * 7,
         slaves: vec![b0],
@@ -154,7 +179,11 @@ fn free_free_mixed_model_has_six_zero_modes() {
     let f7 = r.modes[6].frequency_hz;
     assert!(f7 > 10.0);
     for md in &r.modes[..6] {
-        assert!(md.frequency_hz < 1e-3 * f7, "rigid mode at {} Hz (first elastic {f7})", md.frequency_hz);
+        assert!(
+            md.frequency_hz < 1e-3 * f7,
+            "rigid mode at {} Hz (first elastic {f7})",
+            md.frequency_hz
+        );
     }
     let s: f64 = r.modes[..6].iter().map(|md| md.effective_mass_fraction[0]).sum();
     assert!((s - 1.0).abs() < 1e-6);

@@ -199,7 +199,10 @@ fn pinched_hemisphere(n: usize) -> (f64, f64) {
 fn pinched_hemisphere_18deg_hole() {
     let (ux, uy) = pinched_hemisphere(16);
     let err = (ux - 0.094) / 0.094;
-    eprintln!("pinched hemisphere 16x16: ux = {ux:.5}, uy = {uy:.5}, error {:.2} %", 100.0 * err);
+    eprintln!(
+        "pinched hemisphere 16x16: ux = {ux:.5}, uy = {uy:.5}, error {:.2} %",
+        100.0 * err
+    );
     assert!(err.abs() < 0.02, "ux = {ux}");
     assert!((ux - uy).abs() < 1e-3 * ux);
 }
@@ -288,7 +291,10 @@ fn gmsh_import_clamped_plate() {
         let c = case::load(&root.join(format!("cases/{name}.json"))).unwrap();
         let out = analysis::run(&c).unwrap();
         let wc = -out.json["load_cases"][0]["displacements"][144][2].as_f64().unwrap();
-        eprintln!("{name}: w = {wc:.5} mm vs {w_ref:.5} ({:.2} %)", 100.0 * (wc - w_ref) / w_ref);
+        eprintln!(
+            "{name}: w = {wc:.5} mm vs {w_ref:.5} ({:.2} %)",
+            100.0 * (wc - w_ref) / w_ref
+        );
         w.push(wc);
     }
     // Direct model, same mesh.
@@ -302,7 +308,8 @@ fn gmsh_import_clamped_plate() {
             }
         }
     }
-    m.load_cases.push(LoadCase::new("c").force(144, [0.0, 0.0, -100.0, 0.0, 0.0, 0.0]));
+    m.load_cases
+        .push(LoadCase::new("c").force(144, [0.0, 0.0, -100.0, 0.0, 0.0, 0.0]));
     let direct = -fem::solve_static(&m).unwrap().load_cases[0].displacements[144][2];
     assert!((w[0] - direct).abs() < 1e-9 * direct, "{} vs {direct}", w[0]);
     assert!(((w[0] - w_ref) / w_ref).abs() < 0.03, "quads {}", w[0]);

@@ -129,7 +129,12 @@ pub fn vtu(model: &Model, r: &ModalResults) -> Result<Vec<u8>, AnalysisError> {
         .modes
         .iter()
         .enumerate()
-        .map(|(i, m)| (format!("mode_{}", i + 1), m.shape.iter().map(|s| [s[0], s[1], s[2]]).collect()))
+        .map(|(i, m)| {
+            (
+                format!("mode_{}", i + 1),
+                m.shape.iter().map(|s| [s[0], s[1], s[2]]).collect(),
+            )
+        })
         .collect();
     let mesh = VtuMesh {
         points: &model.nodes,

@@ -220,11 +220,7 @@ pub fn run_stage(case: &StageCase) -> Result<StageResult, RunError> {
 /// Modes of the stage with the actuators locked. Platform: point mass at P, a disc of radius
 /// b and thickness t (default 10 mm) unless `platform_mass` is given: m = ρπb²t,
 /// Ixx = Iyy = m(3b² + t²)/12, Izz = mb²/2 (platform normal = global z at home).
-pub fn stage_modes(
-    case: &StageCase,
-    s: &stage::StageModel,
-    n: usize,
-) -> Result<Vec<super::modal::ModeRow>, RunError> {
+pub fn stage_modes(case: &StageCase, s: &stage::StageModel, n: usize) -> Result<Vec<super::modal::ModeRow>, RunError> {
     let mut model = s.model.clone();
     for leg in &s.legs {
         model.supports.push(crate::fem::Support::clamp(leg.slider));

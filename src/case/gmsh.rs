@@ -161,7 +161,11 @@ pub fn parse_msh(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, Vec<Str
                         if x.len() < 3 || x.iter().any(|v| !v.is_finite()) {
                             return Err(CaseError::new(
                                 "mesh",
-                                format!(".msh line {}: node {} needs three finite coordinates", lines.line, node_tags[start + k]),
+                                format!(
+                                    ".msh line {}: node {} needs three finite coordinates",
+                                    lines.line,
+                                    node_tags[start + k]
+                                ),
                             ));
                         }
                         coords.push([x[0], x[1], x[2]]);
@@ -224,7 +228,11 @@ pub fn parse_msh(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, Vec<Str
             .get(&e.entity)
             .map(|ps| {
                 ps.iter()
-                    .filter_map(|p| names.get(&(e.entity.0, *p)).or_else(|| names.get(&(e.entity.0, p.abs()))))
+                    .filter_map(|p| {
+                        names
+                            .get(&(e.entity.0, *p))
+                            .or_else(|| names.get(&(e.entity.0, p.abs())))
+                    })
                     .filter_map(|n| mapping.groups.get(n))
                     .collect()
             })
@@ -232,7 +240,10 @@ pub fn parse_msh(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, Vec<Str
         let mut nodes = Vec::with_capacity(e.nodes.len());
         for t in &e.nodes {
             nodes.push(*index.get(t).ok_or_else(|| {
-                CaseError::new("mesh", format!(".msh element {ie} refers to node tag {t}, which is not in $Nodes"))
+                CaseError::new(
+                    "mesh",
+                    format!(".msh element {ie} refers to node tag {t}, which is not in $Nodes"),
+                )
             })?);
         }
         if groups.is_empty() {

@@ -493,7 +493,11 @@ impl MeshSpec {
                             "the four nodes must form a convex quadrilateral, listed around it (not crossed, no zero area)",
                         ));
                     }
-                    model.add_element(fem::Element::Shell4(fem::Shell4 { nodes: ns, t, material: mat }));
+                    model.add_element(fem::Element::Shell4(fem::Shell4 {
+                        nodes: ns,
+                        t,
+                        material: mat,
+                    }));
                 }
             }
         }

@@ -156,20 +156,47 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                 let modes = match map.remove("modes") {
                     Some(Value::Number(n)) => match n.as_u64() {
                         Some(k) if (1..=1000).contains(&k) => k as usize,
-                        _ => return Err(CaseError::value("modes", n.to_string(), "must be an integer from 1 to 1000")),
+                        _ => {
+                            return Err(CaseError::value(
+                                "modes",
+                                n.to_string(),
+                                "must be an integer from 1 to 1000",
+                            ))
+                        }
                     },
                     Some(other) => {
-                        return Err(CaseError::value("modes", short(&other), "must be an integer from 1 to 1000"))
+                        return Err(CaseError::value(
+                            "modes",
+                            short(&other),
+                            "must be an integer from 1 to 1000",
+                        ))
                     }
-                    None => return Err(CaseError::new("modes", "missing field `modes` (number of modes wanted)")),
+                    None => {
+                        return Err(CaseError::new(
+                            "modes",
+                            "missing field `modes` (number of modes wanted)",
+                        ))
+                    }
                 };
                 let shift_hz = match map.remove("shift_hz") {
                     None | Some(Value::Null) => None,
                     Some(Value::Number(n)) => match n.as_f64() {
                         Some(f) if f.is_finite() && f >= 0.0 => Some(f),
-                        _ => return Err(CaseError::value("shift_hz", n.to_string(), "must be a frequency ≥ 0, Hz")),
+                        _ => {
+                            return Err(CaseError::value(
+                                "shift_hz",
+                                n.to_string(),
+                                "must be a frequency ≥ 0, Hz",
+                            ))
+                        }
                     },
-                    Some(other) => return Err(CaseError::value("shift_hz", short(&other), "must be a frequency ≥ 0, Hz")),
+                    Some(other) => {
+                        return Err(CaseError::value(
+                            "shift_hz",
+                            short(&other),
+                            "must be a frequency ≥ 0, Hz",
+                        ))
+                    }
                 };
                 Some((modes, shift_hz))
             } else {
@@ -190,14 +217,21 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                     };
                     let file = resolve_file(name, base);
                     let text = std::fs::read_to_string(&file).map_err(|e| {
-                        CaseError::value("mesh", format!("\"{name}\""), format!("cannot read {}: {e}", file.display()))
+                        CaseError::value(
+                            "mesh",
+                            format!("\"{name}\""),
+                            format!("cannot read {}: {e}", file.display()),
+                        )
                     })?;
                     let (from_file, _notes) = gmsh::parse_msh(&text, &mapping)
                         .map_err(|e| CaseError::new(e.path.clone(), format!("in {name}: {}", e.message)))?;
                     mesh::MeshSpec::merge_inline(from_file, inline)?
                 }
                 Some(_) if gmsh_map.is_some() => {
-                    return Err(CaseError::new("gmsh", "a `gmsh` mapping is only used with a .msh mesh file"))
+                    return Err(CaseError::new(
+                        "gmsh",
+                        "a `gmsh` mapping is only used with a .msh mesh file",
+                    ))
                 }
                 Some(name) => {
                     let mut mv = read_json("mesh", name, base)?;
@@ -213,7 +247,10 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                     mesh::MeshSpec::merge_inline(from_file, inline)?
                 }
                 None if gmsh_map.is_some() => {
-                    return Err(CaseError::new("gmsh", "a `gmsh` mapping is only used with a .msh mesh file"))
+                    return Err(CaseError::new(
+                        "gmsh",
+                        "a `gmsh` mapping is only used with a .msh mesh file",
+                    ))
                 }
                 None => inline,
             };

@@ -30,8 +30,8 @@ pub use analysis::{solve_static, solve_static_with, CaseResult, StaticResults, S
 pub use dof::{Dof, NodeDof};
 pub use error::FemError;
 pub use model::{
-    Beam, Element, FlexElement, Shell4, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink, Spring, SpringAxes,
-    Support, Tie,
+    Beam, Element, FlexElement, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink, Shell4, Spring,
+    SpringAxes, Support, Tie,
 };
 pub use section::{Section, SectionProps};
 

@@ -14,8 +14,8 @@ use super::constraints::DofMap;
 use super::error::FemError;
 use super::model::Model;
 use super::solve::{Factor, FactorError, FullSymmetric, Parallelism, SparseMatrix, SymbolicFactor};
-use rayon::prelude::*;
 use nalgebra::{DMatrix, Vector3, Vector6};
+use rayon::prelude::*;
 
 /// Options of [`solve_modal`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -110,7 +110,10 @@ fn axpy(y: &mut [f64], a: f64, x: &[f64]) {
 
 /// Coefficients (M vᵢ)ᵀ x for every basis vector at once (one parallel pass per vector).
 fn dots(mbasis: &[Vec<f64>], x: &[f64]) -> Vec<f64> {
-    mbasis.par_iter().map(|mv| mv.iter().zip(x).map(|(p, q)| p * q).sum()).collect()
+    mbasis
+        .par_iter()
+        .map(|mv| mv.iter().zip(x).map(|(p, q)| p * q).sum())
+        .collect()
 }
 
 /// x −= Σ cᵢ vᵢ, in parallel over chunks of x.
@@ -223,14 +226,22 @@ pub fn solve_modal(model: &Model, opts: &ModalOptions) -> Result<ModalResults, F
             let imax = q
                 .iter()
                 .enumerate()
-                .fold((0, 0.0), |(bi, bv), (i, v)| if v.abs() > bv { (i, v.abs()) } else { (bi, bv) })
+                .fold(
+                    (0, 0.0),
+                    |(bi, bv), (i, v)| if v.abs() > bv { (i, v.abs()) } else { (bi, bv) },
+                )
                 .0;
             if q.get(imax).is_some_and(|v| *v < 0.0) {
                 q.iter_mut().for_each(|v| *v = -*v);
             }
             let participation: [f64; 6] = std::array::from_fn(|d| dot(&q, &mr[d]));
-            let effective_mass_fraction =
-                std::array::from_fn(|d| if total_mass[d] > 0.0 { participation[d].powi(2) / total_mass[d] } else { 0.0 });
+            let effective_mass_fraction = std::array::from_fn(|d| {
+                if total_mass[d] > 0.0 {
+                    participation[d].powi(2) / total_mass[d]
+                } else {
+                    0.0
+                }
+            });
             let u = map.expand(&q, &zero);
             Mode {
                 eigenvalue: lam,
@@ -265,9 +276,7 @@ fn singular(model: &Model, map: &DofMap, k: &SparseMatrix) -> FemError {
         return FemError::Unconstrained { dofs };
     }
     let _ = model;
-    FemError::Solver(
-        "K − σM is singular: a mechanism without mass, or a massless DOF without stiffness".into(),
-    )
+    FemError::Solver("K − σM is singular: a mechanism without mass, or a massless DOF without stiffness".into())
 }
 
 /// M-orthonormalises the columns of `x` (n × p, column-major) against the basis and among
@@ -292,7 +301,10 @@ fn orthonormalise(m: &FullSymmetric, basis: &[Vec<f64>], mbasis: &[Vec<f64>], mu
         coef_old: vec![vec![0.0; nb]; p],
         coef_new: vec![Vec::new(); p],
     };
-    let scale0: Vec<f64> = cols.iter().map(|x| x.iter().fold(0.0f64, |s, v| s.max(v.abs()))).collect();
+    let scale0: Vec<f64> = cols
+        .iter()
+        .map(|x| x.iter().fold(0.0f64, |s, v| s.max(v.abs())))
+        .collect();
     // Against the old basis, the whole block at once (each basis vector read once per pass).
     for _ in 0..2 {
         if nb == 0 {
@@ -300,7 +312,11 @@ fn orthonormalise(m: &FullSymmetric, basis: &[Vec<f64>], mbasis: &[Vec<f64>], mu
         }
         let h: Vec<Vec<f64>> = mbasis
             .par_iter()
-            .map(|mv| cols.iter().map(|x| mv.iter().zip(x).map(|(a, b)| a * b).sum()).collect())
+            .map(|mv| {
+                cols.iter()
+                    .map(|x| mv.iter().zip(x).map(|(a, b)| a * b).sum())
+                    .collect()
+            })
             .collect();
         for (c, x) in cols.iter_mut().enumerate() {
             let hc: Vec<f64> = h.iter().map(|row| row[c]).collect();
@@ -342,7 +358,10 @@ const BLOCK: usize = 6;
 /// Block shift-invert Lanczos (full reorthogonalisation, Rayleigh–Ritz on the whole basis):
 /// returns the `nev` largest θ of S = A⁻¹M (descending), their M-orthonormal Ritz vectors,
 /// and the number of linear solves.
-fn lanczos(a: &Factor, m: &FullSymmetric, n: usize, nev: usize, tol: f64) -> Result<(Vec<f64>, Vec<Vec<f64>>, usize), FemError> {
+/// Ritz values θ (descending), Ritz vectors and the number of solves.
+type RitzPairs = (Vec<f64>, Vec<Vec<f64>>, usize);
+
+fn lanczos(a: &Factor, m: &FullSymmetric, n: usize, nev: usize, tol: f64) -> Result<RitzPairs, FemError> {
     let p = BLOCK.min(n);
     // S·v = A⁻¹(M v); callers pass M v (stored with the basis) or M·random.
     let apply = |mvs: &[Vec<f64>]| -> Result<Vec<Vec<f64>>, FemError> {
@@ -435,7 +454,7 @@ fn lanczos(a: &Factor, m: &FullSymmetric, n: usize, nev: usize, tol: f64) -> Res
                     )));
                 }
                 let thetas: Vec<f64> = wanted.iter().map(|&c| eig.eigenvalues[c]).collect();
-                if let Some(bad) = thetas.iter().find(|&&th| !(th > 0.0)) {
+                if let Some(bad) = thetas.iter().find(|&&th| th.is_nan() || th <= 0.0) {
                     return Err(FemError::Solver(format!(
                         "Lanczos found a non-positive transformed eigenvalue {bad}; fewer modes with mass than requested?"
                     )));

@@ -76,8 +76,11 @@ fn jacobian(xy: &[[f64; 2]; 4], dxi: &[f64; 4], deta: &[f64; 4]) -> Matrix2<f64>
     j
 }
 
+/// N, ∂N/∂x, ∂N/∂y, det J and J⁻¹ at one point.
+type Cartesian = ([f64; 4], [f64; 4], [f64; 4], f64, Matrix2<f64>);
+
 /// Cartesian derivatives (∂N/∂x, ∂N/∂y) and det J at (ξ, η); `None` for a degenerate map.
-fn cartesian(xy: &[[f64; 2]; 4], xi: f64, eta: f64) -> Option<([f64; 4], [f64; 4], [f64; 4], f64, Matrix2<f64>)> {
+fn cartesian(xy: &[[f64; 2]; 4], xi: f64, eta: f64) -> Option<Cartesian> {
     let (n, dxi, deta) = shape(xi, eta);
     let j = jacobian(xy, &dxi, &deta);
     let det = j.determinant();
@@ -342,7 +345,9 @@ pub struct ShellStress {
 
 /// Plane-stress von Mises √(σx² − σxσy + σy² + 3τ²).
 pub fn von_mises_plane(s: &[f64; 3]) -> f64 {
-    (s[0] * s[0] - s[0] * s[1] + s[1] * s[1] + 3.0 * s[2] * s[2]).max(0.0).sqrt()
+    (s[0] * s[0] - s[0] * s[1] + s[1] * s[1] + 3.0 * s[2] * s[2])
+        .max(0.0)
+        .sqrt()
 }
 
 /// Centre stresses from the global element displacements (24). The incompatible modes have
@@ -366,7 +371,11 @@ pub fn shell_stress(x: &[[f64; 3]; 4], t: f64, mat: &Material, d_global: &Vec24)
     let bot = sm - sb;
     let arr = |v: Vector3<f64>| [v.x, v.y, v.z];
     Some(ShellStress {
-        von_mises: [von_mises_plane(&arr(top)), von_mises_plane(&arr(sm)), von_mises_plane(&arr(bot))],
+        von_mises: [
+            von_mises_plane(&arr(top)),
+            von_mises_plane(&arr(sm)),
+            von_mises_plane(&arr(bot)),
+        ],
         n: arr(sm * t),
         m: arr(c * kap * (t * t * t / 12.0)),
     })
