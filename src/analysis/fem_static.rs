@@ -20,6 +20,9 @@ pub struct StaticCaseRow {
     pub max_von_mises: Option<f64>,
     /// Largest von Mises stress per element, MPa (`null` for springs).
     pub element_von_mises: Vec<Option<f64>>,
+    /// Shells: von Mises [top, mid, bottom] at the element centre, MPa (`null` for other
+    /// elements).
+    pub shell_von_mises: Vec<Option<[f64; 3]>>,
     /// Sum of loads plus reactions (should vanish): [N, N, N, N·mm, N·mm, N·mm].
     pub equilibrium_residual: [f64; 6],
 }
@@ -70,6 +73,7 @@ pub fn solve(model: &Model) -> Result<(StaticResult, fem::StaticResults), Analys
             reaction_nodes: c.reactions.iter().map(|(n, _)| *n).collect(),
             max_von_mises: c.max_von_mises,
             element_von_mises: c.elements.iter().map(|e| e.max_von_mises()).collect(),
+            shell_von_mises: c.elements.iter().map(|e| e.shell.map(|s| s.von_mises)).collect(),
             equilibrium_residual: c.statics.residual(),
         })
         .collect();
