@@ -94,7 +94,7 @@ fn clamped_plate(n: usize) -> f64 {
 
 /// Clamped square plate, uniform pressure: w_max = 0.00126 q a⁴/D (S. Timoshenko,
 /// S. Woinowsky-Krieger, Theory of Plates and Shells, 2nd ed., 1959, Table 35: 0.00126).
-/// Full plate, 16×16 mesh, a/t = 1000.
+/// Full plate, 16×16 mesh, a/t = 1000: 0.001262 (+0.13 %); 8×8 0.001251, 32×32 0.001264.
 #[test]
 fn clamped_square_plate_timoshenko() {
     let c = clamped_plate(16);
@@ -128,7 +128,8 @@ fn scordelis_lo(n: usize) -> f64 {
 
 #[test]
 fn scordelis_lo_roof() {
-    // 16×16 elements on the full roof (an 8×8 quarter).
+    // 16×16 elements on the full roof (an 8×8 quarter): 0.30385 (+0.48 %); 8×8 0.31598,
+    // 32×32 0.30165 (−0.25 %).
     let w = scordelis_lo(16);
     let err = (w - 0.3024) / 0.3024;
     eprintln!("Scordelis-Lo 16x16: w = {w:.5}, error {:.2} %", 100.0 * err);
@@ -163,6 +164,7 @@ fn pinched_cylinder(n: usize) -> f64 {
 
 #[test]
 fn pinched_cylinder_with_diaphragms() {
+    // Octant 32×32: 1.8054e-5 (−1.06 %); 16×16 gives 1.7004e-5 (−6.8 %), so 32×32 is needed.
     let w = pinched_cylinder(32);
     let err = (w - 1.8248e-5) / 1.8248e-5;
     eprintln!("pinched cylinder octant 32x32: w = {w:.5e}, error {:.2} %", 100.0 * err);
@@ -197,6 +199,7 @@ fn pinched_hemisphere(n: usize) -> (f64, f64) {
 
 #[test]
 fn pinched_hemisphere_18deg_hole() {
+    // Quarter 16×16: 0.09309 (−0.97 %); 8×8 0.0925, 32×32 0.0934.
     let (ux, uy) = pinched_hemisphere(16);
     let err = (ux - 0.094) / 0.094;
     eprintln!(
@@ -235,6 +238,7 @@ fn twisted_beam(nw: usize, nl: usize, load_dir: usize) -> f64 {
 
 #[test]
 fn twisted_beam_thick() {
+    // 2×12: 5.4069e-3 (−0.32 %) and 1.7564e-3 (+0.14 %).
     let inplane = twisted_beam(2, 12, 2);
     let outplane = twisted_beam(2, 12, 1);
     let e1 = (inplane - 5.424e-3) / 5.424e-3;

@@ -180,39 +180,49 @@ pub fn solve_modal(model: &Model, opts: &ModalOptions) -> Result<ModalResults, F
             "the model has no mass (give materials a density or add point masses)".into(),
         ));
     }
-    let shift = match opts.shift {
-        Some(s) if s.is_finite() => s,
+    let negative_shift = || {
+        let mut ratios: Vec<f64> = kd
+            .iter()
+            .zip(&md)
+            .filter(|(k, m)| **k > 0.0 && **m > 0.0)
+            .map(|(k, m)| k / m)
+            .collect();
+        ratios.sort_by(f64::total_cmp);
+        let med = ratios.get(ratios.len() / 2).copied().unwrap_or(1.0);
+        -1e-6 * med
+    };
+    let mut shifts = match opts.shift {
+        Some(s) if s.is_finite() => vec![s],
         Some(s) => return Err(FemError::BadInput(format!("modal shift must be finite, got {s}"))),
-        None if check_free_bodies(model, &map).is_ok() => 0.0,
-        None => {
-            let mut ratios: Vec<f64> = kd
-                .iter()
-                .zip(&md)
-                .filter(|(k, m)| **k > 0.0 && **m > 0.0)
-                .map(|(k, m)| k / m)
-                .collect();
-            ratios.sort_by(f64::total_cmp);
-            let med = ratios.get(ratios.len() / 2).copied().unwrap_or(1.0);
-            -1e-6 * med
+        // Supported: σ = 0, and if K turns out singular (a mechanism with mass, which has a
+        // legitimate 0 Hz mode) a small negative shift. Free body: the negative shift at once.
+        None if check_free_bodies(model, &map).is_ok() => vec![0.0, negative_shift()],
+        None => vec![negative_shift()],
+    };
+    shifts.reverse();
+    let symbolic = SymbolicFactor::new(pattern.sparse())?;
+    let (shift, factor) = loop {
+        let Some(shift) = shifts.pop() else {
+            return Err(singular(&map, &k));
+        };
+        let a = k
+            .lin_comb(1.0, &m, -shift)
+            .ok_or_else(|| FemError::PatternMismatch("K and M patterns differ".into()))?;
+        match Factor::new(&symbolic, &a, opts.par) {
+            Ok(f) => {
+                let tiny = f
+                    .pivots()
+                    .iter()
+                    .zip(a.diagonal())
+                    .any(|(p, d)| p.is_nan() || *p <= super::analysis::PIVOT_TOL * d);
+                if !tiny {
+                    break (shift, f);
+                }
+            }
+            Err(FactorError::NotPositiveDefinite) => {}
+            Err(FactorError::Other(s)) => return Err(FemError::Solver(s)),
         }
     };
-    let a = k
-        .lin_comb(1.0, &m, -shift)
-        .ok_or_else(|| FemError::PatternMismatch("K and M patterns differ".into()))?;
-    let symbolic = SymbolicFactor::new(pattern.sparse())?;
-    let factor = match Factor::new(&symbolic, &a, opts.par) {
-        Ok(f) => f,
-        Err(FactorError::NotPositiveDefinite) => return Err(singular(model, &map, &k)),
-        Err(FactorError::Other(s)) => return Err(FemError::Solver(s)),
-    };
-    let piv = factor.pivots();
-    if piv
-        .iter()
-        .zip(a.diagonal())
-        .any(|(p, d)| p.is_nan() || *p <= super::analysis::PIVOT_TOL * d)
-    {
-        return Err(singular(model, &map, &k));
-    }
     let (theta, x, steps) = lanczos(&factor, &m.full(), n, opts.n_modes.min(n), opts.tol)?;
     let rigid = rigid_vectors(model, &map);
     let mr: Vec<Vec<f64>> = rigid.iter().map(|r| m.mul_vec(r)).collect();
@@ -264,7 +274,7 @@ pub fn solve_modal(model: &Model, opts: &ModalOptions) -> Result<ModalResults, F
     })
 }
 
-fn singular(model: &Model, map: &DofMap, k: &SparseMatrix) -> FemError {
+fn singular(map: &DofMap, k: &SparseMatrix) -> FemError {
     let d = k.diagonal();
     let dofs: Vec<_> = d
         .iter()
@@ -275,7 +285,6 @@ fn singular(model: &Model, map: &DofMap, k: &SparseMatrix) -> FemError {
     if !dofs.is_empty() {
         return FemError::Unconstrained { dofs };
     }
-    let _ = model;
     FemError::Solver("K − σM is singular: a mechanism without mass, or a massless DOF without stiffness".into())
 }
 
