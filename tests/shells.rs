@@ -214,7 +214,11 @@ fn pinched_hemisphere_18deg_hole() {
 /// pretwist, E = 29e6, ν = 0.22, unit tip load; tip displacement along the load 5.424e-3
 /// (in-plane: along the tip's width) and 1.754e-3 (out-of-plane). Mesh 2×12 (MacNeal's).
 fn twisted_beam(nw: usize, nl: usize, load_dir: usize) -> f64 {
-    let (l, w, t) = (12.0, 1.1, 0.32);
+    twisted_beam_t(nw, nl, load_dir, 0.32, 1.0)
+}
+
+fn twisted_beam_t(nw: usize, nl: usize, load_dir: usize, t: f64, p: f64) -> f64 {
+    let (l, w) = (12.0, 1.1);
     let mut m = Model::new();
     let ids = grid(&mut m, nl, nw, t, mat(29e6, 0.22), |s, q| {
         let a = std::f64::consts::FRAC_PI_2 * s;
@@ -228,7 +232,7 @@ fn twisted_beam(nw: usize, nl: usize, load_dir: usize) -> f64 {
     let mut f = vec![[0.0; 6]; m.nodes.len()];
     for j in 0..=nw {
         let share = if j == 0 || j == nw { 0.5 } else { 1.0 } / nw as f64;
-        f[id(nl, j)][load_dir] = share;
+        f[id(nl, j)][load_dir] = p * share;
     }
     let m = with_loads(m, &f);
     let res = fem::solve_static(&m).unwrap();
@@ -363,4 +367,22 @@ fn shell_surface_stresses_in_pure_bending() {
     assert!(s.von_mises[1] < 1e-6 * sigma);
     // Moment resultant m_xx = M/b.
     assert!((s.m[0].abs() - mm / b).abs() < 0.01 * mm / b, "m = {:?}", s.m);
+}
+
+/// Thin twisted beam (t = 0.0032, P = 1e-6; T. Belytschko, B. L. Wong, H. Stolarski, IJNME 28
+/// (1989) 385: 5.256e-3 in-plane, 1.294e-3 out-of-plane). 2×12: 5.2767e-3 (+0.39 %),
+/// 1.2986e-3 (+0.35 %); 4×24: 5.2396e-3 (−0.31 %), 1.2932e-3 (−0.06 %) — no locking at
+/// L/t = 3750.
+#[test]
+fn twisted_beam_thin() {
+    for (nw, nl) in [(2, 12), (4, 24)] {
+        let a = twisted_beam_t(nw, nl, 2, 0.0032, 1e-6);
+        let b = twisted_beam_t(nw, nl, 1, 0.0032, 1e-6);
+        eprintln!(
+            "thin twisted beam {nw}x{nl}: {a:.5e} ({:.2} %), {b:.5e} ({:.2} %)",
+            100.0 * (a - 5.256e-3) / 5.256e-3,
+            100.0 * (b - 1.294e-3) / 1.294e-3
+        );
+        assert!(((a - 5.256e-3) / 5.256e-3).abs() < 0.02 && ((b - 1.294e-3) / 1.294e-3).abs() < 0.02);
+    }
 }
