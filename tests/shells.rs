@@ -386,3 +386,49 @@ fn twisted_beam_thin() {
         assert!(((a - 5.256e-3) / 5.256e-3).abs() < 0.02 && ((b - 1.294e-3) / 1.294e-3).abs() < 0.02);
     }
 }
+
+/// Shells, beams, a ground spring and rigid links in one model: a square plate stiffened by a
+/// beam joined through rigid links, clamped on one edge, with a spring under a free corner.
+/// Loads and reactions balance (PyNite-style statics check) and every shell has stresses.
+#[test]
+fn mixed_shell_beam_spring_rigid_statics() {
+    let n = 6;
+    let mut m = Model::new();
+    let ids = grid(&mut m, n, n, 2.0, Material::AL7075, |s, r| [60.0 * s, 60.0 * r, 0.0]);
+    let b0 = m.add_node([0.0, 30.0, 6.0]);
+    let b1 = m.add_node([60.0, 30.0, 6.0]);
+    m.add_beam(fem::Beam::new(
+        b0,
+        b1,
+        fem::Section::Rect { w: 3.0, h: 8.0 },
+        Material::AL7075,
+        [0.0, 0.0, 1.0],
+    ));
+    m.rigid_links.push(fem::RigidLink {
+        master: ids[3 * (n + 1)],
+        slaves: vec![b0],
+    });
+    m.rigid_links.push(fem::RigidLink {
+        master: ids[3 * (n + 1) + n],
+        slaves: vec![b1],
+    });
+    m.add_element(Element::Spring(fem::Spring {
+        a: ids[n * (n + 1) + n],
+        b: None,
+        k: [0.0, 0.0, 50.0, 0.0, 0.0, 0.0],
+        axes: fem::SpringAxes::Global,
+    }));
+    for j in 0..=n {
+        m.supports.push(Support::clamp(ids[j * (n + 1)]));
+    }
+    m.load_cases.push(
+        LoadCase::new("tip")
+            .force(ids[n], [0.0, 0.0, -20.0, 0.0, 0.0, 0.0])
+            .force(b1, [5.0, 0.0, -10.0, 0.0, 100.0, 0.0]),
+    );
+    let r = fem::solve_static(&m).unwrap();
+    let c = &r.load_cases[0];
+    assert!(c.statics.is_balanced(1e-8, 60.0), "{:?}", c.statics);
+    assert!(c.elements.iter().filter(|e| e.shell.is_some()).count() == n * n);
+    assert!(c.max_von_mises.unwrap() > 0.0);
+}

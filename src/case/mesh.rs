@@ -227,6 +227,8 @@ pub struct MeshSpec {
 pub struct ModalCase {
     /// Mesh file, as for `static`.
     pub mesh: Option<String>,
+    /// Physical-group mapping of a Gmsh `.msh` mesh.
+    pub gmsh: Option<super::gmsh::GmshMapping>,
     /// Number of modes (the lowest), 1 … 1000.
     pub modes: usize,
     /// Optional shift frequency f, Hz (σ = (2πf)²): the modes nearest above it are found instead of
@@ -253,6 +255,8 @@ pub struct StaticCase {
     /// Path of a JSON mesh file (relative to the case file's folder, then to the working folder)
     /// holding `materials`, `sections`, `nodes`, `elements`, `supports` and optionally `load_cases`.
     pub mesh: Option<String>,
+    /// Physical-group mapping of a Gmsh `.msh` mesh (see [`super::gmsh`]).
+    pub gmsh: Option<super::gmsh::GmshMapping>,
     /// The inline model (or additions to the mesh: materials, sections, load cases).
     #[serde(flatten)]
     pub model: MeshSpec,

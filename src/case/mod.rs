@@ -207,9 +207,10 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                 Some(v) => Some(from_value::<gmsh::GmshMapping>(v, "gmsh")?),
             };
             let inline: mesh::MeshSpec = from_value(value, "")?;
+            let gmsh_kept = gmsh_map.clone();
             let model = match &mesh_name {
                 Some(name) if name.ends_with(".msh") => {
-                    let Some(mapping) = gmsh_map else {
+                    let Some(mapping) = gmsh_map.clone() else {
                         return Err(CaseError::new(
                             "gmsh",
                             "a .msh mesh needs a `gmsh` mapping: {\"groups\": {\"NAME\": {\"section\", \"material\"} or {\"fix\": [...]}}}",
@@ -257,11 +258,16 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
             Ok(match modal {
                 Some((modes, shift_hz)) => Case::Modal(mesh::ModalCase {
                     mesh: mesh_name,
+                    gmsh: gmsh_kept,
                     modes,
                     shift_hz,
                     model,
                 }),
-                None => Case::Static(mesh::StaticCase { mesh: mesh_name, model }),
+                None => Case::Static(mesh::StaticCase {
+                    mesh: mesh_name,
+                    gmsh: gmsh_kept,
+                    model,
+                }),
             })
         }
         other => Err(CaseError::value(
