@@ -20,11 +20,25 @@ pub struct StaticCaseRow {
     pub max_von_mises: Option<f64>,
     /// Largest von Mises stress per element, MPa (`null` for springs).
     pub element_von_mises: Vec<Option<f64>>,
-    /// Shells: von Mises [top, mid, bottom] at the element centre, MPa (`null` for other
-    /// elements).
-    pub shell_von_mises: Vec<Option<[f64; 3]>>,
+    /// Shells only: von Mises at the element centre on the top, mid and bottom surfaces, MPa
+    /// (omitted for models without shells).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub shell_von_mises: Vec<ShellVonMises>,
     /// Sum of loads plus reactions (should vanish): [N, N, N, N·mm, N·mm, N·mm].
     pub equilibrium_residual: [f64; 6],
+}
+
+/// Surface stresses of one shell element.
+#[derive(Debug, Clone, Serialize)]
+pub struct ShellVonMises {
+    /// Element index (model order).
+    pub element: usize,
+    /// Von Mises at z = +t/2, MPa.
+    pub top: f64,
+    /// Von Mises at the mid-surface, MPa.
+    pub mid: f64,
+    /// Von Mises at z = −t/2, MPa.
+    pub bottom: f64,
 }
 
 /// Result of the `static` analysis.
@@ -73,7 +87,19 @@ pub fn solve(model: &Model) -> Result<(StaticResult, fem::StaticResults), Analys
             reaction_nodes: c.reactions.iter().map(|(n, _)| *n).collect(),
             max_von_mises: c.max_von_mises,
             element_von_mises: c.elements.iter().map(|e| e.max_von_mises()).collect(),
-            shell_von_mises: c.elements.iter().map(|e| e.shell.map(|s| s.von_mises)).collect(),
+            shell_von_mises: c
+                .elements
+                .iter()
+                .enumerate()
+                .filter_map(|(element, e)| {
+                    e.shell.map(|s| ShellVonMises {
+                        element,
+                        top: s.von_mises[0],
+                        mid: s.von_mises[1],
+                        bottom: s.von_mises[2],
+                    })
+                })
+                .collect(),
             equilibrium_residual: c.statics.residual(),
         })
         .collect();
