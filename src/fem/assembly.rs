@@ -119,8 +119,11 @@ impl Pattern {
 
     fn eqs(map: &DofMap, nodes: &[usize; 4]) -> ([usize; 24], usize) {
         let nn = nodes.iter().take_while(|&&n| n != NONE).count();
-        let reps: Vec<usize> = nodes[..nn].iter().map(|&n| map.rep[n]).collect();
-        (map.nodes_eqs(&reps), nn)
+        let mut reps = [0usize; 4];
+        for (r, &n) in reps.iter_mut().zip(&nodes[..nn]) {
+            *r = map.rep[n];
+        }
+        (map.nodes_eqs(&reps[..nn]), nn)
     }
 
     /// Number of equations.
