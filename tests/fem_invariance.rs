@@ -67,6 +67,7 @@ fn rotate(m: &Model, q: &Matrix3<f64>) -> Model {
                     }
                 }
             }
+            Element::Shell4(_) => {}
         }
     }
     for c in &mut r.load_cases {
@@ -90,6 +91,8 @@ fn reverse(m: &Model) -> Model {
                     // Spring axes are fixed in space: reversing the nodes flips δ's sign only.
                 }
             }
+            // Reversed orientation: the normal flips, the physics must not.
+            Element::Shell4(s) => s.nodes = [s.nodes[0], s.nodes[3], s.nodes[2], s.nodes[1]],
         }
     }
     r

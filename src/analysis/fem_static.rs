@@ -20,8 +20,25 @@ pub struct StaticCaseRow {
     pub max_von_mises: Option<f64>,
     /// Largest von Mises stress per element, MPa (`null` for springs).
     pub element_von_mises: Vec<Option<f64>>,
+    /// Shells only: von Mises at the element centre on the top, mid and bottom surfaces, MPa
+    /// (omitted for models without shells).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub shell_von_mises: Vec<ShellVonMises>,
     /// Sum of loads plus reactions (should vanish): [N, N, N, N·mm, N·mm, N·mm].
     pub equilibrium_residual: [f64; 6],
+}
+
+/// Surface stresses of one shell element.
+#[derive(Debug, Clone, Serialize)]
+pub struct ShellVonMises {
+    /// Element index (model order).
+    pub element: usize,
+    /// Von Mises at z = +t/2, MPa.
+    pub top: f64,
+    /// Von Mises at the mid-surface, MPa.
+    pub mid: f64,
+    /// Von Mises at z = −t/2, MPa.
+    pub bottom: f64,
 }
 
 /// Result of the `static` analysis.
@@ -47,35 +64,12 @@ pub struct Units {
 /// Solves every load case of the model.
 pub fn solve(model: &Model) -> Result<(StaticResult, fem::StaticResults), AnalysisError> {
     let res = fem::solve_static(model).map_err(|e| AnalysisError::new("model", e.to_string()))?;
-    let rows = res
-        .load_cases
-        .iter()
-        .map(|c| StaticCaseRow {
-            name: c.name.clone(),
-            displacements: c
-                .displacements
-                .iter()
-                .map(|d| {
-                    [
-                        d[0],
-                        d[1],
-                        d[2],
-                        d[3].to_degrees(),
-                        d[4].to_degrees(),
-                        d[5].to_degrees(),
-                    ]
-                })
-                .collect(),
-            reactions: c.reactions.iter().map(|(_, r)| *r).collect(),
-            reaction_nodes: c.reactions.iter().map(|(n, _)| *n).collect(),
-            max_von_mises: c.max_von_mises,
-            element_von_mises: c.elements.iter().map(|e| e.max_von_mises()).collect(),
-            equilibrium_residual: c.statics.residual(),
-        })
-        .collect();
+    let rows = res.load_cases.iter().map(row).collect();
     let notes = vec![
         "linear statics, small displacements".to_string(),
         "beams: 2-node exact Timoshenko (Euler–Bernoulli where \"shear\": false); stresses at section critical points"
+            .to_string(),
+        "shells: 4-node flat shell (membrane with drilling rotation, MITC4 bending/shear); von Mises at the element centre, max of top/mid/bottom"
             .to_string(),
     ];
     Ok((
@@ -135,6 +129,19 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
         reaction_nodes: c.reactions.iter().map(|(n, _)| *n).collect(),
         max_von_mises: c.max_von_mises,
         element_von_mises: c.elements.iter().map(|e| e.max_von_mises()).collect(),
+        shell_von_mises: c
+            .elements
+            .iter()
+            .enumerate()
+            .filter_map(|(element, e)| {
+                e.shell.map(|s| ShellVonMises {
+                    element,
+                    top: s.von_mises[0],
+                    mid: s.von_mises[1],
+                    bottom: s.von_mises[2],
+                })
+            })
+            .collect(),
         equilibrium_residual: c.statics.residual(),
     }
 }
@@ -173,36 +180,55 @@ pub fn report(r: &StaticResult) -> Report {
     Report { markdown: md, csv }
 }
 
-/// A `.vtu` of one load case: deformed shape (true scale), displacement and rotation point
-/// data, and von Mises per element (`cell_stress` overrides the beam values, e.g. hinge peak
-/// stresses; missing values are 0). Ground springs are not drawn.
+/// A `.vtu` of one load case: deformed shape (true scale), lines (beams, hinges, two-node
+/// springs) and quads (shells), displacement and rotation point data, and von Mises per cell
+/// (max over element ends / shell surfaces; `cell_stress` overrides it for given elements, e.g.
+/// hinge peak stresses; 0 where none).
 pub fn vtu(model: &Model, case: &fem::CaseResult, cell_stress: &[(usize, f64)]) -> Result<String, AnalysisError> {
-    let mut lines = Vec::new();
-    let mut vm = Vec::new();
+    let (lines, quads) = super::modal::cells(model);
+    // Cell order as `cells` lists them: line elements first, then quads.
+    let mut line_elems = Vec::new();
+    let mut quad_elems = Vec::new();
     for (ie, e) in model.elements.iter().enumerate() {
-        let nodes = e.nodes();
-        if nodes.len() == 2 {
-            lines.push([nodes[0], nodes[1]]);
-            let v = cell_stress
+        match e {
+            fem::Element::Shell4(_) => quad_elems.push(ie),
+            fem::Element::Spring(s) if s.b.is_none() => {}
+            _ => line_elems.push(ie),
+        }
+    }
+    let vm: Vec<f64> = line_elems
+        .iter()
+        .chain(&quad_elems)
+        .map(|&ie| {
+            cell_stress
                 .iter()
                 .find(|(i, _)| *i == ie)
                 .map(|(_, v)| *v)
                 .or_else(|| case.elements.get(ie).and_then(|r| r.max_von_mises()))
-                .unwrap_or(0.0);
-            vm.push(v);
-        }
-    }
+                .unwrap_or(0.0)
+        })
+        .collect();
     let disp: Vec<[f64; 3]> = case.displacements.iter().map(|d| [d[0], d[1], d[2]]).collect();
     let rot: Vec<[f64; 3]> = case.displacements.iter().map(|d| [d[3], d[4], d[5]]).collect();
     let mesh = crate::report::vtk::VtuMesh {
         points: &model.nodes,
         lines: &lines,
+        quads: &quads,
         displacement: &disp,
         rotation: &rot,
         cell_scalars: vec![("von_mises", &vm)],
         deform_scale: 1.0,
+        ..Default::default()
     };
     crate::report::vtk::to_string(&mesh).map_err(|e| AnalysisError::new("vtu", e.to_string()))
+}
+
+/// One `.vtu` per load case, named after the load case.
+pub fn vtu_files(model: &Model, res: &fem::StaticResults) -> Result<super::Files, AnalysisError> {
+    res.load_cases
+        .iter()
+        .map(|c| Ok((format!("{}.vtu", file_stem(&c.name)), vtu(model, c, &[])?.into_bytes())))
+        .collect()
 }
 
 /// A file name made of the safe characters of `name`.

@@ -4,6 +4,7 @@ pub mod design;
 pub mod fem_static;
 pub mod hinge;
 pub mod kinematics;
+pub mod modal;
 pub mod stage;
 
 use crate::case::{Case, CaseError};
@@ -105,6 +106,7 @@ pub fn check(case: &Case) -> Result<(), CaseError> {
         Case::FemVsFkp(s) => s.validate().map(|_| ()),
         Case::Sensitivity(s) => s.validate().map(|_| ()),
         Case::Design(s) => s.validate().map(|_| ()),
+        Case::Modal(m) => m.model.build_model(false).map(|_| ()),
     }
 }
 
@@ -128,10 +130,7 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
                 Some(steps) => fem_static::solve_nonlinear(&model, steps)?,
                 None => {
                     let (r, raw) = fem_static::solve(&model)?;
-                    for c in &raw.load_cases {
-                        let text = fem_static::vtu(&model, c, &[])?;
-                        files.push((format!("{}.vtu", fem_static::file_stem(&c.name)), text.into_bytes()));
-                    }
+                    files = fem_static::vtu_files(&model, &raw)?;
                     r
                 }
             };
@@ -139,6 +138,15 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
                 json: to_json(&r)?,
                 report: fem_static::report(&r),
                 files,
+            })
+        }
+        Case::Modal(m) => {
+            let model = m.model.build_model(false)?;
+            let (r, raw) = modal::solve(&model, m.modes, m.shift_hz)?;
+            Ok(Outcome {
+                json: to_json(&r)?,
+                report: modal::report(&r),
+                files: vec![("modes.vtu".to_string(), modal::vtu(&model, &raw)?)],
             })
         }
         Case::Sweep(_) => Err(RunError::Case(CaseError::value(

@@ -109,6 +109,9 @@ pub struct StageResult {
     pub model: Vec<String>,
     /// Were the load cases solved geometrically nonlinear?
     pub nonlinear: bool,
+    /// Natural frequencies and shapes (when the case asks for `modes`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub modes: Option<Vec<super::modal::ModeRow>>,
 }
 
 fn row(r: &StageCaseResult, allowable: f64) -> StageRow {
@@ -247,8 +250,34 @@ fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super:
         platform_stiffness: platform_stiffness(compliance),
         model,
         nonlinear: case.nonlinear,
+        modes: match case.modes {
+            Some(n) => Some(stage_modes(case, &s, n)?),
+            None => None,
+        },
     };
     Ok((result, out_files))
+}
+
+/// Modes of the stage with the actuators locked. Platform: point mass at P, a disc of radius
+/// b and thickness t (default 10 mm) unless `platform_mass` is given: m = ρπb²t,
+/// Ixx = Iyy = m(3b² + t²)/12, Izz = mb²/2 (platform normal = global z at home).
+pub fn stage_modes(case: &StageCase, s: &stage::StageModel, n: usize) -> Result<Vec<super::modal::ModeRow>, RunError> {
+    let mut model = s.model.clone();
+    for leg in &s.legs {
+        model.supports.push(crate::fem::Support::clamp(leg.slider));
+    }
+    let rho = s.design.material.density;
+    let b = s.design.prs.b;
+    let t = case.platform_thickness.unwrap_or(10.0);
+    let mass = case.platform_mass.unwrap_or(rho * std::f64::consts::PI * b * b * t);
+    let ixx = mass * (3.0 * b * b + t * t) / 12.0;
+    model.masses.push(crate::fem::PointMass {
+        node: s.platform,
+        mass,
+        inertia: [ixx, ixx, mass * b * b / 2.0],
+    });
+    let (r, _) = super::modal::solve(&model, n, None)?;
+    Ok(r.modes)
 }
 
 /// Markdown/CSV of a stage result.

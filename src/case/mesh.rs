@@ -131,7 +131,7 @@ pub enum ElementSpec {
         /// Slave nodes.
         slaves: Vec<usize>,
     },
-    /// 4-node flat shell.
+    /// 4-node flat shell (a triangle as the degenerate quad [a, b, c, c]).
     Shell4 {
         /// Node indices.
         nodes: [usize; 4],
@@ -220,6 +220,25 @@ pub struct MeshSpec {
     pub load_cases: Vec<LoadCaseSpec>,
 }
 
+/// `"analysis": "modal"`: the lowest `modes` natural frequencies and mass-normalised shapes of
+/// a model given as for `static` (supports optional: a free body gives six rigid-body modes
+/// first; load cases are ignored).
+#[derive(Debug, Clone, schemars::JsonSchema)]
+pub struct ModalCase {
+    /// Mesh file, as for `static`.
+    pub mesh: Option<String>,
+    /// Physical-group mapping of a Gmsh `.msh` mesh.
+    pub gmsh: Option<super::gmsh::GmshMapping>,
+    /// Number of modes (the lowest), 1 … 1000.
+    pub modes: usize,
+    /// Optional shift frequency f, Hz (σ = (2πf)²): the modes nearest above it are found instead of
+    /// the lowest. Default: 0 (a small negative shift for free bodies).
+    pub shift_hz: Option<f64>,
+    /// The model.
+    #[serde(flatten)]
+    pub model: MeshSpec,
+}
+
 /// A rigid link.
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -236,6 +255,8 @@ pub struct StaticCase {
     /// Path of a JSON mesh file (relative to the case file's folder, then to the working folder)
     /// holding `materials`, `sections`, `nodes`, `elements`, `supports` and optionally `load_cases`.
     pub mesh: Option<String>,
+    /// Physical-group mapping of a Gmsh `.msh` mesh (see [`super::gmsh`]).
+    pub gmsh: Option<super::gmsh::GmshMapping>,
     /// The inline model (or additions to the mesh: materials, sections, load cases).
     #[serde(flatten)]
     pub model: MeshSpec,
@@ -273,8 +294,13 @@ impl MeshSpec {
         Ok(mesh)
     }
 
-    /// Validates every reference and value and builds the FE model.
+    /// Validates every reference and value and builds the FE model (at least one load case).
     pub fn build(&self) -> Result<fem::Model, CaseError> {
+        self.build_model(true)
+    }
+
+    /// As [`MeshSpec::build`]; `need_loads = false` accepts a model without load cases (modal).
+    pub fn build_model(&self, need_loads: bool) -> Result<fem::Model, CaseError> {
         let mut materials = BTreeMap::new();
         for (k, m) in &self.materials {
             materials.insert(k.as_str(), m.resolve(&format!("materials.{k}"))?);
@@ -425,12 +451,64 @@ impl MeshSpec {
                         },
                     ));
                 }
-                ElementSpec::Shell4 { .. } => {
-                    return Err(CaseError::value(
-                        format!("{p}.type"),
-                        "\"shell4\"",
-                        "shell elements are not available in this version (beam, spring, mass, rigid)",
-                    ));
+                ElementSpec::Shell4 {
+                    nodes,
+                    section,
+                    material,
+                } => {
+                    let mut ns = [0usize; 4];
+                    for (k, &nd) in nodes.iter().enumerate() {
+                        ns[k] = node_ref(format!("{p}.nodes[{k}]"), nd)?;
+                    }
+                    // A triangle may be given as a degenerate quad [a, b, c, c].
+                    for a in 0..4 {
+                        for b in 0..a {
+                            if ns[a] == ns[b] && !(a == 3 && b == 2) {
+                                return Err(CaseError::value(
+                                    format!("{p}.nodes"),
+                                    format!("{ns:?}"),
+                                    "a shell4 needs four different nodes (or [a, b, c, c] for a triangle)",
+                                ));
+                            }
+                        }
+                    }
+                    let t = match self.sections.get(section.as_str()) {
+                        Some(SectionSpec::Shell { t }) => *t,
+                        Some(_) => {
+                            return Err(CaseError::value(
+                                format!("{p}.section"),
+                                format!("\"{section}\""),
+                                "a shell4 needs a section with \"shape\": \"shell\"",
+                            ))
+                        }
+                        None => {
+                            return Err(CaseError::value(
+                                format!("{p}.section"),
+                                format!("\"{section}\""),
+                                format!("unknown section; defined: {}", keys(&self.sections)),
+                            ))
+                        }
+                    };
+                    let mat = *materials.get(material.as_str()).ok_or_else(|| {
+                        CaseError::value(
+                            format!("{p}.material"),
+                            format!("\"{material}\""),
+                            format!("unknown material; defined: {}", keys(&self.materials)),
+                        )
+                    })?;
+                    let x = ns.map(|i| self.nodes[i]);
+                    if fem::shell::shell_geometry(&x).is_none() {
+                        return Err(CaseError::value(
+                            format!("{p}.nodes"),
+                            format!("{ns:?}"),
+                            "the four nodes must form a convex quadrilateral, listed around it (not crossed, no zero area)",
+                        ));
+                    }
+                    model.add_element(fem::Element::Shell4(fem::Shell4 {
+                        nodes: ns,
+                        t,
+                        material: mat,
+                    }));
                 }
             }
         }
@@ -447,7 +525,7 @@ impl MeshSpec {
             let dofs: Vec<Dof> = s.fix.iter().map(|d| d.dof()).collect();
             model.supports.push(fem::Support::dofs(node, &dofs));
         }
-        if self.load_cases.is_empty() {
+        if need_loads && self.load_cases.is_empty() {
             return Err(CaseError::new("load_cases", "at least one load case is needed"));
         }
         for (ic, c) in self.load_cases.iter().enumerate() {

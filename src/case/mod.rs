@@ -6,6 +6,7 @@
 
 pub mod design;
 pub mod error;
+pub mod gmsh;
 pub mod hinge;
 pub mod kinematics;
 pub mod material;
@@ -40,6 +41,8 @@ pub enum Case {
     Sensitivity(design::SensitivityCase),
     /// Requirement-driven sizing of the stage hinges.
     Design(design::DesignCase),
+    /// Natural frequencies and mode shapes of a generic beam/shell model.
+    Modal(mesh::ModalCase),
 }
 
 /// The `analysis` names this build understands.
@@ -51,6 +54,7 @@ pub const ANALYSES: &[&str] = &[
     "sensitivity",
     "design",
     "static",
+    "modal",
     "sweep",
 ];
 
@@ -66,6 +70,7 @@ impl Case {
             Case::FemVsFkp(_) => "fem_vs_fkp",
             Case::Sensitivity(_) => "sensitivity",
             Case::Design(_) => "design",
+            Case::Modal(_) => "modal",
         }
     }
 }
@@ -160,18 +165,26 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
         "fem_vs_fkp" => Ok(Case::FemVsFkp(from_value(value, "")?)),
         "sensitivity" => Ok(Case::Sensitivity(from_value(value, "")?)),
         "design" => Ok(Case::Design(from_value(value, "")?)),
-        "static" => {
+        "static" | "modal" => {
             let mesh_name = match map.remove("mesh") {
                 None | Some(Value::Null) => None,
                 Some(Value::String(s)) => Some(s),
                 Some(other) => return Err(CaseError::value("mesh", short(&other), "must be a file name (string)")),
             };
-            let nonlinear = match map.remove("nonlinear") {
+            let nonlinear = match if analysis == "static" {
+                map.remove("nonlinear")
+            } else {
+                None
+            } {
                 None | Some(Value::Null) => false,
                 Some(Value::Bool(b)) => b,
                 Some(other) => return Err(CaseError::value("nonlinear", short(&other), "must be true or false")),
             };
-            let steps = match map.remove("steps") {
+            let steps = match if analysis == "static" {
+                map.remove("steps")
+            } else {
+                None
+            } {
                 None | Some(Value::Null) => None,
                 Some(v) => match v.as_u64() {
                     Some(n) => Some(usize::try_from(n).unwrap_or(usize::MAX)),
@@ -185,8 +198,88 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                 },
             };
             let steps = stage::check_steps("steps", steps, nonlinear)?;
+            let modal = if analysis == "modal" {
+                let modes = match map.remove("modes") {
+                    Some(Value::Number(n)) => match n.as_u64() {
+                        Some(k) if (1..=1000).contains(&k) => k as usize,
+                        _ => {
+                            return Err(CaseError::value(
+                                "modes",
+                                n.to_string(),
+                                "must be an integer from 1 to 1000",
+                            ))
+                        }
+                    },
+                    Some(other) => {
+                        return Err(CaseError::value(
+                            "modes",
+                            short(&other),
+                            "must be an integer from 1 to 1000",
+                        ))
+                    }
+                    None => {
+                        return Err(CaseError::new(
+                            "modes",
+                            "missing field `modes` (number of modes wanted)",
+                        ))
+                    }
+                };
+                let shift_hz = match map.remove("shift_hz") {
+                    None | Some(Value::Null) => None,
+                    Some(Value::Number(n)) => match n.as_f64() {
+                        Some(f) if f.is_finite() && f >= 0.0 => Some(f),
+                        _ => {
+                            return Err(CaseError::value(
+                                "shift_hz",
+                                n.to_string(),
+                                "must be a frequency ≥ 0, Hz",
+                            ))
+                        }
+                    },
+                    Some(other) => {
+                        return Err(CaseError::value(
+                            "shift_hz",
+                            short(&other),
+                            "must be a frequency ≥ 0, Hz",
+                        ))
+                    }
+                };
+                Some((modes, shift_hz))
+            } else {
+                None
+            };
+            let gmsh_map = match map.remove("gmsh") {
+                None | Some(Value::Null) => None,
+                Some(v) => Some(from_value::<gmsh::GmshMapping>(v, "gmsh")?),
+            };
             let inline: mesh::MeshSpec = from_value(value, "")?;
+            let gmsh_kept = gmsh_map.clone();
             let model = match &mesh_name {
+                Some(name) if name.ends_with(".msh") => {
+                    let Some(mapping) = gmsh_map.clone() else {
+                        return Err(CaseError::new(
+                            "gmsh",
+                            "a .msh mesh needs a `gmsh` mapping: {\"groups\": {\"NAME\": {\"section\", \"material\"} or {\"fix\": [...]}}}",
+                        ));
+                    };
+                    let file = resolve_file(name, base);
+                    let text = std::fs::read_to_string(&file).map_err(|e| {
+                        CaseError::value(
+                            "mesh",
+                            format!("\"{name}\""),
+                            format!("cannot read {}: {e}", file.display()),
+                        )
+                    })?;
+                    let (from_file, _notes) = gmsh::parse_msh(&text, &mapping)
+                        .map_err(|e| CaseError::new(e.path.clone(), format!("in {name}: {}", e.message)))?;
+                    mesh::MeshSpec::merge_inline(from_file, inline)?
+                }
+                Some(_) if gmsh_map.is_some() => {
+                    return Err(CaseError::new(
+                        "gmsh",
+                        "a `gmsh` mapping is only used with a .msh mesh file",
+                    ))
+                }
                 Some(name) => {
                     let mut mv = read_json("mesh", name, base)?;
                     if let Value::Object(m) = &mut mv {
@@ -200,14 +293,30 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                     })?;
                     mesh::MeshSpec::merge_inline(from_file, inline)?
                 }
+                None if gmsh_map.is_some() => {
+                    return Err(CaseError::new(
+                        "gmsh",
+                        "a `gmsh` mapping is only used with a .msh mesh file",
+                    ))
+                }
                 None => inline,
             };
-            Ok(Case::Static(mesh::StaticCase {
-                mesh: mesh_name,
-                model,
-                nonlinear,
-                steps,
-            }))
+            Ok(match modal {
+                Some((modes, shift_hz)) => Case::Modal(mesh::ModalCase {
+                    mesh: mesh_name,
+                    gmsh: gmsh_kept,
+                    modes,
+                    shift_hz,
+                    model,
+                }),
+                None => Case::Static(mesh::StaticCase {
+                    mesh: mesh_name,
+                    gmsh: gmsh_kept,
+                    model,
+                    nonlinear,
+                    steps,
+                }),
+            })
         }
         other => Err(CaseError::value(
             "analysis",

@@ -180,6 +180,18 @@ pub struct StageCase {
     /// Load steps of the nonlinear analysis (default 20; only with `"nonlinear": true`).
     #[serde(default)]
     pub steps: Option<usize>,
+    /// Also compute this many natural frequencies (actuators locked: sliders fixed on their
+    /// rails). Legs carry their consistent beam mass, hinges are massless, the platform is a
+    /// rigid body with its mass and inertia lumped at P.
+    #[serde(default)]
+    pub modes: Option<usize>,
+    /// Platform mass, tonne (default: a disc of radius `b` and `platform_thickness` of the
+    /// stage material).
+    #[serde(default)]
+    pub platform_mass: Option<f64>,
+    /// Thickness of the disc platform, mm (default 10), used when `platform_mass` is absent.
+    #[serde(default)]
+    pub platform_thickness: Option<f64>,
 }
 
 /// Default number of nonlinear load steps.
@@ -272,6 +284,17 @@ impl StageCase {
     pub fn validate(&self) -> Result<(StageDesign, Vec<(String, Drive)>), CaseError> {
         let d = self.stage.design(&self.material)?;
         check_steps("steps", self.steps, self.nonlinear)?;
+        if let Some(n) = self.modes {
+            if !(1..=1000).contains(&n) {
+                return Err(CaseError::value("modes", n, "must be an integer from 1 to 1000"));
+            }
+        }
+        if let Some(m) = self.platform_mass {
+            super::error::check::positive("platform_mass", m, "tonne")?;
+        }
+        if let Some(t) = self.platform_thickness {
+            super::error::check::positive("platform_thickness", t, "mm")?;
+        }
         if self.load_cases.is_empty() {
             return Err(CaseError::new("load_cases", "at least one load case is needed"));
         }

@@ -365,7 +365,7 @@ fn find(parent: &mut [usize], mut i: usize) -> usize {
 
 /// Connected parts (through elements, rigid links and ties) without any support, prescribed DOF or
 /// ground spring.
-fn check_free_bodies(model: &Model, map: &DofMap) -> Result<(), FemError> {
+pub fn check_free_bodies(model: &Model, map: &DofMap) -> Result<(), FemError> {
     let n = model.nodes.len();
     let mut parent: Vec<usize> = (0..n).collect();
     let mut grounded = vec![false; n];
@@ -379,11 +379,8 @@ fn check_free_bodies(model: &Model, map: &DofMap) -> Result<(), FemError> {
                 continue;
             }
         }
-        if nodes.len() == 2 {
-            let (a, b) = (
-                find(&mut parent, map.rep[nodes[0]]),
-                find(&mut parent, map.rep[nodes[1]]),
-            );
+        for w in nodes.windows(2) {
+            let (a, b) = (find(&mut parent, map.rep[w[0]]), find(&mut parent, map.rep[w[1]]));
             parent[a] = b;
         }
     }

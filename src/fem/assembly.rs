@@ -3,29 +3,44 @@
 //! (fenris's connectivity/values split).
 //!
 //! Triplet order: element by element, for each element the lower-triangle pairs (eq_a ≥ eq_b)
-//! of its free DOFs in local order a-major; then one zero diagonal slot per equation so every
-//! diagonal entry exists in the pattern.
+//! of its free DOFs in local order a-major (12 DOFs for beams, 24 for shells); then the 6×6
+//! node block of each point mass; then one zero diagonal slot per equation so every diagonal
+//! entry exists in the pattern. Stiffness and mass share the pattern, so K − σM is a sum of
+//! value vectors.
 
 use super::constraints::{DofMap, NONE};
 use super::error::FemError;
-use super::model::Model;
+use super::mass::{element_mass, point_mass, shell_mass_matrix};
+use super::model::{Element, Model};
 use super::solve::{SparseMatrix, SparsePattern};
 use rayon::prelude::*;
 
 /// Sparsity pattern of the reduced stiffness for one model topology and DOF map.
 #[derive(Debug, Clone)]
 pub struct Pattern {
-    /// Element node lists the pattern was built for (checked on refill).
-    topology: Vec<[usize; 2]>,
-    /// Start of each element's values in the triplet list (length n_elements + 1).
+    /// Element node lists the pattern was built for (checked on refill), padded with NONE.
+    topology: Vec<[usize; 4]>,
+    /// Nodes of the point masses the pattern was built for.
+    mass_nodes: Vec<usize>,
+    /// Start of each element's (then each point mass's) values in the triplet list
+    /// (length n_elements + n_masses + 1).
     offsets: Vec<usize>,
     n_eq: usize,
     sparse: SparsePattern,
 }
 
+/// Which matrix to assemble on the pattern.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MatrixKind {
+    /// Stiffness K (point masses contribute zeros).
+    Stiffness,
+    /// Consistent mass M (springs and flexibility elements contribute zeros).
+    Mass,
+}
+
 /// Calls `f(a, b, eq_a, eq_b)` for every lower-triangle pair of free element DOFs.
 #[inline]
-fn for_each_pair(eqs: &[usize; 12], n: usize, mut f: impl FnMut(usize, usize, usize, usize)) {
+fn for_each_pair(eqs: &[usize], n: usize, mut f: impl FnMut(usize, usize, usize, usize)) {
     for a in 0..n {
         let ea = eqs[a];
         if ea == NONE {
@@ -39,7 +54,7 @@ fn for_each_pair(eqs: &[usize; 12], n: usize, mut f: impl FnMut(usize, usize, us
     }
 }
 
-fn element_topology(model: &Model) -> Result<Vec<[usize; 2]>, FemError> {
+fn element_topology(model: &Model) -> Result<Vec<[usize; 4]>, FemError> {
     let n = model.nodes.len();
     model
         .elements
@@ -56,10 +71,11 @@ fn element_topology(model: &Model) -> Result<Vec<[usize; 2]>, FemError> {
                     });
                 }
             }
-            Ok(match nodes.len() {
-                1 => [nodes[0], NONE],
-                _ => [nodes[0], nodes[1]],
-            })
+            let mut t = [NONE; 4];
+            for (slot, &n) in t.iter_mut().zip(&nodes) {
+                *slot = n;
+            }
+            Ok(t)
         })
         .collect()
 }
@@ -76,24 +92,38 @@ impl Pattern {
             let (eqs, nn) = Self::eqs(map, nodes);
             for_each_pair(&eqs, 6 * nn, |_, _, r, c| pairs.push((r, c)));
         }
+        let mass_nodes: Vec<usize> = model.masses.iter().map(|m| m.node).collect();
+        for &node in &mass_nodes {
+            if node >= model.nodes.len() {
+                return Err(FemError::NodeOutOfRange {
+                    what: "point mass".into(),
+                    node,
+                    n_nodes: model.nodes.len(),
+                });
+            }
+            offsets.push(pairs.len());
+            let eqs = map.nodes_eqs(&[map.rep[node]]);
+            for_each_pair(&eqs, 6, |_, _, r, c| pairs.push((r, c)));
+        }
         offsets.push(pairs.len());
         pairs.extend((0..n_eq).map(|i| (i, i)));
         let sparse = SparsePattern::new(n_eq, &pairs)?;
         Ok(Pattern {
             topology,
+            mass_nodes,
             offsets,
             n_eq,
             sparse,
         })
     }
 
-    fn eqs(map: &DofMap, nodes: &[usize; 2]) -> ([usize; 12], usize) {
-        if nodes[1] == NONE {
-            let r = map.rep[nodes[0]];
-            (map.element_eqs([r, r], 1), 1)
-        } else {
-            (map.element_eqs([map.rep[nodes[0]], map.rep[nodes[1]]], 2), 2)
+    fn eqs(map: &DofMap, nodes: &[usize; 4]) -> ([usize; 24], usize) {
+        let nn = nodes.iter().take_while(|&&n| n != NONE).count();
+        let mut reps = [0usize; 4];
+        for (r, &n) in reps.iter_mut().zip(&nodes[..nn]) {
+            *r = map.rep[n];
         }
+        (map.nodes_eqs(&reps[..nn]), nn)
     }
 
     /// Number of equations.
@@ -118,21 +148,30 @@ impl Pattern {
 
     /// Does this pattern fit `model` (same element node lists and equation count)?
     pub fn matches(&self, model: &Model, map: &DofMap) -> bool {
-        map.n_eq() == self.n_eq && element_topology(model).map(|t| t == self.topology).unwrap_or(false)
+        map.n_eq() == self.n_eq
+            && element_topology(model).map(|t| t == self.topology).unwrap_or(false)
+            && model.masses.len() == self.mass_nodes.len()
+            && model.masses.iter().zip(&self.mass_nodes).all(|(m, &n)| m.node == n)
     }
 
-    /// Triplet values in pattern order, element matrices computed in parallel (rayon).
+    /// Stiffness triplet values in pattern order, element matrices computed in parallel (rayon).
     pub fn values(&self, model: &Model, map: &DofMap) -> Result<Vec<f64>, FemError> {
+        self.values_of(model, map, MatrixKind::Stiffness)
+    }
+
+    /// Triplet values of K or M in pattern order (element matrices in parallel).
+    pub fn values_of(&self, model: &Model, map: &DofMap, kind: MatrixKind) -> Result<Vec<f64>, FemError> {
         if !self.matches(model, map) {
             return Err(FemError::PatternMismatch(
                 "the model's elements or equations differ from the pattern's".into(),
             ));
         }
         let ne = self.topology.len();
+        let nm = self.mass_nodes.len();
         let mut vals = vec![0.0; self.n_triplets()];
-        let mut chunks: Vec<&mut [f64]> = Vec::with_capacity(ne);
-        let mut rest = &mut vals[..self.offsets[ne]];
-        for e in 0..ne {
+        let mut chunks: Vec<&mut [f64]> = Vec::with_capacity(ne + nm);
+        let mut rest = &mut vals[..self.offsets[ne + nm]];
+        for e in 0..ne + nm {
             let (c, r) = rest.split_at_mut(self.offsets[e + 1] - self.offsets[e]);
             chunks.push(c);
             rest = r;
@@ -141,7 +180,40 @@ impl Pattern {
             .into_par_iter()
             .enumerate()
             .try_for_each(|(ie, chunk)| -> Result<(), FemError> {
-                let em = model.element_matrix(ie)?;
+                if ie >= ne {
+                    if kind == MatrixKind::Mass {
+                        let node = self.mass_nodes[ie - ne];
+                        let (rep, m) = map.node_on_independent(node, &point_mass(model, ie - ne));
+                        let eqs = map.nodes_eqs(&[rep]);
+                        let mut p = 0;
+                        for_each_pair(&eqs, 6, |a, b, _, _| {
+                            chunk[p] = m[(a, b)];
+                            p += 1;
+                        });
+                    }
+                    return Ok(());
+                }
+                if let Element::Shell4(_) = model.elements[ie] {
+                    let em = match kind {
+                        MatrixKind::Stiffness => model.shell_matrix(ie)?,
+                        MatrixKind::Mass => shell_mass_matrix(model, ie)?,
+                    };
+                    let (reps, k) = map.shell_on_independent(&em);
+                    let eqs = map.nodes_eqs(&reps);
+                    let mut p = 0;
+                    for_each_pair(&eqs, 24, |a, b, _, _| {
+                        chunk[p] = k[(a, b)];
+                        p += 1;
+                    });
+                    return Ok(());
+                }
+                let em = match kind {
+                    MatrixKind::Stiffness => model.element_matrix(ie)?,
+                    MatrixKind::Mass => match element_mass(model, ie)? {
+                        Some(m) => m,
+                        None => return Ok(()),
+                    },
+                };
                 let (reps, k) = map.element_on_independent(&em);
                 let eqs = map.element_eqs(reps, em.n_nodes);
                 let mut p = 0;

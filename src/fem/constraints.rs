@@ -8,7 +8,8 @@
 
 use super::dof::{describe, Dof, NodeDof};
 use super::error::FemError;
-use super::model::{ElementMatrix, Model};
+use super::model::{ElementMatrix, Model, ShellMatrix};
+use super::shell::Mat24;
 use super::transform::{rigid_arm, Mat12};
 use nalgebra::{Matrix6, Vector3, Vector6};
 
@@ -304,6 +305,40 @@ impl DofMap {
             }
         }
         (reps, t.transpose() * em.k * t)
+    }
+
+    /// Shell element matrix carried to the independent nodes (as
+    /// [`DofMap::element_on_independent`], four nodes).
+    pub fn shell_on_independent(&self, em: &ShellMatrix) -> ([usize; 4], Mat24) {
+        let reps = em.nodes.map(|n| self.rep[n]);
+        if em.nodes.iter().all(|&n| self.arm[n].is_none()) {
+            return (reps, em.k);
+        }
+        let mut t = Mat24::identity();
+        for (i, &n) in em.nodes.iter().enumerate() {
+            if let Some(r) = &self.arm[n] {
+                t.fixed_view_mut::<6, 6>(6 * i, 6 * i).copy_from(r);
+            }
+        }
+        (reps, t.transpose() * em.k * t)
+    }
+
+    /// A node's 6×6 matrix (global axes, e.g. a point mass) carried to its independent node:
+    /// Rᵀ M R with R the rigid arm / frame of the node.
+    pub fn node_on_independent(&self, node: usize, m: &Matrix6<f64>) -> (usize, Matrix6<f64>) {
+        match &self.arm[node] {
+            Some(r) => (self.rep[node], r.transpose() * m * r),
+            None => (self.rep[node], *m),
+        }
+    }
+
+    /// Equation numbers of the 6·len DOFs of independent nodes `reps` (up to four).
+    pub fn nodes_eqs(&self, reps: &[usize]) -> [usize; 24] {
+        let mut e = [NONE; 24];
+        for (i, slot) in e.iter_mut().enumerate().take(6 * reps.len().min(4)) {
+            *slot = self.eq[6 * reps[i / 6] + i % 6];
+        }
+        e
     }
 
     /// Equation numbers of the element's 12 (or 6) DOFs on independent nodes.

@@ -18,10 +18,13 @@ pub mod dof;
 pub mod element;
 pub mod error;
 pub mod lattice;
+pub mod mass;
+pub mod modal;
 pub mod model;
 pub mod nonlinear;
 pub mod recovery;
 pub mod section;
+pub mod shell;
 pub mod solve;
 pub mod transform;
 
@@ -29,8 +32,8 @@ pub use analysis::{solve_static, solve_static_with, CaseResult, StaticResults, S
 pub use dof::{Dof, NodeDof};
 pub use error::FemError;
 pub use model::{
-    Beam, Element, FlexElement, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink, Spring, SpringAxes,
-    Support, Tie,
+    Beam, Element, FlexElement, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink, Shell4, Spring,
+    SpringAxes, Support, Tie,
 };
 pub use nonlinear::{solve_nonlinear, NonlinearCase, NonlinearOptions, NonlinearResults, PathPoint};
 pub use section::{Section, SectionProps};

@@ -5,6 +5,7 @@ use super::dof::{Dof, NodeDof};
 use super::element::{beam_local_stiffness, flex_local_stiffness, flex_tip_stiffness};
 use super::error::FemError;
 use super::section::{Section, SectionProps};
+use super::shell::{shell_stiffness, Mat24};
 use super::transform::{beam_frame, frame_from_x_up, rigid_arm, t12, t6, Mat12};
 use crate::material::Material;
 use nalgebra::{Matrix3, Matrix6, SMatrix, Vector3};
@@ -92,12 +93,23 @@ pub struct Spring {
     pub axes: SpringAxes,
 }
 
+/// Four-node flat shell (see [`super::shell`]): membrane with drilling rotation + MITC4
+/// bending/shear. Nodes in order around the element (the normal follows the right-hand rule).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Shell4 {
+    pub nodes: [usize; 4],
+    /// Thickness, mm.
+    pub t: f64,
+    pub material: Material,
+}
+
 /// Elements that contribute stiffness.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Element {
     Beam(Beam),
     Flex(FlexElement),
     Spring(Spring),
+    Shell4(Shell4),
 }
 
 impl Element {
@@ -110,6 +122,7 @@ impl Element {
                 Some(b) => vec![s.a, b],
                 None => vec![s.a],
             },
+            Element::Shell4(s) => s.nodes.to_vec(),
         }
     }
 }
@@ -229,6 +242,13 @@ pub struct Model {
     pub ties: Vec<Tie>,
 }
 
+/// A global shell element matrix (stiffness or mass) on its four nodes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShellMatrix {
+    pub nodes: [usize; 4],
+    pub k: Mat24,
+}
+
 /// A global element matrix on its nodes (`n_nodes` = 1 or 2; for 1 only the top-left 6×6 is
 /// used).
 #[derive(Debug, Clone, PartialEq)]
@@ -287,8 +307,15 @@ impl Model {
                 return Err(FemError::BadNode { node: i });
             }
         }
-        for (ie, _) in self.elements.iter().enumerate() {
-            self.element_matrix(ie)?;
+        for (ie, e) in self.elements.iter().enumerate() {
+            match e {
+                Element::Shell4(_) => {
+                    self.shell_matrix(ie)?;
+                }
+                _ => {
+                    self.element_matrix(ie)?;
+                }
+            }
         }
         for (i, s) in self.supports.iter().enumerate() {
             self.check_node(|| format!("support {i}"), s.node)?;
@@ -451,7 +478,9 @@ impl Model {
                     reason: "compliance must be finite, symmetric and positive definite".into(),
                 })?
             }
-            Element::Spring(_) => return Err(FemError::BadInput(format!("element {ie} is a spring"))),
+            Element::Spring(_) | Element::Shell4(_) => {
+                return Err(FemError::BadInput(format!("element {ie} is not a beam")))
+            }
         };
         Ok((k, t12(&lam)))
     }
@@ -519,12 +548,16 @@ impl Model {
                     k: b.transpose() * kd * b,
                 })
             }
+            Some(Element::Shell4(_)) => Err(FemError::BadInput(format!(
+                "element {ie} is a shell (use Model::shell_matrix)"
+            ))),
             Some(e) => {
                 let (k, t) = self.element_local(ie)?;
                 let nodes = match e {
                     Element::Beam(b) => b.nodes,
                     Element::Flex(f) => f.nodes,
                     Element::Spring(s) => [s.a, s.b.unwrap_or(s.a)],
+                    Element::Shell4(s) => [s.nodes[0], s.nodes[1]],
                 };
                 // t = diag(Λ, Λ, Λ, Λ): rotate block-wise.
                 let lam: nalgebra::Matrix3<f64> = t.fixed_view::<3, 3>(0, 0).into_owned();
@@ -535,6 +568,47 @@ impl Model {
                 })
             }
         }
+    }
+
+    /// Checks a shell element (nodes, thickness, material) and returns it with its node
+    /// coordinates.
+    pub fn shell_checked(&self, ie: usize) -> Result<(&Shell4, [[f64; 3]; 4]), FemError> {
+        let Some(Element::Shell4(s)) = self.elements.get(ie) else {
+            return Err(FemError::BadInput(format!("element {ie} is not a shell")));
+        };
+        for &n in &s.nodes {
+            self.check_node(|| format!("element {ie} (shell)"), n)?;
+        }
+        let m = &s.material;
+        if !(m.e.is_finite() && m.e > 0.0 && m.nu.is_finite() && m.nu > -1.0 && m.nu < 0.5) {
+            return Err(FemError::BadElement {
+                element: ie,
+                reason: format!("material needs E > 0 and −1 < ν < 0.5 (E = {}, ν = {})", m.e, m.nu),
+            });
+        }
+        if !(s.t.is_finite() && s.t > 0.0) {
+            return Err(FemError::BadElement {
+                element: ie,
+                reason: format!("shell thickness must be positive and finite, got {}", s.t),
+            });
+        }
+        Ok((s, s.nodes.map(|n| self.nodes[n])))
+    }
+
+    fn bad_quad(ie: usize, nodes: [usize; 4]) -> FemError {
+        FemError::BadElement {
+            element: ie,
+            reason: format!(
+                "shell nodes {nodes:?} do not form a convex quadrilateral (zero area, repeated nodes or crossed order)"
+            ),
+        }
+    }
+
+    /// Global stiffness of shell element `ie` (24×24).
+    pub fn shell_matrix(&self, ie: usize) -> Result<ShellMatrix, FemError> {
+        let (s, x) = self.shell_checked(ie)?;
+        let k = shell_stiffness(&x, s.t, &s.material).ok_or_else(|| Self::bad_quad(ie, s.nodes))?;
+        Ok(ShellMatrix { nodes: s.nodes, k })
     }
 
     /// Tip stiffness C⁻¹ of a flexibility element (local axes at node 2).

@@ -151,6 +151,9 @@ enum ElemData {
 fn element_data(model: &Model) -> Result<Vec<ElemData>, FemError> {
     (0..model.elements.len())
         .map(|ie| match &model.elements[ie] {
+            Element::Shell4(_) => Err(FemError::BadInput(format!(
+                "element {ie} is a shell: the geometrically nonlinear solver handles beams, flexibility elements (hinges) and springs"
+            ))),
             Element::Spring(s) => {
                 let (b, k, n) = model.spring_b(ie)?;
                 Ok(ElemData::Spring {
@@ -924,6 +927,7 @@ fn finish(
                     section_forces: [s1, f2],
                     von_mises,
                     strain_energy: 0.5 * r.d_local.dot(&r.f_local),
+                    shell: None,
                 });
                 let rt = r.rr.transpose();
                 frames.push(std::array::from_fn(|i| std::array::from_fn(|j| rt[(i, j)])));
@@ -958,6 +962,7 @@ fn finish(
                     section_forces: [fs, fs],
                     von_mises: None,
                     strain_energy: energy,
+                    shell: None,
                 });
                 frames.push([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]);
             }

@@ -6,6 +6,7 @@ use super::constraints::DofMap;
 use super::error::FemError;
 use super::model::{Element, Model};
 use super::section::{Section, SectionProps, StressPoint};
+use super::shell::{shell_stress, ShellStress, Vec24};
 use nalgebra::{SVector, Vector3};
 use rayon::prelude::*;
 
@@ -25,6 +26,9 @@ pub struct ElementResult {
     pub von_mises: Option<[f64; 2]>,
     /// Strain energy ½ dᵀ k d, N·mm.
     pub strain_energy: f64,
+    /// Shells: centre stresses (von Mises top/mid/bottom, membrane forces, moments; local
+    /// axes). `None` for other elements.
+    pub shell: Option<ShellStress>,
 }
 
 impl ElementResult {
@@ -112,10 +116,28 @@ fn elem_vec(u: &[f64], nodes: [usize; 2]) -> SVector<f64, 12> {
     d
 }
 
+fn shell_vec(u: &[f64], nodes: [usize; 4]) -> Vec24 {
+    let mut d = Vec24::zeros();
+    for (k, &n) in nodes.iter().enumerate() {
+        d.fixed_rows_mut::<6>(6 * k).copy_from(&node_vec(u, n));
+    }
+    d
+}
+
 /// Internal force vector p = Σₑ Kₑ uₑ (6 per node, global axes), ground springs included.
 pub fn internal_forces(model: &Model, u: &[f64]) -> Result<Vec<f64>, FemError> {
     let mut p = vec![0.0; model.n_dofs()];
     for ie in 0..model.elements.len() {
+        if let Element::Shell4(_) = model.elements[ie] {
+            let em = model.shell_matrix(ie)?;
+            let f = em.k * shell_vec(u, em.nodes);
+            for k in 0..4 {
+                for i in 0..6 {
+                    p[6 * em.nodes[k] + i] += f[6 * k + i];
+                }
+            }
+            continue;
+        }
         let em = model.element_matrix(ie)?;
         let d = elem_vec(u, em.nodes);
         let f = em.k * d;
@@ -131,6 +153,23 @@ pub fn internal_forces(model: &Model, u: &[f64]) -> Result<Vec<f64>, FemError> {
 /// Results of element `ie` for the global displacement vector `u`.
 pub fn element_result(model: &Model, ie: usize, u: &[f64]) -> Result<ElementResult, FemError> {
     match &model.elements[ie] {
+        Element::Shell4(sh) => {
+            let em = model.shell_matrix(ie)?;
+            let d = shell_vec(u, em.nodes);
+            let x = sh.nodes.map(|n| model.nodes[n]);
+            let stress = shell_stress(&x, sh.t, &sh.material, &d).ok_or_else(|| FemError::BadElement {
+                element: ie,
+                reason: "degenerate shell geometry".into(),
+            })?;
+            let vm = stress.von_mises.iter().cloned().fold(0.0, f64::max);
+            Ok(ElementResult {
+                end_forces: [[0.0; 6]; 2],
+                section_forces: [[0.0; 6]; 2],
+                von_mises: Some([vm, vm]),
+                strain_energy: 0.5 * d.dot(&(em.k * d)),
+                shell: Some(stress),
+            })
+        }
         Element::Spring(s) => {
             let (b, k, n) = model.spring_b(ie)?;
             let nodes = [s.a, s.b.unwrap_or(s.a)];
@@ -147,6 +186,7 @@ pub fn element_result(model: &Model, ie: usize, u: &[f64]) -> Result<ElementResu
                 section_forces: [f, f],
                 von_mises: None,
                 strain_energy: energy,
+                shell: None,
             })
         }
         e => {
@@ -155,6 +195,7 @@ pub fn element_result(model: &Model, ie: usize, u: &[f64]) -> Result<ElementResu
                 Element::Beam(b) => b.nodes,
                 Element::Flex(f) => f.nodes,
                 Element::Spring(s) => [s.a, s.b.unwrap_or(s.a)],
+                Element::Shell4(s) => [s.nodes[0], s.nodes[1]],
             };
             let d = t * elem_vec(u, nodes);
             let f = k * d;
@@ -180,6 +221,7 @@ pub fn element_result(model: &Model, ie: usize, u: &[f64]) -> Result<ElementResu
                 section_forces: [s1, s2],
                 von_mises,
                 strain_energy: 0.5 * d.dot(&f),
+                shell: None,
             })
         }
     }

@@ -147,6 +147,53 @@ impl SparseMatrix {
         y
     }
 
+    /// Both triangles in compressed rows, for fast parallel products (e.g. M·v in Lanczos).
+    pub fn full(&self) -> FullSymmetric {
+        let n = self.n();
+        let mut count = vec![0usize; n + 1];
+        self.for_each(|i, j, _| {
+            count[i + 1] += 1;
+            if i != j {
+                count[j + 1] += 1;
+            }
+        });
+        for k in 0..n {
+            count[k + 1] += count[k];
+        }
+        let mut next = count.clone();
+        let mut col = vec![0usize; count[n]];
+        let mut val = vec![0.0; count[n]];
+        self.for_each(|i, j, v| {
+            col[next[i]] = j;
+            val[next[i]] = v;
+            next[i] += 1;
+            if i != j {
+                col[next[j]] = i;
+                val[next[j]] = v;
+                next[j] += 1;
+            }
+        });
+        FullSymmetric {
+            row_ptr: count,
+            col,
+            val,
+        }
+    }
+
+    /// a·self + b·other for two matrices on the same pattern (e.g. K − σM from one
+    /// [`SparsePattern`]); `None` if the patterns differ.
+    pub fn lin_comb(&self, a: f64, other: &SparseMatrix, b: f64) -> Option<SparseMatrix> {
+        let (s1, s2) = (self.mat.symbolic(), other.mat.symbolic());
+        if s1.col_ptr() != s2.col_ptr() || s1.row_idx() != s2.row_idx() {
+            return None;
+        }
+        let mut out = self.clone();
+        for (v, w) in out.mat.val_mut().iter_mut().zip(other.mat.val()) {
+            *v = a * *v + b * w;
+        }
+        Some(out)
+    }
+
     /// K + eps·diag(K) (the pattern must hold the diagonal, which
     /// [`super::assembly::Pattern`] guarantees).
     pub fn shifted_scaled(&self, eps: f64) -> SparseMatrix {
@@ -179,6 +226,30 @@ impl SparseMatrix {
         });
         res?;
         w.flush()
+    }
+}
+
+/// A symmetric matrix with both triangles stored by rows (plain CSR, no faer types).
+#[derive(Debug, Clone)]
+pub struct FullSymmetric {
+    row_ptr: Vec<usize>,
+    col: Vec<usize>,
+    val: Vec<f64>,
+}
+
+impl FullSymmetric {
+    /// y = A·x, rows in parallel (rayon).
+    pub fn mul_vec(&self, x: &[f64]) -> Vec<f64> {
+        use rayon::prelude::*;
+        let n = self.row_ptr.len().saturating_sub(1);
+        (0..n)
+            .into_par_iter()
+            .with_min_len(512)
+            .map(|i| {
+                let (a, b) = (self.row_ptr[i], self.row_ptr[i + 1]);
+                self.col[a..b].iter().zip(&self.val[a..b]).map(|(&j, v)| v * x[j]).sum()
+            })
+            .collect()
     }
 }
 

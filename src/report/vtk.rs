@@ -1,5 +1,6 @@
-//! VTK unstructured-grid output (`.vtu`, ASCII XML) for beam models: points, line cells, point
-//! vectors (displacement, rotation) and cell scalars (e.g. von Mises). Formatting only — it takes
+//! VTK unstructured-grid output (`.vtu`, ASCII XML) for beam/shell models: points, line and
+//! quad cells, point vectors (displacement, rotation, mode shapes) and cell scalars (e.g. von
+//! Mises). Formatting only — it takes
 //! plain arrays and knows nothing about the physics.
 
 use std::fmt::Write as _;
@@ -12,11 +13,15 @@ pub struct VtuMesh<'a> {
     pub points: &'a [[f64; 3]],
     /// Line cells as pairs of point indices.
     pub lines: &'a [[usize; 2]],
+    /// Quad cells (shells), four point indices; written after the lines.
+    pub quads: &'a [[usize; 4]],
+    /// Further named point vectors (e.g. mode shapes), one per point.
+    pub point_vectors: Vec<(&'a str, &'a [[f64; 3]])>,
     /// Point displacements, mm (`"displacement"`; empty = none).
     pub displacement: &'a [[f64; 3]],
     /// Point rotations, rad (`"rotation"`; empty = none).
     pub rotation: &'a [[f64; 3]],
-    /// Named cell scalars, one value per line cell (e.g. `("von_mises", …)` in MPa).
+    /// Named cell scalars, one value per cell (lines, then quads) (e.g. `("von_mises", …)` in MPa).
     pub cell_scalars: Vec<(&'a str, &'a [f64])>,
     /// Point coordinates written: undeformed + `deform_scale`·displacement (0 = undeformed).
     pub deform_scale: f64,
@@ -45,11 +50,13 @@ fn vec3_array(out: &mut String, name: &str, v: &[[f64; 3]]) {
 /// Renders the `.vtu` XML.
 pub fn to_string(mesh: &VtuMesh) -> Result<String, VtkError> {
     let np = mesh.points.len();
-    let nc = mesh.lines.len();
-    for (name, len) in [
+    let nc = mesh.lines.len() + mesh.quads.len();
+    let mut named: Vec<(&str, usize)> = vec![
         ("displacement", mesh.displacement.len()),
         ("rotation", mesh.rotation.len()),
-    ] {
+    ];
+    named.extend(mesh.point_vectors.iter().map(|(n, v)| (*n, v.len())));
+    for (name, len) in named {
         if len != 0 && len != np {
             return Err(VtkError::Shape(format!("{name} has {len} entries for {np} points")));
         }
@@ -68,6 +75,11 @@ pub fn to_string(mesh: &VtuMesh) -> Result<String, VtkError> {
     if let Some(l) = mesh.lines.iter().find(|l| l[0] >= np || l[1] >= np) {
         return Err(VtkError::Shape(format!(
             "line {l:?} refers to a missing point ({np} points)"
+        )));
+    }
+    if let Some(q) = mesh.quads.iter().find(|q| q.iter().any(|&i| i >= np)) {
+        return Err(VtkError::Shape(format!(
+            "quad {q:?} refers to a missing point ({np} points)"
         )));
     }
     let mut out = String::new();
@@ -95,15 +107,20 @@ pub fn to_string(mesh: &VtuMesh) -> Result<String, VtkError> {
     for l in mesh.lines {
         let _ = writeln!(out, "          {} {}", l[0], l[1]);
     }
+    for q in mesh.quads {
+        let _ = writeln!(out, "          {} {} {} {}", q[0], q[1], q[2], q[3]);
+    }
     out.push_str("        </DataArray>\n");
     out.push_str("        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
+    let nl = mesh.lines.len();
     for i in 0..nc {
-        let _ = writeln!(out, "          {}", 2 * (i + 1));
+        let off = if i < nl { 2 * (i + 1) } else { 2 * nl + 4 * (i + 1 - nl) };
+        let _ = writeln!(out, "          {off}");
     }
     out.push_str("        </DataArray>\n");
     out.push_str("        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-    for _ in 0..nc {
-        out.push_str("          3\n"); // VTK_LINE
+    for i in 0..nc {
+        out.push_str(if i < nl { "          3\n" } else { "          9\n" }); // VTK_LINE, VTK_QUAD
     }
     out.push_str("        </DataArray>\n      </Cells>\n");
     out.push_str("      <PointData>\n");
@@ -112,6 +129,9 @@ pub fn to_string(mesh: &VtuMesh) -> Result<String, VtkError> {
     }
     if !mesh.rotation.is_empty() {
         vec3_array(&mut out, "rotation", mesh.rotation);
+    }
+    for (name, v) in &mesh.point_vectors {
+        vec3_array(&mut out, name, v);
     }
     out.push_str("      </PointData>\n      <CellData>\n");
     for (name, v) in &mesh.cell_scalars {
@@ -147,6 +167,8 @@ mod tests {
         let mesh = VtuMesh {
             points: &pts,
             lines: &lines,
+            quads: &[],
+            point_vectors: vec![],
             displacement: &disp,
             rotation: &[],
             cell_scalars: vec![("von_mises", &vm)],
@@ -161,5 +183,23 @@ mod tests {
             ..mesh
         };
         assert!(to_string(&bad).is_err());
+    }
+
+    #[test]
+    fn quads_after_lines() {
+        let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
+        let mode = [[0.0, 0.0, 1.0]; 4];
+        let mesh = VtuMesh {
+            points: &pts,
+            lines: &[[0, 1]],
+            quads: &[[0, 1, 2, 3]],
+            point_vectors: vec![("mode_1", &mode)],
+            ..Default::default()
+        };
+        let s = to_string(&mesh).unwrap();
+        assert!(s.contains("NumberOfCells=\"2\""));
+        assert!(s.contains("          6\n"), "offset of the quad: {s}");
+        assert!(s.contains("          9\n"));
+        assert!(s.contains("Name=\"mode_1\""));
     }
 }

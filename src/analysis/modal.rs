@@ -1,0 +1,180 @@
+//! The `modal` analysis on a generic beam/shell model: lowest natural frequencies, mass-normalised
+//! mode shapes, effective mass fractions; VTK file with the mode shapes.
+
+use super::{AnalysisError, Report};
+use crate::fem::modal::{solve_modal, ModalOptions, ModalResults};
+use crate::fem::{Element, Model};
+use crate::report::markdown::Table;
+use crate::report::vtk::{self, VtuMesh};
+use serde::Serialize;
+
+/// Effective mass fractions per global direction.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct Directions {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+    pub rx: f64,
+    pub ry: f64,
+    pub rz: f64,
+}
+
+impl From<[f64; 6]> for Directions {
+    fn from(v: [f64; 6]) -> Self {
+        Directions {
+            x: v[0],
+            y: v[1],
+            z: v[2],
+            rx: v[3],
+            ry: v[4],
+            rz: v[5],
+        }
+    }
+}
+
+/// One mode of the result (INTERFACE.md: `frequency_hz`, `shape`).
+#[derive(Debug, Clone, Serialize)]
+pub struct ModeRow {
+    /// 1-based mode number.
+    pub mode: usize,
+    /// Natural frequency, Hz.
+    pub frequency_hz: f64,
+    /// ω², (rad/s)².
+    pub eigenvalue: f64,
+    /// Mass-normalised shape per node [ux, uy, uz (mm), rx, ry, rz (rad)] · √tonne, global axes.
+    pub shape: Vec<[f64; 6]>,
+    /// Effective mass fraction Γ²/(rᵀMr) per direction (rotations about global axes through the
+    /// origin; relative to the mass on free DOFs).
+    pub effective_mass_fraction: Directions,
+}
+
+/// Result of the `modal` analysis.
+#[derive(Debug, Clone, Serialize)]
+pub struct ModalResult {
+    /// Modes by increasing frequency.
+    pub modes: Vec<ModeRow>,
+    /// Sum of the effective mass fractions of the modes found, per direction.
+    pub cumulative_effective_mass_fraction: Directions,
+    /// Mass on free DOFs (tonne) and rotary inertia about the global axes (tonne·mm²).
+    pub total_mass: Directions,
+    /// Model notes (method, shift, steps).
+    pub model: Vec<String>,
+}
+
+/// Solves the modal problem.
+pub fn solve(model: &Model, modes: usize, shift_hz: Option<f64>) -> Result<(ModalResult, ModalResults), AnalysisError> {
+    let mut opts = ModalOptions::new(modes);
+    opts.shift = shift_hz.map(|f| (2.0 * std::f64::consts::PI * f).powi(2));
+    let r = solve_modal(model, &opts).map_err(|e| AnalysisError::new("model", e.to_string()))?;
+    let mut cum = [0.0; 6];
+    let rows = r
+        .modes
+        .iter()
+        .enumerate()
+        .map(|(i, m)| {
+            for (c, v) in cum.iter_mut().zip(m.effective_mass_fraction) {
+                *c += v;
+            }
+            ModeRow {
+                mode: i + 1,
+                frequency_hz: m.frequency_hz,
+                eigenvalue: m.eigenvalue,
+                shape: m.shape.clone(),
+                effective_mass_fraction: m.effective_mass_fraction.into(),
+            }
+        })
+        .collect();
+    let notes = vec![
+        "consistent mass: beams (Hermite, with rotary inertia), shells (bilinear), point masses".to_string(),
+        format!(
+            "block shift-invert Lanczos on {} equations, shift {:.4e} (rad/s)², {} solves",
+            r.n_eq, r.shift, r.lanczos_steps
+        ),
+    ];
+    Ok((
+        ModalResult {
+            modes: rows,
+            cumulative_effective_mass_fraction: cum.into(),
+            total_mass: r.total_mass.into(),
+            model: notes,
+        },
+        r,
+    ))
+}
+
+/// Lines (beams, flexibility elements, two-node springs) and quads (shells) of a model.
+pub fn cells(model: &Model) -> (Vec<[usize; 2]>, Vec<[usize; 4]>) {
+    let mut lines = Vec::new();
+    let mut quads = Vec::new();
+    for e in &model.elements {
+        match e {
+            Element::Beam(b) => lines.push(b.nodes),
+            Element::Flex(f) => lines.push(f.nodes),
+            Element::Spring(s) => {
+                if let Some(b) = s.b {
+                    lines.push([s.a, b]);
+                }
+            }
+            Element::Shell4(s) => quads.push(s.nodes),
+        }
+    }
+    (lines, quads)
+}
+
+/// `modes.vtu`: the undeformed mesh with one point vector `mode_k` (translations of the
+/// mass-normalised shape) per mode.
+pub fn vtu(model: &Model, r: &ModalResults) -> Result<Vec<u8>, AnalysisError> {
+    let (lines, quads) = cells(model);
+    let shapes: Vec<(String, Vec<[f64; 3]>)> = r
+        .modes
+        .iter()
+        .enumerate()
+        .map(|(i, m)| {
+            (
+                format!("mode_{}", i + 1),
+                m.shape.iter().map(|s| [s[0], s[1], s[2]]).collect(),
+            )
+        })
+        .collect();
+    let mesh = VtuMesh {
+        points: &model.nodes,
+        lines: &lines,
+        quads: &quads,
+        point_vectors: shapes.iter().map(|(n, v)| (n.as_str(), v.as_slice())).collect(),
+        ..Default::default()
+    };
+    vtk::to_string(&mesh)
+        .map(String::into_bytes)
+        .map_err(|e| AnalysisError::new("output", e.to_string()))
+}
+
+/// Markdown/CSV views.
+pub fn report(r: &ModalResult) -> Report {
+    let mut md = String::from("# Modal analysis\n\n");
+    let mut csv = String::from("mode,frequency_hz,mef_x,mef_y,mef_z,mef_rx,mef_ry,mef_rz\n");
+    let mut t = Table::new(&["mode", "f (Hz)", "x", "y", "z", "rx", "ry", "rz"]);
+    for m in &r.modes {
+        let e = m.effective_mass_fraction;
+        t.row(vec![
+            m.mode.to_string(),
+            format!("{:.4}", m.frequency_hz),
+            format!("{:.4}", e.x),
+            format!("{:.4}", e.y),
+            format!("{:.4}", e.z),
+            format!("{:.4}", e.rx),
+            format!("{:.4}", e.ry),
+            format!("{:.4}", e.rz),
+        ]);
+        csv += &format!(
+            "{},{},{},{},{},{},{},{}\n",
+            m.mode, m.frequency_hz, e.x, e.y, e.z, e.rx, e.ry, e.rz
+        );
+    }
+    md += "Frequencies and effective mass fractions per direction:\n\n";
+    md += &t.render();
+    md += "\n";
+    for n in &r.model {
+        md += &format!("- {n}\n");
+    }
+    Report { markdown: md, csv }
+}
