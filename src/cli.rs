@@ -121,7 +121,12 @@ pub fn run(cli: Cli) -> ExitCode {
                 Ok(c) => c,
                 Err(e) => return fail(&RunError::Case(e)),
             };
-            let outcome = match analysis::run(&parsed) {
+            let run = if out.is_some() {
+                analysis::run_with_files
+            } else {
+                analysis::run
+            };
+            let outcome = match run(&parsed) {
                 Ok(o) => o,
                 Err(e) => return fail(&e),
             };

@@ -214,7 +214,7 @@ fn modal_case_paths() {
                      {"type": "beam", "nodes": [1,2], "section": "r", "material": "s", "up": [0,0,1], "shear": false}],
         "supports": [{"node": 0, "fix": ["ux","uy","uz","rx","ry","rz"]}]}"#;
     let c = flexfem::case::parse(ok).unwrap();
-    let out = flexfem::analysis::run(&c).unwrap();
+    let out = flexfem::analysis::run_with_files(&c).unwrap();
     let f = out.json["modes"][0]["frequency_hz"].as_f64().unwrap();
     assert!((f - 8.3551).abs() / 8.3551 < 0.01, "{f}");
     assert!(out.files.iter().any(|(n, _)| n == "modes.vtu"));

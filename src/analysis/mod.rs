@@ -111,7 +111,18 @@ pub fn check(case: &Case) -> Result<(), CaseError> {
 }
 
 /// Validates and runs a case.
+///
+/// Output files (VTK, SVG) are rendered only with [`run_with_files`]: batch runs skip them.
 pub fn run(case: &Case) -> Result<Outcome, RunError> {
+    run_opts(case, false)
+}
+
+/// [`run`] plus the extra output files (`.vtu` meshes, `.svg` plots) that `--out` writes.
+pub fn run_with_files(case: &Case) -> Result<Outcome, RunError> {
+    run_opts(case, true)
+}
+
+fn run_opts(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
     let plain = |json, report| Outcome {
         json,
         report,
@@ -130,7 +141,9 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
                 Some(steps) => fem_static::solve_nonlinear(&model, steps)?,
                 None => {
                     let (r, raw) = fem_static::solve(&model)?;
-                    files = fem_static::vtu_files(&model, &raw)?;
+                    if with_files {
+                        files = fem_static::vtu_files(&model, &raw)?;
+                    }
                     r
                 }
             };
@@ -146,7 +159,11 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
             Ok(Outcome {
                 json: to_json(&r)?,
                 report: modal::report(&r),
-                files: vec![("modes.vtu".to_string(), modal::vtu(&model, &raw)?)],
+                files: if with_files {
+                    vec![("modes.vtu".to_string(), modal::vtu(&model, &raw)?)]
+                } else {
+                    Vec::new()
+                },
             })
         }
         Case::Sweep(_) => Err(RunError::Case(CaseError::value(
@@ -155,7 +172,11 @@ pub fn run(case: &Case) -> Result<Outcome, RunError> {
             "a sweep runs with `flexfem sweep CASE.json`, not `flexfem run`",
         ))),
         Case::Stage(s) => {
-            let (r, files) = stage::run_stage_with_files(s)?;
+            let (r, files) = if with_files {
+                stage::run_stage_with_files(s)?
+            } else {
+                (stage::run_stage(s)?, Vec::new())
+            };
             Ok(Outcome {
                 json: to_json(&r)?,
                 report: stage::stage_report(&r),
