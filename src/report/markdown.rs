@@ -24,13 +24,16 @@ impl Table {
     /// The table as GitHub-flavoured Markdown.
     pub fn render(&self) -> String {
         let n = self.header.len();
+        // A `|` inside a cell would end it: escape it (GitHub-flavoured Markdown).
+        let esc = |c: &str| c.replace('|', "\\|");
+        let header: Vec<String> = self.header.iter().map(|h| esc(h)).collect();
         let mut out = format!(
             "| {} |\n|---|{}\n",
-            self.header.join(" | "),
+            header.join(" | "),
             "---:|".repeat(n.saturating_sub(1))
         );
         for r in &self.rows {
-            let cells: Vec<&str> = (0..n).map(|i| r.get(i).map_or("", String::as_str)).collect();
+            let cells: Vec<String> = (0..n).map(|i| esc(r.get(i).map_or("", String::as_str))).collect();
             out += &format!("| {} |\n", cells.join(" | "));
         }
         out
@@ -67,5 +70,26 @@ pub fn sig(v: f64, digits: usize) -> String {
         format!("{v:.decimals$}")
     } else {
         format!("{v:.prec$e}", prec = digits.saturating_sub(1))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pipes_in_cells_are_escaped() {
+        let mut t = Table::new(&["|a − b|", "x"]);
+        t.row(vec!["1".into(), "|2|".into()]);
+        let md = t.render();
+        assert_eq!(md, "| \\|a − b\\| | x |\n|---|---:|\n| 1 | \\|2\\| |\n");
+    }
+
+    #[test]
+    fn dms_rounds_to_the_second() {
+        // Seed 000 Table 4 style: 8′59″, −1′38″.
+        assert_eq!(dms(8.0 / 60.0 + 59.0 / 3600.0), "8′59″");
+        assert_eq!(dms(-(1.0 / 60.0 + 38.0 / 3600.0)), "-1′38″");
+        assert_eq!(dms(1.0 + 2.0 / 60.0 + 3.4 / 3600.0), "1°02′03″");
     }
 }
