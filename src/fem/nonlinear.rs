@@ -31,7 +31,7 @@ use super::corot::{self, CorotGeometry, NodeState};
 use super::dof::NodeDof;
 use super::error::FemError;
 use super::model::{Beam, Element, FlexElement, LoadCase, Model};
-use super::recovery::{section_von_mises, ElementResult, Statics};
+use super::recovery::{self, ElementResult, Statics};
 use super::solve::{Factor, Parallelism, SparsePattern, SymbolicFactor};
 use super::transform::{rigid_arm, skew, Mat12};
 use nalgebra::{DMatrix, DVector, Matrix3, Matrix6, SMatrix, Vector3, Vector6};
@@ -906,29 +906,11 @@ fn finish(
                         f_int[6 * nodes[s] + d] += r.f[6 * s + d];
                     }
                 }
-                let f1: [f64; 6] = std::array::from_fn(|i| r.f_local[i]);
-                let f2: [f64; 6] = std::array::from_fn(|i| r.f_local[6 + i]);
-                let s1 = f1.map(|v| -v);
-                let von_mises = match &model.elements[ie] {
-                    Element::Beam(b) => {
-                        let p = b.section.properties(b.material.nu);
-                        match (
-                            section_von_mises(&b.section, &p, &s1),
-                            section_von_mises(&b.section, &p, &f2),
-                        ) {
-                            (Some(a), Some(c)) => Some([a, c]),
-                            _ => None,
-                        }
-                    }
-                    _ => None,
-                };
-                elements.push(ElementResult {
-                    end_forces: [f1, f2],
-                    section_forces: [s1, f2],
-                    von_mises,
-                    strain_energy: 0.5 * r.d_local.dot(&r.f_local),
-                    shell: None,
-                });
+                elements.push(recovery::from_local_end_forces(
+                    &model.elements[ie],
+                    r.f_local.as_slice(),
+                    0.5 * r.d_local.dot(&r.f_local),
+                ));
                 let rt = r.rr.transpose();
                 frames.push(std::array::from_fn(|i| std::array::from_fn(|j| rt[(i, j)])));
             }

@@ -199,31 +199,37 @@ pub fn element_result(model: &Model, ie: usize, u: &[f64]) -> Result<ElementResu
             };
             let d = t * elem_vec(u, nodes);
             let f = k * d;
-            let f1: [f64; 6] = std::array::from_fn(|i| f[i]);
-            let f2: [f64; 6] = std::array::from_fn(|i| f[6 + i]);
-            let s1 = f1.map(|v| -v);
-            let s2 = f2;
-            let von_mises = match e {
-                Element::Beam(b) => {
-                    let p = b.section.properties(b.material.nu);
-                    match (
-                        section_von_mises(&b.section, &p, &s1),
-                        section_von_mises(&b.section, &p, &s2),
-                    ) {
-                        (Some(a), Some(c)) => Some([a, c]),
-                        _ => None,
-                    }
-                }
-                _ => None,
-            };
-            Ok(ElementResult {
-                end_forces: [f1, f2],
-                section_forces: [s1, s2],
-                von_mises,
-                strain_energy: 0.5 * d.dot(&f),
-                shell: None,
-            })
+            Ok(from_local_end_forces(e, f.as_slice(), 0.5 * d.dot(&f)))
         }
+    }
+}
+
+/// Result of a two-node beam or flexibility element from its end forces f = k·d in element
+/// local axes (12 values, node 1 then node 2) and its strain energy (N·mm). Shared by the linear
+/// recovery and the co-rotational solver (which passes the forces of the deformed local frame).
+pub fn from_local_end_forces(e: &Element, f: &[f64], strain_energy: f64) -> ElementResult {
+    let f1: [f64; 6] = std::array::from_fn(|i| f[i]);
+    let f2: [f64; 6] = std::array::from_fn(|i| f[6 + i]);
+    let s1 = f1.map(|v| -v);
+    let von_mises = match e {
+        Element::Beam(b) => {
+            let p = b.section.properties(b.material.nu);
+            match (
+                section_von_mises(&b.section, &p, &s1),
+                section_von_mises(&b.section, &p, &f2),
+            ) {
+                (Some(a), Some(c)) => Some([a, c]),
+                _ => None,
+            }
+        }
+        _ => None,
+    };
+    ElementResult {
+        end_forces: [f1, f2],
+        section_forces: [s1, f2],
+        von_mises,
+        strain_energy,
+        shell: None,
     }
 }
 
