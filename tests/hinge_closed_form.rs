@@ -14,6 +14,7 @@ fn eb() -> Moduli {
         g: E / 2.66,
         nu: 0.33,
         shear: false,
+        notch_half: 0.0,
     }
 }
 
@@ -30,7 +31,9 @@ fn rel(a: f64, b: f64) -> f64 {
 /// Circular notches whose full semicircle fits in the blank (h = t + 2R): the closed forms
 /// integrate exactly that geometry.
 fn circular(r: f64, t: f64, w: f64) -> Profile {
-    Profile::rectangular(Contour::Circular { r, t }, w, t + 2.0 * r + 1e-12, 0.0).unwrap()
+    Profile::rectangular(Contour::Circular { r, t }, w, t + 2.0 * r + 1e-12, 0.0)
+        .unwrap()
+        .spread(0.0)
 }
 
 #[test]
@@ -71,7 +74,9 @@ fn paros_weisbord_simplified_holds_for_thin_notches() {
 fn elliptical_matches_integration() {
     // Smith et al. (1997) / Lobontiu (2002) full half-ellipse.
     for &(ax, ay, t) in &[(6.0, 3.0, 1.0), (2.0, 8.0, 0.5), (10.0, 10.0, 3.0)] {
-        let p = Profile::rectangular(Contour::Elliptical { ax, ay, t }, 8.0, t + 2.0 * ay + 1e-12, 0.0).unwrap();
+        let p = Profile::rectangular(Contour::Elliptical { ax, ay, t }, 8.0, t + 2.0 * ay + 1e-12, 0.0)
+            .unwrap()
+            .spread(0.0);
         let k = k_numeric(&p);
         let kc = cf::smith_lobontiu_elliptical(ax, ay, t, 8.0, E);
         assert!(rel(kc, k) < 1e-8, "ax={ax} ay={ay}: {kc} vs {k}");
@@ -83,7 +88,9 @@ fn corner_filleted_matches_integration() {
     // Lobontiu et al. (2001): straight part + one full circular notch; fillets complete
     // (t + 2R ≤ h).
     for &(l, r, t) in &[(5.0, 1.75, 0.6), (10.0, 1.0, 0.3), (4.0, 2.0, 1.0)] {
-        let p = Profile::rectangular(Contour::CornerFilleted { l, r, t }, 10.0, 15.0, 0.0).unwrap();
+        let p = Profile::rectangular(Contour::CornerFilleted { l, r, t }, 10.0, 15.0, 0.0)
+            .unwrap()
+            .spread(0.0);
         let k = k_numeric(&p);
         let kc = cf::lobontiu_corner_filleted(l, r, t, 10.0, E);
         assert!(rel(kc, k) < 1e-8, "l={l} R={r} t={t}: {kc} vs {k}");
@@ -93,7 +100,9 @@ fn corner_filleted_matches_integration() {
 #[test]
 fn leaf_is_exact() {
     // Prismatic Euler–Bernoulli: K = E w t³/(12 l), exact; the quadrature must give it to 1e-9.
-    let p = Profile::rectangular(Contour::Leaf { l: 7.0, t: 0.5 }, 4.0, 3.0, 0.0).unwrap();
+    let p = Profile::rectangular(Contour::Leaf { l: 7.0, t: 0.5 }, 4.0, 3.0, 0.0)
+        .unwrap()
+        .spread(0.0);
     assert!(rel(k_numeric(&p), cf::leaf(7.0, 0.5, 4.0, E)) < 1e-9);
 }
 
@@ -103,13 +112,13 @@ fn turned_neck_matches_integration() {
     // blank large enough that the disk is never clipped (h ≥ √2 (t + 2R)).
     for &(l, t, r) in &[(5.0, 3.0, 4.0), (0.0, 1.0, 5.0), (2.0, 0.2, 3.0)] {
         let h = 1.5 * (t + 2.0 * r);
-        let p = Profile::neck(l, t, r, h, 0.0).unwrap();
+        let p = Profile::neck(l, t, r, h, 0.0).unwrap().spread(0.0);
         let k = k_numeric(&p);
         let kc = cf::paros_weisbord_circular_section(l, t, r, E);
         assert!(rel(kc, k) < 1e-8, "l={l} t={t} R={r}: {kc} vs {k}");
     }
     // Small-d/R law: within 1 % at t/R = 1e-3.
-    let p = Profile::neck(0.0, 0.01, 10.0, 40.0, 0.0).unwrap();
+    let p = Profile::neck(0.0, 0.01, 10.0, 40.0, 0.0).unwrap().spread(0.0);
     assert!(
         rel(
             cf::paros_weisbord_circular_section_simplified(0.0, 0.01, 10.0, E),

@@ -57,8 +57,8 @@ impl Default for Quadrature {
     }
 }
 
-/// Elastic constants used by the integration; `e_bend` (compliant-axis bending) may differ
-/// from `e` for refinement studies (plane strain: E/(1 − ν²)).
+/// Elastic constants used by the integration; `e_bend` (compliant-axis bending in the notch
+/// region) differs from `e` by the notch's solid-model factors ([`super::solid_effects`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Moduli {
     /// Young's modulus for axial and stiff-axis bending, MPa.
@@ -71,6 +71,8 @@ pub struct Moduli {
     pub nu: f64,
     /// Include shear deformation (Timoshenko) or not (Euler–Bernoulli).
     pub shear: bool,
+    /// `e_bend` applies for |x| < `notch_half` (the notch region), `e` beyond, mm.
+    pub notch_half: f64,
 }
 
 /// The ten flexibility integrals of a segment (units: 1/N, 1/(N·mm), mm/N …).
@@ -122,6 +124,25 @@ pub(crate) fn quadrature_points(a: f64, b: f64, map: Map, panels: usize, mut f: 
                     let w = 0.5 * hl * GL8_W[k];
                     f(mid - d, w);
                     f(mid + d, w);
+                }
+            }
+        }
+        Map::Taper { origin, size0, slope } => {
+            // x = origin + (size0/slope)(e^ψ − 1): size = size0 e^ψ. Orientation as for arcs.
+            let psi_of = |x: f64| (1.0 + slope * (x - origin) / size0).max(1e-300).ln();
+            let (pa, pb) = (psi_of(a), psi_of(b));
+            let (lo, hi, orient) = if pa <= pb { (pa, pb, 1.0) } else { (pb, pa, -1.0) };
+            let n = panels.max(1) * 2;
+            let hl = (hi - lo) / n as f64;
+            let scale = size0 / slope;
+            for p in 0..n {
+                let mid = lo + (p as f64 + 0.5) * hl;
+                for k in 0..4 {
+                    for sgn in [-1.0, 1.0] {
+                        let psi = mid + sgn * 0.5 * hl * GL8_X[k];
+                        let ex = psi.exp();
+                        f(origin + scale * (ex - 1.0), orient * 0.5 * hl * GL8_W[k] * scale * ex);
+                    }
                 }
             }
         }
@@ -196,7 +217,8 @@ pub fn flex_integrals(profile: &Profile, m: &Moduli, x0: f64, x1: f64, q: Quadra
             acc.shear_z += wgt / (m.g * s.shear_area_bend);
         }
         acc.torsion += wgt / (m.g * s.j);
-        let fb = wgt / (m.e_bend * s.i_bend);
+        let e_bend = if x.abs() < m.notch_half { m.e_bend } else { m.e };
+        let fb = wgt / (e_bend * s.i_bend);
         let fo = wgt / (m.e * s.i_bend_off);
         acc.bend[0] += fb;
         acc.bend[1] += fb * a;
@@ -208,7 +230,7 @@ pub fn flex_integrals(profile: &Profile, m: &Moduli, x0: f64, x1: f64, q: Quadra
     for piece in pieces.as_slice() {
         let panels = match piece.map {
             Map::Linear => q.linear_panels,
-            Map::Arc { .. } => q.arc_panels,
+            Map::Arc { .. } | Map::Taper { .. } => q.arc_panels,
         };
         // Right half [piece.x0, piece.x1] and its mirror [−piece.x1, −piece.x0].
         for sign in [1.0, -1.0] {
@@ -226,6 +248,11 @@ pub fn flex_integrals(profile: &Profile, m: &Moduli, x0: f64, x1: f64, q: Quadra
                         origin: sign * origin,
                         radius: sign * radius,
                         c,
+                    },
+                    Map::Taper { origin, size0, slope } => Map::Taper {
+                        origin: sign * origin,
+                        size0,
+                        slope: sign * slope,
                     },
                 };
                 quadrature_points(a, b, map, panels, &mut add);

@@ -40,7 +40,7 @@ const GL4_W: [f64; 4] = [
 ];
 
 /// Maximum number of nodes of the torsion mesh.
-pub const MAX_NODES: usize = 160;
+pub const MAX_NODES: usize = 320;
 
 /// Mesh density of the torsion model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -141,7 +141,7 @@ fn half_nodes(profile: &Profile, mesh: TorsionMesh, e: f64, g: f64, out: &mut [f
         } else {
             let ne = mesh.per_piece.max(1);
             match piece.map {
-                Map::Linear => {
+                Map::Linear | Map::Taper { .. } => {
                     let l = layer(profile.w, profile.thickness(0.5 * (piece.x0 + piece.x1)), e, g);
                     graded(piece.x0, piece.x1, ne, l / 2.0, l / 2.0, out, &mut n);
                 }

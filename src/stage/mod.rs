@@ -183,10 +183,11 @@ fn arr(v: Vector3<f64>) -> [f64; 3] {
     [v[0], v[1], v[2]]
 }
 
-/// The 6×6 compliance of a hinge (blank 0) with the warping-restrained torsion of
-/// [`hinge::characterise`], in hinge axes (x along the hinge, y compliant axis, z across).
-fn hinge_notch(spec: &HingeSpec, material: &Material, prefix: &str) -> Result<hinge::Stiffness, StageError> {
-    hinge::notch_stiffness(spec, material).map_err(|e| hinge_err(prefix, e))
+/// The 6×6 compliance of a hinge region (notch + load-spreading zone) with the
+/// warping-restrained torsion of [`hinge::characterise`], in hinge axes (x along the hinge,
+/// y compliant axis, z across).
+fn hinge_region(profile: &Profile, material: &Material, prefix: &str) -> Result<hinge::Stiffness, StageError> {
+    hinge::profile_stiffness(profile, material).map_err(|e| hinge_err(prefix, e))
 }
 
 impl StageDesign {
@@ -206,15 +207,21 @@ impl StageDesign {
                 format!("value {} is not allowed: must be in 1..=1000", self.leg_elements),
             ));
         }
-        let rp = self.revolute.profile().map_err(|e| hinge_err("revolute", e))?;
-        let sp = self.spherical.profile().map_err(|e| hinge_err("spherical", e))?;
-        let used = rp.half_notch + sp.half_notch;
+        // Each hinge element spans its notch plus the stretch of leg over which load still
+        // spreads out of it (Profile::spread_reach): the leg beams start beyond.
+        let region = |p: Profile| Profile {
+            blank: (p.spread_reach() - p.half_notch).max(0.0),
+            ..p
+        };
+        let rp = region(self.revolute.profile().map_err(|e| hinge_err("revolute", e))?);
+        let sp = region(self.spherical.profile().map_err(|e| hinge_err("spherical", e))?);
+        let used = rp.half_length() + sp.half_length();
         if used >= self.prs.l {
             return Err(geometry_err(
                 "L",
                 format!(
-                    "value {} is not allowed: the revolute notch (half-length {:.3} mm) and the spherical neck (half-length {:.3} mm) must fit in the leg length",
-                    self.prs.l, rp.half_notch, sp.half_notch
+                    "value {} is not allowed: the revolute notch (half-length {:.3} mm with its load-spreading zone) and the spherical neck (half-length {:.3} mm) must fit in the leg length",
+                    self.prs.l, rp.half_length(), sp.half_length()
                 ),
             ));
         }
@@ -234,8 +241,8 @@ impl StageDesign {
             ..self.material
         };
         let p = model.add_node(arr(prs.p_home()));
-        let rev_h = hinge_notch(&self.revolute, &self.material, "revolute")?;
-        let sph_h = hinge_notch(&self.spherical, &self.material, "spherical")?;
+        let rev_h = hinge_region(&rp, &self.material, "revolute")?;
+        let sph_h = hinge_region(&sp, &self.material, "spherical")?;
         let rev_c = if self.ideal_joints {
             None
         } else {
@@ -249,7 +256,7 @@ impl StageDesign {
         let (hr, hs) = if self.ideal_joints {
             (0.0, 0.0)
         } else {
-            (rp.half_notch, sp.half_notch)
+            (rp.half_length(), sp.half_length())
         };
         let mut legs = Vec::with_capacity(3);
         let mut platform_slaves = Vec::with_capacity(3);
@@ -362,8 +369,8 @@ impl StageDesign {
         }
         let legs = [legs[0], legs[1], legs[2]];
         let kt = [
-            hinge::stress::stress_concentration(&rp),
-            hinge::stress::stress_concentration(&sp),
+            hinge::stress::stress_factor(&rp, self.material.nu),
+            hinge::stress::stress_factor(&sp, self.material.nu),
         ];
         Ok(StageModel {
             design: self.clone(),
@@ -379,12 +386,17 @@ impl StageDesign {
     }
 }
 
+/// Co-rotational elements per hinge region in the nonlinear stage solve: the region (notch +
+/// load-spreading zone, ~14–25 mm for the paper's hinges) bends through up to ~2° at the paper's
+/// strokes; 4 elements put Δz within 0.1 µm of 16 (tests/nonlinear.rs `stage_hinge_subdivision`).
+pub const NONLINEAR_HINGE_SEGMENTS: usize = 4;
+
 /// Peak von Mises stress along a hinge element from its end section forces (linear moment
 /// variation: no loads act inside the hinge). Bending stress at the extreme fibres times the
 /// notch factor K_t, plus axial stress; torsional shear τ = T·c/J (exact for thin sections,
 /// conservative for thick ones); σ_vm = √(σ² + 3τ²) combining both peaks (conservative).
 pub fn hinge_peak_stress(profile: &Profile, nu: f64, kt: f64, sf: &[[f64; 6]; 2], neck: bool) -> f64 {
-    let half = profile.half_notch;
+    let half = profile.half_length();
     const N: usize = 41;
     let mut peak: f64 = 0.0;
     for k in 0..N {
@@ -393,7 +405,7 @@ pub fn hinge_peak_stress(profile: &Profile, nu: f64, kt: f64, sf: &[[f64; 6]; 2]
         let f: [f64; 6] = std::array::from_fn(|j| sf[0][j] * (1.0 - s) + sf[1][j] * s);
         let sec = profile.section(x, nu);
         let (sigma, tau) = if neck {
-            let r = 0.5 * profile.thickness(x);
+            let r = profile.effective_half_size(x);
             let c = r.min(0.5 * profile.h);
             let m = (f[4] * f[4] + f[5] * f[5]).sqrt();
             (
@@ -401,7 +413,7 @@ pub fn hinge_peak_stress(profile: &Profile, nu: f64, kt: f64, sf: &[[f64; 6]; 2]
                 f[3].abs() * r.min(0.5 * profile.h) / sec.j,
             )
         } else {
-            let t = profile.thickness(x);
+            let t = profile.effective_thickness(x);
             let w = profile.w;
             let sig =
                 f[0].abs() / sec.area + kt * f[4].abs() * 0.5 * t / sec.i_bend + f[5].abs() * 0.5 * w / sec.i_bend_off;
@@ -503,13 +515,14 @@ impl StageModel {
         }
     }
 
-    /// [`StageModel::solve_nonlinear`] with explicit solver options.
+    /// [`StageModel::solve_nonlinear`] with explicit solver options (each hinge region split
+    /// into [`NONLINEAR_HINGE_SEGMENTS`] co-rotational elements).
     pub fn solve_nonlinear_with(
         &self,
         cases: &[(String, Drive)],
         opts: &fem::NonlinearOptions,
     ) -> Result<Vec<StageCaseResult>, StageError> {
-        self.solve_nonlinear_segments(cases, opts, 1)
+        self.solve_nonlinear_segments(cases, opts, NONLINEAR_HINGE_SEGMENTS)
     }
 
     /// Nonlinear solve with each hinge split into `segments` co-rotational flexibility elements
@@ -582,7 +595,7 @@ impl StageModel {
             Vector3::from(model.nodes[f.nodes[0]]),
             Vector3::from(model.nodes[f.nodes[1]]),
         );
-        let half = profile.half_notch;
+        let half = profile.half_length();
         let material = &self.design.material;
         let xs: Vec<f64> = (0..=n).map(|k| -half + 2.0 * half * k as f64 / n as f64).collect();
         let cs: Vec<Matrix6<f64>> = xs

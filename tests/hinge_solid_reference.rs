@@ -1,0 +1,608 @@
+//! Hinge models against converged solid finite-element models of the same geometry.
+//!
+//! The issue's accuracy bands refer to converged quadratic-tetrahedron (C3D10) solid models.
+//! The references below were computed with `tools/solid_reference.py`: the exact geometry of
+//! SPEC §4 built in gmsh 4.15 (OpenCASCADE), meshed with 10-node tetrahedra whose size is the
+//! local thickness / n (n = 5 here, 4 for the thinnest notches), solved with scikit-fem 12
+//! (P2 Lagrange, isoparametric) and CHOLMOD; one blank end face clamped, the other rigid
+//! (six unit rigid motions → 6×6 face stiffness → compliance at the face centre); peak
+//! nodal-averaged von Mises stress under a pure compliant-axis moment. Raw results:
+//! `tools/solid_reference_results.jsonl`.
+//!
+//! That pipeline reproduces the independent references it can be checked against: seed 000's
+//! turned neck l5/t3/R4 32.60 N·m/rad vs ANSYS 32.67 (−0.2 %); seed 002's corner-filleted
+//! hinge 232.58 N·mm/rad = 4.059 N·mm/° vs the converged solid value 4.05 of SPEC §4 (+0.2 %).
+//! Mesh convergence on the seed-000 notch: n = 3 → 5 changes k_bend by −0.55 %, on the
+//! corner-filleted hinge by −0.6 %.
+//!
+//! flexfem's beam model uses three solid-calibrated ingredients (load spreading at slope 1/2,
+//! the short-notch factor G, the plane-strain factor P, see `hinge::solid_effects`). Most rows
+//! below were used to find them (circular notches, necks); the rows marked HELD OUT were
+//! computed afterwards and never used in a fit.
+
+use flexfem::hinge::{characterise, HingeSpec};
+use flexfem::material::Material;
+
+struct Ref {
+    hinge: &'static str,
+    /// Young's modulus, MPa.
+    e: f64,
+    nu: f64,
+    /// Solid-model compliant-axis bending stiffness, N·mm/rad.
+    k_bend: f64,
+    /// Solid-model torsional stiffness, N·mm/rad.
+    k_torsion: f64,
+    /// Solid-model axial stiffness, N/mm.
+    k_axial: f64,
+    /// Solid-model peak von Mises stress per unit compliant-axis moment, MPa/(N·mm).
+    spm: f64,
+}
+
+const REFS: &[Ref] = &[
+    // Seed 000 revolute notch, n = 5 (n = 3: 96449).
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 2.0, "w": 10.0, "h": 10.0, "blank_length": 20.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 95922.3,
+        k_torsion: 196427.0,
+        k_axial: 84453.4,
+        spm: 0.151083,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 4.0, "w": 10.0, "h": 10.0, "blank_length": 20.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 416003.0,
+        k_torsion: 443819.0,
+        k_axial: 110521.0,
+        spm: 0.0395016,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 3.0, "w": 10.0, "h": 10.0, "blank_length": 20.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 234511.0,
+        k_torsion: 327731.0,
+        k_axial: 98853.0,
+        spm: 0.0683839,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 1.0, "w": 10.0, "h": 10.0, "blank_length": 20.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 18624.5,
+        k_torsion: 70657.5,
+        k_axial: 64194.5,
+        spm: 0.598664,
+    },
+    Ref {
+        hinge: r#"{"type": "spherical_neck", "l": 5.0, "t": 3.0, "R": 4.0, "h": 10.0, "blank_length": 20.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 32602.7,
+        k_torsion: 24677.5,
+        k_axial: 38308.3,
+        spm: 0.390483,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 1.5, "w": 10.0, "h": 10.0, "blank_length": 20.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 49111.8,
+        k_torsion: 130480.0,
+        k_axial: 75431.3,
+        spm: 0.267739,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 1.5, "w": 6.0, "h": 7.9, "blank_length": 10.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 39265.5,
+        k_torsion: 75094.8,
+        k_axial: 68318.3,
+        spm: 0.452178,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 2.0, "w": 6.0, "h": 8.4, "blank_length": 10.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 76552.4,
+        k_torsion: 112657.0,
+        k_axial: 78759.2,
+        spm: 0.260706,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 1.0, "w": 6.0, "h": 7.4, "blank_length": 10.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 15079.5,
+        k_torsion: 41310.7,
+        k_axial: 56460.7,
+        spm: 1.00582,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 2.0, "w": 3.0, "h": 10.0, "blank_length": 20.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 27495.5,
+        k_torsion: 16192.5,
+        k_axial: 25196.0,
+        spm: 0.519802,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 4.0, "w": 3.0, "h": 10.0, "blank_length": 20.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 122282.0,
+        k_torsion: 29471.4,
+        k_axial: 32979.3,
+        spm: 0.136745,
+    },
+    Ref {
+        hinge: r#"{"type": "spherical_neck", "l": 3.0, "t": 3.0, "R": 2.0, "h": 10.0, "blank_length": 10.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 49636.3,
+        k_torsion: 38127.1,
+        k_axial: 59551.7,
+        spm: 0.397183,
+    },
+    Ref {
+        hinge: r#"{"type": "spherical_neck", "l": 6.0, "t": 2.0, "R": 3.0, "h": 8.0, "blank_length": 10.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 6593.37,
+        k_torsion: 4986.26,
+        k_axial: 20716.6,
+        spm: 1.32677,
+    },
+    Ref {
+        hinge: r#"{"type": "spherical_neck", "l": 4.0, "t": 4.0, "R": 2.0, "h": 10.0, "blank_length": 10.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 121682.0,
+        k_torsion: 93479.7,
+        k_axial: 82095.2,
+        spm: 0.168451,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 0.5, "w": 6.0, "h": 6.9, "blank_length": 10.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 2831.16,
+        k_torsion: 14297.1,
+        k_axial: 41372.7,
+        spm: 3.93819,
+    },
+    Ref {
+        hinge: r#"{"type": "spherical_neck", "l": 10.0, "t": 2.0, "R": 2.0, "h": 6.0, "blank_length": 10.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 4615.95,
+        k_torsion: 3484.24,
+        k_axial: 15188.3,
+        spm: 1.32583,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 0.5, "w": 10.0, "h": 10.0, "blank_length": 20.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 3419.85,
+        k_torsion: 23825.2,
+        k_axial: 48315.8,
+        spm: 2.36524,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 0.25, "w": 1.0, "h": 3.45, "blank_length": 6.9}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 78.0205,
+        k_torsion: 133.195,
+        k_axial: 4907.83,
+        spm: 97.259,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 0.25, "w": 1.0, "h": 6.25, "blank_length": 12.5}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 78.2039,
+        k_torsion: 132.972,
+        k_axial: 4686.08,
+        spm: 97.1041,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 0.5, "w": 1.0, "h": 3.7, "blank_length": 7.4}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 428.772,
+        k_torsion: 447.746,
+        k_axial: 6555.2,
+        spm: 24.5549,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 0.25, "w": 1.0, "h": 8.09, "blank_length": 16.18}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 78.2351,
+        k_torsion: 132.834,
+        k_axial: 4611.18,
+        spm: 97.2343,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 0.5, "w": 1.0, "h": 6.5, "blank_length": 13.0}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 433.464,
+        k_torsion: 444.81,
+        k_axial: 6186.26,
+        spm: 24.5564,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 0.5, "w": 1.0, "h": 8.34, "blank_length": 16.68}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 434.36,
+        k_torsion: 443.239,
+        k_axial: 6061.38,
+        spm: 24.5563,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 1.0, "w": 1.0, "h": 4.2, "blank_length": 8.4}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 2236.93,
+        k_torsion: 1009.29,
+        k_axial: 8563.28,
+        spm: 6.28071,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 1.0, "w": 1.0, "h": 7.0, "blank_length": 14.0}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 2334.37,
+        k_torsion: 992.824,
+        k_axial: 8003.95,
+        spm: 6.27454,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 1.0, "w": 1.0, "h": 8.84, "blank_length": 17.68}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 2355.9,
+        k_torsion: 985.73,
+        k_axial: 7811.77,
+        spm: 6.27296,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 1.5, "w": 1.0, "h": 4.7, "blank_length": 9.4}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 5581.05,
+        k_torsion: 1366.93,
+        k_axial: 9867.89,
+        spm: 2.84769,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 1.5, "w": 1.0, "h": 7.5, "blank_length": 15.0}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 6060.59,
+        k_torsion: 1335.86,
+        k_axial: 9196.88,
+        spm: 2.85092,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 1.5, "w": 1.0, "h": 9.34, "blank_length": 18.68}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 6182.87,
+        k_torsion: 1322.54,
+        k_axial: 8961.48,
+        spm: 2.84761,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 2.0, "w": 1.0, "h": 5.2, "blank_length": 10.4}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 10315.4,
+        k_torsion: 1618.83,
+        k_axial: 10822.4,
+        spm: 1.63365,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 2.0, "w": 1.0, "h": 8.0, "blank_length": 16.0}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 11641.6,
+        k_torsion: 1570.16,
+        k_axial: 10085.3,
+        spm: 1.63034,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 2.0, "w": 1.0, "h": 9.84, "blank_length": 19.68}"#,
+        e: 72000.0,
+        nu: 0.0,
+        k_bend: 12025.4,
+        k_torsion: 1552.3,
+        k_axial: 9821.58,
+        spm: 1.63106,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 0.5, "w": 0.5, "h": 6.5, "blank_length": 13.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 216.858,
+        k_torsion: 71.8912,
+        k_axial: 3104.56,
+        spm: 48.9838,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 0.5, "w": 1.5, "h": 6.5, "blank_length": 13.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 659.851,
+        k_torsion: 757.733,
+        k_axial: 9319.6,
+        spm: 16.2281,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 1.0, "w": 1.0, "h": 7.0, "blank_length": 14.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 2337.78,
+        k_torsion: 765.096,
+        k_axial: 8044.44,
+        spm: 6.24575,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 0.5, "w": 4.0, "h": 6.5, "blank_length": 13.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 1850.78,
+        k_torsion: 5383.72,
+        k_axial: 24959.6,
+        spm: 6.0441,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 1.0, "w": 3.0, "h": 7.0, "blank_length": 14.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 7172.12,
+        k_torsion: 8926.81,
+        k_axial: 24178.5,
+        spm: 2.06039,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 2.0, "w": 2.0, "h": 8.0, "blank_length": 16.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 23373.8,
+        k_torsion: 7750.59,
+        k_axial: 20313.3,
+        spm: 0.813046,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 1.0, "w": 8.0, "h": 7.0, "blank_length": 14.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 20139.3,
+        k_torsion: 74577.2,
+        k_axial: 65085.4,
+        spm: 0.737996,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 2.0, "w": 6.0, "h": 8.0, "blank_length": 16.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 72326.6,
+        k_torsion: 95359.9,
+        k_axial: 61221.6,
+        spm: 0.257865,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 2.0, "w": 16.0, "h": 8.0, "blank_length": 16.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 201488.0,
+        k_torsion: 705213.0,
+        k_axial: 165688.0,
+        spm: 0.0940747,
+    },
+    Ref {
+        hinge: r#"{"type": "corner_filleted", "l": 5.0, "R": 1.75, "t": 0.6, "w": 10.0, "h": 15.0, "blank_length": 15.0}"#,
+        e: 3300.0,
+        nu: 0.33,
+        k_bend: 232.582,
+        k_torsion: 2307.76,
+        k_axial: 3362.34,
+        spm: 1.63574,
+    },
+    // HELD OUT: computed after the fits.
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 2.0, "w": 10.0, "h": 10.0, "blank_length": 0.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 103794.0,
+        k_torsion: 258405.0,
+        k_axial: 170052.0,
+        spm: 0.151449,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 6.0, "t": 1.2, "w": 8.0, "h": 9.0, "blank_length": 5.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 26560.2,
+        k_torsion: 79218.4,
+        k_axial: 87363.5,
+        spm: 0.524126,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 3.0, "t": 1.2, "w": 5.0, "h": 6.0, "blank_length": 12.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 20897.3,
+        k_torsion: 38993.2,
+        k_axial: 47236.0,
+        spm: 0.853235,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 5.0, "t": 2.5, "w": 5.0, "h": 12.0, "blank_length": 10.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 100435.0,
+        k_torsion: 102145.0,
+        k_axial: 73412.0,
+        spm: 0.204396,
+    },
+    Ref {
+        hinge: r#"{"type": "spherical_neck", "l": 3.0, "t": 2.0, "R": 1.0, "h": 6.0, "blank_length": 10.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 11944.9,
+        k_torsion: 9141.0,
+        k_axial: 31555.3,
+        spm: 1.35538,
+    },
+    Ref {
+        hinge: r#"{"type": "spherical_neck", "l": 2.0, "t": 2.0, "R": 3.0, "h": 8.0, "blank_length": 10.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 12357.3,
+        k_torsion: 9391.91,
+        k_axial: 32695.1,
+        spm: 1.31554,
+    },
+    Ref {
+        hinge: r#"{"type": "elliptical_notch", "ax": 6.0, "ay": 3.0, "t": 1.0, "w": 6.0, "h": 6.0, "blank_length": 10.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 9098.66,
+        k_torsion: 17681.9,
+        k_axial: 40507.8,
+        spm: 1.01575,
+    },
+    Ref {
+        hinge: r#"{"type": "leaf", "l": 10.0, "t": 1.0, "w": 5.0, "h": 8.0, "blank_length": 10.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 2911.48,
+        k_torsion: 4673.46,
+        k_axial: 25227.9,
+        spm: 1.22173,
+    },
+    Ref {
+        hinge: r#"{"type": "circular_notch", "R": 10.0, "t": 0.8, "w": 12.0, "h": 12.0, "blank_length": 20.0}"#,
+        e: 72000.0,
+        nu: 0.33,
+        k_bend: 11755.0,
+        k_torsion: 62215.3,
+        k_axial: 67772.4,
+        spm: 0.775791,
+    },
+];
+
+struct Row {
+    spec: HingeSpec,
+    nu: f64,
+    /// Errors of flexfem against the solid model, %.
+    bend: f64,
+    torsion: f64,
+    axial: f64,
+    spm: f64,
+}
+
+fn rows() -> Vec<Row> {
+    REFS.iter()
+        .map(|r| {
+            let spec: HingeSpec = serde_json::from_str(r.hinge).unwrap_or_else(|e| panic!("{}: {e}", r.hinge));
+            let m = Material {
+                e: r.e,
+                nu: r.nu,
+                ..Material::AL7075
+            };
+            let h = characterise(&spec, &m)
+                .unwrap_or_else(|e| panic!("{}: {e}", r.hinge))
+                .hinge;
+            let pct = |a: f64, b: f64| 100.0 * (a - b) / b;
+            let row = Row {
+                spec,
+                nu: r.nu,
+                bend: pct(h.k_bend, r.k_bend),
+                torsion: pct(h.k_torsion, r.k_torsion),
+                axial: pct(h.k_axial, r.k_axial),
+                spm: pct(h.stress_per_moment, r.spm),
+            };
+            println!(
+                "{:<100} nu {:.2}: bend {:+6.2} %  torsion {:+6.2} %  axial {:+6.2} %  stress/moment {:+6.2} %",
+                r.hinge, r.nu, row.bend, row.torsion, row.axial, row.spm
+            );
+            row
+        })
+        .collect()
+}
+
+/// Circular notches, t/R 0.06–0.5, all widths: issue bands (bending 5 % to t/R = 0.4, 10 % to
+/// 0.5; axial 10 %; peak von Mises per unit moment 8 %) and what the model achieves
+/// (bending 2.5 %, axial 4 %, stress 6 %) so that a regression shows.
+#[test]
+fn circular_notches_match_solid_models() {
+    let mut n = 0;
+    for r in rows() {
+        let HingeSpec::CircularNotch { r: rad, t, .. } = r.spec else {
+            continue;
+        };
+        n += 1;
+        let band: f64 = if t / rad <= 0.4 { 5.0 } else { 10.0 };
+        assert!(r.bend.abs() < band.min(2.5), "{:?}: bending {:+.2} %", r.spec, r.bend);
+        assert!(r.axial.abs() < 4.0, "{:?}: axial {:+.2} %", r.spec, r.axial);
+        assert!(r.spm.abs() < 6.0, "{:?}: stress per moment {:+.2} %", r.spec, r.spm);
+        // Rectangular-section torsion with warping restraint: issue band 20 % for t/R ≥ 0.1
+        // (narrow w ≤ t notches and wide thick ones are the extremes: −10 … +17 %).
+        if t / rad >= 0.1 {
+            assert!(r.torsion.abs() < 20.0, "{:?}: torsion {:+.2} %", r.spec, r.torsion);
+        }
+    }
+    assert!(n >= 40, "{n} circular rows");
+}
+
+/// Turned necks with l/t ≥ 1: issue bands bending and torsion 8 %, axial 10 %; achieved 3 %,
+/// 5 %, 3 %; peak stress per moment within 2 % with the neck's K_t = 1 + 0.041√(t/R).
+#[test]
+fn turned_necks_match_solid_models() {
+    let mut n = 0;
+    for r in rows() {
+        let HingeSpec::SphericalNeck { l, t, .. } = r.spec else {
+            continue;
+        };
+        assert!(l / t >= 1.0);
+        n += 1;
+        assert!(r.bend.abs() < 3.0, "{:?}: bending {:+.2} %", r.spec, r.bend);
+        assert!(r.torsion.abs() < 5.0, "{:?}: torsion {:+.2} %", r.spec, r.torsion);
+        assert!(r.axial.abs() < 3.0, "{:?}: axial {:+.2} %", r.spec, r.axial);
+        assert!(r.spm.abs() < 2.0, "{:?}: stress per moment {:+.2} %", r.spec, r.spm);
+    }
+    assert_eq!(n, 7);
+}
+
+/// Other families: the elliptical notch (held out) within 1 %, the seed-002 corner-filleted
+/// hinge within 2.5 % (it is also checked against 4.05 N·mm/° in tests/hinge_seeds.rs), the leaf
+/// within 5 % (its sharp re-entrant corners are beyond beam theory; the solid's peak stress
+/// there is singular and not compared).
+#[test]
+fn other_families_match_solid_models() {
+    let mut n = 0;
+    for r in rows() {
+        let tol = match r.spec {
+            HingeSpec::EllipticalNotch { .. } => 1.0,
+            HingeSpec::CornerFilleted { .. } => 2.5,
+            HingeSpec::Leaf { .. } => 5.0,
+            _ => continue,
+        };
+        n += 1;
+        assert!(r.bend.abs() < tol, "{:?}: bending {:+.2} %", r.spec, r.bend);
+        assert!(r.axial.abs() < 10.0, "{:?}: axial {:+.2} %", r.spec, r.axial);
+        let _ = r.nu;
+    }
+    assert_eq!(n, 3);
+}
