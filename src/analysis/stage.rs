@@ -145,9 +145,9 @@ fn fem_err(e: stage::StageError) -> RunError {
 pub fn model_notes(s: &StageModel) -> Vec<String> {
     let mut v = vec![
         "linear statics, small displacements (geometric nonlinearity not included)".to_string(),
-        "legs: prismatic Timoshenko beams; hinges: one flexibility element each, exact variable-section Timoshenko flexibility of the notch, warping-restrained (Vlasov) torsion for rectangular notches".to_string(),
+        "legs: prismatic Timoshenko beams; hinges: one flexibility element each over the notch and its load-spreading zone in the leg, exact variable-section Timoshenko flexibility with the solid-calibrated 3-D factors of the hinge analysis (load spreading, short-notch G, plane-strain P), warping-restrained (Vlasov) torsion for rectangular notches".to_string(),
         "sliders: rigid bodies guided along e_i; platform: rigid body (rigid link)".to_string(),
-        "hinge stress: beam stress along the notch x notch factor K_t, torsion tau = T c / J, von Mises combining the peaks (conservative)".to_string(),
+        "hinge stress: beam stress along the hinge x notch factor (K_t/sqrt(P) flat notches, 1 + 0.041 sqrt(t/R) turned neck), torsion tau = T c / J, von Mises combining the peaks (conservative)".to_string(),
     ];
     if s.design.ideal_joints {
         v.push("ideal joints: hinges replaced by exact releases, legs and platform 1e6 x stiffer".into());
