@@ -544,7 +544,7 @@ fn rows() -> Vec<Row> {
 
 /// Circular notches, t/R 0.06–0.5, all widths: issue bands (bending 5 % to t/R = 0.4, 10 % to
 /// 0.5; axial 10 %; peak von Mises per unit moment 8 %) and what the model achieves
-/// (bending 2.5 %, axial 4 %, stress 6 %) so that a regression shows.
+/// (bending 2.5 %, axial 4 %, stress 6 %, torsion 12 %) so that a regression shows.
 #[test]
 fn circular_notches_match_solid_models() {
     let mut n = 0;
@@ -557,10 +557,10 @@ fn circular_notches_match_solid_models() {
         assert!(r.bend.abs() < band.min(2.5), "{:?}: bending {:+.2} %", r.spec, r.bend);
         assert!(r.axial.abs() < 4.0, "{:?}: axial {:+.2} %", r.spec, r.axial);
         assert!(r.spm.abs() < 6.0, "{:?}: stress per moment {:+.2} %", r.spec, r.spm);
-        // Rectangular-section torsion with warping restraint: issue band 20 % for t/R ≥ 0.1
-        // (narrow w ≤ t notches and wide thick ones are the extremes: −10 … +17 %).
+        // Rectangular-section torsion with warping restraint: issue band 20 % for t/R ≥ 0.1;
+        // achieved −11.4 … +4.2 % over all rows (12 % asserted).
         if t / rad >= 0.1 {
-            assert!(r.torsion.abs() < 20.0, "{:?}: torsion {:+.2} %", r.spec, r.torsion);
+            assert!(r.torsion.abs() < 12.0, "{:?}: torsion {:+.2} %", r.spec, r.torsion);
         }
     }
     assert!(n >= 40, "{n} circular rows");
@@ -602,6 +602,8 @@ fn other_families_match_solid_models() {
         n += 1;
         assert!(r.bend.abs() < tol, "{:?}: bending {:+.2} %", r.spec, r.bend);
         assert!(r.axial.abs() < 10.0, "{:?}: axial {:+.2} %", r.spec, r.axial);
+        // Torsion: elliptical −7.4 %, corner-filleted −13.9 %, leaf −12.7 % (20 % band).
+        assert!(r.torsion.abs() < 15.0, "{:?}: torsion {:+.2} %", r.spec, r.torsion);
         let _ = r.nu;
     }
     assert_eq!(n, 3);

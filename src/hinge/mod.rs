@@ -14,7 +14,8 @@
 //! turn into beam elements ([`segment_compliance`]). Its known gaps are handled explicitly:
 //!
 //! * **Torsion** of rectangular notches: Saint-Venant is far too soft because the blanks
-//!   restrain warping; k_torsion comes from a Vlasov warping-torsion FE ([`torsion`]). The turned
+//!   restrain warping; k_torsion comes from a Vlasov warping-torsion FE ([`torsion`]) on the
+//!   geometric section in the notch and the load-spreading effective section in the blank. The turned
 //!   neck has a circular waist (no warping) and uses plain ∫1/GJ.
 //! * **Three-dimensional effects**, calibrated against converged quadratic-tetrahedron solid
 //!   models (`tools/solid_reference.py`, tests/hinge_solid_reference.rs): load spreading out of
@@ -386,7 +387,7 @@ fn model_notes(profile: &Profile, material: &Material, kt: f64) -> Vec<String> {
             v.push(format!("stress: 32M/(pi t^3) at the waist x Kt = {kt:.4} (shoulder-fillet Kt = 1 + 0.041 sqrt(t/R), fitted to solid models within 2%)"));
         }
         _ => {
-            v.push("torsion: Vlasov non-uniform torsion FE (Hermite cubics), Timoshenko-Goodier J(x), exact rectangle warping constant, warping restrained at both blank end faces".into());
+            v.push("torsion: Vlasov non-uniform torsion FE (Hermite cubics), Timoshenko-Goodier J(x), exact rectangle warping constant, warping restrained at both blank end faces; in the blank the load-spreading effective thickness (solid models: circular notches -11...+4%, corner-filleted -14%)".into());
             v.push(format!("stress: 6M/(w t^2) at the waist x {kt:.4} (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, divided by sqrt(P) for the plane-strain waist; solid models: within 6%)"));
         }
     }

@@ -192,7 +192,11 @@ pub fn vlasov_torsion_stiffness(profile: &Profile, e: f64, g: f64, mesh: Torsion
     }
     let w = profile.w;
     let props = |x: f64| -> (f64, f64) {
-        let t = profile.thickness(x);
+        let t = if x.abs() > profile.half_notch {
+            profile.effective_thickness(x)
+        } else {
+            profile.thickness(x)
+        };
         (g * rect_torsion_constant(w, t), e * rect_warping_constant(w, t))
     };
     torsion_fe(&xs[..n], props)
