@@ -318,12 +318,9 @@ pub fn characterise(spec: &HingeSpec, material: &Material) -> Result<HingeResult
 }
 
 /// Stiffness, compliance and stress of the notch alone (blank length 0), without the closed
-/// forms: what the stage builder needs per design.
+/// forms.
 pub fn notch_stiffness(spec: &HingeSpec, material: &Material) -> Result<Stiffness, HingeError> {
-    check_material(material)?;
-    let notch = spec.profile_with_blank(Some(0.0))?;
-    let kt = stress::stress_factor(&notch, material.nu);
-    Ok(stiffness_of(&notch, material, kt))
+    profile_stiffness(&spec.profile_with_blank(Some(0.0))?, material)
 }
 
 /// Stiffness, compliance and stress of a validated profile as it stands (its own blank).

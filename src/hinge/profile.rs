@@ -294,23 +294,16 @@ impl Profile {
             Contour::Leaf { l, .. } => l / 2.0,
             Contour::SphericalNeck { l, r, .. } => on_arc(l / 2.0, r, r),
         };
-        let size = |u: f64| self.half_size(u);
-        let from = if from < hn {
-            from
+        let (from, size0) = if from < hn {
+            (from, self.half_size(from))
         } else {
             // The contour never grows faster than `slope`; only a step to the blank (a contour
             // that ends below the blank) needs spreading.
-            let inside = size(hn * (1.0 - 1e-12));
-            if inside < size(hn * (1.0 + 1e-12)).min(self.far_half_size()) * (1.0 - 1e-9) {
-                hn
-            } else {
+            let inside = self.half_size(hn * (1.0 - 1e-12));
+            if inside >= self.far_half_size() * (1.0 - 1e-9) {
                 return self;
             }
-        };
-        let size0 = if from >= hn {
-            size(hn * (1.0 - 1e-12))
-        } else {
-            size(from)
+            (hn, inside)
         };
         self.spread = Some(Spread { from, size0, slope });
         self
@@ -415,14 +408,8 @@ impl Profile {
                 }
             }
             Contour::Leaf { t, .. } => t,
-            Contour::SphericalNeck { l, t, r } => {
-                if u <= l / 2.0 {
-                    t
-                } else {
-                    // Diameter 2 r(x) = t + 2(R − √(R² − u²)); beyond u = R the blank follows.
-                    arc(t, r, r, u - l / 2.0)
-                }
-            }
+            // Diameter 2 r(x), capped at h like the rectangular contours.
+            Contour::SphericalNeck { .. } => (2.0 * self.half_size(u)).min(h),
         }
     }
 

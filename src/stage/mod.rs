@@ -408,10 +408,7 @@ pub fn hinge_peak_stress(profile: &Profile, nu: f64, kt: f64, sf: &[[f64; 6]; 2]
             let r = profile.effective_half_size(x);
             let c = r.min(0.5 * profile.h);
             let m = (f[4] * f[4] + f[5] * f[5]).sqrt();
-            (
-                f[0].abs() / sec.area + kt * m * c / sec.i_bend,
-                f[3].abs() * r.min(0.5 * profile.h) / sec.j,
-            )
+            (f[0].abs() / sec.area + kt * m * c / sec.i_bend, f[3].abs() * c / sec.j)
         } else {
             let t = profile.effective_thickness(x);
             let w = profile.w;
