@@ -33,9 +33,12 @@ fn parent_dir(path: &Path) -> &Path {
 /// an existing file or follows a link). Returns the file and its path.
 pub fn create_temp(path: &Path) -> io::Result<(File, PathBuf)> {
     static COUNTER: AtomicU64 = AtomicU64::new(0);
-    let name = path
-        .file_name()
-        .ok_or_else(|| io::Error::new(io::ErrorKind::InvalidInput, format!("{} is not a file name", path.display())))?;
+    let name = path.file_name().ok_or_else(|| {
+        io::Error::new(
+            io::ErrorKind::InvalidInput,
+            format!("{} is not a file name", path.display()),
+        )
+    })?;
     let dir = parent_dir(path);
     let nanos = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
@@ -61,13 +64,10 @@ pub fn create_temp(path: &Path) -> io::Result<(File, PathBuf)> {
 /// removed and `path` is untouched.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
     let (mut f, tmp) = create_temp(path)?;
-    let done = f
-        .write_all(bytes)
-        .and_then(|()| f.sync_all())
-        .and_then(|()| {
-            drop(f);
-            fs::rename(&tmp, path)
-        });
+    let done = f.write_all(bytes).and_then(|()| f.sync_all()).and_then(|()| {
+        drop(f);
+        fs::rename(&tmp, path)
+    });
     if done.is_err() {
         let _ = fs::remove_file(&tmp);
     }
@@ -239,7 +239,11 @@ impl Lock {
                      file at a time (shards: give each its own --out and concatenate), or delete the lock \
                      file if no sweep is running",
                     file.display(),
-                    if text.trim().is_empty() { "holder unknown" } else { text.trim() },
+                    if text.trim().is_empty() {
+                        "holder unknown"
+                    } else {
+                        text.trim()
+                    },
                     path.display()
                 ))
             };

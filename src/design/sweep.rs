@@ -26,10 +26,10 @@
 //! same set of lines as one unsharded run.
 
 use super::table;
-use crate::output::write_atomic;
 use crate::analysis::{self, RunError};
 use crate::case::sweep::Sweep;
 use crate::case::{self, Case, CaseError};
+use crate::output::write_atomic;
 use rayon::prelude::*;
 use serde::Deserialize;
 use serde_json::{Map, Value};
@@ -421,8 +421,7 @@ impl Finished {
                 continue;
             };
             let i = head.index;
-            let ours = i < sweep.len()
-                && same_value(&Value::Object(head.params), &Value::Object(sweep.params(i)));
+            let ours = i < sweep.len() && same_value(&Value::Object(head.params), &Value::Object(sweep.params(i)));
             if !ours {
                 self.foreign += 1;
                 continue;
@@ -605,9 +604,7 @@ enum Kind {
 /// `Ok(())` when `text` looks like flexfem's own output of `kind`, else why not.
 fn own_output(kind: Kind, text: &[u8]) -> Result<(), String> {
     match kind {
-        Kind::Jsonl => {
-            is_sweep_output(text).map_err(|n| format!("line {n} is not a flexfem sweep line"))
-        }
+        Kind::Jsonl => is_sweep_output(text).map_err(|n| format!("line {n} is not a flexfem sweep line")),
         Kind::Csv => {
             if text.is_empty() || text.starts_with(b"index,") || text.starts_with(b"index\n") {
                 Ok(())
@@ -888,9 +885,7 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         rate(tally.run, start.elapsed()),
     );
     if failed_total > 0 {
-        eprintln!(
-            "error: {failed_total} of {in_shard} designs failed (their lines hold an \"error\"; exit code 1)"
-        );
+        eprintln!("error: {failed_total} of {in_shard} designs failed (their lines hold an \"error\"; exit code 1)");
     }
     Ok(failed_total)
 }
@@ -912,10 +907,9 @@ pub fn check(sweep: &Sweep, base_dir: Option<&Path>) -> Result<usize, CaseError>
     for &i in &indices {
         let located = |e: CaseError| -> CaseError {
             let dotted = e.path.replace('[', ".").replace(']', "");
-            let varied = sweep
-                .axes
-                .iter()
-                .find(|(p, _)| dotted == *p || dotted.starts_with(&format!("{p}.")) || p.starts_with(&format!("{dotted}.")));
+            let varied = sweep.axes.iter().find(|(p, _)| {
+                dotted == *p || dotted.starts_with(&format!("{p}.")) || p.starts_with(&format!("{dotted}."))
+            });
             let params = sweep
                 .params(i)
                 .iter()
