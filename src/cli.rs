@@ -60,8 +60,8 @@ own output.\n\n\
 Resume: with --out FILE, a re-run keeps the lines already in FILE (and FILE.partial) whose \
 design_hash still matches the design (base case with the varied values, and its mesh file), \
 reruns stale ones, and retries error rows unless --keep-errors. While it runs, FILE.lock \
-stops a second sweep (e.g. another shard) from writing the same FILE: give each shard its own \
---out and concatenate the files.")]
+stops a second sweep (e.g. another shard) from writing the same FILE at the same time: run \
+shards one after another (their lines accumulate in FILE) or give each its own --out.")]
     Sweep {
         /// The sweep case file (`"analysis": "sweep"`).
         case: PathBuf,

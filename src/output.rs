@@ -236,7 +236,7 @@ impl Lock {
             let held = || {
                 LockError::Held(format!(
                     "{} is locked by another flexfem sweep ({}, lock file {}); run one sweep per output \
-                     file at a time (shards: give each its own --out and concatenate), or delete the lock \
+                     file at a time (shards: one after another, or each with its own --out), or delete the lock \
                      file if no sweep is running",
                     file.display(),
                     if text.trim().is_empty() {
