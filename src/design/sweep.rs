@@ -946,3 +946,38 @@ fn rate(n: usize, d: Duration) -> f64 {
         0.0
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// FNV-1a 128 test vector (draft-eastlake-fnv, "a"): d228cb696f1a8caf78912b704e4a8964.
+    #[test]
+    fn fnv128_matches_the_published_vector() {
+        let mut h = Fnv128::new();
+        h.write(b"a");
+        assert_eq!(format!("{:032x}", h.0), "d228cb696f1a8caf78912b704e4a8964");
+    }
+
+    /// The hash ignores key order and whitespace (canonical JSON) but sees any value change,
+    /// nested or not.
+    #[test]
+    fn design_hash_is_canonical() {
+        let a: Value = serde_json::from_str(r#"{"x": 1, "y": {"p": [1, 2], "q": "s"}}"#).unwrap();
+        let b: Value = serde_json::from_str(r#"{"y":{"q":"s","p":[1,2]},"x":1}"#).unwrap();
+        let c: Value = serde_json::from_str(r#"{"x": 1, "y": {"p": [1, 3], "q": "s"}}"#).unwrap();
+        assert_eq!(hash_design(&a, None), hash_design(&b, None));
+        assert_ne!(hash_design(&a, None), hash_design(&c, None));
+    }
+
+    #[test]
+    fn sweep_output_recognition() {
+        assert_eq!(is_sweep_output(b""), Ok(()));
+        assert_eq!(
+            is_sweep_output(b"{\"index\":0,\"params\":{}}\n{\"index\":1,\"params\":{}"),
+            Ok(())
+        );
+        assert_eq!(is_sweep_output(b"{\"index\":0,\"params\":{}}\nhello\n"), Err(2));
+        assert_eq!(is_sweep_output(b"{\"a\":1}\n"), Err(1));
+    }
+}
