@@ -907,20 +907,22 @@ pub fn check(sweep: &Sweep, base_dir: Option<&Path>) -> Result<usize, CaseError>
     for &i in &indices {
         let located = |e: CaseError| -> CaseError {
             let dotted = e.path.replace('[', ".").replace(']', "");
-            let varied = sweep.axes.iter().find(|(p, _)| {
-                dotted == *p || dotted.starts_with(&format!("{p}.")) || p.starts_with(&format!("{dotted}."))
-            });
+            let varied = sweep
+                .axes
+                .iter()
+                .any(|(p, _)| dotted == *p || dotted.starts_with(&format!("{p}.")));
             let params = sweep
                 .params(i)
                 .iter()
                 .map(|(p, v)| format!("{p} = {v}"))
                 .collect::<Vec<_>>()
                 .join(", ");
-            let path = match varied {
-                Some((p, _)) if dotted == *p || dotted.starts_with(&format!("{p}.")) => format!("vary.{dotted}"),
-                Some((p, _)) => format!("vary.{p}"),
-                None if e.path == "." => "base".to_string(),
-                None => format!("base.{}", e.path),
+            let path = if varied {
+                format!("vary.{dotted}")
+            } else if e.path == "." {
+                "base".to_string()
+            } else {
+                format!("base.{}", e.path)
             };
             CaseError::new(path, format!("design {i} ({params}): {}", e.message))
         };
