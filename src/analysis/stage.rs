@@ -260,10 +260,7 @@ fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super:
                 if files {
                     let modes: Vec<(f64, &[[f64; 6]])> =
                         raw.modes.iter().map(|m| (m.frequency_hz, m.shape.as_slice())).collect();
-                    out_files.push((
-                        "modes.vtu".to_string(),
-                        super::vtu::modes_vtu(&model, &modes, &bodies)?,
-                    ));
+                    out_files.push(("modes.vtu".to_string(), super::vtu::modes_vtu(&model, &modes, &bodies)?));
                 }
                 Some(rows)
             }
@@ -302,7 +299,14 @@ fn stage_modes_with_model(
     case: &StageCase,
     s: &stage::StageModel,
     n: usize,
-) -> Result<(Vec<super::modal::ModeRow>, crate::fem::Model, crate::fem::modal::ModalResults), RunError> {
+) -> Result<
+    (
+        Vec<super::modal::ModeRow>,
+        crate::fem::Model,
+        crate::fem::modal::ModalResults,
+    ),
+    RunError,
+> {
     let mut model = s.model.clone();
     for leg in &s.legs {
         model.supports.push(crate::fem::Support::clamp(leg.slider));

@@ -174,7 +174,11 @@ pub fn modes_vtu(model: &Model, modes: &[(f64, &[[f64; 6]])], bodies: &[BodyLine
     vtk::to_string(&VtuMesh {
         points: &points,
         cells: &c.cells,
-        point_vectors: names.iter().map(String::as_str).zip(data.iter().map(Vec::as_slice)).collect(),
+        point_vectors: names
+            .iter()
+            .map(String::as_str)
+            .zip(data.iter().map(Vec::as_slice))
+            .collect(),
         cell_scalars: vec![("element", &c.element), ("part", &c.part)],
         field_scalars: vec![("frequency_hz", &freq)],
     })

@@ -123,7 +123,10 @@ pub fn to_string(mesh: &VtuMesh) -> Result<String, VtkError> {
     for (name, v) in &mesh.point_vectors {
         check_name(name, &mut seen)?;
         if v.len() != np {
-            return Err(VtkError::Shape(format!("{name} has {} entries for {np} points", v.len())));
+            return Err(VtkError::Shape(format!(
+                "{name} has {} entries for {np} points",
+                v.len()
+            )));
         }
         check_finite(name, v.iter().flatten())?;
     }
