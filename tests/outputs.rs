@@ -308,22 +308,25 @@ fn triangles_are_vtk_triangles() {
 }
 
 /// The stage `.vtu` shows the whole stage: 3 × (revolute hinge, 4 leg beams, spherical neck)
-/// = 18 element cells, 3 rigid-link lines from the platform centre to the neck tops and 3
-/// slider lines (one extra point each); the platform centre's displacement equals the JSON
-/// platform z.
+/// = 18 element cells, 3 rigid-link lines from the platform centre to the neck tops, the
+/// platform as the triangle through the neck tops and 3 slider lines (one extra point each);
+/// the platform centre's displacement equals the JSON platform z.
 #[test]
 fn stage_vtu_shows_platform_sliders_and_rigid_links() {
     let dir = run_out("stage_vtu", &root().join("cases/ruiz2019_stage.json"));
     let vtu = Vtu::read(&dir.join("stage_F20.vtu"));
-    assert_eq!(vtu.types.len(), 24);
-    assert!(vtu.types.iter().all(|t| *t == 3), "all line cells");
+    assert_eq!(vtu.types.len(), 25);
     let part = vtu.cell_scalars("part");
     let count = |p: f64| part.iter().filter(|v| **v == p).count();
     assert_eq!(
         (count(1.0), count(2.0), count(5.0), count(6.0)),
-        (12, 6, 3, 3),
+        (12, 6, 3, 4),
         "{part:?}"
     );
+    let tri: Vec<usize> = (0..part.len()).filter(|&i| vtu.types[i] == 5).collect();
+    assert_eq!(tri.len(), 1, "one platform triangle");
+    assert_eq!(part[tri[0]], 6.0);
+    assert_eq!(vtu.types.iter().filter(|t| **t == 3).count(), 24, "the rest are lines");
     let rigid: Vec<&[usize]> = (0..part.len())
         .filter(|&i| part[i] == 5.0)
         .map(|i| vtu.cell(i))
@@ -333,6 +336,11 @@ fn stage_vtu_shows_platform_sliders_and_rigid_links() {
         rigid.iter().all(|c| c[0] == centre),
         "rigid links from the platform centre"
     );
+    let mut tops: Vec<usize> = rigid.iter().map(|c| c[1]).collect();
+    let mut plate = vtu.cell(tri[0]).to_vec();
+    tops.sort();
+    plate.sort();
+    assert_eq!(tops, plate, "the platform triangle joins the neck tops");
     let element = vtu.cell_scalars("element");
     assert!((0..part.len()).all(|i| (element[i] < 0.0) == (part[i] >= 5.0)));
     let res = json_file(&dir.join("result.json"));
@@ -345,7 +353,7 @@ fn stage_vtu_shows_platform_sliders_and_rigid_links() {
     );
     // Slider lines translate with their slider: both ends have the same displacement.
     let u = vtu.vectors("displacement_mm");
-    for i in (0..part.len()).filter(|&i| part[i] == 6.0) {
+    for i in (0..part.len()).filter(|&i| part[i] == 6.0 && vtu.types[i] == 3) {
         let c = vtu.cell(i);
         assert_eq!(u[c[0]], u[c[1]]);
         assert!(u[c[0]].iter().any(|v| v.abs() > 0.1), "the slider moved: {:?}", u[c[0]]);
@@ -360,7 +368,7 @@ fn nonlinear_stage_out_writes_vtu() {
     let res = json_file(&dir.join("result.json"));
     for (i, name) in ["row1", "row4", "F60"].iter().enumerate() {
         let vtu = Vtu::read(&dir.join(format!("stage_{name}.vtu")));
-        assert_eq!(vtu.types.len(), 24, "{name}");
+        assert_eq!(vtu.types.len(), 25, "{name}");
         let part = vtu.cell_scalars("part");
         let centre = vtu.cell((0..part.len()).find(|&k| part[k] == 5.0).unwrap())[0];
         let z = f(&res["load_cases"][i]["platform"]["z"]);

@@ -190,7 +190,12 @@ pub fn report(r: &StaticResult) -> Report {
 /// surfaces; `cell_stress` overrides it for given elements, e.g. hinge peak stresses; 0 where
 /// none).
 pub fn vtu(model: &Model, case: &fem::CaseResult, cell_stress: &[(usize, f64)]) -> Result<String, AnalysisError> {
-    super::vtu::static_vtu(model, &case.displacements, &von_mises_of(case, cell_stress), &[])
+    super::vtu::static_vtu(
+        model,
+        &case.displacements,
+        &von_mises_of(case, cell_stress),
+        &Default::default(),
+    )
 }
 
 /// Von Mises of element `ie` (MPa): `cell_stress` if it lists the element, else the element's

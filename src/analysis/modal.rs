@@ -120,7 +120,7 @@ pub fn solve(model: &Model, modes: usize, shift_hz: Option<f64>) -> Result<(Moda
 /// (field data `frequency_hz`); see [`super::vtu`].
 pub fn vtu(model: &Model, r: &ModalResults) -> Result<Vec<u8>, AnalysisError> {
     let modes: Vec<(f64, &[[f64; 6]])> = r.modes.iter().map(|m| (m.frequency_hz, m.shape.as_slice())).collect();
-    super::vtu::modes_vtu(model, &modes, &[])
+    super::vtu::modes_vtu(model, &modes, &Default::default())
 }
 
 /// Markdown/CSV views.

@@ -225,7 +225,7 @@ fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super:
         .compliance
         .ok_or_else(|| AnalysisError::new("stage", "no platform compliance"))?;
     let mut out_files = Vec::new();
-    let bodies = slider_lines(&s);
+    let drawn = drawn_bodies(&s);
     if files {
         for c in &results {
             let mut cell = Vec::new();
@@ -236,7 +236,7 @@ fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super:
             // The nonlinear solve splits each hinge into co-rotational segments (nodes added
             // after the model's own): the file shows the model's nodes, a hinge as one line.
             let vm = super::fem_static::von_mises_of(&c.fe, &cell);
-            let text = super::vtu::static_vtu(&s.model, &c.fe.displacements, &vm, &bodies)?;
+            let text = super::vtu::static_vtu(&s.model, &c.fe.displacements, &vm, &drawn)?;
             out_files.push((
                 format!("stage_{}.vtu", super::fem_static::file_stem(&c.name)),
                 text.into_bytes(),
@@ -260,7 +260,7 @@ fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super:
                 if files {
                     let modes: Vec<(f64, &[[f64; 6]])> =
                         raw.modes.iter().map(|m| (m.frequency_hz, m.shape.as_slice())).collect();
-                    out_files.push(("modes.vtu".to_string(), super::vtu::modes_vtu(&model, &modes, &bodies)?));
+                    out_files.push(("modes.vtu".to_string(), super::vtu::modes_vtu(&model, &modes, &drawn)?));
                 }
                 Some(rows)
             }
@@ -270,20 +270,26 @@ fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super:
     Ok((result, out_files))
 }
 
-/// The sliders drawn in `.vtu` files: a line from each slider node along −eᵢ, two leg heights
-/// long (the slider is a rigid body guided along eᵢ with its rotations fixed, so the whole line
-/// translates with its node).
-fn slider_lines(s: &StageModel) -> Vec<super::vtu::BodyLine> {
-    s.legs
-        .iter()
-        .map(|leg| {
-            let x = nalgebra::Vector3::from(s.model.nodes[leg.slider]) - 2.0 * s.design.leg_h * leg.e;
-            super::vtu::BodyLine {
-                node: leg.slider,
-                point: [x[0], x[1], x[2]],
-            }
-        })
-        .collect()
+/// Rigid bodies drawn in `.vtu` files: the platform as the triangle through the three neck tops
+/// (it also has the rigid-link lines from its centre) and each slider as a line from its node
+/// along −eᵢ, two leg heights long (the slider is a rigid body guided along eᵢ with its
+/// rotations fixed, so the whole line translates with its node).
+fn drawn_bodies(s: &StageModel) -> super::vtu::Drawn {
+    let tops = s.legs.map(|leg| leg.sph_top);
+    super::vtu::Drawn {
+        cells: vec![crate::report::vtk::Cell::Triangle(tops)],
+        lines: s
+            .legs
+            .iter()
+            .map(|leg| {
+                let x = nalgebra::Vector3::from(s.model.nodes[leg.slider]) - 2.0 * s.design.leg_h * leg.e;
+                super::vtu::BodyLine {
+                    node: leg.slider,
+                    point: [x[0], x[1], x[2]],
+                }
+            })
+            .collect(),
+    }
 }
 
 /// Modes of the stage with the actuators locked. Platform: point mass at P, a disc of radius

@@ -6,7 +6,8 @@
 //! spring, one triangle or quad per shell (a shell given as `[a, b, c, c]` is a triangle), and
 //! one line from the master to each slave of every rigid link. Cell data: `von_mises_MPa`,
 //! `element` (index in the model's element list; −1 for rigid links and drawn parts) and `part`
-//! ([`PART_BEAM`] …).
+//! ([`PART_BEAM`] …). Rigid bodies that are no elements (e.g. the stage's platform and sliders)
+//! may be drawn as extra cells ([`Drawn`]).
 
 use super::AnalysisError;
 use crate::fem::{Element, Model};
@@ -34,6 +35,15 @@ pub struct BodyLine {
     pub node: usize,
     /// The other end of the line, undeformed, mm.
     pub point: [f64; 3],
+}
+
+/// Rigid bodies drawn in addition to the model's elements (`part` = [`PART_BODY`]).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Drawn {
+    /// Lines from a node to an extra point moving with it.
+    pub lines: Vec<BodyLine>,
+    /// Cells among the model's nodes (e.g. a rigid platform's face through its joint nodes).
+    pub cells: Vec<Cell>,
 }
 
 /// The cells of a model with their `element` and `part` cell data.
@@ -87,11 +97,14 @@ pub fn model_cells(model: &Model) -> ModelCells {
     c
 }
 
-/// Model cells plus the drawn body lines (their extra points follow the model's nodes).
-fn cells_with_bodies(model: &Model, bodies: &[BodyLine]) -> (Vec<[f64; 3]>, ModelCells) {
+/// Model cells plus the drawn bodies (extra points of body lines follow their nodes).
+fn cells_with_bodies(model: &Model, drawn: &Drawn) -> (Vec<[f64; 3]>, ModelCells) {
     let mut points = model.nodes.clone();
     let mut c = model_cells(model);
-    for b in bodies {
+    for cell in &drawn.cells {
+        c.push(*cell, -1.0, PART_BODY);
+    }
+    for b in &drawn.lines {
         points.push(b.point);
         c.push(Cell::Line([b.node, points.len() - 1]), -1.0, PART_BODY);
     }
@@ -123,7 +136,7 @@ pub fn static_vtu(
     model: &Model,
     u: &[[f64; 6]],
     von_mises: &dyn Fn(usize) -> f64,
-    bodies: &[BodyLine],
+    drawn: &Drawn,
 ) -> Result<String, AnalysisError> {
     let n = model.nodes.len();
     if u.len() < n {
@@ -132,8 +145,8 @@ pub fn static_vtu(
             format!("{} displacement rows for {n} nodes", u.len()),
         ));
     }
-    let (points, c) = cells_with_bodies(model, bodies);
-    let (disp, rot) = point_data(n, u, bodies);
+    let (points, c) = cells_with_bodies(model, drawn);
+    let (disp, rot) = point_data(n, u, &drawn.lines);
     let vm: Vec<f64> = c
         .element
         .iter()
@@ -152,9 +165,9 @@ pub fn static_vtu(
 /// Mode shapes: per mode its frequency (Hz) and shape (one [ux, uy, uz, rx, ry, rz] row per
 /// node, mm and rad, global axes) → point vectors `mode_K_translation_mm` and
 /// `mode_K_rotation_deg` (K from 1) and the field array `frequency_hz`.
-pub fn modes_vtu(model: &Model, modes: &[(f64, &[[f64; 6]])], bodies: &[BodyLine]) -> Result<Vec<u8>, AnalysisError> {
+pub fn modes_vtu(model: &Model, modes: &[(f64, &[[f64; 6]])], drawn: &Drawn) -> Result<Vec<u8>, AnalysisError> {
     let n = model.nodes.len();
-    let (points, c) = cells_with_bodies(model, bodies);
+    let (points, c) = cells_with_bodies(model, drawn);
     let mut names = Vec::with_capacity(2 * modes.len());
     let mut data = Vec::with_capacity(2 * modes.len());
     for (k, (_, shape)) in modes.iter().enumerate() {
@@ -164,7 +177,7 @@ pub fn modes_vtu(model: &Model, modes: &[(f64, &[[f64; 6]])], bodies: &[BodyLine
                 format!("mode {} has {} rows for {n} nodes", k + 1, shape.len()),
             ));
         }
-        let (t, r) = point_data(n, shape, bodies);
+        let (t, r) = point_data(n, shape, &drawn.lines);
         names.push(format!("mode_{}_translation_mm", k + 1));
         names.push(format!("mode_{}_rotation_deg", k + 1));
         data.push(t);
