@@ -584,3 +584,35 @@ fn stage_z_has_one_unit_in_csv_and_markdown() {
         assert_eq!(cell, format!("{z_um:.1}"), "Markdown Δz of {name}");
     }
 }
+
+/// Kinematics CSV: fkp and ikp rows share one header, so every value sits under its column
+/// (ikp rows used to be written z-first under the fkp header). Each value equals the JSON.
+#[test]
+fn kinematics_csv_rows_match_their_header() {
+    let dir = run_out("kin_csv", &root().join("cases/ruiz2019_kinematics.json"));
+    let res = json_file(&dir.join("result.json"));
+    let csv = std::fs::read_to_string(dir.join("result.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let mut seen = [0usize; 2];
+    for line in csv.lines().skip(1) {
+        let cells: Vec<&str> = line.split(',').collect();
+        let kind = if cells[0] == "fkp" { 0 } else { 1 };
+        let j = &res[cells[0]][seen[kind]];
+        seen[kind] += 1;
+        for (h, c) in header.iter().zip(&cells).skip(1) {
+            let key = h.trim_end_matches("_mm");
+            let expect = match key {
+                "s1" | "s2" | "s3" => f(&j["s"][key[1..].parse::<usize>().unwrap() - 1]),
+                _ => f(&j[key]),
+            };
+            let v: f64 = c.parse().unwrap();
+            assert!(
+                (v - expect).abs() <= 1e-12 * expect.abs(),
+                "{} row {}: column {h}: {v} vs {expect}",
+                cells[0],
+                seen[kind]
+            );
+        }
+    }
+    assert_eq!(seen, [4, 2], "rows written");
+}
