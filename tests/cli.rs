@@ -158,11 +158,12 @@ fn every_bundled_case_checks_and_runs() {
 #[test]
 fn out_dir_writes_vtu_for_static_and_stage() {
     // `--out` writes one .vtu per load case (ParaView unstructured grid, line cells, von Mises
-    // per cell), for generic models and for the stage.
+    // per cell), for generic models and for the stage (18 element cells, 3 rigid-link lines and
+    // a triangle for the platform, 3 slider lines).
     let d = tempdir("vtu");
     for (case, file, cells) in [
         ("cases/static_cantilever.json", "tip.vtu", 2),
-        ("cases/ruiz2019_stage.json", "stage_F20.vtu", 18),
+        ("cases/ruiz2019_stage.json", "stage_F20.vtu", 25),
     ] {
         let out = run_in(&d, &["run", root().join(case).to_str().unwrap(), "--out", "o"]);
         assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
@@ -173,7 +174,7 @@ fn out_dir_writes_vtu_for_static_and_stage() {
         );
         assert!(vtu.contains(&format!("NumberOfCells=\"{cells}\"")), "{file}");
         assert!(
-            vtu.contains("Name=\"von_mises\"") && vtu.contains("Name=\"displacement\""),
+            vtu.contains("Name=\"von_mises_MPa\"") && vtu.contains("Name=\"displacement_mm\""),
             "{file}"
         );
     }

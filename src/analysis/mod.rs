@@ -6,6 +6,7 @@ pub mod hinge;
 pub mod kinematics;
 pub mod modal;
 pub mod stage;
+pub mod vtu;
 
 use crate::case::{Case, CaseError};
 use std::fmt;
@@ -136,16 +137,14 @@ fn run_opts(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
         }
         Case::Static(s) => {
             let model = s.model.build()?;
-            let mut files = Vec::new();
-            let r = match s.steps.filter(|_| s.nonlinear) {
+            let (r, raw) = match s.steps.filter(|_| s.nonlinear) {
                 Some(steps) => fem_static::solve_nonlinear(&model, steps)?,
-                None => {
-                    let (r, raw) = fem_static::solve(&model)?;
-                    if with_files {
-                        files = fem_static::vtu_files(&model, &raw)?;
-                    }
-                    r
-                }
+                None => fem_static::solve(&model)?,
+            };
+            let files = if with_files {
+                fem_static::vtu_files(&model, &raw)?
+            } else {
+                Vec::new()
             };
             Ok(Outcome {
                 json: to_json(&r)?,
