@@ -514,9 +514,9 @@ fn mode_energy(model: &Model, map: &DofMap, x: &[f64]) -> (f64, f64) {
 }
 
 /// Classifies the lowest mode x of (K, diag K) (see [`lowest_mode`]) by its strain energy against
-/// its roundoff scale ([`mode_energy`], [`RIGID_TOL`]). The DOFs reported for a mechanism are the translations, and rotations times the model size, with at least 1 % of the
-/// largest amplitude (so a thin leaf's rotation counts as much as the swing of the block it
-/// carries).
+/// its roundoff scale ([`mode_energy`], [`RIGID_TOL`]). The DOFs reported for a mechanism are
+/// the translations, and rotations times the model size, with at least 1 % of the largest
+/// amplitude (so a thin leaf's rotation counts as much as the swing of the block it carries).
 fn classify(
     model: &Model,
     map: &DofMap,
