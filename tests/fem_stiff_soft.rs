@@ -271,3 +271,43 @@ fn beams_in_series_with_stiffness_ratio_1e12_solve_to_the_closed_form() {
         }
     }
 }
+
+#[test]
+fn shell_plate_without_in_plane_support_is_a_mechanism_in_plane() {
+    // A 4 × 4 square plate of flat shells with uz held along its edges: it can still translate
+    // in x and y and spin about z (the in-plane rigid motions), so only ux, uy, rz move.
+    let (n, a) = (4, 40.0);
+    let mut m = Model::new();
+    for j in 0..=n {
+        for i in 0..=n {
+            m.add_node([a * i as f64 / n as f64, a * j as f64 / n as f64, 0.0]);
+        }
+    }
+    let id = |i: usize, j: usize| j * (n + 1) + i;
+    for j in 0..n {
+        for i in 0..n {
+            m.add_element(Element::Shell4(flexfem::fem::Shell4 {
+                nodes: [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)],
+                t: 1.0,
+                material: STEEL,
+            }));
+        }
+    }
+    for j in 0..=n {
+        for i in 0..=n {
+            if i == 0 || j == 0 || i == n || j == n {
+                m.supports.push(Support::dofs(id(i, j), &[Dof::Uz]));
+            }
+        }
+    }
+    match System::new(&m, &[], Parallelism::Sequential).unwrap_err() {
+        FemError::Mechanism { dofs } => {
+            assert!(!dofs.is_empty());
+            assert!(
+                dofs.iter().all(|d| matches!(d.dof, Dof::Ux | Dof::Uy | Dof::Rz)),
+                "{dofs:?}"
+            );
+        }
+        e => panic!("{e}"),
+    }
+}
