@@ -253,8 +253,9 @@ impl System {
         let d = self.k.diagonal();
         let norm = |v: &[f64]| v.iter().zip(&d).map(|(vi, di)| vi * vi * di.abs()).sum::<f64>().sqrt();
         for (x, dx) in rhs.chunks(n).zip(r.chunks(n)) {
-            let eta = norm(dx) / norm(x);
-            if eta > REFINE_TOL {
+            let (nx, ndx) = (norm(x), norm(dx));
+            let eta = if nx > 0.0 { ndx / nx } else { 0.0 };
+            if eta.is_nan() || eta > REFINE_TOL {
                 let worst = (0..n)
                     .max_by(|&i, &j| (dx[i].abs() * d[i].abs().sqrt()).total_cmp(&(dx[j].abs() * d[j].abs().sqrt())))
                     .map(|i| self.map.describe_eq(i).to_string())
