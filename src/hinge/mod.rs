@@ -29,6 +29,7 @@
 //!
 //! Units: mm, N, MPa; rotations in radians inside, degrees only in `max_rotation_deg`.
 
+pub mod calibration;
 pub mod closed_form;
 pub mod error;
 pub mod integrate;

@@ -189,7 +189,7 @@ impl Profile {
         non_negative("blank_length", blank)?;
         let thin = |t: f64| -> Result<(), HingeError> {
             if t.is_finite() && t > 0.0 && t < h {
-                Ok(())
+                positive("t", t)
             } else {
                 Err(geom("t", t, format!("must be > 0 and < h = {h}")))
             }
@@ -249,6 +249,7 @@ impl Profile {
         if !(t.is_finite() && t > 0.0 && t < h) {
             return Err(geom("t", t, format!("neck diameter must be > 0 and < h = {h}")));
         }
+        positive("t", t)?;
         Ok(Profile {
             contour: Contour::SphericalNeck { l, t, r },
             w: h,

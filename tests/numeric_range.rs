@@ -1,0 +1,214 @@
+//! Numerical range: every number written is finite, or the run fails naming the quantity.
+//!
+//! Regressions of issue 12 ("Numerical range"): loads ≥ ~1e154 N gave NaN output with exit 0
+//! (linear statics) and all-zero displacements with exit 0 (nonlinear); hinge torsion stiffness
+//! was NaN for R ≤ 3e-4 mm or t close to h and jumped 2× near t = h; R = 1e300 gave `null`s.
+
+mod common;
+
+use common::run_case_text;
+use flexfem::analysis::to_checked_json;
+use flexfem::hinge::{characterise, HingeSpec};
+use flexfem::material::Material;
+use serde::Serialize;
+
+fn cantilever(force: &str, extra: &str) -> String {
+    format!(
+        r#"{{
+  "analysis": "static",{extra}
+  "materials": {{"al": "Al7075"}},
+  "sections": {{"leg": {{"shape": "rect", "w": 10, "h": 10}}}},
+  "nodes": [[0, 0, 0], [50, 0, 0], [100, 0, 0]],
+  "elements": [
+    {{"type": "beam", "nodes": [0, 1], "section": "leg", "material": "al", "up": [0, 0, 1], "shear": false}},
+    {{"type": "beam", "nodes": [1, 2], "section": "leg", "material": "al", "up": [0, 0, 1], "shear": false}}
+  ],
+  "supports": [{{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}}],
+  "load_cases": [{{"name": "tip", "forces": [{{"node": 2, "F": [0, 0, {force}, 0, 0, 0]}}]}}]
+}}"#
+    )
+}
+
+fn stdout(o: &std::process::Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+fn stderr(o: &std::process::Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// Was: stress σ = M c / I overflows to ∞ (M ~ 1e157 N·mm) and serde_json wrote `null`, exit 0.
+#[test]
+fn huge_load_linear_static_fails_naming_the_quantity() {
+    let o = run_case_text("huge_static", &cantilever("-1e155", ""));
+    assert_eq!(
+        o.status.code(),
+        Some(1),
+        "stdout: {}\nstderr: {}",
+        stdout(&o),
+        stderr(&o)
+    );
+    let e = stderr(&o);
+    assert!(e.contains("load_cases[0]."), "{e}");
+    assert!(e.contains("not finite"), "{e}");
+    assert!(!stdout(&o).contains("null"));
+}
+
+/// Was: the Newton residual norm squared its entries (1e155² = ∞), so ∞ ≤ tol·∞ passed as
+/// converged at iteration 0 with zero displacements. Now the scaled norm sees the residual; the
+/// co-rotational cantilever turns into the load and stretches by F L/(E A) (a bar along its
+/// load: the closed form of axial elongation), here 1e155·100/(72000·100) = 1.3889e150 mm.
+#[test]
+fn huge_load_nonlinear_is_not_silently_zero() {
+    let o = run_case_text(
+        "huge_nonlinear",
+        &cantilever("-1e155", r#" "nonlinear": true, "steps": 5,"#),
+    );
+    let out = stdout(&o);
+    match o.status.code() {
+        Some(0) => {
+            let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+            let tip = &v["load_cases"][0]["displacements"][2];
+            let uz = tip[2].as_f64().expect("finite tip uz");
+            let expected = -1e155 * 100.0 / (72_000.0 * 100.0);
+            assert!((uz / expected - 1.0).abs() < 0.01, "tip uz {uz} vs F L/(EA) {expected}");
+            assert!(!out.contains("null"));
+        }
+        Some(1) => assert!(stderr(&o).contains("tip") || stderr(&o).contains("load_cases")),
+        c => panic!("exit {c:?}: {}", stderr(&o)),
+    }
+}
+
+/// Loads whose products overflow f64 (1e300 N × 100 mm) fail with exit 1 and a path, never
+/// a `null`.
+#[test]
+fn overflowing_load_fails_nonlinear_too() {
+    for extra in ["", r#" "nonlinear": true, "steps": 2,"#] {
+        let o = run_case_text("overflow_load", &cantilever("-1e300", extra));
+        assert_eq!(o.status.code(), Some(1), "{extra}: {}", stderr(&o));
+        assert!(!stdout(&o).contains("null"));
+    }
+}
+
+fn al() -> Material {
+    Material::builtin("Al7075").unwrap()
+}
+
+fn circular(r: f64, t: f64, blank: f64) -> HingeSpec {
+    HingeSpec::CircularNotch {
+        r,
+        t,
+        w: 10.0,
+        h: 10.0,
+        blank_length: blank,
+    }
+}
+
+/// Was NaN for R ≤ 3e-4 mm (Cholesky cancellation on elements ~1e-5 mm long next to a
+/// warping layer of ~2.5 mm). As R → 0 the notch vanishes and k_torsion tends to the value
+/// of the blank with the slot's load-spreading zone: successive values must be finite and
+/// converge (Cauchy), and no value may differ from the R = 1e-2 mm one by more than 1 %.
+#[test]
+fn torsion_finite_and_continuous_as_r_goes_to_zero() {
+    let k = |r: f64| characterise(&circular(r, 2.0, 20.0), &al()).unwrap().hinge.k_torsion;
+    let k_ref = k(1e-2);
+    let mut prev = k_ref;
+    for r in [3e-3, 1e-3, 5e-4, 3e-4, 1e-4, 3e-5, 1e-5, 1e-6] {
+        let v = k(r);
+        assert!(v.is_finite() && v > 0.0, "R = {r}: k_torsion = {v}");
+        assert!((v / k_ref - 1.0).abs() < 0.01, "R = {r}: {v} vs {k_ref} at R = 0.01");
+        // Monotone convergence: each step changes k by less than 0.2 %.
+        assert!((v / prev - 1.0).abs() < 2e-3, "R = {r}: {v} after {prev}");
+        prev = v;
+    }
+}
+
+/// Was NaN at t = h − 1e-8 and 2× too stiff at t = h − 1e-9 (R = 8, h = 10). As t → h the
+/// notch disappears; k_torsion must approach the t = h − 1e-4 value smoothly: finite,
+/// monotone non-decreasing within 1e-4 relative, and within 0.2 % of its neighbours.
+#[test]
+fn torsion_finite_and_continuous_as_t_goes_to_h() {
+    let k = |t: f64| characterise(&circular(8.0, t, 20.0), &al()).unwrap().hinge.k_torsion;
+    let mut prev = k(10.0 - 1e-4);
+    for d in [1e-5, 1e-6, 1e-7, 1e-8, 3e-9, 1e-9, 1e-10, 1e-11, 1e-12] {
+        let v = k(10.0 - d);
+        assert!(v.is_finite(), "t = h − {d}: {v}");
+        assert!((v / prev - 1.0).abs() < 2e-3, "t = h − {d}: {v} after {prev}");
+        assert!(v >= prev * (1.0 - 1e-4), "t = h − {d}: {v} < {prev}");
+        prev = v;
+    }
+}
+
+/// R = 1e300 overflowed R² to ∞: `null`s, k_torsion 1.0, "NaN%" in the report. Geometry
+/// beyond what double precision represents (and far beyond any hinge) is refused before
+/// solving, with the JSON path (exit 2).
+#[test]
+fn absurd_hinge_length_is_refused_with_its_path() {
+    for (field, hinge) in [
+        (
+            "hinge.R",
+            r#"{"type": "circular_notch", "R": 1e300, "t": 2, "w": 10, "h": 10, "blank_length": 20}"#,
+        ),
+        (
+            "hinge.w",
+            r#"{"type": "circular_notch", "R": 8, "t": 2, "w": 1e300, "h": 10, "blank_length": 20}"#,
+        ),
+        (
+            "hinge.t",
+            r#"{"type": "circular_notch", "R": 8, "t": 1e-300, "w": 10, "h": 10, "blank_length": 20}"#,
+        ),
+        (
+            "hinge.blank_length",
+            r#"{"type": "leaf", "l": 8, "t": 1, "w": 10, "h": 10, "blank_length": 1e300}"#,
+        ),
+    ] {
+        let o = run_case_text("absurd_hinge", &format!(r#"{{"analysis": "hinge", "hinge": {hinge}}}"#));
+        assert_eq!(o.status.code(), Some(2), "{hinge}: {}", stderr(&o));
+        let e = stderr(&o);
+        assert!(e.contains(&format!("`{field}`")), "{e}");
+        assert!(e.len() < 400, "message stays short: {e}");
+    }
+}
+
+/// A tiny notch (R = 3e-4 mm) now runs: exit 0, no `null`, no NaN in the report.
+#[test]
+fn tiny_notch_runs_with_finite_output() {
+    let o = run_case_text(
+        "tiny_notch",
+        r#"{"analysis": "hinge", "hinge": {"type": "circular_notch", "R": 0.0003, "t": 2, "w": 10, "h": 10, "blank_length": 20}}"#,
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(!stdout(&o).contains("null"), "{}", stdout(&o));
+}
+
+#[derive(Serialize)]
+struct Row {
+    name: &'static str,
+    values: Vec<[f64; 2]>,
+    maybe: Option<f64>,
+}
+
+/// The checked serialisation names the JSON path of the first non-finite number and leaves
+/// genuine `None`s as `null`.
+#[test]
+fn checked_json_names_the_path() {
+    let ok = Row {
+        name: "a",
+        values: vec![[1.0, 2.0]],
+        maybe: None,
+    };
+    let v = to_checked_json(&ok).unwrap();
+    assert!(v["maybe"].is_null());
+    let bad = Row {
+        name: "b",
+        values: vec![[1.0, 2.0], [3.0, f64::NAN]],
+        maybe: Some(1.0),
+    };
+    let e = to_checked_json(&bad).unwrap_err();
+    assert_eq!(e.context, "values[1][1]");
+    let inf = Row {
+        name: "c",
+        values: vec![],
+        maybe: Some(f64::INFINITY),
+    };
+    assert_eq!(to_checked_json(&inf).unwrap_err().context, "maybe");
+}
