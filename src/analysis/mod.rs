@@ -165,7 +165,10 @@ pub fn check(case: &Case) -> Result<(), CaseError> {
         Case::FemVsFkp(s) => s.validate().map(|_| ()),
         Case::Sensitivity(s) => s.validate().map(|_| ()),
         Case::Design(s) => s.validate().map(|_| ()),
-        Case::Modal(m) => m.model.build_model(false).map(|_| ()),
+        Case::Modal(m) => {
+            crate::case::limits::check_modal(m.modes, m.model.nodes.len())?;
+            m.model.build_model(false).map(|_| ())
+        }
     }
 }
 
@@ -239,6 +242,7 @@ fn run_analysis(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
             })
         }
         Case::Modal(m) => {
+            crate::case::limits::check_modal(m.modes, m.model.nodes.len())?;
             let model = m.model.build_model(false)?;
             let (r, raw) = modal::solve(&model, m.modes, m.shift_hz)?;
             Ok(Outcome {
