@@ -212,3 +212,28 @@ fn checked_json_names_the_path() {
     };
     assert_eq!(to_checked_json(&inf).unwrap_err().context, "maybe");
 }
+
+/// Unbounded or undefined quantities with a stated meaning are `null`, not a failure: a
+/// material without an allowable stress has no rotation at the allowable (hinge) and no reach
+/// at the allowable (stage); a stage load case of zero forces has no stress ratio T.
+#[test]
+fn documented_nulls_stay_runs() {
+    let o = run_case_text(
+        "no_allowable_hinge",
+        r#"{"analysis": "hinge", "material": {"E": 72000, "nu": 0.33}, "hinge": {"type": "circular_notch", "R": 8, "t": 2, "w": 10, "h": 10, "blank_length": 20}}"#,
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(v["max_rotation_deg"].is_null());
+    assert!(v["k_bend"].as_f64().unwrap() > 0.0);
+
+    let base = std::fs::read_to_string(common::root().join("cases/ruiz2019_stage.json")).unwrap();
+    let mut c: serde_json::Value = serde_json::from_str(&base).unwrap();
+    c["load_cases"] = serde_json::json!([{"name": "zero", "actuator_forces": [0, 0, 0]}]);
+    let o = run_case_text("zero_stage", &c.to_string());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let row = &v["load_cases"][0];
+    assert!(row["T"].is_null() && row["factor_at_allowable"].is_null(), "{row}");
+    assert_eq!(row["max_von_mises"].as_f64(), Some(0.0));
+}
