@@ -220,21 +220,29 @@ pub const MIN_ELEMENT_PER_LAYER: f64 = 1e-3;
 /// Every interval of `xs` is integrated with 4 Gauss points; intervals much shorter than the
 /// local warping layer are merged into their neighbours' elements ([`MIN_ELEMENT_PER_LAYER`]).
 pub fn torsion_fe(xs: &[f64], props: impl Fn(f64) -> (f64, f64)) -> f64 {
-    // Element nodes: indices into xs, each element at least MIN_ELEMENT_PER_LAYER × the largest
-    // warping layer of the intervals it covers.
-    let layer_of = |a: f64, b: f64| -> f64 {
-        let (gj, eg) = props(0.5 * (a + b));
-        if gj > 0.0 && eg > 0.0 {
-            (eg / gj).sqrt()
-        } else {
-            0.0
+    // Properties at the 4 Gauss points of every interval of xs (sampled once).
+    let mut gp = [[(0.0f64, 0.0f64); 4]; MAX_NODES];
+    for i in 0..xs.len() - 1 {
+        for q in 0..4 {
+            gp[i][q] = props(xs[i] + GL4_X[q] * (xs[i + 1] - xs[i]));
         }
+    }
+    // Element nodes: indices into xs, each element at least MIN_ELEMENT_PER_LAYER × the largest
+    // warping layer √(EΓ/GJ) of the intervals it covers.
+    let layer_of = |i: usize| -> f64 {
+        gp[i].iter().fold(0.0f64, |m, &(gj, eg)| {
+            if gj > 0.0 && eg > 0.0 {
+                m.max((eg / gj).sqrt())
+            } else {
+                m
+            }
+        })
     };
     let mut keep = [0usize; MAX_NODES];
     let mut nk = 1;
     let mut layer = 0.0f64;
     for i in 1..xs.len() {
-        layer = layer.max(layer_of(xs[i - 1], xs[i]));
+        layer = layer.max(layer_of(i - 1));
         if xs[i] - xs[keep[nk - 1]] >= MIN_ELEMENT_PER_LAYER * layer {
             keep[nk] = i;
             nk += 1;
@@ -262,7 +270,7 @@ pub fn torsion_fe(xs: &[f64], props: impl Fn(f64) -> (f64, f64)) -> f64 {
             for q in 0..4 {
                 let x = s0 + GL4_X[q] * (s1 - s0);
                 let xi = (x - xa) / le;
-                let (gj, eg) = props(x);
+                let (gj, eg) = gp[sub][q];
                 let wq = GL4_W[q] * (s1 - s0);
                 // Hermite cubics: first and second x-derivatives.
                 let d1 = [
