@@ -122,3 +122,36 @@ fn stage_hinge_outside_calibration_warns() {
     assert_eq!(out.json["warnings"].as_array().unwrap().len(), w.len());
     assert!(out.report.markdown.contains("## Warnings"));
 }
+
+/// Sensitivity evaluates the base design's hinges; design the hinges it found: both warn
+/// when those hinges leave the calibrated range (turned neck l/t > 5 here).
+#[test]
+fn sensitivity_and_design_warn_about_their_hinges() {
+    let base = std::fs::read_to_string(root().join("cases/ruiz2019_sensitivity.json")).unwrap();
+    let mut c: serde_json::Value = serde_json::from_str(&base).unwrap();
+    // l/t = 18/3 = 6 > 5.
+    c["stage"]["spherical"]["l"] = serde_json::json!(18.0);
+    let out = analysis::run(&case::parse(&c.to_string()).unwrap()).unwrap();
+    assert!(
+        out.warnings
+            .iter()
+            .any(|w| w.starts_with("stage.spherical: spherical_neck l/t = 6 ")),
+        "{:?}",
+        out.warnings
+    );
+
+    let base = std::fs::read_to_string(root().join("cases/ruiz2019_design.json")).unwrap();
+    let mut c: serde_json::Value = serde_json::from_str(&base).unwrap();
+    // Every neck inside these bounds has l/t ≥ 13/2.4 = 5.4 > 5.
+    c["bounds"]["l_sph"] = serde_json::json!([13, 14]);
+    c["bounds"]["t_sph"] = serde_json::json!([2, 2.4]);
+    let out = analysis::run(&case::parse(&c.to_string()).unwrap()).unwrap();
+    assert!(
+        out.warnings
+            .iter()
+            .any(|w| w.starts_with("design found, stage.spherical: spherical_neck l/t")),
+        "{:?}",
+        out.warnings
+    );
+    assert_eq!(out.json["warnings"].as_array().unwrap().len(), out.warnings.len());
+}

@@ -143,6 +143,25 @@ fn stage_warnings(d: &crate::stage::StageDesign) -> Vec<String> {
     w
 }
 
+/// Calibration warnings of the hinges of the design found by a `design` run.
+fn design_warnings(case: &crate::case::design::DesignCase, r: &design::DesignResult) -> Vec<String> {
+    use crate::design::stage_design::{with_params, PARAMETERS};
+    let Ok((base, _, _)) = case.validate() else {
+        return Vec::new();
+    };
+    let mut p = [0.0; 5];
+    for (v, k) in p.iter_mut().zip(PARAMETERS) {
+        match r.design.get(k).and_then(|v| v.as_f64()) {
+            Some(x) => *v = x,
+            None => return Vec::new(),
+        }
+    }
+    stage_warnings(&with_params(&base, &p))
+        .into_iter()
+        .map(|w| format!("design found, {w}"))
+        .collect()
+}
+
 /// Warnings that depend only on the case (hinge calibration ranges).
 fn case_warnings(case: &Case) -> Vec<String> {
     match case {
@@ -187,20 +206,6 @@ pub fn run_with_files(case: &Case) -> Result<Outcome, RunError> {
 fn run_opts(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
     let mut out = run_analysis(case, with_files)?;
     out.warnings.extend(case_warnings(case));
-    if let Case::Design(c) = case {
-        // The hinges of the design found.
-        if let (Ok((d, _, _)), Some(map)) = (c.validate(), out.json.get("design").and_then(|v| v.as_object())) {
-            let p: Option<Vec<f64>> = crate::design::stage_design::PARAMETERS
-                .iter()
-                .map(|k| map.get(*k).and_then(|v| v.as_f64()))
-                .collect();
-            if let Some(p) = p.and_then(|p| <[f64; 5]>::try_from(p).ok()) {
-                let found = crate::design::stage_design::with_params(&d, &p);
-                out.warnings
-                    .extend(stage_warnings(&found).into_iter().map(|w| format!("design found, {w}")));
-            }
-        }
-    }
     if let serde_json::Value::Object(m) = &mut out.json {
         m.insert("warnings".into(), serde_json::Value::from(out.warnings.clone()));
     }
@@ -290,7 +295,9 @@ fn run_analysis(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
         }
         Case::Design(s) => {
             let r = design::run_design(s)?;
-            Ok(plain(to_json(&r)?, design::design_report(&r)))
+            let mut out = plain(to_json(&r)?, design::design_report(&r));
+            out.warnings = design_warnings(s, &r);
+            Ok(out)
         }
         Case::Hinge(h) => {
             let r = hinge::solve(h)?;
