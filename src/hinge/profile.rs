@@ -181,6 +181,16 @@ fn arc_cap(ext: f64, depth: f64, t: f64, h: f64) -> Option<f64> {
     }
 }
 
+fn contour_t(c: &Contour) -> f64 {
+    match *c {
+        Contour::Circular { t, .. }
+        | Contour::Elliptical { t, .. }
+        | Contour::CornerFilleted { t, .. }
+        | Contour::Leaf { t, .. }
+        | Contour::SphericalNeck { t, .. } => t,
+    }
+}
+
 impl Profile {
     /// Validates and builds a rectangular-section profile (all families but the neck).
     pub fn rectangular(contour: Contour, w: f64, h: f64, blank: f64) -> Result<Self, HingeError> {
@@ -229,6 +239,17 @@ impl Profile {
                 return Err(geom("type", f64::NAN, "spherical_neck is built with Profile::neck"))
             }
         };
+        if 2.0 * (half_notch + blank) < super::error::MIN_LENGTH {
+            // A notch so shallow against its radius that its length rounds to nothing.
+            return Err(geom(
+                "t",
+                contour_t(&contour),
+                format!(
+                    "the hinge is shorter than {:e} mm: the notch depth (h − t)/2 is too shallow to give it a length; make t smaller than h or give blank_length > 0",
+                    super::error::MIN_LENGTH
+                ),
+            ));
+        }
         Ok(Profile {
             contour,
             w,
