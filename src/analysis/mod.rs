@@ -9,7 +9,8 @@ pub mod modal;
 pub mod stage;
 pub mod vtu;
 
-use crate::case::{Case, CaseError};
+use crate::case::{Case, CaseError, MaterialSpec};
+use crate::material::Material;
 use std::fmt;
 
 /// A failed analysis (exit code 1): where it failed and why.
@@ -255,11 +256,99 @@ pub fn run_with_files(case: &Case) -> Result<Outcome, RunError> {
 fn run_opts(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
     let mut out = run_analysis(case, with_files)?;
     out.warnings.extend(case_warnings(case));
+    let materials = case_materials(case);
     if let serde_json::Value::Object(m) = &mut out.json {
+        match materials.as_slice() {
+            [(key, spec, mat)] if key.is_empty() => {
+                m.insert("material".into(), material_json(spec, mat));
+            }
+            [] => {}
+            all => {
+                let map = all.iter().map(|(k, spec, mat)| (k.clone(), material_json(spec, mat)));
+                m.insert("materials".into(), serde_json::Value::Object(map.collect()));
+            }
+        }
         m.insert("warnings".into(), serde_json::Value::from(out.warnings.clone()));
     }
+    out.report.markdown += &materials_markdown(&materials);
     out.report.markdown += &warnings_markdown(&out.warnings);
     Ok(out)
+}
+
+/// The materials a case uses, resolved: `("", spec, material)` for the one material of a
+/// hinge/stage/design case, `(name, spec, material)` per named material of a mesh case.
+fn case_materials(case: &Case) -> Vec<(String, MaterialSpec, Material)> {
+    let one = |spec: &MaterialSpec| {
+        spec.resolve("material")
+            .map(|m| vec![(String::new(), spec.clone(), m)])
+            .unwrap_or_default()
+    };
+    let named = |specs: &std::collections::BTreeMap<String, MaterialSpec>| {
+        specs
+            .iter()
+            .filter_map(|(k, spec)| spec.resolve(k).ok().map(|m| (k.clone(), spec.clone(), m)))
+            .collect()
+    };
+    match case {
+        Case::Hinge(h) => one(&h.material),
+        Case::Stage(s) => one(&s.material),
+        Case::FemVsFkp(s) => one(&s.material),
+        Case::Sensitivity(s) => one(&s.material),
+        Case::Design(s) => one(&s.material),
+        Case::Static(s) => named(&s.model.materials),
+        Case::Modal(m) => named(&m.model.materials),
+        Case::Kinematics(_) | Case::Sweep(_) => Vec::new(),
+    }
+}
+
+/// The material as used, echoed in the result: `{"name", "E" (MPa), "nu", "density" (t/mm³),
+/// "yield" (MPa), "allowable" (MPa)}`; `name` is the built-in name or `"custom"`; an unlimited
+/// yield or allowable stress is `null`.
+fn material_json(spec: &MaterialSpec, m: &Material) -> serde_json::Value {
+    let name = match spec {
+        MaterialSpec::Name(n) => n.as_str(),
+        MaterialSpec::Custom(_) => "custom",
+    };
+    serde_json::json!({
+        "name": name,
+        "E": m.e,
+        "nu": m.nu,
+        "density": m.density,
+        "yield": m.yield_strength.is_finite().then_some(m.yield_strength),
+        "allowable": m.allowable.is_finite().then_some(m.allowable),
+    })
+}
+
+/// One Markdown line per material used.
+fn materials_markdown(materials: &[(String, MaterialSpec, Material)]) -> String {
+    let mut s = String::new();
+    for (key, spec, m) in materials {
+        let name = match spec {
+            MaterialSpec::Name(n) => n.clone(),
+            MaterialSpec::Custom(_) => "custom".to_string(),
+        };
+        let strength = |v: f64| {
+            if v.is_finite() {
+                format!("{v} MPa")
+            } else {
+                "unlimited".into()
+            }
+        };
+        let label = if key.is_empty() {
+            String::new()
+        } else {
+            format!("`{key}` = ")
+        };
+        s += &format!(
+            "\nMaterial: {label}{name} (E {} MPa, ν {}, density {:e} t/mm³, yield {}, allowable {}).\n",
+            m.e,
+            m.nu,
+            m.density,
+            strength(m.yield_strength),
+            strength(m.allowable)
+        );
+    }
+    s
 }
 
 fn run_analysis(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
