@@ -58,3 +58,22 @@ fn custom_material_without_strengths_echoes_null_limits() {
     assert!(m["yield"].is_null() && m["allowable"].is_null(), "{m}");
     assert!(out.report.markdown.contains("allowable unlimited"));
 }
+
+/// A material without an allowable stress and a load case that stresses nothing: the report
+/// says so in words, never "NaN" or "inf" (the JSON has the documented `null`s).
+#[test]
+fn stage_report_without_allowable_or_load_has_no_nan_text() {
+    let text = std::fs::read_to_string(root().join("cases/ruiz2019_stage.json")).unwrap();
+    let mut v: Value = serde_json::from_str(&text).unwrap();
+    v["material"] = serde_json::json!({"E": 72000, "nu": 0.33});
+    v["load_cases"] = serde_json::json!([{"name": "zero", "actuator_forces": [0, 0, 0]}]);
+    let c = flexfem::case::parse_value(v, Some(&root().join("cases"))).unwrap();
+    let out = run(&c).unwrap();
+    for text in [&out.report.markdown, &out.report.csv] {
+        for bad in ["NaN", "inf"] {
+            assert!(!text.contains(bad), "{bad} in report:\n{text}");
+        }
+    }
+    assert!(out.report.markdown.contains("No allowable stress bounds the stroke"));
+    assert!(out.json["load_cases"][0]["T"].is_null());
+}

@@ -379,7 +379,7 @@ pub fn stage_report(r: &StageResult) -> Report {
             format!("{:.2}", mx(c.hinge_stress.revolute)),
             format!("{:.2}", mx(c.hinge_stress.spherical)),
             format!("{:.2}", c.max_von_mises),
-            format!("{:.3}", c.t),
+            finite_or_dash(c.t, |t| format!("{t:.3}")),
         ]);
         let p = &c.platform;
         csv += &format!(
@@ -398,17 +398,25 @@ pub fn stage_report(r: &StageResult) -> Report {
             p.theta_deg,
             p.phi_deg,
             c.max_von_mises,
-            c.t
+            finite_or_dash(c.t, |t| t.to_string()).replace('—', "")
         );
     }
     md += &t.render();
+    let a = &r.at_allowable;
+    let reach = if [a.allowable, a.force, a.stroke, a.z].iter().all(|v| v.is_finite()) {
+        format!(
+            "At the allowable stress {} MPa under equal forces: F = {} N per actuator, stroke {} mm, Δz = {} mm.",
+            a.allowable,
+            sig(a.force, 5),
+            sig(a.stroke, 5),
+            sig(a.z, 5)
+        )
+    } else {
+        "No allowable stress bounds the stroke (the material has none, or equal forces stress no hinge).".to_string()
+    };
     md += &format!(
-        "\nStructural stiffness (total actuator force per mm of pure-z stroke): **{} N/mm**.\n\nAt the allowable stress {} MPa under equal forces: F = {} N per actuator, stroke {} mm, Δz = {} mm.\n\nPlatform stiffness at P (sliders held): translational eigenvalues {}…{} N/mm, rotational {}…{} N·mm/rad.\n",
+        "\nStructural stiffness (total actuator force per mm of pure-z stroke): **{} N/mm**.\n\n{reach}\n\nPlatform stiffness at P (sliders held): translational eigenvalues {}…{} N/mm, rotational {}…{} N·mm/rad.\n",
         sig(r.stiffness_z, 5),
-        r.at_allowable.allowable,
-        sig(r.at_allowable.force, 5),
-        sig(r.at_allowable.stroke, 5),
-        sig(r.at_allowable.z, 5),
         sig(r.platform_stiffness.translational_eigen[0], 4),
         sig(r.platform_stiffness.translational_eigen[1], 4),
         sig(r.platform_stiffness.rotational_eigen[0], 4),
@@ -629,4 +637,13 @@ pub fn fem_vs_fkp_report(r: &FemVsFkpResult) -> (Report, super::Files) {
         Report { markdown: md, csv },
         vec![("fem_vs_fkp.svg".into(), plot.into_bytes())],
     )
+}
+
+/// `f(v)` for a finite `v`, "—" for an undefined or unbounded value (documented `null`s).
+fn finite_or_dash(v: f64, f: impl Fn(f64) -> String) -> String {
+    if v.is_finite() {
+        f(v)
+    } else {
+        "—".to_string()
+    }
 }
