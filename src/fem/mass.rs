@@ -101,7 +101,7 @@ pub fn element_mass(model: &Model, ie: usize) -> Result<Option<ElementMatrix>, F
     }
 }
 
-/// Global consistent mass of shell element `ie` (24×24).
+/// Global (lumped) mass of shell element `ie` (24×24).
 pub fn shell_mass_matrix(model: &Model, ie: usize) -> Result<ShellMatrix, FemError> {
     let (s, x) = model.shell_checked(ie)?;
     let rho = s.material.density;
