@@ -1,4 +1,5 @@
-//! Consistent mass matrices: beams (translational + rotary inertia), shells, point masses.
+//! Mass matrices: beams (consistent, translational + rotary inertia), shells (lumped), point
+//! masses.
 //! Units: tonne, tonne·mm² (with mm, N, s: forces N = t·mm/s²).
 
 use super::error::FemError;
