@@ -94,7 +94,7 @@ fn clamped_plate(n: usize) -> f64 {
 
 /// Clamped square plate, uniform pressure: w_max = 0.00126 q a⁴/D (S. Timoshenko,
 /// S. Woinowsky-Krieger, Theory of Plates and Shells, 2nd ed., 1959, Table 35: 0.00126).
-/// Full plate, 16×16 mesh, a/t = 1000: 0.001262 (+0.13 %); 8×8 0.001251, 32×32 0.001264.
+/// Full plate, 16×16 mesh, a/t = 1000: 0.001271 (+0.91 %); 8×8 0.001289, 32×32 0.001267.
 #[test]
 fn clamped_square_plate_timoshenko() {
     let c = clamped_plate(16);
@@ -128,8 +128,8 @@ fn scordelis_lo(n: usize) -> f64 {
 
 #[test]
 fn scordelis_lo_roof() {
-    // 16×16 elements on the full roof (an 8×8 quarter): 0.30385 (+0.48 %); 8×8 0.31598,
-    // 32×32 0.30165 (−0.25 %).
+    // 16×16 elements on the full roof (an 8×8 quarter): 0.30586 (+1.14 %); 8×8 0.32100,
+    // 32×32 0.30253 (+0.04 %).
     let w = scordelis_lo(16);
     let err = (w - 0.3024) / 0.3024;
     eprintln!("Scordelis-Lo 16x16: w = {w:.5}, error {:.2} %", 100.0 * err);
@@ -164,7 +164,7 @@ fn pinched_cylinder(n: usize) -> f64 {
 
 #[test]
 fn pinched_cylinder_with_diaphragms() {
-    // Octant 32×32: 1.8054e-5 (−1.06 %); 16×16 gives 1.7004e-5 (−6.8 %), so 32×32 is needed.
+    // Octant 32×32: 1.8325e-5 (+0.42 %); 16×16 gives 1.7799e-5 (−2.5 %), so 32×32 is needed.
     let w = pinched_cylinder(32);
     let err = (w - 1.8248e-5) / 1.8248e-5;
     eprintln!("pinched cylinder octant 32x32: w = {w:.5e}, error {:.2} %", 100.0 * err);
@@ -199,7 +199,7 @@ fn pinched_hemisphere(n: usize) -> (f64, f64) {
 
 #[test]
 fn pinched_hemisphere_18deg_hole() {
-    // Quarter 16×16: 0.09309 (−0.97 %); 8×8 0.0925, 32×32 0.0934.
+    // Quarter 16×16: 0.09389 (−0.12 %); 8×8 0.0950, 32×32 0.0937.
     let (ux, uy) = pinched_hemisphere(16);
     let err = (ux - 0.094) / 0.094;
     eprintln!(
@@ -242,7 +242,7 @@ fn twisted_beam_t(nw: usize, nl: usize, load_dir: usize, t: f64, p: f64) -> f64 
 
 #[test]
 fn twisted_beam_thick() {
-    // 2×12: 5.4069e-3 (−0.32 %) and 1.7564e-3 (+0.14 %).
+    // 2×12: 5.4101e-3 (−0.26 %) and 1.7580e-3 (+0.23 %).
     let inplane = twisted_beam(2, 12, 2);
     let outplane = twisted_beam(2, 12, 1);
     let e1 = (inplane - 5.424e-3) / 5.424e-3;
@@ -284,8 +284,8 @@ fn convergence_report() {
 /// a = 100, t = 1, Al 7075, edges clamped through the physical group "edge", P = 100 N at the
 /// centre): the quad mesh must reproduce the directly built model exactly, and both approach
 /// Timoshenko's clamped plate under a central load, w = 0.00560 P a²/D (Timoshenko &
-/// Woinowsky-Krieger 1959, Table 55; the MITC4 value under a point load converges from below,
-/// 16×16: see the printed error). Triangles are degenerate quads (stiffer).
+/// Woinowsky-Krieger 1959, Table 55; 16×16: quads +1.1 %, see the printed error). Triangles
+/// are degenerate quads (stiffer).
 #[test]
 fn gmsh_import_clamped_plate() {
     use flexfem::analysis;
@@ -370,8 +370,8 @@ fn shell_surface_stresses_in_pure_bending() {
 }
 
 /// Thin twisted beam (t = 0.0032, P = 1e-6; T. Belytschko, B. L. Wong, H. Stolarski, IJNME 28
-/// (1989) 385: 5.256e-3 in-plane, 1.294e-3 out-of-plane). 2×12: 5.2767e-3 (+0.39 %),
-/// 1.2986e-3 (+0.35 %); 4×24: 5.2396e-3 (−0.31 %), 1.2932e-3 (−0.06 %) — no locking at
+/// (1989) 385: 5.256e-3 in-plane, 1.294e-3 out-of-plane). 2×12: 5.2818e-3 (+0.49 %),
+/// 1.2996e-3 (+0.43 %); 4×24: 5.2599e-3 (+0.07 %), 1.2951e-3 (+0.09 %) — no locking at
 /// L/t = 3750.
 #[test]
 fn twisted_beam_thin() {

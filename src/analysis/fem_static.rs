@@ -69,7 +69,7 @@ pub fn solve(model: &Model) -> Result<(StaticResult, fem::StaticResults), Analys
         "linear statics, small displacements".to_string(),
         "beams: 2-node exact Timoshenko (Euler–Bernoulli where \"shear\": false); stresses at section critical points"
             .to_string(),
-        "shells: 4-node flat shell (membrane with drilling rotation, MITC4 bending/shear); von Mises at the element centre, max of top/mid/bottom"
+        "shells: 4-node flat shell (membrane with drilling rotation, MITC4 bending with stabilized shear); von Mises at the element centre, max of top/mid/bottom"
             .to_string(),
     ];
     Ok((

@@ -98,7 +98,7 @@ pub fn solve(model: &Model, modes: usize, shift_hz: Option<f64>) -> Result<(Moda
         })
         .collect();
     let notes = vec![
-        "consistent mass: beams (Hermite, with rotary inertia), shells (bilinear), point masses".to_string(),
+        "mass: beams consistent (Hermite, with rotary inertia), shells lumped (row sums of the bilinear ρt and ρt³/12 mass), point masses".to_string(),
         format!(
             "block shift-invert Lanczos on {} equations, shift {:.4e} (rad/s)², {} solves",
             r.n_eq, r.shift, r.lanczos_steps

@@ -1,4 +1,5 @@
-//! Consistent mass matrices: beams (translational + rotary inertia), shells, point masses.
+//! Mass matrices: beams (consistent, translational + rotary inertia), shells (lumped), point
+//! masses.
 //! Units: tonne, tonne·mm² (with mm, N, s: forces N = t·mm/s²).
 
 use super::error::FemError;
@@ -143,7 +144,7 @@ pub fn element_mass(model: &Model, ie: usize) -> Result<Option<ElementMatrix>, F
     }
 }
 
-/// Global consistent mass of shell element `ie` (24×24).
+/// Global (lumped) mass of shell element `ie` (24×24).
 pub fn shell_mass_matrix(model: &Model, ie: usize) -> Result<ShellMatrix, FemError> {
     let (s, x) = model.shell_checked(ie)?;
     let rho = s.material.density;

@@ -94,7 +94,7 @@ pub struct Spring {
 }
 
 /// Four-node flat shell (see [`super::shell`]): membrane with drilling rotation + MITC4
-/// bending/shear. Nodes in order around the element (the normal follows the right-hand rule).
+/// bending/shear (stabilized shear), lumped mass. Nodes in order around the element (the normal follows the right-hand rule).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Shell4 {
     pub nodes: [usize; 4],
