@@ -37,7 +37,8 @@ pub enum Case {
     Stage(stage::StageCase),
     /// FEM versus rigid-body forward kinematics.
     FemVsFkp(stage::FemVsFkpCase),
-    /// Table-1 sensitivities of the stage design.
+    /// Sensitivities of the stage design to its hinge parameters (the design guidelines of
+    /// Table 1 of Ruiz et al. (2019), 3-PRS compliant parallel stage).
     Sensitivity(design::SensitivityCase),
     /// Requirement-driven sizing of the stage hinges.
     Design(design::DesignCase),
@@ -166,6 +167,7 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
         "sensitivity" => Ok(Case::Sensitivity(from_value(value, "")?)),
         "design" => Ok(Case::Design(from_value(value, "")?)),
         "static" | "modal" => {
+            unknown_model_field(map, &analysis)?;
             let mesh_name = match map.remove("mesh") {
                 None | Some(Value::Null) => None,
                 Some(Value::String(s)) => Some(s),
@@ -324,6 +326,46 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
             format!("must be one of {}", ANALYSES.join(", ")),
         )),
     }
+}
+
+/// The top-level fields of a `static` or `modal` case (the model fields are those of
+/// [`mesh::MeshSpec`]).
+const MODEL_FIELDS: [&str; 7] = [
+    "materials",
+    "sections",
+    "nodes",
+    "elements",
+    "rigid_links",
+    "supports",
+    "load_cases",
+];
+
+/// Refuses a top-level field that a `static` or `modal` case does not take, listing all it does.
+fn unknown_model_field(map: &serde_json::Map<String, Value>, analysis: &str) -> Result<(), CaseError> {
+    let (own, other, other_fields): (&[&str], &str, &[&str]) = if analysis == "static" {
+        (&["analysis", "mesh", "gmsh", "nonlinear", "steps"], "modal", &["modes", "shift_hz"])
+    } else {
+        (&["analysis", "mesh", "gmsh", "modes", "shift_hz"], "static", &["nonlinear", "steps"])
+    };
+    let Some(key) = map
+        .keys()
+        .find(|k| !own.contains(&k.as_str()) && !MODEL_FIELDS.contains(&k.as_str()))
+    else {
+        return Ok(());
+    };
+    let expected: Vec<String> = own.iter().chain(MODEL_FIELDS.iter()).map(|f| format!("`{f}`")).collect();
+    let hint = if other_fields.contains(&key.as_str()) {
+        format!(" (`{key}` belongs to a `{other}` case)")
+    } else {
+        String::new()
+    };
+    Err(CaseError::new(
+        key.clone(),
+        format!(
+            "unknown field `{key}` in a `{analysis}` case{hint}, expected one of {}",
+            expected.join(", ")
+        ),
+    ))
 }
 
 /// A value shortened for messages.
