@@ -56,8 +56,9 @@ impl Rng {
 }
 
 fn fnv(s: &str) -> u64 {
-    s.bytes()
-        .fold(0xcbf2_9ce4_8422_2325u64, |h, b| (h ^ b as u64).wrapping_mul(0x0100_0000_01b3))
+    s.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+        (h ^ b as u64).wrapping_mul(0x0100_0000_01b3)
+    })
 }
 
 fn base_seed() -> u64 {
@@ -372,7 +373,14 @@ fn mutate(doc: &mut Value, rng: &mut Rng) -> String {
 fn short(v: &Value) -> String {
     let s = v.to_string();
     if s.len() > 80 {
-        format!("{}…", &s[..s.char_indices().take_while(|(i, _)| *i < 80).last().map_or(0, |(i, _)| i)])
+        format!(
+            "{}…",
+            &s[..s
+                .char_indices()
+                .take_while(|(i, _)| *i < 80)
+                .last()
+                .map_or(0, |(i, _)| i)]
+        )
     } else {
         s
     }
@@ -475,7 +483,9 @@ fn non_finite_in_json(v: &Value, key: &str, path: &str, out: &mut Vec<String>) {
 /// The case's strings that a report may echo (names) and that spell a non-finite word.
 fn strings(v: &Value, out: &mut Vec<String>) {
     match v {
-        Value::String(s) if is_non_finite_word(s) || s.split(|c: char| !c.is_ascii_alphanumeric()).any(is_non_finite_word) => {
+        Value::String(s)
+            if is_non_finite_word(s) || s.split(|c: char| !c.is_ascii_alphanumeric()).any(is_non_finite_word) =>
+        {
             out.push(s.clone())
         }
         Value::Array(a) => a.iter().for_each(|x| strings(x, out)),
@@ -522,7 +532,10 @@ struct Findings {
 impl Findings {
     fn add(&mut self, class: String, case: &Value, what: &str, detail: String) {
         let text = case.to_string();
-        let e = self.classes.entry(class).or_insert((0, text.clone(), what.to_string(), detail.clone()));
+        let e = self
+            .classes
+            .entry(class)
+            .or_insert((0, text.clone(), what.to_string(), detail.clone()));
         e.0 += 1;
         if text.len() < e.1.len() {
             *e = (e.0, text, what.to_string(), detail);
@@ -582,7 +595,12 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
             f.refused += 1;
             if !path_resolves(doc, &e.path) {
                 let m = format!("error path `{}` is not in the case: {}", e.path, e.message);
-                f.add(class_of("refusal without a JSON path", &analysis, &e.path), doc, what, m);
+                f.add(
+                    class_of("refusal without a JSON path", &analysis, &e.path),
+                    doc,
+                    what,
+                    m,
+                );
             }
             return;
         }
@@ -599,7 +617,12 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
                 f.refused += 1;
                 if !path_resolves(doc, &e.path) {
                     let m = format!("error path `{}` is not in the case: {}", e.path, e.message);
-                    f.add(class_of("refusal without a JSON path", &analysis, &e.path), doc, what, m);
+                    f.add(
+                        class_of("refusal without a JSON path", &analysis, &e.path),
+                        doc,
+                        what,
+                        m,
+                    );
                 }
             }
             Ok(Ok(sweep)) => {
@@ -613,7 +636,12 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
                         Err(e) => {
                             if !path_resolves(doc, &e.path) {
                                 let m = format!("error path `{}` is not in the case: {}", e.path, e.message);
-                                f.add(class_of("refusal without a JSON path", &analysis, &e.path), doc, what, m);
+                                f.add(
+                                    class_of("refusal without a JSON path", &analysis, &e.path),
+                                    doc,
+                                    what,
+                                    m,
+                                );
                             }
                         }
                     }
@@ -644,24 +672,44 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
             f.refused += 1;
             if checked.is_ok() {
                 let m = format!("check accepted it, run refused it at `{}`: {}", e.path, e.message);
-                f.add(class_of("check accepts what run refuses", &analysis, &e.path), doc, what, m);
+                f.add(
+                    class_of("check accepts what run refuses", &analysis, &e.path),
+                    doc,
+                    what,
+                    m,
+                );
             }
             if !path_resolves(doc, &e.path) {
                 let m = format!("error path `{}` is not in the case: {}", e.path, e.message);
-                f.add(class_of("refusal without a JSON path", &analysis, &e.path), doc, what, m);
+                f.add(
+                    class_of("refusal without a JSON path", &analysis, &e.path),
+                    doc,
+                    what,
+                    m,
+                );
             }
         }
         Err(RunError::Analysis(e)) => {
             f.failed += 1;
             if e.context.is_empty() || e.message.is_empty() {
-                f.add(class_of("analysis error without context", &analysis, ""), doc, what, e.to_string());
+                f.add(
+                    class_of("analysis error without context", &analysis, ""),
+                    doc,
+                    what,
+                    e.to_string(),
+                );
             }
         }
         Ok(o) => {
             f.ok += 1;
             if let Err(e) = &checked {
                 let m = format!("check refused it at `{}` ({}) but run succeeded", e.path, e.message);
-                f.add(class_of("check refuses what run accepts", &analysis, &e.path), doc, what, m);
+                f.add(
+                    class_of("check refuses what run accepts", &analysis, &e.path),
+                    doc,
+                    what,
+                    m,
+                );
             }
             // TODO(numeric-range helper): once `flexfem::analysis::to_checked_json` (typed result →
             // JSON, an error naming the quantity for any non-finite number) and the `warnings`
@@ -672,17 +720,36 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
             non_finite_in_json(&o.json, "", "result", &mut bad);
             if let Some(first) = bad.first() {
                 let key: String = first.split(" at ").nth(1).unwrap_or("").to_string();
-                let m = format!("{} non-finite: {}", bad.len(), bad.iter().take(4).cloned().collect::<Vec<_>>().join("; "));
-                f.add(class_of("non-finite number in result.json", &analysis, &key), doc, what, m);
+                let m = format!(
+                    "{} non-finite: {}",
+                    bad.len(),
+                    bad.iter().take(4).cloned().collect::<Vec<_>>().join("; ")
+                );
+                f.add(
+                    class_of("non-finite number in result.json", &analysis, &key),
+                    doc,
+                    what,
+                    m,
+                );
             }
             for (name, text) in [("report.md", &o.report.markdown), ("result.csv", &o.report.csv)] {
                 if let Some(w) = non_finite_in_text(text, doc) {
-                    f.add(class_of(&format!("non-finite number in {name}"), &analysis, ""), doc, what, w);
+                    f.add(
+                        class_of(&format!("non-finite number in {name}"), &analysis, ""),
+                        doc,
+                        what,
+                        w,
+                    );
                 }
             }
             for (name, bytes) in &o.files {
                 if let Some(w) = non_finite_in_text(&String::from_utf8_lossy(bytes), doc) {
-                    f.add(class_of(&format!("non-finite number in {name}"), &analysis, ""), doc, what, w);
+                    f.add(
+                        class_of(&format!("non-finite number in {name}"), &analysis, ""),
+                        doc,
+                        what,
+                        w,
+                    );
                 }
             }
         }
@@ -737,7 +804,10 @@ fn report(f: &Findings, label: &str) {
     let _ = std::fs::create_dir_all(&dir);
     let mut msg = format!("{label}: {} failure classes\n", f.classes.len());
     for (k, (class, (count, case, what, detail))) in f.classes.iter().enumerate() {
-        msg += &format!("\n[{k}] {class}  ({count}×)\n    mutation: {what}\n    found: {detail}\n    case: {}\n", short_case(case));
+        msg += &format!(
+            "\n[{k}] {class}  ({count}×)\n    mutation: {what}\n    found: {detail}\n    case: {}\n",
+            short_case(case)
+        );
         let _ = std::fs::write(dir.join(format!("{label}-{k}.json")), case);
     }
     panic!("{msg}");
@@ -745,7 +815,15 @@ fn report(f: &Findings, label: &str) {
 
 fn short_case(s: &str) -> String {
     if s.len() > 600 {
-        format!("{}… ({} bytes)", &s[..s.char_indices().take_while(|(i, _)| *i < 600).last().map_or(0, |(i, _)| i)], s.len())
+        format!(
+            "{}… ({} bytes)",
+            &s[..s
+                .char_indices()
+                .take_while(|(i, _)| *i < 600)
+                .last()
+                .map_or(0, |(i, _)| i)],
+            s.len()
+        )
     } else {
         s.to_string()
     }
@@ -783,7 +861,11 @@ fn scan_dir(dir: &Path, case: &Value, problems: &mut Vec<String>) {
                     let mut bad = Vec::new();
                     non_finite_in_json(&v, "", &name, &mut bad);
                     if !bad.is_empty() {
-                        problems.push(format!("{}: {}", name, bad.iter().take(3).cloned().collect::<Vec<_>>().join("; ")));
+                        problems.push(format!(
+                            "{}: {}",
+                            name,
+                            bad.iter().take(3).cloned().collect::<Vec<_>>().join("; ")
+                        ));
                     }
                 }
                 Err(e) => problems.push(format!("{name} is not JSON: {e}")),
@@ -835,7 +917,10 @@ fn fuzz_binary_exit_codes_and_files() {
                     continue;
                 }
                 std::fs::create_dir_all(&out_dir).unwrap();
-                cmd.arg("sweep").arg(&file).arg("--out").arg(out_dir.join("designs.jsonl"));
+                cmd.arg("sweep")
+                    .arg(&file)
+                    .arg("--out")
+                    .arg(out_dir.join("designs.jsonl"));
             } else {
                 cmd.arg("run").arg(&file).arg("--out").arg(&out_dir);
             }
@@ -861,7 +946,12 @@ fn fuzz_binary_exit_codes_and_files() {
                     }
                     if !problems.is_empty() {
                         let m = problems.join("; ");
-                        findings.add(class_of("non-finite number in --out files", &analysis, ""), &doc, &what, m);
+                        findings.add(
+                            class_of("non-finite number in --out files", &analysis, ""),
+                            &doc,
+                            &what,
+                            m,
+                        );
                     }
                 }
                 Some(1) => {
@@ -909,9 +999,15 @@ fn path_resolution_rules() {
     });
     assert!(path_resolves(&doc, "."));
     assert!(path_resolves(&doc, "stage.revolute.t"));
-    assert!(path_resolves(&doc, "stage.revolute.R"), "a missing last field is a path");
+    assert!(
+        path_resolves(&doc, "stage.revolute.R"),
+        "a missing last field is a path"
+    );
     assert!(path_resolves(&doc, "elements[0].nodes[1]"));
-    assert!(path_resolves(&doc, "elements[0].nodes[2]"), "one past the end: a missing element");
+    assert!(
+        path_resolves(&doc, "elements[0].nodes[2]"),
+        "one past the end: a missing element"
+    );
     assert!(path_resolves(&doc, "vary.hinge.t.steps"), "keys with dots");
     assert!(!path_resolves(&doc, "elements[3].section"), "no such element");
     assert!(!path_resolves(&doc, "stage.leg.w"), "no such object");
