@@ -790,7 +790,8 @@ fn fuzz_cases(select: impl Fn(usize) -> bool) -> Findings {
     }
     f.mutated = total;
     eprintln!(
-        "fuzz: {total} mutated cases: {} ran ({} ok, {} analysis errors), {} refused",
+        "fuzz: {total} mutated cases (+ sweep designs): {} passed parsing and were run ({} ok, {} analysis \
+         errors, the rest refused by validation); {} case-file refusals in all",
         f.runs, f.ok, f.failed, f.refused
     );
     f
