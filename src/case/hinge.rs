@@ -31,10 +31,10 @@ pub struct HingeCase {
 pub fn hinge_error(e: &HingeError, hinge_path: &str, material_path: &str) -> CaseError {
     match e {
         HingeError::InvalidGeometry { param, value, allowed } => {
-            CaseError::value(format!("{hinge_path}.{param}"), super::error::num(*value), allowed)
+            CaseError::value(format!("{hinge_path}.{param}"), value, allowed)
         }
         HingeError::InvalidMaterial { param, value, allowed } => {
-            CaseError::value(format!("{material_path}.{param}"), super::error::num(*value), allowed)
+            CaseError::value(format!("{material_path}.{param}"), value, allowed)
         }
     }
 }

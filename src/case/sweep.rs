@@ -38,17 +38,6 @@ pub struct SweepCase {
     pub vary: Map<String, Value>,
 }
 
-/// Schema of `base`: an object whose `analysis` is any but `sweep` (the rest is checked per
-/// design, since varied values may complete it).
-fn base_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
-    let names: Vec<&str> = super::ANALYSES.iter().copied().filter(|a| *a != "sweep").collect();
-    schemars::json_schema!({
-        "type": "object",
-        "required": ["analysis"],
-        "properties": {"analysis": {"type": "string", "enum": names}}
-    })
-}
-
 /// A sweep ready to enumerate.
 #[derive(Debug, Clone)]
 pub struct Sweep {
@@ -191,4 +180,15 @@ impl SweepCase {
         }
         Ok(sweep)
     }
+}
+
+/// Schema of `base`: an object whose `analysis` is any but `sweep` (the rest is checked per
+/// design, since varied values may complete it).
+fn base_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+    let names: Vec<&str> = super::ANALYSES.iter().copied().filter(|a| *a != "sweep").collect();
+    schemars::json_schema!({
+        "type": "object",
+        "required": ["analysis"],
+        "properties": {"analysis": {"type": "string", "enum": names}}
+    })
 }
