@@ -31,12 +31,18 @@ enum Command {
     Run {
         /// The case file.
         case: PathBuf,
-        /// Write result.json, report.md, result.csv and any plots/VTK files into DIR.
+        /// Write result.json, report.md, result.csv and any plots/VTK files into DIR. DIR must
+        /// be new, empty, or an earlier flexfem output folder (it holds result.json and
+        /// report.md); anything else is refused unless --force.
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
         /// What to print on stdout.
         #[arg(long, value_enum, default_value = "json")]
         format: Format,
+        /// Write into --out DIR even when it is not a flexfem output folder (files of the same
+        /// names are replaced). The case file itself is never overwritten.
+        #[arg(long)]
+        force: bool,
     },
     /// Validate a case file without solving.
     Check {
@@ -46,18 +52,36 @@ enum Command {
     /// Print the JSON Schema of case files.
     Schema,
     /// Batch runs: the full factorial of a `sweep` case, as JSON lines.
+    #[command(after_help = "Exit status: 0 when every design succeeded; 1 when any design failed \
+(the summary line on stderr gives the count, and each failed design is a line with an \"error\"), \
+or when the output could not be written or is locked by another sweep; 2 for a bad case file or \
+arguments, or an output path that would replace the case file or a file that is not flexfem's \
+own output.\n\n\
+Resume: with --out FILE, a re-run keeps the lines already in FILE (and FILE.partial) whose \
+design_hash still matches the design (base case with the varied values, and its mesh file), \
+reruns stale ones, and retries error rows unless --keep-errors. While it runs, FILE.lock \
+stops a second sweep (e.g. another shard) from writing the same FILE at the same time: run \
+shards one after another (their lines accumulate in FILE) or give each its own --out.")]
     Sweep {
         /// The sweep case file (`"analysis": "sweep"`).
         case: PathBuf,
         /// Run only the designs whose index ≡ K−1 (mod N).
         #[arg(long, value_name = "K/N")]
         shard: Option<String>,
-        /// Write the JSON lines to FILE (resumable) instead of stdout.
+        /// Write the JSON lines to FILE (resumable) instead of stdout. FILE must be new or
+        /// flexfem sweep output; anything else is refused unless --force.
         #[arg(long, value_name = "FILE.jsonl")]
         out: Option<PathBuf>,
         /// Also write a CSV table of parameters and scalar results.
         #[arg(long, value_name = "FILE.csv")]
         csv: Option<PathBuf>,
+        /// Replace --out/--csv files that are not flexfem's own output. The case file itself
+        /// is never overwritten.
+        #[arg(long)]
+        force: bool,
+        /// On resume, keep earlier error rows instead of running those designs again.
+        #[arg(long)]
+        keep_errors: bool,
     },
 }
 
@@ -78,6 +102,57 @@ fn fail(e: &RunError) -> ExitCode {
     })
 }
 
+/// The fixed file names `run --out DIR` writes (plus the analysis' own files).
+const RUN_FILES: [&str; 3] = ["result.json", "report.md", "result.csv"];
+
+/// True when `dir` is a flexfem output folder: it holds a `result.json` that is a JSON object
+/// and a `report.md`, as `run --out` writes them.
+fn is_flexfem_dir(dir: &Path) -> bool {
+    let result = std::fs::read(dir.join("result.json"))
+        .ok()
+        .and_then(|b| serde_json::from_slice::<serde_json::Value>(&b).ok());
+    matches!(result, Some(serde_json::Value::Object(_))) && dir.join("report.md").is_file()
+}
+
+/// Refuses `run --out DIR` when DIR is a file, or an existing, non-empty folder that is not
+/// flexfem output (unless `force`), or when an output would replace the case file.
+fn check_out_dir(dir: &Path, case: &Path, force: bool) -> Result<(), String> {
+    for name in RUN_FILES {
+        refuse_case_file(&dir.join(name), case)?;
+    }
+    match std::fs::metadata(dir) {
+        Err(_) => Ok(()),
+        Ok(m) if !m.is_dir() => Err(format!(
+            "--out {} exists and is not a folder; --out names a folder for result.json, report.md …",
+            dir.display()
+        )),
+        Ok(_) => {
+            let empty = std::fs::read_dir(dir).map(|mut d| d.next().is_none()).unwrap_or(false);
+            if empty || force || is_flexfem_dir(dir) {
+                Ok(())
+            } else {
+                Err(format!(
+                    "--out {} is a folder that is neither empty nor a flexfem output folder (one holding \
+                     result.json and report.md); flexfem will not write into it — choose another folder \
+                     or pass --force",
+                    dir.display()
+                ))
+            }
+        }
+    }
+}
+
+fn refuse_case_file(path: &Path, case: &Path) -> Result<(), String> {
+    if crate::output::same_file(path, case) {
+        Err(format!(
+            "{} is the case file; flexfem never overwrites it — choose another --out",
+            path.display()
+        ))
+    } else {
+        Ok(())
+    }
+}
+
 fn write_outputs(dir: &Path, outcome: &analysis::Outcome) -> std::io::Result<()> {
     std::fs::create_dir_all(dir)?;
     let json = crate::report::json::pretty(&outcome.json);
@@ -92,31 +167,75 @@ fn write_outputs(dir: &Path, outcome: &analysis::Outcome) -> std::io::Result<()>
     Ok(())
 }
 
-/// Writes `bytes` to `path` through a temporary file and a rename.
+/// Writes `bytes` to `path` atomically, through a safely created temporary file
+/// ([`crate::output::write_atomic`]).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let tmp = path.with_extension("tmp~");
-    std::fs::write(&tmp, bytes)?;
-    std::fs::rename(&tmp, path)
+    crate::output::write_atomic(path, bytes)
+}
+
+/// Prints `text` on stdout; a closed or full stdout is an error (exit 1), not a panic.
+fn emit(text: &str) -> ExitCode {
+    match crate::output::stdout_write(text) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(EXIT_FAILED)
+        }
+    }
 }
 
 /// Runs the command line; returns the process exit code.
 pub fn run(cli: Cli) -> ExitCode {
     match cli.command {
-        Command::Sweep { case, shard, out, csv } => {
-            crate::design::sweep::run_cli(crate::design::sweep::SweepArgs { case, shard, out, csv })
-        }
-        Command::Schema => {
-            println!("{}", serde_json::to_string_pretty(&case::schema()).unwrap_or_default());
-            ExitCode::SUCCESS
-        }
-        Command::Check { case } => match read_case(&case).and_then(|c| analysis::check(&c).map(|_| c)) {
-            Ok(c) => {
-                println!("ok: {} case {}", c.analysis(), case.display());
-                ExitCode::SUCCESS
+        Command::Sweep {
+            case,
+            shard,
+            out,
+            csv,
+            force,
+            keep_errors,
+        } => crate::design::sweep::run_cli(crate::design::sweep::SweepArgs {
+            case,
+            shard,
+            out,
+            csv,
+            force,
+            keep_errors,
+        }),
+        Command::Schema => emit(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&case::schema()).unwrap_or_default()
+        )),
+        Command::Check { case } => {
+            let checked = read_case(&case).and_then(|c| match &c {
+                case::Case::Sweep(s) => {
+                    let sweep = s.build()?;
+                    let n = crate::design::sweep::check(&sweep, case.parent())?;
+                    Ok(format!(
+                        "ok: sweep case {} ({} designs; base case and varied paths checked on {n} of them)\n",
+                        case.display(),
+                        sweep.len()
+                    ))
+                }
+                _ => analysis::check(&c).map(|_| format!("ok: {} case {}\n", c.analysis(), case.display())),
+            });
+            match checked {
+                Ok(msg) => emit(&msg),
+                Err(e) => fail(&RunError::Case(e)),
             }
-            Err(e) => fail(&RunError::Case(e)),
-        },
-        Command::Run { case, out, format } => {
+        }
+        Command::Run {
+            case,
+            out,
+            format,
+            force,
+        } => {
+            if let Some(dir) = &out {
+                if let Err(msg) = check_out_dir(dir, &case, force) {
+                    eprintln!("error: {msg}");
+                    return ExitCode::from(EXIT_BAD_CASE);
+                }
+            }
             let parsed = match read_case(&case) {
                 Ok(c) => c,
                 Err(e) => return fail(&RunError::Case(e)),
@@ -131,23 +250,29 @@ pub fn run(cli: Cli) -> ExitCode {
                 Err(e) => return fail(&e),
             };
             if let Some(dir) = &out {
+                for (name, _) in &outcome.files {
+                    if let Err(msg) = refuse_case_file(&dir.join(name), &case) {
+                        eprintln!("error: {msg}");
+                        return ExitCode::from(EXIT_BAD_CASE);
+                    }
+                }
                 if let Err(e) = write_outputs(dir, &outcome) {
                     eprintln!("error: cannot write outputs to {}: {e}", dir.display());
                     return ExitCode::from(EXIT_FAILED);
                 }
             }
             match format {
-                Format::Json if out.is_none() => {
-                    println!("{}", crate::report::json::pretty(&outcome.json))
+                Format::Json if out.is_none() => emit(&format!("{}\n", crate::report::json::pretty(&outcome.json))),
+                Format::Json => {
+                    eprintln!(
+                        "wrote {}",
+                        out.as_deref().unwrap_or(Path::new(".")).join("result.json").display()
+                    );
+                    ExitCode::SUCCESS
                 }
-                Format::Json => eprintln!(
-                    "wrote {}",
-                    out.as_deref().unwrap_or(Path::new(".")).join("result.json").display()
-                ),
-                Format::Md => print!("{}", outcome.report.markdown),
-                Format::Csv => print!("{}", outcome.report.csv),
+                Format::Md => emit(&outcome.report.markdown),
+                Format::Csv => emit(&outcome.report.csv),
             }
-            ExitCode::SUCCESS
         }
     }
 }

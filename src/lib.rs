@@ -11,5 +11,6 @@ pub mod fem;
 pub mod hinge;
 pub mod kinematics;
 pub mod material;
+pub mod output;
 pub mod report;
 pub mod stage;

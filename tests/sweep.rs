@@ -130,7 +130,8 @@ fn stdout_streaming_gives_valid_json_lines() {
     assert_eq!(idx, (0..55).collect());
     for v in &lines {
         let keys: Vec<&String> = v.as_object().unwrap().keys().collect();
-        assert_eq!(keys, ["index", "params", "result"]);
+        assert_eq!(keys, ["index", "params", "design_hash", "result"]);
+        assert_eq!(v["design_hash"].as_str().unwrap().len(), 32);
     }
     assert_eq!(std::fs::read_dir(&d).unwrap().count(), 0, "no files without --out");
     cleanup(&d);
@@ -228,14 +229,16 @@ const T_UP_TO_12: &str = r#"{"analysis": "sweep",
           "hinge": {"type": "circular_notch", "R": 8, "t": 2, "w": 10, "h": 10, "blank_length": 20}},
  "vary": {"hinge.t": {"from": 2, "to": 12, "steps": 6}, "hinge.R": [4, 8]}}"#;
 
-/// t ≥ h = 10 is an error row naming `hinge.t`; the other designs finish and exit is 0.
+/// t ≥ h = 10 is an error row naming `hinge.t`; the other designs finish, and the exit code
+/// is 1 with the count of failed designs on stderr.
 #[test]
 fn design_with_t_not_below_h_is_an_error_row_and_the_rest_finish() {
     let d = tempdir("errors");
     let case = write(&d, "sweep.json", T_UP_TO_12);
     let out = d.join("s.jsonl");
     let o = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
-    ok(&o);
+    assert_eq!(o.status.code(), Some(1), "stderr: {}", stderr(&o));
+    assert!(stderr(&o).contains("4 of 12 designs failed"), "{}", stderr(&o));
     // t = 2, 4, 6, 8, 10, 12 × R = 4, 8: the last two t values (4 designs) fail.
     assert_eq!(summary(&o), [12, 0, 12, 4]);
     let lines = parse_lines(&std::fs::read_to_string(&out).unwrap());
@@ -272,7 +275,8 @@ fn csv_has_a_header_and_one_row_per_design() {
     let case = write(&d, "sweep.json", T_UP_TO_12);
     let csv = d.join("s.csv");
     let o = sweep(&d, &[case.to_str().unwrap(), "--csv", csv.to_str().unwrap()]);
-    ok(&o);
+    // Four designs fail (t ≥ h): exit 1, the CSV is still written.
+    assert_eq!(o.status.code(), Some(1), "stderr: {}", stderr(&o));
     let jsonl = parse_lines(&stdout(&o));
     let text = std::fs::read_to_string(&csv).unwrap();
     let rows: Vec<&str> = text.lines().collect();

@@ -53,7 +53,8 @@ pub fn sensitivity_report(r: &SensitivityResult) -> Report {
         "T_{i+1}/T_i",
         "elasticities (η, d, T)",
     ]);
-    let mut csv = String::from("parameter,base,increased,stiffness_ratio,displacement_ratio,stress_ratio_ratio\n");
+    let mut csv =
+        String::from("parameter,base_mm,increased_mm,stiffness_ratio,displacement_ratio,stress_ratio_ratio\n");
     for row in &r.rows {
         t.row(vec![
             format!(
@@ -177,7 +178,9 @@ pub fn design_report(r: &DesignResult) -> Report {
     }
     md += &c.render();
     md += &format!("\n{} designs evaluated.\n", r.evaluations);
-    let mut csv = String::from("phase,t_rev,R_rev,t_sph,R_sph,l_sph,eta,z_at_allowable,T,max_violation\n");
+    let mut csv = String::from(
+        "phase,t_rev_mm,R_rev_mm,t_sph_mm,R_sph_mm,l_sph_mm,eta_N_per_mm,z_at_allowable_mm,T,max_violation\n",
+    );
     for h in &r.history {
         let p = h.params;
         csv += &format!(

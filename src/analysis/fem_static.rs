@@ -86,15 +86,19 @@ pub fn solve(model: &Model) -> Result<(StaticResult, fem::StaticResults), Analys
 }
 
 /// Geometrically nonlinear statics of every load case in `steps` load steps. Rotations in the
-/// output are the components of each node's rotation vector (degrees).
-pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<StaticResult, AnalysisError> {
+/// output are the components of each node's rotation vector (degrees). Also returns the final
+/// state of each load case in the linear result's shape (for the `.vtu` files).
+pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<(StaticResult, fem::StaticResults), AnalysisError> {
     let opts = fem::NonlinearOptions {
         steps,
         ..Default::default()
     };
     let res = fem::solve_nonlinear(model, &opts).map_err(|e| AnalysisError::new("model", e.to_string()))?;
-    let rows = res.load_cases.iter().map(|c| row(&c.fe)).collect();
-    Ok(StaticResult {
+    let raw = fem::StaticResults {
+        load_cases: res.load_cases.into_iter().map(|c| c.fe).collect(),
+    };
+    let rows = raw.load_cases.iter().map(row).collect();
+    let result = StaticResult {
         load_cases: rows,
         units: Units {
             displacements: "mm, mm, mm, deg, deg, deg (rotation vector)",
@@ -105,7 +109,8 @@ pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<StaticResult, Anal
             "beams and flexibility elements: co-rotational, local linear element (exact Timoshenko); rigid links exact under finite rotation; springs linear (small rotations)".to_string(),
             "stresses from the section forces in the deformed element frames".to_string(),
         ],
-    })
+    };
+    Ok((result, raw))
 }
 
 fn row(c: &fem::CaseResult) -> StaticCaseRow {
@@ -180,50 +185,34 @@ pub fn report(r: &StaticResult) -> Report {
     Report { markdown: md, csv }
 }
 
-/// A `.vtu` of one load case: deformed shape (true scale), lines (beams, hinges, two-node
-/// springs) and quads (shells), displacement and rotation point data, and von Mises per cell
-/// (max over element ends / shell surfaces; `cell_stress` overrides it for given elements, e.g.
-/// hinge peak stresses; 0 where none).
+/// A `.vtu` of one load case (see [`super::vtu`]): the undeformed model with displacement and
+/// rotation point data and von Mises per cell (the element's maximum over its ends / shell
+/// surfaces; `cell_stress` overrides it for given elements, e.g. hinge peak stresses; 0 where
+/// none).
 pub fn vtu(model: &Model, case: &fem::CaseResult, cell_stress: &[(usize, f64)]) -> Result<String, AnalysisError> {
-    let (lines, quads) = super::modal::cells(model);
-    // Cell order as `cells` lists them: line elements first, then quads.
-    let mut line_elems = Vec::new();
-    let mut quad_elems = Vec::new();
-    for (ie, e) in model.elements.iter().enumerate() {
-        match e {
-            fem::Element::Shell4(_) => quad_elems.push(ie),
-            fem::Element::Spring(s) if s.b.is_none() => {}
-            _ => line_elems.push(ie),
-        }
-    }
-    let vm: Vec<f64> = line_elems
-        .iter()
-        .chain(&quad_elems)
-        .map(|&ie| {
-            cell_stress
-                .iter()
-                .find(|(i, _)| *i == ie)
-                .map(|(_, v)| *v)
-                .or_else(|| case.elements.get(ie).and_then(|r| r.max_von_mises()))
-                .unwrap_or(0.0)
-        })
-        .collect();
-    let disp: Vec<[f64; 3]> = case.displacements.iter().map(|d| [d[0], d[1], d[2]]).collect();
-    let rot: Vec<[f64; 3]> = case.displacements.iter().map(|d| [d[3], d[4], d[5]]).collect();
-    let mesh = crate::report::vtk::VtuMesh {
-        points: &model.nodes,
-        lines: &lines,
-        quads: &quads,
-        displacement: &disp,
-        rotation: &rot,
-        cell_scalars: vec![("von_mises", &vm)],
-        deform_scale: 1.0,
-        ..Default::default()
-    };
-    crate::report::vtk::to_string(&mesh).map_err(|e| AnalysisError::new("vtu", e.to_string()))
+    super::vtu::static_vtu(
+        model,
+        &case.displacements,
+        &von_mises_of(case, cell_stress),
+        &Default::default(),
+    )
 }
 
-/// One `.vtu` per load case, named after the load case.
+/// Von Mises of element `ie` (MPa): `cell_stress` if it lists the element, else the element's
+/// own maximum, else 0.
+pub fn von_mises_of<'a>(case: &'a fem::CaseResult, cell_stress: &'a [(usize, f64)]) -> impl Fn(usize) -> f64 + 'a {
+    move |ie| {
+        cell_stress
+            .iter()
+            .find(|(i, _)| *i == ie)
+            .map(|(_, v)| *v)
+            .or_else(|| case.elements.get(ie).and_then(|r| r.max_von_mises()))
+            .unwrap_or(0.0)
+    }
+}
+
+/// One `.vtu` per load case, named after the load case (names are unique as file names: the
+/// case validation refuses duplicates).
 pub fn vtu_files(model: &Model, res: &fem::StaticResults) -> Result<super::Files, AnalysisError> {
     res.load_cases
         .iter()
@@ -233,19 +222,5 @@ pub fn vtu_files(model: &Model, res: &fem::StaticResults) -> Result<super::Files
 
 /// A file name made of the safe characters of `name`.
 pub fn file_stem(name: &str) -> String {
-    let s: String = name
-        .chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
-                c
-            } else {
-                '_'
-            }
-        })
-        .collect();
-    if s.is_empty() {
-        "case".into()
-    } else {
-        s
-    }
+    crate::report::vtk::file_stem(name)
 }

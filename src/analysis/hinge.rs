@@ -234,7 +234,7 @@ pub fn report(r: &HingeResult) -> Report {
         md += &format!("- {note}\n");
     }
     let csv = format!(
-        "k_bend,k_bend_off,k_torsion,k_axial,stress_per_moment,max_rotation_deg\n{},{},{},{},{},{}\n",
+        "k_bend_Nmm_per_rad,k_bend_off_Nmm_per_rad,k_torsion_Nmm_per_rad,k_axial_N_per_mm,stress_per_moment_MPa_per_Nmm,max_rotation_deg\n{},{},{},{},{},{}\n",
         h.k_bend, h.k_bend_off, h.k_torsion, h.k_axial, h.stress_per_moment, h.max_rotation_deg
     );
     Report { markdown: md, csv }

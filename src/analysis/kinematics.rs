@@ -189,7 +189,8 @@ pub fn report(r: &KinematicsResult) -> Report {
         "Geometry: a = {:.3} mm, home height z₀ = {:.3} mm, α₀ = {:.3}°, γ = {:.3}°.\n\n",
         g.a, g.z0, g.alpha0_deg, g.gamma_deg
     );
-    let mut csv = String::new();
+    // One header for the fkp and ikp rows (both give strokes and the full pose).
+    let mut csv = String::from("kind,s1_mm,s2_mm,s3_mm,z_mm,psi_deg,theta_deg,x_mm,y_mm,phi_deg\n");
     if !r.fkp.is_empty() {
         md += "## Forward kinematics\n\n";
         let mut t = Table::new(&[
@@ -203,7 +204,6 @@ pub fn report(r: &KinematicsResult) -> Report {
             "y (µm)",
             "φ (DMS)",
         ]);
-        csv += "kind,s1_mm,s2_mm,s3_mm,z_mm,psi_deg,theta_deg,x_mm,y_mm,phi_deg\n";
         for f in &r.fkp {
             let um = |v: f64| format!("{:.0}", v * 1000.0);
             t.row(vec![
@@ -238,9 +238,6 @@ pub fn report(r: &KinematicsResult) -> Report {
             "y (µm)",
             "φ (DMS)",
         ]);
-        if csv.is_empty() {
-            csv += "kind,z_mm,psi_deg,theta_deg,s1_mm,s2_mm,s3_mm,x_mm,y_mm,phi_deg\n";
-        }
         for q in &r.ikp {
             t.row(vec![
                 format!("{:.4}", q.z),
@@ -255,7 +252,7 @@ pub fn report(r: &KinematicsResult) -> Report {
             ]);
             csv += &format!(
                 "ikp,{},{},{},{},{},{},{},{},{}\n",
-                q.z, q.psi_deg, q.theta_deg, q.s[0], q.s[1], q.s[2], q.x, q.y, q.phi_deg
+                q.s[0], q.s[1], q.s[2], q.z, q.psi_deg, q.theta_deg, q.x, q.y, q.phi_deg
             );
         }
         md += &t.render();
@@ -278,6 +275,9 @@ pub fn report(r: &KinematicsResult) -> Report {
             t.row(vec![name.into(), format!("{:.3}", v[0]), format!("{:.3}", v[1])]);
         }
         md += &t.render();
+    }
+    if r.fkp.is_empty() && r.ikp.is_empty() {
+        csv.clear(); // workspace ranges only: no rows
     }
     Report { markdown: md, csv }
 }

@@ -2,12 +2,15 @@
 
 pub mod design;
 pub mod fem_static;
+pub mod finite;
 pub mod hinge;
 pub mod kinematics;
 pub mod modal;
 pub mod stage;
+pub mod vtu;
 
-use crate::case::{Case, CaseError};
+use crate::case::{Case, CaseError, MaterialSpec};
+use crate::material::Material;
 use std::fmt;
 
 /// A failed analysis (exit code 1): where it failed and why.
@@ -83,16 +86,141 @@ pub type Files = Vec<(String, Vec<u8>)>;
 /// A finished analysis: the JSON result plus its reports and extra files (name, contents).
 #[derive(Debug, Clone)]
 pub struct Outcome {
-    /// The JSON result (INTERFACE.md).
+    /// The JSON result (INTERFACE.md); its top-level `warnings` holds [`Outcome::warnings`].
     pub json: serde_json::Value,
+    /// Things the user must know about the result (e.g. a hinge outside the range its solid
+    /// calibration covers); also listed in the JSON (`warnings`) and the Markdown report.
+    pub warnings: Vec<String>,
     /// Markdown and CSV views.
     pub report: Report,
     /// Extra output files (e.g. `.vtu`, `.svg`), written by `--out`.
     pub files: Files,
 }
 
-fn to_json<T: serde::Serialize>(v: &T) -> Result<serde_json::Value, AnalysisError> {
+/// The JSON value of a result, refusing any non-finite number: serde_json would write NaN and
+/// ±∞ as `null` silently. The error's context is the JSON path of the first offending number
+/// (e.g. `load_cases[0].max_von_mises`). Every analysis result goes through it; batch drivers
+/// (sweeps) call it on each row.
+pub fn to_checked_json<T: serde::Serialize>(v: &T) -> Result<serde_json::Value, AnalysisError> {
+    finite::first_non_finite(v).map_err(|(path, msg)| {
+        AnalysisError::new(
+            if path.is_empty() || path == "." { "output".to_string() } else { path },
+            format!("the computed number is not finite ({msg}): the input is outside the range the model can represent (overflow) or the model is degenerate"),
+        )
+    })?;
     serde_json::to_value(v).map_err(|e| AnalysisError::new("output", e.to_string()))
+}
+
+fn to_json<T: serde::Serialize>(v: &T) -> Result<serde_json::Value, AnalysisError> {
+    to_checked_json(v)
+}
+
+/// The `## Warnings` section of the Markdown report (empty when there are none).
+pub fn warnings_markdown(warnings: &[String]) -> String {
+    if warnings.is_empty() {
+        return String::new();
+    }
+    let mut md = String::from("\n## Warnings\n\n");
+    for w in warnings {
+        md += &format!("- {w}\n");
+    }
+    md
+}
+
+/// Calibration-range warnings of a hinge, prefixed with where it sits in the case file.
+pub fn hinge_warnings(at: &str, spec: &crate::hinge::HingeSpec) -> Vec<String> {
+    match spec.profile() {
+        Ok(p) => crate::hinge::calibration::calibration_warnings(&p)
+            .into_iter()
+            .map(|w| format!("{at}: {w}"))
+            .collect(),
+        Err(_) => Vec::new(),
+    }
+}
+
+/// Calibration warnings of a stage design's two hinges.
+fn stage_warnings(d: &crate::stage::StageDesign) -> Vec<String> {
+    let mut w = hinge_warnings("stage.revolute", &d.revolute);
+    w.extend(hinge_warnings("stage.spherical", &d.spherical));
+    w
+}
+
+/// Largest element stretch in a geometrically nonlinear result above which it is reported: the
+/// co-rotational elements assume small strains (a linear-elastic element at 1 % strain is at
+/// the end of the elastic range of every structural metal).
+pub const SMALL_STRAIN: f64 = 0.01;
+
+/// Warnings for load cases in which a two-node element's chord stretches or shortens by more
+/// than [`SMALL_STRAIN`] (one per load case, naming the worst element).
+fn stretch_warnings(model: &crate::fem::Model, r: &fem_static::StaticResult) -> Vec<String> {
+    let mut out = Vec::new();
+    for (ic, c) in r.load_cases.iter().enumerate() {
+        let mut worst: Option<(usize, f64)> = None;
+        for (ie, e) in model.elements.iter().enumerate() {
+            let [a, b] = match e {
+                crate::fem::Element::Beam(b) => b.nodes,
+                crate::fem::Element::Flex(f) => f.nodes,
+                _ => continue,
+            };
+            let (Some(da), Some(db)) = (c.displacements.get(a), c.displacements.get(b)) else {
+                continue;
+            };
+            let (xa, xb) = (model.nodes[a], model.nodes[b]);
+            let l0 = (0..3).map(|k| (xb[k] - xa[k]).powi(2)).sum::<f64>().sqrt();
+            let l = (0..3)
+                .map(|k| ((xb[k] + db[k]) - (xa[k] + da[k])).powi(2))
+                .sum::<f64>()
+                .sqrt();
+            let strain = l / l0 - 1.0;
+            if strain.abs() > SMALL_STRAIN && worst.map_or(true, |(_, w)| strain.abs() > w.abs()) {
+                worst = Some((ie, strain));
+            }
+        }
+        if let Some((ie, strain)) = worst {
+            let pct = strain * 100.0;
+            let pct = if pct.abs() < 1e4 {
+                format!("{pct:+.2}")
+            } else {
+                format!("{pct:+.3e}")
+            };
+            out.push(format!(
+                "load_cases[{ic}] (\"{}\"): element {ie} changes length by {pct} %, beyond the small-strain assumption of the co-rotational elements (|strain| <= {} %): the displacements are those of a linear-elastic material at that strain",
+                c.name,
+                SMALL_STRAIN * 100.0
+            ));
+        }
+    }
+    out
+}
+
+/// Calibration warnings of the hinges of the design found by a `design` run.
+fn design_warnings(case: &crate::case::design::DesignCase, r: &design::DesignResult) -> Vec<String> {
+    use crate::design::stage_design::{with_params, PARAMETERS};
+    let Ok((base, _, _)) = case.validate() else {
+        return Vec::new();
+    };
+    let mut p = [0.0; 5];
+    for (v, k) in p.iter_mut().zip(PARAMETERS) {
+        match r.design.get(k).and_then(|v| v.as_f64()) {
+            Some(x) => *v = x,
+            None => return Vec::new(),
+        }
+    }
+    stage_warnings(&with_params(&base, &p))
+        .into_iter()
+        .map(|w| format!("design found, {w}"))
+        .collect()
+}
+
+/// Warnings that depend only on the case (hinge calibration ranges).
+fn case_warnings(case: &Case) -> Vec<String> {
+    match case {
+        Case::Hinge(h) => hinge_warnings("hinge", &h.hinge),
+        Case::Stage(s) => s.validate().map(|(d, _)| stage_warnings(&d)).unwrap_or_default(),
+        Case::FemVsFkp(s) => s.validate().map(|d| stage_warnings(&d)).unwrap_or_default(),
+        Case::Sensitivity(s) => s.validate().map(|d| stage_warnings(&d)).unwrap_or_default(),
+        _ => Vec::new(),
+    }
 }
 
 /// Validates a case (everything checked before solving).
@@ -106,7 +234,10 @@ pub fn check(case: &Case) -> Result<(), CaseError> {
         Case::FemVsFkp(s) => s.validate().map(|_| ()),
         Case::Sensitivity(s) => s.validate().map(|_| ()),
         Case::Design(s) => s.validate().map(|_| ()),
-        Case::Modal(m) => m.model.build_model(false).map(|_| ()),
+        Case::Modal(m) => {
+            crate::case::limits::check_modal(m.modes, m.model.nodes.len())?;
+            m.model.build_model(false).map(|_| ())
+        }
     }
 }
 
@@ -123,8 +254,107 @@ pub fn run_with_files(case: &Case) -> Result<Outcome, RunError> {
 }
 
 fn run_opts(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
+    let mut out = run_analysis(case, with_files)?;
+    out.warnings.extend(case_warnings(case));
+    let materials = case_materials(case);
+    if let serde_json::Value::Object(m) = &mut out.json {
+        match materials.as_slice() {
+            [(key, spec, mat)] if key.is_empty() => {
+                m.insert("material".into(), material_json(spec, mat));
+            }
+            [] => {}
+            all => {
+                let map = all.iter().map(|(k, spec, mat)| (k.clone(), material_json(spec, mat)));
+                m.insert("materials".into(), serde_json::Value::Object(map.collect()));
+            }
+        }
+        m.insert("warnings".into(), serde_json::Value::from(out.warnings.clone()));
+    }
+    out.report.markdown += &materials_markdown(&materials);
+    out.report.markdown += &warnings_markdown(&out.warnings);
+    Ok(out)
+}
+
+/// The materials a case uses, resolved: `("", spec, material)` for the one material of a
+/// hinge/stage/design case, `(name, spec, material)` per named material of a mesh case.
+fn case_materials(case: &Case) -> Vec<(String, MaterialSpec, Material)> {
+    let one = |spec: &MaterialSpec| {
+        spec.resolve("material")
+            .map(|m| vec![(String::new(), spec.clone(), m)])
+            .unwrap_or_default()
+    };
+    let named = |specs: &std::collections::BTreeMap<String, MaterialSpec>| {
+        specs
+            .iter()
+            .filter_map(|(k, spec)| spec.resolve(k).ok().map(|m| (k.clone(), spec.clone(), m)))
+            .collect()
+    };
+    match case {
+        Case::Hinge(h) => one(&h.material),
+        Case::Stage(s) => one(&s.material),
+        Case::FemVsFkp(s) => one(&s.material),
+        Case::Sensitivity(s) => one(&s.material),
+        Case::Design(s) => one(&s.material),
+        Case::Static(s) => named(&s.model.materials),
+        Case::Modal(m) => named(&m.model.materials),
+        Case::Kinematics(_) | Case::Sweep(_) => Vec::new(),
+    }
+}
+
+/// The material as used, echoed in the result: `{"name", "E" (MPa), "nu", "density" (t/mm³),
+/// "yield" (MPa), "allowable" (MPa)}`; `name` is the built-in name or `"custom"`; an unlimited
+/// yield or allowable stress is `null`.
+fn material_json(spec: &MaterialSpec, m: &Material) -> serde_json::Value {
+    let name = match spec {
+        MaterialSpec::Name(n) => n.as_str(),
+        MaterialSpec::Custom(_) => "custom",
+    };
+    serde_json::json!({
+        "name": name,
+        "E": m.e,
+        "nu": m.nu,
+        "density": m.density,
+        "yield": m.yield_strength.is_finite().then_some(m.yield_strength),
+        "allowable": m.allowable.is_finite().then_some(m.allowable),
+    })
+}
+
+/// One Markdown line per material used.
+fn materials_markdown(materials: &[(String, MaterialSpec, Material)]) -> String {
+    let mut s = String::new();
+    for (key, spec, m) in materials {
+        let name = match spec {
+            MaterialSpec::Name(n) => n.clone(),
+            MaterialSpec::Custom(_) => "custom".to_string(),
+        };
+        let strength = |v: f64| {
+            if v.is_finite() {
+                format!("{v} MPa")
+            } else {
+                "unlimited".into()
+            }
+        };
+        let label = if key.is_empty() {
+            String::new()
+        } else {
+            format!("`{key}` = ")
+        };
+        s += &format!(
+            "\nMaterial: {label}{name} (E {} MPa, ν {}, density {:e} t/mm³, yield {}, allowable {}).\n",
+            m.e,
+            m.nu,
+            m.density,
+            strength(m.yield_strength),
+            strength(m.allowable)
+        );
+    }
+    s
+}
+
+fn run_analysis(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
     let plain = |json, report| Outcome {
         json,
+        warnings: Vec::new(),
         report,
         files: vec![],
     };
@@ -136,28 +366,33 @@ fn run_opts(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
         }
         Case::Static(s) => {
             let model = s.model.build()?;
-            let mut files = Vec::new();
-            let r = match s.steps.filter(|_| s.nonlinear) {
+            let (r, raw) = match s.steps.filter(|_| s.nonlinear) {
                 Some(steps) => fem_static::solve_nonlinear(&model, steps)?,
-                None => {
-                    let (r, raw) = fem_static::solve(&model)?;
-                    if with_files {
-                        files = fem_static::vtu_files(&model, &raw)?;
-                    }
-                    r
-                }
+                None => fem_static::solve(&model)?,
+            };
+            let files = if with_files {
+                fem_static::vtu_files(&model, &raw)?
+            } else {
+                Vec::new()
             };
             Ok(Outcome {
                 json: to_json(&r)?,
+                warnings: if s.nonlinear {
+                    stretch_warnings(&model, &r)
+                } else {
+                    Vec::new()
+                },
                 report: fem_static::report(&r),
                 files,
             })
         }
         Case::Modal(m) => {
+            crate::case::limits::check_modal(m.modes, m.model.nodes.len())?;
             let model = m.model.build_model(false)?;
             let (r, raw) = modal::solve(&model, m.modes, m.shift_hz)?;
             Ok(Outcome {
                 json: to_json(&r)?,
+                warnings: Vec::new(),
                 report: modal::report(&r),
                 files: if with_files {
                     vec![("modes.vtu".to_string(), modal::vtu(&model, &raw)?)]
@@ -179,6 +414,7 @@ fn run_opts(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
             };
             Ok(Outcome {
                 json: to_json(&r)?,
+                warnings: Vec::new(),
                 report: stage::stage_report(&r),
                 files,
             })
@@ -188,6 +424,7 @@ fn run_opts(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
             let (report, files) = stage::fem_vs_fkp_report(&r);
             Ok(Outcome {
                 json: to_json(&r)?,
+                warnings: Vec::new(),
                 report,
                 files,
             })
@@ -198,7 +435,9 @@ fn run_opts(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
         }
         Case::Design(s) => {
             let r = design::run_design(s)?;
-            Ok(plain(to_json(&r)?, design::design_report(&r)))
+            let mut out = plain(to_json(&r)?, design::design_report(&r));
+            out.warnings = design_warnings(s, &r);
+            Ok(out)
         }
         Case::Hinge(h) => {
             let r = hinge::solve(h)?;

@@ -3,9 +3,8 @@
 
 use super::{AnalysisError, Report};
 use crate::fem::modal::{solve_modal, ModalOptions, ModalResults};
-use crate::fem::{Element, Model};
+use crate::fem::Model;
 use crate::report::markdown::Table;
-use crate::report::vtk::{self, VtuMesh};
 use serde::Serialize;
 
 /// Effective mass fractions per global direction.
@@ -41,7 +40,8 @@ pub struct ModeRow {
     pub frequency_hz: f64,
     /// ω², (rad/s)².
     pub eigenvalue: f64,
-    /// Mass-normalised shape per node [ux, uy, uz (mm), rx, ry, rz (rad)] · √tonne, global axes.
+    /// Mass-normalised shape per node [ux, uy, uz (mm), rx, ry, rz (degrees)], global axes
+    /// (scaled so that φᵀMφ = 1 with the rotations in radians and M in tonne, mm).
     pub shape: Vec<[f64; 6]>,
     /// Effective mass fraction Γ²/(rᵀMr) per direction (rotations about global axes through the
     /// origin; relative to the mass on free DOFs).
@@ -79,7 +79,20 @@ pub fn solve(model: &Model, modes: usize, shift_hz: Option<f64>) -> Result<(Moda
                 mode: i + 1,
                 frequency_hz: m.frequency_hz,
                 eigenvalue: m.eigenvalue,
-                shape: m.shape.clone(),
+                shape: m
+                    .shape
+                    .iter()
+                    .map(|d| {
+                        [
+                            d[0],
+                            d[1],
+                            d[2],
+                            d[3].to_degrees(),
+                            d[4].to_degrees(),
+                            d[5].to_degrees(),
+                        ]
+                    })
+                    .collect(),
                 effective_mass_fraction: m.effective_mass_fraction.into(),
             }
         })
@@ -102,55 +115,18 @@ pub fn solve(model: &Model, modes: usize, shift_hz: Option<f64>) -> Result<(Moda
     ))
 }
 
-/// Lines (beams, flexibility elements, two-node springs) and quads (shells) of a model.
-pub fn cells(model: &Model) -> (Vec<[usize; 2]>, Vec<[usize; 4]>) {
-    let mut lines = Vec::new();
-    let mut quads = Vec::new();
-    for e in &model.elements {
-        match e {
-            Element::Beam(b) => lines.push(b.nodes),
-            Element::Flex(f) => lines.push(f.nodes),
-            Element::Spring(s) => {
-                if let Some(b) = s.b {
-                    lines.push([s.a, b]);
-                }
-            }
-            Element::Shell4(s) => quads.push(s.nodes),
-        }
-    }
-    (lines, quads)
-}
-
-/// `modes.vtu`: the undeformed mesh with one point vector `mode_k` (translations of the
-/// mass-normalised shape) per mode.
+/// `modes.vtu`: the undeformed mesh with the translations (`mode_K_translation_mm`) and
+/// rotations (`mode_K_rotation_deg`) of each mass-normalised mode shape and the frequencies
+/// (field data `frequency_hz`); see [`super::vtu`].
 pub fn vtu(model: &Model, r: &ModalResults) -> Result<Vec<u8>, AnalysisError> {
-    let (lines, quads) = cells(model);
-    let shapes: Vec<(String, Vec<[f64; 3]>)> = r
-        .modes
-        .iter()
-        .enumerate()
-        .map(|(i, m)| {
-            (
-                format!("mode_{}", i + 1),
-                m.shape.iter().map(|s| [s[0], s[1], s[2]]).collect(),
-            )
-        })
-        .collect();
-    let mesh = VtuMesh {
-        points: &model.nodes,
-        lines: &lines,
-        quads: &quads,
-        point_vectors: shapes.iter().map(|(n, v)| (n.as_str(), v.as_slice())).collect(),
-        ..Default::default()
-    };
-    vtk::to_string(&mesh)
-        .map(String::into_bytes)
-        .map_err(|e| AnalysisError::new("output", e.to_string()))
+    let modes: Vec<(f64, &[[f64; 6]])> = r.modes.iter().map(|m| (m.frequency_hz, m.shape.as_slice())).collect();
+    super::vtu::modes_vtu(model, &modes, &Default::default())
 }
 
 /// Markdown/CSV views.
 pub fn report(r: &ModalResult) -> Report {
     let mut md = String::from("# Modal analysis\n\n");
+    // Effective mass fractions are dimensionless (fractions of the mass on free DOFs).
     let mut csv = String::from("mode,frequency_hz,mef_x,mef_y,mef_z,mef_rx,mef_ry,mef_rz\n");
     let mut t = Table::new(&["mode", "f (Hz)", "x", "y", "z", "rx", "ry", "rz"]);
     for m in &r.modes {

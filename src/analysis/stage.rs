@@ -62,23 +62,31 @@ pub struct StageRow {
     pub max_von_mises: f64,
     /// Peak stress per hinge, MPa.
     pub hinge_stress: HingeStress,
-    /// σ_sph,max / σ_rev,max.
-    #[serde(rename = "T")]
+    /// σ_sph,max / σ_rev,max (`null` when the case stresses no revolute hinge).
+    #[serde(rename = "T", serialize_with = "crate::report::numbers::ratio_or_null")]
     pub t: f64,
-    /// Load factor on this case that brings the peak stress to the allowable.
+    /// Load factor on this case that brings the peak stress to the allowable (`null`: the case
+    /// stresses nothing, or the material has no allowable).
+    #[serde(serialize_with = "crate::report::numbers::unbounded_as_null")]
     pub factor_at_allowable: f64,
 }
 
 /// What the stage reaches at the allowable stress under equal actuator forces (pure z).
 #[derive(Debug, Clone, Serialize)]
+///
+/// All four are `null` when the material has no allowable stress (unbounded).
 pub struct AtAllowable {
     /// Allowable stress used, MPa.
+    #[serde(serialize_with = "crate::report::numbers::unbounded_as_null")]
     pub allowable: f64,
     /// Actuator force each, N.
+    #[serde(serialize_with = "crate::report::numbers::unbounded_as_null")]
     pub force: f64,
     /// Stroke, mm (mean of the three).
+    #[serde(serialize_with = "crate::report::numbers::unbounded_as_null")]
     pub stroke: f64,
     /// Platform z, mm.
+    #[serde(serialize_with = "crate::report::numbers::unbounded_as_null")]
     pub z: f64,
 }
 
@@ -225,6 +233,7 @@ fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super:
         .compliance
         .ok_or_else(|| AnalysisError::new("stage", "no platform compliance"))?;
     let mut out_files = Vec::new();
+    let drawn = drawn_bodies(&s);
     if files {
         for c in &results {
             let mut cell = Vec::new();
@@ -232,7 +241,10 @@ fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super:
                 cell.push((leg.rev_element, c.revolute_stress[i]));
                 cell.push((leg.sph_element, c.spherical_stress[i]));
             }
-            let text = super::fem_static::vtu(&s.model, &c.fe, &cell)?;
+            // The nonlinear solve splits each hinge into co-rotational segments (nodes added
+            // after the model's own): the file shows the model's nodes, a hinge as one line.
+            let vm = super::fem_static::von_mises_of(&c.fe, &cell);
+            let text = super::vtu::static_vtu(&s.model, &c.fe.displacements, &vm, &drawn)?;
             out_files.push((
                 format!("stage_{}.vtu", super::fem_static::file_stem(&c.name)),
                 text.into_bytes(),
@@ -251,17 +263,64 @@ fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super:
         model,
         nonlinear: case.nonlinear,
         modes: match case.modes {
-            Some(n) => Some(stage_modes(case, &s, n)?),
+            Some(n) => {
+                let (rows, model, raw) = stage_modes_with_model(case, &s, n)?;
+                if files {
+                    let modes: Vec<(f64, &[[f64; 6]])> =
+                        raw.modes.iter().map(|m| (m.frequency_hz, m.shape.as_slice())).collect();
+                    out_files.push(("modes.vtu".to_string(), super::vtu::modes_vtu(&model, &modes, &drawn)?));
+                }
+                Some(rows)
+            }
             None => None,
         },
     };
     Ok((result, out_files))
 }
 
+/// Rigid bodies drawn in `.vtu` files: the platform as the triangle through the three neck tops
+/// (it also has the rigid-link lines from its centre) and each slider as a line from its node
+/// along −eᵢ, two leg heights long (the slider is a rigid body guided along eᵢ with its
+/// rotations fixed, so the whole line translates with its node).
+fn drawn_bodies(s: &StageModel) -> super::vtu::Drawn {
+    let tops = s.legs.map(|leg| leg.sph_top);
+    super::vtu::Drawn {
+        cells: vec![crate::report::vtk::Cell::Triangle(tops)],
+        lines: s
+            .legs
+            .iter()
+            .map(|leg| {
+                let x = nalgebra::Vector3::from(s.model.nodes[leg.slider]) - 2.0 * s.design.leg_h * leg.e;
+                super::vtu::BodyLine {
+                    node: leg.slider,
+                    point: [x[0], x[1], x[2]],
+                }
+            })
+            .collect(),
+    }
+}
+
 /// Modes of the stage with the actuators locked. Platform: point mass at P, a disc of radius
 /// b and thickness t (default 10 mm) unless `platform_mass` is given: m = ρπb²t,
 /// Ixx = Iyy = m(3b² + t²)/12, Izz = mb²/2 (platform normal = global z at home).
 pub fn stage_modes(case: &StageCase, s: &stage::StageModel, n: usize) -> Result<Vec<super::modal::ModeRow>, RunError> {
+    Ok(stage_modes_with_model(case, s, n)?.0)
+}
+
+/// [`stage_modes`] plus the model solved (sliders clamped, platform mass added) and the raw
+/// modal results (for the mode-shape `.vtu`).
+fn stage_modes_with_model(
+    case: &StageCase,
+    s: &stage::StageModel,
+    n: usize,
+) -> Result<
+    (
+        Vec<super::modal::ModeRow>,
+        crate::fem::Model,
+        crate::fem::modal::ModalResults,
+    ),
+    RunError,
+> {
     let mut model = s.model.clone();
     for leg in &s.legs {
         model.supports.push(crate::fem::Support::clamp(leg.slider));
@@ -276,8 +335,8 @@ pub fn stage_modes(case: &StageCase, s: &stage::StageModel, n: usize) -> Result<
         mass,
         inertia: [ixx, ixx, mass * b * b / 2.0],
     });
-    let (r, _) = super::modal::solve(&model, n, None)?;
-    Ok(r.modes)
+    let (r, raw) = super::modal::solve(&model, n, None)?;
+    Ok((r.modes, model, raw))
 }
 
 /// Markdown/CSV of a stage result.
@@ -302,7 +361,11 @@ pub fn stage_report(r: &StageResult) -> Report {
         "σ_max (MPa)",
         "T",
     ]);
-    let mut csv = String::from("name,F1,F2,F3,s1,s2,s3,x,y,z,psi_deg,theta_deg,phi_deg,max_von_mises,T\n");
+    // Platform translations in µm in the CSV as in the Markdown table; `kind` = load_case or
+    // mode (natural frequencies, when the case asks for `modes`).
+    let mut csv = String::from(
+        "kind,name,F1_N,F2_N,F3_N,s1_mm,s2_mm,s3_mm,x_um,y_um,z_um,psi_deg,theta_deg,phi_deg,max_von_mises_MPa,T,frequency_hz\n",
+    );
     let f3 = |v: [f64; 3], d: usize| format!("{:.d$}, {:.d$}, {:.d$}", v[0], v[1], v[2]);
     for c in &r.load_cases {
         let mx = |v: [f64; 3]| v.iter().cloned().fold(0.0, f64::max);
@@ -316,11 +379,11 @@ pub fn stage_report(r: &StageResult) -> Report {
             format!("{:.2}", mx(c.hinge_stress.revolute)),
             format!("{:.2}", mx(c.hinge_stress.spherical)),
             format!("{:.2}", c.max_von_mises),
-            format!("{:.3}", c.t),
+            finite_or_dash(c.t, |t| format!("{t:.3}")),
         ]);
         let p = &c.platform;
         csv += &format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+            "load_case,{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\n",
             c.name,
             c.forces[0],
             c.forces[1],
@@ -328,29 +391,52 @@ pub fn stage_report(r: &StageResult) -> Report {
             c.strokes[0],
             c.strokes[1],
             c.strokes[2],
-            p.x,
-            p.y,
-            p.z,
+            p.x * 1000.0,
+            p.y * 1000.0,
+            p.z * 1000.0,
             p.psi_deg,
             p.theta_deg,
             p.phi_deg,
             c.max_von_mises,
-            c.t
+            finite_or_dash(c.t, |t| t.to_string()).replace('—', "")
         );
     }
     md += &t.render();
+    let a = &r.at_allowable;
+    let reach = if [a.allowable, a.force, a.stroke, a.z].iter().all(|v| v.is_finite()) {
+        format!(
+            "At the allowable stress {} MPa under equal forces: F = {} N per actuator, stroke {} mm, Δz = {} mm.",
+            a.allowable,
+            sig(a.force, 5),
+            sig(a.stroke, 5),
+            sig(a.z, 5)
+        )
+    } else {
+        "No allowable stress bounds the stroke (the material has none, or equal forces stress no hinge).".to_string()
+    };
     md += &format!(
-        "\nStructural stiffness (total actuator force per mm of pure-z stroke): **{} N/mm**.\n\nAt the allowable stress {} MPa under equal forces: F = {} N per actuator, stroke {} mm, Δz = {} mm.\n\nPlatform stiffness at P (sliders held): translational eigenvalues {}…{} N/mm, rotational {}…{} N·mm/rad.\n\n## Model\n\n",
+        "\nStructural stiffness (total actuator force per mm of pure-z stroke): **{} N/mm**.\n\n{reach}\n\nPlatform stiffness at P (sliders held): translational eigenvalues {}…{} N/mm, rotational {}…{} N·mm/rad.\n",
         sig(r.stiffness_z, 5),
-        r.at_allowable.allowable,
-        sig(r.at_allowable.force, 5),
-        sig(r.at_allowable.stroke, 5),
-        sig(r.at_allowable.z, 5),
         sig(r.platform_stiffness.translational_eigen[0], 4),
         sig(r.platform_stiffness.translational_eigen[1], 4),
         sig(r.platform_stiffness.rotational_eigen[0], 4),
         sig(r.platform_stiffness.rotational_eigen[1], 4),
     );
+    if let Some(modes) = &r.modes {
+        md += "\n## Natural frequencies (actuators locked)\n\n";
+        let mut t = Table::new(&["mode", "f (Hz)", "x", "y", "z", "rx", "ry", "rz"]);
+        for m in modes {
+            let e = m.effective_mass_fraction;
+            let mut row = vec![m.mode.to_string(), format!("{:.2}", m.frequency_hz)];
+            row.extend([e.x, e.y, e.z, e.rx, e.ry, e.rz].iter().map(|v| format!("{v:.4}")));
+            t.row(row);
+            csv += &format!("mode,mode_{},,,,,,,,,,,,,,,{}\n", m.mode, m.frequency_hz);
+        }
+        md += "Effective mass fractions per direction after the frequency.\n\n";
+        md += &t.render();
+        md += "\nMode shapes: `modes.vtu` (with `--out`).\n";
+    }
+    md += "\n## Model\n\n";
     for n in &r.model {
         md += &format!("- {n}\n");
     }
@@ -471,7 +557,7 @@ pub fn fem_vs_fkp_report(r: &FemVsFkpResult) -> (Report, super::Files) {
         "|θ nl − FKP|",
     ]);
     let mut csv = String::from(
-        "s1,s2,s3,z_fem,z_fem_nl,z_fkp,psi_fem_deg,psi_fem_nl_deg,psi_fkp_deg,theta_fem_deg,theta_fem_nl_deg,theta_fkp_deg\n",
+        "s1_um,s2_um,s3_um,z_fem_um,z_fem_nl_um,z_fkp_um,psi_fem_deg,psi_fem_nl_deg,psi_fkp_deg,theta_fem_deg,theta_fem_nl_deg,theta_fkp_deg\n",
     );
     let um = |v: f64| format!("{:.0}", v * 1000.0);
     let opt = |v: Option<f64>, f: &dyn Fn(f64) -> String| v.map_or_else(|| "–".to_string(), f);
@@ -507,15 +593,17 @@ pub fn fem_vs_fkp_report(r: &FemVsFkpResult) -> (Report, super::Files) {
             dms(row.linear_minus_fkp.theta_deg.abs()),
             opt(nd.map(|p| p.theta_deg.abs()), &dms),
         ]);
+        // Strokes and Δz in µm, as in the Markdown tables.
         let num = |v: Option<f64>| v.map_or_else(String::new, |x| x.to_string());
+        let to_um = |v: f64| v * 1000.0;
         csv += &format!(
             "{},{},{},{},{},{},{},{},{},{},{},{}\n",
-            s[0],
-            s[1],
-            s[2],
-            row.fem_linear.z,
-            num(nl.map(|p| p.z)),
-            row.fkp.z,
+            to_um(s[0]),
+            to_um(s[1]),
+            to_um(s[2]),
+            to_um(row.fem_linear.z),
+            num(nl.map(|p| to_um(p.z))),
+            to_um(row.fkp.z),
             row.fem_linear.psi_deg,
             num(nl.map(|p| p.psi_deg)),
             row.fkp.psi_deg,
@@ -549,4 +637,13 @@ pub fn fem_vs_fkp_report(r: &FemVsFkpResult) -> (Report, super::Files) {
         Report { markdown: md, csv },
         vec![("fem_vs_fkp.svg".into(), plot.into_bytes())],
     )
+}
+
+/// `f(v)` for a finite `v`, "—" for an undefined or unbounded value (documented `null`s).
+fn finite_or_dash(v: f64, f: impl Fn(f64) -> String) -> String {
+    if v.is_finite() {
+        f(v)
+    } else {
+        "—".to_string()
+    }
 }

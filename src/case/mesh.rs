@@ -191,7 +191,8 @@ pub struct DisplacementSpec {
     pub node: usize,
     /// Which DOF.
     pub dof: DofName,
-    /// Value, mm or rad.
+    /// Value: mm for `ux`, `uy`, `uz`; degrees for `rx`, `ry`, `rz` (rotation about the global
+    /// axis, right-handed).
     pub value: f64,
 }
 
@@ -199,12 +200,14 @@ pub struct DisplacementSpec {
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LoadCaseSpec {
-    /// Name shown in results.
+    /// Name shown in results and used for the load case's output file (`NAME.vtu`); unique
+    /// within the case, also after characters other than letters, digits, `-` and `_` are
+    /// replaced by `_` for the file name.
     pub name: String,
     /// Nodal loads.
     #[serde(default)]
     pub forces: Vec<ForceSpec>,
-    /// Prescribed displacements.
+    /// Prescribed displacements (mm) and rotations (degrees).
     #[serde(default)]
     pub displacements: Vec<DisplacementSpec>,
 }
@@ -580,6 +583,7 @@ impl MeshSpec {
         if need_loads && self.load_cases.is_empty() {
             return Err(CaseError::new("load_cases", "at least one load case is needed"));
         }
+        unique_load_case_names(self.load_cases.iter().map(|c| c.name.as_str()))?;
         for (ic, c) in self.load_cases.iter().enumerate() {
             let p = format!("load_cases[{ic}]");
             let mut lc = fem::LoadCase::new(c.name.clone());
@@ -593,12 +597,42 @@ impl MeshSpec {
             for (i, d) in c.displacements.iter().enumerate() {
                 let node = node_ref(format!("{p}.displacements[{i}].node"), d.node)?;
                 check::finite(&format!("{p}.displacements[{i}].value"), d.value)?;
-                lc = lc.displacement(node, d.dof.dof(), d.value);
+                // Case files give rotations in degrees; the model works in radians.
+                let value = match d.dof {
+                    DofName::Rx | DofName::Ry | DofName::Rz => d.value.to_radians(),
+                    DofName::Ux | DofName::Uy | DofName::Uz => d.value,
+                };
+                lc = lc.displacement(node, d.dof.dof(), value);
             }
             model.load_cases.push(lc);
         }
         Ok(model)
     }
+}
+
+/// Refuses two load cases with the same name, or with names that give the same output file
+/// name (each load case writes `NAME.vtu`): the error names `load_cases[i].name` of the later.
+pub fn unique_load_case_names<'a>(names: impl Iterator<Item = &'a str>) -> Result<(), CaseError> {
+    let mut seen: BTreeMap<String, (usize, &str)> = BTreeMap::new();
+    for (i, name) in names.enumerate() {
+        let stem = crate::report::vtk::file_stem(name);
+        if let Some((j, first)) = seen.get(&stem) {
+            let why = if *first == name {
+                format!("load_cases[{j}] has the same name; load case names must be unique")
+            } else {
+                format!(
+                    "load_cases[{j}] (\"{first}\") gives the same output file name `{stem}.vtu`; load case names must differ in letters, digits, `-` or `_`"
+                )
+            };
+            return Err(CaseError::value(
+                format!("load_cases[{i}].name"),
+                format!("\"{name}\""),
+                why,
+            ));
+        }
+        seen.insert(stem, (i, name));
+    }
+    Ok(())
 }
 
 fn keys<V>(m: &BTreeMap<String, V>) -> String {

@@ -182,7 +182,9 @@ fn default_leg_elements() -> usize {
     {"required": ["actuator_strokes"], "properties": {"actuator_strokes": {"type": "array"}, "actuator_forces": {"type": "null"}}}
 ]))]
 pub struct StageLoadSpec {
-    /// Name shown in results.
+    /// Name shown in results and used for the load case's output file (`stage_NAME.vtu`);
+    /// unique within the case, also after characters other than letters, digits, `-` and `_`
+    /// are replaced by `_` for the file name.
     pub name: String,
     /// Actuator forces along the slider directions, N.
     #[serde(default)]
@@ -347,6 +349,7 @@ impl StageCase {
         if self.load_cases.is_empty() {
             return Err(CaseError::new("load_cases", "at least one load case is needed"));
         }
+        super::mesh::unique_load_case_names(self.load_cases.iter().map(|c| c.name.as_str()))?;
         let mut drives = Vec::with_capacity(self.load_cases.len());
         for (i, lc) in self.load_cases.iter().enumerate() {
             let p = format!("load_cases[{i}]");

@@ -38,6 +38,14 @@ pub struct SweepCase {
     pub vary: Map<String, Value>,
 }
 
+/// Most designs one sweep may have.
+pub const MAX_DESIGNS: usize = 100_000_000;
+
+/// The number of designs of axes with these numbers of values; `None` on overflow.
+pub fn design_count(sizes: impl IntoIterator<Item = usize>) -> Option<usize> {
+    sizes.into_iter().try_fold(1usize, usize::checked_mul)
+}
+
 /// A sweep ready to enumerate.
 #[derive(Debug, Clone)]
 pub struct Sweep {
@@ -48,9 +56,9 @@ pub struct Sweep {
 }
 
 impl Sweep {
-    /// Number of designs.
+    /// Number of designs (built sweeps hold at most [`MAX_DESIGNS`]; saturates otherwise).
     pub fn len(&self) -> usize {
-        self.axes.iter().map(|(_, v)| v.len()).product()
+        design_count(self.axes.iter().map(|(_, v)| v.len())).unwrap_or(usize::MAX)
     }
 
     /// True when there is no design.
@@ -137,13 +145,15 @@ impl SweepCase {
         if self.vary.is_empty() {
             return Err(CaseError::new("vary", "give at least one parameter to vary"));
         }
-        let mut axes = Vec::new();
+        // Parse every axis and count the designs before expanding any range, so a small file
+        // asking for an astronomical sweep is refused without allocating it.
+        let mut specs = Vec::with_capacity(self.vary.len());
         for (path, spec) in &self.vary {
             let p = format!("vary.{path}");
             let spec: VarySpec = super::from_value(spec.clone(), &p)?;
-            let vals = match spec {
+            match &spec {
                 VarySpec::List(v) if v.is_empty() => return Err(CaseError::new(p, "the list of values is empty")),
-                VarySpec::List(v) => v,
+                VarySpec::List(_) => {}
                 VarySpec::Range { from, to, steps } => {
                     if !(from.is_finite() && to.is_finite()) {
                         return Err(CaseError::value(
@@ -152,20 +162,49 @@ impl SweepCase {
                             "range ends must be finite",
                         ));
                     }
-                    if steps == 0 || steps > 1_000_000 {
+                    if *steps == 0 || *steps > 1_000_000 {
                         return Err(CaseError::value(format!("{p}.steps"), steps, "must be in 1..=1000000"));
                     }
-                    (0..steps)
-                        .map(|k| {
-                            let x = if steps == 1 {
-                                from
-                            } else {
-                                from + (to - from) * k as f64 / (steps - 1) as f64
-                            };
-                            Value::from(x)
-                        })
-                        .collect()
                 }
+            }
+            specs.push((path, p, spec));
+        }
+        let count = design_count(specs.iter().map(|(_, _, s)| match s {
+            VarySpec::List(v) => v.len(),
+            VarySpec::Range { steps, .. } => *steps,
+        }));
+        match count {
+            Some(n) if n <= MAX_DESIGNS => {}
+            _ => {
+                let sizes: Vec<String> = specs
+                    .iter()
+                    .map(|(_, _, s)| match s {
+                        VarySpec::List(v) => v.len().to_string(),
+                        VarySpec::Range { steps, .. } => steps.to_string(),
+                    })
+                    .collect();
+                let total = count.map_or_else(|| "more than 2^64".to_string(), |n| n.to_string());
+                return Err(CaseError::value(
+                    "vary",
+                    format!("{} = {total} designs", sizes.join(" × ")),
+                    "a sweep may have at most 100 000 000 designs",
+                ));
+            }
+        }
+        let mut axes = Vec::with_capacity(specs.len());
+        for (path, p, spec) in specs {
+            let vals = match spec {
+                VarySpec::List(v) => v,
+                VarySpec::Range { from, to, steps } => (0..steps)
+                    .map(|k| {
+                        let x = if steps == 1 {
+                            from
+                        } else {
+                            from + (to - from) * k as f64 / (steps - 1) as f64
+                        };
+                        Value::from(x)
+                    })
+                    .collect(),
             };
             let mut probe = self.base.clone();
             set_path(&mut probe, path, vals[0].clone()).map_err(|m| CaseError::new(p.clone(), m))?;
@@ -175,9 +214,6 @@ impl SweepCase {
             base: self.base.clone(),
             axes,
         };
-        if sweep.len() > 100_000_000 {
-            return Err(CaseError::value("vary", sweep.len(), "at most 100 000 000 designs"));
-        }
         Ok(sweep)
     }
 }

@@ -7,9 +7,9 @@ use super::shell::shell_mass;
 use super::transform::{t12, Mat12};
 use nalgebra::Matrix6;
 
-/// Local consistent mass of a prismatic two-node beam (cubic Hermite bending, linear axial and
-/// torsion; J. S. Przemieniecki, Theory of Matrix Structural Analysis, 1968, eqs. 11.18, 11.25),
-/// d = [u₁ v₁ w₁ θx₁ θy₁ θz₁ u₂ …]:
+/// Local consistent mass of a prismatic two-node Euler–Bernoulli beam (cubic Hermite bending,
+/// linear axial and torsion; J. S. Przemieniecki, Theory of Matrix Structural Analysis, 1968,
+/// eqs. 11.18, 11.25), d = [u₁ v₁ w₁ θx₁ θy₁ θz₁ u₂ …]:
 ///
 /// ```text
 /// axial     ρAL/6 [2 1; 1 2]                     torsion  ρ(Iy+Iz)L/6 [2 1; 1 2]
@@ -17,8 +17,33 @@ use nalgebra::Matrix6;
 ///         + ρIz/(30L) [36 3L −36 3L; 3L 4L² −3L −L²; −36 −3L 36 −3L; 3L −L² −3L 4L²]   (rotary)
 /// x–z plane the same with Iy and the signs of the L terms flipped (θy = −dw/dx)
 /// ```
-/// ρ in t/mm³, A in mm², I in mm⁴, L in mm.
+/// ρ in t/mm³, A in mm², I in mm⁴, L in mm. This is [`beam_local_mass_shear`] with Φ = 0.
 pub fn beam_local_mass(rho: f64, a: f64, iy: f64, iz: f64, l: f64) -> Mat12 {
+    beam_local_mass_shear(rho, a, iy, iz, l, 0.0, 0.0)
+}
+
+/// Local consistent mass of a prismatic two-node Timoshenko (shear-deformable) beam, from the
+/// interdependent interpolation that makes [`super::element::beam_local_stiffness`] exact
+/// (J. S. Przemieniecki, Theory of Matrix Structural Analysis, 1968, eq. 11.41; Z. Friedman,
+/// J. B. Kosmatka, "An improved two-node Timoshenko beam finite element", Computers & Structures
+/// 47 (1993) 473–481). Per bending plane, on (v₁, θz₁, v₂, θz₂), with Φ the plane's shear
+/// parameter (Φy = 12 E Iz/(G Asy L²) for x–y, Φz = 12 E Iy/(G Asz L²) for x–z):
+///
+/// ```text
+/// translation  ρAL/(420 (1+Φ)²) ·
+///   [ 156+294Φ+140Φ²        (22+38.5Φ+17.5Φ²)L    54+126Φ+70Φ²         −(13+31.5Φ+17.5Φ²)L ]
+///   [                       (4+7Φ+3.5Φ²)L²        (13+31.5Φ+17.5Φ²)L   −(3+7Φ+3.5Φ²)L²     ]
+///   [                                             156+294Φ+140Φ²       −(22+38.5Φ+17.5Φ²)L ]
+///   [ sym.                                                             (4+7Φ+3.5Φ²)L²      ]
+/// rotary       ρI/(30L (1+Φ)²) ·
+///   [ 36   (3−15Φ)L          −36    (3−15Φ)L        ]
+///   [      (4+5Φ+10Φ²)L²     (−3+15Φ)L   (−1−5Φ+5Φ²)L² ]
+///   [                        36     (−3+15Φ)L       ]
+///   [ sym.                          (4+5Φ+10Φ²)L²   ]
+/// ```
+/// x–z plane: the same on (w₁, θy₁, w₂, θy₂) with Iy, Φz and the signs of the L terms flipped.
+/// Axial and torsion as in [`beam_local_mass`]. Φ = 0 gives [`beam_local_mass`] bit for bit.
+pub fn beam_local_mass_shear(rho: f64, a: f64, iy: f64, iz: f64, l: f64, phi_y: f64, phi_z: f64) -> Mat12 {
     let mut m = Mat12::zeros();
     let ma = rho * a * l;
     let mt = rho * (iy + iz) * l;
@@ -29,21 +54,32 @@ pub fn beam_local_mass(rho: f64, a: f64, iy: f64, iz: f64, l: f64) -> Mat12 {
         m[(i, j)] = mt / 6.0 * v;
     }
     // One bending plane on (v-like dof dv, rotation dr); s = sign of the L terms.
-    let plane = |m: &mut Mat12, dv: usize, dr: usize, s: f64, inertia: f64| {
-        let c = ma / 420.0;
-        let r = rho * inertia / (30.0 * l);
+    let plane = |m: &mut Mat12, dv: usize, dr: usize, s: f64, inertia: f64, f: f64| {
+        let q = (1.0 + f) * (1.0 + f);
+        let c = ma / 420.0 / q;
+        let r = rho * inertia / (30.0 * l) / q;
+        let f2 = f * f;
         let idx = [dv, dr, 6 + dv, 6 + dr];
+        let t11 = 156.0 + 294.0 * f + 140.0 * f2;
+        let t12 = (22.0 + 38.5 * f + 17.5 * f2) * l * s;
+        let t13 = 54.0 + 126.0 * f + 70.0 * f2;
+        let t14 = (13.0 + 31.5 * f + 17.5 * f2) * l * s;
+        let t22 = (4.0 + 7.0 * f + 3.5 * f2) * l * l;
+        let t24 = (3.0 + 7.0 * f + 3.5 * f2) * l * l;
         let tr = [
-            [156.0, 22.0 * l * s, 54.0, -13.0 * l * s],
-            [22.0 * l * s, 4.0 * l * l, 13.0 * l * s, -3.0 * l * l],
-            [54.0, 13.0 * l * s, 156.0, -22.0 * l * s],
-            [-13.0 * l * s, -3.0 * l * l, -22.0 * l * s, 4.0 * l * l],
+            [t11, t12, t13, -t14],
+            [t12, t22, t14, -t24],
+            [t13, t14, t11, -t12],
+            [-t14, -t24, -t12, t22],
         ];
+        let r12 = (3.0 - 15.0 * f) * l * s;
+        let r22 = (4.0 + 5.0 * f + 10.0 * f2) * l * l;
+        let r24 = (-1.0 - 5.0 * f + 5.0 * f2) * l * l;
         let ro = [
-            [36.0, 3.0 * l * s, -36.0, 3.0 * l * s],
-            [3.0 * l * s, 4.0 * l * l, -3.0 * l * s, -l * l],
-            [-36.0, -3.0 * l * s, 36.0, -3.0 * l * s],
-            [3.0 * l * s, -l * l, -3.0 * l * s, 4.0 * l * l],
+            [36.0, r12, -36.0, r12],
+            [r12, r22, -r12, r24],
+            [-36.0, -r12, 36.0, -r12],
+            [r12, r24, -r12, r22],
         ];
         for i in 0..4 {
             for j in 0..4 {
@@ -51,8 +87,8 @@ pub fn beam_local_mass(rho: f64, a: f64, iy: f64, iz: f64, l: f64) -> Mat12 {
             }
         }
     };
-    plane(&mut m, 1, 5, 1.0, iz);
-    plane(&mut m, 2, 4, -1.0, iy);
+    plane(&mut m, 1, 5, 1.0, iz, phi_y);
+    plane(&mut m, 2, 4, -1.0, iy, phi_z);
     for i in 0..12 {
         for j in 0..i {
             // Only the upper entry of the axial/torsion pairs was written.
@@ -64,12 +100,13 @@ pub fn beam_local_mass(rho: f64, a: f64, iy: f64, iz: f64, l: f64) -> Mat12 {
     m
 }
 
-/// Global mass of a two-node element (beams; flexibility elements and springs are massless —
+/// Global mass of a two-node element (beams, with the shear-deformable mass when the beam has
+/// shear on; flexibility elements and springs are massless —
 /// model their mass with point masses). `None` for shells.
 pub fn element_mass(model: &Model, ie: usize) -> Result<Option<ElementMatrix>, FemError> {
     match model.elements.get(ie) {
         Some(Element::Beam(b)) => {
-            let (p, _, _) = model.beam_props(ie)?;
+            let (p, e, g) = model.beam_props(ie)?;
             let (lam, l) = model.element_frame(ie)?;
             let rho = b.material.density;
             if !(rho.is_finite() && rho >= 0.0) {
@@ -78,7 +115,12 @@ pub fn element_mass(model: &Model, ie: usize) -> Result<Option<ElementMatrix>, F
                     reason: format!("density must be finite and non-negative, got {rho}"),
                 });
             }
-            let m = beam_local_mass(rho, p.a, p.iy, p.iz, l);
+            // Same shear parameters as the stiffness (Φ = 0 without shear: Euler–Bernoulli).
+            let phi = |i: f64, a_s: Option<f64>| match (b.shear, a_s) {
+                (true, Some(a_s)) => 12.0 * e * i / (g * a_s * l * l),
+                _ => 0.0,
+            };
+            let m = beam_local_mass_shear(rho, p.a, p.iy, p.iz, l, phi(p.iz, p.asy), phi(p.iy, p.asz));
             let t = t12(&lam);
             Ok(Some(ElementMatrix {
                 nodes: b.nodes,

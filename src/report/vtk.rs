@@ -1,33 +1,62 @@
-//! VTK unstructured-grid output (`.vtu`, ASCII XML) for beam/shell models: points, line and
-//! quad cells, point vectors (displacement, rotation, mode shapes) and cell scalars (e.g. von
-//! Mises). Formatting only — it takes
-//! plain arrays and knows nothing about the physics.
+//! VTK unstructured-grid output (`.vtu`, ASCII XML) for beam/shell models: the undeformed
+//! points, line, triangle and quad cells, named point vectors (displacements, rotations, mode
+//! shapes), cell scalars (e.g. von Mises) and field scalars (e.g. natural frequencies).
+//! Formatting only — it takes plain arrays and knows nothing about the physics.
+//!
+//! Points are always the undeformed coordinates: ParaView's "Warp By Vector" filter adds a
+//! displacement array itself, so writing deformed points as well would double the deformation.
+//! Array names carry their unit (`displacement_mm`, `rotation_deg`, `von_mises_MPa`).
 
 use std::fmt::Write as _;
 use std::io::Write;
+
+/// One cell, by VTK type.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Cell {
+    /// `VTK_LINE` (3): two point indices.
+    Line([usize; 2]),
+    /// `VTK_TRIANGLE` (5): three point indices.
+    Triangle([usize; 3]),
+    /// `VTK_QUAD` (9): four point indices, listed around the quadrilateral.
+    Quad([usize; 4]),
+}
+
+impl Cell {
+    /// The point indices of the cell.
+    pub fn points(&self) -> &[usize] {
+        match self {
+            Cell::Line(p) => p,
+            Cell::Triangle(p) => p,
+            Cell::Quad(p) => p,
+        }
+    }
+
+    /// The VTK cell type number.
+    pub fn vtk_type(&self) -> u8 {
+        match self {
+            Cell::Line(_) => 3,
+            Cell::Triangle(_) => 5,
+            Cell::Quad(_) => 9,
+        }
+    }
+}
 
 /// Data for one `.vtu` file.
 #[derive(Debug, Clone, Default)]
 pub struct VtuMesh<'a> {
     /// Undeformed point coordinates, mm.
     pub points: &'a [[f64; 3]],
-    /// Line cells as pairs of point indices.
-    pub lines: &'a [[usize; 2]],
-    /// Quad cells (shells), four point indices; written after the lines.
-    pub quads: &'a [[usize; 4]],
-    /// Further named point vectors (e.g. mode shapes), one per point.
+    /// Cells, in the order the cell data lists them.
+    pub cells: &'a [Cell],
+    /// Named point vectors, one per point; the name carries the unit (`"displacement_mm"`).
     pub point_vectors: Vec<(&'a str, &'a [[f64; 3]])>,
-    /// Point displacements, mm (`"displacement"`; empty = none).
-    pub displacement: &'a [[f64; 3]],
-    /// Point rotations, rad (`"rotation"`; empty = none).
-    pub rotation: &'a [[f64; 3]],
-    /// Named cell scalars, one value per cell (lines, then quads) (e.g. `("von_mises", …)` in MPa).
+    /// Named cell scalars, one per cell (e.g. `("von_mises_MPa", …)`).
     pub cell_scalars: Vec<(&'a str, &'a [f64])>,
-    /// Point coordinates written: undeformed + `deform_scale`·displacement (0 = undeformed).
-    pub deform_scale: f64,
+    /// Named field scalars (any length), e.g. `("frequency_hz", …)` of the modes in the file.
+    pub field_scalars: Vec<(&'a str, &'a [f64])>,
 }
 
-/// Errors of the writer: inconsistent array lengths or I/O.
+/// Errors of the writer: inconsistent arrays or I/O.
 #[derive(Debug, thiserror::Error)]
 pub enum VtkError {
     #[error("vtu: {0}")]
@@ -47,102 +76,119 @@ fn vec3_array(out: &mut String, name: &str, v: &[[f64; 3]]) {
     out.push_str("        </DataArray>\n");
 }
 
+fn scalar_array(out: &mut String, name: &str, v: &[f64], tuples: bool) {
+    let n = if tuples {
+        format!(" NumberOfTuples=\"{}\"", v.len())
+    } else {
+        String::new()
+    };
+    let _ = writeln!(
+        out,
+        "        <DataArray type=\"Float64\" Name=\"{name}\"{n} format=\"ascii\">"
+    );
+    for x in v {
+        let _ = writeln!(out, "          {x:e}");
+    }
+    out.push_str("        </DataArray>\n");
+}
+
+fn check_name(name: &str, seen: &mut Vec<String>) -> Result<(), VtkError> {
+    if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
+        return Err(VtkError::Shape(format!(
+            "array name {name:?}: only ASCII letters, digits and `_` are written"
+        )));
+    }
+    if seen.iter().any(|s| s == name) {
+        return Err(VtkError::Shape(format!("array name {name} is used twice")));
+    }
+    seen.push(name.to_string());
+    Ok(())
+}
+
+fn check_finite<'a>(name: &str, values: impl Iterator<Item = &'a f64>) -> Result<(), VtkError> {
+    for (i, v) in values.enumerate() {
+        if !v.is_finite() {
+            return Err(VtkError::Shape(format!("{name}: value {i} is {v} (not finite)")));
+        }
+    }
+    Ok(())
+}
+
 /// Renders the `.vtu` XML.
 pub fn to_string(mesh: &VtuMesh) -> Result<String, VtkError> {
     let np = mesh.points.len();
-    let nc = mesh.lines.len() + mesh.quads.len();
-    let mut named: Vec<(&str, usize)> = vec![
-        ("displacement", mesh.displacement.len()),
-        ("rotation", mesh.rotation.len()),
-    ];
-    named.extend(mesh.point_vectors.iter().map(|(n, v)| (*n, v.len())));
-    for (name, len) in named {
-        if len != 0 && len != np {
-            return Err(VtkError::Shape(format!("{name} has {len} entries for {np} points")));
+    let nc = mesh.cells.len();
+    let mut seen = Vec::new();
+    check_finite("points", mesh.points.iter().flatten())?;
+    for (name, v) in &mesh.point_vectors {
+        check_name(name, &mut seen)?;
+        if v.len() != np {
+            return Err(VtkError::Shape(format!(
+                "{name} has {} entries for {np} points",
+                v.len()
+            )));
         }
-    }
-    if mesh.deform_scale != 0.0 && mesh.displacement.len() != np {
-        return Err(VtkError::Shape("deformed output needs displacements".into()));
+        check_finite(name, v.iter().flatten())?;
     }
     for (name, v) in &mesh.cell_scalars {
+        check_name(name, &mut seen)?;
         if v.len() != nc {
             return Err(VtkError::Shape(format!(
                 "cell data {name} has {} entries for {nc} cells",
                 v.len()
             )));
         }
+        check_finite(name, v.iter())?;
     }
-    if let Some(l) = mesh.lines.iter().find(|l| l[0] >= np || l[1] >= np) {
-        return Err(VtkError::Shape(format!(
-            "line {l:?} refers to a missing point ({np} points)"
-        )));
+    for (name, v) in &mesh.field_scalars {
+        check_name(name, &mut seen)?;
+        check_finite(name, v.iter())?;
     }
-    if let Some(q) = mesh.quads.iter().find(|q| q.iter().any(|&i| i >= np)) {
+    if let Some(c) = mesh.cells.iter().find(|c| c.points().iter().any(|&i| i >= np)) {
         return Err(VtkError::Shape(format!(
-            "quad {q:?} refers to a missing point ({np} points)"
+            "cell {c:?} refers to a missing point ({np} points)"
         )));
     }
     let mut out = String::new();
     out.push_str("<?xml version=\"1.0\"?>\n");
     out.push_str("<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n");
     out.push_str("  <UnstructuredGrid>\n");
+    if !mesh.field_scalars.is_empty() {
+        out.push_str("    <FieldData>\n");
+        for (name, v) in &mesh.field_scalars {
+            scalar_array(&mut out, name, v, true);
+        }
+        out.push_str("    </FieldData>\n");
+    }
     let _ = writeln!(out, "    <Piece NumberOfPoints=\"{np}\" NumberOfCells=\"{nc}\">");
     out.push_str("      <Points>\n");
-    let pts: Vec<[f64; 3]> = mesh
-        .points
-        .iter()
-        .enumerate()
-        .map(|(i, p)| {
-            if mesh.deform_scale != 0.0 {
-                let d = mesh.displacement[i];
-                std::array::from_fn(|k| p[k] + mesh.deform_scale * d[k])
-            } else {
-                *p
-            }
-        })
-        .collect();
-    vec3_array(&mut out, "Points", &pts);
+    vec3_array(&mut out, "Points", mesh.points);
     out.push_str("      </Points>\n      <Cells>\n");
     out.push_str("        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
-    for l in mesh.lines {
-        let _ = writeln!(out, "          {} {}", l[0], l[1]);
-    }
-    for q in mesh.quads {
-        let _ = writeln!(out, "          {} {} {} {}", q[0], q[1], q[2], q[3]);
+    for c in mesh.cells {
+        let ids: Vec<String> = c.points().iter().map(usize::to_string).collect();
+        let _ = writeln!(out, "          {}", ids.join(" "));
     }
     out.push_str("        </DataArray>\n");
     out.push_str("        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
-    let nl = mesh.lines.len();
-    for i in 0..nc {
-        let off = if i < nl { 2 * (i + 1) } else { 2 * nl + 4 * (i + 1 - nl) };
+    let mut off = 0;
+    for c in mesh.cells {
+        off += c.points().len();
         let _ = writeln!(out, "          {off}");
     }
     out.push_str("        </DataArray>\n");
     out.push_str("        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-    for i in 0..nc {
-        out.push_str(if i < nl { "          3\n" } else { "          9\n" }); // VTK_LINE, VTK_QUAD
+    for c in mesh.cells {
+        let _ = writeln!(out, "          {}", c.vtk_type());
     }
     out.push_str("        </DataArray>\n      </Cells>\n");
     out.push_str("      <PointData>\n");
-    if !mesh.displacement.is_empty() {
-        vec3_array(&mut out, "displacement", mesh.displacement);
-    }
-    if !mesh.rotation.is_empty() {
-        vec3_array(&mut out, "rotation", mesh.rotation);
-    }
     for (name, v) in &mesh.point_vectors {
         vec3_array(&mut out, name, v);
     }
     out.push_str("      </PointData>\n      <CellData>\n");
     for (name, v) in &mesh.cell_scalars {
-        let _ = writeln!(
-            out,
-            "        <DataArray type=\"Float64\" Name=\"{name}\" format=\"ascii\">"
-        );
-        for x in v.iter() {
-            let _ = writeln!(out, "          {x:e}");
-        }
-        out.push_str("        </DataArray>\n");
+        scalar_array(&mut out, name, v, false);
     }
     out.push_str("      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
     Ok(out)
@@ -154,52 +200,84 @@ pub fn write(w: &mut impl Write, mesh: &VtuMesh) -> Result<(), VtkError> {
     Ok(())
 }
 
+/// A file name made of the safe characters of `name` (others become `_`; empty → `case`).
+pub fn file_stem(name: &str) -> String {
+    let s: String = name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    if s.is_empty() {
+        "case".into()
+    } else {
+        s
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
-    fn two_lines_with_data() {
+    fn points_stay_undeformed_with_displacement_data() {
         let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [2.0, 0.0, 0.0]];
-        let lines = [[0, 1], [1, 2]];
+        let cells = [Cell::Line([0, 1]), Cell::Line([1, 2])];
         let disp = [[0.0; 3], [0.0, 0.0, 0.5], [0.0, 0.0, 1.0]];
         let vm = [10.0, 5.0];
         let mesh = VtuMesh {
             points: &pts,
-            lines: &lines,
-            quads: &[],
-            point_vectors: vec![],
-            displacement: &disp,
-            rotation: &[],
-            cell_scalars: vec![("von_mises", &vm)],
-            deform_scale: 2.0,
-        };
-        let s = to_string(&mesh).unwrap();
-        assert!(s.contains("NumberOfPoints=\"3\" NumberOfCells=\"2\""));
-        assert!(s.contains("2e0 0e0 2e0"), "deformed point: {s}");
-        assert!(s.contains("Name=\"von_mises\""));
-        let bad = VtuMesh {
-            cell_scalars: vec![("von_mises", &vm[..1])],
-            ..mesh
-        };
-        assert!(to_string(&bad).is_err());
-    }
-
-    #[test]
-    fn quads_after_lines() {
-        let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
-        let mode = [[0.0, 0.0, 1.0]; 4];
-        let mesh = VtuMesh {
-            points: &pts,
-            lines: &[[0, 1]],
-            quads: &[[0, 1, 2, 3]],
-            point_vectors: vec![("mode_1", &mode)],
+            cells: &cells,
+            point_vectors: vec![("displacement_mm", &disp)],
+            cell_scalars: vec![("von_mises_MPa", &vm)],
             ..Default::default()
         };
         let s = to_string(&mesh).unwrap();
-        assert!(s.contains("NumberOfCells=\"2\""));
-        assert!(s.contains("          6\n"), "offset of the quad: {s}");
-        assert!(s.contains("          9\n"));
-        assert!(s.contains("Name=\"mode_1\""));
+        assert!(s.contains("NumberOfPoints=\"3\" NumberOfCells=\"2\""));
+        assert!(s.contains("          2e0 0e0 0e0\n"), "undeformed point: {s}");
+        assert!(!s.contains("2e0 0e0 1e0"), "deformed point written: {s}");
+        assert!(s.contains("Name=\"von_mises_MPa\""));
+        let bad = VtuMesh {
+            cell_scalars: vec![("von_mises_MPa", &vm[..1])],
+            ..mesh.clone()
+        };
+        assert!(to_string(&bad).is_err());
+        let nan = [f64::NAN, 1.0];
+        let bad = VtuMesh {
+            cell_scalars: vec![("von_mises_MPa", &nan)],
+            ..mesh.clone()
+        };
+        assert!(to_string(&bad).unwrap_err().to_string().contains("von_mises_MPa"));
+        let twice = VtuMesh {
+            point_vectors: vec![("d", &disp), ("d", &disp)],
+            ..mesh
+        };
+        assert!(to_string(&twice).is_err());
+    }
+
+    #[test]
+    fn lines_triangles_quads_and_field_data() {
+        let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
+        let mode = [[0.0, 0.0, 1.0]; 4];
+        let f = [12.5];
+        let cells = [Cell::Line([0, 1]), Cell::Triangle([0, 1, 2]), Cell::Quad([0, 1, 2, 3])];
+        let mesh = VtuMesh {
+            points: &pts,
+            cells: &cells,
+            point_vectors: vec![("mode_1_translation_mm", &mode)],
+            field_scalars: vec![("frequency_hz", &f)],
+            ..Default::default()
+        };
+        let s = to_string(&mesh).unwrap();
+        assert!(s.contains("NumberOfCells=\"3\""));
+        // Offsets 2, 5, 9; types line, triangle, quad.
+        assert!(s.contains("          2\n          5\n          9\n"), "offsets: {s}");
+        assert!(s.contains("          3\n          5\n          9\n"), "types: {s}");
+        assert!(s.contains("Name=\"frequency_hz\" NumberOfTuples=\"1\""));
+        assert!(s.contains("Name=\"mode_1_translation_mm\""));
     }
 }

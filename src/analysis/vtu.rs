@@ -1,0 +1,200 @@
+//! `.vtu` files (ParaView) of FE models: static load cases and mode shapes.
+//!
+//! Points are the undeformed node coordinates; displacements go in as point data
+//! (`displacement_mm`, `rotation_deg`), so ParaView's "Warp By Vector" shows the deformed shape
+//! at any scale. Cells: one line per beam, flexure-hinge (flexibility) element and two-node
+//! spring, one triangle or quad per shell (a shell given as `[a, b, c, c]` is a triangle), and
+//! one line from the master to each slave of every rigid link. Cell data: `von_mises_MPa`,
+//! `element` (index in the model's element list; −1 for rigid links and drawn parts) and `part`
+//! ([`PART_BEAM`] …). Rigid bodies that are no elements (e.g. the stage's platform and sliders)
+//! may be drawn as extra cells ([`Drawn`]).
+
+use super::AnalysisError;
+use crate::fem::{Element, Model};
+use crate::report::vtk::{self, Cell, VtuMesh};
+
+/// `part` of a beam element.
+pub const PART_BEAM: f64 = 1.0;
+/// `part` of a flexure-hinge (flexibility) element.
+pub const PART_HINGE: f64 = 2.0;
+/// `part` of a two-node spring.
+pub const PART_SPRING: f64 = 3.0;
+/// `part` of a shell element.
+pub const PART_SHELL: f64 = 4.0;
+/// `part` of a rigid-link line (master → slave).
+pub const PART_RIGID: f64 = 5.0;
+/// `part` of a drawn rigid body that is no element of the model (e.g. a stage slider).
+pub const PART_BODY: f64 = 6.0;
+
+/// A line drawn from a model node to an extra point that belongs to the same rigid body and
+/// has no rotational freedom relative to the ground (it translates with the node: e.g. a slider
+/// guided along its rail with its rotations fixed).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BodyLine {
+    /// The node the body moves with.
+    pub node: usize,
+    /// The other end of the line, undeformed, mm.
+    pub point: [f64; 3],
+}
+
+/// Rigid bodies drawn in addition to the model's elements (`part` = [`PART_BODY`]).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Drawn {
+    /// Lines from a node to an extra point moving with it.
+    pub lines: Vec<BodyLine>,
+    /// Cells among the model's nodes (e.g. a rigid platform's face through its joint nodes).
+    pub cells: Vec<Cell>,
+}
+
+/// The cells of a model with their `element` and `part` cell data.
+#[derive(Debug, Clone, Default)]
+pub struct ModelCells {
+    /// Cells in element order, then the rigid-link lines.
+    pub cells: Vec<Cell>,
+    /// Element index of each cell (−1 for rigid-link lines).
+    pub element: Vec<f64>,
+    /// Part code of each cell.
+    pub part: Vec<f64>,
+}
+
+impl ModelCells {
+    fn push(&mut self, cell: Cell, element: f64, part: f64) {
+        self.cells.push(cell);
+        self.element.push(element);
+        self.part.push(part);
+    }
+}
+
+/// Cells of `model` (see the module docs); point masses and one-node springs have none.
+pub fn model_cells(model: &Model) -> ModelCells {
+    let mut c = ModelCells::default();
+    for (ie, e) in model.elements.iter().enumerate() {
+        let ie = ie as f64;
+        match e {
+            Element::Beam(b) => c.push(Cell::Line(b.nodes), ie, PART_BEAM),
+            Element::Flex(f) => c.push(Cell::Line(f.nodes), ie, PART_HINGE),
+            Element::Spring(s) => {
+                if let Some(b) = s.b {
+                    c.push(Cell::Line([s.a, b]), ie, PART_SPRING);
+                }
+            }
+            Element::Shell4(s) => {
+                let n = s.nodes;
+                let cell = if n[3] == n[2] {
+                    Cell::Triangle([n[0], n[1], n[2]])
+                } else {
+                    Cell::Quad(n)
+                };
+                c.push(cell, ie, PART_SHELL);
+            }
+        }
+    }
+    for r in &model.rigid_links {
+        for &s in &r.slaves {
+            c.push(Cell::Line([r.master, s]), -1.0, PART_RIGID);
+        }
+    }
+    c
+}
+
+/// Model cells plus the drawn bodies (extra points of body lines follow their nodes).
+fn cells_with_bodies(model: &Model, drawn: &Drawn) -> (Vec<[f64; 3]>, ModelCells) {
+    let mut points = model.nodes.clone();
+    let mut c = model_cells(model);
+    for cell in &drawn.cells {
+        c.push(*cell, -1.0, PART_BODY);
+    }
+    for b in &drawn.lines {
+        points.push(b.point);
+        c.push(Cell::Line([b.node, points.len() - 1]), -1.0, PART_BODY);
+    }
+    (points, c)
+}
+
+/// Translations (mm) and rotations (degrees) of the points of [`cells_with_bodies`] from nodal
+/// [ux, uy, uz, rx, ry, rz] (mm, rad); body points take their node's values.
+fn point_data(n_nodes: usize, u: &[[f64; 6]], bodies: &[BodyLine]) -> (Vec<[f64; 3]>, Vec<[f64; 3]>) {
+    let nodes = u[..n_nodes].iter().chain(bodies.iter().map(|b| &u[b.node]));
+    nodes
+        .map(|d| {
+            (
+                [d[0], d[1], d[2]],
+                [d[3].to_degrees(), d[4].to_degrees(), d[5].to_degrees()],
+            )
+        })
+        .unzip()
+}
+
+fn err(e: vtk::VtkError) -> AnalysisError {
+    AnalysisError::new("vtu", e.to_string())
+}
+
+/// One static load case: `u` holds at least one row per model node ([ux, uy, uz (mm), rx, ry,
+/// rz (rad)], global axes; rows beyond the model's nodes — e.g. nodes a nonlinear solve added
+/// inside hinges — are not drawn); `von_mises(element)` gives the cell stress, MPa.
+pub fn static_vtu(
+    model: &Model,
+    u: &[[f64; 6]],
+    von_mises: &dyn Fn(usize) -> f64,
+    drawn: &Drawn,
+) -> Result<String, AnalysisError> {
+    let n = model.nodes.len();
+    if u.len() < n {
+        return Err(AnalysisError::new(
+            "vtu",
+            format!("{} displacement rows for {n} nodes", u.len()),
+        ));
+    }
+    let (points, c) = cells_with_bodies(model, drawn);
+    let (disp, rot) = point_data(n, u, &drawn.lines);
+    let vm: Vec<f64> = c
+        .element
+        .iter()
+        .map(|&e| if e >= 0.0 { von_mises(e as usize) } else { 0.0 })
+        .collect();
+    vtk::to_string(&VtuMesh {
+        points: &points,
+        cells: &c.cells,
+        point_vectors: vec![("displacement_mm", &disp), ("rotation_deg", &rot)],
+        cell_scalars: vec![("von_mises_MPa", &vm), ("element", &c.element), ("part", &c.part)],
+        ..Default::default()
+    })
+    .map_err(err)
+}
+
+/// Mode shapes: per mode its frequency (Hz) and shape (one [ux, uy, uz, rx, ry, rz] row per
+/// node, mm and rad, global axes) → point vectors `mode_K_translation_mm` and
+/// `mode_K_rotation_deg` (K from 1) and the field array `frequency_hz`.
+pub fn modes_vtu(model: &Model, modes: &[(f64, &[[f64; 6]])], drawn: &Drawn) -> Result<Vec<u8>, AnalysisError> {
+    let n = model.nodes.len();
+    let (points, c) = cells_with_bodies(model, drawn);
+    let mut names = Vec::with_capacity(2 * modes.len());
+    let mut data = Vec::with_capacity(2 * modes.len());
+    for (k, (_, shape)) in modes.iter().enumerate() {
+        if shape.len() < n {
+            return Err(AnalysisError::new(
+                "vtu",
+                format!("mode {} has {} rows for {n} nodes", k + 1, shape.len()),
+            ));
+        }
+        let (t, r) = point_data(n, shape, &drawn.lines);
+        names.push(format!("mode_{}_translation_mm", k + 1));
+        names.push(format!("mode_{}_rotation_deg", k + 1));
+        data.push(t);
+        data.push(r);
+    }
+    let freq: Vec<f64> = modes.iter().map(|m| m.0).collect();
+    vtk::to_string(&VtuMesh {
+        points: &points,
+        cells: &c.cells,
+        point_vectors: names
+            .iter()
+            .map(String::as_str)
+            .zip(data.iter().map(Vec::as_slice))
+            .collect(),
+        cell_scalars: vec![("element", &c.element), ("part", &c.part)],
+        field_scalars: vec![("frequency_hz", &freq)],
+    })
+    .map(String::into_bytes)
+    .map_err(err)
+}
