@@ -10,7 +10,8 @@
 //!   everything run does before solving);
 //! * no non-finite number in any output: the JSON result (serde_json writes NaN and ±∞ as
 //!   `null`, so a `null` outside the fields that are optional by design is a non-finite number),
-//!   the Markdown and CSV reports and every output file (`NaN`, `inf` tokens).
+//!   the Markdown and CSV reports and every output file (`NaN`, `inf` tokens);
+//! * every result lists its `warnings` in the JSON and in the Markdown report.
 //!
 //! Mutations: delete, duplicate, rename or add fields; change a value's type; numbers set to 0,
 //! negative, huge (1e300, 1e154), tiny (1e-300, 5e-324), off by one, copied from another
@@ -446,9 +447,10 @@ fn path_resolves(doc: &Value, path: &str) -> bool {
     go(doc, &parts)
 }
 
-/// Fields whose `null` in a result means "not applicable" by design (an `Option`); any other
-/// `null` in a result is a NaN or an infinity that serde_json wrote as `null`.
-const OPTIONAL_RESULT_FIELDS: [&str; 10] = [
+/// Fields whose `null` in a result means "not applicable" or "unbounded" by design (an `Option`,
+/// or a documented `null` for an unlimited quantity); any other `null` in a result is a NaN or
+/// an infinity that serde_json wrote as `null`.
+const OPTIONAL_RESULT_FIELDS: [&str; 13] = [
     "max_von_mises",
     "element_von_mises",
     "rotation_at_allowable_deg",
@@ -459,11 +461,23 @@ const OPTIONAL_RESULT_FIELDS: [&str; 10] = [
     "fem_nonlinear",
     "nonlinear_minus_fkp",
     "message",
+    "max_rotation_deg",
+    "T",
+    "factor_at_allowable",
 ];
+
+/// Is a `null` at `path` (ending in `key`) one of the documented ones?
+fn null_allowed(path: &str, key: &str) -> bool {
+    OPTIONAL_RESULT_FIELDS.contains(&key)
+        // The stage's reach at the allowable stress: all null when the material has none.
+        || (path.ends_with(&format!("at_allowable.{key}")) && ["allowable", "force", "stroke", "z"].contains(&key))
+        // The material echo: unlimited strengths.
+        || ((path.contains(".material.") || path.contains(".materials.")) && ["yield", "allowable"].contains(&key))
+}
 
 fn non_finite_in_json(v: &Value, key: &str, path: &str, out: &mut Vec<String>) {
     match v {
-        Value::Null if !OPTIONAL_RESULT_FIELDS.contains(&key) => out.push(format!("null (NaN or ±∞) at {path}")),
+        Value::Null if !null_allowed(path, key) => out.push(format!("null (NaN or ±∞) at {path}")),
         Value::Number(n) if !n.as_f64().is_some_and(f64::is_finite) => out.push(format!("{n} at {path}")),
         Value::Array(a) => {
             for (i, x) in a.iter().enumerate() {
@@ -710,12 +724,30 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
                     m,
                 );
             }
-            // TODO(numeric-range helper): when `flexfem::analysis::to_checked_json` (typed result →
-            // JSON; an AnalysisError naming the quantity for any non-finite number) and
-            // `Outcome::warnings` are merged, also assert here that `o.json["warnings"]` is an
-            // array of strings equal to `o.warnings`, and that `o.warnings` is echoed in
-            // `o.report.markdown`. The null check below stays: it is what catches a result that
-            // did not go through `to_checked_json`.
+            // Results go through `analysis::to_checked_json` (a non-finite number is an
+            // AnalysisError naming the quantity); the null check below is what catches a result
+            // that did not. Every result carries its `warnings`, also in the Markdown report.
+            let listed: Option<Vec<String>> = o
+                .json
+                .get("warnings")
+                .and_then(|w| serde_json::from_value(w.clone()).ok());
+            if listed.as_ref() != Some(&o.warnings) {
+                let m = format!(
+                    "result.json warnings {:?} vs Outcome::warnings {:?}",
+                    o.json.get("warnings"),
+                    o.warnings
+                );
+                f.add(
+                    class_of("warnings missing from result.json", &analysis, ""),
+                    doc,
+                    what,
+                    m,
+                );
+            }
+            if let Some(w) = o.warnings.iter().find(|w| !o.report.markdown.contains(w.as_str())) {
+                let m = format!("warning not in report.md: {w}");
+                f.add(class_of("warning missing from report.md", &analysis, ""), doc, what, m);
+            }
             let mut bad = Vec::new();
             non_finite_in_json(&o.json, "", "result", &mut bad);
             if let Some(first) = bad.first() {
