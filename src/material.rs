@@ -6,20 +6,32 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Material {
-    /// Young's modulus E, MPa (N/mm²).
+    /// Young's modulus E, MPa (N/mm²), > 0.
     #[serde(rename = "E")]
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub e: f64,
     /// Poisson's ratio ν, dimensionless, in (−1, 0.5).
+    #[schemars(extend("exclusiveMinimum" = -1, "exclusiveMaximum" = 0.5))]
     pub nu: f64,
-    /// Density ρ, tonne/mm³ (Al 7075: 2.81e-9).
+    /// Density ρ, tonne/mm³ (Al 7075: 2.81e-9), ≥ 0 (default 0: massless).
     #[serde(default)]
+    #[schemars(range(min = 0))]
     pub density: f64,
-    /// Tensile yield strength, MPa.
+    /// Tensile yield strength, MPa, > 0 (default: none, unlimited).
     #[serde(default = "default_strength", rename = "yield")]
+    #[schemars(transform = no_default)]
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub yield_strength: f64,
-    /// Allowable (design) stress, MPa.
+    /// Allowable (design) stress, MPa, > 0 (default: none, unlimited).
     #[serde(default = "default_strength")]
+    #[schemars(transform = no_default)]
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub allowable: f64,
+}
+
+/// The default "unlimited" (infinity) has no JSON spelling: the schema states it in words.
+fn no_default(schema: &mut schemars::Schema) {
+    schema.remove("default");
 }
 
 fn default_strength() -> f64 {

@@ -1,4 +1,6 @@
-//! The `sensitivity` and `design` cases (seed 000 Table 1, Fig. 11).
+//! The `sensitivity` and `design` cases (the design guidelines of Table 1 and Fig. 11 of
+//! Ruiz et al. (2019), kinematic design and experimental validation of a 3-PRS compliant
+//! parallel stage).
 
 use super::error::{check, CaseError};
 use super::material::MaterialSpec;
@@ -15,15 +17,22 @@ pub struct SensitivityCase {
     #[serde(default)]
     pub material: MaterialSpec,
     /// The base design (circular-notch revolute, spherical-neck spherical hinges).
+    #[schemars(extend("properties" = {
+        "revolute": {"properties": {"type": {"const": "circular_notch"}}},
+        "spherical": {"properties": {"type": {"const": "spherical_neck"}}}
+    }))]
     pub stage: StageSpec,
-    /// Relative increase of each parameter (0.5 = +50 %).
+    /// Relative increase of each parameter, in (0, 2] (0.5 = +50 %; default 0.1).
     #[serde(default = "default_increment")]
+    #[schemars(extend("exclusiveMinimum" = 0, "maximum" = 2))]
     pub increment: f64,
-    /// Kinematic requirement box for the hinge rotation demand: z travel ±, mm (default 2).
+    /// Kinematic requirement box for the hinge rotation demand: z travel ±, mm, > 0 (default 2).
     #[serde(default = "default_z")]
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub z_travel: f64,
-    /// Tilt ±, degrees (default 0.2).
+    /// Tilt ±, degrees, in [0, 10] (default 0.2).
     #[serde(default = "default_tilt")]
+    #[schemars(range(min = 0, max = 10))]
     pub tilt_deg: f64,
 }
 
@@ -41,16 +50,20 @@ fn default_tilt() -> f64 {
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RequirementsSpec {
-    /// Platform z travel (±) to reach at the allowable stress, mm.
+    /// Platform z travel (±) to reach at the allowable stress, mm, > 0.
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub z_travel: f64,
-    /// Allowable stress, MPa (default: the material's).
+    /// Allowable stress, MPa, > 0 (default: the material's).
     #[serde(default)]
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub allowable: Option<f64>,
-    /// Range of T = σ_sph/σ_rev (default [0.8, 1.2]).
+    /// Range [min, max] of T = σ_sph/σ_rev, min > 0 (default [0.8, 1.2]).
     #[serde(rename = "T", default = "default_t")]
+    #[schemars(extend("prefixItems" = [{"type": "number", "exclusiveMinimum": 0}, {"type": "number"}]))]
     pub t: [f64; 2],
-    /// Platform tilt (±) the hinges must allow, degrees (default 0.2).
+    /// Platform tilt (±) the hinges must allow, degrees, in [0, 10] (default 0.2).
     #[serde(default = "default_tilt")]
+    #[schemars(range(min = 0, max = 10))]
     pub tilt_deg: f64,
 }
 
@@ -58,21 +71,26 @@ fn default_t() -> [f64; 2] {
     [0.8, 1.2]
 }
 
-/// Bounds of the design parameters, mm: `[min, max]` each.
+/// Bounds of the design parameters, mm: `[min, max]` each, min > 0.
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct BoundsSpec {
     /// Revolute notch minimum thickness.
+    #[schemars(extend("prefixItems" = [{"type": "number", "exclusiveMinimum": 0}, {"type": "number"}]))]
     pub t_rev: [f64; 2],
     /// Revolute notch radius.
     #[serde(rename = "R_rev")]
+    #[schemars(extend("prefixItems" = [{"type": "number", "exclusiveMinimum": 0}, {"type": "number"}]))]
     pub r_rev: [f64; 2],
     /// Spherical neck diameter.
+    #[schemars(extend("prefixItems" = [{"type": "number", "exclusiveMinimum": 0}, {"type": "number"}]))]
     pub t_sph: [f64; 2],
     /// Spherical neck fillet radius.
     #[serde(rename = "R_sph")]
+    #[schemars(extend("prefixItems" = [{"type": "number", "exclusiveMinimum": 0}, {"type": "number"}]))]
     pub r_sph: [f64; 2],
     /// Spherical neck length.
+    #[schemars(extend("prefixItems" = [{"type": "number", "exclusiveMinimum": 0}, {"type": "number"}]))]
     pub l_sph: [f64; 2],
 }
 
@@ -83,14 +101,20 @@ pub struct DesignCase {
     /// Material (default Al7075).
     #[serde(default)]
     pub material: MaterialSpec,
-    /// The starting design (its geometry L, b, α₀, γ and leg are kept).
+    /// The starting design (its geometry L, b, α₀, γ and leg are kept; circular-notch revolute,
+    /// spherical-neck spherical hinges).
+    #[schemars(extend("properties" = {
+        "revolute": {"properties": {"type": {"const": "circular_notch"}}},
+        "spherical": {"properties": {"type": {"const": "spherical_neck"}}}
+    }))]
     pub stage: StageSpec,
     /// Requirements.
     pub requirements: RequirementsSpec,
     /// Parameter bounds.
     pub bounds: BoundsSpec,
-    /// Quasi-random designs sampled before the local search (default 256).
+    /// Quasi-random designs sampled before the local search, 1 … 100000 (default 256).
     #[serde(default = "default_samples")]
+    #[schemars(range(min = 1, max = 100000))]
     pub samples: usize,
 }
 
@@ -99,7 +123,14 @@ fn default_samples() -> usize {
 }
 
 fn check_loop_design(d: &StageDesign) -> Result<(), CaseError> {
-    stage_design::params_of(d).map_err(|m| CaseError::new("stage", m))?;
+    stage_design::params_of(d).map_err(|m| {
+        let field = if matches!(d.revolute, crate::hinge::HingeSpec::CircularNotch { .. }) {
+            "stage.spherical.type"
+        } else {
+            "stage.revolute.type"
+        };
+        CaseError::new(field, m)
+    })?;
     Ok(())
 }
 

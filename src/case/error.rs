@@ -50,16 +50,30 @@ impl fmt::Display for CaseError {
 
 impl std::error::Error for CaseError {}
 
+/// A number for messages: shortest round-trip form, in exponent form when very large or small
+/// (`1e-300`, not three hundred zeros).
+pub fn num(v: f64) -> String {
+    if v != 0.0 && v.is_finite() && !(1e-4..1e16).contains(&v.abs()) {
+        format!("{v:e}")
+    } else {
+        format!("{v}")
+    }
+}
+
 /// Validation helpers: each returns an error naming `path` when the check fails.
 pub mod check {
-    use super::CaseError;
+    use super::{num, CaseError};
 
     /// `v` finite and > 0.
     pub fn positive(path: &str, v: f64, unit: &str) -> Result<(), CaseError> {
         if v.is_finite() && v > 0.0 {
             Ok(())
         } else {
-            Err(CaseError::value(path, v, format!("must be a positive number ({unit})")))
+            Err(CaseError::value(
+                path,
+                num(v),
+                format!("must be a positive number ({unit})"),
+            ))
         }
     }
 
@@ -68,7 +82,11 @@ pub mod check {
         if v.is_finite() && v >= 0.0 {
             Ok(())
         } else {
-            Err(CaseError::value(path, v, format!("must be zero or positive ({unit})")))
+            Err(CaseError::value(
+                path,
+                num(v),
+                format!("must be zero or positive ({unit})"),
+            ))
         }
     }
 
@@ -77,7 +95,11 @@ pub mod check {
         if v.is_finite() && v >= lo && v <= hi {
             Ok(())
         } else {
-            Err(CaseError::value(path, v, format!("must lie in [{lo}, {hi}] {unit}")))
+            Err(CaseError::value(
+                path,
+                num(v),
+                format!("must lie in [{lo}, {hi}] {unit}"),
+            ))
         }
     }
 
@@ -86,7 +108,7 @@ pub mod check {
         if v.is_finite() {
             Ok(())
         } else {
-            Err(CaseError::value(path, v, "must be a finite number"))
+            Err(CaseError::value(path, num(v), "must be a finite number"))
         }
     }
 

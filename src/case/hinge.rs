@@ -9,18 +9,21 @@ use serde::Deserialize;
 /// `"analysis": "hinge"`.
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(extend("if" = super::stage::steps_given(), "then" = super::stage::nonlinear_true()))]
 pub struct HingeCase {
     /// Material (default Al7075).
     #[serde(default)]
     pub material: MaterialSpec,
-    /// The hinge, by `type` (SPEC §4): lengths in mm.
+    /// The hinge, by `type`: lengths in mm.
     pub hinge: HingeSpec,
     /// Also trace the large-rotation response (geometrically nonlinear FE of the hinge in its
     /// blank under a transverse end force) up to the allowable stress.
     #[serde(default)]
     pub nonlinear: bool,
-    /// Load steps per point of the nonlinear curve (default 20; only with `"nonlinear": true`).
+    /// Load steps per point of the nonlinear curve, 1 … 10000 (default 20; only with
+    /// `"nonlinear": true`).
     #[serde(default)]
+    #[schemars(range(min = 1, max = 10000))]
     pub steps: Option<usize>,
 }
 

@@ -7,21 +7,36 @@ use serde::Deserialize;
 /// 3-PRS geometry. Give either `alpha0_deg` or the base radius `a`.
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(extend("oneOf" = alpha0_or_a()))]
 pub struct MechanismSpec {
     /// Leg length L between the revolute and spherical joint centres, mm.
     #[serde(rename = "L")]
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub l: f64,
     /// Platform radius b (centre to spherical joints), mm.
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub b: f64,
-    /// Leg angle to the horizontal at home α₀, degrees (then a = b + L·cos α₀).
+    /// Leg angle to the horizontal at home α₀, degrees, in (0, 90) (then a = b + L·cos α₀).
     #[serde(default)]
+    #[schemars(extend("exclusiveMinimum" = 0, "exclusiveMaximum" = 90))]
     pub alpha0_deg: Option<f64>,
     /// Base radius a (O to the zero-stroke slider points), mm; alternative to `alpha0_deg`.
     #[serde(default)]
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub a: Option<f64>,
-    /// Actuator inclination γ, degrees (0 = horizontal radially inward, 90 = vertical).
+    /// Actuator inclination γ, degrees, in [−90, 90] (0 = horizontal radially inward, 90 =
+    /// vertical).
     #[serde(default)]
+    #[schemars(range(min = -90, max = 90))]
     pub gamma_deg: f64,
+}
+
+/// Schema of "exactly one of `alpha0_deg` and `a` is a number".
+pub(crate) fn alpha0_or_a() -> serde_json::Value {
+    serde_json::json!([
+        {"required": ["alpha0_deg"], "properties": {"alpha0_deg": {"type": "number"}, "a": {"type": "null"}}},
+        {"required": ["a"], "properties": {"a": {"type": "number"}, "alpha0_deg": {"type": "null"}}}
+    ])
 }
 
 impl MechanismSpec {
@@ -89,12 +104,15 @@ pub struct FkpQuery {
 pub struct WorkspaceSpec {
     /// z range [min, max] from home, mm.
     pub z: [f64; 2],
-    /// ψ range [min, max], degrees.
+    /// ψ range [min, max], degrees, each in [−89, 89].
+    #[schemars(extend("items" = {"type": "number", "minimum": -89, "maximum": 89}))]
     pub psi_deg: [f64; 2],
-    /// θ range [min, max], degrees.
+    /// θ range [min, max], degrees, each in [−89, 89].
+    #[schemars(extend("items" = {"type": "number", "minimum": -89, "maximum": 89}))]
     pub theta_deg: [f64; 2],
     /// Values per axis, ends included (2–201; default 9).
     #[serde(default = "default_steps")]
+    #[schemars(range(min = 2, max = 201))]
     pub steps: usize,
 }
 
@@ -131,14 +149,26 @@ impl WorkspaceSpec {
     }
 }
 
-/// `"analysis": "kinematics"`.
+/// `"analysis": "kinematics"`: at least one of `ikp`, `fkp`, `workspace`.
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(extend("anyOf" = [
+    {"required": ["ikp"], "properties": {"ikp": {"minItems": 1}}},
+    {"required": ["fkp"], "properties": {"fkp": {"minItems": 1}}},
+    {"required": ["workspace"], "properties": {"workspace": {"type": "object"}}}
+]))]
 pub struct KinematicsCase {
     /// The mechanism geometry.
     pub mechanism: MechanismSpec,
-    /// Inverse-kinematics queries.
+    /// Inverse-kinematics queries (ψ and θ in [−89, 89] degrees).
     #[serde(default)]
+    #[schemars(extend("items" = {"allOf": [
+        {"$ref": "#/$defs/PoseQuery"},
+        {"properties": {
+            "psi_deg": {"minimum": -89, "maximum": 89},
+            "theta_deg": {"minimum": -89, "maximum": 89}
+        }}
+    ]}))]
     pub ikp: Vec<PoseQuery>,
     /// Forward-kinematics queries.
     #[serde(default)]

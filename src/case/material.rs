@@ -4,14 +4,41 @@ use super::error::{check, CaseError};
 use crate::material::Material;
 use serde::{Deserialize, Deserializer};
 
-/// `"Al7075"` | `"nylon66"` | `"steel"` or `{"E", "nu", "density", "yield", "allowable"}`.
+/// A built-in material by name (`"Al7075"`, `"nylon66"`, `"steel"`; case-insensitive) or an
+/// object `{"E", "nu", "density", "yield", "allowable"}`.
 #[derive(Debug, Clone, PartialEq, schemars::JsonSchema)]
 #[serde(untagged)]
 pub enum MaterialSpec {
-    /// A built-in material name.
+    /// A built-in material name (case-insensitive): Al7075 (aluminium 7075-T6), nylon66, steel.
+    #[schemars(schema_with = "builtin_name_schema")]
     Name(String),
     /// Explicit properties (mm–N–MPa–tonne).
     Custom(Material),
+}
+
+/// The built-in names: an `enum` of their usual spelling (for editors) or any letter case.
+fn builtin_name_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+    let any_case: Vec<String> = Material::BUILTIN_NAMES
+        .iter()
+        .map(|n| {
+            n.chars()
+                .map(|c| {
+                    if c.is_ascii_alphabetic() {
+                        format!("[{}{}]", c.to_ascii_uppercase(), c.to_ascii_lowercase())
+                    } else {
+                        c.to_string()
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    schemars::json_schema!({
+        "type": "string",
+        "anyOf": [
+            {"enum": Material::BUILTIN_NAMES},
+            {"pattern": format!("^({})$", any_case.join("|"))}
+        ]
+    })
 }
 
 impl Default for MaterialSpec {

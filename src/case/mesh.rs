@@ -1,4 +1,4 @@
-//! The generic beam model (`static`, `modal`): inline or from `meshes/*.json` (INTERFACE.md).
+//! The generic beam model (`static`, `modal`): inline or from `meshes/*.json`.
 
 use super::error::{check, CaseError};
 use super::material::MaterialSpec;
@@ -12,47 +12,59 @@ use std::collections::BTreeMap;
 pub enum SectionSpec {
     /// Solid rectangle: `h` along local z, `w` along local y (Iy = w·h³/12), mm.
     Rect {
-        /// Width along local y, mm.
+        /// Width along local y, mm, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         w: f64,
-        /// Height along local z, mm.
+        /// Height along local z, mm, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         h: f64,
     },
     /// Solid circle of diameter `d`, mm.
     Circle {
-        /// Diameter, mm.
+        /// Diameter, mm, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         d: f64,
     },
     /// Circular tube: outer diameter `d`, wall thickness `t`, mm.
     Tube {
-        /// Outer diameter, mm.
+        /// Outer diameter, mm, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         d: f64,
-        /// Wall thickness, mm.
+        /// Wall thickness, mm, > 0 and < d/2.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         t: f64,
     },
     /// Explicit properties (mm², mm⁴); omitted shear areas mean no shear deformation.
     General {
-        /// Area, mm².
+        /// Area, mm², > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         #[serde(rename = "A")]
         a: f64,
-        /// Second moment about local y, mm⁴.
+        /// Second moment about local y, mm⁴, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         #[serde(rename = "Iy")]
         iy: f64,
-        /// Second moment about local z, mm⁴.
+        /// Second moment about local z, mm⁴, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         #[serde(rename = "Iz")]
         iz: f64,
-        /// Torsion constant, mm⁴.
+        /// Torsion constant, mm⁴, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         #[serde(rename = "J")]
         j: f64,
-        /// Shear area for local y, mm².
+        /// Shear area for local y, mm², > 0.
         #[serde(rename = "Asy", default)]
+        #[schemars(extend("exclusiveMinimum" = 0))]
         asy: Option<f64>,
-        /// Shear area for local z, mm².
+        /// Shear area for local z, mm², > 0.
         #[serde(rename = "Asz", default)]
+        #[schemars(extend("exclusiveMinimum" = 0))]
         asz: Option<f64>,
     },
     /// Shell of thickness `t`, mm (shell elements).
     Shell {
-        /// Thickness, mm.
+        /// Thickness, mm, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         t: f64,
     },
 }
@@ -110,18 +122,22 @@ pub enum ElementSpec {
     /// (N/mm, N·mm/rad).
     Spring {
         /// One node (to ground) or two.
+        #[schemars(length(min = 1, max = 2))]
         nodes: Vec<usize>,
-        /// [kx, ky, kz, krx, kry, krz].
+        /// [kx, ky, kz, krx, kry, krz], each ≥ 0.
+        #[schemars(extend("items" = {"type": "number", "minimum": 0}))]
         k: [f64; 6],
     },
     /// Point mass, tonne (rotary inertia tonne·mm² optional).
     Mass {
         /// Node index.
         node: usize,
-        /// Mass, tonne.
+        /// Mass, tonne, ≥ 0.
+        #[schemars(range(min = 0))]
         mass: f64,
-        /// Rotary inertia about x, y, z, tonne·mm².
+        /// Rotary inertia about x, y, z, tonne·mm², each ≥ 0.
         #[serde(default)]
+        #[schemars(extend("items" = {"type": "number", "minimum": 0}))]
         inertia: [f64; 3],
     },
     /// Rigid link: every slave moves with the master as a rigid body.
@@ -218,7 +234,7 @@ pub struct MeshSpec {
     /// Supports.
     #[serde(default)]
     pub supports: Vec<SupportSpec>,
-    /// Load cases.
+    /// Load cases (`static`: at least one, inline or in the mesh file; `modal` ignores them).
     #[serde(default)]
     pub load_cases: Vec<LoadCaseSpec>,
 }
@@ -227,15 +243,19 @@ pub struct MeshSpec {
 /// a model given as for `static` (supports optional: a free body gives six rigid-body modes
 /// first; load cases are ignored).
 #[derive(Debug, Clone, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+#[schemars(extend("allOf" = model_rules(false)))]
 pub struct ModalCase {
-    /// Mesh file, as for `static`.
+    /// Mesh file, as for `static`: a JSON mesh file or a Gmsh `.msh` file.
     pub mesh: Option<String>,
-    /// Physical-group mapping of a Gmsh `.msh` mesh.
+    /// Physical-group mapping of a Gmsh `.msh` mesh (only with a `.msh` mesh, which needs it).
     pub gmsh: Option<super::gmsh::GmshMapping>,
     /// Number of modes (the lowest), 1 … 1000.
+    #[schemars(range(min = 1, max = 1000))]
     pub modes: usize,
     /// Optional shift frequency f, Hz (σ = (2πf)²): the modes nearest above it are found instead of
-    /// the lowest. Default: 0 (a small negative shift for free bodies).
+    /// the lowest; ≥ 0. Default: 0 (a small negative shift for free bodies).
+    #[schemars(range(min = 0))]
     pub shift_hz: Option<f64>,
     /// The model.
     #[serde(flatten)]
@@ -254,11 +274,14 @@ pub struct RigidSpec {
 
 /// `"analysis": "static"`: a model inline or from a `mesh` file, plus load cases.
 #[derive(Debug, Clone, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+#[schemars(extend("allOf" = model_rules(true)))]
 pub struct StaticCase {
     /// Path of a JSON mesh file (relative to the case file's folder, then to the working folder)
     /// holding `materials`, `sections`, `nodes`, `elements`, `supports` and optionally `load_cases`.
     pub mesh: Option<String>,
-    /// Physical-group mapping of a Gmsh `.msh` mesh (see [`super::gmsh`]).
+    /// Physical-group mapping of a Gmsh `.msh` mesh (only with a `.msh` mesh, which needs it):
+    /// `{"groups": {"NAME": {"section", "material", "up"} or {"fix": [...]}}}`.
     pub gmsh: Option<super::gmsh::GmshMapping>,
     /// The inline model (or additions to the mesh: materials, sections, load cases).
     #[serde(flatten)]
@@ -266,10 +289,39 @@ pub struct StaticCase {
     /// Geometrically nonlinear statics (co-rotational beams, Newton–Raphson in load steps).
     #[serde(default)]
     pub nonlinear: bool,
-    /// Load steps of the nonlinear analysis (default 20; only with `"nonlinear": true`). After
-    /// parsing: the steps to use when nonlinear, `None` when linear.
+    /// Load steps of the nonlinear analysis, 1 … 10000 (default 20; only with
+    /// `"nonlinear": true`). After parsing: the steps to use when nonlinear, `None` when linear.
     #[serde(default)]
+    #[schemars(range(min = 1, max = 10000))]
     pub steps: Option<usize>,
+}
+
+/// Schema rules of a `static` (`need_loads`) or `modal` case that relate fields: the model is
+/// inline (at least one node; static: at least one load case) or comes from `mesh` (then no
+/// inline nodes, elements, supports or rigid links); a `.msh` mesh needs `gmsh` and `gmsh` needs
+/// a `.msh` mesh; `steps` only with `"nonlinear": true`.
+fn model_rules(need_loads: bool) -> serde_json::Value {
+    let mut inline = serde_json::json!({"required": ["nodes"], "properties": {"nodes": {"minItems": 1}}});
+    if need_loads {
+        inline = serde_json::json!({"allOf": [inline, {"required": ["load_cases"], "properties": {"load_cases": {"minItems": 1}}}]});
+    }
+    let empty = serde_json::json!({"maxItems": 0});
+    serde_json::json!([
+        {
+            "if": {"required": ["mesh"], "properties": {"mesh": {"type": "string"}}},
+            "then": {"properties": {"nodes": empty, "elements": empty, "supports": empty, "rigid_links": empty}},
+            "else": inline
+        },
+        {
+            "if": {"required": ["mesh"], "properties": {"mesh": {"type": "string", "pattern": "\\.msh$"}}},
+            "then": {"required": ["gmsh"], "properties": {"gmsh": {"type": "object"}}},
+            "else": {"properties": {"gmsh": {"type": "null"}}}
+        },
+        {
+            "if": super::stage::steps_given(),
+            "then": super::stage::nonlinear_true()
+        }
+    ])
 }
 
 impl MeshSpec {

@@ -38,7 +38,8 @@ pub enum Case {
     Stage(stage::StageCase),
     /// FEM versus rigid-body forward kinematics.
     FemVsFkp(stage::FemVsFkpCase),
-    /// Table-1 sensitivities of the stage design.
+    /// Sensitivities of the stage design to its hinge parameters (the design guidelines of
+    /// Table 1 of Ruiz et al. (2019), 3-PRS compliant parallel stage).
     Sensitivity(design::SensitivityCase),
     /// Requirement-driven sizing of the stage hinges.
     Design(design::DesignCase),
@@ -144,12 +145,16 @@ fn read_json(path_field: &str, name: &str, base: Option<&Path>) -> Result<Value,
 
 /// Parses a case already read as JSON.
 pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseError> {
-    let Value::Object(map) = &mut value else {
+    if !value.is_object() {
         return Err(CaseError::value(
             ".",
             short(&value),
             "a case file must be a JSON object",
         ));
+    }
+    refuse_positional(&value)?;
+    let Value::Object(map) = &mut value else {
+        unreachable!("checked above");
     };
     let analysis = match map.remove("analysis") {
         Some(Value::String(s)) => s,
@@ -176,6 +181,7 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
         "sensitivity" => Ok(Case::Sensitivity(from_value(value, "")?)),
         "design" => Ok(Case::Design(from_value(value, "")?)),
         "static" | "modal" => {
+            unknown_model_field(map, &analysis)?;
             let mesh_name = match map.remove("mesh") {
                 None | Some(Value::Null) => None,
                 Some(Value::String(s)) => Some(s),
@@ -337,6 +343,183 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
             format!("must be one of {}", ANALYSES.join(", ")),
         )),
     }
+}
+
+/// The top-level fields of a `static` or `modal` case (the model fields are those of
+/// [`mesh::MeshSpec`]).
+const MODEL_FIELDS: [&str; 7] = [
+    "materials",
+    "sections",
+    "nodes",
+    "elements",
+    "rigid_links",
+    "supports",
+    "load_cases",
+];
+
+/// Refuses a top-level field that a `static` or `modal` case does not take, listing all it does.
+fn unknown_model_field(map: &serde_json::Map<String, Value>, analysis: &str) -> Result<(), CaseError> {
+    let (own, other, other_fields): (&[&str], &str, &[&str]) = if analysis == "static" {
+        (
+            &["analysis", "mesh", "gmsh", "nonlinear", "steps"],
+            "modal",
+            &["modes", "shift_hz"],
+        )
+    } else {
+        (
+            &["analysis", "mesh", "gmsh", "modes", "shift_hz"],
+            "static",
+            &["nonlinear", "steps"],
+        )
+    };
+    let Some(key) = map
+        .keys()
+        .find(|k| !own.contains(&k.as_str()) && !MODEL_FIELDS.contains(&k.as_str()))
+    else {
+        return Ok(());
+    };
+    let expected: Vec<String> = own
+        .iter()
+        .chain(MODEL_FIELDS.iter())
+        .map(|f| format!("`{f}`"))
+        .collect();
+    let hint = if other_fields.contains(&key.as_str()) {
+        format!(" (`{key}` belongs to a `{other}` case)")
+    } else {
+        String::new()
+    };
+    Err(CaseError::new(
+        key.clone(),
+        format!(
+            "unknown field `{key}` in a `{analysis}` case{hint}, expected one of {}",
+            expected.join(", ")
+        ),
+    ))
+}
+
+/// Refuses an array where the case schema allows only an object.
+///
+/// serde also reads a struct from the array of its field values in declaration order
+/// (`"leg": [10, 10]`, `"hinge": ["leaf", 5, 1, …]`). Case files do not take that form: the schema
+/// refuses it, and the errors about such a value would name fields (`hinge.t`) that the file
+/// does not have.
+fn refuse_positional(value: &Value) -> Result<(), CaseError> {
+    static SCHEMA: std::sync::OnceLock<Value> = std::sync::OnceLock::new();
+    let schema = SCHEMA.get_or_init(schema);
+    let defs = schema.get("$defs").and_then(Value::as_object);
+    let mut roots = Vec::new();
+    expand(schema, defs, &mut roots, 0);
+    positional(value, &roots, defs, String::new())
+}
+
+/// The schema nodes that `node` stands for: itself if it says something about types, and what
+/// its `$ref`, `anyOf`, `oneOf` and `allOf` lead to (`if`/`then`/`else` and `not` are skipped:
+/// they only add constraints).
+fn expand<'a>(
+    node: &'a Value,
+    defs: Option<&'a serde_json::Map<String, Value>>,
+    out: &mut Vec<&'a Value>,
+    depth: usize,
+) {
+    let Some(m) = node.as_object() else {
+        return;
+    };
+    if depth > 32 {
+        return;
+    }
+    let typed = [
+        "type",
+        "properties",
+        "additionalProperties",
+        "items",
+        "prefixItems",
+        "enum",
+        "const",
+    ];
+    if typed.iter().any(|k| m.contains_key(*k)) {
+        out.push(node);
+    }
+    if let Some(r) = m.get("$ref").and_then(Value::as_str) {
+        if let Some(d) = r.strip_prefix("#/$defs/").and_then(|n| defs.and_then(|d| d.get(n))) {
+            expand(d, defs, out, depth + 1);
+        }
+    }
+    for k in ["anyOf", "oneOf", "allOf"] {
+        for b in m.get(k).and_then(Value::as_array).into_iter().flatten() {
+            expand(b, defs, out, depth + 1);
+        }
+    }
+}
+
+fn allows_array(node: &Value) -> bool {
+    match node.get("type") {
+        Some(Value::String(t)) => t == "array",
+        Some(Value::Array(ts)) => ts.iter().any(|t| t == "array"),
+        _ => {
+            !(node.get("properties").is_some()
+                || node.get("additionalProperties").is_some_and(Value::is_object)
+                || node.get("enum").is_some()
+                || node.get("const").is_some())
+        }
+    }
+}
+
+fn positional(
+    value: &Value,
+    candidates: &[&Value],
+    defs: Option<&serde_json::Map<String, Value>>,
+    path: String,
+) -> Result<(), CaseError> {
+    if candidates.is_empty() {
+        return Ok(());
+    }
+    let mut children: Vec<&Value> = Vec::new();
+    match value {
+        Value::Array(items) => {
+            if !candidates.iter().any(|c| allows_array(c)) {
+                return Err(CaseError::value(
+                    if path.is_empty() { "." } else { &path },
+                    short(value),
+                    "an object is expected here: give its fields by name, {\"field\": value, …}",
+                ));
+            }
+            for (i, item) in items.iter().enumerate() {
+                children.clear();
+                for c in candidates {
+                    let node = c
+                        .get("prefixItems")
+                        .and_then(|p| p.get(i))
+                        .or_else(|| c.get("items").filter(|x| x.is_object()));
+                    if let Some(n) = node {
+                        expand(n, defs, &mut children, 0);
+                    }
+                }
+                positional(item, &children, defs, format!("{path}[{i}]"))?;
+            }
+        }
+        Value::Object(map) => {
+            for (k, item) in map {
+                children.clear();
+                for c in candidates {
+                    let node = c
+                        .get("properties")
+                        .and_then(|p| p.get(k))
+                        .or_else(|| c.get("additionalProperties").filter(|x| x.is_object()));
+                    if let Some(n) = node {
+                        expand(n, defs, &mut children, 0);
+                    }
+                }
+                let p = if path.is_empty() {
+                    k.clone()
+                } else {
+                    format!("{path}.{k}")
+                };
+                positional(item, &children, defs, p)?;
+            }
+        }
+        _ => {}
+    }
+    Ok(())
 }
 
 /// A value shortened for messages.

@@ -11,9 +11,11 @@ use serde::Deserialize;
 #[derive(Debug, Clone, Copy, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LegSpec {
-    /// Width along the revolute axis, mm.
+    /// Width along the revolute axis, mm, > 0.
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub w: f64,
-    /// Height across it (the direction the revolute notch thins), mm.
+    /// Height across it (the direction the revolute notch thins), mm, > 0.
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub h: f64,
 }
 
@@ -23,46 +25,59 @@ pub struct LegSpec {
 pub enum StageHinge {
     /// Circular notch: radius R, minimum thickness t, mm.
     CircularNotch {
-        /// Notch radius, mm.
+        /// Notch radius, mm, > 0.
         #[serde(rename = "R")]
+        #[schemars(extend("exclusiveMinimum" = 0))]
         r: f64,
-        /// Minimum thickness, mm.
+        /// Minimum thickness, mm, > 0 and < the leg height `h`.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         t: f64,
     },
     /// Elliptical notch: semi-axes ax (along the leg), ay (depth), minimum thickness t, mm.
     EllipticalNotch {
-        /// Semi-axis along the leg, mm.
+        /// Semi-axis along the leg, mm, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         ax: f64,
-        /// Semi-axis across, mm.
+        /// Semi-axis across, mm, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         ay: f64,
-        /// Minimum thickness, mm.
+        /// Minimum thickness, mm, > 0 and < the leg height `h`.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         t: f64,
     },
     /// Corner-filleted notch: length l, fillet radius R, thickness t, mm.
     CornerFilleted {
-        /// Total notch length, mm.
+        /// Total notch length, mm, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         l: f64,
-        /// Fillet radius, mm.
+        /// Fillet radius, mm, > 0 and ≤ l/2.
         #[serde(rename = "R")]
+        #[schemars(extend("exclusiveMinimum" = 0))]
         r: f64,
-        /// Thickness, mm.
+        /// Thickness, mm, > 0 and < the leg height `h`.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         t: f64,
     },
     /// Leaf: length l, thickness t, mm.
     Leaf {
-        /// Length, mm.
+        /// Length, mm, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         l: f64,
-        /// Thickness, mm.
+        /// Thickness, mm, > 0 and < the leg height `h`.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         t: f64,
     },
     /// Turned neck: diameter t over length l, fillet radius R, mm.
     SphericalNeck {
-        /// Straight neck length, mm.
+        /// Straight neck length, mm, ≥ 0.
+        #[schemars(range(min = 0))]
         l: f64,
-        /// Neck diameter, mm.
+        /// Neck diameter, mm, > 0 and < the smaller leg side.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         t: f64,
-        /// Fillet radius, mm.
+        /// Fillet radius, mm, > 0.
         #[serde(rename = "R")]
+        #[schemars(extend("exclusiveMinimum" = 0))]
         r: f64,
     },
 }
@@ -113,35 +128,45 @@ impl StageHinge {
     }
 }
 
-/// The `stage` object (INTERFACE.md).
+/// The `stage` object: 3-PRS geometry, leg section and hinges. Give either `alpha0_deg` or `a`.
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(extend("oneOf" = super::kinematics::alpha0_or_a()))]
 pub struct StageSpec {
-    /// Leg length between hinge centres, mm.
+    /// Leg length between hinge centres, mm, > 0.
     #[serde(rename = "L")]
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub l: f64,
-    /// Platform radius, mm.
+    /// Platform radius, mm, > 0.
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub b: f64,
-    /// Leg angle to the horizontal at home, degrees (or give `a`).
+    /// Leg angle to the horizontal at home, degrees, in (0, 90) (or give `a`).
     #[serde(default)]
+    #[schemars(extend("exclusiveMinimum" = 0, "exclusiveMaximum" = 90))]
     pub alpha0_deg: Option<f64>,
-    /// Base radius, mm (alternative to `alpha0_deg`).
+    /// Base radius, mm, > 0 (alternative to `alpha0_deg`).
     #[serde(default)]
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub a: Option<f64>,
-    /// Actuator inclination, degrees.
+    /// Actuator inclination, degrees, in [−90, 90] (0 = horizontal, 90 = vertical).
     #[serde(default)]
+    #[schemars(range(min = -90, max = 90))]
     pub gamma_deg: f64,
     /// Leg section, mm.
     pub leg: LegSpec,
-    /// Revolute hinge at Cᵢ (compliant axis = revolute axis).
+    /// Revolute hinge at Cᵢ (compliant axis = revolute axis): any notch type but
+    /// `spherical_neck`.
+    #[schemars(extend("not" = {"properties": {"type": {"const": "spherical_neck"}}}))]
     pub revolute: StageHinge,
-    /// Spherical hinge at Bᵢ.
+    /// Spherical hinge at Bᵢ: a `spherical_neck` (turned neck).
+    #[schemars(extend("properties" = {"type": {"const": "spherical_neck"}}))]
     pub spherical: StageHinge,
     /// Replace hinges by exact joints, legs and platform stiff (consistency check with FKP).
     #[serde(default)]
     pub ideal_joints: bool,
-    /// Beam elements per leg (default 4).
+    /// Beam elements per leg, 1 … 1000 (default 4).
     #[serde(default = "default_leg_elements")]
+    #[schemars(range(min = 1, max = 1000))]
     pub leg_elements: usize,
 }
 
@@ -149,9 +174,13 @@ fn default_leg_elements() -> usize {
     4
 }
 
-/// One load case: actuator forces or strokes.
+/// One load case: actuator forces or strokes (exactly one of the two).
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(extend("oneOf" = [
+    {"required": ["actuator_forces"], "properties": {"actuator_forces": {"type": "array"}, "actuator_strokes": {"type": "null"}}},
+    {"required": ["actuator_strokes"], "properties": {"actuator_strokes": {"type": "array"}, "actuator_forces": {"type": "null"}}}
+]))]
 pub struct StageLoadSpec {
     /// Name shown in results and used for the load case's output file (`stage_NAME.vtu`);
     /// unique within the case, also after characters other than letters, digits, `-` and `_`
@@ -168,32 +197,50 @@ pub struct StageLoadSpec {
 /// `"analysis": "stage"`.
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(extend("if" = steps_given(), "then" = nonlinear_true()))]
 pub struct StageCase {
     /// Material (default Al7075).
     #[serde(default)]
     pub material: MaterialSpec,
     /// The stage.
     pub stage: StageSpec,
-    /// Load cases.
+    /// Load cases (at least one).
+    #[schemars(length(min = 1))]
     pub load_cases: Vec<StageLoadSpec>,
     /// Geometrically nonlinear analysis (co-rotational FEM, Newton–Raphson with load steps).
     #[serde(default)]
     pub nonlinear: bool,
-    /// Load steps of the nonlinear analysis (default 20; only with `"nonlinear": true`).
+    /// Load steps of the nonlinear analysis, 1 … 10000 (default 20; only with
+    /// `"nonlinear": true`).
     #[serde(default)]
+    #[schemars(range(min = 1, max = 10000))]
     pub steps: Option<usize>,
     /// Also compute this many natural frequencies (actuators locked: sliders fixed on their
     /// rails). Legs carry their consistent beam mass, hinges are massless, the platform is a
-    /// rigid body with its mass and inertia lumped at P.
+    /// rigid body with its mass and inertia lumped at P. 1 … 1000.
     #[serde(default)]
+    #[schemars(range(min = 1, max = 1000))]
     pub modes: Option<usize>,
-    /// Platform mass, tonne (default: a disc of radius `b` and `platform_thickness` of the
-    /// stage material).
+    /// Platform mass, tonne, > 0 (default: a disc of radius `b` and `platform_thickness` of
+    /// the stage material).
     #[serde(default)]
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub platform_mass: Option<f64>,
-    /// Thickness of the disc platform, mm (default 10), used when `platform_mass` is absent.
+    /// Thickness of the disc platform, mm, > 0 (default 10), used when `platform_mass` is
+    /// absent.
     #[serde(default)]
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub platform_thickness: Option<f64>,
+}
+
+/// Schema: `steps` is given as a number.
+pub(crate) fn steps_given() -> serde_json::Value {
+    serde_json::json!({"required": ["steps"], "properties": {"steps": {"type": "integer"}}})
+}
+
+/// Schema: `"nonlinear": true`.
+pub(crate) fn nonlinear_true() -> serde_json::Value {
+    serde_json::json!({"required": ["nonlinear"], "properties": {"nonlinear": {"const": true}}})
 }
 
 /// Default number of nonlinear load steps.
@@ -225,10 +272,12 @@ pub struct FemVsFkpCase {
     pub material: MaterialSpec,
     /// The stage.
     pub stage: StageSpec,
-    /// Stroke sets, mm.
+    /// Stroke sets, mm (at least one).
+    #[schemars(length(min = 1))]
     pub strokes: Vec<[f64; 3]>,
-    /// Load steps of the nonlinear FEM column (default 20).
+    /// Load steps of the nonlinear FEM column, 1 … 10000 (default 20).
     #[serde(default)]
+    #[schemars(range(min = 1, max = 10000))]
     pub steps: Option<usize>,
 }
 

@@ -8,7 +8,8 @@ use serde_json::{Map, Value};
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(untagged)]
 pub enum VarySpec {
-    /// Explicit values (numbers, strings, objects…).
+    /// Explicit values (numbers, strings, objects…), at least one.
+    #[schemars(extend("minItems" = 1))]
     List(Vec<Value>),
     /// `steps` values from `from` to `to`, ends included.
     Range {
@@ -16,7 +17,8 @@ pub enum VarySpec {
         from: f64,
         /// Last value.
         to: f64,
-        /// Number of values (≥ 1; 1 gives `from`).
+        /// Number of values, 1 … 1000000 (1 gives `from`).
+        #[schemars(range(min = 1, max = 1000000))]
         steps: usize,
     },
 }
@@ -25,11 +27,14 @@ pub enum VarySpec {
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SweepCase {
-    /// The case every design starts from (any analysis but `sweep`).
+    /// The case every design starts from: a case object of any analysis but `sweep`. Each
+    /// design (`base` with the varied values set) is validated as a case of its own.
+    #[schemars(schema_with = "base_schema")]
     pub base: Value,
     /// Dotted paths into `base` → values; the designs are every combination, the last path
-    /// varying fastest.
+    /// varying fastest. At least one path.
     #[schemars(with = "std::collections::BTreeMap<String, VarySpec>")]
+    #[schemars(extend("minProperties" = 1))]
     pub vary: Map<String, Value>,
 }
 
@@ -211,4 +216,15 @@ impl SweepCase {
         };
         Ok(sweep)
     }
+}
+
+/// Schema of `base`: an object whose `analysis` is any but `sweep` (the rest is checked per
+/// design, since varied values may complete it).
+fn base_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+    let names: Vec<&str> = super::ANALYSES.iter().copied().filter(|a| *a != "sweep").collect();
+    schemars::json_schema!({
+        "type": "object",
+        "required": ["analysis"],
+        "properties": {"analysis": {"type": "string", "enum": names}}
+    })
 }

@@ -50,7 +50,7 @@ use integrate::{flex_integrals, Moduli, Quadrature};
 pub use profile::{Contour, Profile};
 pub use section::Section;
 
-/// A hinge as given in a case file (INTERFACE.md "hinge"). Lengths in mm.
+/// A hinge as given in a case file, by `type`. Lengths in mm.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
 pub enum HingeSpec {
@@ -58,72 +58,99 @@ pub enum HingeSpec {
     CircularNotch {
         /// Notch radius R.
         #[serde(rename = "R")]
+        #[schemars(extend("exclusiveMinimum" = 0))]
         r: f64,
         /// Minimum thickness t (along h).
+        #[schemars(extend("exclusiveMinimum" = 0))]
         t: f64,
         /// Width w (constant).
+        #[schemars(extend("exclusiveMinimum" = 0))]
         w: f64,
         /// Blank height h.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         h: f64,
         /// Blank length beyond each end of the notch.
+        #[schemars(range(min = 0))]
         blank_length: f64,
     },
     /// Elliptical notch, semi-axes ax (along the hinge) and ay (depth).
     EllipticalNotch {
         /// Semi-axis along the hinge.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         ax: f64,
         /// Semi-axis across.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         ay: f64,
         /// Minimum thickness t.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         t: f64,
         /// Width w.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         w: f64,
         /// Blank height h.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         h: f64,
         /// Blank length beyond each end of the notch.
+        #[schemars(range(min = 0))]
         blank_length: f64,
     },
     /// Corner-filleted notch: total length l with two fillets of radius R.
     CornerFilleted {
         /// Total notch length l (including both fillets).
+        #[schemars(extend("exclusiveMinimum" = 0))]
         l: f64,
         /// Fillet radius R.
         #[serde(rename = "R")]
+        #[schemars(extend("exclusiveMinimum" = 0))]
         r: f64,
         /// Thickness t of the straight part.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         t: f64,
         /// Width w.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         w: f64,
         /// Blank height h.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         h: f64,
         /// Blank length beyond each end of the notch.
+        #[schemars(range(min = 0))]
         blank_length: f64,
     },
     /// Prismatic leaf of length l.
     Leaf {
         /// Length l.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         l: f64,
         /// Thickness t.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         t: f64,
         /// Width w.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         w: f64,
         /// Blank height h.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         h: f64,
         /// Blank length beyond each end of the leaf.
+        #[schemars(range(min = 0))]
         blank_length: f64,
     },
     /// Turned (spherical) neck: diameter t over length l, fillets of radius R, in an h × h blank.
     SphericalNeck {
         /// Straight neck length l.
+        #[schemars(range(min = 0))]
         l: f64,
         /// Neck diameter t.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         t: f64,
         /// Fillet radius R.
         #[serde(rename = "R")]
+        #[schemars(extend("exclusiveMinimum" = 0))]
         r: f64,
         /// Side of the square blank.
+        #[schemars(extend("exclusiveMinimum" = 0))]
         h: f64,
         /// Blank length beyond each end of the notch region.
+        #[schemars(range(min = 0))]
         blank_length: f64,
     },
 }
