@@ -26,6 +26,13 @@ pub struct StaticCaseRow {
     pub shell_von_mises: Vec<ShellVonMises>,
     /// Sum of loads plus reactions (should vanish): [N, N, N, N·mm, N·mm, N·mm].
     pub equilibrium_residual: [f64; 6],
+    /// Nonlinear only: whether every converged point of the equilibrium path was stable
+    /// (positive definite tangent stiffness, no jump over a limit point).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stable: Option<bool>,
+    /// Nonlinear and not stable: load factors [lo, hi] bracketing the first loss of stability.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub critical_load_factor: Option<[f64; 2]>,
 }
 
 /// Surface stresses of one shell element.
@@ -93,7 +100,15 @@ pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<StaticResult, Anal
         ..Default::default()
     };
     let res = fem::solve_nonlinear(model, &opts).map_err(|e| AnalysisError::new("model", e.to_string()))?;
-    let rows = res.load_cases.iter().map(|c| row(&c.fe)).collect();
+    let rows = res
+        .load_cases
+        .iter()
+        .map(|c| StaticCaseRow {
+            stable: Some(c.stable),
+            critical_load_factor: c.critical_load_factor,
+            ..row(&c.fe)
+        })
+        .collect();
     Ok(StaticResult {
         load_cases: rows,
         units: Units {
@@ -143,6 +158,21 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
             })
             .collect(),
         equilibrium_residual: c.statics.residual(),
+        stable: None,
+        critical_load_factor: None,
+    }
+}
+
+/// The Markdown warning for a nonlinear load case whose path lost stability.
+pub fn stability_warning(name: &str, stable: Option<bool>, bracket: Option<[f64; 2]>) -> Option<String> {
+    match (stable, bracket) {
+        (Some(false), Some([lo, hi])) => Some(format!(
+            "> **Warning** (load case `{name}`): the equilibrium path lost stability between load factors {lo:.4} and {hi:.4} (the tangent stiffness stopped being positive definite, or the solution jumped over a limit point). The reported state may be unstable or reached by a snap; check for buckling or snap-through (arc length, an imperfection).\n\n"
+        )),
+        (Some(false), None) => Some(format!(
+            "> **Warning** (load case `{name}`): the equilibrium path is not stable.\n\n"
+        )),
+        _ => None,
     }
 }
 
@@ -160,6 +190,9 @@ pub fn report(r: &StaticResult) -> Report {
     let mut csv = String::from("load_case,node,ux_mm,uy_mm,uz_mm,rx_deg,ry_deg,rz_deg\n");
     for c in &r.load_cases {
         md += &format!("## Load case `{}`\n\n", c.name);
+        if let Some(w) = stability_warning(&c.name, c.stable, c.critical_load_factor) {
+            md += &w;
+        }
         if let Some(s) = c.max_von_mises {
             md += &format!("Maximum von Mises stress: {s:.3} MPa.\n\n");
         }

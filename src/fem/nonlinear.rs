@@ -958,6 +958,9 @@ fn load_control(
 ) -> Result<(usize, usize, usize, f64), FemError> {
     let dl0 = 1.0 / opts.steps as f64;
     let dl_jump = dl0 / f64::from(1u32 << JUMP_CUTS);
+    let dl_min = dl0 * 0.5f64.powi(opts.max_cuts.min(60) as i32);
+    // Steps allowed: the nominal count 10 times over (slow convergence halves the step).
+    let max_steps = 10 * opts.steps.max(10);
     let mut dl = dl0;
     let mut lambda = lambda0;
     let mut prev_stable = path.last().is_none_or(|p| p.stable);
@@ -1011,8 +1014,18 @@ fn load_control(
                 });
                 if dl < dl0 && nk.iterations <= 4 {
                     dl = (dl * 2.0).min(dl0);
-                } else if nk.iterations >= 12 {
+                } else if nk.iterations >= 12 && dl * 0.5 >= dl_min {
                     dl *= 0.5;
+                    cuts += 1;
+                }
+                if steps > max_steps || cuts > opts.max_total_cuts {
+                    return Err(fail(
+                        name,
+                        step0 + steps,
+                        lambda,
+                        0.0,
+                        format!("{steps} load steps and {cuts} step cuts (Δλ = {dl:.3e}) without reaching λ = 1: Newton converges too slowly"),
+                    ));
                 }
             }
             Err(f) => {
