@@ -642,9 +642,9 @@ struct StepFail {
 /// A converged Newton step.
 struct NewtonOk {
     iterations: usize,
-    /// Definiteness of the last factorised tangent (a state within one quadratically
-    /// converging correction of the converged one); `None` when unknown (full LU, or no
-    /// iteration needed).
+    /// Definiteness of the last factorised tangent after the first correction (a state within
+    /// one quadratically converging correction of the converged one); `None` when unknown
+    /// (full LU, or converged after one correction).
     positive_definite: Option<bool>,
     /// Whether some iteration met an indefinite symmetric tangent.
     met_indefinite: bool,
@@ -759,8 +759,12 @@ fn newton(
         let sol = ctx
             .solve(&ev.values, &[neg])
             .map_err(|reason| StepFail { residual: rn, reason })?;
-        out.positive_definite = sol.positive_definite;
-        out.met_indefinite |= sol.positive_definite == Some(false);
+        // The tangent of iteration 0 belongs to the previous converged state: it says nothing
+        // about the new one.
+        if it > 0 {
+            out.positive_definite = sol.positive_definite;
+        }
+        out.met_indefinite |= it > 0 && sol.positive_definite == Some(false);
         let dq = sol.x.into_iter().next().unwrap_or_default();
         if dq.iter().any(|v| !v.is_finite()) {
             return Err(StepFail {
@@ -1033,14 +1037,23 @@ fn load_control(
                 cuts += 1;
                 cut_run += 1;
                 dl *= 0.5;
-                if cut_run > opts.max_cuts || cuts > opts.max_total_cuts {
+                if cut_run > opts.max_cuts || cuts > opts.max_total_cuts || dl < dl_min * (1.0 - 1e-9) {
+                    let lost = match stab.bracket {
+                        Some([lo, hi]) => format!(" (the path already lost stability between λ = {lo:.4} and {hi:.4})"),
+                        None => String::new(),
+                    };
+                    let hint = if lambda > 0.0 {
+                        format!("; no equilibrium found just beyond λ = {lambda:.6}: a limit point (snap-through) or a bifurcation is likely there{lost}; arc-length control can follow a limit point")
+                    } else {
+                        String::new()
+                    };
                     return Err(fail(
                         name,
                         step0 + steps + 1,
                         lambda,
                         f.residual,
                         format!(
-                            "{} after {} step cuts ({} in a row; last step Δλ = {:.3e})",
+                            "{} after {} step cuts ({} in a row; last step Δλ = {:.3e}){hint}",
                             f.reason,
                             cuts - 1,
                             cut_run - 1,
@@ -1072,7 +1085,7 @@ fn arc_length(
     let mut prev: Option<Vec<f64>> = None;
     let mut dl_arc = 0.0;
     let mut cut_run = 0;
-    let max_steps = 1000 * opts.steps.max(1);
+    let max_steps = 50 * opts.steps.max(10);
     while steps < max_steps {
         let saved = st.clone();
         let ev = ctx
