@@ -50,7 +50,13 @@ fn imbalance(model: &Model, c: &NonlinearCase) -> (f64, f64) {
 fn l_cantilever() -> Model {
     let m = mat(72000.0, 0.33);
     let mut model = Model::new();
-    for x in [[0.0, 0.0, 0.0], [110.0, 0.0, 0.0], [220.0, 0.0, 0.0], [220.0, 0.0, -20.0], [220.0, 0.0, -40.0]] {
+    for x in [
+        [0.0, 0.0, 0.0],
+        [110.0, 0.0, 0.0],
+        [220.0, 0.0, 0.0],
+        [220.0, 0.0, -20.0],
+        [220.0, 0.0, -40.0],
+    ] {
         model.add_node(x);
     }
     for i in 0..4 {
@@ -89,7 +95,10 @@ fn l_cantilever_one_step_is_right_or_refused() {
                 let c = &res.load_cases[0];
                 let t = tip(c, &model, 4);
                 let (fr, mr) = imbalance(&model, c);
-                println!("{steps} steps: tip {t:?}, imbalance {fr:.1e} / {mr:.1e}, {} steps, {} cuts", c.steps, c.cuts);
+                println!(
+                    "{steps} steps: tip {t:?}, imbalance {fr:.1e} / {mr:.1e}, {} steps, {} cuts",
+                    c.steps, c.cuts
+                );
                 assert!(dist(t, r) < 1e-6 * 260.0, "{steps} steps: tip {t:?} vs {r:?}");
                 assert!(fr < 1e-6 && mr < 1e-6, "{steps} steps: imbalance {fr} / {mr}");
             }
@@ -123,7 +132,9 @@ fn l_cantilever_cli_exit_code() {
             let v: serde_json::Value =
                 serde_json::from_str(&String::from_utf8_lossy(&out.stdout)).unwrap_or_else(|e| panic!("{e}"));
             let c = &v["load_cases"][0];
-            let res: Vec<f64> = (0..6).map(|i| c["equilibrium_residual"][i].as_f64().unwrap_or(f64::NAN)).collect();
+            let res: Vec<f64> = (0..6)
+                .map(|i| c["equilibrium_residual"][i].as_f64().unwrap_or(f64::NAN))
+                .collect();
             let f = (res[0] * res[0] + res[1] * res[1] + res[2] * res[2]).sqrt();
             let m = (res[3] * res[3] + res[4] * res[4] + res[5] * res[5]).sqrt();
             // 60 N load on a ≤ 260 mm lever.
@@ -141,7 +152,10 @@ struct Lcg(u64);
 
 impl Lcg {
     fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         (self.0 >> 11) as f64 / (1u64 << 53) as f64
     }
     fn range(&mut self, a: f64, b: f64) -> f64 {
@@ -180,7 +194,11 @@ fn random_frame(rng: &mut Lcg) -> (Model, usize, f64) {
             }
             let n = model.add_node(x);
             // `up`: any axis not parallel to the element.
-            let up = if dir[2].abs() < 0.9 { [0.0, 0.0, 1.0] } else { [0.0, 1.0, 0.0] };
+            let up = if dir[2].abs() < 0.9 {
+                [0.0, 0.0, 1.0]
+            } else {
+                [0.0, 1.0, 0.0]
+            };
             model.add_beam(Beam::new(node, n, Section::Rect { w, h }, m, up).euler_bernoulli());
             node = n;
         }
@@ -224,7 +242,10 @@ fn random_frames_are_right_or_refused() {
                         dist(t, r) < 1e-5 * reach,
                         "frame {k}, {steps} steps: tip {t:?} vs reference {r:?}"
                     );
-                    assert!(fr < 1e-6 && mr < 1e-6, "frame {k}, {steps} steps: imbalance {fr} / {mr}");
+                    assert!(
+                        fr < 1e-6 && mr < 1e-6,
+                        "frame {k}, {steps} steps: imbalance {fr} / {mr}"
+                    );
                     ok += 1;
                 }
                 Err(e) => {

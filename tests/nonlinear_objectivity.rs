@@ -3,7 +3,9 @@
 //! consistent tangent is not symmetric where moments are applied; a symmetrised tangent made
 //! the tilted roll-up fail at λ ≈ 0.65 and the helix stall.
 
-use flexfem::fem::{solve_nonlinear, Beam, LoadCase, Model, NonlinearCase, NonlinearOptions, Section, Support};
+use flexfem::fem::{
+    solve_nonlinear, Beam, LoadCase, Model, NonlinearCase, NonlinearOptions, Section, Support, Tangent,
+};
 use flexfem::material::Material;
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use std::f64::consts::PI;
@@ -55,7 +57,12 @@ fn opts(steps: usize) -> NonlinearOptions {
 }
 
 fn tip(model: &Model, c: &NonlinearCase, n: usize) -> Vector3<f64> {
-    Vector3::from(model.nodes[n]) + Vector3::new(c.fe.displacements[n][0], c.fe.displacements[n][1], c.fe.displacements[n][2])
+    Vector3::from(model.nodes[n])
+        + Vector3::new(
+            c.fe.displacements[n][0],
+            c.fe.displacements[n][1],
+            c.fe.displacements[n][2],
+        )
 }
 
 fn rot(c: &NonlinearCase, n: usize) -> Matrix3<f64> {
@@ -67,7 +74,10 @@ struct Lcg(u64);
 
 impl Lcg {
     fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         (self.0 >> 11) as f64 / (1u64 << 53) as f64
     }
     fn rotation(&mut self) -> Matrix3<f64> {
@@ -91,7 +101,11 @@ fn tilted_semicircle_rolls_up_like_the_axis_aligned_one() {
     // (π/16)/sin(π/16) = 1.0064.
     println!("about y: tip {ta:?}");
     let d = 2.0 * L / PI * (PI / 16.0) / (PI / 16.0).sin();
-    assert!(ta.x.abs() < 1e-6 * L && (ta.z + d).abs() < 1e-6 * L, "{ta:?} vs z = {}", -d);
+    assert!(
+        ta.x.abs() < 1e-6 * L && (ta.z + d).abs() < 1e-6 * L,
+        "{ta:?} vs z = {}",
+        -d
+    );
     // Rotation about x taking y to (0, 0.6, 0.8).
     let q = Rotation3::new(Vector3::new(0.8f64.atan2(0.6), 0.0, 0.0)).into_inner();
     assert!((q * Vector3::y() - Vector3::new(0.0, 0.6, 0.8)).norm() < 1e-15);
@@ -126,7 +140,11 @@ fn helix_closed_form(m: Vector3<f64>) -> (Vector3<f64>, Matrix3<f64>) {
 
 fn helix_moment() -> Vector3<f64> {
     // |M| L / EI = 1.5π: one and a half half-turns of the precession; 30° between M and the bar.
-    let dir = Vector3::new(30f64.to_radians().cos(), 30f64.to_radians().sin() * 0.6, 30f64.to_radians().sin() * 0.8);
+    let dir = Vector3::new(
+        30f64.to_radians().cos(),
+        30f64.to_radians().sin() * 0.6,
+        30f64.to_radians().sin() * 0.8,
+    );
     dir * 1.5 * PI * E * inertia() / L
 }
 
@@ -139,7 +157,9 @@ fn helix_under_a_fixed_terminal_couple() {
     let c = &res.load_cases[0];
     let t = tip(&model, c, 32);
     let r = rot(c, 32);
-    let angle = Rotation3::from_matrix_unchecked(r * r_ref.transpose()).angle().to_degrees();
+    let angle = Rotation3::from_matrix_unchecked(r * r_ref.transpose())
+        .angle()
+        .to_degrees();
     println!(
         "helix: tip {t:?} vs Kirchhoff {x_ref:?} ({:.2e} L), rotation error {angle:.4}°, {} steps, {} iterations",
         (t - x_ref).norm() / L,
@@ -154,7 +174,11 @@ fn helix_under_a_fixed_terminal_couple() {
     let mut shown = 0;
     for p in &c.path[1..] {
         let r = &p.residuals;
-        println!("λ {:.2}: {:?}", p.lambda, r.iter().map(|v| format!("{v:.1e}")).collect::<Vec<_>>());
+        println!(
+            "λ {:.2}: {:?}",
+            p.lambda,
+            r.iter().map(|v| format!("{v:.1e}")).collect::<Vec<_>>()
+        );
         for w in r.windows(2) {
             let (a, b) = (w[0] / r[0], w[1] / r[0]);
             if a < 1e-3 && b > 1e-12 {
@@ -164,6 +188,25 @@ fn helix_under_a_fixed_terminal_couple() {
         }
     }
     assert!(shown >= 10, "quadratic rate seen {shown} times");
+    // The symmetrised tangent (Cholesky) stalls: linear convergence at best, step cuts, and an
+    // error naming the step (within the cut and step caps, so quickly).
+    let sym = solve_nonlinear(
+        &model,
+        &NonlinearOptions {
+            tangent: Tangent::Symmetric,
+            ..opts(20)
+        },
+    );
+    match sym {
+        Err(e) => {
+            println!("symmetric tangent: {e}");
+            assert!(e.to_string().contains("(step "));
+        }
+        Ok(s) => panic!(
+            "symmetric tangent converged in {} iterations",
+            s.load_cases[0].iterations
+        ),
+    }
 }
 
 /// The tilted roll-up and the helix, each rotated by

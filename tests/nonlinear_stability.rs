@@ -43,7 +43,9 @@ fn leaf_compressed_past_euler_is_flagged() {
         model.add_beam(Beam::new(i, i + 1, Section::Rect { w, h: t }, mat(e), [1.0, 0.0, 0.0]).euler_bernoulli());
     }
     model.supports.push(Support::clamp(0));
-    model.supports.push(Support::dofs(n, &[Dof::Uy, Dof::Rx, Dof::Ry, Dof::Rz]));
+    model
+        .supports
+        .push(Support::dofs(n, &[Dof::Uy, Dof::Rx, Dof::Ry, Dof::Rz]));
     // Weak axis: I = w t³/12.
     let i_weak = w * t.powi(3) / 12.0;
     let pe = PI * PI * e * i_weak / (l * l);
@@ -63,7 +65,10 @@ fn leaf_compressed_past_euler_is_flagged() {
     assert!(!c.stable);
     let [lo, hi] = c.critical_load_factor.unwrap_or_else(|| panic!("no bracket"));
     // FE Euler load of 16 elements within 0.1 % of π²EI/L².
-    assert!(lo <= 1.001 / 7.0 && hi >= 0.999 / 7.0 && hi - lo <= 0.05 + 1e-12, "[{lo}, {hi}]");
+    assert!(
+        lo <= 1.001 / 7.0 && hi >= 0.999 / 7.0 && hi - lo <= 0.05 + 1e-12,
+        "[{lo}, {hi}]"
+    );
     assert!(c.path.iter().any(|p| p.stable) && c.path.iter().any(|p| !p.stable));
 }
 
@@ -87,7 +92,14 @@ fn shallow_arch_snap_through_is_flagged() {
         }
         for i in 0..2 * n {
             model.add_beam(
-                Beam::new(i, i + 1, Section::Rect { w: 10.0, h: 1.0 }, mat(70000.0), [0.0, 0.0, 1.0]).euler_bernoulli(),
+                Beam::new(
+                    i,
+                    i + 1,
+                    Section::Rect { w: 10.0, h: 1.0 },
+                    mat(70000.0),
+                    [0.0, 0.0, 1.0],
+                )
+                .euler_bernoulli(),
             );
         }
         model.supports.push(Support::clamp(0));
@@ -99,7 +111,10 @@ fn shallow_arch_snap_through_is_flagged() {
     };
     let low = solve_nonlinear(&arch(15.0), &opts(10)).unwrap_or_else(|e| panic!("15 N: {e}"));
     let c = &low.load_cases[0];
-    println!("arch, 15 N: stable {}, crown uz {:.4}", c.stable, c.fe.displacements[n][2]);
+    println!(
+        "arch, 15 N: stable {}, crown uz {:.4}",
+        c.stable, c.fe.displacements[n][2]
+    );
     assert!(c.stable && c.critical_load_factor.is_none());
     let mid = solve_nonlinear(&arch(40.0), &opts(10)).unwrap_or_else(|e| panic!("40 N: {e}"));
     let c = &mid.load_cases[0];
@@ -113,11 +128,17 @@ fn shallow_arch_snap_through_is_flagged() {
             let msg = e.to_string();
             assert!(msg.contains("(step ") && msg.contains("limit point"), "{msg}");
             // The failure comes at the symmetric limit, between 60 and 90 N (λ 0.4–0.6).
-            assert!(msg.contains("load factor 0.4") || msg.contains("load factor 0.5"), "{msg}");
+            assert!(
+                msg.contains("load factor 0.4") || msg.contains("load factor 0.5"),
+                "{msg}"
+            );
         }
         Ok(r) => {
             let c = &r.load_cases[0];
-            println!("arch, 150 N: stable {}, critical {:?}", c.stable, c.critical_load_factor);
+            println!(
+                "arch, 150 N: stable {}, critical {:?}",
+                c.stable, c.critical_load_factor
+            );
             assert!(!c.stable);
             let [lo, hi] = c.critical_load_factor.unwrap_or_else(|| panic!("no bracket"));
             assert!(lo >= 0.1 && hi <= 0.2, "[{lo}, {hi}]");
@@ -132,13 +153,21 @@ fn shallow_arch_snap_through_is_flagged() {
 #[test]
 fn stage_at_54_mm_strokes_takes_the_right_branch_or_fails() {
     use flexfem::stage::Drive;
-    let text = std::fs::read_to_string(common::root().join("cases/ruiz2019_stage.json")).unwrap_or_else(|e| panic!("{e}"));
+    let text =
+        std::fs::read_to_string(common::root().join("cases/ruiz2019_stage.json")).unwrap_or_else(|e| panic!("{e}"));
     let flexfem::case::Case::Stage(c) = flexfem::case::parse(&text).unwrap_or_else(|e| panic!("{e}")) else {
         panic!("not a stage case")
     };
-    let stage = c.validate().unwrap_or_else(|e| panic!("{e}")).0.build().unwrap_or_else(|e| panic!("{e}"));
+    let stage = c
+        .validate()
+        .unwrap_or_else(|e| panic!("{e}"))
+        .0
+        .build()
+        .unwrap_or_else(|e| panic!("{e}"));
     let cases = vec![("s54".to_string(), Drive::Strokes([54.0, 54.0, 54.0]))];
-    let fine = stage.solve_nonlinear(&cases, 200).unwrap_or_else(|e| panic!("200 steps: {e}"));
+    let fine = stage
+        .solve_nonlinear(&cases, 200)
+        .unwrap_or_else(|e| panic!("200 steps: {e}"));
     let zf = fine[0].platform.z;
     println!("stage 54 mm, 200 steps: z = {zf:.3} mm, stable {:?}", fine[0].stability);
     assert!((zf - 30.1).abs() < 0.5, "200 steps: z = {zf}");

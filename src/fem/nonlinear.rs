@@ -697,9 +697,6 @@ fn newton(
         })?;
         let rn = norm(&ev.r);
         out.residuals.push(rn);
-        if std::env::var_os("NLDBG").is_some() {
-            eprintln!("  it {it} λ {lambda:.4} r {rn:.3e} load {:.3e} int {:.3e}", ev.load, ev.internal);
-        }
         if it == 0 {
             r0 = rn;
             scale = ev.load.max(converged_internal);
@@ -967,10 +964,8 @@ fn load_control(
     let max_steps = 10 * opts.steps.max(10);
     let mut dl = dl0;
     let mut lambda = lambda0;
-    let mut prev_stable = path.last().is_none_or(|p| p.stable);
-    let mut internal = ctx
-        .evaluate(st, lambda0, Assemble::None)
-        .map_or(0.0, |ev| ev.internal);
+    let mut prev_stable = path.last().map_or(true, |p| p.stable);
+    let mut internal = ctx.evaluate(st, lambda0, Assemble::None).map_or(0.0, |ev| ev.internal);
     let (mut iterations, mut steps, mut cuts, mut cut_run) = (0, 0, 0, 0);
     while lambda < 1.0 - 1e-12 {
         let target = if lambda + dl > 1.0 - 1e-9 { 1.0 } else { lambda + dl };
@@ -995,7 +990,7 @@ fn load_control(
                     "the iterations crossed an indefinite tangent".to_string()
                 };
                 return Err(StepFail {
-                    residual: 0.0,
+                    residual: nk.residuals.last().copied().unwrap_or(f64::NAN),
                     reason: format!("step too large: {why}"),
                 });
             }
@@ -1027,7 +1022,7 @@ fn load_control(
                         name,
                         step0 + steps,
                         lambda,
-                        0.0,
+                        path.last().and_then(|p| p.residuals.last()).copied().unwrap_or(f64::NAN),
                         format!("{steps} load steps and {cuts} step cuts (Δλ = {dl:.3e}) without reaching λ = 1: Newton converges too slowly"),
                     ));
                 }
@@ -1122,7 +1117,9 @@ fn arc_length(
         let mut residuals = Vec::new();
         let mut pd = None;
         for it in 1..=opts.max_iterations {
-            let Some(ev) = ctx.evaluate(st, lam, ctx.newton_tangent()) else { break };
+            let Some(ev) = ctx.evaluate(st, lam, ctx.newton_tangent()) else {
+                break;
+            };
             let rn = norm(&ev.r);
             last_res = rn;
             residuals.push(rn);

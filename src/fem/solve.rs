@@ -487,7 +487,13 @@ impl LuPattern {
     /// Solves K·X = B in place (`ncols` right-hand sides, column-major in `rhs`) with K summed
     /// from triplet `values` in the order of the pairs. Fails on a singular K (zero pivot or a
     /// non-finite solution).
-    pub fn solve_in_place(&self, values: &[f64], rhs: &mut [f64], ncols: usize, par: Parallelism) -> Result<(), FemError> {
+    pub fn solve_in_place(
+        &self,
+        values: &[f64],
+        rhs: &mut [f64],
+        ncols: usize,
+        par: Parallelism,
+    ) -> Result<(), FemError> {
         let n = self.symbolic.nrows();
         if values.len() != self.n_triplets || rhs.len() != n * ncols {
             return Err(FemError::PatternMismatch(format!(
@@ -508,7 +514,13 @@ impl LuPattern {
             .map_err(|_| FemError::Solver("out of memory".into()))?;
         let lu = self
             .lu
-            .factorize_numeric_lu::<f64>(&mut numeric, k.as_ref(), par, MemStack::new(&mut mem), Default::default())
+            .factorize_numeric_lu::<f64>(
+                &mut numeric,
+                k.as_ref(),
+                par,
+                MemStack::new(&mut mem),
+                Default::default(),
+            )
             .map_err(|e| FemError::Solver(format!("LU: {e:?}")))?;
         let mut mem = MemBuffer::try_new(self.lu.solve_in_place_scratch::<f64>(ncols, par))
             .map_err(|_| FemError::Solver("out of memory".into()))?;
