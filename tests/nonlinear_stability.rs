@@ -183,3 +183,45 @@ fn stage_at_54_mm_strokes_takes_the_right_branch_or_fails() {
         }
     }
 }
+
+/// The same leaf through the CLI: `"stable": false` and `"critical_load_factor"` in the
+/// result, and a warning in the Markdown report.
+#[test]
+fn leaf_stability_in_result_and_report() {
+    let (n, l) = (16usize, 50.0);
+    let pe = PI * PI * 70000.0 * (10.0 * 0.5f64.powi(3) / 12.0) / (l * l);
+    let nodes: Vec<String> = (0..=n)
+        .map(|i| format!("[0, 0, {}]", l * i as f64 / n as f64))
+        .collect();
+    let elements: Vec<String> = (0..n)
+        .map(|i| {
+            format!(r#"{{"type": "beam", "nodes": [{i}, {}], "section": "s", "material": "m", "up": [1, 0, 0], "shear": false}}"#, i + 1)
+        })
+        .collect();
+    let text = format!(
+        r#"{{"analysis": "static", "materials": {{"m": {{"E": 70000, "nu": 0.3, "density": 2.7e-9, "yield": 500}}}},
+        "sections": {{"s": {{"shape": "rect", "w": 10, "h": 0.5}}}},
+        "nodes": [{}], "elements": [{}],
+        "supports": [{{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}}, {{"node": {n}, "fix": ["uy", "rx", "ry", "rz"]}}],
+        "load_cases": [{{"name": "7PE", "forces": [{{"node": {n}, "F": [0, 0, {}, 0, 0, 0]}}]}}],
+        "nonlinear": true}}"#,
+        nodes.join(", "),
+        elements.join(", "),
+        -7.0 * pe
+    );
+    let d = common::tempdir("nl_leaf_cli");
+    let p = d.join("leaf.json");
+    std::fs::write(&p, text).unwrap_or_else(|e| panic!("{e}"));
+    let out = common::run_in(&d, &["run", "leaf.json", "--out", "out"]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("out/result.json")).unwrap_or_default())
+            .unwrap_or_else(|e| panic!("{e}"));
+    let c = &v["load_cases"][0];
+    assert_eq!(c["stable"], serde_json::Value::Bool(false));
+    let lo = c["critical_load_factor"][0].as_f64().unwrap_or(f64::NAN);
+    let hi = c["critical_load_factor"][1].as_f64().unwrap_or(f64::NAN);
+    assert!(lo <= 1.001 / 7.0 && hi >= 0.999 / 7.0, "[{lo}, {hi}]");
+    let md = std::fs::read_to_string(d.join("out/report.md")).unwrap_or_default();
+    assert!(md.contains("**Warning**") && md.contains("lost stability"), "{md}");
+}
