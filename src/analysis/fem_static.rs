@@ -116,7 +116,7 @@ pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<StaticResult, Anal
             reactions: "N, N, N, N·mm, N·mm, N·mm",
         },
         model: vec![
-            format!("geometrically nonlinear statics (large displacements and rotations, small strains), Newton-Raphson in {steps} load steps; loads fixed in direction"),
+            format!("geometrically nonlinear statics (large displacements and rotations, small strains), Newton-Raphson in adaptive load steps (at most 1/{steps} of the load each); loads fixed in direction; every state checked for equilibrium and stability"),
             "beams and flexibility elements: co-rotational, local linear element (exact Timoshenko); rigid links exact under finite rotation; springs linear (small rotations)".to_string(),
             "stresses from the section forces in the deformed element frames".to_string(),
         ],

@@ -24,6 +24,28 @@
 //!
 //! Loads are fixed in space (no follower forces). The reported rotation of a node is its
 //! rotation vector log(R) (|θ| ≤ π).
+//!
+//! Acceptance and stability:
+//!
+//! * a Newton iteration converges when its residual is below the tolerance relative to the
+//!   applied load and the internal forces (reactions) of the last converged state — a scale
+//!   fixed for the step, which a wandering iterate cannot inflate — plus a round-off floor from
+//!   the stiffest element; every returned state is checked once more for nodal and global
+//!   equilibrium (forces and moments at the deformed positions) to 1e-6 of the applied load,
+//!   otherwise the solve fails naming the step;
+//! * the tangent is the consistent one: non-symmetric (sparse LU) where moments are applied
+//!   ([`Tangent`]), so Newton stays quadratic and the answer objective; symmetric (sparse
+//!   Cholesky) elsewhere;
+//! * the load step adapts (cut on failure, on a node rotating more than
+//!   [`MAX_STEP_ROTATION`] in a step, on an increment [`MAX_JUMP`] times its predictor, on an
+//!   iteration crossing an indefinite tangent; shrunk after slow and grown after fast steps),
+//!   with caps on cuts and steps so a failing case stops quickly;
+//! * each converged point is stable when the symmetric tangent of the reduced system is
+//!   positive definite (Cholesky succeeds with every pivot above
+//!   [`super::analysis::PIVOT_TOL`] of its diagonal) and it was reached without a jump; the
+//!   first loss is bracketed by the load factors of the last stable and first unstable
+//!   points. With applied moments this is the static (divergence) criterion on the symmetric
+//!   part only.
 
 use super::analysis::{prescribed_dofs, CaseResult};
 use super::constraints::{frame_block, DofMap, NONE};
