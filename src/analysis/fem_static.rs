@@ -26,6 +26,13 @@ pub struct StaticCaseRow {
     pub shell_von_mises: Vec<ShellVonMises>,
     /// Sum of loads plus reactions (should vanish): [N, N, N, N·mm, N·mm, N·mm].
     pub equilibrium_residual: [f64; 6],
+    /// Nonlinear only: whether every converged point of the equilibrium path was stable
+    /// (positive definite tangent stiffness, no jump over a limit point).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stable: Option<bool>,
+    /// Nonlinear and not stable: load factors [lo, hi] bracketing the first loss of stability.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub critical_load_factor: Option<[f64; 2]>,
 }
 
 /// Surface stresses of one shell element.
@@ -94,10 +101,18 @@ pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<(StaticResult, fem
         ..Default::default()
     };
     let res = fem::solve_nonlinear(model, &opts).map_err(|e| AnalysisError::new("model", e.to_string()))?;
+    let rows = res
+        .load_cases
+        .iter()
+        .map(|c| StaticCaseRow {
+            stable: Some(c.stable),
+            critical_load_factor: c.critical_load_factor,
+            ..row(&c.fe)
+        })
+        .collect();
     let raw = fem::StaticResults {
         load_cases: res.load_cases.into_iter().map(|c| c.fe).collect(),
     };
-    let rows = raw.load_cases.iter().map(row).collect();
     let result = StaticResult {
         load_cases: rows,
         units: Units {
@@ -105,7 +120,7 @@ pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<(StaticResult, fem
             reactions: "N, N, N, N·mm, N·mm, N·mm",
         },
         model: vec![
-            format!("geometrically nonlinear statics (large displacements and rotations, small strains), Newton-Raphson in {steps} load steps; loads fixed in direction"),
+            format!("geometrically nonlinear statics (large displacements and rotations, small strains), Newton-Raphson in adaptive load steps (at most 1/{steps} of the load each); loads fixed in direction; every state checked for equilibrium and stability"),
             "beams and flexibility elements: co-rotational, local linear element (exact Timoshenko); rigid links exact under finite rotation; springs linear (small rotations)".to_string(),
             "stresses from the section forces in the deformed element frames".to_string(),
         ],
@@ -148,6 +163,21 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
             })
             .collect(),
         equilibrium_residual: c.statics.residual(),
+        stable: None,
+        critical_load_factor: None,
+    }
+}
+
+/// The Markdown warning for a nonlinear load case whose path lost stability.
+pub fn stability_warning(name: &str, stable: Option<bool>, bracket: Option<[f64; 2]>) -> Option<String> {
+    match (stable, bracket) {
+        (Some(false), Some([lo, hi])) => Some(format!(
+            "> **Warning** (load case `{name}`): the equilibrium path lost stability between load factors {lo:.4} and {hi:.4} (the tangent stiffness stopped being positive definite, or the solution jumped over a limit point). The reported state may be unstable or reached by a snap; check for buckling or snap-through (arc length, an imperfection).\n\n"
+        )),
+        (Some(false), None) => Some(format!(
+            "> **Warning** (load case `{name}`): the equilibrium path is not stable.\n\n"
+        )),
+        _ => None,
     }
 }
 
@@ -165,6 +195,9 @@ pub fn report(r: &StaticResult) -> Report {
     let mut csv = String::from("load_case,node,ux_mm,uy_mm,uz_mm,rx_deg,ry_deg,rz_deg\n");
     for c in &r.load_cases {
         md += &format!("## Load case `{}`\n\n", c.name);
+        if let Some(w) = stability_warning(&c.name, c.stable, c.critical_load_factor) {
+            md += &w;
+        }
         if let Some(s) = c.max_von_mises {
             md += &format!("Maximum von Mises stress: {s:.3} MPa.\n\n");
         }

@@ -69,6 +69,13 @@ pub struct StageRow {
     /// stresses nothing, or the material has no allowable).
     #[serde(serialize_with = "crate::report::numbers::unbounded_as_null")]
     pub factor_at_allowable: f64,
+    /// Nonlinear only: whether every converged point of the equilibrium path was stable
+    /// (positive definite tangent stiffness, no jump over a limit point).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stable: Option<bool>,
+    /// Nonlinear and not stable: load factors [lo, hi] bracketing the first loss of stability.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub critical_load_factor: Option<[f64; 2]>,
 }
 
 /// What the stage reaches at the allowable stress under equal actuator forces (pure z).
@@ -139,6 +146,8 @@ fn row(r: &StageCaseResult, allowable: f64) -> StageRow {
         } else {
             f64::INFINITY
         },
+        stable: r.stability.map(|s| s.0),
+        critical_load_factor: r.stability.and_then(|s| s.1),
     }
 }
 
@@ -349,6 +358,11 @@ pub fn stage_report(r: &StageResult) -> Report {
             "linear"
         }
     );
+    for c in &r.load_cases {
+        if let Some(w) = super::fem_static::stability_warning(&c.name, c.stable, c.critical_load_factor) {
+            md += &w;
+        }
+    }
     let mut t = Table::new(&[
         "load case",
         "F₁, F₂, F₃ (N)",

@@ -24,6 +24,28 @@
 //!
 //! Loads are fixed in space (no follower forces). The reported rotation of a node is its
 //! rotation vector log(R) (|θ| ≤ π).
+//!
+//! Acceptance and stability:
+//!
+//! * a Newton iteration converges when its residual is below the tolerance relative to the
+//!   applied load and the internal forces (reactions) of the last converged state — a scale
+//!   fixed for the step, which a wandering iterate cannot inflate — plus a round-off floor from
+//!   the stiffest element; every returned state is checked once more for nodal and global
+//!   equilibrium (forces and moments at the deformed positions) to 1e-6 of the applied load,
+//!   otherwise the solve fails naming the step;
+//! * the tangent is the consistent one: non-symmetric (sparse LU) where moments are applied
+//!   ([`Tangent`]), so Newton stays quadratic and the answer objective; symmetric (sparse
+//!   Cholesky) elsewhere;
+//! * the load step adapts (cut on failure, on a node rotating more than
+//!   [`MAX_STEP_ROTATION`] in a step, on an increment [`MAX_JUMP`] times its predictor, on an
+//!   iteration crossing an indefinite tangent; shrunk after slow and grown after fast steps),
+//!   with caps on cuts and steps so a failing case stops quickly;
+//! * each converged point is stable when the symmetric tangent of the reduced system is
+//!   positive definite (Cholesky succeeds with every pivot above
+//!   [`super::analysis::PIVOT_TOL`] of its diagonal) and it was reached without a jump; the
+//!   first loss is bracketed by the load factors of the last stable and first unstable
+//!   points. With applied moments this is the static (divergence) criterion on the symmetric
+//!   part only.
 
 use super::analysis::{prescribed_dofs, CaseResult};
 use super::constraints::{frame_block, DofMap, NONE};
@@ -32,9 +54,9 @@ use super::dof::NodeDof;
 use super::error::FemError;
 use super::model::{Beam, Element, FlexElement, LoadCase, Model};
 use super::recovery::{self, ElementResult, Statics};
-use super::solve::{Factor, Parallelism, SparsePattern, SymbolicFactor};
+use super::solve::{Factor, LuPattern, Parallelism, SparsePattern, SymbolicFactor};
 use super::transform::{rigid_arm, skew, Mat12};
-use nalgebra::{DMatrix, DVector, Matrix3, Matrix6, SMatrix, Vector3, Vector6};
+use nalgebra::{Matrix3, Matrix6, SMatrix, Vector3, Vector6};
 
 /// Options of the nonlinear solver.
 #[derive(Debug, Clone, PartialEq)]
@@ -44,13 +66,19 @@ pub struct NonlinearOptions {
     pub steps: usize,
     /// Newton iterations per step before the step is cut.
     pub max_iterations: usize,
-    /// Residual tolerance, relative to the larger of the applied loads and the internal forces
-    /// (reactions included), Euclidean norms over the equations.
+    /// Residual tolerance, relative to the step's force scale: the larger of the applied loads
+    /// (λ f) and the internal forces of the last converged state carried into the step
+    /// (reactions included), Euclidean norms over the equations. The scale is fixed for the
+    /// step, so it cannot grow with the error of a wandering iterate.
     pub tol_residual: f64,
     /// Energy tolerance: |δqₖ₋₁·rₖ| relative to |δq₀·r₀| of the step.
     pub tol_energy: f64,
     /// How many times a step may be halved (in a row) before the solve fails.
     pub max_cuts: usize,
+    /// Step cuts allowed over the whole load case (so a failing case stops quickly).
+    pub max_total_cuts: usize,
+    /// Which tangent the Newton iterations factorise.
+    pub tangent: Tangent,
     /// Crisfield's (cylindrical) arc-length control instead of load control. Only for cases
     /// without non-zero prescribed displacements.
     pub arc_length: bool,
@@ -69,11 +97,34 @@ impl Default for NonlinearOptions {
             tol_residual: 1e-8,
             tol_energy: 1e-12,
             max_cuts: 12,
+            max_total_cuts: 60,
+            tangent: Tangent::Auto,
             arc_length: false,
             track: Vec::new(),
             parallelism: Parallelism::Sequential,
         }
     }
+}
+
+/// The tangent stiffness of the Newton iterations.
+///
+/// With the spatial spin as rotational increment, the consistent tangent is not symmetric
+/// away from equilibrium, and at equilibrium its skew part is ½[M×] at every node carrying an
+/// applied moment M (the moment of loads fixed in space does not derive from a potential in
+/// the spin variables). Symmetrising it (Cholesky) keeps Newton quadratic only where no
+/// moment is applied; under large moments not about a fixed axis the symmetrised iteration
+/// converges slowly or not at all. The non-symmetric tangent needs a sparse LU.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Tangent {
+    /// Non-symmetric (LU) where the load case applies moments (directly, or as forces on
+    /// rigid-link slaves, which load their master with a moment); symmetric (Cholesky)
+    /// otherwise.
+    #[default]
+    Auto,
+    /// Always the symmetric part (sparse Cholesky; LU only for indefinite tangents).
+    Symmetric,
+    /// Always the consistent non-symmetric tangent (sparse LU).
+    Full,
 }
 
 /// One converged point of the equilibrium path.
@@ -83,6 +134,13 @@ pub struct PathPoint {
     pub lambda: f64,
     /// Values of [`NonlinearOptions::track`] at λ.
     pub values: Vec<f64>,
+    /// Whether the symmetric tangent stiffness of the reduced system is positive definite at
+    /// this point (a stable equilibrium against static perturbations), and the step reaching
+    /// it stayed on a continuous stable path (no jump over a limit point).
+    pub stable: bool,
+    /// Euclidean norms of the residual at each Newton iteration of the step that reached this
+    /// point (N and N·mm mixed, as the equations), the last one converged: the iteration log.
+    pub residuals: Vec<f64>,
 }
 
 /// Result of one load case.
@@ -103,6 +161,11 @@ pub struct NonlinearCase {
     pub steps: usize,
     /// Step cuts (halvings) that were needed.
     pub cuts: usize,
+    /// Whether every converged point of the path was stable ([`PathPoint::stable`]).
+    pub stable: bool,
+    /// When not stable: the load factors [lo, hi] between which stability was first lost (lo
+    /// the last stable converged point, hi the first unstable one or the end of a jump).
+    pub critical_load_factor: Option<[f64; 2]>,
     /// Co-rotated frame of each beam/flexibility element at the end (rows: local x, y, z in
     /// global coordinates; identity for springs).
     pub element_frames: Vec<[[f64; 3]; 3]>,
@@ -202,19 +265,51 @@ struct CaseCtx<'a> {
     u_c: Vec<f64>,
     pattern: SparsePattern,
     symbolic: SymbolicFactor,
+    /// Lower-triangle pairs of `pattern` (for the LU of an indefinite symmetric tangent).
+    lower_pairs: Vec<(usize, usize)>,
+    /// Both triangles of `pattern`, built on first need.
+    mirror: std::cell::OnceCell<Result<LuPattern, String>>,
+    /// Pattern of the full non-symmetric tangent when the Newton iterations use it.
+    full: Option<LuPattern>,
+    /// Round-off floor of the residual, N (N·mm): the co-rotated frames and deformations come
+    /// from nodal positions and rotations, so a balanced state's residual is ~ε times the
+    /// stiffest element's force at unit relative error (EA, and 4EI/L per radian); 1e-13 of
+    /// it leaves a margin of ~50 ε.
+    round: f64,
     /// Master nodes of rigid links (their 6×6 blocks carry the link geometric stiffness).
     masters: Vec<usize>,
     par: Parallelism,
 }
 
-/// Residual, tangent values and reference norm at one configuration.
+/// Residual, tangent values and force norms at one configuration.
 struct Eval {
     /// Reduced residual r = f_int − λ f_ext (equations).
     r: Vec<f64>,
-    /// Tangent triplet values in pattern order.
+    /// Tangent triplet values in pattern order (lower triangle of the symmetric part, or the
+    /// full non-symmetric tangent in the full pattern's order).
     values: Vec<f64>,
-    /// Reference force norm.
-    reference: f64,
+    /// ‖λ f_ext‖ carried to the independent nodes.
+    load: f64,
+    /// ‖f_int‖ carried to the independent nodes (constrained DOFs included: the reactions).
+    internal: f64,
+}
+
+/// Which tangent [`CaseCtx::evaluate`] assembles.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Assemble {
+    None,
+    /// Lower triangle of the symmetric part.
+    Symmetric,
+    /// The consistent non-symmetric tangent.
+    Full,
+}
+
+/// Linear solution of one Newton/arc-length iteration.
+struct Solution {
+    x: Vec<Vec<f64>>,
+    /// Whether the symmetric tangent was positive definite (`None` when the full tangent was
+    /// factorised by LU and definiteness is unknown).
+    positive_definite: Option<bool>,
 }
 
 fn fail(case: &str, step: usize, lambda: f64, residual: f64, reason: impl Into<String>) -> FemError {
@@ -352,8 +447,19 @@ impl CaseCtx<'_> {
         }
     }
 
-    /// Residual, tangent and reference norm at load factor `lambda`.
-    fn evaluate(&self, st: &State, lambda: f64, tangent: bool) -> Option<Eval> {
+    /// The tangent the Newton iterations use.
+    fn newton_tangent(&self) -> Assemble {
+        if self.full.is_some() {
+            Assemble::Full
+        } else {
+            Assemble::Symmetric
+        }
+    }
+
+    /// Residual, tangent and force norms at load factor `lambda`.
+    fn evaluate(&self, st: &State, lambda: f64, mode: Assemble) -> Option<Eval> {
+        let tangent = mode != Assemble::None;
+        let sym = mode == Assemble::Symmetric;
         let nn = self.model.nodes.len();
         let arms = self.arms(st);
         let mut f_int = vec![0.0; 6 * nn];
@@ -372,7 +478,7 @@ impl CaseCtx<'_> {
         let r: Vec<f64> = self.map.eq_dof.iter().map(|&g| net_i[g]).collect();
         let fi = self.to_independent(&arms, &f_int);
         let fe = self.to_independent(&arms, &self.f_ext);
-        let reference = norm(&fi).max(lambda.abs() * norm(&fe));
+        let (internal, load) = (norm(&fi), lambda.abs() * norm(&fe));
         if r.iter().any(|v| !v.is_finite()) {
             return None;
         }
@@ -387,13 +493,13 @@ impl CaseCtx<'_> {
                         any = true;
                     }
                 }
-                let ks = (k + k.transpose()) * 0.5;
+                let ks = if sym { (k + k.transpose()) * 0.5 } else { *k };
                 let kp = if any { t.transpose() * ks * t } else { ks };
                 let reps = [self.map.rep[nodes[0]], self.map.rep[nodes[1]]];
                 let eqs = self.map.element_eqs(reps, *n_nodes);
-                for_each_pair(&eqs, 6 * n_nodes, |a, b, _, _| values.push(kp[(a, b)]));
+                for_each_pair_in(sym, &eqs, 6 * n_nodes, |a, b, _, _| values.push(kp[(a, b)]));
             }
-            // Rigid links: δ(a × F_s) = [F_s×][a×] δw_m (a = R_m a₀), symmetrised.
+            // Rigid links: δ(a × F_s) = [F_s×][a×] δw_m (a = R_m a₀), symmetrised for Cholesky.
             for &m in &self.masters {
                 let mut g = Matrix3::zeros();
                 for n in 0..nn {
@@ -404,7 +510,8 @@ impl CaseCtx<'_> {
                     }
                 }
                 let mut g6 = Matrix6::zeros();
-                g6.fixed_view_mut::<3, 3>(3, 3).copy_from(&((g + g.transpose()) * 0.5));
+                let gs = if sym { (g + g.transpose()) * 0.5 } else { g };
+                g6.fixed_view_mut::<3, 3>(3, 3).copy_from(&gs);
                 if let Some(f) = self.model.frames.get(&m) {
                     let fb = frame_block(f);
                     g6 = fb.transpose() * g6 * fb;
@@ -412,57 +519,80 @@ impl CaseCtx<'_> {
                 let mut k12 = Mat12::zeros();
                 k12.fixed_view_mut::<6, 6>(0, 0).copy_from(&g6);
                 let eqs = self.map.element_eqs([m, m], 1);
-                for_each_pair(&eqs, 6, |a, b, _, _| values.push(k12[(a, b)]));
+                for_each_pair_in(sym, &eqs, 6, |a, b, _, _| values.push(k12[(a, b)]));
             }
             values.resize(values.len() + self.n_eq(), 0.0);
             if values.iter().any(|v| !v.is_finite()) {
                 return None;
             }
         }
-        Some(Eval { r, values, reference })
+        Some(Eval {
+            r,
+            values,
+            load,
+            internal,
+        })
     }
 
-    /// Solves K x = b for several right-hand sides: sparse Cholesky, or dense LU when the
-    /// tangent is not positive definite (past a limit point, near a bifurcation).
-    fn solve(&self, values: &[f64], rhs: &[Vec<f64>]) -> Result<Vec<Vec<f64>>, String> {
+    /// Solves K x = b for several right-hand sides with the tangent of [`Self::evaluate`] in
+    /// the Newton mode: the full tangent by sparse LU, or the symmetric one by sparse Cholesky
+    /// and, when that is not positive definite (past a limit point, near a bifurcation), by
+    /// sparse LU.
+    fn solve(&self, values: &[f64], rhs: &[Vec<f64>]) -> Result<Solution, String> {
         let n = self.n_eq();
+        let mut buf: Vec<f64> = rhs.iter().flatten().copied().collect();
+        let split = |buf: Vec<f64>| buf.chunks(n.max(1)).map(|c| c.to_vec()).collect::<Vec<_>>();
+        if let Some(full) = &self.full {
+            full.solve_in_place(values, &mut buf, rhs.len(), self.par)
+                .map_err(|e| format!("tangent stiffness: {e}"))?;
+            return Ok(Solution {
+                x: split(buf),
+                positive_definite: None,
+            });
+        }
+        if let Some(f) = self.cholesky(values)? {
+            f.solve_in_place(&mut buf, rhs.len()).map_err(|e| e.to_string())?;
+            return Ok(Solution {
+                x: split(buf),
+                positive_definite: Some(true),
+            });
+        }
+        let mirror = self
+            .mirror
+            .get_or_init(|| LuPattern::from_lower(n, &self.lower_pairs).map_err(|e| e.to_string()))
+            .as_ref()
+            .map_err(|e| e.clone())?;
+        let vals = LuPattern::mirror_values(&self.lower_pairs, values);
+        mirror
+            .solve_in_place(&vals, &mut buf, rhs.len(), self.par)
+            .map_err(|e| format!("tangent stiffness is singular: {e}"))?;
+        Ok(Solution {
+            x: split(buf),
+            positive_definite: Some(false),
+        })
+    }
+
+    /// Cholesky factor of the symmetric tangent (lower values), `None` when it is not
+    /// positive definite (a pivot at or below [`super::analysis::PIVOT_TOL`] of its diagonal).
+    fn cholesky(&self, values: &[f64]) -> Result<Option<Factor>, String> {
         let k = self.pattern.matrix(values).map_err(|e| e.to_string())?;
-        if let Ok(f) = Factor::new(&self.symbolic, &k, self.par) {
-            let diag = k.diagonal();
-            let ok = f
-                .pivots()
-                .iter()
-                .zip(&diag)
-                .all(|(p, d)| p.is_finite() && *p > super::analysis::PIVOT_TOL * d);
-            if ok {
-                let mut buf: Vec<f64> = rhs.iter().flatten().copied().collect();
-                f.solve_in_place(&mut buf, rhs.len()).map_err(|e| e.to_string())?;
-                return Ok(buf.chunks(n).map(|c| c.to_vec()).collect());
-            }
-        }
-        if n > 4000 {
-            return Err(format!(
-                "tangent stiffness is not positive definite ({n} equations, too many for the dense fallback)"
-            ));
-        }
-        let mut dm = DMatrix::<f64>::zeros(n, n);
-        let mut x = vec![0.0; n];
-        for j in 0..n {
-            x.iter_mut().for_each(|v| *v = 0.0);
-            x[j] = 1.0;
-            let col = k.mul_vec(&x);
-            for i in 0..n {
-                dm[(i, j)] = col[i];
-            }
-        }
-        let lu = dm.lu();
-        rhs.iter()
-            .map(|b| {
-                lu.solve(&DVector::from_column_slice(b))
-                    .map(|v| v.as_slice().to_vec())
-                    .ok_or_else(|| "tangent stiffness is singular".to_string())
-            })
-            .collect()
+        let Ok(f) = Factor::new(&self.symbolic, &k, self.par) else {
+            return Ok(None);
+        };
+        let diag = k.diagonal();
+        let ok = f
+            .pivots()
+            .iter()
+            .zip(&diag)
+            .all(|(p, d)| p.is_finite() && *p > super::analysis::PIVOT_TOL * d);
+        Ok(ok.then_some(f))
+    }
+
+    /// Whether the symmetric tangent at `st` is positive definite.
+    fn positive_definite(&self, st: &State, lambda: f64) -> bool {
+        self.evaluate(st, lambda, Assemble::Symmetric)
+            .and_then(|ev| self.cholesky(&ev.values).ok())
+            .is_some_and(|f| f.is_some())
     }
 
     fn tracked(&self, st: &State, track: &[NodeDof]) -> Vec<f64> {
@@ -512,51 +642,121 @@ fn for_each_pair(eqs: &[usize; 12], n: usize, mut f: impl FnMut(usize, usize, us
     }
 }
 
+/// [`for_each_pair`] (`lower`) or every pair of free DOFs (the full non-symmetric pattern).
+#[inline]
+fn for_each_pair_in(lower: bool, eqs: &[usize; 12], n: usize, mut f: impl FnMut(usize, usize, usize, usize)) {
+    if lower {
+        return for_each_pair(eqs, n, f);
+    }
+    for a in 0..n {
+        let ea = eqs[a];
+        if ea == NONE {
+            continue;
+        }
+        for (b, &eb) in eqs.iter().enumerate().take(n) {
+            if eb != NONE {
+                f(a, b, ea, eb);
+            }
+        }
+    }
+}
+
 /// Outcome of a failed step (for the error message).
 struct StepFail {
     residual: f64,
     reason: String,
 }
 
-/// Newton iterations at fixed λ from the current state. Returns the iteration count.
-fn newton(ctx: &CaseCtx, st: &mut State, lambda: f64, opts: &NonlinearOptions) -> Result<usize, StepFail> {
+/// A converged Newton step.
+struct NewtonOk {
+    iterations: usize,
+    /// Definiteness of the last factorised tangent after the first correction (a state within
+    /// one quadratically converging correction of the converged one); `None` when unknown
+    /// (full LU, or converged after one correction).
+    positive_definite: Option<bool>,
+    /// Whether some iteration met an indefinite symmetric tangent.
+    met_indefinite: bool,
+    /// Norm of the first correction (the tangent predictor of the step) and of the sum of all.
+    first: f64,
+    total: f64,
+    /// Residual norm per iteration.
+    residuals: Vec<f64>,
+    /// ‖f_int‖ at the converged state.
+    internal: f64,
+}
+
+/// Acceptance bound of a Newton iteration: `tol` relative to the step's force scale (the
+/// applied load at the step's λ and the internal forces — reactions — of the last converged
+/// state), plus the model's round-off floor [`CaseCtx::round`].
+fn bound(ctx: &CaseCtx, tol: f64, scale: f64) -> f64 {
+    tol * scale + ctx.round
+}
+
+/// Newton iterations at fixed λ from the current state.
+/// `converged_internal`: ‖f_int‖ (reactions included) of the last converged state.
+fn newton(
+    ctx: &CaseCtx,
+    st: &mut State,
+    lambda: f64,
+    opts: &NonlinearOptions,
+    converged_internal: f64,
+) -> Result<NewtonOk, StepFail> {
     let mut e0: f64 = 0.0;
     let mut last_dq: Option<Vec<f64>> = None;
     let mut r0 = f64::NAN;
+    let mut scale = 0.0;
     let mut r_prev = f64::INFINITY;
     let (mut best, mut stall) = (f64::INFINITY, 0);
     let mut acc = vec![0.0; ctx.n_eq()];
+    let mut out = NewtonOk {
+        iterations: 0,
+        positive_definite: None,
+        met_indefinite: false,
+        first: 0.0,
+        total: 0.0,
+        residuals: Vec::new(),
+        internal: 0.0,
+    };
+    let mode = ctx.newton_tangent();
     for it in 0..=opts.max_iterations {
-        let ev = ctx.evaluate(st, lambda, true).ok_or_else(|| StepFail {
+        let ev = ctx.evaluate(st, lambda, mode).ok_or_else(|| StepFail {
             residual: f64::NAN,
             reason: "degenerate element or non-finite internal force".into(),
         })?;
         let rn = norm(&ev.r);
+        out.residuals.push(rn);
         if it == 0 {
             r0 = rn;
+            scale = ev.load.max(converged_internal);
         }
-
-        let force_ok = rn <= opts.tol_residual * ev.reference || ev.reference == 0.0;
+        let done = |out: NewtonOk| {
+            Ok(NewtonOk {
+                iterations: it,
+                total: norm(&acc),
+                internal: ev.internal,
+                ..out
+            })
+        };
+        let force_ok = rn <= bound(ctx, opts.tol_residual, scale) || ev.load == 0.0 && ev.internal == 0.0;
         let energy_ok = match &last_dq {
-            None => rn == 0.0 || ev.reference == 0.0,
+            None => rn == 0.0 || ev.load == 0.0 && ev.internal == 0.0,
             Some(dq) => dot(dq, &ev.r).abs() <= opts.tol_energy * e0.max(f64::MIN_POSITIVE),
         };
-        if force_ok && (energy_ok || rn <= 1e-3 * opts.tol_residual * ev.reference) {
-            return Ok(it);
+        if force_ok && (energy_ok || rn <= bound(ctx, 1e-3 * opts.tol_residual, scale)) {
+            return done(out);
         }
         // Displacement + energy: for mechanisms moving almost force-free (ideal joints), the
-        // force reference is itself round-off, so converge on the corrections instead.
-        let disp_ok = last_dq
-            .as_ref()
-            .is_some_and(|dq| norm(dq) <= 1e-10 * acc.iter().map(|v| v * v).sum::<f64>().sqrt());
-        if energy_ok && disp_ok {
-            return Ok(it);
+        // force scale is itself round-off, so converge on the corrections instead — but never
+        // above the final equilibrium bound.
+        let disp_ok = last_dq.as_ref().is_some_and(|dq| norm(dq) <= 1e-10 * norm(&acc));
+        let near = rn <= bound(ctx, 1e-7, scale);
+        if energy_ok && disp_ok && near {
+            return done(out);
         }
-        // Round-off floor: the co-rotated frame comes from nodal positions, so for tiny
-        // deformations the residual stalls near ε·(element forces). Accept when the correction's
-        // energy is negligible and the residual no longer decreases.
-        if energy_ok && it > 1 && rn > 0.1 * r_prev && rn <= 1e-5 * ev.reference {
-            return Ok(it);
+        // Round-off floor: accept when the correction's energy is negligible and the residual
+        // no longer decreases, if it is within the final equilibrium bound.
+        if energy_ok && it > 1 && rn > 0.1 * r_prev && near {
+            return done(out);
         }
         if rn < 0.5 * best {
             best = rn;
@@ -564,8 +764,8 @@ fn newton(ctx: &CaseCtx, st: &mut State, lambda: f64, opts: &NonlinearOptions) -
         } else {
             stall += 1;
         }
-        if stall >= 3 && best <= 1e-5 * ev.reference {
-            return Ok(it);
+        if stall >= 3 && near {
+            return done(out);
         }
         r_prev = rn;
         if it == opts.max_iterations {
@@ -574,17 +774,23 @@ fn newton(ctx: &CaseCtx, st: &mut State, lambda: f64, opts: &NonlinearOptions) -
                 reason: format!("no convergence in {} iterations", opts.max_iterations),
             });
         }
-        if it > 2 && rn > 1e6 * r0.max(opts.tol_residual * ev.reference) {
+        if it > 2 && rn > 1e6 * r0.max(opts.tol_residual * scale) {
             return Err(StepFail {
                 residual: rn,
                 reason: "residual diverges".into(),
             });
         }
         let neg: Vec<f64> = ev.r.iter().map(|v| -v).collect();
-        let dq = ctx
+        let sol = ctx
             .solve(&ev.values, &[neg])
-            .map_err(|reason| StepFail { residual: rn, reason })?
-            .remove(0);
+            .map_err(|reason| StepFail { residual: rn, reason })?;
+        // The tangent of iteration 0 belongs to the previous converged state: it says nothing
+        // about the new one.
+        if it > 0 {
+            out.positive_definite = sol.positive_definite;
+        }
+        out.met_indefinite |= it > 0 && sol.positive_definite == Some(false);
+        let dq = sol.x.into_iter().next().unwrap_or_default();
         if dq.iter().any(|v| !v.is_finite()) {
             return Err(StepFail {
                 residual: rn,
@@ -593,6 +799,7 @@ fn newton(ctx: &CaseCtx, st: &mut State, lambda: f64, opts: &NonlinearOptions) -
         }
         if it == 0 {
             e0 = dot(&dq, &ev.r).abs();
+            out.first = norm(&dq);
         }
         ctx.apply(st, &dq, None);
         for (a, d) in acc.iter_mut().zip(&dq) {
@@ -634,22 +841,42 @@ fn solve_case(
     masters.dedup();
     // Pattern: element pairs, master blocks, one diagonal slot per equation.
     let n_eq = map.n_eq();
-    let mut pairs = Vec::new();
-    for e in elems {
-        let (nodes, nn_e) = match e {
-            ElemData::Corot { nodes, .. } => (*nodes, 2),
-            ElemData::Spring { nodes, n_nodes, .. } => (*nodes, *n_nodes),
-        };
-        let eqs = map.element_eqs([map.rep[nodes[0]], map.rep[nodes[1]]], nn_e);
-        for_each_pair(&eqs, 6 * nn_e, |_, _, r, c| pairs.push((r, c)));
-    }
-    for &m in &masters {
-        let eqs = map.element_eqs([m, m], 1);
-        for_each_pair(&eqs, 6, |_, _, r, c| pairs.push((r, c)));
-    }
-    pairs.extend((0..n_eq).map(|i| (i, i)));
+    let pairs_of = |lower: bool| {
+        let mut pairs = Vec::new();
+        for e in elems {
+            let (nodes, nn_e) = match e {
+                ElemData::Corot { nodes, .. } => (*nodes, 2),
+                ElemData::Spring { nodes, n_nodes, .. } => (*nodes, *n_nodes),
+            };
+            let eqs = map.element_eqs([map.rep[nodes[0]], map.rep[nodes[1]]], nn_e);
+            for_each_pair_in(lower, &eqs, 6 * nn_e, |_, _, r, c| pairs.push((r, c)));
+        }
+        for &m in &masters {
+            let eqs = map.element_eqs([m, m], 1);
+            for_each_pair_in(lower, &eqs, 6, |_, _, r, c| pairs.push((r, c)));
+        }
+        pairs.extend((0..n_eq).map(|i| (i, i)));
+        pairs
+    };
+    let pairs = pairs_of(true);
     let pattern = SparsePattern::new(n_eq, &pairs)?;
     let symbolic = SymbolicFactor::new(&pattern)?;
+    // Moments applied at independent nodes, or forces on rigid-link slaves (a moment on the
+    // master): the tangent's skew part survives at equilibrium ([`Tangent`]).
+    let moments = (0..nn).any(|n| {
+        let f = &f_ext[6 * n..6 * n + 6];
+        f[3..].iter().any(|v| *v != 0.0) || (map.rep[n] != n && f[..3].iter().any(|v| *v != 0.0))
+    });
+    let full = match opts.tangent {
+        Tangent::Full => true,
+        Tangent::Symmetric => false,
+        Tangent::Auto => moments,
+    };
+    let full = if full {
+        Some(LuPattern::new(n_eq, &pairs_of(false))?)
+    } else {
+        None
+    };
     let ctx = CaseCtx {
         model,
         elems,
@@ -659,6 +886,20 @@ fn solve_case(
         u_c,
         pattern,
         symbolic,
+        lower_pairs: pairs,
+        mirror: std::cell::OnceCell::new(),
+        round: 1e-14
+            * elems
+                .iter()
+                .map(|e| match e {
+                    ElemData::Corot { geom, k_local, .. } => {
+                        let k = |i: usize| k_local[(i, i)].abs();
+                        (0..3).map(k).fold(0.0, f64::max) * geom.l0 + (3..6).map(k).fold(0.0, f64::max)
+                    }
+                    ElemData::Spring { k, .. } => k.iter().fold(0.0f64, |m, v| m.max(v.abs())),
+                })
+                .fold(0.0, f64::max),
+        full,
         masters,
         par: opts.parallelism,
     };
@@ -669,8 +910,11 @@ fn solve_case(
     let mut path = vec![PathPoint {
         lambda: 0.0,
         values: ctx.tracked(&st, &opts.track),
+        stable: true,
+        residuals: Vec::new(),
     }];
     let has_prescribed = ctx.u_c.iter().any(|&v| v != 0.0);
+    let mut stab = Stability::default();
     let (iterations, steps, cuts, lambda) = if opts.arc_length {
         if has_prescribed {
             return Err(FemError::LoadCase {
@@ -678,15 +922,59 @@ fn solve_case(
                 reason: "arc-length control needs a load-controlled case (no non-zero prescribed displacements)".into(),
             });
         }
-        arc_length(&ctx, &mut st, opts, &case.name, &mut path)?
+        arc_length(&ctx, &mut st, opts, &case.name, &mut path, &mut stab)?
     } else {
-        load_control(&ctx, &mut st, 0.0, opts, &case.name, &mut path, 0)?
+        load_control(&ctx, &mut st, 0.0, opts, &case.name, &mut path, 0, &mut stab)?
     };
-    finish(&ctx, &st, &case.name, lambda, path, iterations, steps, cuts)
+    let mut out = finish(&ctx, &st, &case.name, lambda, path, iterations, steps, cuts)?;
+    out.stable = stab.bracket.is_none();
+    out.critical_load_factor = stab.bracket;
+    Ok(out)
 }
 
-/// Load (and prescribed-displacement) control from `lambda0` to 1 with step cutting.
-/// Returns (iterations, steps, cuts, final λ).
+/// Largest rotation of a node within one accepted step, rad: larger converged increments
+/// are cut, since a Newton iteration started that far from the solution can land on another
+/// branch of the equilibrium path.
+const MAX_STEP_ROTATION: f64 = 0.5;
+
+/// A converged step whose increment exceeds its tangent predictor this many times has
+/// jumped (over a limit point, or onto another branch) and is cut.
+const MAX_JUMP: f64 = 4.0;
+
+/// Halvings of the load step before a step that still jumps is accepted as a real
+/// discontinuity of the path (snap-through) and flagged unstable.
+const JUMP_CUTS: u32 = 6;
+
+/// Stability along the path: the first loss, bracketed by load factors.
+#[derive(Debug, Default)]
+struct Stability {
+    bracket: Option<[f64; 2]>,
+}
+
+impl Stability {
+    fn record(&mut self, lambda_prev: f64, lambda: f64, stable: bool) {
+        if !stable && self.bracket.is_none() {
+            self.bracket = Some([lambda_prev.min(lambda), lambda_prev.max(lambda)]);
+        }
+    }
+}
+
+/// Largest rotation between two states' nodal rotations, rad.
+fn max_rotation_change(a: &State, b: &State) -> f64 {
+    a.r.iter()
+        .zip(&b.r)
+        .map(|(ra, rb)| corot::rot_log(&(rb * ra.transpose())).norm())
+        .fold(0.0, f64::max)
+}
+
+/// Load (and prescribed-displacement) control from `lambda0` to 1. The load step starts at
+/// 1/steps (its largest value) and adapts: halved when Newton fails, when the converged
+/// increment rotates a node by more than [`MAX_STEP_ROTATION`] or exceeds [`MAX_JUMP`] times
+/// its tangent predictor, or when an iteration met an indefinite tangent between two stable
+/// states (a jump over an unstable stretch); halved for the next step after a slow one (≥ 12
+/// iterations), doubled back after a fast one (≤ 4). Every converged point is checked for
+/// stability (positive definite symmetric tangent). Returns (iterations, steps, cuts, λ).
+#[allow(clippy::too_many_arguments)]
 fn load_control(
     ctx: &CaseCtx,
     st: &mut State,
@@ -695,28 +983,76 @@ fn load_control(
     name: &str,
     path: &mut Vec<PathPoint>,
     step0: usize,
+    stab: &mut Stability,
 ) -> Result<(usize, usize, usize, f64), FemError> {
     let dl0 = 1.0 / opts.steps as f64;
+    let dl_jump = dl0 / f64::from(1u32 << JUMP_CUTS);
+    let dl_min = dl0 * 0.5f64.powi(opts.max_cuts.min(60) as i32);
+    // Steps allowed: the nominal count 10 times over (slow convergence halves the step).
+    let max_steps = 10 * opts.steps.max(10);
     let mut dl = dl0;
     let mut lambda = lambda0;
+    let mut prev_stable = path.last().map_or(true, |p| p.stable);
+    let mut internal = ctx.evaluate(st, lambda0, Assemble::None).map_or(0.0, |ev| ev.internal);
     let (mut iterations, mut steps, mut cuts, mut cut_run) = (0, 0, 0, 0);
     while lambda < 1.0 - 1e-12 {
         let target = if lambda + dl > 1.0 - 1e-9 { 1.0 } else { lambda + dl };
         let saved = st.clone();
         let dc: Vec<f64> = ctx.u_c.iter().map(|v| v * (target - lambda)).collect();
         ctx.apply(st, &vec![0.0; ctx.n_eq()], Some(&dc));
-        match newton(ctx, st, target, opts) {
-            Ok(it) => {
-                iterations += it;
+        let outcome = newton(ctx, st, target, opts, internal).and_then(|nk| {
+            let pd = match nk.positive_definite {
+                Some(p) => p,
+                None => ctx.positive_definite(st, target),
+            };
+            let rot = max_rotation_change(&saved, st);
+            let jump = nk.first > 0.0 && nk.total > MAX_JUMP * nk.first;
+            let crossed = prev_stable && pd && nk.met_indefinite;
+            let suspicious = rot > MAX_STEP_ROTATION || jump || crossed;
+            if suspicious && dl > dl_jump * (1.0 + 1e-9) {
+                let why = if rot > MAX_STEP_ROTATION {
+                    format!("a node rotates {rot:.3} rad in one step")
+                } else if jump {
+                    format!("the increment is {:.1}× its tangent predictor", nk.total / nk.first)
+                } else {
+                    "the iterations crossed an indefinite tangent".to_string()
+                };
+                return Err(StepFail {
+                    residual: nk.residuals.last().copied().unwrap_or(f64::NAN),
+                    reason: format!("step too large: {why}"),
+                });
+            }
+            Ok((nk, pd && !suspicious))
+        });
+        match outcome {
+            Ok((nk, stable)) => {
+                iterations += nk.iterations;
                 steps += 1;
+                internal = nk.internal;
+                stab.record(lambda, target, stable);
                 lambda = target;
                 cut_run = 0;
+                prev_stable = stable;
                 path.push(PathPoint {
                     lambda,
                     values: ctx.tracked(st, &opts.track),
+                    stable,
+                    residuals: nk.residuals,
                 });
-                if dl < dl0 && it <= 4 {
+                if dl < dl0 && nk.iterations <= 4 {
                     dl = (dl * 2.0).min(dl0);
+                } else if nk.iterations >= 12 && dl * 0.5 >= dl_min {
+                    dl *= 0.5;
+                    cuts += 1;
+                }
+                if steps > max_steps || cuts > opts.max_total_cuts {
+                    return Err(fail(
+                        name,
+                        step0 + steps,
+                        lambda,
+                        path.last().and_then(|p| p.residuals.last()).copied().unwrap_or(f64::NAN),
+                        format!("{steps} load steps and {cuts} step cuts (Δλ = {dl:.3e}) without reaching λ = 1: Newton converges too slowly"),
+                    ));
                 }
             }
             Err(f) => {
@@ -724,16 +1060,26 @@ fn load_control(
                 cuts += 1;
                 cut_run += 1;
                 dl *= 0.5;
-                if cut_run > opts.max_cuts {
+                if cut_run > opts.max_cuts || cuts > opts.max_total_cuts || dl < dl_min * (1.0 - 1e-9) {
+                    let lost = match stab.bracket {
+                        Some([lo, hi]) => format!(" (the path already lost stability between λ = {lo:.4} and {hi:.4})"),
+                        None => String::new(),
+                    };
+                    let hint = if lambda > 0.0 {
+                        format!("; no equilibrium found just beyond λ = {lambda:.6}: a limit point (snap-through) or a bifurcation is likely there{lost}; arc-length control can follow a limit point")
+                    } else {
+                        String::new()
+                    };
                     return Err(fail(
                         name,
                         step0 + steps + 1,
                         lambda,
                         f.residual,
                         format!(
-                            "{} after {} step cuts (last step Δλ = {:.3e})",
+                            "{} after {} step cuts ({} in a row; last step Δλ = {:.3e}){hint}",
                             f.reason,
-                            opts.max_cuts,
+                            cuts - 1,
+                            cut_run - 1,
                             2.0 * dl
                         ),
                     ));
@@ -752,6 +1098,7 @@ fn arc_length(
     opts: &NonlinearOptions,
     name: &str,
     path: &mut Vec<PathPoint>,
+    stab: &mut Stability,
 ) -> Result<(usize, usize, usize, f64), FemError> {
     let arms = ctx.arms(st);
     let f_red_full = ctx.to_independent(&arms, &ctx.f_ext);
@@ -761,15 +1108,17 @@ fn arc_length(
     let mut prev: Option<Vec<f64>> = None;
     let mut dl_arc = 0.0;
     let mut cut_run = 0;
-    let max_steps = 1000 * opts.steps.max(1);
+    let max_steps = 50 * opts.steps.max(10);
     while steps < max_steps {
         let saved = st.clone();
         let ev = ctx
-            .evaluate(st, lambda, true)
+            .evaluate(st, lambda, ctx.newton_tangent())
             .ok_or_else(|| fail(name, steps + 1, lambda, f64::NAN, "degenerate configuration"))?;
+        let scale = ev.internal.max(ev.load);
         let dt = ctx
             .solve(&ev.values, std::slice::from_ref(&f_red))
             .map_err(|r| fail(name, steps + 1, lambda, norm(&ev.r), r))?
+            .x
             .remove(0);
         let dtn = norm(&dt);
         if !(dtn > 0.0 && dtn.is_finite()) {
@@ -784,7 +1133,7 @@ fn arc_length(
         };
         let dlam = sign * dl_arc / dtn;
         if lambda + dlam >= 1.0 - 1e-12 {
-            let (it, s, c, l) = load_control(ctx, st, lambda, &one_step(opts), name, path, steps)?;
+            let (it, s, c, l) = load_control(ctx, st, lambda, &one_step(opts), name, path, steps, stab)?;
             return Ok((iterations + it, steps + s, cuts + c, l));
         }
         // Predictor.
@@ -793,11 +1142,17 @@ fn arc_length(
         let mut lam = lambda + dlam;
         let mut ok = None;
         let mut last_res = f64::NAN;
+        let mut residuals = Vec::new();
+        let mut pd = None;
         for it in 1..=opts.max_iterations {
-            let Some(ev) = ctx.evaluate(st, lam, true) else { break };
+            let Some(ev) = ctx.evaluate(st, lam, ctx.newton_tangent()) else {
+                break;
+            };
             let rn = norm(&ev.r);
             last_res = rn;
-            if rn <= opts.tol_residual * ev.reference || ev.reference == 0.0 {
+            residuals.push(rn);
+            let scale = scale.max(ev.load);
+            if rn <= bound(ctx, opts.tol_residual, scale) || scale == 0.0 && ev.internal == 0.0 {
                 ok = Some(it);
                 break;
             }
@@ -805,6 +1160,8 @@ fn arc_length(
             let Ok(sol) = ctx.solve(&ev.values, &[neg, f_red.clone()]) else {
                 break;
             };
+            pd = sol.positive_definite;
+            let sol = sol.x;
             let (dr, dtt) = (&sol[0], &sol[1]);
             let s: Vec<f64> = dq.iter().zip(dr).map(|(a, b)| a + b).collect();
             let a = dot(dtt, dtt);
@@ -838,12 +1195,19 @@ fn arc_length(
             Some(it) => {
                 iterations += it;
                 steps += 1;
+                let stable = match pd {
+                    Some(p) => p,
+                    None => ctx.positive_definite(st, lam),
+                };
+                stab.record(lambda, lam, stable);
                 lambda = lam;
                 cut_run = 0;
                 prev = Some(dq);
                 path.push(PathPoint {
                     lambda,
                     values: ctx.tracked(st, &opts.track),
+                    stable,
+                    residuals,
                 });
             }
             None => {
@@ -851,7 +1215,7 @@ fn arc_length(
                 cuts += 1;
                 cut_run += 1;
                 dl_arc *= 0.5;
-                if cut_run > opts.max_cuts {
+                if cut_run > opts.max_cuts || cuts > opts.max_total_cuts {
                     return Err(fail(
                         name,
                         steps + 1,
@@ -994,6 +1358,7 @@ fn finish(
             *a += b;
         }
     }
+    verify_equilibrium(ctx, st, name, steps, lambda, &f_int, &f_app, &gi, &reactions)?;
     let max_von_mises = elements
         .iter()
         .filter_map(|e| e.max_von_mises())
@@ -1022,6 +1387,94 @@ fn finish(
         iterations,
         steps,
         cuts,
+        stable: true,
+        critical_load_factor: None,
         element_frames: frames,
     })
+}
+
+/// Relative equilibrium bound of an accepted state (of the applied load; of the reactions
+/// when displacements are prescribed).
+const EQUILIBRIUM_TOL: f64 = 1e-6;
+
+/// Checks the accepted state: (1) the unbalanced force and moment at every free equation
+/// (nodal equilibrium at the deformed positions, spins as rotational unknowns), and (2) the
+/// global statics — applied loads, reactions and spring forces (springs count as supports:
+/// their small-rotation moments are not objective) summed as forces and moments about the
+/// origin at the deformed positions — both within [`EQUILIBRIUM_TOL`] of the applied load
+/// (plus the reactions where displacements are prescribed), with a round-off allowance of
+/// 1e-11 of the summed element forces. Fails naming the step otherwise.
+#[allow(clippy::too_many_arguments)]
+fn verify_equilibrium(
+    ctx: &CaseCtx,
+    st: &State,
+    name: &str,
+    step: usize,
+    lambda: f64,
+    f_int: &[f64],
+    f_app: &[f64],
+    gi: &[f64],
+    reactions: &[(usize, [f64; 6])],
+) -> Result<(), FemError> {
+    let model = ctx.model;
+    let nn = model.nodes.len();
+    let pos = |n: usize| Vector3::from(model.nodes[n]) + st.u[n];
+    let prescribed = ctx.u_c.iter().any(|v| *v != 0.0);
+    // Spring forces on their nodes (to be moved to the "support" side of the balance).
+    let mut f_spring = vec![0.0; 6 * nn];
+    for (ie, e) in ctx.elems.iter().enumerate() {
+        if let ElemData::Spring { nodes, n_nodes, .. } = e {
+            if let Some((_, _, _, f)) = ctx.element_response(st, ie, false) {
+                for s in 0..*n_nodes {
+                    for d in 0..6 {
+                        f_spring[6 * nodes[s] + d] += f[6 * s + d];
+                    }
+                }
+            }
+        }
+    }
+    let (mut sum, mut scale_f, mut scale_m) = ([0.0; 6], 0.0, 0.0);
+    let mut add = |x: Vector3<f64>, f: &[f64], sign: f64, counts: bool| {
+        let v = resultant(x, f);
+        for (a, b) in sum.iter_mut().zip(v) {
+            *a += sign * b;
+        }
+        if counts {
+            let fv = Vector3::new(f[0], f[1], f[2]);
+            scale_f += fv.norm();
+            scale_m += Vector3::new(f[3], f[4], f[5]).norm();
+        }
+    };
+    for n in 0..nn {
+        add(pos(n), &f_app[6 * n..6 * n + 6], 1.0, true);
+        add(pos(n), &f_spring[6 * n..6 * n + 6], -1.0, false);
+    }
+    for (n, r) in reactions {
+        add(pos(*n), r, 1.0, prescribed);
+    }
+    let internal: f64 = f_int.iter().map(|v| v.abs()).sum();
+    let arms = ctx.arms(st);
+    let fi = norm(&ctx.to_independent(&arms, f_int));
+    let residual: Vec<f64> = ctx.map.eq_dof.iter().map(|&g| gi[g]).collect();
+    let rn = norm(&residual);
+    let round = ctx.round + 1e-13 * internal;
+    let nodal_ok = rn <= EQUILIBRIUM_TOL * norm(f_app).max(fi) + round;
+    let fsum = Vector3::new(sum[0], sum[1], sum[2]).norm();
+    let msum = Vector3::new(sum[3], sum[4], sum[5]).norm();
+    // Moments about the origin: forces act on levers up to the model's extent from it.
+    let lever = (0..nn).map(|n| pos(n).norm()).fold(0.0, f64::max).max(1.0);
+    let force_ok = fsum <= EQUILIBRIUM_TOL * scale_f + round;
+    let moment_ok = msum <= EQUILIBRIUM_TOL * (scale_m + lever * scale_f) + round * lever;
+    if nodal_ok && force_ok && moment_ok {
+        return Ok(());
+    }
+    Err(fail(
+        name,
+        step,
+        lambda,
+        rn,
+        format!(
+            "the accepted state is not in equilibrium: unbalanced force {fsum:.3e} N and moment {msum:.3e} N·mm (statics at the deformed positions, against applied loads of {scale_f:.3e} N); nodal residual {rn:.3e}"
+        ),
+    ))
 }

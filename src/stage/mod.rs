@@ -143,6 +143,9 @@ pub struct StageCaseResult {
     pub max_von_mises: f64,
     /// Raw FE result.
     pub fe: fem::CaseResult,
+    /// Nonlinear solves only: whether the equilibrium path stayed stable, and if not the
+    /// load factors bracketing the first loss ([`fem::NonlinearCase::critical_load_factor`]).
+    pub stability: Option<(bool, Option<[f64; 2]>)>,
 }
 
 impl StageCaseResult {
@@ -565,6 +568,7 @@ impl StageModel {
                     fe.elements[first].section_forces[1] = end;
                 }
                 let mut out = self.read(fe, *d);
+                out.stability = Some((nl.stable, nl.critical_load_factor));
                 out.platform.psi = psi;
                 out.platform.theta = theta;
                 out.platform.phi = phi;
@@ -679,6 +683,7 @@ impl StageModel {
             spherical_stress: sph,
             max_von_mises: max_vm,
             fe,
+            stability: None,
         }
     }
 
