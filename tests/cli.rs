@@ -197,18 +197,28 @@ fn static_case_reproduces_a_cantilever() {
 
 #[test]
 fn readme_worked_example_matches_the_program() {
-    // The README's first command and the table it shows.
+    // The README's first command and the whole block of output it shows: every line between the
+    // command and the closing "..." (or the end of the block) is the program's output, in order.
     let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
-    let cmd = "cargo run --release -- run cases/ruiz2019_stage.json --format md";
-    assert!(readme.contains(cmd));
+    let cmd = "$ cargo run --release -- run cases/ruiz2019_stage.json --format md";
+    let start = readme.find(cmd).expect("README shows the first command and its output");
+    let shown: Vec<&str> = readme[start + cmd.len()..]
+        .lines()
+        .skip(1)
+        .take_while(|l| *l != "```" && *l != "...")
+        .collect();
+    assert!(shown.len() > 10, "README shows only {} lines", shown.len());
     let out = run(&["run", "cases/ruiz2019_stage.json", "--format", "md"]);
     assert_eq!(out.status.code(), Some(0));
     let md = stdout(&out);
-    for line in md
-        .lines()
-        .filter(|l| l.starts_with("| F") || l.starts_with("Structural stiffness"))
-    {
-        assert!(readme.contains(line), "README is out of date: {line}");
+    let printed: Vec<&str> = md.lines().collect();
+    for (k, line) in shown.iter().enumerate() {
+        assert_eq!(
+            Some(line),
+            printed.get(k),
+            "README worked example is out of date at its line {}",
+            k + 1
+        );
     }
     assert!(md.contains("| F20 | 20.00, 20.00, 20.00 | 0.9098, 0.9098, 0.9098 | 908.9 |"));
 }

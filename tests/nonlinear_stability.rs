@@ -224,4 +224,12 @@ fn leaf_stability_in_result_and_report() {
     assert!(lo <= 1.001 / 7.0 && hi >= 0.999 / 7.0, "[{lo}, {hi}]");
     let md = std::fs::read_to_string(d.join("out/report.md")).unwrap_or_default();
     assert!(md.contains("**Warning**") && md.contains("lost stability"), "{md}");
+    // ... and in the result's `warnings`, which every result carries.
+    let warned = v["warnings"].as_array().is_some_and(|w| {
+        w.iter().any(|s| {
+            s.as_str()
+                .is_some_and(|s| s.contains("7PE") && s.contains("lost stability"))
+        })
+    });
+    assert!(warned, "warnings: {}", v["warnings"]);
 }

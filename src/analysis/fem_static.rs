@@ -168,17 +168,21 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
     }
 }
 
-/// The Markdown warning for a nonlinear load case whose path lost stability.
-pub fn stability_warning(name: &str, stable: Option<bool>, bracket: Option<[f64; 2]>) -> Option<String> {
+/// The warning (plain text, for the result's `warnings`) for a nonlinear load case whose path
+/// lost stability.
+pub fn stability_text(name: &str, stable: Option<bool>, bracket: Option<[f64; 2]>) -> Option<String> {
     match (stable, bracket) {
         (Some(false), Some([lo, hi])) => Some(format!(
-            "> **Warning** (load case `{name}`): the equilibrium path lost stability between load factors {lo:.4} and {hi:.4} (the tangent stiffness stopped being positive definite, or the solution jumped over a limit point). The reported state may be unstable or reached by a snap; check for buckling or snap-through (arc length, an imperfection).\n\n"
+            "load case `{name}`: the equilibrium path lost stability between load factors {lo:.4} and {hi:.4} (the tangent stiffness stopped being positive definite, or the solution jumped over a limit point). The reported state may be unstable or reached by a snap; check for buckling or snap-through (arc length, an imperfection)."
         )),
-        (Some(false), None) => Some(format!(
-            "> **Warning** (load case `{name}`): the equilibrium path is not stable.\n\n"
-        )),
+        (Some(false), None) => Some(format!("load case `{name}`: the equilibrium path is not stable.")),
         _ => None,
     }
+}
+
+/// The Markdown callout of [`stability_text`], shown at the load case.
+pub fn stability_warning(name: &str, stable: Option<bool>, bracket: Option<[f64; 2]>) -> Option<String> {
+    stability_text(name, stable, bracket).map(|w| format!("> **Warning** ({w})\n\n"))
 }
 
 /// Markdown/CSV views.

@@ -378,7 +378,13 @@ fn run_analysis(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
             Ok(Outcome {
                 json: to_json(&r)?,
                 warnings: if s.nonlinear {
-                    stretch_warnings(&model, &r)
+                    let mut w = stretch_warnings(&model, &r);
+                    w.extend(
+                        r.load_cases
+                            .iter()
+                            .filter_map(|c| fem_static::stability_text(&c.name, c.stable, c.critical_load_factor)),
+                    );
+                    w
                 } else {
                     Vec::new()
                 },
@@ -414,7 +420,11 @@ fn run_analysis(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
             };
             Ok(Outcome {
                 json: to_json(&r)?,
-                warnings: Vec::new(),
+                warnings: r
+                    .load_cases
+                    .iter()
+                    .filter_map(|c| fem_static::stability_text(&c.name, c.stable, c.critical_load_factor))
+                    .collect(),
                 report: stage::stage_report(&r),
                 files,
             })
