@@ -2,6 +2,7 @@
 
 pub mod design;
 pub mod fem_static;
+pub mod finite;
 pub mod hinge;
 pub mod kinematics;
 pub mod modal;
@@ -84,16 +85,93 @@ pub type Files = Vec<(String, Vec<u8>)>;
 /// A finished analysis: the JSON result plus its reports and extra files (name, contents).
 #[derive(Debug, Clone)]
 pub struct Outcome {
-    /// The JSON result (INTERFACE.md).
+    /// The JSON result (INTERFACE.md); its top-level `warnings` holds [`Outcome::warnings`].
     pub json: serde_json::Value,
+    /// Things the user must know about the result (e.g. a hinge outside the range its solid
+    /// calibration covers); also listed in the JSON (`warnings`) and the Markdown report.
+    pub warnings: Vec<String>,
     /// Markdown and CSV views.
     pub report: Report,
     /// Extra output files (e.g. `.vtu`, `.svg`), written by `--out`.
     pub files: Files,
 }
 
-fn to_json<T: serde::Serialize>(v: &T) -> Result<serde_json::Value, AnalysisError> {
+/// The JSON value of a result, refusing any non-finite number: serde_json would write NaN and
+/// ±∞ as `null` silently. The error's context is the JSON path of the first offending number
+/// (e.g. `load_cases[0].max_von_mises`). Every analysis result goes through it; batch drivers
+/// (sweeps) call it on each row.
+pub fn to_checked_json<T: serde::Serialize>(v: &T) -> Result<serde_json::Value, AnalysisError> {
+    finite::first_non_finite(v).map_err(|(path, msg)| {
+        AnalysisError::new(
+            if path.is_empty() || path == "." { "output".to_string() } else { path },
+            format!("the computed number is not finite ({msg}): the input is outside the range the model can represent (overflow) or the model is degenerate"),
+        )
+    })?;
     serde_json::to_value(v).map_err(|e| AnalysisError::new("output", e.to_string()))
+}
+
+fn to_json<T: serde::Serialize>(v: &T) -> Result<serde_json::Value, AnalysisError> {
+    to_checked_json(v)
+}
+
+/// The `## Warnings` section of the Markdown report (empty when there are none).
+pub fn warnings_markdown(warnings: &[String]) -> String {
+    if warnings.is_empty() {
+        return String::new();
+    }
+    let mut md = String::from("\n## Warnings\n\n");
+    for w in warnings {
+        md += &format!("- {w}\n");
+    }
+    md
+}
+
+/// Calibration-range warnings of a hinge, prefixed with where it sits in the case file.
+pub fn hinge_warnings(at: &str, spec: &crate::hinge::HingeSpec) -> Vec<String> {
+    match spec.profile() {
+        Ok(p) => crate::hinge::calibration::calibration_warnings(&p)
+            .into_iter()
+            .map(|w| format!("{at}: {w}"))
+            .collect(),
+        Err(_) => Vec::new(),
+    }
+}
+
+/// Calibration warnings of a stage design's two hinges.
+fn stage_warnings(d: &crate::stage::StageDesign) -> Vec<String> {
+    let mut w = hinge_warnings("stage.revolute", &d.revolute);
+    w.extend(hinge_warnings("stage.spherical", &d.spherical));
+    w
+}
+
+/// Calibration warnings of the hinges of the design found by a `design` run.
+fn design_warnings(case: &crate::case::design::DesignCase, r: &design::DesignResult) -> Vec<String> {
+    use crate::design::stage_design::{with_params, PARAMETERS};
+    let Ok((base, _, _)) = case.validate() else {
+        return Vec::new();
+    };
+    let mut p = [0.0; 5];
+    for (v, k) in p.iter_mut().zip(PARAMETERS) {
+        match r.design.get(k).and_then(|v| v.as_f64()) {
+            Some(x) => *v = x,
+            None => return Vec::new(),
+        }
+    }
+    stage_warnings(&with_params(&base, &p))
+        .into_iter()
+        .map(|w| format!("design found, {w}"))
+        .collect()
+}
+
+/// Warnings that depend only on the case (hinge calibration ranges).
+fn case_warnings(case: &Case) -> Vec<String> {
+    match case {
+        Case::Hinge(h) => hinge_warnings("hinge", &h.hinge),
+        Case::Stage(s) => s.validate().map(|(d, _)| stage_warnings(&d)).unwrap_or_default(),
+        Case::FemVsFkp(s) => s.validate().map(|d| stage_warnings(&d)).unwrap_or_default(),
+        Case::Sensitivity(s) => s.validate().map(|d| stage_warnings(&d)).unwrap_or_default(),
+        _ => Vec::new(),
+    }
 }
 
 /// Validates a case (everything checked before solving).
@@ -107,7 +185,10 @@ pub fn check(case: &Case) -> Result<(), CaseError> {
         Case::FemVsFkp(s) => s.validate().map(|_| ()),
         Case::Sensitivity(s) => s.validate().map(|_| ()),
         Case::Design(s) => s.validate().map(|_| ()),
-        Case::Modal(m) => m.model.build_model(false).map(|_| ()),
+        Case::Modal(m) => {
+            crate::case::limits::check_modal(m.modes, m.model.nodes.len())?;
+            m.model.build_model(false).map(|_| ())
+        }
     }
 }
 
@@ -124,8 +205,19 @@ pub fn run_with_files(case: &Case) -> Result<Outcome, RunError> {
 }
 
 fn run_opts(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
+    let mut out = run_analysis(case, with_files)?;
+    out.warnings.extend(case_warnings(case));
+    if let serde_json::Value::Object(m) = &mut out.json {
+        m.insert("warnings".into(), serde_json::Value::from(out.warnings.clone()));
+    }
+    out.report.markdown += &warnings_markdown(&out.warnings);
+    Ok(out)
+}
+
+fn run_analysis(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
     let plain = |json, report| Outcome {
         json,
+        warnings: Vec::new(),
         report,
         files: vec![],
     };
@@ -148,15 +240,18 @@ fn run_opts(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
             };
             Ok(Outcome {
                 json: to_json(&r)?,
+                warnings: Vec::new(),
                 report: fem_static::report(&r),
                 files,
             })
         }
         Case::Modal(m) => {
+            crate::case::limits::check_modal(m.modes, m.model.nodes.len())?;
             let model = m.model.build_model(false)?;
             let (r, raw) = modal::solve(&model, m.modes, m.shift_hz)?;
             Ok(Outcome {
                 json: to_json(&r)?,
+                warnings: Vec::new(),
                 report: modal::report(&r),
                 files: if with_files {
                     vec![("modes.vtu".to_string(), modal::vtu(&model, &raw)?)]
@@ -178,6 +273,7 @@ fn run_opts(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
             };
             Ok(Outcome {
                 json: to_json(&r)?,
+                warnings: Vec::new(),
                 report: stage::stage_report(&r),
                 files,
             })
@@ -187,6 +283,7 @@ fn run_opts(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
             let (report, files) = stage::fem_vs_fkp_report(&r);
             Ok(Outcome {
                 json: to_json(&r)?,
+                warnings: Vec::new(),
                 report,
                 files,
             })
@@ -197,7 +294,9 @@ fn run_opts(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
         }
         Case::Design(s) => {
             let r = design::run_design(s)?;
-            Ok(plain(to_json(&r)?, design::design_report(&r)))
+            let mut out = plain(to_json(&r)?, design::design_report(&r));
+            out.warnings = design_warnings(s, &r);
+            Ok(out)
         }
         Case::Hinge(h) => {
             let r = hinge::solve(h)?;

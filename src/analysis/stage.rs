@@ -62,23 +62,31 @@ pub struct StageRow {
     pub max_von_mises: f64,
     /// Peak stress per hinge, MPa.
     pub hinge_stress: HingeStress,
-    /// σ_sph,max / σ_rev,max.
-    #[serde(rename = "T")]
+    /// σ_sph,max / σ_rev,max (`null` when the case stresses no revolute hinge).
+    #[serde(rename = "T", serialize_with = "crate::report::numbers::ratio_or_null")]
     pub t: f64,
-    /// Load factor on this case that brings the peak stress to the allowable.
+    /// Load factor on this case that brings the peak stress to the allowable (`null`: the case
+    /// stresses nothing, or the material has no allowable).
+    #[serde(serialize_with = "crate::report::numbers::unbounded_as_null")]
     pub factor_at_allowable: f64,
 }
 
 /// What the stage reaches at the allowable stress under equal actuator forces (pure z).
 #[derive(Debug, Clone, Serialize)]
+///
+/// All four are `null` when the material has no allowable stress (unbounded).
 pub struct AtAllowable {
     /// Allowable stress used, MPa.
+    #[serde(serialize_with = "crate::report::numbers::unbounded_as_null")]
     pub allowable: f64,
     /// Actuator force each, N.
+    #[serde(serialize_with = "crate::report::numbers::unbounded_as_null")]
     pub force: f64,
     /// Stroke, mm (mean of the three).
+    #[serde(serialize_with = "crate::report::numbers::unbounded_as_null")]
     pub stroke: f64,
     /// Platform z, mm.
+    #[serde(serialize_with = "crate::report::numbers::unbounded_as_null")]
     pub z: f64,
 }
 

@@ -11,8 +11,10 @@
 //! Lines become beams, quads `shell4`, triangles `shell4` with the third node repeated (a
 //! degenerate quadrilateral: conforming, but stiffer than a real triangle — prefer quads).
 //! A group with `fix` supports every node of its entities. Elements of groups not in the
-//! mapping, and elements of other types, are skipped (counted in the notes); Gmsh node tags are
-//! renumbered densely in file order.
+//! mapping, and points, are skipped (counted in the notes); any other element type in a group
+//! with a section (second-order lines, triangles and quadrangles, volume elements) is refused
+//! by name. Binary `.msh` files are refused (save as ASCII). Gmsh node tags are renumbered
+//! densely in file order.
 
 use super::error::CaseError;
 use super::mesh::{DofName, ElementSpec, MeshSpec, SupportSpec};
@@ -85,8 +87,98 @@ struct RawElement {
     entity: (usize, i64),
 }
 
+/// Name of a Gmsh element type (Gmsh reference manual, "MSH file format", element types).
+pub fn element_type_name(kind: usize) -> String {
+    let name = match kind {
+        1 => "2-node line",
+        2 => "3-node triangle",
+        3 => "4-node quadrangle",
+        4 => "4-node tetrahedron",
+        5 => "8-node hexahedron",
+        6 => "6-node prism",
+        7 => "5-node pyramid",
+        8 => "3-node second-order line",
+        9 => "6-node second-order triangle",
+        10 => "9-node second-order quadrangle",
+        11 => "10-node second-order tetrahedron",
+        12 => "27-node second-order hexahedron",
+        13 => "18-node second-order prism",
+        14 => "14-node second-order pyramid",
+        15 => "1-node point",
+        16 => "8-node second-order quadrangle",
+        17 => "20-node second-order hexahedron",
+        18 => "15-node second-order prism",
+        19 => "13-node second-order pyramid",
+        20 => "9-node third-order triangle (incomplete)",
+        21 => "10-node third-order triangle",
+        26 => "4-node third-order line",
+        27 => "5-node fourth-order line",
+        28 => "6-node fifth-order line",
+        29 => "20-node third-order tetrahedron",
+        36 => "16-node third-order quadrangle",
+        _ => "higher-order or special element",
+    };
+    format!("{name} (Gmsh type {kind})")
+}
+
+/// The text of a `.msh` file: refuses binary files (Gmsh's binary MSH, file-type 1 in
+/// `$MeshFormat`) and anything that is not UTF-8 text, saying which.
+pub fn msh_text(bytes: &[u8]) -> Result<&str, CaseError> {
+    // The header is ASCII even in binary files: "$MeshFormat\nversion file-type data-size\n".
+    let head = &bytes[..bytes.len().min(256)];
+    let head = String::from_utf8_lossy(head);
+    let mut lines = head.lines().map(str::trim).filter(|l| !l.is_empty());
+    if lines.next() == Some("$MeshFormat") {
+        if let Some(l) = lines.next() {
+            if l.split_whitespace().nth(1) == Some("1") {
+                return Err(CaseError::value(
+                    "mesh",
+                    format!("\"{l}\""),
+                    "binary MSH files are not supported: save the mesh as ASCII (Gmsh: Mesh.Binary = 0, Mesh.MshFileVersion = 4.1)",
+                ));
+            }
+        }
+    }
+    std::str::from_utf8(bytes).map_err(|e| {
+        CaseError::new(
+            "mesh",
+            format!("the .msh file is not text ({e}); flexfem reads Gmsh MSH 4.1 ASCII files"),
+        )
+    })
+}
+
+/// Maps an error in the model built from a `.msh` file to the user's mapping: an error at
+/// `elements[k].FIELD` of an element built from physical group G becomes
+/// `gmsh.groups.G.FIELD` (the user wrote the section and material there, not per element).
+pub fn group_error(e: CaseError, origin: &[String], file: &str) -> CaseError {
+    let Some(rest) = e.path.strip_prefix("elements[") else {
+        return e;
+    };
+    let Some((idx, field)) = rest.split_once(']') else {
+        return e;
+    };
+    let Some(group) = idx.parse::<usize>().ok().and_then(|k| origin.get(k)) else {
+        return e;
+    };
+    let field = field.trim_start_matches('.');
+    let key = field.split(['.', '[']).next().unwrap_or("");
+    if matches!(key, "section" | "material" | "up") {
+        CaseError::new(format!("gmsh.groups.{group}.{field}"), e.message)
+    } else {
+        CaseError::new(
+            format!("gmsh.groups.{group}"),
+            format!("element {idx} of {file} (group \"{group}\"), `{field}`: {}", e.message),
+        )
+    }
+}
+
 /// Parses the text of a `.msh` 4.x ASCII file and builds the model part of a case.
 pub fn parse_msh(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, Vec<String>), CaseError> {
+    parse_msh_traced(text, mapping).map(|(spec, notes, _)| (spec, notes))
+}
+
+/// [`parse_msh`], plus the physical group each built element comes from (for error paths).
+pub fn parse_msh_traced(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, Vec<String>, Vec<String>), CaseError> {
     let mut lines = Lines {
         it: text.lines().enumerate(),
         line: 0,
@@ -142,6 +234,8 @@ pub fn parse_msh(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, Vec<Str
             "$Nodes" => {
                 let h: Vec<usize> = nums(lines.next()?, lines.line)?;
                 let blocks = need(&h, 0, lines.line)?;
+                // numEntityBlocks numNodes minNodeTag maxNodeTag: refuse before reading.
+                super::limits::check_nodes("mesh", need(&h, 1, lines.line)?)?;
                 for _ in 0..blocks {
                     let b: Vec<i64> = nums(lines.next()?, lines.line)?;
                     if need(&b, 2, lines.line)? != 0 {
@@ -222,9 +316,10 @@ pub fn parse_msh(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, Vec<Str
         ..Default::default()
     };
     let mut skipped = 0usize;
+    let mut origin: Vec<String> = Vec::new();
     let mut fixed: BTreeMap<usize, Vec<DofName>> = BTreeMap::new();
     for (ie, e) in elements.iter().enumerate() {
-        let groups: Vec<&GroupSpec> = entity_groups
+        let groups: Vec<(&String, &GroupSpec)> = entity_groups
             .get(&e.entity)
             .map(|ps| {
                 ps.iter()
@@ -233,7 +328,7 @@ pub fn parse_msh(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, Vec<Str
                             .get(&(e.entity.0, *p))
                             .or_else(|| names.get(&(e.entity.0, p.abs())))
                     })
-                    .filter_map(|n| mapping.groups.get(n))
+                    .filter_map(|n| mapping.groups.get_key_value(n))
                     .collect()
             })
             .unwrap_or_default();
@@ -250,7 +345,7 @@ pub fn parse_msh(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, Vec<Str
             skipped += 1;
             continue;
         }
-        for g in &groups {
+        for &(gname, g) in &groups {
             if !g.fix.is_empty() {
                 for &n in &nodes {
                     fixed.entry(n).or_default().extend(g.fix.iter().copied());
@@ -277,12 +372,26 @@ pub fn parse_msh(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, Vec<Str
                     section: section.clone(),
                     material: material.clone(),
                 },
-                _ => {
+                (15, _) => {
                     skipped += 1;
                     continue;
                 }
+                (kind, n) => {
+                    let what = if [1, 2, 3].contains(&kind) {
+                        format!("a {} with {n} nodes", element_type_name(kind))
+                    } else {
+                        format!("{}s", element_type_name(kind))
+                    };
+                    return Err(CaseError::new(
+                        format!("gmsh.groups.{gname}"),
+                        format!(
+                            "the group has {what} (.msh element {ie}); flexfem builds beams from 2-node lines and shells from 3-node triangles and 4-node quadrangles only: mesh this group with first-order elements (Gmsh: Mesh.ElementOrder = 1, and no volume elements in a group with a section)"
+                        ),
+                    ));
+                }
             };
             spec.elements.push(el);
+            origin.push(gname.clone());
         }
     }
     for (node, mut fix) in fixed {
@@ -291,10 +400,10 @@ pub fn parse_msh(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, Vec<Str
         spec.supports.push(SupportSpec { node, fix });
     }
     let notes = vec![format!(
-        "gmsh: {} nodes, {} elements built, {} skipped (no mapped group or unsupported type); triangles as degenerate quads",
+        "gmsh: {} nodes, {} elements built, {} skipped (no mapped group, or points); triangles as degenerate quads",
         spec.nodes.len(),
         spec.elements.len(),
         skipped
     )];
-    Ok((spec, notes))
+    Ok((spec, notes, origin))
 }

@@ -24,14 +24,24 @@ pub struct HingeCase {
     pub steps: Option<usize>,
 }
 
+/// A number as typed in a case file: plain, or in exponent form when very large or small
+/// (`1e300`, not 301 digits).
+fn number(v: f64) -> String {
+    if v.is_finite() && v != 0.0 && !(1e-4..1e9).contains(&v.abs()) {
+        format!("{v:e}")
+    } else {
+        v.to_string()
+    }
+}
+
 /// Maps a hinge-library error to the JSON path of the offending field.
 pub fn hinge_error(e: &HingeError, hinge_path: &str, material_path: &str) -> CaseError {
     match e {
         HingeError::InvalidGeometry { param, value, allowed } => {
-            CaseError::value(format!("{hinge_path}.{param}"), value, allowed)
+            CaseError::value(format!("{hinge_path}.{param}"), number(*value), allowed)
         }
         HingeError::InvalidMaterial { param, value, allowed } => {
-            CaseError::value(format!("{material_path}.{param}"), value, allowed)
+            CaseError::value(format!("{material_path}.{param}"), number(*value), allowed)
         }
     }
 }

@@ -9,6 +9,7 @@ pub mod error;
 pub mod gmsh;
 pub mod hinge;
 pub mod kinematics;
+pub mod limits;
 pub mod material;
 pub mod mesh;
 pub mod stage;
@@ -89,9 +90,24 @@ pub fn from_value<T: DeserializeOwned>(value: Value, prefix: &str) -> Result<T, 
 
 /// Reads and parses a case file; files it refers to (`mesh`) are looked up beside it.
 pub fn load(path: &Path) -> Result<Case, CaseError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CaseError::new(".", format!("cannot read case file {}: {e}", path.display())))?;
+    let shown = format!("\"{}\"", path.display());
+    let bytes = limits::read_file(".", &shown, path)?;
+    let text = String::from_utf8(bytes).map_err(|e| {
+        CaseError::new(
+            ".",
+            format!("cannot read case file {}: not UTF-8 text ({e})", path.display()),
+        )
+    })?;
     parse_in(&text, path.parent())
+}
+
+/// Refuses a model (a JSON object with `nodes`) with more nodes than [`limits::Limits::nodes`],
+/// before the nodes are built.
+fn check_node_count(field: &str, model: &Value) -> Result<(), CaseError> {
+    match model.get("nodes").and_then(Value::as_array) {
+        Some(a) => limits::check_nodes(field, a.len()),
+        None => Ok(()),
+    }
 }
 
 /// Parses case-file text (relative file references resolve against the working folder).
@@ -116,14 +132,8 @@ pub fn resolve_file(name: &str, base: Option<&Path>) -> PathBuf {
 
 fn read_json(path_field: &str, name: &str, base: Option<&Path>) -> Result<Value, CaseError> {
     let file = resolve_file(name, base);
-    let text = std::fs::read_to_string(&file).map_err(|e| {
-        CaseError::value(
-            path_field,
-            format!("\"{name}\""),
-            format!("cannot read {}: {e}", file.display()),
-        )
-    })?;
-    serde_json::from_str(&text).map_err(|e| {
+    let bytes = limits::read_file(path_field, &format!("\"{name}\""), &file)?;
+    serde_json::from_slice(&bytes).map_err(|e| {
         CaseError::value(
             path_field,
             format!("\"{name}\""),
@@ -252,6 +262,7 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                 None | Some(Value::Null) => None,
                 Some(v) => Some(from_value::<gmsh::GmshMapping>(v, "gmsh")?),
             };
+            check_node_count("nodes", &value)?;
             let inline: mesh::MeshSpec = from_value(value, "")?;
             let gmsh_kept = gmsh_map.clone();
             let model = match &mesh_name {
@@ -263,16 +274,17 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                         ));
                     };
                     let file = resolve_file(name, base);
-                    let text = std::fs::read_to_string(&file).map_err(|e| {
-                        CaseError::value(
-                            "mesh",
-                            format!("\"{name}\""),
-                            format!("cannot read {}: {e}", file.display()),
-                        )
-                    })?;
-                    let (from_file, _notes) = gmsh::parse_msh(&text, &mapping)
+                    let bytes = limits::read_file("mesh", &format!("\"{name}\""), &file)?;
+                    let text = gmsh::msh_text(&bytes)
                         .map_err(|e| CaseError::new(e.path.clone(), format!("in {name}: {}", e.message)))?;
-                    mesh::MeshSpec::merge_inline(from_file, inline)?
+                    let (from_file, _notes, origin) = gmsh::parse_msh_traced(text, &mapping)
+                        .map_err(|e| CaseError::new(e.path.clone(), format!("in {name}: {}", e.message)))?;
+                    let merged = mesh::MeshSpec::merge_inline(from_file, inline)?;
+                    // Errors in elements built from the .msh belong to the user's group mapping.
+                    merged
+                        .build_model(false)
+                        .map_err(|e| gmsh::group_error(e, &origin, name))?;
+                    merged
                 }
                 Some(_) if gmsh_map.is_some() => {
                     return Err(CaseError::new(
@@ -282,6 +294,7 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                 }
                 Some(name) => {
                     let mut mv = read_json("mesh", name, base)?;
+                    check_node_count("mesh", &mv)?;
                     if let Value::Object(m) = &mut mv {
                         m.remove("analysis");
                     }

@@ -482,8 +482,14 @@ impl CaseCtx<'_> {
     }
 }
 
+/// Euclidean norm, scaled by the largest entry so that it neither overflows (entries beyond
+/// ~1e154 would square to ∞ and make every convergence test pass as ∞ ≤ ∞) nor underflows.
 fn norm(v: &[f64]) -> f64 {
-    v.iter().map(|x| x * x).sum::<f64>().sqrt()
+    let m = v.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    if m == 0.0 || !m.is_finite() {
+        return m;
+    }
+    m * v.iter().map(|x| (x / m) * (x / m)).sum::<f64>().sqrt()
 }
 
 fn dot(a: &[f64], b: &[f64]) -> f64 {

@@ -29,6 +29,7 @@
 //!
 //! Units: mm, N, MPa; rotations in radians inside, degrees only in `max_rotation_deg`.
 
+pub mod calibration;
 pub mod closed_form;
 pub mod error;
 pub mod integrate;
@@ -194,7 +195,9 @@ pub struct Stiffness {
     pub compliance: [[f64; 6]; 6],
     /// Peak stress per unit compliant-axis moment, MPa per N·mm.
     pub stress_per_moment: f64,
-    /// Compliant-axis rotation at which the peak stress reaches the material's allowable, deg.
+    /// Compliant-axis rotation at which the peak stress reaches the material's allowable, deg
+    /// (`null`: the material has no allowable stress).
+    #[serde(serialize_with = "crate::report::numbers::unbounded_as_null")]
     pub max_rotation_deg: f64,
     /// Saint-Venant (free-warping) torsional stiffness, N·mm/rad, for comparison.
     pub k_torsion_saint_venant: f64,

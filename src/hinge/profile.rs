@@ -181,6 +181,16 @@ fn arc_cap(ext: f64, depth: f64, t: f64, h: f64) -> Option<f64> {
     }
 }
 
+fn contour_t(c: &Contour) -> f64 {
+    match *c {
+        Contour::Circular { t, .. }
+        | Contour::Elliptical { t, .. }
+        | Contour::CornerFilleted { t, .. }
+        | Contour::Leaf { t, .. }
+        | Contour::SphericalNeck { t, .. } => t,
+    }
+}
+
 impl Profile {
     /// Validates and builds a rectangular-section profile (all families but the neck).
     pub fn rectangular(contour: Contour, w: f64, h: f64, blank: f64) -> Result<Self, HingeError> {
@@ -189,7 +199,7 @@ impl Profile {
         non_negative("blank_length", blank)?;
         let thin = |t: f64| -> Result<(), HingeError> {
             if t.is_finite() && t > 0.0 && t < h {
-                Ok(())
+                positive("t", t)
             } else {
                 Err(geom("t", t, format!("must be > 0 and < h = {h}")))
             }
@@ -229,6 +239,17 @@ impl Profile {
                 return Err(geom("type", f64::NAN, "spherical_neck is built with Profile::neck"))
             }
         };
+        if 2.0 * (half_notch + blank) < super::error::MIN_LENGTH {
+            // A notch so shallow against its radius that its length rounds to nothing.
+            return Err(geom(
+                "t",
+                contour_t(&contour),
+                format!(
+                    "the hinge is shorter than {:e} mm: the notch depth (h − t)/2 is too shallow to give it a length; make t smaller than h or give blank_length > 0",
+                    super::error::MIN_LENGTH
+                ),
+            ));
+        }
         Ok(Profile {
             contour,
             w,
@@ -249,6 +270,7 @@ impl Profile {
         if !(t.is_finite() && t > 0.0 && t < h) {
             return Err(geom("t", t, format!("neck diameter must be > 0 and < h = {h}")));
         }
+        positive("t", t)?;
         Ok(Profile {
             contour: Contour::SphericalNeck { l, t, r },
             w: h,

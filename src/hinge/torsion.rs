@@ -14,11 +14,21 @@
 //! (θ' = 0): the clamped face, and the loading face which is rigid. θ = 0 at the clamped face; a
 //! torque T at the loaded face; k = T/θ(end).
 //!
-//! Discretisation: 2-node Hermite-cubic elements (DOFs θ, θ'), GJ and EΓ sampled at 4 Gauss
-//! points per element (exact for piecewise-constant properties), nodes at every profile
+//! With no distributed torque the total torque is the same in every section,
+//! GJ θ' − (EΓ θ'')' = T, so the rate of twist φ = θ' solves the second-order problem
+//! −(EΓ φ')' + GJ φ = T, φ = 0 at both faces, and θ(end) = ∫φ dx. Solving for φ rather than θ
+//! matters numerically: in θ a stiff blank in series with a thin notch is a chain of springs
+//! whose elimination cancels (the soft compliance is lost below ε × the stiff one: NaN for a
+//! 1 µm leaf between 10 mm blanks); in φ every section carries the torque itself and
+//! neighbours are coupled only through EΓ.
+//!
+//! Discretisation: 3-node quadratic Lagrange elements for φ — C⁰, so φ' may jump where EΓ
+//! jumps (the bimoment EΓφ' is what stays continuous); the same discrete space as Hermite
+//! cubics in θ, so the same stiffness in exact arithmetic. GJ and EΓ sampled at 4 Gauss points
+//! per interval (exact for piecewise-constant properties), nodes at every profile
 //! breakpoint and graded towards the waist (the same tan mapping as the flexibility
 //! quadrature) and, in the blanks, geometrically towards the notch, where the warping boundary
-//! layer of length √(EΓ/GJ) sits. The stiffness is banded (half-bandwidth 3) and solved by a
+//! layer of length √(EΓ/GJ) sits. The stiffness is banded (half-bandwidth 2) and solved by a
 //! banded Cholesky on the stack.
 
 use super::integrate::PEAK;
@@ -202,50 +212,106 @@ pub fn vlasov_torsion_stiffness(profile: &Profile, e: f64, g: f64, mesh: Torsion
     torsion_fe(&xs[..n], props)
 }
 
+/// Shortest FE element relative to the local warping boundary-layer length √(EΓ/GJ).
+///
+/// An element of length l_e couples its nodes through EΓ/l_e next to GJ·l_e: when l_e ≪
+/// √(EΓ/GJ) the element is nearly rigid and the banded Cholesky loses the rest of the system
+/// to cancellation (L(i,i)² = K(i,i) − Σ L² ends at round-off: NaN for a notch of R ≈ 3e-4 mm,
+/// or one that barely cuts the blank, t → h, whose graded nodes are ~1e-5 mm apart). The
+/// solution varies on the scale √(EΓ/GJ), so shorter intervals of the node list are not given
+/// their own element: they stay quadrature sub-intervals of a longer element (properties are
+/// still sampled on every interval of the node list), which is consistent to O(l/√(EΓ/GJ)) and
+/// keeps the coupling of neighbouring elements within a factor 1e3.
+pub const MIN_ELEMENT_PER_LAYER: f64 = 1e-3;
+
 /// Solves the Vlasov torsion problem on the node list `xs` with properties `props(x) = (GJ, EΓ)`;
-/// θ = θ' = 0 at xs[0], θ' = 0 and a unit torque at the last node. Returns T/θ(end).
+/// θ = θ' = 0 at xs[0], θ' = 0 and a unit torque at the last node. Returns T/θ(end), from the
+/// rate-of-twist form −(EΓ φ')' + GJ φ = T (module docs).
+///
+/// Every interval of `xs` is integrated with 4 Gauss points; intervals much shorter than the
+/// local warping layer are merged into their neighbours' elements ([`MIN_ELEMENT_PER_LAYER`]).
 pub fn torsion_fe(xs: &[f64], props: impl Fn(f64) -> (f64, f64)) -> f64 {
-    let nn = xs.len();
-    let ndof = 2 * nn;
-    // Symmetric band storage: k[i][d] = K(i, i + d), d = 0..=3.
-    let mut k = [[0.0f64; 4]; 2 * MAX_NODES];
-    for el in 0..nn - 1 {
-        let le = xs[el + 1] - xs[el];
-        let mut ke = [[0.0f64; 4]; 4];
+    // Properties at the 4 Gauss points of every interval of xs (sampled once).
+    let mut gp = [[(0.0f64, 0.0f64); 4]; MAX_NODES];
+    for i in 0..xs.len() - 1 {
         for q in 0..4 {
-            let xi = GL4_X[q];
-            let (gj, eg) = props(xs[el] + xi * le);
-            let wq = GL4_W[q] * le;
-            // Hermite cubics: first and second x-derivatives.
-            let d1 = [
-                (-6.0 * xi + 6.0 * xi * xi) / le,
-                1.0 - 4.0 * xi + 3.0 * xi * xi,
-                (6.0 * xi - 6.0 * xi * xi) / le,
-                -2.0 * xi + 3.0 * xi * xi,
-            ];
-            let d2 = [
-                (-6.0 + 12.0 * xi) / (le * le),
-                (-4.0 + 6.0 * xi) / le,
-                (6.0 - 12.0 * xi) / (le * le),
-                (-2.0 + 6.0 * xi) / le,
-            ];
-            for a in 0..4 {
-                for b in a..4 {
-                    ke[a][b] += wq * (gj * d1[a] * d1[b] + eg * d2[a] * d2[b]);
+            gp[i][q] = props(xs[i] + GL4_X[q] * (xs[i + 1] - xs[i]));
+        }
+    }
+    // Element nodes: indices into xs, each element at least MIN_ELEMENT_PER_LAYER × the largest
+    // warping layer √(EΓ/GJ) of the intervals it covers.
+    let layer_of = |i: usize| -> f64 {
+        gp[i].iter().fold(0.0f64, |m, &(gj, eg)| {
+            if gj > 0.0 && eg > 0.0 {
+                m.max((eg / gj).sqrt())
+            } else {
+                m
+            }
+        })
+    };
+    let mut keep = [0usize; MAX_NODES];
+    let mut nk = 1;
+    let mut layer = 0.0f64;
+    for i in 1..xs.len() {
+        layer = layer.max(layer_of(i - 1));
+        if xs[i] - xs[keep[nk - 1]] >= MIN_ELEMENT_PER_LAYER * layer {
+            keep[nk] = i;
+            nk += 1;
+            layer = 0.0;
+        }
+    }
+    if keep[nk - 1] != xs.len() - 1 {
+        // The last element is short: extend the previous one to the end instead.
+        if nk > 1 {
+            nk -= 1;
+        }
+        keep[nk] = xs.len() - 1;
+        nk += 1;
+    }
+    let nn = nk;
+    let ndof = 2 * nn - 1;
+    // Symmetric band storage: k[i][d] = K(i, i + d), d = 0..=3; load vector ∫N dx (T = 1).
+    let mut k = [[0.0f64; 4]; 2 * MAX_NODES];
+    let mut load = [0.0f64; 2 * MAX_NODES];
+    for el in 0..nn - 1 {
+        let (xa, xb) = (xs[keep[el]], xs[keep[el + 1]]);
+        let le = xb - xa;
+        let mut ke = [[0.0f64; 3]; 3];
+        let mut fe = [0.0f64; 3];
+        for sub in keep[el]..keep[el + 1] {
+            let (s0, s1) = (xs[sub], xs[sub + 1]);
+            for q in 0..4 {
+                let x = s0 + GL4_X[q] * (s1 - s0);
+                let xi = (x - xa) / le;
+                let (gj, eg) = gp[sub][q];
+                let wq = GL4_W[q] * (s1 - s0);
+                // Quadratic Lagrange shape functions for φ (start, middle, end) and their
+                // x-derivatives.
+                let n = [
+                    (1.0 - xi) * (1.0 - 2.0 * xi),
+                    4.0 * xi * (1.0 - xi),
+                    xi * (2.0 * xi - 1.0),
+                ];
+                let d1 = [(4.0 * xi - 3.0) / le, (4.0 - 8.0 * xi) / le, (4.0 * xi - 1.0) / le];
+                for a in 0..3 {
+                    fe[a] += wq * n[a];
+                    for b in a..3 {
+                        ke[a][b] += wq * (eg * d1[a] * d1[b] + gj * n[a] * n[b]);
+                    }
                 }
             }
         }
+        // Global order: φ(node 0), φ(middle 0), φ(node 1), φ(middle 1), …
         let base = 2 * el;
-        for a in 0..4 {
-            for b in a..4 {
+        for a in 0..3 {
+            load[base + a] += fe[a];
+            for b in a..3 {
                 k[base + a][b - a] += ke[a][b];
             }
         }
     }
-    // Boundary conditions by replacement with identity rows: DOF 0 (θ), 1 (θ') at the start,
-    // ndof−1 (θ') at the end.
-    let fixed = [0usize, 1, ndof - 1];
-    for &dof in &fixed {
+    // φ = 0 (warping restrained) at both end faces, by replacement with identity rows.
+    for dof in [0usize, ndof - 1] {
         k[dof] = [0.0; 4];
         for d in 1..4 {
             if dof >= d {
@@ -253,9 +319,9 @@ pub fn torsion_fe(xs: &[f64], props: impl Fn(f64) -> (f64, f64)) -> f64 {
             }
         }
         k[dof][0] = 1.0;
+        load[dof] = 0.0;
     }
-    let mut f = [0.0f64; 2 * MAX_NODES];
-    f[ndof - 2] = 1.0;
+    let mut f = load;
     // Banded Cholesky K = L Lᵀ, L stored in place (l[i][d] = L(i + d, i)).
     for i in 0..ndof {
         let mut diag = k[i][0];
@@ -301,5 +367,7 @@ pub fn torsion_fe(xs: &[f64], props: impl Fn(f64) -> (f64, f64)) -> f64 {
         }
         f[i] = s / k[i][0];
     }
-    1.0 / f[ndof - 2]
+    // θ(end) = ∫φ dx = loadᵀ φ (the compliance, > 0 for an SPD system).
+    let theta: f64 = load[..ndof].iter().zip(&f[..ndof]).map(|(a, b)| a * b).sum();
+    1.0 / theta
 }

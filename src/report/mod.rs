@@ -2,5 +2,6 @@
 
 pub mod json;
 pub mod markdown;
+pub mod numbers;
 pub mod svg;
 pub mod vtk;

@@ -1,0 +1,157 @@
+//! Every result carries a top-level `warnings` list; hinges outside the range their solid
+//! calibration covers are warned about in the result and the report.
+//!
+//! Calibration ranges (tests/hinge_solid_reference.rs, converged quadratic-tetrahedron solid
+//! models): circular notches t/R 0.06–0.5, w/t 0.5–20; turned necks l/t 1–5, t/R 0.67–2.
+
+mod common;
+
+use common::{root, run, run_case_text, tempdir};
+use flexfem::analysis;
+use flexfem::case;
+
+fn json(o: &std::process::Output) -> serde_json::Value {
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "stderr: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+fn warnings(v: &serde_json::Value) -> Vec<String> {
+    v["warnings"]
+        .as_array()
+        .expect("top-level `warnings` array")
+        .iter()
+        .map(|w| w.as_str().expect("warnings are strings").to_string())
+        .collect()
+}
+
+/// Every bundled case that `run` accepts has `warnings` (empty: the bundled hinges are all
+/// inside their calibration).
+#[test]
+fn every_bundled_result_has_an_empty_warnings_list() {
+    let mut n = 0;
+    for entry in std::fs::read_dir(root().join("cases")).unwrap() {
+        let p = entry.unwrap().path();
+        let c = case::load(&p).unwrap();
+        if matches!(c, case::Case::Sweep(_)) {
+            continue;
+        }
+        let out = analysis::run(&c).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+        assert_eq!(
+            out.json["warnings"],
+            serde_json::json!([]),
+            "{}: {:?}",
+            p.display(),
+            out.warnings
+        );
+        assert!(!out.report.markdown.contains("## Warnings"));
+        n += 1;
+    }
+    assert!(n >= 10, "{n} cases");
+}
+
+/// A circular notch with t/R = 0.025 (below 0.06) and one with t/R = 1.25 are warned about,
+/// naming the ratio and the range; the warning is in the Markdown report too.
+#[test]
+fn circular_notch_outside_calibration_warns() {
+    for (r, t, w, ratio) in [(8.0, 0.2, 4.0, "t/R = 0.025"), (8.0, 9.99, 10.0, "t/R = 1.2488")] {
+        let text = format!(
+            r#"{{"analysis": "hinge", "hinge": {{"type": "circular_notch", "R": {r}, "t": {t}, "w": {w}, "h": 10.5, "blank_length": 20}}}}"#
+        );
+        let v = json(&run_case_text("warn_circ", &text));
+        let w = warnings(&v);
+        assert_eq!(w.len(), 1, "{w:?}");
+        assert!(w[0].starts_with("hinge: circular_notch"), "{w:?}");
+        assert!(w[0].contains(ratio) && w[0].contains("0.06–0.5"), "{w:?}");
+        let d = tempdir("warn_md");
+        std::fs::write(d.join("case.json"), &text).unwrap();
+        let o = common::run_in(&d, &["run", "case.json", "--format", "md"]);
+        let md = String::from_utf8_lossy(&o.stdout);
+        assert!(md.contains("## Warnings") && md.contains(ratio), "{md}");
+    }
+}
+
+/// Inside the range (seed-000 notch R8/t2, t/R = 0.25, w/t = 5): no warning.
+#[test]
+fn calibrated_hinge_has_no_warning() {
+    let v = json(&run(&["run", "cases/ruiz2019_hinge_revolute.json"]));
+    assert!(warnings(&v).is_empty());
+}
+
+/// A turned neck with l/t = 8 (above 5) warns; so does a wide leaf (w/t = 40 > 20).
+#[test]
+fn neck_and_leaf_outside_calibration_warn() {
+    let v = json(&run_case_text(
+        "warn_neck",
+        r#"{"analysis": "hinge", "hinge": {"type": "spherical_neck", "l": 16, "t": 2, "R": 2, "h": 10, "blank_length": 10}}"#,
+    ));
+    let w = warnings(&v);
+    assert!(
+        w.len() == 1 && w[0].contains("l/t = 8") && w[0].contains("1–5"),
+        "{w:?}"
+    );
+    let v = json(&run_case_text(
+        "warn_leaf",
+        r#"{"analysis": "hinge", "hinge": {"type": "leaf", "l": 5, "t": 0.5, "w": 20, "h": 8, "blank_length": 10}}"#,
+    ));
+    let w = warnings(&v);
+    assert!(w.len() == 1 && w[0].contains("w/t = 40"), "{w:?}");
+}
+
+/// The stage evaluates its hinges: a revolute notch outside the range is warned about with its
+/// place in the case file (`stage.revolute`).
+#[test]
+fn stage_hinge_outside_calibration_warns() {
+    let base = std::fs::read_to_string(root().join("cases/ruiz2019_stage.json")).unwrap();
+    let mut c: serde_json::Value = serde_json::from_str(&base).unwrap();
+    // t/R = 0.5/16 = 0.031 < 0.06.
+    c["stage"]["revolute"]["R"] = serde_json::json!(16.0);
+    c["stage"]["revolute"]["t"] = serde_json::json!(0.5);
+    let case = case::parse(&c.to_string()).unwrap();
+    let out = analysis::run(&case).unwrap();
+    let w = &out.warnings;
+    assert!(
+        w.iter()
+            .any(|s| s.starts_with("stage.revolute: circular_notch t/R = 0.0313")),
+        "{w:?}"
+    );
+    assert_eq!(out.json["warnings"].as_array().unwrap().len(), w.len());
+    assert!(out.report.markdown.contains("## Warnings"));
+}
+
+/// Sensitivity evaluates the base design's hinges; design the hinges it found: both warn
+/// when those hinges leave the calibrated range (turned neck l/t > 5 here).
+#[test]
+fn sensitivity_and_design_warn_about_their_hinges() {
+    let base = std::fs::read_to_string(root().join("cases/ruiz2019_sensitivity.json")).unwrap();
+    let mut c: serde_json::Value = serde_json::from_str(&base).unwrap();
+    // l/t = 18/3 = 6 > 5.
+    c["stage"]["spherical"]["l"] = serde_json::json!(18.0);
+    let out = analysis::run(&case::parse(&c.to_string()).unwrap()).unwrap();
+    assert!(
+        out.warnings
+            .iter()
+            .any(|w| w.starts_with("stage.spherical: spherical_neck l/t = 6 ")),
+        "{:?}",
+        out.warnings
+    );
+
+    let base = std::fs::read_to_string(root().join("cases/ruiz2019_design.json")).unwrap();
+    let mut c: serde_json::Value = serde_json::from_str(&base).unwrap();
+    // Every neck inside these bounds has l/t ≥ 13/2.4 = 5.4 > 5.
+    c["bounds"]["l_sph"] = serde_json::json!([13, 14]);
+    c["bounds"]["t_sph"] = serde_json::json!([2, 2.4]);
+    let out = analysis::run(&case::parse(&c.to_string()).unwrap()).unwrap();
+    assert!(
+        out.warnings
+            .iter()
+            .any(|w| w.starts_with("design found, stage.spherical: spherical_neck l/t")),
+        "{:?}",
+        out.warnings
+    );
+    assert_eq!(out.json["warnings"].as_array().unwrap().len(), out.warnings.len());
+}
