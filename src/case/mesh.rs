@@ -279,6 +279,9 @@ pub struct ModalCase {
     /// Optional shift frequency f, Hz (σ = (2πf)²): the modes nearest above it are found instead of
     /// the lowest. Default: 0 (a small negative shift for free bodies).
     pub shift_hz: Option<f64>,
+    /// Mode shapes in the JSON result (default true). `false` leaves them out (a 100k-DOF model
+    /// would write tens of MB); `modes.vtu` (with `--out`) always holds them.
+    pub shapes: bool,
     /// The model.
     #[serde(flatten)]
     pub model: MeshSpec,
