@@ -263,9 +263,9 @@ pub fn shell_field(model: &Model, u: &[[f64; 6]]) -> Result<ShellField, FemError
         let tri = nodes[3] == nodes[2];
         for (k, &n) in nodes.iter().enumerate() {
             let w = if tri && k >= 2 { 0.5 } else { 1.0 };
-            for s in 0..3 {
-                for j in 0..6 {
-                    sum[n][s][j] += w * r.nodal[k][s][j];
+            for (acc, v) in sum[n].iter_mut().zip(&r.nodal[k]) {
+                for (a, b) in acc.iter_mut().zip(v) {
+                    *a += w * b;
                 }
             }
             count[n] += w;
