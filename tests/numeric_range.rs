@@ -56,7 +56,8 @@ fn huge_load_linear_static_fails_naming_the_quantity() {
 /// Was: the Newton residual norm squared its entries (1e155² = ∞), so ∞ ≤ tol·∞ passed as
 /// converged at iteration 0 with zero displacements. Now the scaled norm sees the residual; the
 /// co-rotational cantilever turns into the load and stretches by F L/(E A) (a bar along its
-/// load: the closed form of axial elongation), here 1e155·100/(72000·100) = 1.3889e150 mm.
+/// load: the closed form of axial elongation), here 1e155·100/(72000·100) = 1.3889e150 mm,
+/// with a warning that such strains are outside the small-strain model.
 #[test]
 fn huge_load_nonlinear_is_not_silently_zero() {
     let o = run_case_text(
@@ -72,6 +73,9 @@ fn huge_load_nonlinear_is_not_silently_zero() {
             let expected = -1e155 * 100.0 / (72_000.0 * 100.0);
             assert!((uz / expected - 1.0).abs() < 0.01, "tip uz {uz} vs F L/(EA) {expected}");
             assert!(!out.contains("null"));
+            // A strain of 1e148 is far outside the small-strain co-rotational model: said so.
+            let w = v["warnings"].as_array().unwrap();
+            assert!(w.iter().any(|w| w.as_str().unwrap().contains("small-strain")), "{w:?}");
         }
         Some(1) => assert!(stderr(&o).contains("tip") || stderr(&o).contains("load_cases")),
         c => panic!("exit {c:?}: {}", stderr(&o)),

@@ -155,3 +155,35 @@ fn sensitivity_and_design_warn_about_their_hinges() {
     );
     assert_eq!(out.json["warnings"].as_array().unwrap().len(), out.warnings.len());
 }
+
+/// Geometrically nonlinear statics within small strains (a cantilever under a tip force
+/// bending it by ~20°): no warning; pulled to 2 % axial strain: one warning naming the load
+/// case and the element.
+#[test]
+fn nonlinear_static_warns_beyond_small_strain() {
+    let case = |fx: f64, fz: f64| {
+        format!(
+            r#"{{"analysis": "static", "nonlinear": true, "steps": 10,
+  "materials": {{"al": "Al7075"}},
+  "sections": {{"leg": {{"shape": "rect", "w": 10, "h": 10}}}},
+  "nodes": [[0, 0, 0], [50, 0, 0], [100, 0, 0]],
+  "elements": [
+    {{"type": "beam", "nodes": [0, 1], "section": "leg", "material": "al", "up": [0, 0, 1]}},
+    {{"type": "beam", "nodes": [1, 2], "section": "leg", "material": "al", "up": [0, 0, 1]}}
+  ],
+  "supports": [{{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}}],
+  "load_cases": [{{"name": "tip", "forces": [{{"node": 2, "F": [{fx}, 0, {fz}, 0, 0, 0]}}]}}]}}"#
+        )
+    };
+    // EI = 72000·10⁴/12 = 6e7 N·mm²; F L²/(2EI) = 0.35 rad at F = 4200 N.
+    let v = json(&run_case_text("nl_small", &case(0.0, -4200.0)));
+    assert!(warnings(&v).is_empty(), "{:?}", warnings(&v));
+    // Axial: ε = F/(EA) = 144000/(72000·100) = 2 %.
+    let v = json(&run_case_text("nl_stretch", &case(144_000.0, 0.0)));
+    let w = warnings(&v);
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].starts_with("load_cases[0] (\"tip\"): element") && w[0].contains("by +2.00 %"),
+        "{w:?}"
+    );
+}

@@ -144,6 +144,54 @@ fn stage_warnings(d: &crate::stage::StageDesign) -> Vec<String> {
     w
 }
 
+/// Largest element stretch in a geometrically nonlinear result above which it is reported: the
+/// co-rotational elements assume small strains (a linear-elastic element at 1 % strain is at
+/// the end of the elastic range of every structural metal).
+pub const SMALL_STRAIN: f64 = 0.01;
+
+/// Warnings for load cases in which a two-node element's chord stretches or shortens by more
+/// than [`SMALL_STRAIN`] (one per load case, naming the worst element).
+fn stretch_warnings(model: &crate::fem::Model, r: &fem_static::StaticResult) -> Vec<String> {
+    let mut out = Vec::new();
+    for (ic, c) in r.load_cases.iter().enumerate() {
+        let mut worst: Option<(usize, f64)> = None;
+        for (ie, e) in model.elements.iter().enumerate() {
+            let [a, b] = match e {
+                crate::fem::Element::Beam(b) => b.nodes,
+                crate::fem::Element::Flex(f) => f.nodes,
+                _ => continue,
+            };
+            let (Some(da), Some(db)) = (c.displacements.get(a), c.displacements.get(b)) else {
+                continue;
+            };
+            let (xa, xb) = (model.nodes[a], model.nodes[b]);
+            let l0 = (0..3).map(|k| (xb[k] - xa[k]).powi(2)).sum::<f64>().sqrt();
+            let l = (0..3)
+                .map(|k| ((xb[k] + db[k]) - (xa[k] + da[k])).powi(2))
+                .sum::<f64>()
+                .sqrt();
+            let strain = l / l0 - 1.0;
+            if strain.abs() > SMALL_STRAIN && worst.map_or(true, |(_, w)| strain.abs() > w.abs()) {
+                worst = Some((ie, strain));
+            }
+        }
+        if let Some((ie, strain)) = worst {
+            let pct = strain * 100.0;
+            let pct = if pct.abs() < 1e4 {
+                format!("{pct:+.2}")
+            } else {
+                format!("{pct:+.3e}")
+            };
+            out.push(format!(
+                "load_cases[{ic}] (\"{}\"): element {ie} changes length by {pct} %, beyond the small-strain assumption of the co-rotational elements (|strain| <= {} %): the displacements are those of a linear-elastic material at that strain",
+                c.name,
+                SMALL_STRAIN * 100.0
+            ));
+        }
+    }
+    out
+}
+
 /// Calibration warnings of the hinges of the design found by a `design` run.
 fn design_warnings(case: &crate::case::design::DesignCase, r: &design::DesignResult) -> Vec<String> {
     use crate::design::stage_design::{with_params, PARAMETERS};
@@ -253,7 +301,11 @@ fn run_analysis(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
             };
             Ok(Outcome {
                 json: to_json(&r)?,
-                warnings: Vec::new(),
+                warnings: if s.nonlinear {
+                    stretch_warnings(&model, &r)
+                } else {
+                    Vec::new()
+                },
                 report: fem_static::report(&r),
                 files,
             })

@@ -98,20 +98,20 @@ fn human(bytes: u64) -> String {
 
 /// Reads a case or mesh file as bytes: a regular file no larger than the file-size limit
 /// (`/dev/zero` or a FIFO would be read until memory runs out). `field` is the JSON path the
-/// file name came from; errors name it.
-pub fn read_file(field: &str, shown: &str, path: &Path) -> Result<Vec<u8>, CaseError> {
+/// file name came from (errors name it), `what` the kind of file ("case file", "mesh file").
+pub fn read_file(field: &str, what: &str, shown: &str, path: &Path) -> Result<Vec<u8>, CaseError> {
     let limits = Limits::current()?;
     let err = |msg: String| CaseError::value(field, shown, msg);
-    let meta = std::fs::metadata(path).map_err(|e| err(format!("cannot read {}: {e}", path.display())))?;
+    let meta = std::fs::metadata(path).map_err(|e| err(format!("cannot read {what} {}: {e}", path.display())))?;
     if !meta.is_file() {
         return Err(err(format!(
-            "{} is not a regular file (a device, FIFO or folder); give a file",
+            "{what} {} is not a regular file (a device, FIFO or folder); give a file",
             path.display()
         )));
     }
     let too_big = |size: String| {
         err(format!(
-            "{} is {size}, over the file-size limit of {} (raise it with {ENV}=file_mib=N)",
+            "{what} {} is {size}, over the file-size limit of {} (raise it with {ENV}=file_mib=N)",
             path.display(),
             human(limits.file_bytes)
         ))
@@ -119,11 +119,11 @@ pub fn read_file(field: &str, shown: &str, path: &Path) -> Result<Vec<u8>, CaseE
     if meta.len() > limits.file_bytes {
         return Err(too_big(human(meta.len())));
     }
-    let f = std::fs::File::open(path).map_err(|e| err(format!("cannot read {}: {e}", path.display())))?;
+    let f = std::fs::File::open(path).map_err(|e| err(format!("cannot read {what} {}: {e}", path.display())))?;
     let mut bytes = Vec::with_capacity(meta.len() as usize);
     f.take(limits.file_bytes + 1)
         .read_to_end(&mut bytes)
-        .map_err(|e| err(format!("cannot read {}: {e}", path.display())))?;
+        .map_err(|e| err(format!("cannot read {what} {}: {e}", path.display())))?;
     if bytes.len() as u64 > limits.file_bytes {
         return Err(too_big("larger than its size on disk said".into()));
     }

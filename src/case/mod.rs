@@ -91,7 +91,7 @@ pub fn from_value<T: DeserializeOwned>(value: Value, prefix: &str) -> Result<T, 
 /// Reads and parses a case file; files it refers to (`mesh`) are looked up beside it.
 pub fn load(path: &Path) -> Result<Case, CaseError> {
     let shown = format!("\"{}\"", path.display());
-    let bytes = limits::read_file(".", &shown, path)?;
+    let bytes = limits::read_file(".", "case file", &shown, path)?;
     let text = String::from_utf8(bytes).map_err(|e| {
         CaseError::new(
             ".",
@@ -132,7 +132,7 @@ pub fn resolve_file(name: &str, base: Option<&Path>) -> PathBuf {
 
 fn read_json(path_field: &str, name: &str, base: Option<&Path>) -> Result<Value, CaseError> {
     let file = resolve_file(name, base);
-    let bytes = limits::read_file(path_field, &format!("\"{name}\""), &file)?;
+    let bytes = limits::read_file(path_field, "mesh file", &format!("\"{name}\""), &file)?;
     serde_json::from_slice(&bytes).map_err(|e| {
         CaseError::value(
             path_field,
@@ -285,7 +285,7 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                         ));
                     };
                     let file = resolve_file(name, base);
-                    let bytes = limits::read_file("mesh", &format!("\"{name}\""), &file)?;
+                    let bytes = limits::read_file("mesh", "mesh file", &format!("\"{name}\""), &file)?;
                     let text = gmsh::msh_text(&bytes)
                         .map_err(|e| CaseError::new(e.path.clone(), format!("in {name}: {}", e.message)))?;
                     let (from_file, _notes, origin) = gmsh::parse_msh_traced(text, &mapping)
