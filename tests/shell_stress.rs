@@ -302,3 +302,27 @@ fn vtu_and_report_carry_shell_stresses() {
     assert!(md.contains("(top surface)") && md.contains("(bottom surface)"), "{md}");
     assert!(md.contains(&format!("smallest σ₃ = {:.4} MPa", -sigma)), "{md}");
 }
+
+/// Two shells sharing an edge with opposite node orders (opposite normals) get a warning:
+/// their top surfaces lie on opposite sides, so nodal averages would mix top and bottom.
+/// Consistently oriented meshes (every test above) get none.
+#[test]
+fn opposite_shell_normals_are_warned() {
+    let case = |flip: bool| {
+        let second = if flip { json!([1, 4, 5, 2]) } else { json!([1, 2, 5, 4]) };
+        json!({
+            "analysis": "static",
+            "materials": {"m": "steel"},
+            "sections": {"s": {"shape": "shell", "t": 1.0}},
+            "nodes": [[0, 0, 0], [10, 0, 0], [20, 0, 0], [0, 10, 0], [10, 10, 0], [20, 10, 0]],
+            "elements": [{"type": "shell4", "nodes": [0, 1, 4, 3], "section": "s", "material": "m"},
+                         {"type": "shell4", "nodes": second, "section": "s", "material": "m"}],
+            "supports": [{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]},
+                         {"node": 3, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}],
+            "load_cases": [{"name": "p", "forces": [{"node": 2, "F": [0, 0, 1, 0, 0, 0]}]}]
+        })
+    };
+    let w = run(case(true))["warnings"].clone();
+    assert!(w[0].as_str().unwrap_or("").contains("opposite normals"), "{w}");
+    assert_eq!(run(case(false))["warnings"], json!([]));
+}

@@ -37,7 +37,9 @@ pub struct StaticCaseRow {
 
 /// Nodal stresses of the shells: per node [sxx, syy, szz, sxy, syz, szx] (MPa, global axes),
 /// integration-point values extrapolated to the nodes and averaged over the shells at the
-/// node; `null` for nodes without shells.
+/// node; `null` for nodes without shells. Top and bottom follow each element's normal (right-hand
+/// rule over its node order): mesh every shell in the same sense (a warning names edges shared
+/// by oppositely oriented shells).
 #[derive(Debug, Clone, Serialize)]
 pub struct ShellStressRow {
     /// Top surface (z = +t/2 along the element normal).
@@ -159,6 +161,21 @@ pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<(StaticResult, fem
         ],
     };
     Ok((result, raw))
+}
+
+/// A warning when shells sharing an edge have opposite normals (their top/bottom stresses mix
+/// in the nodal averages; see [`fem::shell_recovery::orientation_conflicts`]).
+pub fn shell_orientation_warnings(model: &Model) -> Vec<String> {
+    let c = fem::shell_recovery::orientation_conflicts(model);
+    let Some((a, b, e)) = c.first() else {
+        return Vec::new();
+    };
+    vec![format!(
+        "{} shell edge(s) are shared by elements with opposite normals (first: elements {a} and {b} along nodes {}–{}): `shell_stress` top/bottom follow each element's normal, so the nodal averages there mix the two surfaces; list the nodes of every shell in the same sense",
+        c.len(),
+        e[0],
+        e[1]
+    )]
 }
 
 /// Puts a model's shell stresses into its load-case row (nothing without shells).

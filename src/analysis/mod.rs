@@ -304,7 +304,7 @@ fn run_analysis(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
                 warnings: if s.nonlinear {
                     stretch_warnings(&model, &r)
                 } else {
-                    Vec::new()
+                    fem_static::shell_orientation_warnings(&model)
                 },
                 report: fem_static::report(&r),
                 files,

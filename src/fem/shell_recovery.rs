@@ -285,6 +285,31 @@ pub fn shell_field(model: &Model, u: &[[f64; 6]]) -> Result<ShellField, FemError
     Ok(field)
 }
 
+/// Pairs of shells that share an edge but run it in the same direction, so their normals
+/// (right-hand rule over the node order) point to opposite sides: (element, element, edge
+/// nodes). Their "top" surfaces are on opposite sides, and nodal averages at their nodes mix
+/// top and bottom.
+pub fn orientation_conflicts(model: &Model) -> Vec<(usize, usize, [usize; 2])> {
+    let mut seen: std::collections::HashMap<(usize, usize), usize> = std::collections::HashMap::new();
+    let mut out = Vec::new();
+    for (ie, e) in model.elements.iter().enumerate() {
+        let Element::Shell4(sh) = e else { continue };
+        for k in 0..4 {
+            let (a, b) = (sh.nodes[k], sh.nodes[(k + 1) % 4]);
+            if a == b {
+                continue;
+            }
+            match seen.get(&(a, b)) {
+                Some(&other) if other != ie => out.push((other, ie, [a, b])),
+                _ => {
+                    seen.insert((a, b), ie);
+                }
+            }
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
