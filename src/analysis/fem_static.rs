@@ -33,6 +33,46 @@ pub struct StaticCaseRow {
     /// Nonlinear and not stable: load factors [lo, hi] bracketing the first loss of stability.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub critical_load_factor: Option<[f64; 2]>,
+    /// Shells only: nodal surface stresses (omitted for models without shells).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub shell_stress: Option<ShellStressRow>,
+    /// Shells only: stress resultants at each shell element's centre, element axes (omitted
+    /// for models without shells).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub shell_forces: Vec<ShellForcesRow>,
+}
+
+/// Nodal stresses of the shells: per node [sxx, syy, szz, sxy, syz, szx] (MPa, global axes),
+/// integration-point values extrapolated to the nodes and averaged over the shells at the
+/// node; `null` for nodes without shells. Top and bottom follow each element's normal (right-hand
+/// rule over its node order): mesh every shell in the same sense (a warning names edges shared
+/// by oppositely oriented shells).
+#[derive(Debug, Clone, Serialize)]
+pub struct ShellStressRow {
+    /// Top surface (z = +t/2 along the element normal).
+    pub top: Vec<Option<[f64; 6]>>,
+    /// Mid-surface (membrane stress; transverse shear as the parabolic peak 1.5·Q/t).
+    pub mid: Vec<Option<[f64; 6]>>,
+    /// Bottom surface (z = −t/2).
+    pub bottom: Vec<Option<[f64; 6]>>,
+}
+
+/// Stress resultants at the centre of one shell element, in its axes.
+#[derive(Debug, Clone, Serialize)]
+pub struct ShellForcesRow {
+    /// Element index (model order).
+    pub element: usize,
+    /// Element axes: local x, y, z (normal) as unit vectors in global coordinates.
+    pub axes: [[f64; 3]; 3],
+    /// Membrane forces [Nxx, Nyy, Nxy], N/mm.
+    #[serde(rename = "N")]
+    pub n: [f64; 3],
+    /// Moments [Mxx, Myy, Mxy], N·mm/mm (Mxx > 0 stretches the top surface).
+    #[serde(rename = "M")]
+    pub m: [f64; 3],
+    /// Transverse shear forces [Qx, Qy], N/mm.
+    #[serde(rename = "Q")]
+    pub q: [f64; 2],
 }
 
 /// Surface stresses of one shell element.
@@ -71,7 +111,17 @@ pub struct Units {
 /// Solves every load case of the model.
 pub fn solve(model: &Model) -> Result<(StaticResult, fem::StaticResults), AnalysisError> {
     let res = fem::solve_static(model).map_err(|e| AnalysisError::new("model", e.to_string()))?;
-    let rows = res.load_cases.iter().map(row).collect();
+    let rows = res
+        .load_cases
+        .iter()
+        .map(|c| {
+            let mut r = row(c);
+            let field = fem::shell_recovery::shell_field(model, &c.displacements)
+                .map_err(|e| AnalysisError::new(format!("load case `{}`", c.name), e.to_string()))?;
+            add_shell_field(&mut r, field);
+            Ok(r)
+        })
+        .collect::<Result<_, AnalysisError>>()?;
     let notes = vec![
         "linear statics, small displacements".to_string(),
         "beams: 2-node exact Timoshenko (Euler–Bernoulli where \"shear\": false); stresses at section critical points"
@@ -128,6 +178,44 @@ pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<(StaticResult, fem
     Ok((result, raw))
 }
 
+/// A warning when shells sharing an edge have opposite normals (their top/bottom stresses mix
+/// in the nodal averages; see [`fem::shell_recovery::orientation_conflicts`]).
+pub fn shell_orientation_warnings(model: &Model) -> Vec<String> {
+    let c = fem::shell_recovery::orientation_conflicts(model);
+    let Some((a, b, e)) = c.first() else {
+        return Vec::new();
+    };
+    vec![format!(
+        "{} shell edge(s) are shared by elements with opposite normals (first: elements {a} and {b} along nodes {}–{}): `shell_stress` top/bottom follow each element's normal, so the nodal averages there mix the two surfaces; list the nodes of every shell in the same sense",
+        c.len(),
+        e[0],
+        e[1]
+    )]
+}
+
+/// Puts a model's shell stresses into its load-case row (nothing without shells).
+fn add_shell_field(r: &mut StaticCaseRow, f: fem::shell_recovery::ShellField) {
+    if f.forces.is_empty() {
+        return;
+    }
+    r.shell_forces = f
+        .forces
+        .iter()
+        .map(|(element, s)| ShellForcesRow {
+            element: *element,
+            axes: s.axes,
+            n: s.n,
+            m: s.m,
+            q: s.q,
+        })
+        .collect();
+    r.shell_stress = Some(ShellStressRow {
+        top: f.top,
+        mid: f.mid,
+        bottom: f.bottom,
+    });
+}
+
 fn row(c: &fem::CaseResult) -> StaticCaseRow {
     StaticCaseRow {
         name: c.name.clone(),
@@ -165,6 +253,8 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
         equilibrium_residual: c.statics.residual(),
         stable: None,
         critical_load_factor: None,
+        shell_stress: None,
+        shell_forces: Vec::new(),
     }
 }
 
@@ -205,6 +295,7 @@ pub fn report(r: &StaticResult) -> Report {
         if let Some(s) = c.max_von_mises {
             md += &format!("Maximum von Mises stress: {s:.3} MPa.\n\n");
         }
+        md += &principal_extremes(c);
         let mut t = Table::new(&["node", "ux (mm)", "uy (mm)", "uz (mm)", "rx (°)", "ry (°)", "rz (°)"]);
         for (i, d) in c.displacements.iter().enumerate() {
             let mut row = vec![i.to_string()];
@@ -222,16 +313,49 @@ pub fn report(r: &StaticResult) -> Report {
     Report { markdown: md, csv }
 }
 
+/// Markdown lines with the largest and smallest principal shell stresses of a load case and
+/// where they occur (node, surface); empty without shells.
+fn principal_extremes(c: &StaticCaseRow) -> String {
+    let Some(ss) = &c.shell_stress else {
+        return String::new();
+    };
+    let mut hi: Option<(f64, usize, &str)> = None;
+    let mut lo: Option<(f64, usize, &str)> = None;
+    for (name, list) in [("top", &ss.top), ("mid", &ss.mid), ("bottom", &ss.bottom)] {
+        for (node, s) in list.iter().enumerate() {
+            let Some(s) = s else { continue };
+            let p = fem::shell_recovery::principal(s);
+            if hi.map_or(true, |h| p[2] > h.0) {
+                hi = Some((p[2], node, name));
+            }
+            if lo.map_or(true, |l| p[0] < l.0) {
+                lo = Some((p[0], node, name));
+            }
+        }
+    }
+    match (hi, lo) {
+        (Some(h), Some(l)) => format!(
+            "Shells, extreme principal stresses (nodal averages): largest σ₁ = {:.4} MPa at node {} ({} surface); smallest σ₃ = {:.4} MPa at node {} ({} surface).\n\n",
+            h.0, h.1, h.2, l.0, l.1, l.2
+        ),
+        _ => String::new(),
+    }
+}
+
 /// A `.vtu` of one load case (see [`super::vtu`]): the undeformed model with displacement and
-/// rotation point data and von Mises per cell (the element's maximum over its ends / shell
+/// rotation point data, shell stresses and stress resultants
+/// ([`super::vtu::static_vtu_with_shells`]) and von Mises per cell (the element's maximum over its ends / shell
 /// surfaces; `cell_stress` overrides it for given elements, e.g. hinge peak stresses; 0 where
 /// none).
 pub fn vtu(model: &Model, case: &fem::CaseResult, cell_stress: &[(usize, f64)]) -> Result<String, AnalysisError> {
-    super::vtu::static_vtu(
+    let shells = fem::shell_recovery::shell_field(model, &case.displacements)
+        .map_err(|e| AnalysisError::new(format!("load case `{}`", case.name), e.to_string()))?;
+    super::vtu::static_vtu_with_shells(
         model,
         &case.displacements,
         &von_mises_of(case, cell_stress),
         &Default::default(),
+        Some(&shells),
     )
 }
 

@@ -219,8 +219,21 @@ fn case_warnings(case: &Case) -> Vec<String> {
         Case::Stage(s) => s.validate().map(|(d, _)| stage_warnings(&d)).unwrap_or_default(),
         Case::FemVsFkp(s) => s.validate().map(|d| stage_warnings(&d)).unwrap_or_default(),
         Case::Sensitivity(s) => s.validate().map(|d| stage_warnings(&d)).unwrap_or_default(),
+        Case::Modal(m) => density_warnings(&m.model),
         _ => Vec::new(),
     }
+}
+
+/// Implausible densities (unit slips) of a modal model's materials.
+fn density_warnings(spec: &crate::case::mesh::MeshSpec) -> Vec<String> {
+    spec.materials
+        .iter()
+        .filter_map(|(k, m)| {
+            let at = format!("materials.{k}");
+            let mat = m.resolve(&at).ok()?;
+            crate::case::material::density_warning(&at, &mat)
+        })
+        .collect()
 }
 
 /// Validates a case (everything checked before solving).
@@ -386,7 +399,7 @@ fn run_analysis(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
                     );
                     w
                 } else {
-                    Vec::new()
+                    fem_static::shell_orientation_warnings(&model)
                 },
                 report: fem_static::report(&r),
                 files,
@@ -395,7 +408,11 @@ fn run_analysis(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
         Case::Modal(m) => {
             crate::case::limits::check_modal(m.modes, m.model.nodes.len())?;
             let model = m.model.build_model(false)?;
-            let (r, raw) = modal::solve(&model, m.modes, m.shift_hz)?;
+            let (mut r, raw) = modal::solve(&model, m.modes, m.shift_hz)?;
+            modal::mark_rigid_body(&model, &raw, &mut r);
+            if !m.shapes {
+                r.modes.iter_mut().for_each(|row| row.shape = None);
+            }
             Ok(Outcome {
                 json: to_json(&r)?,
                 warnings: Vec::new(),

@@ -138,6 +138,22 @@ pub fn static_vtu(
     von_mises: &dyn Fn(usize) -> f64,
     drawn: &Drawn,
 ) -> Result<String, AnalysisError> {
+    static_vtu_with_shells(model, u, von_mises, drawn, None)
+}
+
+/// [`static_vtu`] plus the shell stresses of the load case: point data
+/// `shell_stress_top_MPa`, `shell_stress_mid_MPa`, `shell_stress_bottom_MPa` (symmetric
+/// tensors, 6 components XX YY ZZ XY YZ XZ, global axes; 0 at points without shells) and cell
+/// data `shell_N_N_per_mm` [Nxx, Nyy, Nxy], `shell_M_Nmm_per_mm` [Mxx, Myy, Mxy],
+/// `shell_Q_N_per_mm` [Qx, Qy, 0] at the element centre in element axes, and those axes as
+/// `shell_axis_x`, `shell_axis_y`, `shell_axis_z` (unit vectors, global; 0 for other cells).
+pub fn static_vtu_with_shells(
+    model: &Model,
+    u: &[[f64; 6]],
+    von_mises: &dyn Fn(usize) -> f64,
+    drawn: &Drawn,
+    shells: Option<&crate::fem::shell_recovery::ShellField>,
+) -> Result<String, AnalysisError> {
     let n = model.nodes.len();
     if u.len() < n {
         return Err(AnalysisError::new(
@@ -152,11 +168,58 @@ pub fn static_vtu(
         .iter()
         .map(|&e| if e >= 0.0 { von_mises(e as usize) } else { 0.0 })
         .collect();
+    let mut point_data: Vec<(&str, Vec<f64>)> = Vec::new();
+    let mut cell_data: Vec<(&str, Vec<f64>)> = Vec::new();
+    if let Some(f) = shells.filter(|f| !f.forces.is_empty()) {
+        for (name, list) in [
+            ("shell_stress_top_MPa", &f.top),
+            ("shell_stress_mid_MPa", &f.mid),
+            ("shell_stress_bottom_MPa", &f.bottom),
+        ] {
+            let mut v = vec![0.0; 6 * points.len()];
+            for (i, s) in list.iter().enumerate().take(n) {
+                if let Some(s) = s {
+                    v[6 * i..6 * i + 6].copy_from_slice(s);
+                }
+            }
+            point_data.push((name, v));
+        }
+        let mut by_element = vec![None; model.elements.len()];
+        for (ie, sf) in &f.forces {
+            if let Some(slot) = by_element.get_mut(*ie) {
+                *slot = Some(*sf);
+            }
+        }
+        type Pick = fn(&crate::fem::shell_recovery::ShellForces) -> [f64; 3];
+        let picks: [(&str, Pick); 6] = [
+            ("shell_N_N_per_mm", |s| s.n),
+            ("shell_M_Nmm_per_mm", |s| s.m),
+            ("shell_Q_N_per_mm", |s| [s.q[0], s.q[1], 0.0]),
+            ("shell_axis_x", |s| s.axes[0]),
+            ("shell_axis_y", |s| s.axes[1]),
+            ("shell_axis_z", |s| s.axes[2]),
+        ];
+        for (name, pick) in picks {
+            let v: Vec<f64> = c
+                .element
+                .iter()
+                .flat_map(|&e| {
+                    let sf = (e >= 0.0)
+                        .then(|| by_element.get(e as usize).copied().flatten())
+                        .flatten();
+                    sf.map_or([0.0; 3], |s| pick(&s))
+                })
+                .collect();
+            cell_data.push((name, v));
+        }
+    }
     vtk::to_string(&VtuMesh {
         points: &points,
         cells: &c.cells,
         point_vectors: vec![("displacement_mm", &disp), ("rotation_deg", &rot)],
         cell_scalars: vec![("von_mises_MPa", &vm), ("element", &c.element), ("part", &c.part)],
+        point_arrays: point_data.iter().map(|(k, v)| (*k, 6, v.as_slice())).collect(),
+        cell_arrays: cell_data.iter().map(|(k, v)| (*k, 3, v.as_slice())).collect(),
         ..Default::default()
     })
     .map_err(err)
@@ -194,6 +257,7 @@ pub fn modes_vtu(model: &Model, modes: &[(f64, &[[f64; 6]])], drawn: &Drawn) -> 
             .collect(),
         cell_scalars: vec![("element", &c.element), ("part", &c.part)],
         field_scalars: vec![("frequency_hz", &freq)],
+        ..Default::default()
     })
     .map(String::into_bytes)
     .map_err(err)

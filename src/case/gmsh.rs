@@ -391,6 +391,8 @@ pub fn parse_msh_traced(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, 
                 }
             };
             spec.elements.push(el);
+            spec.element_groups
+                .push(groups.iter().map(|(n, _)| (*n).clone()).collect());
             origin.push(gname.clone());
         }
     }

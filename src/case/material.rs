@@ -110,3 +110,36 @@ impl MaterialSpec {
         Ok(m)
     }
 }
+
+/// Plausible densities of structural solids in the case-file units, t/mm³: 1e-10 (100 kg/m³,
+/// rigid foams) … 3e-8 (30 000 kg/m³, above the densest metals, 22 600 kg/m³).
+pub const DENSITY_RANGE: (f64, f64) = (1e-10, 3e-8);
+
+/// A warning when a material's density (t/mm³) is outside [`DENSITY_RANGE`] — typically a
+/// density typed in kg/m³ or g/cm³, which makes natural frequencies 10⁶× or 3·10⁴× too low
+/// (f ∝ 1/√ρ). `None` for plausible densities and for 0 (massless on purpose). `at` is the
+/// material's place in the case file, e.g. `materials.steel`.
+pub fn density_warning(at: &str, m: &Material) -> Option<String> {
+    let rho = m.density;
+    let (lo, hi) = DENSITY_RANGE;
+    if rho == 0.0 || (lo..=hi).contains(&rho) {
+        return None;
+    }
+    let hint = if (100.0..=30_000.0).contains(&rho) {
+        format!(
+            " — it looks like kg/m³: in t/mm³ it is {:.3e} (kg/m³ × 1e-12), and as given the natural frequencies come out 10⁶× too low",
+            rho * 1e-12
+        )
+    } else if (0.1..=30.0).contains(&rho) {
+        format!(
+            " — it looks like g/cm³: in t/mm³ it is {:.3e} (g/cm³ × 1e-9), and as given the natural frequencies come out {:.0}× too low",
+            rho * 1e-9,
+            1e9f64.sqrt()
+        )
+    } else {
+        String::new()
+    };
+    Some(format!(
+        "{at}.density = {rho:e} t/mm³ is outside the plausible range {lo:e} … {hi:e} t/mm³ (100 … 30 000 kg/m³; steel 7.85e-9){hint}; natural frequencies scale as 1/√density"
+    ))
+}

@@ -210,6 +210,43 @@ pub struct LoadCaseSpec {
     /// Prescribed displacements (mm) and rotations (degrees).
     #[serde(default)]
     pub displacements: Vec<DisplacementSpec>,
+    /// Uniform pressures on shell elements (consistent nodal loads).
+    #[serde(default)]
+    pub pressures: Vec<PressureSpec>,
+    /// Uniform loads along shell edges (consistent nodal loads).
+    #[serde(default)]
+    pub edge_loads: Vec<EdgeLoadSpec>,
+}
+
+/// A uniform pressure on shell elements, given by element list and/or Gmsh physical group.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PressureSpec {
+    /// Pressure, MPa (N/mm²). Positive acts along each element's normal n: the right-hand rule
+    /// over the node order (n = +z for nodes listed counter-clockwise seen from +z; for a
+    /// warped quad, the normal of its mean plane).
+    pub p: f64,
+    /// Indices (in `elements`) of the `shell4` elements loaded.
+    #[serde(default)]
+    pub elements: Vec<usize>,
+    /// Name of a Gmsh physical group (listed in `gmsh.groups`) whose shell elements are loaded
+    /// (`.msh` meshes only).
+    #[serde(default)]
+    pub group: Option<String>,
+}
+
+/// A uniform load along the straight edge between two nodes of one `shell4` element.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct EdgeLoadSpec {
+    /// The edge's end nodes: two nodes adjacent in some `shell4` element's node list.
+    pub nodes: [usize; 2],
+    /// Force per length [qx, qy, qz], N/mm, global axes.
+    #[serde(default)]
+    pub q: [f64; 3],
+    /// Moment per length [mx, my, mz], N·mm/mm, global axes.
+    #[serde(default)]
+    pub m: [f64; 3],
 }
 
 /// The model part of a `static` or `modal` case (also the content of a mesh file).
@@ -237,6 +274,11 @@ pub struct MeshSpec {
     /// Load cases (`static`: at least one, inline or in the mesh file; `modal` ignores them).
     #[serde(default)]
     pub load_cases: Vec<LoadCaseSpec>,
+    /// Gmsh meshes: the mapped physical groups of each element (filled by the `.msh` reader;
+    /// not a case-file field).
+    #[serde(skip)]
+    #[schemars(skip)]
+    pub element_groups: Vec<Vec<String>>,
 }
 
 /// `"analysis": "modal"`: the lowest `modes` natural frequencies and mass-normalised shapes of
@@ -257,6 +299,9 @@ pub struct ModalCase {
     /// the lowest; ≥ 0. Default: 0 (a small negative shift for free bodies).
     #[schemars(range(min = 0))]
     pub shift_hz: Option<f64>,
+    /// Mode shapes in the JSON result (default true). `false` leaves them out (a 100k-DOF model
+    /// would write tens of MB); `modes.vtu` (with `--out`) always holds them.
+    pub shapes: bool,
     /// The model.
     #[serde(flatten)]
     pub model: MeshSpec,
@@ -392,8 +437,11 @@ impl MeshSpec {
             .enumerate()
             .map(|(i, r)| (format!("rigid_links[{i}]"), r.clone()))
             .collect();
+        // Model element index of each case element (masses and rigid links are no elements).
+        let mut model_index: Vec<Option<usize>> = Vec::with_capacity(self.elements.len());
         for (ie, e) in self.elements.iter().enumerate() {
             let p = format!("elements[{ie}]");
+            let before = model.elements.len();
             match e {
                 ElementSpec::Beam {
                     nodes,
@@ -566,6 +614,7 @@ impl MeshSpec {
                     }));
                 }
             }
+            model_index.push((model.elements.len() > before).then_some(before));
         }
         for (p, r) in rigid {
             let master = node_ref(format!("{p}.master"), r.master)?;
@@ -603,6 +652,106 @@ impl MeshSpec {
                     DofName::Ux | DofName::Uy | DofName::Uz => d.value,
                 };
                 lc = lc.displacement(node, d.dof.dof(), value);
+            }
+            for (i, pr) in c.pressures.iter().enumerate() {
+                let pp = format!("{p}.pressures[{i}]");
+                check::finite(&format!("{pp}.p"), pr.p)?;
+                let mut list: Vec<(String, usize)> = Vec::new();
+                for (k, &e) in pr.elements.iter().enumerate() {
+                    let at = format!("{pp}.elements[{k}]");
+                    let me = model_index.get(e).copied().flatten();
+                    match me.and_then(|m| model.elements.get(m)) {
+                        Some(fem::Element::Shell4(_)) => list.push((at, me.unwrap_or(e))),
+                        Some(_) => return Err(CaseError::value(at, e, "a pressure acts on shell4 elements only")),
+                        None if e < self.elements.len() => {
+                            return Err(CaseError::value(at, e, "a pressure acts on shell4 elements only"))
+                        }
+                        None => {
+                            return Err(CaseError::value(
+                                at,
+                                e,
+                                format!(
+                                    "element index must be < {} (the number of elements)",
+                                    self.elements.len()
+                                ),
+                            ))
+                        }
+                    }
+                }
+                if let Some(gname) = &pr.group {
+                    let at = format!("{pp}.group");
+                    if self.element_groups.is_empty() {
+                        return Err(CaseError::value(
+                            at,
+                            format!("\"{gname}\""),
+                            "a group names a Gmsh physical group: only with a .msh mesh; give `elements` otherwise",
+                        ));
+                    }
+                    let before = list.len();
+                    for (e, groups) in self.element_groups.iter().enumerate() {
+                        let Some(me) = model_index.get(e).copied().flatten() else {
+                            continue;
+                        };
+                        if groups.iter().any(|g| g == gname)
+                            && matches!(model.elements.get(me), Some(fem::Element::Shell4(_)))
+                        {
+                            list.push((at.clone(), me));
+                        }
+                    }
+                    if list.len() == before {
+                        return Err(CaseError::value(
+                            at,
+                            format!("\"{gname}\""),
+                            "no shell element of the model belongs to this group (it must be listed in `gmsh.groups` and hold triangles or quadrangles)",
+                        ));
+                    }
+                }
+                if list.is_empty() {
+                    return Err(CaseError::new(
+                        pp,
+                        "give the loaded shells by `elements` and/or `group`",
+                    ));
+                }
+                for (at, e) in list {
+                    let Some(fem::Element::Shell4(sh)) = model.elements.get(e) else {
+                        continue;
+                    };
+                    let x = sh.nodes.map(|n| model.nodes[n]);
+                    let f = fem::shell_loads::pressure_loads(&x, pr.p)
+                        .ok_or_else(|| CaseError::value(at, e, "degenerate shell geometry"))?;
+                    for (k, &n) in sh.nodes.iter().enumerate() {
+                        lc = lc.force(n, f[k]);
+                    }
+                }
+            }
+            for (i, el) in c.edge_loads.iter().enumerate() {
+                let pe = format!("{p}.edge_loads[{i}]");
+                let a = node_ref(format!("{pe}.nodes[0]"), el.nodes[0])?;
+                let b = node_ref(format!("{pe}.nodes[1]"), el.nodes[1])?;
+                for (k, v) in el.q.iter().chain(&el.m).enumerate() {
+                    let name = if k < 3 {
+                        format!("q[{k}]")
+                    } else {
+                        format!("m[{}]", k - 3)
+                    };
+                    check::finite(&format!("{pe}.{name}"), *v)?;
+                }
+                let is_edge = model.elements.iter().any(|e| match e {
+                    fem::Element::Shell4(sh) => (0..4).any(|k| {
+                        let (x, y) = (sh.nodes[k], sh.nodes[(k + 1) % 4]);
+                        x != y && ((x, y) == (a, b) || (x, y) == (b, a))
+                    }),
+                    _ => false,
+                });
+                if !is_edge {
+                    return Err(CaseError::value(
+                        format!("{pe}.nodes"),
+                        format!("[{a}, {b}]"),
+                        "must be two nodes adjacent in the node list of a shell4 element (an element edge)",
+                    ));
+                }
+                let f = fem::shell_loads::edge_loads(model.nodes[a], model.nodes[b], el.q, el.m);
+                lc = lc.force(a, f[0]).force(b, f[1]);
             }
             model.load_cases.push(lc);
         }

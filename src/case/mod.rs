@@ -260,7 +260,18 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                         ))
                     }
                 };
-                Some((modes, shift_hz))
+                let shapes = match map.remove("shapes") {
+                    None | Some(Value::Null) => true,
+                    Some(Value::Bool(b)) => b,
+                    Some(other) => {
+                        return Err(CaseError::value(
+                            "shapes",
+                            short(&other),
+                            "must be true or false (mode shapes in the JSON result; modes.vtu always has them)",
+                        ))
+                    }
+                };
+                Some((modes, shift_hz, shapes))
             } else {
                 None
             };
@@ -321,11 +332,12 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
                 None => inline,
             };
             Ok(match modal {
-                Some((modes, shift_hz)) => Case::Modal(mesh::ModalCase {
+                Some((modes, shift_hz, shapes)) => Case::Modal(mesh::ModalCase {
                     mesh: mesh_name,
                     gmsh: gmsh_kept,
                     modes,
                     shift_hz,
+                    shapes,
                     model,
                 }),
                 None => Case::Static(mesh::StaticCase {

@@ -25,6 +25,8 @@ pub mod nonlinear;
 pub mod recovery;
 pub mod section;
 pub mod shell;
+pub mod shell_loads;
+pub mod shell_recovery;
 pub mod solve;
 pub mod transform;
 

@@ -49,11 +49,11 @@ pub type Mat24 = SMatrix<f64, 24, 24>;
 /// 24-vector.
 pub type Vec24 = SVector<f64, 24>;
 
-const XI: [f64; 4] = [-1.0, 1.0, 1.0, -1.0];
-const ETA: [f64; 4] = [-1.0, -1.0, 1.0, 1.0];
-const G2: f64 = 0.577_350_269_189_625_8;
+pub(crate) const XI: [f64; 4] = [-1.0, 1.0, 1.0, -1.0];
+pub(crate) const ETA: [f64; 4] = [-1.0, -1.0, 1.0, 1.0];
+pub(crate) const G2: f64 = 0.577_350_269_189_625_8;
 /// Shear correction factor of the Reissner–Mindlin plate.
-const KAPPA: f64 = 5.0 / 6.0;
+pub(crate) const KAPPA: f64 = 5.0 / 6.0;
 /// Weight of the fully integrated drilling penalty, relative to γ = G.
 const DRILL_STAB: f64 = 1e-3;
 /// Shear stabilization α of the MITC4 plate part: transverse shear stiffness
@@ -107,7 +107,7 @@ fn jacobian(xy: &[[f64; 2]; 4], dxi: &[f64; 4], deta: &[f64; 4]) -> Matrix2<f64>
 type Cartesian = ([f64; 4], [f64; 4], [f64; 4], f64, Matrix2<f64>);
 
 /// Cartesian derivatives (∂N/∂x, ∂N/∂y) and det J at (ξ, η); `None` for a degenerate map.
-fn cartesian(xy: &[[f64; 2]; 4], xi: f64, eta: f64) -> Option<Cartesian> {
+pub(crate) fn cartesian(xy: &[[f64; 2]; 4], xi: f64, eta: f64) -> Option<Cartesian> {
     let (n, dxi, deta) = shape(xi, eta);
     let j = jacobian(xy, &dxi, &deta);
     let det = j.determinant();
@@ -260,7 +260,7 @@ fn covariant_shear(xy: &[[f64; 2]; 4], xi: f64, eta: f64) -> SMatrix<f64, 2, 12>
 }
 
 /// Curvature rows B_b (κxx, κyy, κxy over (w θx θy) × 4).
-fn curvature_b(dx: &[f64; 4], dy: &[f64; 4]) -> SMatrix<f64, 3, 12> {
+pub(crate) fn curvature_b(dx: &[f64; 4], dy: &[f64; 4]) -> SMatrix<f64, 3, 12> {
     let mut b = SMatrix::<f64, 3, 12>::zeros();
     for i in 0..4 {
         b[(0, 3 * i + 2)] = dx[i];
@@ -272,7 +272,7 @@ fn curvature_b(dx: &[f64; 4], dy: &[f64; 4]) -> SMatrix<f64, 3, 12> {
 }
 
 /// MITC4 shear rows (γxz, γyz) at (ξ, η).
-fn mitc_shear_b(xy: &[[f64; 2]; 4], xi: f64, eta: f64, ji: &Matrix2<f64>) -> SMatrix<f64, 2, 12> {
+pub(crate) fn mitc_shear_b(xy: &[[f64; 2]; 4], xi: f64, eta: f64, ji: &Matrix2<f64>) -> SMatrix<f64, 2, 12> {
     let b_b = covariant_shear(xy, 0.0, -1.0);
     let b_d = covariant_shear(xy, 0.0, 1.0);
     let b_a = covariant_shear(xy, -1.0, 0.0);

@@ -54,6 +54,12 @@ pub struct VtuMesh<'a> {
     pub cell_scalars: Vec<(&'a str, &'a [f64])>,
     /// Named field scalars (any length), e.g. `("frequency_hz", …)` of the modes in the file.
     pub field_scalars: Vec<(&'a str, &'a [f64])>,
+    /// Named point arrays of any number of components (name, components, values point by
+    /// point): e.g. a symmetric stress tensor with 6 components in ParaView's order
+    /// XX, YY, ZZ, XY, YZ, XZ.
+    pub point_arrays: Vec<(&'a str, usize, &'a [f64])>,
+    /// Named cell arrays of any number of components (name, components, values cell by cell).
+    pub cell_arrays: Vec<(&'a str, usize, &'a [f64])>,
 }
 
 /// Errors of the writer: inconsistent arrays or I/O.
@@ -74,6 +80,28 @@ fn vec3_array(out: &mut String, name: &str, v: &[[f64; 3]]) {
         let _ = writeln!(out, "          {:e} {:e} {:e}", p[0], p[1], p[2]);
     }
     out.push_str("        </DataArray>\n");
+}
+
+fn multi_array(out: &mut String, name: &str, ncomp: usize, v: &[f64]) {
+    let _ = writeln!(
+        out,
+        "        <DataArray type=\"Float64\" Name=\"{name}\" NumberOfComponents=\"{ncomp}\" format=\"ascii\">"
+    );
+    for row in v.chunks(ncomp.max(1)) {
+        let items: Vec<String> = row.iter().map(|x| format!("{x:e}")).collect();
+        let _ = writeln!(out, "          {}", items.join(" "));
+    }
+    out.push_str("        </DataArray>\n");
+}
+
+fn check_multi(name: &str, ncomp: usize, v: &[f64], n: usize, what: &str) -> Result<(), VtkError> {
+    if ncomp == 0 || v.len() != ncomp * n {
+        return Err(VtkError::Shape(format!(
+            "{name} has {} values for {n} {what} × {ncomp} components",
+            v.len()
+        )));
+    }
+    check_finite(name, v.iter())
 }
 
 fn scalar_array(out: &mut String, name: &str, v: &[f64], tuples: bool) {
@@ -144,6 +172,14 @@ pub fn to_string(mesh: &VtuMesh) -> Result<String, VtkError> {
         check_name(name, &mut seen)?;
         check_finite(name, v.iter())?;
     }
+    for (name, k, v) in &mesh.point_arrays {
+        check_name(name, &mut seen)?;
+        check_multi(name, *k, v, np, "points")?;
+    }
+    for (name, k, v) in &mesh.cell_arrays {
+        check_name(name, &mut seen)?;
+        check_multi(name, *k, v, nc, "cells")?;
+    }
     if let Some(c) = mesh.cells.iter().find(|c| c.points().iter().any(|&i| i >= np)) {
         return Err(VtkError::Shape(format!(
             "cell {c:?} refers to a missing point ({np} points)"
@@ -186,9 +222,15 @@ pub fn to_string(mesh: &VtuMesh) -> Result<String, VtkError> {
     for (name, v) in &mesh.point_vectors {
         vec3_array(&mut out, name, v);
     }
+    for (name, k, v) in &mesh.point_arrays {
+        multi_array(&mut out, name, *k, v);
+    }
     out.push_str("      </PointData>\n      <CellData>\n");
     for (name, v) in &mesh.cell_scalars {
         scalar_array(&mut out, name, v, false);
+    }
+    for (name, k, v) in &mesh.cell_arrays {
+        multi_array(&mut out, name, *k, v);
     }
     out.push_str("      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
     Ok(out)

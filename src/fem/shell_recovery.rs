@@ -1,0 +1,367 @@
+//! Shell stress recovery: stress resultants at the element centre and surface stresses at the
+//! nodes, averaged over the shells that meet there.
+//!
+//! Per element, the strains of the four-node shell ([`super::shell`]) are evaluated at its
+//! 2×2 Gauss points — membrane strains ε including the condensed incompatible modes (their
+//! amplitudes α = −K_ii⁻¹ K_ciᵀ d recovered as in the condensation), curvatures κ, and the MITC4
+//! transverse shear strains γ — and extrapolated bilinearly to the corner nodes (the Gauss
+//! points are the corners of a square of half-side 1/√3 in (ξ, η), so node i takes
+//! Σ_g ¼(1 + √3 ξᵢξ_g')(1 + √3 ηᵢη_g') v_g with ξ_g' = ±1; O. C. Zienkiewicz, R. L. Taylor,
+//! The Finite Element Method, vol. 1, 5th ed., §14.3). Surface stresses in the element axes are
+//! σ(z) = C(ε + zκ) at z = +t/2 (top), 0 (mid) and −t/2 (bottom), plane stress; the transverse
+//! shear stresses are zero on the faces and at the mid-surface the peak of the parabolic
+//! distribution, τ = 1.5·Q/t with Q = κ_s·G·t·γ. The tensor is rotated to global axes and
+//! averaged over the elements at the node (unweighted).
+//!
+//! Stress resultants at the centre in element axes: N = C·t·ε (N/mm), M = C·t³/12·κ
+//! (N·mm/mm), Q = κ_s·G·t·γ (N/mm); the incompatible modes have zero derivatives at the centre.
+//! Sign conventions follow [`super::shell`]: u(z) = u + zθy, v(z) = v − zθx, so Mxx > 0
+//! stretches the top (z = +t/2) surface.
+
+use super::error::FemError;
+use super::model::{Element, Model};
+use super::shell::{
+    cartesian, curvature_b, mitc_shear_b, plane_stress, shell_geometry, stabilized_shear_stiffness, Vec24, ETA, G2, XI,
+};
+use crate::material::Material;
+use nalgebra::{Matrix3, SMatrix, SVector, Vector2, Vector3};
+use rayon::prelude::*;
+
+/// Stress resultants at the centre of a shell element, in the element's axes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShellForces {
+    /// Element axes: rows are local x, y, z (normal) in global coordinates.
+    pub axes: [[f64; 3]; 3],
+    /// Membrane forces [Nxx, Nyy, Nxy], N/mm.
+    pub n: [f64; 3],
+    /// Moments [Mxx, Myy, Mxy], N·mm/mm (Mxx > 0 puts the top surface in tension).
+    pub m: [f64; 3],
+    /// Transverse shear forces [Qx, Qy], N/mm.
+    pub q: [f64; 2],
+}
+
+/// One element's recovery: centre resultants and, per corner node, the global stress tensor
+/// [sxx, syy, szz, sxy, syz, szx] (MPa) on the top, mid and bottom surfaces.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShellRecovery {
+    /// Centre resultants, element axes.
+    pub forces: ShellForces,
+    /// `nodal[i][s]`: node i of the element, surface s (0 top, 1 mid, 2 bottom).
+    pub nodal: [[[f64; 6]; 3]; 4],
+}
+
+/// Local membrane (u v θz) and plate (w θx θy) DOFs of the 24 local element DOFs.
+fn split(d: &Vec24) -> (SVector<f64, 12>, SVector<f64, 12>) {
+    let mut dm = SVector::<f64, 12>::zeros();
+    let mut dp = SVector::<f64, 12>::zeros();
+    for i in 0..4 {
+        for (k, (&a, &b)) in [0, 1, 5].iter().zip([2, 3, 4].iter()).enumerate() {
+            dm[3 * i + k] = d[6 * i + a];
+            dp[3 * i + k] = d[6 * i + b];
+        }
+    }
+    (dm, dp)
+}
+
+/// Compatible (3×12) and incompatible-mode (3×4) membrane strain rows at (ξ, η), with det J;
+/// the same construction as the element's membrane stiffness (Taylor's constant-Jacobian
+/// correction of Wilson's modes 1−ξ², 1−η²).
+type MemRows = (SMatrix<f64, 3, 12>, SMatrix<f64, 3, 4>, f64);
+
+fn membrane_rows(xy: &[[f64; 2]; 4], xi: f64, eta: f64) -> Option<MemRows> {
+    let (_, _, _, det0, ji0) = cartesian(xy, 0.0, 0.0)?;
+    let (_, dx, dy, det, _) = cartesian(xy, xi, eta)?;
+    let mut b = SMatrix::<f64, 3, 12>::zeros();
+    for i in 0..4 {
+        b[(0, 3 * i)] = dx[i];
+        b[(1, 3 * i + 1)] = dy[i];
+        b[(2, 3 * i)] = dy[i];
+        b[(2, 3 * i + 1)] = dx[i];
+    }
+    let s = det0 / det;
+    let pn = [(-2.0 * xi, 0.0), (0.0, -2.0 * eta)];
+    let mut bi = SMatrix::<f64, 3, 4>::zeros();
+    for (k, (pxi, peta)) in pn.iter().enumerate() {
+        let px = s * (ji0[(0, 0)] * pxi + ji0[(0, 1)] * peta);
+        let py = s * (ji0[(1, 0)] * pxi + ji0[(1, 1)] * peta);
+        bi[(0, k)] = px;
+        bi[(2, k)] = py;
+        bi[(1, 2 + k)] = py;
+        bi[(2, 2 + k)] = px;
+    }
+    Some((b, bi, det))
+}
+
+/// Symmetric 3×3 from [xx, yy, zz, xy, yz, zx].
+fn tensor(s: &[f64; 6]) -> Matrix3<f64> {
+    Matrix3::new(s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2])
+}
+
+fn voigt(m: &Matrix3<f64>) -> [f64; 6] {
+    [m[(0, 0)], m[(1, 1)], m[(2, 2)], m[(0, 1)], m[(1, 2)], m[(2, 0)]]
+}
+
+/// Principal stresses of [sxx, syy, szz, sxy, syz, szx], ascending.
+pub fn principal(s: &[f64; 6]) -> [f64; 3] {
+    let mut e: Vec<f64> = tensor(s).symmetric_eigenvalues().iter().copied().collect();
+    e.sort_by(f64::total_cmp);
+    [e[0], e[1], e[2]]
+}
+
+/// Strains at the 2×2 Gauss points (order of the nodes: (−,−), (+,−), (+,+), (−,+)/√3) from
+/// the local element DOFs: membrane ε (with the condensed incompatible modes), curvatures κ,
+/// MITC4 shear strains γ, and det J.
+struct GaussStrains {
+    eps: [Vector3<f64>; 4],
+    kap: [Vector3<f64>; 4],
+    gam: [Vector2<f64>; 4],
+    det: [f64; 4],
+}
+
+fn gauss_strains(xy: &[[f64; 2]; 4], t: f64, c: &Matrix3<f64>, d: &Vec24) -> Option<GaussStrains> {
+    let (dm, dp) = split(d);
+    let ct = c * t;
+    // Incompatible-mode amplitudes, as condensed in the stiffness.
+    let mut kci = SMatrix::<f64, 12, 4>::zeros();
+    let mut kii = SMatrix::<f64, 4, 4>::zeros();
+    let mut rows = Vec::with_capacity(4);
+    for gp in 0..4 {
+        let (b, bi, det) = membrane_rows(xy, XI[gp] * G2, ETA[gp] * G2)?;
+        kci += b.transpose() * ct * bi * det;
+        kii += bi.transpose() * ct * bi * det;
+        rows.push((b, bi, det));
+    }
+    let alpha = -(kii.try_inverse()? * kci.transpose() * dm);
+    let mut out = GaussStrains {
+        eps: [Vector3::zeros(); 4],
+        kap: [Vector3::zeros(); 4],
+        gam: [Vector2::zeros(); 4],
+        det: [0.0; 4],
+    };
+    for gp in 0..4 {
+        let (xi, eta) = (XI[gp] * G2, ETA[gp] * G2);
+        let (b, bi, det) = &rows[gp];
+        out.eps[gp] = b * dm + bi * alpha;
+        out.det[gp] = *det;
+        let (_, dx, dy, _, ji) = cartesian(xy, xi, eta)?;
+        out.kap[gp] = curvature_b(&dx, &dy) * dp;
+        out.gam[gp] = mitc_shear_b(xy, xi, eta, &ji) * dp;
+    }
+    Some(out)
+}
+
+/// Recovery of one shell element with nodes at `x` from its global displacements (24 values:
+/// six per node, mm and rad). `None` for a degenerate quadrilateral.
+pub fn shell_recovery(x: &[[f64; 3]; 4], t: f64, mat: &Material, d_global: &Vec24) -> Option<ShellRecovery> {
+    let g = shell_geometry(x)?;
+    let d = g.t * d_global;
+    let (dm, dp) = split(&d);
+    let c = plane_stress(mat.e, mat.nu);
+    let ct = c * t;
+    // Transverse shear stiffness per unit width, N/mm: the element's own (stabilised MITC4),
+    // so that Q balances the nodal forces; the shear stress is its parabolic peak 1.5·Q/t.
+    let ds = stabilized_shear_stiffness(&g.xy, t, mat);
+    let GaussStrains {
+        eps: eps_g,
+        kap: kap_g,
+        gam: gam_g,
+        ..
+    } = gauss_strains(&g.xy, t, &c, &d)?;
+    // Centre resultants.
+    let (_, dx0, dy0, _, ji0) = cartesian(&g.xy, 0.0, 0.0)?;
+    let (b0, _, _) = membrane_rows(&g.xy, 0.0, 0.0)?;
+    let n = ct * (b0 * dm);
+    let m = c * (t * t * t / 12.0) * (curvature_b(&dx0, &dy0) * dp);
+    let q = mitc_shear_b(&g.xy, 0.0, 0.0, &ji0) * dp * ds;
+    // Extrapolation to the corners and rotation to global axes.
+    let r3 = 3f64.sqrt();
+    let mut nodal = [[[0.0; 6]; 3]; 4];
+    for i in 0..4 {
+        let (mut e, mut k, mut gm) = (Vector3::zeros(), Vector3::zeros(), Vector2::zeros());
+        for gp in 0..4 {
+            let w = 0.25 * (1.0 + r3 * XI[i] * XI[gp]) * (1.0 + r3 * ETA[i] * ETA[gp]);
+            e += eps_g[gp] * w;
+            k += kap_g[gp] * w;
+            gm += gam_g[gp] * w;
+        }
+        for (s, z) in [0.5 * t, 0.0, -0.5 * t].into_iter().enumerate() {
+            let sp = c * (e + k * z);
+            let (txz, tyz) = if s == 1 {
+                (1.5 * ds / t * gm.x, 1.5 * ds / t * gm.y)
+            } else {
+                (0.0, 0.0)
+            };
+            let local = tensor(&[sp.x, sp.y, 0.0, sp.z, tyz, txz]);
+            nodal[i][s] = voigt(&(g.lam.transpose() * local * g.lam));
+        }
+    }
+    let row = |r: usize| [g.lam[(r, 0)], g.lam[(r, 1)], g.lam[(r, 2)]];
+    Some(ShellRecovery {
+        forces: ShellForces {
+            axes: [row(0), row(1), row(2)],
+            n: [n.x, n.y, n.z],
+            m: [m.x, m.y, m.z],
+            q: [q.x, q.y],
+        },
+        nodal,
+    })
+}
+
+/// Shell stresses of a whole model for one displacement field.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ShellField {
+    /// Per node, global [sxx, syy, szz, sxy, syz, szx] (MPa) on the top surface, averaged over
+    /// the shells at the node; `None` for nodes without shells.
+    pub top: Vec<Option<[f64; 6]>>,
+    /// As `top`, mid-surface (with the transverse shear peak 1.5·Q/t).
+    pub mid: Vec<Option<[f64; 6]>>,
+    /// As `top`, bottom surface.
+    pub bottom: Vec<Option<[f64; 6]>>,
+    /// Per shell element (model order): element index and centre resultants.
+    pub forces: Vec<(usize, ShellForces)>,
+}
+
+/// Recovers every shell of `model` for the displacements `u` (one [ux, uy, uz, rx, ry, rz]
+/// row per node, mm and rad, global axes; extra rows are ignored). Empty for models without
+/// shells.
+pub fn shell_field(model: &Model, u: &[[f64; 6]]) -> Result<ShellField, FemError> {
+    let shells: Vec<usize> = (0..model.elements.len())
+        .filter(|&ie| matches!(model.elements[ie], Element::Shell4(_)))
+        .collect();
+    if shells.is_empty() {
+        return Ok(ShellField::default());
+    }
+    let nn = model.nodes.len();
+    if u.len() < nn {
+        return Err(FemError::BadInput(format!(
+            "{} displacement rows for {nn} nodes",
+            u.len()
+        )));
+    }
+    let rec: Vec<(usize, [usize; 4], ShellRecovery)> = shells
+        .par_iter()
+        .map(|&ie| {
+            let Element::Shell4(sh) = &model.elements[ie] else {
+                unreachable!("filtered to shells")
+            };
+            let x = sh.nodes.map(|n| model.nodes[n]);
+            let mut d = Vec24::zeros();
+            for (k, &n) in sh.nodes.iter().enumerate() {
+                for i in 0..6 {
+                    d[6 * k + i] = u[n][i];
+                }
+            }
+            shell_recovery(&x, sh.t, &sh.material, &d)
+                .map(|r| (ie, sh.nodes, r))
+                .ok_or_else(|| FemError::BadElement {
+                    element: ie,
+                    reason: "degenerate shell geometry".into(),
+                })
+        })
+        .collect::<Result<_, _>>()?;
+    let mut sum = vec![[[0.0; 6]; 3]; nn];
+    let mut count = vec![0.0f64; nn];
+    let mut forces = Vec::with_capacity(rec.len());
+    for (ie, nodes, r) in rec {
+        // A triangle [a, b, c, c] gives node c the mean of its two corner values.
+        let tri = nodes[3] == nodes[2];
+        for (k, &n) in nodes.iter().enumerate() {
+            let w = if tri && k >= 2 { 0.5 } else { 1.0 };
+            for (acc, v) in sum[n].iter_mut().zip(&r.nodal[k]) {
+                for (a, b) in acc.iter_mut().zip(v) {
+                    *a += w * b;
+                }
+            }
+            count[n] += w;
+        }
+        forces.push((ie, r.forces));
+    }
+    let mut field = ShellField {
+        forces,
+        ..Default::default()
+    };
+    for (s, c) in sum.iter().zip(&count) {
+        let avg = |k: usize| (*c > 0.0).then(|| s[k].map(|v| v / c));
+        field.top.push(avg(0));
+        field.mid.push(avg(1));
+        field.bottom.push(avg(2));
+    }
+    Ok(field)
+}
+
+/// Pairs of shells that share an edge but run it in the same direction, so their normals
+/// (right-hand rule over the node order) point to opposite sides: (element, element, edge
+/// nodes). Their "top" surfaces are on opposite sides, and nodal averages at their nodes mix
+/// top and bottom.
+pub fn orientation_conflicts(model: &Model) -> Vec<(usize, usize, [usize; 2])> {
+    let mut seen: std::collections::HashMap<(usize, usize), usize> = std::collections::HashMap::new();
+    let mut out = Vec::new();
+    for (ie, e) in model.elements.iter().enumerate() {
+        let Element::Shell4(sh) = e else { continue };
+        for k in 0..4 {
+            let (a, b) = (sh.nodes[k], sh.nodes[(k + 1) % 4]);
+            if a == b {
+                continue;
+            }
+            match seen.get(&(a, b)) {
+                Some(&other) if other != ie => out.push((other, ie, [a, b])),
+                _ => {
+                    seen.insert((a, b), ie);
+                }
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fem::shell::shell_local_stiffness;
+
+    /// The recovered strains are the element's own: for fields without drilling-penalty
+    /// energy, Σ_g (εᵀCtε + κᵀDκ + γᵀκ_sGtγ)·det J_g equals dᵀkd of the element stiffness
+    /// (to 1e-10) — on a distorted quad for plate fields (w θx θy arbitrary), and on a
+    /// rectangle for in-plane bending u = κxy, v = 0 with θz = −κx/2 (the drilling rotation
+    /// ½(∂v/∂x − ∂u/∂y) exactly, so the penalty is idle; the incompatible modes are active).
+    /// Fails if the element formulation and this recovery drift apart.
+    #[test]
+    fn recovered_strains_carry_the_element_energy() {
+        let mat = Material::STEEL;
+        let t = 3.0;
+        let c = plane_stress(mat.e, mat.nu);
+        let energy = |xy: &[[f64; 2]; 4], d: &Vec24| {
+            let s = gauss_strains(xy, t, &c, d).unwrap();
+            let gs = stabilized_shear_stiffness(xy, t, &mat);
+            (0..4)
+                .map(|g| {
+                    (s.eps[g].dot(&(c * t * s.eps[g]))
+                        + s.kap[g].dot(&(c * (t * t * t / 12.0) * s.kap[g]))
+                        + gs * s.gam[g].norm_squared())
+                        * s.det[g]
+                })
+                .sum::<f64>()
+        };
+        let skew = [[0.0, 0.0], [12.0, 1.5], [10.0, 9.0], [-1.0, 7.0]];
+        let mut d = Vec24::zeros();
+        for i in 0..4 {
+            d[6 * i + 2] = 0.01 * (i as f64 + 1.0) * if i % 2 == 0 { 1.0 } else { -0.7 };
+            d[6 * i + 3] = 0.003 * (i as f64 - 1.5);
+            d[6 * i + 4] = -0.002 * (i as f64 * i as f64 - 2.0);
+        }
+        let k = shell_local_stiffness(&skew, t, &mat).unwrap();
+        let (a, b) = (energy(&skew, &d), d.dot(&(k * d)));
+        assert!((a - b).abs() < 1e-10 * b, "plate: {a} vs {b}");
+        let rect = [[0.0, 0.0], [8.0, 0.0], [8.0, 5.0], [0.0, 5.0]];
+        let kappa = 1e-4;
+        let mut d = Vec24::zeros();
+        for (i, p) in rect.iter().enumerate() {
+            let (x, y) = (p[0] - 4.0, p[1] - 2.5);
+            d[6 * i] = kappa * x * y;
+            d[6 * i + 5] = -0.5 * kappa * x;
+        }
+        let k = shell_local_stiffness(&rect, t, &mat).unwrap();
+        let (a, b) = (energy(&rect, &d), d.dot(&(k * d)));
+        assert!((a - b).abs() < 1e-10 * b, "membrane: {a} vs {b}");
+    }
+}
