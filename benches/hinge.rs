@@ -7,7 +7,7 @@ use flexfem::material::Material;
 use rayon::prelude::*;
 use std::hint::black_box;
 
-/// 10,000 circular-notch and spherical-neck designs over the seed-000 design box (SPEC §6).
+/// 10,000 circular-notch and spherical-neck designs over the Ruiz et al. design box.
 fn designs() -> Vec<HingeSpec> {
     (0..10_000)
         .map(|i| {

@@ -5,7 +5,7 @@ use flexfem::kinematics::{workspace, PoseBox, Prs};
 use std::hint::black_box;
 
 fn bench(c: &mut Criterion) {
-    let prs = Prs::new(109.215, 47.91, 45f64.to_radians(), 0.0).expect("seed 000 geometry");
+    let prs = Prs::new(109.215, 47.91, 45f64.to_radians(), 0.0).expect("Ruiz et al. (2019) geometry");
     let (psi, theta) = (0.1f64.to_radians(), -0.15f64.to_radians());
     let target = prs.ikp(1.0, psi, theta).expect("reachable");
     c.bench_function("ikp_one_pose", |b| {

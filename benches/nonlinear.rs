@@ -1,4 +1,4 @@
-//! Geometrically nonlinear stage load case (seed 000 Table 4 row 1 strokes), 20 load steps,
+//! Geometrically nonlinear stage load case (Ruiz et al. (2019) Table 4 row 1 strokes), 20 load steps,
 //! co-rotational hinges and legs (target < 100 ms).
 
 use criterion::{criterion_group, criterion_main, Criterion};

@@ -1,4 +1,4 @@
-//! Command line: `run`, `check`, `schema` (INTERFACE.md).
+//! Command line: `run`, `check`, `schema`.
 
 use crate::analysis::{self, RunError};
 use crate::case::{self, CaseError};

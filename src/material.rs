@@ -1,4 +1,4 @@
-//! Linear-elastic isotropic materials and the built-in library (SPEC.md §2).
+//! Linear-elastic isotropic materials and the built-in library.
 
 use serde::{Deserialize, Serialize};
 
@@ -39,7 +39,7 @@ fn default_strength() -> f64 {
 }
 
 impl Material {
-    /// Aluminium 7075-T6 as used by Ruiz et al. (seed 000 §4–5): E = 72 GPa, ν = 0.33,
+    /// Aluminium 7075-T6 as used by Ruiz et al. (2019, §4–5): E = 72 GPa, ν = 0.33,
     /// ρ = 2.81 g/cm³, yield 503 MPa, allowable 400 MPa.
     pub const AL7075: Material = Material {
         e: 72_000.0,
@@ -48,7 +48,7 @@ impl Material {
         yield_strength: 503.0,
         allowable: 400.0,
     };
-    /// Nylon 66 as used for the 8R pan-tilt mechanism (seed 002): E = 3.3 GPa, ν = 0.33, ρ = 1.15 g/cm³.
+    /// Nylon 66 as used for the 8R pan-tilt mechanism (8R pan-tilt paper): E = 3.3 GPa, ν = 0.33, ρ = 1.15 g/cm³.
     /// Yield 80 MPa (typical datasheet value, dry), allowable 50 MPa.
     pub const NYLON66: Material = Material {
         e: 3_300.0,
@@ -57,7 +57,7 @@ impl Material {
         yield_strength: 80.0,
         allowable: 50.0,
     };
-    /// Generic structural steel: E = 210 GPa (seed 004), ν = 0.3, ρ = 7.85 g/cm³, yield 355 MPa, allowable 235 MPa.
+    /// Generic structural steel: E = 210 GPa (Han et al.), ν = 0.3, ρ = 7.85 g/cm³, yield 355 MPa, allowable 235 MPa.
     pub const STEEL: Material = Material {
         e: 210_000.0,
         nu: 0.3,

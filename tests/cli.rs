@@ -75,7 +75,7 @@ fn unreachable_strokes_exit_1_with_context() {
 
 #[test]
 fn bundled_kinematics_case_prints_table4_fkp_column() {
-    // Seed 000 Table 4 FKP column: Δz = 1384, 722, −631, −1511 µm (to 2 µm).
+    // Ruiz et al. (2019) Table 4 FKP column: Δz = 1384, 722, −631, −1511 µm (to 2 µm).
     let out = run(&["run", "cases/ruiz2019_kinematics.json"]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
@@ -96,7 +96,7 @@ fn bundled_kinematics_case_prints_table4_fkp_column() {
 
 #[test]
 fn markdown_format_prints_dms_table() {
-    // Seed 000 Table 4 row 1, FKP: ψ = 8′59″, θ = 1′4″.
+    // Ruiz et al. (2019) Table 4 row 1, FKP: ψ = 8′59″, θ = 1′4″.
     let out = run(&["run", "cases/ruiz2019_kinematics.json", "--format", "md"]);
     assert_eq!(out.status.code(), Some(0));
     let md = stdout(&out);

@@ -1,4 +1,4 @@
-//! The design loop: Table 1 sensitivities (seed 000) and requirement-driven sizing.
+//! The design loop: Table 1 sensitivities (Ruiz et al. (2019)) and requirement-driven sizing.
 
 mod common;
 use common::*;
@@ -24,7 +24,7 @@ fn f(v: &serde_json::Value) -> f64 {
 
 #[test]
 fn table1_directions_from_the_paper_design() {
-    // Seed 000 Table 1 / §5 text: "an increase in the thickness of the revolute joint causes a
+    // Ruiz et al. (2019) Table 1 / §5 text: "an increase in the thickness of the revolute joint causes a
     // significant increment in the stiffness of the structure, by a factor greater than 1.5, while
     // the Z displacement and the relation of maximum stresses in the joints suffer a slighter
     // reduction with a factor of 0.8. By contrast, an increase in the length of the spherical
@@ -69,7 +69,7 @@ fn lengthening_a_critical_neck_raises_d_a_lot() {
 
 #[test]
 fn design_meets_the_paper_requirements_verified_by_a_stage_run() {
-    // Seed 000 §4: Δz ≥ ±2 mm with σ ≤ 400 MPa, T ∈ [0.8, 1.2], hinges reaching the joint
+    // Ruiz et al. (2019) §4: Δz ≥ ±2 mm with σ ≤ 400 MPa, T ∈ [0.8, 1.2], hinges reaching the joint
     // rotations of the requirement sweep below 400 MPa.
     let out = run(&["run", "cases/ruiz2019_design.json"]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));

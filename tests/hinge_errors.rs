@@ -1,5 +1,5 @@
 //! Non-physical geometry and materials are refused with the parameter, value and the rule
-//! (SPEC.md §8).
+//!.
 
 use flexfem::hinge::{characterise, HingeError, HingeSpec};
 use flexfem::material::Material;
@@ -121,7 +121,7 @@ fn invalid_material_is_refused() {
 
 #[test]
 fn spec_deserialises_with_interface_names() {
-    // INTERFACE.md: {"type": "circular_notch", "R": 8, "t": 2, "w": 10, "h": 10, "blank_length": 20}
+    // The documented example: {"type": "circular_notch", "R": 8, "t": 2, "w": 10, "h": 10, "blank_length": 20}
     let s: HingeSpec =
         serde_json::from_str(r#"{"type": "circular_notch", "R": 8, "t": 2, "w": 10, "h": 10, "blank_length": 20}"#)
             .unwrap();

@@ -1,4 +1,4 @@
-//! Seed hinges against their published / reference stiffnesses (SPEC.md §4).
+//! Seed hinges against their published / reference stiffnesses.
 
 use flexfem::hinge::{characterise, HingeSpec};
 use flexfem::material::Material;
@@ -7,14 +7,14 @@ fn pct(got: f64, reference: f64) -> f64 {
     100.0 * (got - reference) / reference
 }
 
-/// Seed 000 material: Al 7075, E = 72000 MPa, ν = 0.33 (SPEC §2).
+/// Ruiz et al. (2019) material: Al 7075, E = 72000 MPa, ν = 0.33.
 fn al() -> Material {
     Material::AL7075
 }
 
 #[test]
 fn seed000_revolute_circular_notch() {
-    // SPEC §4 / seed 000 §5: R = 8, t = 2 in the 10×10 leg, 20 mm blank each side;
+    // Ruiz et al. (2019) §5: R = 8, t = 2 in the 10×10 leg, 20 mm blank each side;
     // ANSYS K = 98.37 N·m/rad = 98370 N·mm/rad about the compliant axis.
     let spec = HingeSpec::CircularNotch {
         r: 8.0,
@@ -26,17 +26,17 @@ fn seed000_revolute_circular_notch() {
     let r = characterise(&spec, &al()).unwrap();
     let e = pct(r.hinge.k_bend, 98_370.0);
     assert!(e.abs() < 5.0, "k_bend {} ({e:.2} %)", r.hinge.k_bend);
-    // SPEC §4: Saint-Venant torsion of a short rectangular notch is 23–92 % too soft;
+    // Saint-Venant torsion of a short rectangular notch is 23–92 % too soft;
     // restrained warping must stiffen it into that band.
     let gain = r.hinge.k_torsion / r.hinge.k_torsion_saint_venant;
     assert!(gain > 1.2 && gain < 2.0, "Vlasov/Saint-Venant = {gain}");
-    // Seed 000 §4: the revolute joint must reach ±1.7° below 400 MPa.
+    // Ruiz et al. (2019) §4: the revolute joint must reach ±1.7° below 400 MPa.
     assert!(r.hinge.max_rotation_deg > 1.0 && r.hinge.max_rotation_deg < 3.0);
 }
 
 #[test]
 fn seed000_spherical_neck() {
-    // SPEC §4 / seed 000 §5: l = 5, t = 3, R = 4 in the 10×10 leg, 20 mm blank each side;
+    // Ruiz et al. (2019) §5: l = 5, t = 3, R = 4 in the 10×10 leg, 20 mm blank each side;
     // ANSYS bending 32.67 N·m/rad, torsion 24.46 N·m/rad.
     let spec = HingeSpec::SphericalNeck {
         l: 5.0,
@@ -56,9 +56,9 @@ fn seed000_spherical_neck() {
 
 #[test]
 fn seed002_corner_filleted_nylon() {
-    // Seed 002: l = 5, R = 1.75, δ = t = 0.6, width 10, blank height 15, nylon 66 (E = 3300,
+    // The 8R pan-tilt paper: l = 5, R = 1.75, δ = t = 0.6, width 10, blank height 15, nylon 66 (E = 3300,
     // ν = 0.33), 15 mm blank each side. Reference 4.05 N·mm/deg: converged 3-D solid FEM of the
-    // stated geometry (SPEC §4). The published 4.78 N·mm/deg does not follow from the stated
+    // stated geometry. The published 4.78 N·mm/deg does not follow from the stated
     // dimensions (plane-strain FEM gives 4.13), so it is not used.
     let spec = HingeSpec::CornerFilleted {
         l: 5.0,
@@ -76,7 +76,7 @@ fn seed002_corner_filleted_nylon() {
 
 #[test]
 fn result_serialises_with_interface_names() {
-    // INTERFACE.md hinge result field names.
+    // The hinge result's field names.
     let spec = HingeSpec::CircularNotch {
         r: 8.0,
         t: 2.0,

@@ -2,17 +2,17 @@
 //!
 //! The issue's accuracy bands refer to converged quadratic-tetrahedron (C3D10) solid models.
 //! The references below were computed with `tools/solid_reference.py`: the exact geometry of
-//! SPEC §4 built in gmsh 4.15 (OpenCASCADE), meshed with 10-node tetrahedra whose size is the
+//! The hinge geometry built in gmsh 4.15 (OpenCASCADE), meshed with 10-node tetrahedra whose size is the
 //! local thickness / n (n = 5 here, 4 for the thinnest notches), solved with scikit-fem 12
 //! (P2 Lagrange, isoparametric) and CHOLMOD; one blank end face clamped, the other rigid
 //! (six unit rigid motions → 6×6 face stiffness → compliance at the face centre); peak
 //! nodal-averaged von Mises stress under a pure compliant-axis moment. Raw results:
 //! `tools/solid_reference_results.jsonl`.
 //!
-//! That pipeline reproduces the independent references it can be checked against: seed 000's
-//! turned neck l5/t3/R4 32.60 N·m/rad vs ANSYS 32.67 (−0.2 %); seed 002's corner-filleted
-//! hinge 232.58 N·mm/rad = 4.059 N·mm/° vs the converged solid value 4.05 of SPEC §4 (+0.2 %).
-//! Mesh convergence on the seed-000 notch: n = 3 → 5 changes k_bend by −0.55 %, on the
+//! That pipeline reproduces the independent references it can be checked against: Ruiz et al.'s
+//! turned neck l5/t3/R4 32.60 N·m/rad vs ANSYS 32.67 (−0.2 %); the 8R pan-tilt's corner-filleted
+//! hinge 232.58 N·mm/rad = 4.059 N·mm/° vs the converged solid value 4.05 (+0.2 %).
+//! Mesh convergence on the Ruiz et al. notch: n = 3 → 5 changes k_bend by −0.55 %, on the
 //! corner-filleted hinge by −0.6 %.
 //!
 //! flexfem's beam model uses three solid-calibrated ingredients (load spreading at slope 1/2,
@@ -39,7 +39,7 @@ struct Ref {
 }
 
 const REFS: &[Ref] = &[
-    // Seed 000 revolute notch, n = 5 (n = 3: 96449).
+    // Ruiz et al. (2019) revolute notch, n = 5 (n = 3: 96449).
     Ref {
         hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 2.0, "w": 10.0, "h": 10.0, "blank_length": 20.0}"#,
         e: 72000.0,
@@ -583,7 +583,7 @@ fn turned_necks_match_solid_models() {
     assert_eq!(n, 7);
 }
 
-/// Other families: the elliptical notch (held out) within 1 %, the seed-002 corner-filleted
+/// Other families: the elliptical notch (held out) within 1 %, the 8R pan-tilt corner-filleted
 /// hinge within 2.5 % (it is also checked against 4.05 N·mm/° in tests/hinge_seeds.rs), the leaf
 /// within 5 % (its sharp re-entrant corners are beyond beam theory; the solid's peak stress
 /// there is singular and not compared).

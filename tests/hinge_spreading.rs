@@ -1,6 +1,6 @@
 //! Geometry and quadrature of the load-spreading model (`Profile::spread`): the effective
 //! half-size follows the contour until its slope reaches 1/2, then grows linearly at 1/2 until
-//! it meets the blank. Expected values are worked by hand from SPEC §4's contours.
+//! it meets the blank. Expected values are worked by hand from the families' contours.
 
 use flexfem::hinge::integrate::{flex_integrals, Moduli, Quadrature};
 use flexfem::hinge::profile::SPREAD_SLOPE;

@@ -96,7 +96,7 @@ fn long_leaf_tends_to_saint_venant() {
 
 #[test]
 fn torsion_mesh_converged() {
-    // The default mesh against a 4× finer one, seed-000 notch in its blanks: < 1e-4.
+    // The default mesh against a 4× finer one, Ruiz et al. notch in its blanks: < 1e-4.
     let p = Profile::rectangular(Contour::Circular { r: 8.0, t: 2.0 }, 10.0, 10.0, 20.0).unwrap();
     let (e, g) = (72_000.0, 27_067.7);
     let k0 = vlasov_torsion_stiffness(&p, e, g, TorsionMesh::default());

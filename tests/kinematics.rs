@@ -1,17 +1,17 @@
-//! 3-PRS rigid-body kinematics against Ruiz et al. (seed 000) and self-consistency properties.
+//! 3-PRS rigid-body kinematics against Ruiz et al. (2019) and self-consistency properties.
 
 use flexfem::kinematics::{workspace, Pose, PoseBox, Prs};
 use nalgebra::{Matrix3, Vector3, Vector6};
 use proptest::prelude::*;
 
-/// Seed 000 §4: L = 109.215 mm, b = 47.91 mm, α₀ = 45°, horizontal actuators.
+/// Ruiz et al. (2019) §4: L = 109.215 mm, b = 47.91 mm, α₀ = 45°, horizontal actuators.
 fn ruiz() -> Prs {
     Prs::new(109.215, 47.91, 45f64.to_radians(), 0.0).unwrap()
 }
 
 const ARCSEC: f64 = 1.0 / 3600.0;
 
-/// Seed 000 Table 4, FKP column: Δs (µm) → Δz (µm), ψ, θ (arc-seconds).
+/// Ruiz et al. (2019) Table 4, FKP column: Δs (µm) → Δz (µm), ψ, θ (arc-seconds).
 const TABLE4_FKP: [([f64; 3], f64, f64, f64); 4] = [
     ([1395.0, 1531.0, 1306.0], 1384.0, 8.0 * 60.0 + 59.0, 64.0),
     ([777.0, 685.0, 725.0], 722.0, -98.0, -(3.0 * 60.0 + 23.0)),
@@ -21,7 +21,7 @@ const TABLE4_FKP: [([f64; 3], f64, f64, f64); 4] = [
 
 #[test]
 fn table4_fkp_column_within_2um_and_2arcsec() {
-    // Seed 000 Table 4 (FKP): tolerance 2 µm and 2″ (the table rounds to 1 µm and 1″; 0.5 µm of
+    // Ruiz et al. (2019) Table 4 (FKP): tolerance 2 µm and 2″ (the table rounds to 1 µm and 1″; 0.5 µm of
     // our 1.2 µm worst case is that rounding).
     let prs = ruiz();
     for (s_um, z_um, psi_as, theta_as) in TABLE4_FKP {
@@ -48,7 +48,7 @@ fn table4_fkp_column_within_2um_and_2arcsec() {
 }
 
 fn requirement_box() -> workspace::WorkspaceRanges {
-    // Seed 000 §4: z = ±2 mm, ψ, θ = ±0.2°, all combinations.
+    // Ruiz et al. (2019) §4: z = ±2 mm, ψ, θ = ±0.2°, all combinations.
     let r = 0.2f64.to_radians();
     workspace::sweep(
         &ruiz(),
@@ -64,7 +64,7 @@ fn requirement_box() -> workspace::WorkspaceRanges {
 
 #[test]
 fn fig6_stroke_range_within_0_02_mm() {
-    // Seed 000 §4 / Fig. 6: strokes between −2.15 mm and 2.30 mm.
+    // Ruiz et al. (2019) §4 / Fig. 6: strokes between −2.15 mm and 2.30 mm.
     let w = requirement_box();
     assert!((w.s[0] - -2.15).abs() <= 0.02, "min stroke {}", w.s[0]);
     assert!((w.s[1] - 2.30).abs() <= 0.02, "max stroke {}", w.s[1]);
@@ -72,7 +72,7 @@ fn fig6_stroke_range_within_0_02_mm() {
 
 #[test]
 fn fig7_joint_rotation_amplitudes_within_0_05_deg() {
-    // Seed 000 §4 / Fig. 7: revolute Δα ±1.7°, spherical βm ±1.9°, βn ±0.2°, βl ±0.2°.
+    // Ruiz et al. (2019) §4 / Fig. 7: revolute Δα ±1.7°, spherical βm ±1.9°, βn ±0.2°, βl ±0.2°.
     // The paper quotes symmetric amplitudes read off the plots; we compare the half-span of each
     // computed range (the ranges themselves are slightly asymmetric: Δα ∈ [−1.63°, 1.68°]).
     let w = requirement_box();
@@ -104,7 +104,7 @@ fn fig7_joint_rotation_amplitudes_within_0_05_deg() {
 
 #[test]
 fn home_pose_is_the_zero_of_everything() {
-    // SPEC §3: at home the strokes are zero and every revolute angle is α₀ = 45°.
+    // at home the strokes are zero and every revolute angle is α₀ = 45°.
     let prs = ruiz();
     let h = prs.ikp(0.0, 0.0, 0.0).unwrap();
     for i in 0..3 {
@@ -193,8 +193,8 @@ fn gammas() -> impl Strategy<Value = f64> {
     prop_oneof![Just(0.0), Just(30.0), Just(90.0)]
 }
 
-/// A mechanism for γ: seed 000 geometry for γ = 0, and the same leg/platform with the legs
-/// at 45° for the inclined layouts (seed 001/003 style).
+/// A mechanism for γ: Ruiz et al. (2019) geometry for γ = 0, and the same leg/platform with the legs
+/// at 45° for the inclined layouts (Khan et al. / Nigatu et al. style).
 fn mechanism(gamma_deg: f64) -> Prs {
     Prs::new(109.215, 47.91, 45f64.to_radians(), gamma_deg.to_radians()).unwrap()
 }
@@ -204,7 +204,7 @@ proptest! {
 
     #[test]
     fn ikp_fkp_round_trip(gamma in gammas(), z in -2.0f64..2.0, psi in -0.2f64..0.2, theta in -0.2f64..0.2) {
-        // Round trip over the seed 000 workspace box (z ±2 mm, ψ, θ ±0.2°): 1e-9 mm / 1e-9 rad.
+        // Round trip over the Ruiz et al. (2019) workspace box (z ±2 mm, ψ, θ ±0.2°): 1e-9 mm / 1e-9 rad.
         let prs = mechanism(gamma);
         let (psi, theta) = (psi.to_radians(), theta.to_radians());
         let sol = prs.ikp(z, psi, theta).unwrap();
@@ -218,7 +218,7 @@ proptest! {
 
     #[test]
     fn constraints_hold_at_every_ikp_solution(gamma in gammas(), z in -2.0f64..2.0, psi in -5.0f64..5.0, theta in -5.0f64..5.0) {
-        // SPEC §3: every Bᵢ in its leg plane (seed 000 Eqs. 7–9), every leg of length L,
+        // every Bᵢ in its leg plane (Ruiz et al. (2019) Eqs. 7–9), every leg of length L,
         // and the spherical frames stay orthonormal.
         let prs = mechanism(gamma);
         let sol = prs.ikp(z, psi.to_radians(), theta.to_radians()).unwrap();
@@ -242,7 +242,7 @@ proptest! {
 
     #[test]
     fn constraint_embedded_jacobian_maps_twists(gamma in gammas(), z in -2.0f64..2.0, psi in -0.5f64..0.5, theta in -0.5f64..0.5, d in prop::array::uniform3(-1.0f64..1.0)) {
-        // Seed 003 Eq. 1: [ṡ; 0] = G·[v; ω] for every motion the mechanism can make.
+        // Nigatu et al. Eq. 1: [ṡ; 0] = G·[v; ω] for every motion the mechanism can make.
         let prs = mechanism(gamma);
         let q = [z, psi.to_radians(), theta.to_radians()];
         let dq = [d[0], d[1] * 0.01, d[2] * 0.01];

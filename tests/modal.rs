@@ -191,7 +191,7 @@ fn free_free_mixed_model_has_six_zero_modes() {
 
 /// Stage with `"modes"` (actuators locked, platform a 10 mm Al disc at P): six positive
 /// frequencies in increasing order, shapes for every node. No published reference for this
-/// stage (seed 000 gives none); the numbers are reported, not asserted.
+/// stage (Ruiz et al. (2019) gives none); the numbers are reported, not asserted.
 #[test]
 fn stage_modes_are_positive_and_sorted() {
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
@@ -227,10 +227,10 @@ fn modal_case_paths() {
     assert!(e.to_string().contains("elements[0].material"), "{e}");
 }
 
-/// The FACT wire-flexure pan-tilt of seed 002 (bundled `meshes/fact_wire_pantilt.json`;
+/// The FACT wire-flexure pan-tilt of the 8R pan-tilt paper (bundled `meshes/fact_wire_pantilt.json`;
 /// geometry completed by assumption, see the mesh notes in the report): the two lowest modes
 /// must be the designed rotations about x and y (effective mass fraction > 0.8 in rx, ry).
-/// Seed 002 Table 2 reports 76.2 and 160.7 Hz for its (unpublished) geometry; ours is printed.
+/// The 8R pan-tilt paper's Table 2 reports 76.2 and 160.7 Hz for its (unpublished) geometry; ours is printed.
 #[test]
 fn fact_wire_mechanism_first_modes_are_the_two_rotations() {
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
@@ -238,7 +238,7 @@ fn fact_wire_mechanism_first_modes_are_the_two_rotations() {
     let out = flexfem::analysis::run(&c).unwrap();
     let m = &out.json["modes"];
     let f: Vec<f64> = (0..6).map(|i| m[i]["frequency_hz"].as_f64().unwrap()).collect();
-    eprintln!("FACT wire mechanism (assumed geometry): {f:?} Hz; seed 002: 76.2 160.7 307.8 529.1 688.7 706.5");
+    eprintln!("FACT wire mechanism (assumed geometry): {f:?} Hz; paper: 76.2 160.7 307.8 529.1 688.7 706.5");
     let rx = m[0]["effective_mass_fraction"]["rx"].as_f64().unwrap();
     let ry = m[1]["effective_mass_fraction"]["ry"].as_f64().unwrap();
     assert!(rx > 0.8 && ry > 0.8, "rx {rx}, ry {ry}");

@@ -384,8 +384,8 @@ fn divergence_is_an_error_with_context() {
     }
 }
 
-/// The compliant 3-PRS stage of seed 000 (Table 4 strokes): nonlinear FEM Δz against the FKP
-/// (rigid-body) and the linear FEM. Seed 000 Table 4: FKP Δz = 1384, 722, −631, −1511 µm.
+/// The compliant 3-PRS stage of Ruiz et al. (2019) (Table 4 strokes): nonlinear FEM Δz against the FKP
+/// (rigid-body) and the linear FEM. Ruiz et al. (2019) Table 4: FKP Δz = 1384, 722, −631, −1511 µm.
 #[test]
 fn stage_table4_nonlinear() {
     use flexfem::stage::{pose_angles, Drive, StageDesign};
@@ -605,7 +605,7 @@ fn stage_hinge_subdivision() {
 
 /// With ideal joints (exact revolute and spherical releases by ties, legs and platform 10⁶
 /// times stiffer) the nonlinear FE stage is the rigid 3-PRS mechanism: its platform pose must
-/// equal the forward kinematics at finite strokes (seed 000 Table 4 rows), where the linear FE
+/// equal the forward kinematics at finite strokes (Ruiz et al. (2019) Table 4 rows), where the linear FE
 /// pose is off by tens of µm. Checks ties (a revolute tie is exact here: the slider does not
 /// rotate, so every spin of the leg is about mᵢ), node frames and the rigid platform under
 /// finite rotation.
@@ -651,7 +651,7 @@ fn ideal_joint_stage_follows_the_fkp_at_finite_strokes() {
     }
 }
 
-/// `hinge` with `"nonlinear": true`: the large-rotation curve of the seed-000 revolute notch in
+/// `hinge` with `"nonlinear": true`: the large-rotation curve of the Ruiz et al. revolute notch in
 /// its 20 mm blanks reaches the allowable stress; at ~1.5° the geometric effect is of order θ²
 /// (the rotation at the allowable differs from the linear one by < 0.1 %), the moment at the
 /// notch centre falls below F·lever as the lever rotates, and the linear FE rotation at the

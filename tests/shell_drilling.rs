@@ -119,3 +119,36 @@ fn thick_rhombic_plate_has_only_the_bending_spectrum_below_membrane_modes() {
 fn moderately_thick_rhombic_plate_has_only_the_bending_spectrum_below_membrane_modes() {
     check(500.0); // t/a = 0.05
 }
+
+/// The spectrum check: a mode whose strain energy rests on the drilling penalty is reported.
+/// A rotary inertia about the plate normal at the centre of a clamped plate turns that node
+/// about the normal, which only the (artificial) drilling stiffness resists: its mode must be
+/// flagged; the plate's own bending modes must not.
+#[test]
+fn drilling_dominated_modes_are_flagged() {
+    use flexfem::analysis::modal::drilling_warnings;
+    use flexfem::fem::PointMass;
+    let t = 500.0;
+    let plain = rhombus(8, 10_000.0, t, false);
+    let r = solve_modal(&plain, &ModalOptions::new(6)).unwrap();
+    assert!(
+        drilling_warnings(&plain, &r).is_empty(),
+        "{:?}",
+        drilling_warnings(&plain, &r)
+    );
+
+    let mut spun = rhombus(8, 10_000.0, t, false);
+    let centre = 4 * 9 + 4;
+    // About the normal: 1 % of the plate's polar rotary inertia, no translational mass.
+    let plate_mass = STEEL.density * t * 10_000.0 * 10_000.0 * std::f64::consts::FRAC_1_SQRT_2;
+    spun.masses.push(PointMass {
+        node: centre,
+        mass: 0.0,
+        inertia: [0.0, 0.0, 0.01 * plate_mass * 10_000.0f64.powi(2) / 6.0],
+    });
+    let r = solve_modal(&spun, &ModalOptions::new(6)).unwrap();
+    let w = drilling_warnings(&spun, &r);
+    eprintln!("{w:?}");
+    assert_eq!(w.len(), 1, "one drilling-dominated mode expected: {w:?}");
+    assert!(w[0].contains("drilling rotation"), "{w:?}");
+}

@@ -1,4 +1,4 @@
-//! The monolithic 3-PRS compliant stage against Ruiz et al. (seed 000) Tables 2 and 4, and the
+//! The monolithic 3-PRS compliant stage against Ruiz et al. (2019) Tables 2 and 4, and the
 //! ideal-joint FE model against the rigid-body forward kinematics.
 
 mod common;
@@ -20,7 +20,7 @@ fn f(v: &serde_json::Value) -> f64 {
 
 #[test]
 fn table2_strokes_displacements_and_stress() {
-    // Seed 000 Table 2 (ANSYS, equal forces on the three actuators):
+    // Ruiz et al. (2019) Table 2 (ANSYS, equal forces on the three actuators):
     // F = 20/40/60 N → s = 0.935/1.899/2.865 mm, Δz = 0.933/1.896/2.859 mm,
     // σ_max = 169.25/344.01/518.78 MPa. Must show: strokes and Δz within 10 %, stress within 15 %.
     let v = run_json("cases/ruiz2019_stage.json");
@@ -47,7 +47,7 @@ fn table2_strokes_displacements_and_stress() {
         assert!(f(&row["platform"]["psi_deg"]).abs() < 1e-9 && f(&row["platform"]["theta_deg"]).abs() < 1e-9);
     }
     // The reach at 400 MPa is reported and is the linear scaling of the F = 20 N case.
-    // Seed 000 §5 gives Δz = 2.205 mm at 400 MPa; we reach less (1.83 mm) because our peak
+    // Ruiz et al. (2019) §5 gives Δz = 2.205 mm at 400 MPa; we reach less (1.83 mm) because our peak
     // stress per mm of stroke is 13–20 % above ANSYS's (conservative hinge stress model, see
     // README): assert within 20 %.
     let z400 = f(&v["at_allowable"]["z"]);
@@ -60,7 +60,7 @@ fn table2_strokes_displacements_and_stress() {
 
 #[test]
 fn table4_linear_fem_column_within_10um() {
-    // Seed 000 Table 4, FEM column (linear ANSYS): Δz = 1408, 727, −624, −1478 µm.
+    // Ruiz et al. (2019) Table 4, FEM column (linear ANSYS): Δz = 1408, 727, −624, −1478 µm.
     let v = run_json("cases/ruiz2019_fem_vs_fkp.json");
     let rows = v["rows"].as_array().unwrap();
     for (row, z_ref) in rows.iter().zip([1408.0, 727.0, -624.0, -1478.0]) {

@@ -108,7 +108,7 @@ fn bundled_hinge_sweep_writes_55_sorted_lines_with_params() {
         let (a, b) = (d28["result"][key].as_f64().unwrap(), direct[key].as_f64().unwrap());
         assert!(rel(a, b) < 1e-9, "{key}: sweep {a} vs run {b}");
     }
-    // Seed 000: ANSYS 98.37 N·m/rad for R8/t2; the beam model is within a few per cent.
+    // Ruiz et al. (2019): ANSYS 98.37 N·m/rad for R8/t2; the beam model is within a few per cent.
     assert!(rel(d28["result"]["k_bend"].as_f64().unwrap(), 98_370.0) < 0.03);
     // Thicker waist at the same radius is stiffer: t = 3 vs t = 1 at R = 8.
     let k = |i: usize| lines[i]["result"]["k_bend"].as_f64().unwrap();

@@ -75,7 +75,7 @@ fn circular_notch_outside_calibration_warns() {
     }
 }
 
-/// Inside the range (seed-000 notch R8/t2, t/R = 0.25, w/t = 5): no warning.
+/// Inside the range (Ruiz et al. notch R8/t2, t/R = 0.25, w/t = 5): no warning.
 #[test]
 fn calibrated_hinge_has_no_warning() {
     let v = json(&run(&["run", "cases/ruiz2019_hinge_revolute.json"]));

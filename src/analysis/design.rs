@@ -6,7 +6,7 @@ use crate::design::stage_design::{self, DesignOutcome, Responses, SensitivityRow
 use crate::report::markdown::{sig, Table};
 use serde::Serialize;
 
-/// Result of `sensitivity` (INTERFACE.md).
+/// Result of `sensitivity`.
 #[derive(Debug, Clone, Serialize)]
 pub struct SensitivityResult {
     /// Responses of the base design.
@@ -40,7 +40,7 @@ pub fn run_sensitivity(c: &SensitivityCase) -> Result<SensitivityResult, RunErro
 /// Markdown in Table 1's layout.
 pub fn sensitivity_report(r: &SensitivityResult) -> Report {
     let mut md = format!(
-        "# Influence of the design parameters (seed 000 Table 1 layout)\n\nBase design: η = {} N/mm, d = {} mm, T = {}. Each parameter increased by {:.0} %.\n\n",
+        "# Influence of the design parameters (Ruiz et al. (2019) Table 1 layout)\n\nBase design: η = {} N/mm, d = {} mm, T = {}. Each parameter increased by {:.0} %.\n\n",
         sig(r.base.eta, 5),
         sig(r.base.z_at_allowable, 4),
         sig(r.base.t_ratio, 4),
@@ -80,7 +80,7 @@ pub fn sensitivity_report(r: &SensitivityResult) -> Report {
     Report { markdown: md, csv }
 }
 
-/// Result of `design` (INTERFACE.md).
+/// Result of `design`.
 #[derive(Debug, Clone, Serialize)]
 pub struct DesignResult {
     /// The five parameters, mm (Table-1 order).
@@ -147,7 +147,7 @@ pub fn run_design(c: &DesignCase) -> Result<DesignResult, RunError> {
 
 /// Markdown/CSV of a design result.
 pub fn design_report(r: &DesignResult) -> Report {
-    let mut md = String::from("# Stage sizing (seed 000 Fig. 11 loop)\n\n");
+    let mut md = String::from("# Stage sizing (Ruiz et al. (2019) Fig. 11 loop)\n\n");
     md += if r.meets {
         "**The design meets every requirement.**\n\n"
     } else {

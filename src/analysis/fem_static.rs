@@ -5,7 +5,7 @@ use crate::fem::{self, Model};
 use crate::report::markdown::Table;
 use serde::Serialize;
 
-/// One load case of a `static` result (INTERFACE.md).
+/// One load case of a `static` result.
 #[derive(Debug, Clone, Serialize)]
 pub struct StaticCaseRow {
     /// Load-case name.

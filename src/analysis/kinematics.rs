@@ -6,7 +6,7 @@ use crate::kinematics::{workspace, Pose, Prs};
 use crate::report::markdown::{dms, Table};
 use serde::Serialize;
 
-/// One inverse-kinematics answer (INTERFACE.md).
+/// One inverse-kinematics answer.
 #[derive(Debug, Clone, Serialize)]
 pub struct IkpRow {
     /// Requested z from home, mm.
@@ -31,7 +31,7 @@ pub struct IkpRow {
     pub jacobian: [[f64; 3]; 3],
 }
 
-/// One forward-kinematics answer (INTERFACE.md).
+/// One forward-kinematics answer.
 #[derive(Debug, Clone, Serialize)]
 pub struct FkpRow {
     /// Input strokes, mm.
@@ -52,7 +52,7 @@ pub struct FkpRow {
     pub iterations: usize,
 }
 
-/// Ranges over the requirement box (INTERFACE.md); each `[min, max]`.
+/// Ranges over the requirement box; each `[min, max]`.
 #[derive(Debug, Clone, Serialize)]
 pub struct WorkspaceRow {
     /// Strokes, mm.
@@ -176,7 +176,7 @@ pub fn solve(
         fkp,
         workspace,
         model: vec![
-            "rigid-body 3-PRS: ideal prismatic, revolute and spherical joints, rigid legs and platform (seed 000 §3)",
+            "rigid-body 3-PRS: ideal prismatic, revolute and spherical joints, rigid legs and platform (Ruiz et al. (2019) §3)",
         ],
     })
 }

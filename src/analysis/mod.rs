@@ -86,7 +86,7 @@ pub type Files = Vec<(String, Vec<u8>)>;
 /// A finished analysis: the JSON result plus its reports and extra files (name, contents).
 #[derive(Debug, Clone)]
 pub struct Outcome {
-    /// The JSON result (INTERFACE.md); its top-level `warnings` holds [`Outcome::warnings`].
+    /// The JSON result; its top-level `warnings` holds [`Outcome::warnings`].
     pub json: serde_json::Value,
     /// Things the user must know about the result (e.g. a hinge outside the range its solid
     /// calibration covers); also listed in the JSON (`warnings`) and the Markdown report.
@@ -415,7 +415,7 @@ fn run_analysis(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
             }
             Ok(Outcome {
                 json: to_json(&r)?,
-                warnings: Vec::new(),
+                warnings: modal::drilling_warnings(&model, &raw),
                 report: modal::report(&r),
                 files: if with_files {
                     vec![("modes.vtu".to_string(), modal::vtu(&model, &raw)?)]

@@ -31,7 +31,7 @@ impl From<[f64; 6]> for Directions {
     }
 }
 
-/// One mode of the result (INTERFACE.md: `frequency_hz`, `shape`).
+/// One mode of the result (`frequency_hz`, `shape`).
 #[derive(Debug, Clone, Serialize)]
 pub struct ModeRow {
     /// 1-based mode number.
@@ -152,6 +152,57 @@ pub fn mode_energy(model: &Model, shape: &[[f64; 6]]) -> (f64, f64) {
         }
     }
     (e, s)
+}
+
+/// Share of a mode's strain energy on the shells' drilling penalty above which the mode is
+/// reported as drilling-dominated.
+pub const DRILLING_SHARE: f64 = 0.5;
+
+/// Warnings for modes whose strain energy rests mostly on the shells' drilling penalty
+/// ([`crate::fem::shell::shell_drilling_stiffness`]): the drilling rotation is not a degree of
+/// freedom of shell theory, so such a mode is either spurious or held only by an artificial
+/// stiffness (e.g. a rotary inertia or a beam turning a shell node about the shell normal).
+/// Rigid-body modes are skipped.
+pub fn drilling_warnings(model: &Model, raw: &ModalResults) -> Vec<String> {
+    use crate::fem::{shell::shell_drilling_stiffness, Element};
+    let shells: Vec<_> = model
+        .elements
+        .iter()
+        .filter_map(|e| match e {
+            Element::Shell4(s) => {
+                let x = s.nodes.map(|n| model.nodes[n]);
+                shell_drilling_stiffness(&x, s.t, &s.material).map(|k| (k, s.nodes))
+            }
+            _ => None,
+        })
+        .collect();
+    if shells.is_empty() {
+        return Vec::new();
+    }
+    let mut out = Vec::new();
+    for (k, m) in raw.modes.iter().enumerate() {
+        let (total, scale) = mode_energy(model, &m.shape);
+        if total <= RIGID_MODE_TOL * scale {
+            continue;
+        }
+        let drill: f64 = shells
+            .iter()
+            .map(|(kd, nodes)| {
+                let v = nalgebra::SVector::<f64, 24>::from_iterator(nodes.iter().flat_map(|&n| m.shape[n]));
+                v.dot(&(kd * v))
+            })
+            .sum();
+        let share = drill / total;
+        if share > DRILLING_SHARE {
+            out.push(format!(
+                "mode {} ({:.4} Hz): {:.0} % of its strain energy rests on the shells' drilling rotation, an artificial stiffness that shell theory does not have; the mode is spurious, or is held only by the in-plane rotation of a shell (e.g. a rotary inertia or a beam turning a shell node about the shell normal)",
+                k + 1,
+                m.frequency_hz,
+                share * 100.0
+            ));
+        }
+    }
+    out
 }
 
 /// Flags rigid-body modes: ω² ≤ [`RIGID_MODE_TOL`] · S, with S the roundoff scale of the mode's

@@ -47,7 +47,7 @@ pub struct HingeStress {
     pub spherical: [f64; 3],
 }
 
-/// One stage load case (INTERFACE.md).
+/// One stage load case.
 #[derive(Debug, Clone, Serialize)]
 pub struct StageRow {
     /// Name.
@@ -540,11 +540,12 @@ pub fn run_fem_vs_fkp(case: &FemVsFkpCase) -> Result<FemVsFkpResult, RunError> {
     })
 }
 
-/// Markdown report laid out like seed 000 Tables 4–6 (linear FEM, nonlinear FEM and FKP side
+/// Markdown report laid out like Ruiz et al. (2019) Tables 4–6 (linear FEM, nonlinear FEM and FKP side
 /// by side), CSV, and the SVG plot of |FEM − FKP| for both FEM columns.
 pub fn fem_vs_fkp_report(r: &FemVsFkpResult) -> (Report, super::Files) {
-    let mut md =
-        String::from("# FEM versus rigid-body forward kinematics (seed 000 Tables 4–6 layout)\n\n## Predictions\n\n");
+    let mut md = String::from(
+        "# FEM versus rigid-body forward kinematics (Ruiz et al. (2019) Tables 4–6 layout)\n\n## Predictions\n\n",
+    );
     let mut t = Table::new(&[
         "Δs₁ (µm)",
         "Δs₂ (µm)",

@@ -301,10 +301,16 @@ pub struct ModalCase {
     pub shift_hz: Option<f64>,
     /// Mode shapes in the JSON result (default true). `false` leaves them out (a 100k-DOF model
     /// would write tens of MB); `modes.vtu` (with `--out`) always holds them.
+    #[serde(default = "shapes_default")]
     pub shapes: bool,
     /// The model.
     #[serde(flatten)]
     pub model: MeshSpec,
+}
+
+/// Mode shapes are in the JSON result unless `"shapes": false`.
+fn shapes_default() -> bool {
+    true
 }
 
 /// A rigid link.

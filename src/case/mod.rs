@@ -1,4 +1,4 @@
-//! Case files: serde shapes only, plus validation that names JSON paths (INTERFACE.md).
+//! Case files: serde shapes only, plus validation that names JSON paths.
 //!
 //! Parsing is two-step so that every error carries its path: the text is read into a JSON
 //! value, `analysis` picks the shape, and the rest is deserialised through
@@ -375,11 +375,11 @@ fn unknown_model_field(map: &serde_json::Map<String, Value>, analysis: &str) -> 
         (
             &["analysis", "mesh", "gmsh", "nonlinear", "steps"],
             "modal",
-            &["modes", "shift_hz"],
+            &["modes", "shift_hz", "shapes"],
         )
     } else {
         (
-            &["analysis", "mesh", "gmsh", "modes", "shift_hz"],
+            &["analysis", "mesh", "gmsh", "modes", "shift_hz", "shapes"],
             "static",
             &["nonlinear", "steps"],
         )

@@ -3,7 +3,7 @@
 use crate::report::svg;
 
 /// Stage-sweep plot: structural stiffness against Δz reachable at the allowable stress,
-/// coloured by T; designs meeting SPEC §6 (Δz ≥ 2 mm, T ∈ [0.8, 1.2]) filled. `None` if no line
+/// coloured by T; designs meeting the requirements of Ruiz et al. (2019) §4 (Δz ≥ 2 mm, T ∈ [0.8, 1.2]) filled. `None` if no line
 /// holds a stage result.
 pub fn stage_sweep_svg(lines: &[String]) -> Option<String> {
     let mut pts = Vec::new();

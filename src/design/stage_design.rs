@@ -1,4 +1,4 @@
-//! The stage design loop of seed 000 §5 (Table 1, Fig. 11): responses of a design, Table-1
+//! The stage design loop of Ruiz et al. (2019) §5 (Table 1, Fig. 11): responses of a design, Table-1
 //! sensitivities, and requirement-driven sizing.
 //!
 //! Design parameters (mm): `t_rev`, `R_rev` (circular revolute notch), `t_sph`, `R_sph`, `l_sph`
@@ -7,7 +7,7 @@
 //! * d — platform Δz reached when the peak hinge stress reaches the allowable (pure z), mm;
 //! * T = σ_sph,max / σ_rev,max.
 //!
-//! Requirements (seed 000 §4, SPEC §6): d ≥ z_travel, T ∈ [T_lo, T_hi], and each hinge able to
+//! Requirements (Ruiz et al. 2019, §4): d ≥ z_travel, T ∈ [T_lo, T_hi], and each hinge able to
 //! reach the joint rotations of the kinematic requirement sweep (revolute Δα, spherical βm, βn,
 //! βl over z = ±z_travel, ψ, θ = ±tilt) below the allowable stress.
 

@@ -1,4 +1,4 @@
-//! `flexfem sweep`: full-factorial batch runs (INTERFACE.md "sweep", SPEC §8).
+//! `flexfem sweep`: full-factorial batch runs.
 //!
 //! Designs run in parallel on rayon. Each finished design becomes one JSON line,
 //! `{"index", "params", "design_hash", "result"}` or `{"index", "params", "design_hash",

@@ -1,6 +1,6 @@
 //! Beam cross-sections: properties (A, Iy, Iz, J, shear areas) and stress points.
 //!
-//! Local axes as in INTERFACE.md: x along the beam, `Rect { w, h }` has `h` along local z and
+//! Local axes as in the case-file reference of the README: x along the beam, `Rect { w, h }` has `h` along local z and
 //! `w` along local y, so `Iy = w·h³/12` (bending about y, deflection along z).
 //!
 //! Shear areas use Cowper's ν-dependent shear coefficients (G. R. Cowper, "The shear coefficient

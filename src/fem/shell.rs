@@ -213,33 +213,49 @@ fn membrane(xy: &[[f64; 2]; 4], t: f64, mat: &Material) -> Option<SMatrix<f64, 1
         }
     }
     let kii_inv = kii.try_inverse()?;
-    let mut k = kcc - kci * kii_inv * kci.transpose();
-    // Drilling: r = θz − ½(∂v/∂x − ∂u/∂y) at the centre, area 4 det J₀.
+    let k = kcc - kci * kii_inv * kci.transpose() + drilling(xy, t, mat)?;
+    Some((k + k.transpose()) * 0.5)
+}
+
+/// Drilling penalty over (u v θz) × 4: γ·t∫(θz − ½(∂v/∂x − ∂u/∂y))² dA with γ = G at the
+/// centre (area 4 det J₀) plus the weak 2×2 part with 10⁻³·G, which removes the zero-energy θz
+/// patterns the centre point leaves (linear and checkerboard ω with zero mean).
+fn drilling(xy: &[[f64; 2]; 4], t: f64, mat: &Material) -> Option<SMatrix<f64, 12, 12>> {
     let g = mat.shear_modulus();
-    let (n0, dx0, dy0, _, _) = cartesian(xy, 0.0, 0.0)?;
-    let mut r = SVector::<f64, 12>::zeros();
-    for i in 0..4 {
-        r[3 * i] = 0.5 * dy0[i];
-        r[3 * i + 1] = -0.5 * dx0[i];
-        r[3 * i + 2] = n0[i];
-    }
-    let area = 4.0 * det0;
-    k += r * r.transpose() * (g * t * area);
-    // Weak 2×2 penalty: removes the zero-energy θz patterns that the centre point leaves
-    // (linear and checkerboard ω with zero mean).
+    let row = |xi: f64, eta: f64| {
+        let (n, dx, dy, det, _) = cartesian(xy, xi, eta)?;
+        let mut r = SVector::<f64, 12>::zeros();
+        for i in 0..4 {
+            r[3 * i] = 0.5 * dy[i];
+            r[3 * i + 1] = -0.5 * dx[i];
+            r[3 * i + 2] = n[i];
+        }
+        Some((r, det))
+    };
+    let (r0, det0) = row(0.0, 0.0)?;
+    let mut k = r0 * r0.transpose() * (g * t * 4.0 * det0);
     for &xi in &[-G2, G2] {
         for &eta in &[-G2, G2] {
-            let (n, dx, dy, det, _) = cartesian(xy, xi, eta)?;
-            let mut r = SVector::<f64, 12>::zeros();
-            for i in 0..4 {
-                r[3 * i] = 0.5 * dy[i];
-                r[3 * i + 1] = -0.5 * dx[i];
-                r[3 * i + 2] = n[i];
-            }
+            let (r, det) = row(xi, eta)?;
             k += r * r.transpose() * (DRILL_STAB * g * t * det);
         }
     }
-    Some((k + k.transpose()) * 0.5)
+    Some(k)
+}
+
+/// Global drilling-penalty stiffness Tᵀ k_d T of a shell element (24×24): the part of its
+/// stiffness that rests on the artificial drilling rotation. A mode or a deformation whose
+/// strain energy sits mostly here is not governed by shell theory.
+pub fn shell_drilling_stiffness(x: &[[f64; 3]; 4], t: f64, mat: &Material) -> Option<Mat24> {
+    let g = shell_geometry(x)?;
+    let kd = drilling(&g.xy, t, mat)?;
+    let mut k = Mat24::zeros();
+    for a in 0..12 {
+        for b in 0..12 {
+            k[(mem(a / 3, a % 3), mem(b / 3, b % 3))] = kd[(a, b)];
+        }
+    }
+    Some(g.t.transpose() * k * g.t)
 }
 
 /// MITC4 covariant shear rows at a tying point: (γ_ξ, γ_η) as rows over (w θx θy) × 4.

@@ -4,7 +4,7 @@ use thiserror::Error;
 
 /// Why a hinge could not be characterised.
 ///
-/// Every variant names the offending parameter (with the INTERFACE.md spelling), its value and
+/// Every variant names the offending parameter (with the case-file spelling), its value and
 /// what is allowed, so a case-file front end can point at the field.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum HingeError {

@@ -1,4 +1,4 @@
-//! Flexure hinges: profiles, stiffness, stress, published closed forms (SPEC.md §4).
+//! Flexure hinges: profiles, stiffness, stress, published closed forms.
 //!
 //! # Model
 //!
@@ -6,11 +6,11 @@
 //! varies with x: the notch region of the family's contour, then `blank_length` of the full
 //! blank section on each side. Its 6×6 compliance between the two blank end faces (one
 //! clamped, the load applied at the centre of the other through a rigid face, as in the
-//! seed-000 ANSYS set-up) is the exact flexibility of a variable-section Timoshenko beam,
+//! Ruiz et al. ANSYS set-up) is the exact flexibility of a variable-section Timoshenko beam,
 //! C = ∫ Bᵀ D(x) B dx, integrated by Gauss–Legendre on pieces split at every profile breakpoint
-//! ([`integrate`]). Why a beam and not a solid model: for the notch geometries of SPEC §4 the
+//! ([`integrate`]). Why a beam and not a solid model: for the notch geometries of the hinge families the
 //! beam idealisation is within a few per cent of converged solid FEM (98.2 vs 98.37 N·m/rad for
-//! the seed-000 notch), costs microseconds, and gives a flexibility that the stage builder can
+//! the Ruiz et al. notch), costs microseconds, and gives a flexibility that the stage builder can
 //! turn into beam elements ([`segment_compliance`]). Its known gaps are handled explicitly:
 //!
 //! * **Torsion** of rectangular notches: Saint-Venant is far too soft because the blanks
@@ -230,7 +230,7 @@ pub struct Stiffness {
     pub k_torsion_saint_venant: f64,
 }
 
-/// Result of [`characterise`] (INTERFACE.md hinge result).
+/// Result of [`characterise`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct HingeResult {
     /// Hinge in its blank: between the two blank end faces.

@@ -1,9 +1,9 @@
-//! Hinge profiles t(x) / r(x) per family (SPEC.md §4) and their validation.
+//! Hinge profiles t(x) / r(x) per family and their validation.
 //!
 //! x runs along the hinge, x = 0 at the hinge centre; the notch region is |x| ≤ `half_notch`,
 //! followed on each side by `blank_length` of full blank section. Thickness profiles are capped
 //! at the blank height h: a notch contour that would be thicker than the blank simply ends on
-//! the blank face (SPEC §4 "capped at h"); a contour that ends thinner than h (t + 2R < h)
+//! the blank face ("capped at h"); a contour that ends thinner than h (t + 2R < h)
 //! steps up to the blank with a vertical wall, as a slot milled with a cutter of radius R.
 //!
 //! Each profile is cut into *pieces* between breakpoints (waist, end of a straight part, end of

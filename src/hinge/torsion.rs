@@ -2,7 +2,7 @@
 //!
 //! Saint-Venant torsion (T = GJ θ') lets every section warp freely. In a short notch the thick
 //! blanks on either side hardly warp, so the notch is held against warping and is stiffer than
-//! 1-D Saint-Venant theory predicts (SPEC §4: 23–92 % too soft against solid FEM). Vlasov's
+//! 1-D Saint-Venant theory predicts (23–92 % too soft against solid FEM). Vlasov's
 //! theory of non-uniform torsion (Vlasov, *Thin-walled elastic beams*, 1961; for solid
 //! sections with the Saint-Venant warping function as the warping mode, e.g. Pilkey,
 //! *Analysis and Design of Elastic Beams*, 2002, ch. 6) adds the bimoment term:

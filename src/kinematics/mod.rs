@@ -1,5 +1,5 @@
 //! Rigid-body kinematics of the 3-PRS parallel mechanism: IKP, FKP, parasitic motion, passive
-//! joint rotations, Jacobians and the requirement sweep (SPEC.md §3).
+//! joint rotations, Jacobians and the requirement sweep.
 
 pub mod prs;
 pub mod workspace;

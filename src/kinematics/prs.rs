@@ -1,4 +1,4 @@
-//! Rigid-body kinematics of the 3-PRS parallel mechanism (SPEC.md §3; Ruiz et al., seed 000 §3).
+//! Rigid-body kinematics of the 3-PRS parallel mechanism (Ruiz et al. 2019, §3).
 //!
 //! Fixed frame {x, y, z} at the base centre O, z up; moving frame {u, v, w} at the platform
 //! centre P. Orientation `R = Ry(θ)·Rx(ψ)·Rz(φ)`. Leg i lies in the vertical plane through O
@@ -7,7 +7,7 @@
 //! `Cᵢ = Aᵢ + sᵢ·eᵢ`, the spherical joint `Bᵢ = p + R·(b dᵢ)`, and `|Bᵢ − Cᵢ| = L`.
 //!
 //! The revolute joints keep each `Bᵢ` in its leg plane; this fixes the parasitic motions
-//! `φ = atan2(sψ·sθ, cψ + cθ)`, `pₓ = (b/2)(uₓ − v_y)`, `p_y = −b·u_y` (seed 000 Eqs. 13–15).
+//! `φ = atan2(sψ·sθ, cψ + cθ)`, `pₓ = (b/2)(uₓ − v_y)`, `p_y = −b·u_y` (Ruiz et al. (2019) Eqs. 13–15).
 //!
 //! All poses in this module's public API are measured from the home pose (ψ = θ = φ = 0,
 //! `p = [0, 0, z₀]`): `z` is the platform's vertical displacement from home, in mm.
@@ -146,12 +146,12 @@ fn drot_z(a: f64) -> Matrix3<f64> {
     Matrix3::new(-s, -c, 0.0, c, -s, 0.0, 0.0, 0.0, 0.0)
 }
 
-/// Platform orientation `R = Ry(θ)·Rx(ψ)·Rz(φ)` (SPEC.md §3).
+/// Platform orientation `R = Ry(θ)·Rx(ψ)·Rz(φ)`.
 pub fn orientation(psi: f64, theta: f64, phi: f64) -> Matrix3<f64> {
     rot_y(theta) * rot_x(psi) * rot_z(phi)
 }
 
-/// Parasitic rotation φ = atan2(sψ·sθ, cψ + cθ), rad (seed 000 Eq. 13).
+/// Parasitic rotation φ = atan2(sψ·sθ, cψ + cθ), rad (Ruiz et al. (2019) Eq. 13).
 pub fn parasitic_phi(psi: f64, theta: f64) -> f64 {
     (psi.sin() * theta.sin()).atan2(psi.cos() + theta.cos())
 }
@@ -177,7 +177,7 @@ struct Platform {
 }
 
 impl Prs {
-    /// The 3-PRS of SPEC.md §3 with `a = b + L·cos α₀`, home height `z₀ = L·sin α₀`.
+    /// The 3-PRS of Ruiz et al. (2019) §3 with `a = b + L·cos α₀`, home height `z₀ = L·sin α₀`.
     ///
     /// `l`, `b` in mm; `alpha0` (leg angle to the horizontal at home) and `gamma` in rad.
     pub fn new(l: f64, b: f64, alpha0: f64, gamma: f64) -> Result<Self, KinematicsError> {
@@ -356,7 +356,7 @@ impl Prs {
         }
     }
 
-    /// Inverse kinematics (seed 000 §3.2–3.3): strokes, parasitic motion and passive joint
+    /// Inverse kinematics (Ruiz et al. (2019) §3.2–3.3): strokes, parasitic motion and passive joint
     /// angles for the independent coordinates `z` (mm from home), `psi`, `theta` (rad).
     pub fn ikp(&self, z: f64, psi: f64, theta: f64) -> Result<IkpSolution, KinematicsError> {
         let pose = self.complete_pose(z, psi, theta);
@@ -384,7 +384,7 @@ impl Prs {
             alpha[i] = e.dot(&li).clamp(-1.0, 1.0).acos();
             let f0 = self.leg_frame(i, &(self.leg_home(i) / self.l));
             let fi = self.leg_frame(i, &li);
-            // R_S = Fᵢ₀ᵀ · R · R_im with R_im = Fᵢ₀(home) (SPEC.md §3).
+            // R_S = Fᵢ₀ᵀ · R · R_im with R_im = Fᵢ₀(home).
             spherical[i] = intrinsic_xyz(&(fi.transpose() * r * f0));
         }
         Ok(IkpSolution {
@@ -511,12 +511,12 @@ impl Prs {
         Ok(out)
     }
 
-    /// The 6×6 constraint-embedded inverse Jacobian G (seed 003 Eqs. 1–2) at a pose:
+    /// The 6×6 constraint-embedded inverse Jacobian G (Nigatu et al. Eqs. 1–2) at a pose:
     /// `[ṡ; 0] = G · [v; ω]` with v the velocity of P and ω the angular velocity (fixed frame).
     ///
     /// Rows 1–3 (actuation): `[lᵢᵀ, (aᵢ × lᵢ)ᵀ] / (lᵢ·eᵢ)`; rows 4–6 (constraints, Bᵢ cannot
     /// leave its leg plane): `[mᵢᵀ, (aᵢ × mᵢ)ᵀ]`, where lᵢ is the unit leg vector C→B,
-    /// aᵢ = Bᵢ − P and mᵢ the revolute axis. (Seed 003 writes lᵢ × aᵢ for a vector aᵢ from B
+    /// aᵢ = Bᵢ − P and mᵢ the revolute axis. (Nigatu et al. writes lᵢ × aᵢ for a vector aᵢ from B
     /// to P; the moment is the same.)
     pub fn constraint_jacobian(&self, pose: &Pose) -> Result<Matrix6<f64>, KinematicsError> {
         let sol = self.ikp(pose.z, pose.psi, pose.theta)?;

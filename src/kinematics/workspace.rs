@@ -1,5 +1,5 @@
 //! Requirement sweep: ranges of strokes and passive joint rotations over a box of poses
-//! (seed 000 §4, Figs. 6–7).
+//! (Ruiz et al. (2019) §4, Figs. 6–7).
 
 use super::prs::{KinematicsError, Prs};
 

@@ -87,7 +87,7 @@ mod tests {
 
     #[test]
     fn dms_rounds_to_the_second() {
-        // Seed 000 Table 4 style: 8′59″, −1′38″.
+        // Ruiz et al. (2019) Table 4 style: 8′59″, −1′38″.
         assert_eq!(dms(8.0 / 60.0 + 59.0 / 3600.0), "8′59″");
         assert_eq!(dms(-(1.0 / 60.0 + 38.0 / 3600.0)), "-1′38″");
         assert_eq!(dms(1.0 + 2.0 / 60.0 + 3.4 / 3600.0), "1°02′03″");

@@ -1,4 +1,4 @@
-//! The monolithic 3-PRS compliant stage as one beam FE model (SPEC.md §5; seed 000 §5).
+//! The monolithic 3-PRS compliant stage as one beam FE model (Ruiz et al. 2019, §5).
 //!
 //! Leg i runs from the revolute centre Cᵢ to the spherical centre Bᵢ (home pose of
 //! [`crate::kinematics::Prs`]). Along it, from the slider up:
@@ -149,7 +149,7 @@ pub struct StageCaseResult {
 }
 
 impl StageCaseResult {
-    /// T = max σ_sph / max σ_rev (seed 000 §5).
+    /// T = max σ_sph / max σ_rev (Ruiz et al. (2019) §5).
     pub fn t_ratio(&self) -> f64 {
         let s = self.spherical_stress.iter().cloned().fold(0.0, f64::max);
         let r = self.revolute_stress.iter().cloned().fold(0.0, f64::max);
