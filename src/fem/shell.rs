@@ -178,35 +178,45 @@ fn plate(i: usize, k: usize) -> usize {
     6 * i + [2, 3, 4][k]
 }
 
+/// Compatible (3×12) and incompatible-mode (3×4) membrane strain rows at (ξ, η), with det J:
+/// incompatible modes P₁ = 1−ξ², P₂ = 1−η², derivatives through J₀ scaled by det J₀/det J
+/// (Taylor's constant-Jacobian correction of Wilson's modes). Shared by the stiffness and the
+/// stress recovery.
+pub(crate) type MemRows = (SMatrix<f64, 3, 12>, SMatrix<f64, 3, 4>, f64);
+
+pub(crate) fn membrane_rows(xy: &[[f64; 2]; 4], xi: f64, eta: f64) -> Option<MemRows> {
+    let (_, _, _, det0, ji0) = cartesian(xy, 0.0, 0.0)?;
+    let (_, dx, dy, det, _) = cartesian(xy, xi, eta)?;
+    let mut b = SMatrix::<f64, 3, 12>::zeros();
+    for i in 0..4 {
+        b[(0, 3 * i)] = dx[i];
+        b[(1, 3 * i + 1)] = dy[i];
+        b[(2, 3 * i)] = dy[i];
+        b[(2, 3 * i + 1)] = dx[i];
+    }
+    let s = det0 / det;
+    let pn = [(-2.0 * xi, 0.0), (0.0, -2.0 * eta)];
+    let mut bi = SMatrix::<f64, 3, 4>::zeros();
+    for (k, (pxi, peta)) in pn.iter().enumerate() {
+        let px = s * (ji0[(0, 0)] * pxi + ji0[(0, 1)] * peta);
+        let py = s * (ji0[(1, 0)] * pxi + ji0[(1, 1)] * peta);
+        bi[(0, k)] = px;
+        bi[(2, k)] = py;
+        bi[(1, 2 + k)] = py;
+        bi[(2, 2 + k)] = px;
+    }
+    Some((b, bi, det))
+}
+
 /// Membrane stiffness (12 DOFs u v θz per node, condensed incompatible modes, drilling).
 fn membrane(xy: &[[f64; 2]; 4], t: f64, mat: &Material) -> Option<SMatrix<f64, 12, 12>> {
     let c = plane_stress(mat.e, mat.nu) * t;
-    let (_, _, _, det0, ji0) = cartesian(xy, 0.0, 0.0)?;
     let mut kcc = SMatrix::<f64, 12, 12>::zeros();
     let mut kci = SMatrix::<f64, 12, 4>::zeros();
     let mut kii = SMatrix::<f64, 4, 4>::zeros();
     for &xi in &[-G2, G2] {
         for &eta in &[-G2, G2] {
-            let (_, dx, dy, det, _) = cartesian(xy, xi, eta)?;
-            let mut b = SMatrix::<f64, 3, 12>::zeros();
-            for i in 0..4 {
-                b[(0, 3 * i)] = dx[i];
-                b[(1, 3 * i + 1)] = dy[i];
-                b[(2, 3 * i)] = dy[i];
-                b[(2, 3 * i + 1)] = dx[i];
-            }
-            // Incompatible modes P₁ = 1−ξ², P₂ = 1−η², derivatives through J₀ scaled by det J₀/det J.
-            let s = det0 / det;
-            let pn = [(-2.0 * xi, 0.0), (0.0, -2.0 * eta)];
-            let mut bi = SMatrix::<f64, 3, 4>::zeros();
-            for (k, (pxi, peta)) in pn.iter().enumerate() {
-                let px = s * (ji0[(0, 0)] * pxi + ji0[(0, 1)] * peta);
-                let py = s * (ji0[(1, 0)] * pxi + ji0[(1, 1)] * peta);
-                bi[(0, k)] = px;
-                bi[(2, k)] = py;
-                bi[(1, 2 + k)] = py;
-                bi[(2, 2 + k)] = px;
-            }
+            let (b, bi, det) = membrane_rows(xy, xi, eta)?;
             kcc += b.transpose() * c * b * det;
             kci += b.transpose() * c * bi * det;
             kii += bi.transpose() * c * bi * det;

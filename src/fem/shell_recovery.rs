@@ -21,7 +21,8 @@
 use super::error::FemError;
 use super::model::{Element, Model};
 use super::shell::{
-    cartesian, curvature_b, mitc_shear_b, plane_stress, shell_geometry, stabilized_shear_stiffness, Vec24, ETA, G2, XI,
+    cartesian, curvature_b, membrane_rows, mitc_shear_b, plane_stress, shell_geometry, stabilized_shear_stiffness,
+    Vec24, ETA, G2, XI,
 };
 use crate::material::Material;
 use nalgebra::{Matrix3, SMatrix, SVector, Vector2, Vector3};
@@ -61,35 +62,6 @@ fn split(d: &Vec24) -> (SVector<f64, 12>, SVector<f64, 12>) {
         }
     }
     (dm, dp)
-}
-
-/// Compatible (3×12) and incompatible-mode (3×4) membrane strain rows at (ξ, η), with det J;
-/// the same construction as the element's membrane stiffness (Taylor's constant-Jacobian
-/// correction of Wilson's modes 1−ξ², 1−η²).
-type MemRows = (SMatrix<f64, 3, 12>, SMatrix<f64, 3, 4>, f64);
-
-fn membrane_rows(xy: &[[f64; 2]; 4], xi: f64, eta: f64) -> Option<MemRows> {
-    let (_, _, _, det0, ji0) = cartesian(xy, 0.0, 0.0)?;
-    let (_, dx, dy, det, _) = cartesian(xy, xi, eta)?;
-    let mut b = SMatrix::<f64, 3, 12>::zeros();
-    for i in 0..4 {
-        b[(0, 3 * i)] = dx[i];
-        b[(1, 3 * i + 1)] = dy[i];
-        b[(2, 3 * i)] = dy[i];
-        b[(2, 3 * i + 1)] = dx[i];
-    }
-    let s = det0 / det;
-    let pn = [(-2.0 * xi, 0.0), (0.0, -2.0 * eta)];
-    let mut bi = SMatrix::<f64, 3, 4>::zeros();
-    for (k, (pxi, peta)) in pn.iter().enumerate() {
-        let px = s * (ji0[(0, 0)] * pxi + ji0[(0, 1)] * peta);
-        let py = s * (ji0[(1, 0)] * pxi + ji0[(1, 1)] * peta);
-        bi[(0, k)] = px;
-        bi[(2, k)] = py;
-        bi[(1, 2 + k)] = py;
-        bi[(2, 2 + k)] = px;
-    }
-    Some((b, bi, det))
 }
 
 /// Symmetric 3×3 from [xx, yy, zz, xy, yz, zx].
