@@ -219,20 +219,7 @@ fn add_shell_field(r: &mut StaticCaseRow, f: fem::shell_recovery::ShellField) {
 fn row(c: &fem::CaseResult) -> StaticCaseRow {
     StaticCaseRow {
         name: c.name.clone(),
-        displacements: c
-            .displacements
-            .iter()
-            .map(|d| {
-                [
-                    d[0],
-                    d[1],
-                    d[2],
-                    d[3].to_degrees(),
-                    d[4].to_degrees(),
-                    d[5].to_degrees(),
-                ]
-            })
-            .collect(),
+        displacements: c.displacements.iter().map(crate::report::numbers::mm_deg).collect(),
         reactions: c.reactions.iter().map(|(_, r)| *r).collect(),
         reaction_nodes: c.reactions.iter().map(|(n, _)| *n).collect(),
         max_von_mises: c.max_von_mises,
@@ -325,10 +312,10 @@ fn principal_extremes(c: &StaticCaseRow) -> String {
         for (node, s) in list.iter().enumerate() {
             let Some(s) = s else { continue };
             let p = fem::shell_recovery::principal(s);
-            if hi.map_or(true, |h| p[2] > h.0) {
+            if hi.is_none_or(|h| p[2] > h.0) {
                 hi = Some((p[2], node, name));
             }
-            if lo.map_or(true, |l| p[0] < l.0) {
+            if lo.is_none_or(|l| p[0] < l.0) {
                 lo = Some((p[0], node, name));
             }
         }

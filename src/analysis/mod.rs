@@ -172,7 +172,7 @@ fn stretch_warnings(model: &crate::fem::Model, r: &fem_static::StaticResult) -> 
                 .sum::<f64>()
                 .sqrt();
             let strain = l / l0 - 1.0;
-            if strain.abs() > SMALL_STRAIN && worst.map_or(true, |(_, w)| strain.abs() > w.abs()) {
+            if strain.abs() > SMALL_STRAIN && worst.is_none_or(|(_, w)| strain.abs() > w.abs()) {
                 worst = Some((ie, strain));
             }
         }

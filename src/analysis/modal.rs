@@ -85,21 +85,7 @@ pub fn solve(model: &Model, modes: usize, shift_hz: Option<f64>) -> Result<(Moda
                 frequency_hz: m.frequency_hz,
                 eigenvalue: m.eigenvalue,
                 rigid_body: false,
-                shape: Some(
-                    m.shape
-                        .iter()
-                        .map(|d| {
-                            [
-                                d[0],
-                                d[1],
-                                d[2],
-                                d[3].to_degrees(),
-                                d[4].to_degrees(),
-                                d[5].to_degrees(),
-                            ]
-                        })
-                        .collect(),
-                ),
+                shape: Some(m.shape.iter().map(crate::report::numbers::mm_deg).collect()),
                 effective_mass_fraction: m.effective_mass_fraction.into(),
             }
         })

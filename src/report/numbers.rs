@@ -1,4 +1,5 @@
-//! Serialisers for result fields whose non-finite values have a documented meaning.
+//! Number conventions of results: rotations in degrees ([`mm_deg`]), and serialisers for result
+//! fields whose non-finite values have a documented meaning.
 //!
 //! Every number in a result must be finite (`analysis::to_checked_json` refuses NaN and ±∞ with
 //! their JSON path). A few fields are legitimately unbounded or undefined — the rotation at the
@@ -25,4 +26,17 @@ pub fn ratio_or_null<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
     } else {
         s.serialize_none()
     }
+}
+
+/// A node's six displacement components as written in every output: translations in mm,
+/// rotations converted from radians (inside the library) to degrees.
+pub fn mm_deg(d: &[f64; 6]) -> [f64; 6] {
+    [
+        d[0],
+        d[1],
+        d[2],
+        d[3].to_degrees(),
+        d[4].to_degrees(),
+        d[5].to_degrees(),
+    ]
 }
