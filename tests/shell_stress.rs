@@ -151,7 +151,7 @@ fn z_section(nf: usize, nw: usize, nx: usize) -> (f64, f64) {
     });
     let r = run(case);
     let lc = &r["load_cases"][0];
-    assert!(nx % 4 == 0);
+    assert!(nx.is_multiple_of(4));
     let a_top = id(nx / 4, 0);
     let a_bot = id(nx / 4, ns - 1);
     let sxx = |n: usize| f(&lc["shell_stress"]["mid"][n][0]);

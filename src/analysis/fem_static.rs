@@ -325,10 +325,10 @@ fn principal_extremes(c: &StaticCaseRow) -> String {
         for (node, s) in list.iter().enumerate() {
             let Some(s) = s else { continue };
             let p = fem::shell_recovery::principal(s);
-            if hi.map_or(true, |h| p[2] > h.0) {
+            if hi.is_none_or(|h| p[2] > h.0) {
                 hi = Some((p[2], node, name));
             }
-            if lo.map_or(true, |l| p[0] < l.0) {
+            if lo.is_none_or(|l| p[0] < l.0) {
                 lo = Some((p[0], node, name));
             }
         }

@@ -172,7 +172,7 @@ fn stretch_warnings(model: &crate::fem::Model, r: &fem_static::StaticResult) -> 
                 .sum::<f64>()
                 .sqrt();
             let strain = l / l0 - 1.0;
-            if strain.abs() > SMALL_STRAIN && worst.map_or(true, |(_, w)| strain.abs() > w.abs()) {
+            if strain.abs() > SMALL_STRAIN && worst.is_none_or(|(_, w)| strain.abs() > w.abs()) {
                 worst = Some((ie, strain));
             }
         }
@@ -195,7 +195,7 @@ fn stretch_warnings(model: &crate::fem::Model, r: &fem_static::StaticResult) -> 
 
 /// Calibration warnings of the hinges of the design found by a `design` run.
 fn design_warnings(case: &crate::case::design::DesignCase, r: &design::DesignResult) -> Vec<String> {
-    use crate::design::stage_design::{with_params, PARAMETERS};
+    use crate::stage::sizing::{with_params, PARAMETERS};
     let Ok((base, _, _)) = case.validate() else {
         return Vec::new();
     };

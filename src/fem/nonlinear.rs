@@ -47,12 +47,13 @@
 //!   points. With applied moments this is the static (divergence) criterion on the symmetric
 //!   part only.
 
-use super::analysis::{prescribed_dofs, CaseResult};
+use super::analysis::prescribed_dofs;
 use super::constraints::{frame_block, DofMap, NONE};
 use super::corot::{self, CorotGeometry, NodeState};
 use super::dof::NodeDof;
 use super::error::FemError;
 use super::model::{Beam, Element, FlexElement, LoadCase, Model};
+use super::recovery::CaseResult;
 use super::recovery::{self, ElementResult, Statics};
 use super::solve::{Factor, LuPattern, Parallelism, SparsePattern, SymbolicFactor};
 use super::transform::{rigid_arm, skew, Mat12};
@@ -992,7 +993,7 @@ fn load_control(
     let max_steps = 10 * opts.steps.max(10);
     let mut dl = dl0;
     let mut lambda = lambda0;
-    let mut prev_stable = path.last().map_or(true, |p| p.stable);
+    let mut prev_stable = path.last().is_none_or(|p| p.stable);
     let mut internal = ctx.evaluate(st, lambda0, Assemble::None).map_or(0.0, |ev| ev.internal);
     let (mut iterations, mut steps, mut cuts, mut cut_run) = (0, 0, 0, 0);
     while lambda < 1.0 - 1e-12 {

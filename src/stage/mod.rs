@@ -20,6 +20,8 @@
 //! rotation about mᵢ; spherical: translations tied) and legs and platform are made 10⁶ times
 //! stiffer: the linear FE pose must then equal the linearised rigid-body kinematics.
 
+pub mod sizing;
+
 use crate::fem::{self, Dof, FemError, Model};
 use crate::hinge::{self, HingeSpec, Profile};
 use crate::kinematics::Prs;
