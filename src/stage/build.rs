@@ -143,14 +143,13 @@ impl StageDesign {
             } else {
                 model.add_node(arr(c + hr * l))
             };
-            let rev_element = match rev_c {
-                Some(cmp) => model.add_element(fem::Element::Flex(fem::FlexElement {
+            let rev_element = rev_c.map(|cmp| {
+                model.add_element(fem::Element::Flex(fem::FlexElement {
                     nodes: [slider, rev_top],
                     compliance: cmp,
                     up: arr(n),
-                })),
-                None => usize::MAX,
-            };
+                }))
+            });
             // The leg beam from the top of the notch to the bottom of the neck.
             let start = c + hr * l;
             let end = b - hs * l;
@@ -180,7 +179,7 @@ impl StageDesign {
                         compliance: cmp,
                         up: arr(n),
                     }));
-                    (top, el)
+                    (top, Some(el))
                 }
                 None => {
                     // Spherical: translations tied, rotations free; the platform point is an
@@ -191,7 +190,7 @@ impl StageDesign {
                         b: sph_bottom,
                         dofs: [true, true, true, false, false, false],
                     });
-                    (top, usize::MAX)
+                    (top, None)
                 }
             };
             platform_slaves.push(sph_top);

@@ -86,10 +86,10 @@ pub struct LegIds {
     pub sph_bottom: usize,
     /// Top of the spherical neck (on the platform).
     pub sph_top: usize,
-    /// Revolute hinge element (`usize::MAX` with ideal joints).
-    pub rev_element: usize,
-    /// Spherical hinge element (`usize::MAX` with ideal joints).
-    pub sph_element: usize,
+    /// Revolute hinge element (`None` with ideal joints).
+    pub rev_element: Option<usize>,
+    /// Spherical hinge element (`None` with ideal joints).
+    pub sph_element: Option<usize>,
     /// Slider direction eᵢ.
     pub e: Vector3<f64>,
     /// Revolute axis mᵢ.

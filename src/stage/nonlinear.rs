@@ -64,7 +64,7 @@ impl StageModel {
                     (leg.rev_element, &self.rev_profile, &self.rev_hinge),
                     (leg.sph_element, &self.sph_profile, &self.sph_hinge),
                 ] {
-                    if el != usize::MAX {
+                    if let Some(el) = el {
                         let last = self.split_hinge(&mut model, el, profile, single, segments)?;
                         chains.push((el, last));
                     }

@@ -57,12 +57,12 @@ impl StageModel {
                     .find(|(n, _)| *n == leg.slider)
                     .map_or(0.0, |(_, r)| leg.e.dot(&Vector3::new(r[0], r[1], r[2]))),
             };
-            if leg.rev_element != usize::MAX {
-                let sf = &fe.elements[leg.rev_element].section_forces;
+            if let Some(el) = leg.rev_element {
+                let sf = &fe.elements[el].section_forces;
                 rev[i] = hinge_peak_stress(&self.rev_profile, nu, self.kt[0], sf, false);
             }
-            if leg.sph_element != usize::MAX {
-                let sf = &fe.elements[leg.sph_element].section_forces;
+            if let Some(el) = leg.sph_element {
+                let sf = &fe.elements[el].section_forces;
                 sph[i] = hinge_peak_stress(&self.sph_profile, nu, self.kt[1], sf, true);
             }
         }
