@@ -85,10 +85,7 @@ shards one after another (their lines accumulate in FILE) or give each its own -
     },
 }
 
-/// Exit code for a bad case file.
-pub const EXIT_BAD_CASE: u8 = 2;
-/// Exit code for a failed analysis.
-pub const EXIT_FAILED: u8 = 1;
+pub use crate::output::{EXIT_BAD_CASE, EXIT_FAILED};
 
 fn read_case(path: &Path) -> Result<case::Case, CaseError> {
     case::load(path)

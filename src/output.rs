@@ -8,6 +8,11 @@
 //! name included — instead of writing through it. The rename then replaces the directory entry
 //! `NAME` itself: if `NAME` was a symbolic link, the link is replaced, its target is untouched.
 
+/// Exit code for a bad case file (or arguments, or a refused output path).
+pub const EXIT_BAD_CASE: u8 = 2;
+/// Exit code for a failed analysis (or an output that could not be written).
+pub const EXIT_FAILED: u8 = 1;
+
 use std::ffi::OsString;
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, Write};

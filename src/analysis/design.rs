@@ -2,8 +2,8 @@
 
 use super::{AnalysisError, Report, RunError};
 use crate::case::design::{DesignCase, SensitivityCase};
-use crate::design::stage_design::{self, DesignOutcome, Responses, SensitivityRow, PARAMETERS};
 use crate::report::markdown::{sig, Table};
+use crate::stage::sizing::{self as stage_design, DesignOutcome, Responses, SensitivityRow, PARAMETERS};
 use serde::Serialize;
 
 /// Result of `sensitivity`.

@@ -195,7 +195,7 @@ fn stretch_warnings(model: &crate::fem::Model, r: &fem_static::StaticResult) -> 
 
 /// Calibration warnings of the hinges of the design found by a `design` run.
 fn design_warnings(case: &crate::case::design::DesignCase, r: &design::DesignResult) -> Vec<String> {
-    use crate::design::stage_design::{with_params, PARAMETERS};
+    use crate::stage::sizing::{with_params, PARAMETERS};
     let Ok((base, _, _)) = case.validate() else {
         return Vec::new();
     };

@@ -247,8 +247,13 @@ fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super:
         for c in &results {
             let mut cell = Vec::new();
             for (i, leg) in s.legs.iter().enumerate() {
-                cell.push((leg.rev_element, c.revolute_stress[i]));
-                cell.push((leg.sph_element, c.spherical_stress[i]));
+                // Ideal joints have no hinge element (and no stress cell).
+                if let Some(el) = leg.rev_element {
+                    cell.push((el, c.revolute_stress[i]));
+                }
+                if let Some(el) = leg.sph_element {
+                    cell.push((el, c.spherical_stress[i]));
+                }
             }
             // The nonlinear solve splits each hinge into co-rotational segments (nodes added
             // after the model's own): the file shows the model's nodes, a hinge as one line.

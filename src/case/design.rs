@@ -5,7 +5,7 @@
 use super::error::{check, CaseError};
 use super::material::MaterialSpec;
 use super::stage::StageSpec;
-use crate::design::stage_design::{self, Requirements, PARAMETERS};
+use crate::stage::sizing::{self as stage_design, Requirements, PARAMETERS};
 use crate::stage::StageDesign;
 use serde::Deserialize;
 

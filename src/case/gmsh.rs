@@ -18,34 +18,9 @@
 
 use super::error::CaseError;
 use super::mesh::{DofName, ElementSpec, MeshSpec, SupportSpec};
-use serde::Deserialize;
 use std::collections::{BTreeMap, HashMap};
 
-/// What a physical group becomes.
-#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct GroupSpec {
-    /// Section name (a `shell` section for triangles/quads, a beam section for lines).
-    #[serde(default)]
-    pub section: Option<String>,
-    /// Material name.
-    #[serde(default)]
-    pub material: Option<String>,
-    /// Beam orientation vector (lines).
-    #[serde(default)]
-    pub up: Option<[f64; 3]>,
-    /// Fixed DOFs of every node of the group.
-    #[serde(default)]
-    pub fix: Vec<DofName>,
-}
-
-/// The `gmsh` mapping of a case with a `.msh` mesh.
-#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct GmshMapping {
-    /// Physical group name → what it becomes.
-    pub groups: BTreeMap<String, GroupSpec>,
-}
+pub use super::mesh::{GmshMapping, GroupSpec};
 
 struct Lines<'a> {
     it: std::iter::Enumerate<std::str::Lines<'a>>,

@@ -291,7 +291,7 @@ pub struct ModalCase {
     /// Mesh file, as for `static`: a JSON mesh file or a Gmsh `.msh` file.
     pub mesh: Option<String>,
     /// Physical-group mapping of a Gmsh `.msh` mesh (only with a `.msh` mesh, which needs it).
-    pub gmsh: Option<super::gmsh::GmshMapping>,
+    pub gmsh: Option<GmshMapping>,
     /// Number of modes (the lowest), 1 … 1000.
     #[schemars(range(min = 1, max = 1000))]
     pub modes: usize,
@@ -333,7 +333,7 @@ pub struct StaticCase {
     pub mesh: Option<String>,
     /// Physical-group mapping of a Gmsh `.msh` mesh (only with a `.msh` mesh, which needs it):
     /// `{"groups": {"NAME": {"section", "material", "up"} or {"fix": [...]}}}`.
-    pub gmsh: Option<super::gmsh::GmshMapping>,
+    pub gmsh: Option<GmshMapping>,
     /// The inline model (or additions to the mesh: materials, sections, load cases).
     #[serde(flatten)]
     pub model: MeshSpec,
@@ -369,8 +369,8 @@ fn model_rules(need_loads: bool) -> serde_json::Value {
             "else": {"properties": {"gmsh": {"type": "null"}}}
         },
         {
-            "if": super::stage::steps_given(),
-            "then": super::stage::nonlinear_true()
+            "if": steps_given(),
+            "then": nonlinear_true()
         }
     ])
 }
@@ -848,4 +848,40 @@ fn section(s: &SectionSpec, p: &str) -> Result<Option<fem::Section>, CaseError> 
             return Ok(None);
         }
     }))
+}
+
+/// What a physical group becomes.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct GroupSpec {
+    /// Section name (a `shell` section for triangles/quads, a beam section for lines).
+    #[serde(default)]
+    pub section: Option<String>,
+    /// Material name.
+    #[serde(default)]
+    pub material: Option<String>,
+    /// Beam orientation vector (lines).
+    #[serde(default)]
+    pub up: Option<[f64; 3]>,
+    /// Fixed DOFs of every node of the group.
+    #[serde(default)]
+    pub fix: Vec<DofName>,
+}
+
+/// The `gmsh` mapping of a case with a `.msh` mesh.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct GmshMapping {
+    /// Physical group name → what it becomes.
+    pub groups: BTreeMap<String, GroupSpec>,
+}
+
+/// Schema: `steps` is given as a number.
+pub(crate) fn steps_given() -> serde_json::Value {
+    serde_json::json!({"required": ["steps"], "properties": {"steps": {"type": "integer"}}})
+}
+
+/// Schema: `"nonlinear": true`.
+pub(crate) fn nonlinear_true() -> serde_json::Value {
+    serde_json::json!({"required": ["nonlinear"], "properties": {"nonlinear": {"const": true}}})
 }

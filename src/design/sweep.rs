@@ -529,12 +529,12 @@ fn progress_bar(len: usize) -> indicatif::ProgressBar {
 
 fn bad_case(e: &CaseError) -> ExitCode {
     eprintln!("error: {e}");
-    ExitCode::from(crate::cli::EXIT_BAD_CASE)
+    ExitCode::from(crate::output::EXIT_BAD_CASE)
 }
 
 fn failed(msg: impl fmt::Display) -> ExitCode {
     eprintln!("error: {msg}");
-    ExitCode::from(crate::cli::EXIT_FAILED)
+    ExitCode::from(crate::output::EXIT_FAILED)
 }
 
 /// Loads and builds the sweep of a case file (errors are bad-case errors, exit 2).
@@ -557,7 +557,7 @@ pub fn run_cli(args: SweepArgs) -> ExitCode {
         Some((_, Ok(s))) => s,
         Some((text, Err(msg))) => {
             eprintln!("error: invalid --shard `{text}`: {msg}");
-            return ExitCode::from(crate::cli::EXIT_BAD_CASE);
+            return ExitCode::from(crate::output::EXIT_BAD_CASE);
         }
     };
     let sweep = match load(&args.case) {
@@ -567,10 +567,10 @@ pub fn run_cli(args: SweepArgs) -> ExitCode {
     let base_dir = args.case.parent();
     match execute(&sweep, base_dir, shard, &args) {
         Ok(0) => ExitCode::SUCCESS,
-        Ok(_) => ExitCode::from(crate::cli::EXIT_FAILED),
+        Ok(_) => ExitCode::from(crate::output::EXIT_FAILED),
         Err(Stop::Usage(msg)) => {
             eprintln!("error: {msg}");
-            ExitCode::from(crate::cli::EXIT_BAD_CASE)
+            ExitCode::from(crate::output::EXIT_BAD_CASE)
         }
         Err(Stop::Io(e)) => failed(e),
     }

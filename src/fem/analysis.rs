@@ -6,28 +6,10 @@ use super::constraints::{DofMap, NONE};
 use super::dof::NodeDof;
 use super::error::FemError;
 use super::model::{Element, LoadCase, Model};
-use super::recovery::{self, ElementResult, Statics};
+use super::recovery;
+pub use super::recovery::CaseResult;
 use super::solve::{Factor, FactorError, Parallelism, SparseMatrix, SymbolicFactor};
 use nalgebra::Matrix6;
-
-/// Results of one load case.
-#[derive(Debug, Clone, PartialEq)]
-pub struct CaseResult {
-    pub name: String,
-    /// Per node [ux, uy, uz (mm), rx, ry, rz (rad)], global axes.
-    pub displacements: Vec<[f64; 6]>,
-    /// Support reactions (force the support exerts on the structure) per constrained node,
-    /// sorted by node: [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)], global axes, zero on free DOFs.
-    /// Includes the loads of rigid-link slaves carried by a supported master.
-    pub reactions: Vec<(usize, [f64; 6])>,
-    /// Per element (model order): end forces, section forces, stresses, energy.
-    pub elements: Vec<ElementResult>,
-    /// Largest von Mises stress over all elements with stress points, MPa (`None` if no
-    /// element has stress points).
-    pub max_von_mises: Option<f64>,
-    /// Statics check (sums about the global origin).
-    pub statics: Statics,
-}
 
 /// Results of all load cases of a model, in model order.
 #[derive(Debug, Clone, PartialEq)]

@@ -1,7 +1,6 @@
 //! Recovery: element end forces and section forces in local axes, stresses at the section's
 //! critical points (von Mises), reactions and the statics check (PyNite's `_check_statics`).
 
-use super::analysis::CaseResult;
 use super::constraints::DofMap;
 use super::error::FemError;
 use super::model::{Element, Model};
@@ -257,6 +256,25 @@ pub fn model_size(model: &Model) -> f64 {
         }
     }
     (0..3).map(|i| hi[i] - lo[i]).fold(0.0, f64::max).max(1.0)
+}
+
+/// Results of one load case.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CaseResult {
+    pub name: String,
+    /// Per node [ux, uy, uz (mm), rx, ry, rz (rad)], global axes.
+    pub displacements: Vec<[f64; 6]>,
+    /// Support reactions (force the support exerts on the structure) per constrained node,
+    /// sorted by node: [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)], global axes, zero on free DOFs.
+    /// Includes the loads of rigid-link slaves carried by a supported master.
+    pub reactions: Vec<(usize, [f64; 6])>,
+    /// Per element (model order): end forces, section forces, stresses, energy.
+    pub elements: Vec<ElementResult>,
+    /// Largest von Mises stress over all elements with stress points, MPa (`None` if no
+    /// element has stress points).
+    pub max_von_mises: Option<f64>,
+    /// Statics check (sums about the global origin).
+    pub statics: Statics,
 }
 
 /// Builds the [`CaseResult`] from the full displacement vector `u` and the applied load

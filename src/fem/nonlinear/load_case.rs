@@ -1,0 +1,134 @@
+//! The solve of one load case: its fixed data (DOF map, loads, prescribed values, sparsity
+//! pattern and symbolic factorisation), the path control, and the recovery of every converged
+//! point.
+
+use super::path::{arc_length, load_control, Stability};
+use super::recover::finish;
+use super::residual::for_each_pair_in;
+use super::state::{CaseCtx, ElemData, State};
+use super::{NonlinearCase, NonlinearOptions, PathPoint, Tangent};
+use crate::fem::analysis::prescribed_dofs;
+use crate::fem::constraints::DofMap;
+use crate::fem::error::FemError;
+use crate::fem::model::{LoadCase, Model};
+use crate::fem::solve::{LuPattern, SparsePattern, SymbolicFactor};
+use nalgebra::{Matrix3, Vector3};
+
+pub(super) fn solve_case(
+    model: &Model,
+    elems: &[ElemData],
+    case: &LoadCase,
+    opts: &NonlinearOptions,
+) -> Result<NonlinearCase, FemError> {
+    model.validate_case(case)?;
+    let prescribed = prescribed_dofs(case);
+    let map = DofMap::new(model, &prescribed, Some(&case.name))?;
+    let nn = model.nodes.len();
+    let arm0: Vec<Vector3<f64>> = (0..nn)
+        .map(|n| Vector3::from(model.nodes[n]) - Vector3::from(model.nodes[map.rep[n]]))
+        .collect();
+    let mut f_ext = vec![0.0; 6 * nn];
+    for l in &case.forces {
+        for d in 0..6 {
+            f_ext[6 * l.node + d] += l.f[d];
+        }
+    }
+    let mut u_c = vec![0.0; 6 * nn];
+    for p in &case.displacements {
+        u_c[6 * p.node + p.dof.index()] = p.value;
+    }
+    let mut masters: Vec<usize> = model.rigid_links.iter().map(|l| l.master).collect();
+    masters.sort_unstable();
+    masters.dedup();
+    // Pattern: element pairs, master blocks, one diagonal slot per equation.
+    let n_eq = map.n_eq();
+    let pairs_of = |lower: bool| {
+        let mut pairs = Vec::new();
+        for e in elems {
+            let (nodes, nn_e) = match e {
+                ElemData::Corot { nodes, .. } => (*nodes, 2),
+                ElemData::Spring { nodes, n_nodes, .. } => (*nodes, *n_nodes),
+            };
+            let eqs = map.element_eqs([map.rep[nodes[0]], map.rep[nodes[1]]], nn_e);
+            for_each_pair_in(lower, &eqs, 6 * nn_e, |_, _, r, c| pairs.push((r, c)));
+        }
+        for &m in &masters {
+            let eqs = map.element_eqs([m, m], 1);
+            for_each_pair_in(lower, &eqs, 6, |_, _, r, c| pairs.push((r, c)));
+        }
+        pairs.extend((0..n_eq).map(|i| (i, i)));
+        pairs
+    };
+    let pairs = pairs_of(true);
+    let pattern = SparsePattern::new(n_eq, &pairs)?;
+    let symbolic = SymbolicFactor::new(&pattern)?;
+    // Moments applied at independent nodes, or forces on rigid-link slaves (a moment on the
+    // master): the tangent's skew part survives at equilibrium ([`Tangent`]).
+    let moments = (0..nn).any(|n| {
+        let f = &f_ext[6 * n..6 * n + 6];
+        f[3..].iter().any(|v| *v != 0.0) || (map.rep[n] != n && f[..3].iter().any(|v| *v != 0.0))
+    });
+    let full = match opts.tangent {
+        Tangent::Full => true,
+        Tangent::Symmetric => false,
+        Tangent::Auto => moments,
+    };
+    let full = if full {
+        Some(LuPattern::new(n_eq, &pairs_of(false))?)
+    } else {
+        None
+    };
+    let ctx = CaseCtx {
+        model,
+        elems,
+        map,
+        arm0,
+        f_ext,
+        u_c,
+        pattern,
+        symbolic,
+        lower_pairs: pairs,
+        mirror: std::cell::OnceCell::new(),
+        round: 1e-14
+            * elems
+                .iter()
+                .map(|e| match e {
+                    ElemData::Corot { geom, k_local, .. } => {
+                        let k = |i: usize| k_local[(i, i)].abs();
+                        (0..3).map(k).fold(0.0, f64::max) * geom.l0 + (3..6).map(k).fold(0.0, f64::max)
+                    }
+                    ElemData::Spring { k, .. } => k.iter().fold(0.0f64, |m, v| m.max(v.abs())),
+                })
+                .fold(0.0, f64::max),
+        full,
+        masters,
+        par: opts.parallelism,
+    };
+    let mut st = State {
+        u: vec![Vector3::zeros(); nn],
+        r: vec![Matrix3::identity(); nn],
+    };
+    let mut path = vec![PathPoint {
+        lambda: 0.0,
+        values: ctx.tracked(&st, &opts.track),
+        stable: true,
+        residuals: Vec::new(),
+    }];
+    let has_prescribed = ctx.u_c.iter().any(|&v| v != 0.0);
+    let mut stab = Stability::default();
+    let (iterations, steps, cuts, lambda) = if opts.arc_length {
+        if has_prescribed {
+            return Err(FemError::LoadCase {
+                case: case.name.clone(),
+                reason: "arc-length control needs a load-controlled case (no non-zero prescribed displacements)".into(),
+            });
+        }
+        arc_length(&ctx, &mut st, opts, &case.name, &mut path, &mut stab)?
+    } else {
+        load_control(&ctx, &mut st, 0.0, opts, &case.name, &mut path, 0, &mut stab)?
+    };
+    let mut out = finish(&ctx, &st, &case.name, lambda, path, iterations, steps, cuts)?;
+    out.stable = stab.bracket.is_none();
+    out.critical_load_factor = stab.bracket;
+    Ok(out)
+}

@@ -1,0 +1,253 @@
+//! Recovery of a converged state: displacements and rotation vectors, element end forces and
+//! stresses, reactions, and the final check of nodal and global equilibrium.
+
+use super::residual::norm;
+use super::state::{fail, CaseCtx, ElemData, State};
+use super::{NonlinearCase, PathPoint};
+use crate::fem::corot;
+use crate::fem::error::FemError;
+use crate::fem::recovery::CaseResult;
+use crate::fem::recovery::{self, ElementResult, Statics};
+use nalgebra::{SMatrix, Vector3, Vector6};
+
+pub(super) fn resultant(x: Vector3<f64>, f: &[f64]) -> [f64; 6] {
+    let fv = Vector3::new(f[0], f[1], f[2]);
+    let m = x.cross(&fv);
+    [f[0], f[1], f[2], m.x + f[3], m.y + f[4], m.z + f[5]]
+}
+
+#[allow(clippy::too_many_arguments)]
+pub(super) fn finish(
+    ctx: &CaseCtx,
+    st: &State,
+    name: &str,
+    lambda: f64,
+    path: Vec<PathPoint>,
+    iterations: usize,
+    steps: usize,
+    cuts: usize,
+) -> Result<NonlinearCase, FemError> {
+    let model = ctx.model;
+    let nn = model.nodes.len();
+    let arms = ctx.arms(st);
+    let mut f_int = vec![0.0; 6 * nn];
+    let mut elements = Vec::with_capacity(ctx.elems.len());
+    let mut frames = Vec::with_capacity(ctx.elems.len());
+    for (ie, e) in ctx.elems.iter().enumerate() {
+        match e {
+            ElemData::Corot { nodes, geom, k_local } => {
+                let r = corot::response(
+                    geom,
+                    k_local,
+                    &CaseCtx::node_state(st, nodes[0]),
+                    &CaseCtx::node_state(st, nodes[1]),
+                    false,
+                )
+                .ok_or_else(|| fail(name, steps, lambda, f64::NAN, format!("element {ie} degenerate")))?;
+                for s in 0..2 {
+                    for d in 0..6 {
+                        f_int[6 * nodes[s] + d] += r.f[6 * s + d];
+                    }
+                }
+                elements.push(recovery::from_local_end_forces(
+                    &model.elements[ie],
+                    r.f_local.as_slice(),
+                    0.5 * r.d_local.dot(&r.f_local),
+                ));
+                let rt = r.rr.transpose();
+                frames.push(std::array::from_fn(|i| std::array::from_fn(|j| rt[(i, j)])));
+            }
+            ElemData::Spring { nodes, n_nodes, b, k } => {
+                let (_, _, _, f) = ctx
+                    .element_response(st, ie, false)
+                    .ok_or_else(|| fail(name, steps, lambda, f64::NAN, format!("element {ie} degenerate")))?;
+                for s in 0..*n_nodes {
+                    for d in 0..6 {
+                        f_int[6 * nodes[s] + d] += f[6 * s + d];
+                    }
+                }
+                let mut dvec = SMatrix::<f64, 12, 1>::zeros();
+                for (s, &n) in nodes.iter().enumerate().take(*n_nodes) {
+                    let rv = corot::rot_log(&st.r[n]);
+                    for j in 0..3 {
+                        dvec[6 * s + j] = st.u[n][j];
+                        dvec[6 * s + 3 + j] = rv[j];
+                    }
+                }
+                let delta = **b * dvec;
+                let fs: [f64; 6] = std::array::from_fn(|i| k[i] * delta[i]);
+                let energy = 0.5 * (0..6).map(|i| k[i] * delta[i] * delta[i]).sum::<f64>();
+                let end_forces = if *n_nodes == 1 {
+                    [fs, [0.0; 6]]
+                } else {
+                    [fs.map(|v| -v), fs]
+                };
+                elements.push(ElementResult {
+                    end_forces,
+                    section_forces: [fs, fs],
+                    von_mises: None,
+                    strain_energy: energy,
+                    shell: None,
+                });
+                frames.push([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]);
+            }
+        }
+    }
+    let f_app: Vec<f64> = ctx.f_ext.iter().map(|v| v * lambda).collect();
+    let net: Vec<f64> = f_int.iter().zip(&f_app).map(|(a, b)| a - b).collect();
+    let gi = ctx.to_independent(&arms, &net);
+    let mut reactions: Vec<(usize, [f64; 6])> = Vec::new();
+    for &c in &ctx.map.constrained {
+        let node = c / 6;
+        if reactions.last().map(|r| r.0) != Some(node) {
+            reactions.push((node, [0.0; 6]));
+        }
+        if let Some(r) = reactions.last_mut() {
+            r.1[c % 6] = gi[c];
+        }
+    }
+    for (node, r) in reactions.iter_mut() {
+        if ctx.map.framed.contains(node) {
+            if let Some(t) = &ctx.map.arm[*node] {
+                let g = t * Vector6::from_column_slice(r);
+                *r = std::array::from_fn(|i| g[i]);
+            }
+        }
+    }
+    let pos = |n: usize| Vector3::from(model.nodes[n]) + st.u[n];
+    let mut statics = Statics {
+        loads: [0.0; 6],
+        reactions: [0.0; 6],
+    };
+    for n in 0..nn {
+        let v = resultant(pos(n), &f_app[6 * n..6 * n + 6]);
+        for (a, b) in statics.loads.iter_mut().zip(v) {
+            *a += b;
+        }
+    }
+    for (n, r) in &reactions {
+        let v = resultant(pos(*n), r);
+        for (a, b) in statics.reactions.iter_mut().zip(v) {
+            *a += b;
+        }
+    }
+    verify_equilibrium(ctx, st, name, steps, lambda, &f_int, &f_app, &gi, &reactions)?;
+    let max_von_mises = elements
+        .iter()
+        .filter_map(|e| e.max_von_mises())
+        .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
+    let displacements: Vec<[f64; 6]> = (0..nn)
+        .map(|n| {
+            let rv = corot::rot_log(&st.r[n]);
+            [st.u[n][0], st.u[n][1], st.u[n][2], rv[0], rv[1], rv[2]]
+        })
+        .collect();
+    let rotations =
+        st.r.iter()
+            .map(|r| std::array::from_fn(|i| std::array::from_fn(|j| r[(i, j)])))
+            .collect();
+    Ok(NonlinearCase {
+        fe: CaseResult {
+            name: name.to_string(),
+            displacements,
+            reactions,
+            elements,
+            max_von_mises,
+            statics,
+        },
+        rotations,
+        path,
+        iterations,
+        steps,
+        cuts,
+        stable: true,
+        critical_load_factor: None,
+        element_frames: frames,
+    })
+}
+
+/// Relative equilibrium bound of an accepted state (of the applied load; of the reactions
+/// when displacements are prescribed).
+pub(super) const EQUILIBRIUM_TOL: f64 = 1e-6;
+
+/// Checks the accepted state: (1) the unbalanced force and moment at every free equation
+/// (nodal equilibrium at the deformed positions, spins as rotational unknowns), and (2) the
+/// global statics — applied loads, reactions and spring forces (springs count as supports:
+/// their small-rotation moments are not objective) summed as forces and moments about the
+/// origin at the deformed positions — both within [`EQUILIBRIUM_TOL`] of the applied load
+/// (plus the reactions where displacements are prescribed), with a round-off allowance of
+/// 1e-11 of the summed element forces. Fails naming the step otherwise.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn verify_equilibrium(
+    ctx: &CaseCtx,
+    st: &State,
+    name: &str,
+    step: usize,
+    lambda: f64,
+    f_int: &[f64],
+    f_app: &[f64],
+    gi: &[f64],
+    reactions: &[(usize, [f64; 6])],
+) -> Result<(), FemError> {
+    let model = ctx.model;
+    let nn = model.nodes.len();
+    let pos = |n: usize| Vector3::from(model.nodes[n]) + st.u[n];
+    let prescribed = ctx.u_c.iter().any(|v| *v != 0.0);
+    // Spring forces on their nodes (to be moved to the "support" side of the balance).
+    let mut f_spring = vec![0.0; 6 * nn];
+    for (ie, e) in ctx.elems.iter().enumerate() {
+        if let ElemData::Spring { nodes, n_nodes, .. } = e {
+            if let Some((_, _, _, f)) = ctx.element_response(st, ie, false) {
+                for s in 0..*n_nodes {
+                    for d in 0..6 {
+                        f_spring[6 * nodes[s] + d] += f[6 * s + d];
+                    }
+                }
+            }
+        }
+    }
+    let (mut sum, mut scale_f, mut scale_m) = ([0.0; 6], 0.0, 0.0);
+    let mut add = |x: Vector3<f64>, f: &[f64], sign: f64, counts: bool| {
+        let v = resultant(x, f);
+        for (a, b) in sum.iter_mut().zip(v) {
+            *a += sign * b;
+        }
+        if counts {
+            let fv = Vector3::new(f[0], f[1], f[2]);
+            scale_f += fv.norm();
+            scale_m += Vector3::new(f[3], f[4], f[5]).norm();
+        }
+    };
+    for n in 0..nn {
+        add(pos(n), &f_app[6 * n..6 * n + 6], 1.0, true);
+        add(pos(n), &f_spring[6 * n..6 * n + 6], -1.0, false);
+    }
+    for (n, r) in reactions {
+        add(pos(*n), r, 1.0, prescribed);
+    }
+    let internal: f64 = f_int.iter().map(|v| v.abs()).sum();
+    let arms = ctx.arms(st);
+    let fi = norm(&ctx.to_independent(&arms, f_int));
+    let residual: Vec<f64> = ctx.map.eq_dof.iter().map(|&g| gi[g]).collect();
+    let rn = norm(&residual);
+    let round = ctx.round + 1e-13 * internal;
+    let nodal_ok = rn <= EQUILIBRIUM_TOL * norm(f_app).max(fi) + round;
+    let fsum = Vector3::new(sum[0], sum[1], sum[2]).norm();
+    let msum = Vector3::new(sum[3], sum[4], sum[5]).norm();
+    // Moments about the origin: forces act on levers up to the model's extent from it.
+    let lever = (0..nn).map(|n| pos(n).norm()).fold(0.0, f64::max).max(1.0);
+    let force_ok = fsum <= EQUILIBRIUM_TOL * scale_f + round;
+    let moment_ok = msum <= EQUILIBRIUM_TOL * (scale_m + lever * scale_f) + round * lever;
+    if nodal_ok && force_ok && moment_ok {
+        return Ok(());
+    }
+    Err(fail(
+        name,
+        step,
+        lambda,
+        rn,
+        format!(
+            "the accepted state is not in equilibrium: unbalanced force {fsum:.3e} N and moment {msum:.3e} N·mm (statics at the deformed positions, against applied loads of {scale_f:.3e} N); nodal residual {rn:.3e}"
+        ),
+    ))
+}

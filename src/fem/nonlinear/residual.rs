@@ -1,0 +1,265 @@
+//! Residual and tangent at a configuration: co-rotational element responses, assembly of the
+//! reduced residual and the symmetric or full tangent, and the linear solves (Cholesky, LU).
+
+use super::state::{Assemble, CaseCtx, ElemData, Eval, Solution, State};
+use crate::fem::constraints::{frame_block, NONE};
+use crate::fem::corot;
+use crate::fem::dof::NodeDof;
+use crate::fem::solve::{Factor, LuPattern};
+use crate::fem::transform::{skew, Mat12};
+use nalgebra::{Matrix3, Matrix6, SMatrix, Vector3, Vector6};
+
+impl CaseCtx<'_> {
+    /// Element internal forces (global, on its nodes) and tangents.
+    pub(super) fn element_response(
+        &self,
+        st: &State,
+        ie: usize,
+        tangent: bool,
+    ) -> Option<([usize; 2], usize, Mat12, [f64; 12])> {
+        match &self.elems[ie] {
+            ElemData::Corot { nodes, geom, k_local } => {
+                let r = corot::response(
+                    geom,
+                    k_local,
+                    &Self::node_state(st, nodes[0]),
+                    &Self::node_state(st, nodes[1]),
+                    tangent,
+                )?;
+                Some((*nodes, 2, r.k, std::array::from_fn(|i| r.f[i])))
+            }
+            ElemData::Spring { nodes, n_nodes, b, k } => {
+                let mut d = SMatrix::<f64, 12, 1>::zeros();
+                for (s, &n) in nodes.iter().enumerate().take(*n_nodes) {
+                    let rv = corot::rot_log(&st.r[n]);
+                    for j in 0..3 {
+                        d[6 * s + j] = st.u[n][j];
+                        d[6 * s + 3 + j] = rv[j];
+                    }
+                }
+                let kd = Matrix6::from_diagonal(&Vector6::from(*k));
+                let km = b.transpose() * kd * **b;
+                let f = km * d;
+                Some((*nodes, *n_nodes, km, std::array::from_fn(|i| f[i])))
+            }
+        }
+    }
+
+    /// The tangent the Newton iterations use.
+    pub(super) fn newton_tangent(&self) -> Assemble {
+        if self.full.is_some() {
+            Assemble::Full
+        } else {
+            Assemble::Symmetric
+        }
+    }
+
+    /// Residual, tangent and force norms at load factor `lambda`.
+    pub(super) fn evaluate(&self, st: &State, lambda: f64, mode: Assemble) -> Option<Eval> {
+        let tangent = mode != Assemble::None;
+        let sym = mode == Assemble::Symmetric;
+        let nn = self.model.nodes.len();
+        let arms = self.arms(st);
+        let mut f_int = vec![0.0; 6 * nn];
+        let mut mats = Vec::with_capacity(self.elems.len());
+        for ie in 0..self.elems.len() {
+            let (nodes, n_nodes, k, f) = self.element_response(st, ie, tangent)?;
+            for s in 0..n_nodes {
+                for d in 0..6 {
+                    f_int[6 * nodes[s] + d] += f[6 * s + d];
+                }
+            }
+            mats.push((nodes, n_nodes, k));
+        }
+        let net: Vec<f64> = f_int.iter().zip(&self.f_ext).map(|(a, b)| a - lambda * b).collect();
+        let net_i = self.to_independent(&arms, &net);
+        let r: Vec<f64> = self.map.eq_dof.iter().map(|&g| net_i[g]).collect();
+        let fi = self.to_independent(&arms, &f_int);
+        let fe = self.to_independent(&arms, &self.f_ext);
+        let (internal, load) = (norm(&fi), lambda.abs() * norm(&fe));
+        if r.iter().any(|v| !v.is_finite()) {
+            return None;
+        }
+        let mut values = Vec::with_capacity(self.pattern.n_triplets());
+        if tangent {
+            for (nodes, n_nodes, k) in &mats {
+                let mut t = Mat12::identity();
+                let mut any = false;
+                for s in 0..*n_nodes {
+                    if let Some(a) = &arms[nodes[s]] {
+                        t.fixed_view_mut::<6, 6>(6 * s, 6 * s).copy_from(a);
+                        any = true;
+                    }
+                }
+                let ks = if sym { (k + k.transpose()) * 0.5 } else { *k };
+                let kp = if any { t.transpose() * ks * t } else { ks };
+                let reps = [self.map.rep[nodes[0]], self.map.rep[nodes[1]]];
+                let eqs = self.map.element_eqs(reps, *n_nodes);
+                for_each_pair_in(sym, &eqs, 6 * n_nodes, |a, b, _, _| values.push(kp[(a, b)]));
+            }
+            // Rigid links: δ(a × F_s) = [F_s×][a×] δw_m (a = R_m a₀), symmetrised for Cholesky.
+            for &m in &self.masters {
+                let mut g = Matrix3::zeros();
+                for n in 0..nn {
+                    if self.map.rep[n] == m && n != m {
+                        let fs = Vector3::new(net[6 * n], net[6 * n + 1], net[6 * n + 2]);
+                        let a = st.r[m] * self.arm0[n];
+                        g += skew(&fs) * skew(&a);
+                    }
+                }
+                let mut g6 = Matrix6::zeros();
+                let gs = if sym { (g + g.transpose()) * 0.5 } else { g };
+                g6.fixed_view_mut::<3, 3>(3, 3).copy_from(&gs);
+                if let Some(f) = self.model.frames.get(&m) {
+                    let fb = frame_block(f);
+                    g6 = fb.transpose() * g6 * fb;
+                }
+                let mut k12 = Mat12::zeros();
+                k12.fixed_view_mut::<6, 6>(0, 0).copy_from(&g6);
+                let eqs = self.map.element_eqs([m, m], 1);
+                for_each_pair_in(sym, &eqs, 6, |a, b, _, _| values.push(k12[(a, b)]));
+            }
+            values.resize(values.len() + self.n_eq(), 0.0);
+            if values.iter().any(|v| !v.is_finite()) {
+                return None;
+            }
+        }
+        Some(Eval {
+            r,
+            values,
+            load,
+            internal,
+        })
+    }
+
+    /// Solves K x = b for several right-hand sides with the tangent of [`Self::evaluate`] in
+    /// the Newton mode: the full tangent by sparse LU, or the symmetric one by sparse Cholesky
+    /// and, when that is not positive definite (past a limit point, near a bifurcation), by
+    /// sparse LU.
+    pub(super) fn solve(&self, values: &[f64], rhs: &[Vec<f64>]) -> Result<Solution, String> {
+        let n = self.n_eq();
+        let mut buf: Vec<f64> = rhs.iter().flatten().copied().collect();
+        let split = |buf: Vec<f64>| buf.chunks(n.max(1)).map(|c| c.to_vec()).collect::<Vec<_>>();
+        if let Some(full) = &self.full {
+            full.solve_in_place(values, &mut buf, rhs.len(), self.par)
+                .map_err(|e| format!("tangent stiffness: {e}"))?;
+            return Ok(Solution {
+                x: split(buf),
+                positive_definite: None,
+            });
+        }
+        if let Some(f) = self.cholesky(values)? {
+            f.solve_in_place(&mut buf, rhs.len()).map_err(|e| e.to_string())?;
+            return Ok(Solution {
+                x: split(buf),
+                positive_definite: Some(true),
+            });
+        }
+        let mirror = self
+            .mirror
+            .get_or_init(|| LuPattern::from_lower(n, &self.lower_pairs).map_err(|e| e.to_string()))
+            .as_ref()
+            .map_err(|e| e.clone())?;
+        let vals = LuPattern::mirror_values(&self.lower_pairs, values);
+        mirror
+            .solve_in_place(&vals, &mut buf, rhs.len(), self.par)
+            .map_err(|e| format!("tangent stiffness is singular: {e}"))?;
+        Ok(Solution {
+            x: split(buf),
+            positive_definite: Some(false),
+        })
+    }
+
+    /// Cholesky factor of the symmetric tangent (lower values), `None` when it is not
+    /// positive definite (a pivot at or below [`crate::fem::analysis::PIVOT_TOL`] of its diagonal).
+    pub(super) fn cholesky(&self, values: &[f64]) -> Result<Option<Factor>, String> {
+        let k = self.pattern.matrix(values).map_err(|e| e.to_string())?;
+        let Ok(f) = Factor::new(&self.symbolic, &k, self.par) else {
+            return Ok(None);
+        };
+        let diag = k.diagonal();
+        let ok = f
+            .pivots()
+            .iter()
+            .zip(&diag)
+            .all(|(p, d)| p.is_finite() && *p > crate::fem::analysis::PIVOT_TOL * d);
+        Ok(ok.then_some(f))
+    }
+
+    /// Whether the symmetric tangent at `st` is positive definite.
+    pub(super) fn positive_definite(&self, st: &State, lambda: f64) -> bool {
+        self.evaluate(st, lambda, Assemble::Symmetric)
+            .and_then(|ev| self.cholesky(&ev.values).ok())
+            .is_some_and(|f| f.is_some())
+    }
+
+    pub(super) fn tracked(&self, st: &State, track: &[NodeDof]) -> Vec<f64> {
+        track
+            .iter()
+            .map(|nd| {
+                let i = nd.dof.index();
+                if nd.node >= st.u.len() {
+                    f64::NAN
+                } else if i < 3 {
+                    st.u[nd.node][i]
+                } else {
+                    corot::rot_log(&st.r[nd.node])[i - 3]
+                }
+            })
+            .collect()
+    }
+}
+
+/// Euclidean norm, scaled by the largest entry so that it neither overflows (entries beyond
+/// ~1e154 would square to ∞ and make every convergence test pass as ∞ ≤ ∞) nor underflows.
+pub(super) fn norm(v: &[f64]) -> f64 {
+    let m = v.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    if m == 0.0 || !m.is_finite() {
+        return m;
+    }
+    m * v.iter().map(|x| (x / m) * (x / m)).sum::<f64>().sqrt()
+}
+
+pub(super) fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// Same pair order as [`crate::fem::assembly`]: lower-triangle pairs of free DOFs, a-major.
+#[inline]
+pub(super) fn for_each_pair(eqs: &[usize; 12], n: usize, mut f: impl FnMut(usize, usize, usize, usize)) {
+    for a in 0..n {
+        let ea = eqs[a];
+        if ea == NONE {
+            continue;
+        }
+        for (b, &eb) in eqs.iter().enumerate().take(n) {
+            if eb != NONE && ea >= eb {
+                f(a, b, ea, eb);
+            }
+        }
+    }
+}
+
+/// [`for_each_pair`] (`lower`) or every pair of free DOFs (the full non-symmetric pattern).
+#[inline]
+pub(super) fn for_each_pair_in(
+    lower: bool,
+    eqs: &[usize; 12],
+    n: usize,
+    mut f: impl FnMut(usize, usize, usize, usize),
+) {
+    if lower {
+        return for_each_pair(eqs, n, f);
+    }
+    for a in 0..n {
+        let ea = eqs[a];
+        if ea == NONE {
+            continue;
+        }
+        for (b, &eb) in eqs.iter().enumerate().take(n) {
+            if eb != NONE {
+                f(a, b, ea, eb);
+            }
+        }
+    }
+}

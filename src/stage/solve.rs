@@ -1,0 +1,127 @@
+//! Linear solves of the stage: load cases by drive kind (one factorisation each, reused across
+//! stages of the same topology on a thread), the platform compliance, the z stiffness.
+
+use super::*;
+use crate::fem::{self, Dof, Model};
+use nalgebra::Matrix6;
+
+impl StageModel {
+    /// An FE load case for a drive.
+    pub fn load_case(&self, name: &str, drive: Drive) -> fem::LoadCase {
+        let mut lc = fem::LoadCase::new(name);
+        for (i, leg) in self.legs.iter().enumerate() {
+            match drive {
+                Drive::Forces(f) => {
+                    let v = leg.e * f[i];
+                    lc = lc.force(leg.slider, [v[0], v[1], v[2], 0.0, 0.0, 0.0]);
+                }
+                Drive::Strokes(s) => lc = lc.displacement(leg.slider, Dof::Ux, s[i]),
+            }
+        }
+        lc
+    }
+
+    /// Solves load cases (grouped by drive kind so each group shares one factorisation).
+    pub fn solve(&self, cases: &[(String, Drive)]) -> Result<Vec<StageCaseResult>, StageError> {
+        Ok(self.analyse(cases, false)?.cases)
+    }
+
+    /// Slider stroke DOFs (local ux of each slider frame), sorted.
+    pub(super) fn stroke_dofs(&self) -> Vec<fem::NodeDof> {
+        let mut v: Vec<fem::NodeDof> = self
+            .legs
+            .iter()
+            .map(|l| fem::NodeDof {
+                node: l.slider,
+                dof: Dof::Ux,
+            })
+            .collect();
+        v.sort();
+        v
+    }
+
+    /// Solves load cases and, if asked, the 6×6 compliance of the platform centre with the
+    /// sliders held. Force-driven cases share one factorisation, stroke-driven cases (and the
+    /// compliance) another. Within a thread the pattern and symbolic factorisation of the last
+    /// stage of the same topology are reused (sweeps and the design loop refactor numerically
+    /// only).
+    pub fn analyse(&self, cases: &[(String, Drive)], compliance: bool) -> Result<StageAnalysis, StageError> {
+        let model = &self.model;
+        let mut out: Vec<Option<StageCaseResult>> = vec![None; cases.len()];
+        let lcs: Vec<fem::LoadCase> = cases.iter().map(|(n, d)| self.load_case(n, *d)).collect();
+        let mut platform_compliance = None;
+        for strokes in [false, true] {
+            let idx: Vec<usize> = (0..cases.len())
+                .filter(|&i| matches!(cases[i].1, Drive::Strokes(_)) == strokes)
+                .collect();
+            if idx.is_empty() && !(strokes && compliance) {
+                continue;
+            }
+            let prescribed = if strokes { self.stroke_dofs() } else { Vec::new() };
+            let sys = cached_system(model, &prescribed, usize::from(strokes))?;
+            let refs: Vec<&fem::LoadCase> = idx.iter().map(|&i| &lcs[i]).collect();
+            let res = sys.solve_cases(model, &refs)?;
+            for (&i, r) in idx.iter().zip(res) {
+                out[i] = Some(self.read(r, cases[i].1));
+            }
+            if strokes && compliance {
+                platform_compliance = Some(sys.node_compliance(model, self.platform)?);
+            }
+        }
+        Ok(StageAnalysis {
+            cases: out.into_iter().flatten().collect(),
+            compliance: platform_compliance,
+        })
+    }
+}
+
+/// Results of [`StageModel::analyse`].
+#[derive(Debug, Clone)]
+pub struct StageAnalysis {
+    /// Load-case results in input order.
+    pub cases: Vec<StageCaseResult>,
+    /// Platform-centre compliance with the sliders held, if asked.
+    pub compliance: Option<Matrix6<f64>>,
+}
+
+thread_local! {
+    /// The last factorised stage system of this thread, per drive kind (forces, strokes).
+    static LAST: std::cell::RefCell<[Option<fem::System>; 2]> = const { std::cell::RefCell::new([None, None]) };
+}
+
+/// A factorised system for `model`, reusing the pattern and symbolic factorisation of the last
+/// system of the same kind on this thread when the topology matches.
+pub(super) fn cached_system(
+    model: &Model,
+    prescribed: &[fem::NodeDof],
+    kind: usize,
+) -> Result<fem::System, StageError> {
+    let par = fem::solve::Parallelism::Sequential;
+    let reused = LAST.with(|c| {
+        c.borrow()[kind]
+            .as_ref()
+            .filter(|s| s.prescribed() == prescribed)
+            .and_then(|s| fem::System::with_topology_of(s, model, par).ok())
+    });
+    let sys = match reused {
+        Some(s) => s,
+        None => fem::System::new(model, prescribed, par)?,
+    };
+    LAST.with(|c| c.borrow_mut()[kind] = Some(sys.clone()));
+    Ok(sys)
+}
+
+/// Total actuator force per mm of stroke for a pure-z motion, N/mm: the sum of the actuator
+/// forces when every stroke follows the linearised IKP of a unit z lift.
+pub fn stiffness_z(stage: &StageModel) -> Result<(f64, StageCaseResult), StageError> {
+    let j = stage
+        .design
+        .prs
+        .actuation_jacobian(0.0, 0.0, 0.0)
+        .map_err(|e| geometry_err("L", e.to_string()))?;
+    let s = [j[(0, 0)], j[(1, 0)], j[(2, 0)]];
+    let mut r = stage.solve(&[("unit_z".to_string(), Drive::Strokes(s))])?;
+    let r = r.remove(0);
+    let total: f64 = r.forces.iter().sum();
+    Ok((total / (s.iter().sum::<f64>() / 3.0), r))
+}

@@ -1,0 +1,346 @@
+//! Layering of the source tree, checked by parsing the `crate::`, `super::` and `self::` paths
+//! (in `use` declarations and inline) of every file in `src/` outside `#[cfg(test)]` modules.
+//!
+//! The layers, top to bottom — a module may import only from its own layer or below:
+//!
+//! ```text
+//! cli, main                      command line
+//! analysis                       validated case → typed result → JSON/Markdown/CSV views
+//! case                           case files → validated inputs (the only place with JSON paths)
+//! design                         sweep tables and plots (and the sweep driver, see ALLOWED)
+//! stage                          the 3-PRS stage FE model, its sizing and sensitivities
+//! hinge, kinematics              flexure-hinge models, parallel kinematics
+//! fem                            the finite-element core
+//! material, report, output       material data, report writers (numbers, SVG, VTK), output files
+//! ```
+//!
+//! In particular `fem`, `hinge`, `kinematics`, `material` and `report` import none of
+//! `analysis`, `cli`, `case`, `design`, `stage`; `case` imports none of `analysis`, `cli`,
+//! `design`. Also, no two files import each other (directly or through a longer cycle), so the
+//! data flows one way. Module façades (`lib.rs`, `*/mod.rs`, which re-export their children's
+//! items) are left out of the file-cycle check: a child naming an item through its parent's
+//! re-export is not a cycle of ideas.
+//!
+//! Known violations that are not yet fixed are listed in [`ALLOWED`] with the reason; the test
+//! fails on any violation not listed there, and on a listed one that no longer occurs (so the
+//! list shrinks as they are fixed).
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+/// Rank of each top-level module: a module may import only modules of equal or lower rank.
+const LAYERS: &[(&str, u32)] = &[
+    ("main", 90),
+    ("cli", 90),
+    ("analysis", 80),
+    ("case", 70),
+    ("design", 60),
+    ("stage", 50),
+    ("hinge", 40),
+    ("kinematics", 40),
+    ("fem", 30),
+    ("material", 10),
+    ("report", 10),
+    ("output", 10),
+];
+
+/// Imports forbidden beyond the ranks: `design` holds the sweep driver (command-line level), so
+/// `case` must not depend on it.
+const FORBIDDEN: &[(&str, &str)] = &[("case", "design")];
+
+/// Violations known and not yet fixed: (importing file, imported top-level module or file,
+/// reason). Each entry must still occur; remove it when it is fixed.
+const ALLOWED: &[(&str, &str, &str)] = &[
+    (
+        "src/design/sweep.rs",
+        "analysis",
+        "the sweep's command-line half (runs each design through the analysis, resume store, \
+         CSV) lives in design/sweep.rs; it belongs with the CLI (cli/), a move that turns cli.rs \
+         into a directory and must keep the public path flexfem::design::sweep used by tests",
+    ),
+    (
+        "src/design/sweep.rs",
+        "case",
+        "as above: the sweep driver reads and rewrites case files",
+    ),
+];
+
+fn rank(module: &str) -> u32 {
+    LAYERS
+        .iter()
+        .find(|(m, _)| *m == module)
+        .map(|(_, r)| *r)
+        .unwrap_or_else(|| panic!("module `{module}` has no layer: add it to LAYERS in tests/layering.rs"))
+}
+
+fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    for entry in std::fs::read_dir(dir).expect("readable src/") {
+        let path = entry.expect("readable entry").path();
+        if path.is_dir() {
+            rust_files(&path, out);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            out.push(path);
+        }
+    }
+}
+
+/// Module path of a source file relative to `src/`: `fem/nonlinear/mod.rs` → `[fem, nonlinear]`,
+/// `cli.rs` → `[cli]`, `lib.rs` → `[]`.
+fn module_of(rel: &str) -> Vec<String> {
+    let mut parts: Vec<String> = rel.trim_end_matches(".rs").split('/').map(str::to_string).collect();
+    if matches!(parts.last().map(String::as_str), Some("mod" | "lib")) {
+        parts.pop();
+    }
+    parts
+}
+
+fn is_facade(rel: &str) -> bool {
+    rel == "lib.rs" || rel.ends_with("/mod.rs") || rel == "mod.rs"
+}
+
+/// The code of a file without comments, string literals and `#[cfg(test)]` modules.
+fn code_of(text: &str) -> String {
+    let mut out = String::new();
+    let mut skip_depth: Option<i64> = None;
+    let mut depth: i64 = 0;
+    let mut pending_cfg_test = false;
+    for line in text.lines() {
+        let trimmed = line.trim_start();
+        if trimmed.starts_with("//") {
+            continue;
+        }
+        // Drop string literals (paths in messages are not imports) and trailing comments.
+        let mut clean = String::new();
+        let mut in_str = false;
+        let mut prev = ' ';
+        let chars: Vec<char> = line.chars().collect();
+        let mut i = 0;
+        while i < chars.len() {
+            let c = chars[i];
+            if !in_str && c == '/' && chars.get(i + 1) == Some(&'/') {
+                break;
+            }
+            if c == '"' && prev != '\\' && !(prev == '\'' && chars.get(i + 1) == Some(&'\'')) {
+                in_str = !in_str;
+            } else if !in_str {
+                clean.push(c);
+            }
+            prev = if prev == '\\' && c == '\\' { ' ' } else { c };
+            i += 1;
+        }
+        if trimmed.starts_with("#[cfg(test)]") {
+            pending_cfg_test = true;
+            continue;
+        }
+        if pending_cfg_test && trimmed.starts_with("mod ") && skip_depth.is_none() {
+            skip_depth = Some(depth);
+        }
+        pending_cfg_test = false;
+        depth += clean.matches('{').count() as i64 - clean.matches('}').count() as i64;
+        if let Some(d) = skip_depth {
+            if depth <= d {
+                skip_depth = None;
+            }
+            continue;
+        }
+        out.push_str(&clean);
+        out.push('\n');
+    }
+    out
+}
+
+/// `a::{b as c, d}` → `a::{b, d}`: the renames of a `use` tree dropped.
+fn drop_renames(tree: &str) -> String {
+    let mut out = String::new();
+    let mut words = tree.split_whitespace();
+    while let Some(w) = words.next() {
+        if w == "as" {
+            // Keep only the punctuation that follows the new name (`_F},` → `},`).
+            let next = words.next().unwrap_or("");
+            out.extend(next.chars().filter(|c| !(c.is_alphanumeric() || *c == '_')));
+        } else {
+            out.push_str(w);
+        }
+    }
+    out
+}
+
+/// Expands `a::{b, c::{d, e}}` into `a::b`, `a::c::d`, `a::c::e`.
+fn expand(tree: &str) -> Vec<String> {
+    let tree: String = tree.chars().filter(|c| !c.is_whitespace()).collect();
+    let Some(open) = tree.find('{') else {
+        return vec![tree];
+    };
+    let prefix = &tree[..open];
+    let inner = &tree[open + 1..tree.len().saturating_sub(1)];
+    let mut parts = Vec::new();
+    let (mut level, mut start) = (0, 0);
+    for (i, c) in inner.char_indices() {
+        match c {
+            '{' => level += 1,
+            '}' => level -= 1,
+            ',' if level == 0 => {
+                parts.push(&inner[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(&inner[start..]);
+    parts
+        .into_iter()
+        .filter(|p| !p.is_empty())
+        .flat_map(|p| expand(p).into_iter().map(move |e| format!("{prefix}{e}")))
+        .collect()
+}
+
+/// Absolute module paths (segments after `crate`) named by a file.
+fn imported_paths(code: &str, module: &[String]) -> Vec<Vec<String>> {
+    let mut raw = Vec::new();
+    // `use` declarations, with their brace groups expanded.
+    for stmt in code.split(';') {
+        let at = stmt
+            .match_indices("use ")
+            .map(|(i, _)| i)
+            .filter(|&i| {
+                stmt[..i]
+                    .chars()
+                    .last()
+                    .is_none_or(|c| c.is_whitespace() || c == '{' || c == '}' || c == ')')
+            })
+            .last();
+        if let Some(i) = at {
+            raw.extend(expand(&drop_renames(&stmt[i + 4..])));
+        }
+    }
+    // Inline paths such as `crate::fem::Model::new`.
+    for start in ["crate::", "super::"] {
+        let mut from = 0;
+        while let Some(i) = code[from..].find(start).map(|k| k + from) {
+            let before = code[..i].chars().last();
+            from = i + start.len();
+            if before.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == ':') {
+                continue;
+            }
+            let end = code[i..]
+                .find(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':'))
+                .map_or(code.len(), |k| k + i);
+            raw.push(code[i..end].to_string());
+        }
+    }
+    // `super` in a file names its module's parent (for `fem/mod.rs`, the crate root).
+    let parent: Vec<String> = module[..module.len().saturating_sub(1)].to_vec();
+    let mut out = Vec::new();
+    for r in raw {
+        let segs: Vec<&str> = r.split("::").filter(|s| !s.is_empty()).collect();
+        let abs: Vec<String> = match segs.first() {
+            Some(&"crate") => segs[1..].iter().map(|s| s.to_string()).collect(),
+            Some(&"super") => {
+                let mut base = parent.clone();
+                let mut rest = &segs[1..];
+                while rest.first() == Some(&"super") {
+                    base.pop();
+                    rest = &rest[1..];
+                }
+                base.extend(rest.iter().map(|s| s.to_string()));
+                base
+            }
+            Some(&"self") => {
+                let mut base = module.to_vec();
+                base.extend(segs[1..].iter().map(|s| s.to_string()));
+                base
+            }
+            _ => continue,
+        };
+        if !abs.is_empty() && abs[0] != "*" {
+            out.push(abs);
+        }
+    }
+    out
+}
+
+/// The file (relative to `src/`) a module path resolves to: the longest prefix that is a file.
+fn file_of(path: &[String], files: &BTreeSet<String>) -> Option<String> {
+    for n in (1..=path.len()).rev() {
+        let p = path[..n].join("/");
+        for cand in [format!("{p}.rs"), format!("{p}/mod.rs")] {
+            if files.contains(&cand) {
+                return Some(cand);
+            }
+        }
+    }
+    None
+}
+
+#[test]
+fn imports_follow_the_layers_and_files_form_no_cycle() {
+    let src = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut paths = Vec::new();
+    rust_files(&src, &mut paths);
+    let rels: BTreeSet<String> = paths
+        .iter()
+        .map(|p| p.strip_prefix(&src).unwrap().to_string_lossy().replace('\\', "/"))
+        .collect();
+    assert!(rels.len() > 50, "expected the source tree, found {} files", rels.len());
+
+    let mut violations: BTreeSet<(String, String)> = BTreeSet::new();
+    let mut edges: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    for rel in &rels {
+        let text = std::fs::read_to_string(src.join(rel)).expect("readable source");
+        let module = module_of(rel);
+        let code = code_of(&text);
+        let Some(top) = module.first() else { continue };
+        for path in imported_paths(&code, &module) {
+            let target = &path[0];
+            let upward = LAYERS.iter().any(|(m, _)| m == target) && target != top && rank(target) > rank(top);
+            if upward || FORBIDDEN.contains(&(top.as_str(), target.as_str())) {
+                violations.insert((format!("src/{rel}"), target.clone()));
+            }
+            if let Some(file) = file_of(&path, &rels) {
+                if &file != rel && !is_facade(&file) && !is_facade(rel) {
+                    edges.entry(rel.clone()).or_default().insert(file);
+                }
+            }
+        }
+    }
+
+    // File cycles: every strongly connected pair reachable both ways.
+    let reach = |from: &str| -> BTreeSet<String> {
+        let mut seen = BTreeSet::new();
+        let mut stack = vec![from.to_string()];
+        while let Some(f) = stack.pop() {
+            for g in edges.get(&f).into_iter().flatten() {
+                if seen.insert(g.clone()) {
+                    stack.push(g.clone());
+                }
+            }
+        }
+        seen
+    };
+    for a in edges.keys() {
+        for b in reach(a) {
+            if a < &b && reach(&b).contains(a) {
+                violations.insert((format!("src/{a}"), format!("src/{b} (cycle)")));
+            }
+        }
+    }
+
+    let allowed: BTreeSet<(String, String)> = ALLOWED.iter().map(|(f, t, _)| (f.to_string(), t.to_string())).collect();
+    let new: Vec<_> = violations.difference(&allowed).collect();
+    let fixed: Vec<_> = allowed.difference(&violations).collect();
+    assert!(
+        new.is_empty() && fixed.is_empty(),
+        "layering (see the doc comment of tests/layering.rs):\n\
+         new violations (file → module it must not import, or a file cycle):\n{}\n\
+         allowed violations that no longer occur (remove them from ALLOWED):\n{}",
+        new.iter()
+            .map(|(f, t)| format!("  {f} → {t}"))
+            .collect::<Vec<_>>()
+            .join("\n"),
+        fixed
+            .iter()
+            .map(|(f, t)| format!("  {f} → {t}"))
+            .collect::<Vec<_>>()
+            .join("\n"),
+    );
+}
