@@ -277,12 +277,10 @@ pub struct CaseResult {
     pub statics: Statics,
 }
 
-/// Builds the [`CaseResult`] from the full displacement vector `u` and the applied load
-/// vector `f` (6 per node). Reactions r = Aᵀ(K u − f) at constrained DOFs.
-pub fn case_result(model: &Model, map: &DofMap, name: &str, u: &[f64], f: &[f64]) -> Result<CaseResult, FemError> {
-    let p = internal_forces(model, u)?;
-    let g: Vec<f64> = p.iter().zip(f).map(|(a, b)| a - b).collect();
-    let gi = map.to_independent(&g);
+/// Reactions per constrained node from the out-of-balance forces `gi` in independent (node-frame)
+/// components: [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)], rotated to global axes at framed nodes.
+/// Shared by the linear and the nonlinear recovery.
+pub(crate) fn reactions_at(map: &DofMap, gi: &[f64]) -> Vec<(usize, [f64; 6])> {
     let mut reactions: Vec<(usize, [f64; 6])> = Vec::new();
     for &c in &map.constrained {
         let node = c / 6;
@@ -302,6 +300,15 @@ pub fn case_result(model: &Model, map: &DofMap, name: &str, u: &[f64], f: &[f64]
             }
         }
     }
+    reactions
+}
+
+/// Builds the [`CaseResult`] from the full displacement vector `u` and the applied load
+/// vector `f` (6 per node). Reactions r = Aᵀ(K u − f) at constrained DOFs.
+pub fn case_result(model: &Model, map: &DofMap, name: &str, u: &[f64], f: &[f64]) -> Result<CaseResult, FemError> {
+    let p = internal_forces(model, u)?;
+    let g: Vec<f64> = p.iter().zip(f).map(|(a, b)| a - b).collect();
+    let reactions = reactions_at(map, &map.to_independent(&g));
     let mut statics = Statics {
         loads: [0.0; 6],
         reactions: [0.0; 6],

@@ -8,7 +8,7 @@ use crate::fem::corot;
 use crate::fem::error::FemError;
 use crate::fem::recovery::CaseResult;
 use crate::fem::recovery::{self, ElementResult, Statics};
-use nalgebra::{SMatrix, Vector3, Vector6};
+use nalgebra::{SMatrix, Vector3};
 
 pub(super) fn resultant(x: Vector3<f64>, f: &[f64]) -> [f64; 6] {
     let fv = Vector3::new(f[0], f[1], f[2]);
@@ -96,24 +96,7 @@ pub(super) fn finish(
     let f_app: Vec<f64> = ctx.f_ext.iter().map(|v| v * lambda).collect();
     let net: Vec<f64> = f_int.iter().zip(&f_app).map(|(a, b)| a - b).collect();
     let gi = ctx.to_independent(&arms, &net);
-    let mut reactions: Vec<(usize, [f64; 6])> = Vec::new();
-    for &c in &ctx.map.constrained {
-        let node = c / 6;
-        if reactions.last().map(|r| r.0) != Some(node) {
-            reactions.push((node, [0.0; 6]));
-        }
-        if let Some(r) = reactions.last_mut() {
-            r.1[c % 6] = gi[c];
-        }
-    }
-    for (node, r) in reactions.iter_mut() {
-        if ctx.map.framed.contains(node) {
-            if let Some(t) = &ctx.map.arm[*node] {
-                let g = t * Vector6::from_column_slice(r);
-                *r = std::array::from_fn(|i| g[i]);
-            }
-        }
-    }
+    let reactions = crate::fem::recovery::reactions_at(&ctx.map, &gi);
     let pos = |n: usize| Vector3::from(model.nodes[n]) + st.u[n];
     let mut statics = Statics {
         loads: [0.0; 6],
