@@ -42,24 +42,6 @@ fn sorted_lines(text: &str) -> Vec<String> {
     v
 }
 
-/// The `N designs, M already done, K run, F failed` numbers of the stderr summary.
-fn summary(o: &Output) -> [usize; 4] {
-    let err = stderr(o);
-    let line = err
-        .lines()
-        .find(|l| l.starts_with("sweep: "))
-        .unwrap_or_else(|| panic!("no summary in stderr: {err}"));
-    let num = |marker: &str| -> usize {
-        let end = line
-            .find(marker)
-            .unwrap_or_else(|| panic!("`{marker}` missing in {line}"));
-        let head = &line[..end];
-        let start = head.rfind(|c: char| !c.is_ascii_digit()).map_or(0, |p| p + 1);
-        head[start..].parse().unwrap()
-    };
-    [num(" designs"), num(" already done"), num(" run"), num(" failed")]
-}
-
 fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
     let p = dir.join(name);
     std::fs::write(&p, text).unwrap();

@@ -35,24 +35,6 @@ fn code(o: &Output) -> Option<i32> {
     o.status.code()
 }
 
-/// The `N designs, M already done, K run, F failed` numbers of the stderr summary.
-fn summary(o: &Output) -> [usize; 4] {
-    let err = stderr(o);
-    let line = err
-        .lines()
-        .find(|l| l.starts_with("sweep: "))
-        .unwrap_or_else(|| panic!("no summary in stderr: {err}"));
-    let num = |marker: &str| -> usize {
-        let end = line
-            .find(marker)
-            .unwrap_or_else(|| panic!("`{marker}` missing in {line}"));
-        let head = &line[..end];
-        let start = head.rfind(|c: char| !c.is_ascii_digit()).map_or(0, |p| p + 1);
-        head[start..].parse().unwrap()
-    };
-    [num(" designs"), num(" already done"), num(" run"), num(" failed")]
-}
-
 fn lines(path: &Path) -> Vec<Value> {
     std::fs::read_to_string(path)
         .unwrap()

@@ -49,3 +49,21 @@ pub fn stdout(o: &Output) -> String {
 pub fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
+
+/// The `N designs, M already done, K run, F failed` numbers of the stderr summary.
+pub fn summary(o: &Output) -> [usize; 4] {
+    let err = stderr(o);
+    let line = err
+        .lines()
+        .find(|l| l.starts_with("sweep: "))
+        .unwrap_or_else(|| panic!("no summary in stderr: {err}"));
+    let num = |marker: &str| -> usize {
+        let end = line
+            .find(marker)
+            .unwrap_or_else(|| panic!("`{marker}` missing in {line}"));
+        let head = &line[..end];
+        let start = head.rfind(|c: char| !c.is_ascii_digit()).map_or(0, |p| p + 1);
+        head[start..].parse().unwrap()
+    };
+    [num(" designs"), num(" already done"), num(" run"), num(" failed")]
+}
