@@ -25,14 +25,7 @@ fn specs() -> Vec<HingeSpec> {
             h: 4.0,
             blank_length: 10.0,
         },
-        HingeSpec::CornerFilleted {
-            l: 5.0,
-            r: 1.75,
-            t: 0.6,
-            w: 10.0,
-            h: 15.0,
-            blank_length: 15.0,
-        },
+        fixtures::pantilt_corner_filleted_hinge(),
         HingeSpec::Leaf {
             l: 10.0,
             t: 0.5,

@@ -1,6 +1,6 @@
 //! Seed hinges against their published / reference stiffnesses.
 
-use flexfem::hinge::{characterise, HingeSpec};
+use flexfem::hinge::characterise;
 use flexfem::material::Material;
 
 mod common;
@@ -51,14 +51,7 @@ fn seed002_corner_filleted_nylon() {
     // ν = 0.33), 15 mm blank each side. Reference 4.05 N·mm/deg: converged 3-D solid FEM of the
     // stated geometry. The published 4.78 N·mm/deg does not follow from the stated
     // dimensions (plane-strain FEM gives 4.13), so it is not used.
-    let spec = HingeSpec::CornerFilleted {
-        l: 5.0,
-        r: 1.75,
-        t: 0.6,
-        w: 10.0,
-        h: 15.0,
-        blank_length: 15.0,
-    };
+    let spec = fixtures::pantilt_corner_filleted_hinge();
     let r = characterise(&spec, &Material::NYLON66).unwrap();
     let per_deg = r.hinge.k_bend.to_radians();
     let e = pct(per_deg, 4.05);

@@ -87,3 +87,10 @@ pub fn ruiz2019_prs(gamma_deg: f64) -> Prs {
     )
     .unwrap_or_else(|e| panic!("{e}"))
 }
+
+/// The corner-filleted nylon 66 hinge of the 8R pan-tilt platform
+/// (cases/pantilt_hinge_corner_filleted.json): l = 5, R = 1.75, t = 0.6, width 10, blank height
+/// 15, 15 mm blank each side.
+pub fn pantilt_corner_filleted_hinge() -> HingeSpec {
+    hinge_of(include_str!("../../cases/pantilt_hinge_corner_filleted.json"))
+}
