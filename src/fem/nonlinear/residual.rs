@@ -2,6 +2,7 @@
 //! reduced residual and the symmetric or full tangent, and the linear solves (Cholesky, LU).
 
 use super::state::{Assemble, CaseCtx, ElemData, Eval, Solution, State};
+use crate::fem::assembly::for_each_pair;
 use crate::fem::constraints::{frame_block, NONE};
 use crate::fem::corot;
 use crate::fem::dof::NodeDof;
@@ -171,7 +172,7 @@ impl CaseCtx<'_> {
     }
 
     /// Cholesky factor of the symmetric tangent (lower values), `None` when it is not
-    /// positive definite (a pivot at or below [`crate::fem::analysis::PIVOT_TOL`] of its diagonal).
+    /// positive definite (a pivot at or below [`crate::fem::diagnose::PIVOT_TOL`] of its diagonal).
     pub(super) fn cholesky(&self, values: &[f64]) -> Result<Option<Factor>, String> {
         let k = self.pattern.matrix(values).map_err(|e| e.to_string())?;
         let Ok(f) = Factor::new(&self.symbolic, &k, self.par) else {
@@ -182,7 +183,7 @@ impl CaseCtx<'_> {
             .pivots()
             .iter()
             .zip(&diag)
-            .all(|(p, d)| p.is_finite() && *p > crate::fem::analysis::PIVOT_TOL * d);
+            .all(|(p, d)| p.is_finite() && *p > crate::fem::diagnose::PIVOT_TOL * d);
         Ok(ok.then_some(f))
     }
 
@@ -224,23 +225,7 @@ pub(super) fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
-/// Same pair order as [`crate::fem::assembly`]: lower-triangle pairs of free DOFs, a-major.
-#[inline]
-pub(super) fn for_each_pair(eqs: &[usize; 12], n: usize, mut f: impl FnMut(usize, usize, usize, usize)) {
-    for a in 0..n {
-        let ea = eqs[a];
-        if ea == NONE {
-            continue;
-        }
-        for (b, &eb) in eqs.iter().enumerate().take(n) {
-            if eb != NONE && ea >= eb {
-                f(a, b, ea, eb);
-            }
-        }
-    }
-}
-
-/// [`for_each_pair`] (`lower`) or every pair of free DOFs (the full non-symmetric pattern).
+/// [`for_each_pair`] (`lower`, the order of [`crate::fem::assembly`]) or every pair of free DOFs (the full non-symmetric pattern).
 #[inline]
 pub(super) fn for_each_pair_in(
     lower: bool,
