@@ -53,6 +53,7 @@ use crate::fem::model::Model;
 use crate::fem::results::CaseResult;
 use crate::fem::solve::Parallelism;
 
+mod convergence;
 mod load_case;
 mod newton;
 mod path;

@@ -8,7 +8,7 @@ use crate::fem::corot;
 use crate::fem::error::FemError;
 use crate::fem::recovery;
 use crate::fem::results::{resultant, CaseResult, Statics};
-use nalgebra::{SMatrix, Vector3};
+use nalgebra::Vector3;
 
 #[allow(clippy::too_many_arguments)]
 pub(super) fn finish(
@@ -29,15 +29,10 @@ pub(super) fn finish(
     let mut frames = Vec::with_capacity(ctx.elems.len());
     for (ie, e) in ctx.elems.iter().enumerate() {
         match e {
-            ElemData::Corot { nodes, geom, k_local } => {
-                let r = corot::response(
-                    geom,
-                    k_local,
-                    &CaseCtx::node_state(st, nodes[0]),
-                    &CaseCtx::node_state(st, nodes[1]),
-                    false,
-                )
-                .ok_or_else(|| fail(name, steps, lambda, f64::NAN, format!("element {ie} degenerate")))?;
+            ElemData::Corot { .. } => {
+                let (nodes, r) = ctx
+                    .corot_response(st, ie, false)
+                    .ok_or_else(|| fail(name, steps, lambda, f64::NAN, format!("element {ie} degenerate")))?;
                 for s in 0..2 {
                     for d in 0..6 {
                         f_int[6 * nodes[s] + d] += r.f[6 * s + d];
@@ -60,14 +55,7 @@ pub(super) fn finish(
                         f_int[6 * nodes[s] + d] += f[6 * s + d];
                     }
                 }
-                let mut dvec = SMatrix::<f64, 12, 1>::zeros();
-                for (s, &n) in nodes.iter().enumerate().take(*n_nodes) {
-                    let rv = corot::rot_log(&st.r[n]);
-                    for j in 0..3 {
-                        dvec[6 * s + j] = st.u[n][j];
-                        dvec[6 * s + 3 + j] = rv[j];
-                    }
-                }
+                let dvec = CaseCtx::spring_motion(st, nodes, *n_nodes);
                 elements.push(recovery::spring_result(k, &(**b * dvec), *n_nodes));
                 frames.push([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]);
             }

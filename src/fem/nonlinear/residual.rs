@@ -12,6 +12,40 @@ use nalgebra::{Matrix3, Matrix6, SMatrix, Vector3, Vector6};
 
 impl CaseCtx<'_> {
     /// Element internal forces (global, on its nodes) and tangents.
+    /// Co-rotational response of beam or flexibility element `ie` (`None` for a spring or a
+    /// degenerate element), with its nodes.
+    pub(super) fn corot_response(
+        &self,
+        st: &State,
+        ie: usize,
+        tangent: bool,
+    ) -> Option<([usize; 2], corot::CorotResponse)> {
+        let ElemData::Corot { nodes, geom, k_local } = &self.elems[ie] else {
+            return None;
+        };
+        let r = corot::response(
+            geom,
+            k_local,
+            &Self::node_state(st, nodes[0]),
+            &Self::node_state(st, nodes[1]),
+            tangent,
+        )?;
+        Some((*nodes, r))
+    }
+
+    /// Spring DOFs d = [u, rotation vector] of its `n_nodes` nodes (12 values; zero beyond).
+    pub(super) fn spring_motion(st: &State, nodes: &[usize; 2], n_nodes: usize) -> SMatrix<f64, 12, 1> {
+        let mut d = SMatrix::<f64, 12, 1>::zeros();
+        for (s, &n) in nodes.iter().enumerate().take(n_nodes) {
+            let rv = corot::rot_log(&st.r[n]);
+            for j in 0..3 {
+                d[6 * s + j] = st.u[n][j];
+                d[6 * s + 3 + j] = rv[j];
+            }
+        }
+        d
+    }
+
     pub(super) fn element_response(
         &self,
         st: &State,
@@ -19,25 +53,12 @@ impl CaseCtx<'_> {
         tangent: bool,
     ) -> Option<([usize; 2], usize, Mat12, [f64; 12])> {
         match &self.elems[ie] {
-            ElemData::Corot { nodes, geom, k_local } => {
-                let r = corot::response(
-                    geom,
-                    k_local,
-                    &Self::node_state(st, nodes[0]),
-                    &Self::node_state(st, nodes[1]),
-                    tangent,
-                )?;
-                Some((*nodes, 2, r.k, std::array::from_fn(|i| r.f[i])))
+            ElemData::Corot { .. } => {
+                let (nodes, r) = self.corot_response(st, ie, tangent)?;
+                Some((nodes, 2, r.k, std::array::from_fn(|i| r.f[i])))
             }
             ElemData::Spring { nodes, n_nodes, b, k } => {
-                let mut d = SMatrix::<f64, 12, 1>::zeros();
-                for (s, &n) in nodes.iter().enumerate().take(*n_nodes) {
-                    let rv = corot::rot_log(&st.r[n]);
-                    for j in 0..3 {
-                        d[6 * s + j] = st.u[n][j];
-                        d[6 * s + 3 + j] = rv[j];
-                    }
-                }
+                let d = Self::spring_motion(st, nodes, *n_nodes);
                 let kd = Matrix6::from_diagonal(&Vector6::from(*k));
                 let km = b.transpose() * kd * **b;
                 let f = km * d;
