@@ -8,9 +8,9 @@
 //! body) gets a small negative shift so that K − σM is positive definite and the six rigid-body
 //! modes come out first at λ ≈ 0.
 
-use super::analysis::check_free_bodies;
 use super::assembly::{MatrixKind, Pattern};
 use super::constraints::DofMap;
+use super::diagnose::check_free_bodies;
 use super::error::FemError;
 use super::model::Model;
 use super::solve::{Factor, FactorError, FullSymmetric, Parallelism, SparseMatrix, SymbolicFactor};
@@ -214,7 +214,7 @@ pub fn solve_modal(model: &Model, opts: &ModalOptions) -> Result<ModalResults, F
                     .pivots()
                     .iter()
                     .zip(a.diagonal())
-                    .any(|(p, d)| p.is_nan() || *p <= super::analysis::PIVOT_TOL * d);
+                    .any(|(p, d)| p.is_nan() || *p <= super::diagnose::PIVOT_TOL * d);
                 if !tiny {
                     break (shift, f);
                 }
