@@ -144,6 +144,12 @@ impl<A> Entry<A> {
     }
 }
 
+impl<A> Default for Entry<A> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
 impl<A: Analysis> DynAnalysis for Entry<A> {
     fn kind(&self) -> &'static str {
         A::KIND
