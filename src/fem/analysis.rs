@@ -308,36 +308,3 @@ impl System {
     }
 }
 
-/// Solves every load case of the model. Cases are grouped by their set of prescribed DOFs;
-/// each group shares one factorisation.
-pub fn solve_static(model: &Model) -> Result<StaticResults, FemError> {
-    solve_static_with(model, Parallelism::Rayon)
-}
-
-/// [`solve_static`] with explicit solver parallelism.
-pub fn solve_static_with(model: &Model, par: Parallelism) -> Result<StaticResults, FemError> {
-    model.validate()?;
-    let mut groups: Vec<(Vec<NodeDof>, Vec<usize>)> = Vec::new();
-    for (i, case) in model.load_cases.iter().enumerate() {
-        let key = prescribed_dofs(case);
-        match groups.iter_mut().find(|(k, _)| *k == key) {
-            Some((_, v)) => v.push(i),
-            None => groups.push((key, vec![i])),
-        }
-    }
-    let mut out: Vec<Option<CaseResult>> = vec![None; model.load_cases.len()];
-    for (key, idx) in groups {
-        // Check the constraint set with the case name for a precise message.
-        if let Some(&first) = idx.first() {
-            DofMap::new(model, &key, Some(&model.load_cases[first].name))?;
-        }
-        let sys = System::new(model, &key, par)?;
-        let cases: Vec<&LoadCase> = idx.iter().map(|&i| &model.load_cases[i]).collect();
-        for (i, r) in idx.iter().zip(sys.solve_cases(model, &cases)?) {
-            out[*i] = Some(r);
-        }
-    }
-    Ok(StaticResults {
-        load_cases: out.into_iter().flatten().collect(),
-    })
-}

@@ -12,6 +12,7 @@
 
 pub mod analysis;
 pub mod assembly;
+pub mod cache;
 pub mod constraints;
 pub mod corot;
 pub mod diagnose;
@@ -33,7 +34,9 @@ pub mod shell_recovery;
 pub mod solve;
 pub mod transform;
 
-pub use analysis::{solve_static, solve_static_with, CaseResult, StaticResults, System};
+pub use analysis::{CaseResult, StaticResults, System};
+pub use cache::SolverCache;
+pub use cache::{solve_static, solve_static_cached, solve_static_with};
 pub use dof::{Dof, NodeDof};
 pub use error::FemError;
 pub use model::{
