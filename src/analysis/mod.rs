@@ -216,8 +216,6 @@ fn design_warnings(case: &crate::case::design::DesignCase, r: &design::DesignRes
 fn case_warnings(case: &Case) -> Vec<String> {
     match case {
         Case::Hinge(h) => hinge_warnings("hinge", &h.hinge),
-        Case::Stage(s) => s.validate().map(|(d, _)| stage_warnings(&d)).unwrap_or_default(),
-        Case::FemVsFkp(s) => s.validate().map(|d| stage_warnings(&d)).unwrap_or_default(),
         Case::Sensitivity(s) => s.validate().map(|d| stage_warnings(&d)).unwrap_or_default(),
         Case::Modal(m) => density_warnings(&m.model),
         _ => Vec::new(),
@@ -441,6 +439,7 @@ fn run_analysis(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
                     .load_cases
                     .iter()
                     .filter_map(|c| fem_static::stability_text(&c.name, c.stable, c.critical_load_factor))
+                    .chain(r.calibration_warnings.iter().cloned())
                     .collect(),
                 report: stage::stage_report(&r),
                 files,
@@ -451,7 +450,7 @@ fn run_analysis(case: &Case, with_files: bool) -> Result<Outcome, RunError> {
             let (report, files) = stage::fem_vs_fkp_report(&r);
             Ok(Outcome {
                 json: to_json(&r)?,
-                warnings: Vec::new(),
+                warnings: r.calibration_warnings.clone(),
                 report,
                 files,
             })

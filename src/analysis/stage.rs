@@ -127,6 +127,10 @@ pub struct StageResult {
     /// Natural frequencies and shapes (when the case asks for `modes`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub modes: Option<Vec<super::modal::ModeRow>>,
+    /// Solid-calibration warnings of the validated design's hinges (reported with the case's
+    /// warnings, not in this object).
+    #[serde(skip)]
+    pub calibration_warnings: Vec<String>,
 }
 
 fn row(r: &StageCaseResult, allowable: f64) -> StageRow {
@@ -153,7 +157,7 @@ fn row(r: &StageCaseResult, allowable: f64) -> StageRow {
 
 fn fem_err(e: stage::StageError) -> RunError {
     match e {
-        stage::StageError::Geometry { .. } => RunError::Case(stage_error(e)),
+        stage::StageError::Geometry { .. } | stage::StageError::Hinge { .. } => RunError::Case(stage_error(e)),
         stage::StageError::Fem(f) => RunError::Analysis(AnalysisError::new("stage", f.to_string())),
     }
 }
@@ -203,8 +207,8 @@ pub fn run_stage_with_files(case: &StageCase) -> Result<(StageResult, super::Fil
 }
 
 fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super::Files), RunError> {
-    let (design, mut drives) = case.validate()?;
-    let s = design.build().map_err(fem_err)?;
+    let (design, mut drives) = case.validated()?;
+    let s = design.build();
     let allowable = design.material.allowable;
     // One linear pass: the user's cases, a unit force on every actuator (reach at the allowable)
     // and a unit pure-z stroke set (structural stiffness), plus the platform compliance.
@@ -288,6 +292,7 @@ fn run_stage_inner(case: &StageCase, files: bool) -> Result<(StageResult, super:
             }
             None => None,
         },
+        calibration_warnings: crate::case::stage::stage_warnings(&design),
     };
     Ok((result, out_files))
 }
@@ -488,6 +493,10 @@ pub struct FemVsFkpResult {
     pub fem_nonlinear_note: String,
     /// Idealisations.
     pub model: Vec<String>,
+    /// Solid-calibration warnings of the validated design's hinges (reported with the case's
+    /// warnings, not in this object).
+    #[serde(skip)]
+    pub calibration_warnings: Vec<String>,
 }
 
 fn diff(a: PoseOut, b: PoseOut) -> PoseOut {
@@ -503,8 +512,8 @@ fn diff(a: PoseOut, b: PoseOut) -> PoseOut {
 
 /// Runs a `fem_vs_fkp` case.
 pub fn run_fem_vs_fkp(case: &FemVsFkpCase) -> Result<FemVsFkpResult, RunError> {
-    let design = case.validate()?;
-    let s = design.build().map_err(fem_err)?;
+    let design = case.validated()?;
+    let s = design.build();
     let drives: Vec<(String, Drive)> = case
         .strokes
         .iter()
@@ -539,6 +548,7 @@ pub fn run_fem_vs_fkp(case: &FemVsFkpCase) -> Result<FemVsFkpResult, RunError> {
             m[0] = "fem_linear: linear statics, small displacements; fem_nonlinear: geometrically nonlinear statics of the same model (co-rotational legs and hinges, rigid platform exact under finite rotation)".to_string();
             m
         },
+        calibration_warnings: crate::case::stage::stage_warnings(&design),
         fem_nonlinear_note: format!(
             "co-rotational FEM (large rotations, small strains), same hinge and leg model as the linear FEM, Newton-Raphson in {steps} stroke steps; platform angles from its rotation matrix R = Ry(θ)·Rx(ψ)·Rz(φ)"
         ),
