@@ -5,7 +5,10 @@
 /// a contour in a blank; a [`super::Profile`] is a validated contour in a blank. Lengths in mm.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Deserialize, schemars::JsonSchema)]
 #[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
-#[schemars(rename = "StageHinge")]
+#[schemars(
+    rename = "StageHinge",
+    description = "A hinge of the stage, by `type`; its width and blank come from the leg."
+)]
 pub enum Contour {
     /// Circular notch: radius R, minimum thickness t, mm;
     /// t(x) = t + 2(R − √(R² − x²)), |x| ≤ R.

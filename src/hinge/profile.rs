@@ -12,7 +12,6 @@
 
 pub use super::contour::Contour;
 use super::error::{geom, non_negative, positive, HingeError};
-pub use super::pieces::{Map, Piece, Pieces, MAX_PIECES};
 use super::section::{clipped_disk, rectangle, Section};
 
 /// Load spreading from the notch into the thicker sections beside it (see [`Profile::spread`]).
