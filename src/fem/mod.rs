@@ -18,6 +18,7 @@ pub mod dof;
 pub mod element;
 pub mod error;
 pub mod lattice;
+pub mod loads;
 pub mod mass;
 pub mod modal;
 pub mod model;
