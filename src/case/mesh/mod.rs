@@ -7,6 +7,8 @@
 
 pub mod build;
 mod build_loads;
+mod hinge;
+mod joint;
 pub mod load_shapes;
 mod lookup;
 pub mod shapes;
@@ -14,4 +16,4 @@ pub mod shapes;
 pub use super::fem_case::{ModalCase, StaticCase};
 pub use build::unique_load_case_names;
 pub use load_shapes::{DisplacementSpec, DofName, EdgeLoadSpec, ForceSpec, LoadCaseSpec, PressureSpec};
-pub use shapes::{ElementSpec, GmshMapping, GroupSpec, MeshSpec, RigidSpec, SectionSpec, SupportSpec};
+pub use shapes::{ElementSpec, GmshMapping, GroupSpec, JointKind, MeshSpec, RigidSpec, SectionSpec, SupportSpec};
