@@ -84,13 +84,28 @@ impl MeshSpec {
             let master = cx.node(format!("{p}.master"), r.master)?;
             let mut slaves = Vec::with_capacity(r.slaves.len());
             for (i, s) in r.slaves.iter().enumerate() {
-                slaves.push(cx.node(format!("{p}.slaves[{i}]"), *s)?);
+                let s = cx.node(format!("{p}.slaves[{i}]"), *s)?;
+                if cx.model.frames.contains_key(&s) {
+                    return Err(CaseError::value(
+                        format!("{p}.slaves[{i}]"),
+                        s,
+                        "this node carries the frame of a joint element and a rigid-link slave cannot: make it the link's master, or join it by a stiff beam",
+                    ));
+                }
+                slaves.push(s);
             }
             cx.model.rigid_links.push(fem::RigidLink { master, slaves });
         }
         for (i, s) in self.supports.iter().enumerate() {
             let node = cx.node(format!("supports[{i}].node"), s.node)?;
             let dofs: Vec<Dof> = s.fix.iter().map(|d| d.dof()).collect();
+            if cx.model.frames.contains_key(&node) && dofs.len() < 6 {
+                return Err(CaseError::value(
+                    format!("supports[{i}].fix"),
+                    format!("{:?}", s.fix),
+                    format!("node {node} carries the frame of a joint element: a partial support there would act in the joint frame; clamp it (all six DOFs) or support a node joined to it"),
+                ));
+            }
             cx.model.supports.push(fem::Support::dofs(node, &dofs));
         }
         if need_loads && self.load_cases.is_empty() {
@@ -167,6 +182,18 @@ fn element(cx: &mut Ctx, p: &str, e: &ElementSpec) -> Result<(), CaseError> {
             });
         }
         ElementSpec::Rigid { .. } => {}
+        ElementSpec::Hinge {
+            nodes,
+            hinge,
+            material,
+            up,
+        } => super::hinge::hinge_element(cx, p, *nodes, hinge, material, *up)?,
+        ElementSpec::Joint {
+            nodes,
+            kind,
+            axis,
+            axis2,
+        } => super::joint::joint_element(cx, p, *nodes, *kind, *axis, *axis2)?,
         ElementSpec::Shell4 {
             nodes,
             section,

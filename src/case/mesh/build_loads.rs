@@ -19,6 +19,13 @@ pub(super) fn load_case(cx: &Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::Load
     for (i, d) in c.displacements.iter().enumerate() {
         let node = cx.node(format!("{p}.displacements[{i}].node"), d.node)?;
         check::finite(&format!("{p}.displacements[{i}].value"), d.value)?;
+        if cx.model.frames.contains_key(&node) {
+            return Err(CaseError::value(
+                format!("{p}.displacements[{i}].node"),
+                node,
+                "this node carries the frame of a joint element, in which a prescribed DOF would act: prescribe it at a node joined to it",
+            ));
+        }
         // Case files give rotations in degrees; the model works in radians.
         let value = match d.dof {
             DofName::Rx | DofName::Ry | DofName::Rz => d.value.to_radians(),

@@ -8,6 +8,8 @@
 pub mod build;
 mod build_body_loads;
 mod build_loads;
+mod hinge;
+mod joint;
 pub mod load_shapes;
 mod lookup;
 pub mod shapes;
@@ -18,4 +20,4 @@ pub use load_shapes::{
     DisplacementSpec, DofName, EdgeLoadSpec, ForceSpec, GroupForceSpec, LineAxes, LineLoadSpec, LoadCaseSpec,
     PressureSpec,
 };
-pub use shapes::{ElementSpec, GmshMapping, GroupSpec, MeshSpec, RigidSpec, SectionSpec, SupportSpec};
+pub use shapes::{ElementSpec, GmshMapping, GroupSpec, JointKind, MeshSpec, RigidSpec, SectionSpec, SupportSpec};

@@ -116,6 +116,36 @@ pub enum ElementSpec {
         /// Slave nodes.
         slaves: Vec<usize>,
     },
+    /// Flexure hinge from `nodes[0]` to `nodes[1]` (local x): the notch of `hinge` centred at the
+    /// midpoint, blank of the hinge's section on both sides up to the nodes; one flexibility
+    /// element with the compliance of the `hinge` analysis (blank_length = (distance − notch
+    /// length)/2). Local axes as for beams: the notch thins along local z (`up`), the compliant
+    /// axis is local y.
+    Hinge {
+        /// Node indices (0-based); their distance must be at least the notch length.
+        nodes: [usize; 2],
+        /// The hinge, as the `hinge` object of a `hinge` case without `blank_length`.
+        #[schemars(schema_with = "super::hinge::element_hinge_schema")]
+        hinge: serde_json::Value,
+        /// Material name (key of `materials`).
+        material: String,
+        /// Vector fixing local z (the direction the notch thins along).
+        up: [f64; 3],
+    },
+    /// Ideal joint between two coincident nodes, by elimination (no penalty): the DOFs the joint
+    /// does not release are tied in the joint frame (local x along `axis`).
+    Joint {
+        /// The two coincident nodes.
+        nodes: [usize; 2],
+        /// The joint kind.
+        kind: JointKind,
+        /// Joint axis (revolute, cylindrical, prismatic; universal: the first pin).
+        #[serde(default)]
+        axis: Option<[f64; 3]>,
+        /// Second pin of a universal joint, perpendicular to `axis`.
+        #[serde(default)]
+        axis2: Option<[f64; 3]>,
+    },
     /// 4-node flat shell (a triangle as the degenerate quad [a, b, c, c]).
     Shell4 {
         /// Node indices.
@@ -125,6 +155,24 @@ pub enum ElementSpec {
         /// Material name.
         material: String,
     },
+}
+
+/// Kind of an ideal joint: what it releases.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, schemars::JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum JointKind {
+    /// Rotation about `axis` free.
+    Revolute,
+    /// All rotations free.
+    Spherical,
+    /// Rotations about `axis` and `axis2` free.
+    Universal,
+    /// Rotation about and translation along `axis` free.
+    Cylindrical,
+    /// Translation along `axis` free.
+    Prismatic,
+    /// Nothing free.
+    Weld,
 }
 
 fn yes() -> bool {
