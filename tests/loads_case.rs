@@ -112,3 +112,45 @@ fn load_errors_name_the_path() {
         assert!(err.contains(path), "{name}: {err}");
     }
 }
+
+/// Gravity on a model without mass is refused at `load_cases[0].gravity` (it would silently
+/// load nothing).
+#[test]
+fn gravity_without_mass_is_refused() {
+    let text = BEAM.replace(
+        r#""steel": "steel""#,
+        r#""steel": {"E": 210000, "nu": 0.3, "density": 0}"#,
+    );
+    let o = run_case_text(
+        "loads_err_massless",
+        &format!("{{{text} \"load_cases\": [{{\"name\": \"g\", \"gravity\": [0, 0, -9810]}}]}}"),
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("load_cases[0].gravity"), "{}", stderr(&o));
+}
+
+/// The bundled cases/static_self_weight.json against closed forms (steel, L = 100, 10 × 5
+/// rectangle with h = 5 along z, I = 10·5³/12, Euler–Bernoulli, exact at the nodes: 1e-9):
+/// self-weight q = ρ·A·g: tip qL⁴/(8EI), root force qL and moment qL²/2; line load 0.1 N/mm:
+/// tip qL⁴/(8EI); 1 N spread equally over nodes 3 (x = 75) and 4 (x = 100): tip
+/// 0.5·(75²(3L − 75) + 2L³)/(6EI).
+#[test]
+fn bundled_self_weight_case_matches_closed_forms() {
+    let d = tempdir("loads_bundled");
+    let case = common::root().join("cases/static_self_weight.json");
+    let o = run_in(&d, &["run", case.to_str().unwrap(), "--out", "out"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let r: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("out/result.json")).unwrap()).unwrap();
+    let (l, e, i) = (100.0f64, 210_000.0, 10.0 * 125.0 / 12.0);
+    let q = 7.85e-9 * 50.0 * 9810.0;
+    let tip = |c: usize| -r["load_cases"][c]["displacements"][4][2].as_f64().unwrap();
+    let reac = |c: usize, k: usize| r["load_cases"][c]["reactions"][0][k].as_f64().unwrap();
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * b.abs();
+    assert!(close(tip(0), q * l.powi(4) / (8.0 * e * i)), "{}", tip(0));
+    assert!(close(reac(0, 2), q * l), "{}", reac(0, 2));
+    assert!(close(reac(0, 4), -q * l * l / 2.0), "{}", reac(0, 4));
+    assert!(close(tip(1), 0.1 * l.powi(4) / (8.0 * e * i)), "{}", tip(1));
+    let exact = 0.5 * (75.0f64.powi(2) * (3.0 * l - 75.0) + 2.0 * l.powi(3)) / (6.0 * e * i);
+    assert!(close(tip(2), exact), "{} vs {exact}", tip(2));
+}
