@@ -108,6 +108,14 @@ impl MeshSpec {
             }
             cx.model.supports.push(fem::Support::dofs(node, &dofs));
         }
+        // A tie makes node b follow node a, so b must carry no support: a joint whose second
+        // node is supported ties the other way round (the joint is symmetric).
+        for t in &mut cx.model.ties {
+            let supported = |n: usize| cx.model.supports.iter().any(|s| s.node == n);
+            if supported(t.b) && !supported(t.a) {
+                std::mem::swap(&mut t.a, &mut t.b);
+            }
+        }
         if need_loads && self.load_cases.is_empty() {
             return Err(CaseError::new("load_cases", "at least one load case is needed"));
         }
