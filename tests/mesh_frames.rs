@@ -95,3 +95,44 @@ fn bad_frames_refused_with_paths() {
     assert_eq!(e.path, "load_cases[0].displacements[0].axis", "{e}");
     assert!(e.message.contains("supports[1].axis"), "{e}");
 }
+
+/// `flexfem schema` describes the new fields: a case with a hinge element, joints of every
+/// kind and frames on a support, a force and a prescribed displacement validates (the jsonschema
+/// crate, draft 2020-12), and flexfem accepts it too.
+#[test]
+fn schema_covers_hinge_joint_and_frame_fields() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_flexfem"))
+        .arg("schema")
+        .output()
+        .expect("run flexfem schema");
+    let schema: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let v = jsonschema::draft202012::options()
+        .should_validate_formats(false)
+        .build(&schema)
+        .unwrap();
+    let case = serde_json::json!({
+        "analysis": "static", "materials": {"al": "Al7075"},
+        "nodes": [[0, 0, 0], [0, 0, 0], [20, 0, 0], [20, 0, 0], [20, 0, 0], [20, 0, 0], [20, 0, 0], [20, 0, 0],
+                  [20, 0, 0], [20, 0, 0], [20, 0, 0], [20, 0, 0]],
+        "elements": [
+            {"type": "joint", "nodes": [0, 1], "kind": "weld"},
+            {"type": "hinge", "nodes": [1, 2], "hinge": {"type": "leaf", "l": 5, "t": 1, "w": 4, "h": 4}, "material": "al", "up": [0, 0, 1]},
+            {"type": "joint", "nodes": [2, 3], "kind": "revolute", "axis": [0, 0, 1]},
+            {"type": "joint", "nodes": [3, 4], "kind": "spherical"},
+            {"type": "joint", "nodes": [5, 6], "kind": "universal", "axis": [1, 0, 0], "axis2": [0, 1, 0]},
+            {"type": "joint", "nodes": [7, 8], "kind": "cylindrical", "axis": [1, 0, 0]},
+            {"type": "joint", "nodes": [9, 10], "kind": "prismatic", "axis": [1, 0, 0]}
+        ],
+        "supports": [{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]},
+                     {"node": 11, "axis": [1, 0, 0], "fix": ["uy", "uz", "rx", "ry", "rz"]}],
+        "load_cases": [{"name": "l",
+            "forces": [{"node": 11, "frame": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "F": [1, 0, 0, 0, 0, 0]}],
+            "displacements": [{"node": 11, "dof": "ux", "value": 0.1, "axis": [1, 0, 0]}]}]
+    });
+    let errors: Vec<String> = v
+        .iter_errors(&case)
+        .map(|e| format!("{e} at {}", e.instance_path()))
+        .collect();
+    assert!(errors.is_empty(), "{errors:?}");
+    build(&case.to_string()).unwrap_or_else(|e| panic!("{e}"));
+}
