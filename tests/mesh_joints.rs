@@ -144,3 +144,80 @@ fn bad_joints_refused_with_paths() {
     let e = model_of(&bad_u).unwrap_err();
     assert_eq!(e.path, "elements[6].axis2", "{e}");
 }
+
+/// Steel, E and G (built-in values).
+fn steel() -> (f64, f64) {
+    let m = flexfem::material::Material::builtin("steel").unwrap();
+    (m.e, m.shear_modulus())
+}
+
+/// A spherical joint carries no moment: a beam (L = 100 mm, d = 8 mm, Euler–Bernoulli) hung
+/// from a clamped node by a spherical joint and resting on a roller (uy, uz, and twist held)
+/// at the other end is simply supported: mid-span deflection P L³ / (48 E I) (Roark, Table 8.1
+/// case 1a), and the clamp's reaction has no moment.
+#[test]
+fn spherical_joint_is_a_pin() {
+    let text = r#"{"analysis": "static", "materials": {"steel": "steel"},
+        "sections": {"s": {"shape": "circle", "d": 8}},
+        "nodes": [[0, 0, 0], [0, 0, 0], [50, 0, 0], [100, 0, 0]],
+        "elements": [{"type": "joint", "nodes": [0, 1], "kind": "spherical"},
+            {"type": "beam", "nodes": [1, 2], "section": "s", "material": "steel", "up": [0, 0, 1], "shear": false},
+            {"type": "beam", "nodes": [2, 3], "section": "s", "material": "steel", "up": [0, 0, 1], "shear": false}],
+        "supports": [{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}, {"node": 3, "fix": ["uy", "uz", "rx"]}],
+        "load_cases": [{"name": "p", "forces": [{"node": 2, "F": [0, 0, -10, 0, 0, 0]}]}]}"#;
+    let model = model_of(text).unwrap();
+    let r = &fem::solve_static(&model).unwrap().load_cases[0];
+    let (e, _) = steel();
+    let i = std::f64::consts::PI * 8f64.powi(4) / 64.0;
+    let want = -10.0 * 100f64.powi(3) / (48.0 * e * i);
+    let w = r.displacements[2][2];
+    assert!((w / want - 1.0).abs() < 1e-9, "{w} vs {want}");
+    let (_, reaction) = r.reactions.iter().find(|(n, _)| *n == 0).unwrap();
+    assert!((reaction[2] - 5.0).abs() < 1e-9, "{reaction:?}");
+    for k in 3..6 {
+        assert!(reaction[k].abs() < 1e-9, "moment at the spherical joint: {reaction:?}");
+    }
+}
+
+/// A universal joint (pins along y and z) transmits the torque about the shaft axis x: two
+/// shafts of L = 50 mm in series, the output end on a bearing (uy, uz held), twist at the end
+/// T (L₁ + L₂)/(G J) with J = π d⁴/32 (Saint-Venant, circular shaft), reaction torque −T;
+/// it transmits no bending moment (statics of the pinned lever).
+#[test]
+fn universal_joint_transmits_torque() {
+    let case = |m: [f64; 6]| {
+        format!(
+            r#"{{"analysis": "static", "materials": {{"steel": "steel"}},
+            "sections": {{"s": {{"shape": "circle", "d": 8}}}},
+            "nodes": [[0, 0, 0], [50, 0, 0], [50, 0, 0], [100, 0, 0]],
+            "elements": [{{"type": "beam", "nodes": [0, 1], "section": "s", "material": "steel", "up": [0, 0, 1]}},
+                {{"type": "joint", "nodes": [1, 2], "kind": "universal", "axis": [0, 1, 0], "axis2": [0, 0, 1]}},
+                {{"type": "beam", "nodes": [2, 3], "section": "s", "material": "steel", "up": [0, 0, 1]}}],
+            "supports": [{{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}}, {{"node": 3, "fix": ["uy", "uz"]}}],
+            "load_cases": [{{"name": "t", "forces": [{{"node": 3, "F": {m:?}}}]}}]}}"#
+        )
+    };
+    let model = model_of(&case([0.0, 0.0, 0.0, 1000.0, 0.0, 0.0])).unwrap();
+    let r = &fem::solve_static(&model).unwrap().load_cases[0];
+    let (_, g) = steel();
+    let j = std::f64::consts::PI * 8f64.powi(4) / 32.0;
+    let want = 1000.0 * 100.0 / (g * j);
+    let rx = r.displacements[3][3];
+    assert!((rx / want - 1.0).abs() < 1e-9, "{rx} vs {want}");
+    let (_, reaction) = r.reactions.iter().find(|(n, _)| *n == 0).unwrap();
+    assert!((reaction[3] + 1000.0).abs() < 1e-9, "{reaction:?}");
+    let model = model_of(&case([0.0, 0.0, 0.0, 0.0, 1000.0, 0.0])).unwrap();
+    let r = &fem::solve_static(&model).unwrap().load_cases[0];
+    // The pins carry no bending moment at the joint (element end moments there vanish), so
+    // the output shaft is a lever: M = 1000 N·mm over L₂ = 50 mm, ±20 N at the joint and the
+    // bearing, and the clamp takes 20 N with the moment 20 N × 50 mm.
+    for (el, end) in [(0, 1), (1, 0)] {
+        let f = r.elements[el].end_forces[end];
+        assert!(f[4].abs() < 1e-9 && f[5].abs() < 1e-9, "moment at the joint: {f:?}");
+    }
+    let (_, reaction) = r.reactions.iter().find(|(n, _)| *n == 0).unwrap();
+    assert!(
+        (reaction[2] + 20.0).abs() < 1e-9 && (reaction[4] - 1000.0).abs() < 1e-9,
+        "{reaction:?}"
+    );
+}
