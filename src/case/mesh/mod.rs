@@ -8,6 +8,7 @@
 pub mod build;
 mod build_body_loads;
 mod build_loads;
+mod frames;
 mod hinge;
 mod joint;
 pub mod load_shapes;
