@@ -63,7 +63,7 @@ pub struct DisplacementSpec {
     /// Which DOF.
     pub dof: DofName,
     /// Value: mm for `ux`, `uy`, `uz`; degrees for `rx`, `ry`, `rz` (rotation about the global
-    /// axis, right-handed).
+    /// axis, or the local one with `frame`/`axis`, right-handed).
     pub value: f64,
     /// Local frame: three orthonormal, right-handed rows (local x, y, z in global axes); the
     /// DOF names (components) are then local.
