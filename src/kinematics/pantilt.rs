@@ -514,7 +514,7 @@ impl PanTilt {
         // d(angle) along a tangent dr of r₇, per joint.
         let dq = |dr: &Vector3<f64>| -> [f64; JOINTS] {
             let mut d = [0.0; JOINTS];
-            let dm: Vec<Vector3<f64>> = limbs.iter().map(|l| l.m_alpha * l.dalpha.dot(dr)).collect();
+            let dm = limbs.map(|l| l.m_alpha * l.dalpha.dot(dr));
             for (j, l) in limbs.iter().enumerate() {
                 d[j] = l.dalpha.dot(dr);
                 let (y, x) = angle_parts(&l.m, &l.u, &r7, cd * ct0);
