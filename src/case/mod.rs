@@ -12,6 +12,7 @@ pub mod kinematics;
 pub mod limits;
 pub mod material;
 pub mod mesh;
+pub mod pantilt;
 pub mod stage;
 pub mod sweep;
 
