@@ -261,3 +261,58 @@ fn bad_geometry_is_refused_with_the_parameter_named() {
         assert!(e.contains(word), "{e}");
     }
 }
+
+#[test]
+fn table4_every_printed_entry_with_the_papers_100_sample_grid() {
+    // Yu et al. (2016) Table 4 prints 10.00, 9.998, 9.998, 11.57, 11.56, 11.56, 10.84, 10.84°:
+    // the 9.998 and 11.56 entries are what a 1 s period sampled every 0.01 s (3.6° of φ) gives,
+    // missing the exact peaks of J2, J3, J5, J6. With that grid every entry is reproduced to half
+    // a unit of its last printed digit.
+    let path = circle(10f64.to_radians(), 0.0, 1.0, 100, false);
+    let states = paper()
+        .path(&path, &JointSprings::uniform_per_degree(4.78, 0.226))
+        .unwrap();
+    let printed = [
+        (10.00, 0.005),
+        (9.998, 0.0005),
+        (9.998, 0.0005),
+        (11.57, 0.005),
+        (11.56, 0.005),
+        (11.56, 0.005),
+        (10.84, 0.005),
+        (10.84, 0.005),
+    ];
+    for (i, (e, tol)) in printed.iter().enumerate() {
+        let max = states.iter().map(|s| s.q[i].to_degrees().abs()).fold(0.0, f64::max);
+        assert!((max - e).abs() <= *tol, "J{}: {max}° vs {e}°", i + 1);
+    }
+}
+
+#[test]
+fn fig12_largest_torque_difference_and_the_direction_of_travel() {
+    // Yu et al. (2016) §4.2: the damped and undamped torques differ by at most 86.40 N·mm
+    // (Fig. 12). The quasi-static damper share peaks at 88.8 N·mm on J1 (2.7 % above; the paper's
+    // ADAMS run includes transients we do not model): tolerance 3 %. Damping makes the torques
+    // depend on the direction of travel: φ increasing (ccw) reproduces Table 5's damped peaks
+    // within 1 %, φ decreasing puts J1 at 318.3 N·mm, 1.7 % off, so the paper ran ccw.
+    let springs = JointSprings::uniform_per_degree(4.78, 0.226);
+    let peaks = |clockwise: bool| {
+        let path = circle(10f64.to_radians(), 0.0, 1.0, 3600, clockwise);
+        let states = paper().path(&path, &springs).unwrap();
+        let mut damped = [0.0f64; 2];
+        let mut share = 0.0f64;
+        for s in &states {
+            for (d, t) in damped.iter_mut().zip(s.torque_total()) {
+                *d = d.max(t.abs());
+            }
+            share = share.max(s.torque_damping[0].abs().max(s.torque_damping[1].abs()));
+        }
+        (damped, share)
+    };
+    let (ccw, share) = peaks(false);
+    assert!(((share - 86.40) / 86.40).abs() <= 0.03, "{share}");
+    assert!(((ccw[0] - 312.9) / 312.9).abs() <= 0.01, "{ccw:?}");
+    assert!(((ccw[1] - 266.4) / 266.4).abs() <= 0.01, "{ccw:?}");
+    let (cw, _) = peaks(true);
+    assert!(((cw[0] - 312.9) / 312.9).abs() > 0.01, "{cw:?}");
+}
