@@ -146,28 +146,31 @@ fn paper_jacobian_formula_eqs_15_to_17() {
     }
 }
 
+/// Central differences (h = 1e-5 rad) of `f` with respect to γ and φ at `x`, per output.
+fn central_differences<const N: usize>(x: &Pointing, f: impl Fn(&Pointing) -> [f64; N]) -> [[f64; 2]; N] {
+    let h = 1e-5;
+    let at = |dg: f64, dp: f64| {
+        f(&Pointing {
+            gamma: x.gamma + dg,
+            phi: x.phi + dp,
+        })
+    };
+    let (gp, gm, pp, pm) = (at(h, 0.0), at(-h, 0.0), at(0.0, h), at(0.0, -h));
+    std::array::from_fn(|i| [(gp[i] - gm[i]) / (2.0 * h), (pp[i] - pm[i]) / (2.0 * h)])
+}
+
 #[test]
 fn inverse_jacobian_matches_finite_differences_of_the_ik() {
     // Central differences of the closed-form IK (h = 1e-5 rad, truncation O(h²) ≈ 1e-10,
     // round-off ≈ 1e-11): tolerance 1e-7 as required.
     let pt = paper();
-    let h = 1e-5;
     for (gd, pd) in [(10.0, 45.0), (10.0, 137.0), (3.0, 271.0), (20.0, 10.0), (28.0, 330.0)] {
         let x = Pointing::from_deg(gd, pd);
         let j = pt.inverse_jacobian(&x).unwrap();
-        let ik = |dg: f64, dp: f64| {
-            pt.inverse_kinematics(&Pointing {
-                gamma: x.gamma + dg,
-                phi: x.phi + dp,
-            })
-            .unwrap()
-        };
-        let (gp, gm, pp, pm) = (ik(h, 0.0), ik(-h, 0.0), ik(0.0, h), ik(0.0, -h));
-        for row in 0..2 {
-            let fd_g = (gp[row] - gm[row]) / (2.0 * h);
-            let fd_p = (pp[row] - pm[row]) / (2.0 * h);
-            assert!((j[(row, 0)] - fd_g).abs() < 1e-7, "∂θ/∂γ at {gd},{pd}");
-            assert!((j[(row, 1)] - fd_p).abs() < 1e-7, "∂θ/∂φ at {gd},{pd}");
+        let fd = central_differences(&x, |y| pt.inverse_kinematics(y).unwrap());
+        for (row, d) in fd.iter().enumerate() {
+            assert!((j[(row, 0)] - d[0]).abs() < 1e-7, "∂θ/∂γ at {gd},{pd}");
+            assert!((j[(row, 1)] - d[1]).abs() < 1e-7, "∂θ/∂φ at {gd},{pd}");
         }
     }
 }
@@ -177,24 +180,13 @@ fn all_joint_gradients_match_finite_differences() {
     // The analytic ∂qᵢ/∂(γ, φ) of all eight joints (which enter the virtual-work torques) against
     // central differences, tolerance 1e-7.
     let pt = paper();
-    let h = 1e-5;
     for (gd, pd) in [(10.0, 45.0), (4.0, 250.0), (18.0, 100.0)] {
         let x = Pointing::from_deg(gd, pd);
         let js = pt.joint_state(&x).unwrap();
-        let q = |dg: f64, dp: f64| {
-            pt.joint_state(&Pointing {
-                gamma: x.gamma + dg,
-                phi: x.phi + dp,
-            })
-            .unwrap()
-            .q
-        };
-        let (gp, gm, pp, pm) = (q(h, 0.0), q(-h, 0.0), q(0.0, h), q(0.0, -h));
-        for i in 0..8 {
-            let fd_g = (gp[i] - gm[i]) / (2.0 * h);
-            let fd_p = (pp[i] - pm[i]) / (2.0 * h);
-            assert!((js.grad_x[i][0] - fd_g).abs() < 1e-7, "J{} ∂/∂γ", i + 1);
-            assert!((js.grad_x[i][1] - fd_p).abs() < 1e-7, "J{} ∂/∂φ", i + 1);
+        let fd = central_differences(&x, |y| pt.joint_state(y).unwrap().q);
+        for (i, d) in fd.iter().enumerate() {
+            assert!((js.grad_x[i][0] - d[0]).abs() < 1e-7, "J{} ∂/∂γ", i + 1);
+            assert!((js.grad_x[i][1] - d[1]).abs() < 1e-7, "J{} ∂/∂φ", i + 1);
         }
     }
 }
