@@ -51,11 +51,13 @@ pub struct IkRow {
     pub theta_deg: [f64; 2],
     /// All eight joint rotations from home, degrees.
     pub joints_deg: [f64; JOINTS],
-    /// The inverse Jacobian ∂θ/∂(γ, φ) (deg/deg; Yu et al. Eq. 17); `null` within
-    /// `POLE_WARNING_DEG` of γ = 0, where it is singular.
-    pub inverse_jacobian: Option<[[f64; 2]; 2]>,
-    /// Its determinant; `null` with it.
-    pub inverse_jacobian_det: Option<f64>,
+    /// The inverse Jacobian ∂θ/∂(γ, φ) (deg/deg; Yu et al. Eq. 17), rows per actuator. Its φ
+    /// column vanishes at γ = 0 (φ undefined there).
+    pub inverse_jacobian: [[f64; 2]; 2],
+    /// Its determinant (∝ sin γ).
+    pub inverse_jacobian_det: f64,
+    /// True within `POLE_WARNING_DEG` of γ = 0, where the inverse Jacobian is singular.
+    pub pole_singular: bool,
 }
 
 /// One FK answer.
@@ -198,18 +200,17 @@ pub fn solve(v: &ValidPanTilt) -> Result<PanTiltResult, AnalysisError> {
         let e = err(format!("ik[{i}]"));
         let th = m.inverse_kinematics(x).map_err(&e)?;
         let js = m.joint_state(x).map_err(&e)?;
-        let jac = if x.gamma.to_degrees() < POLE_WARNING_DEG {
-            None
-        } else {
-            Some(m.inverse_jacobian(x).map_err(&e)?)
-        };
+        // Rows of ∂θ_a/∂(γ, φ): the actuated joints' gradients (what `inverse_jacobian` gives,
+        // which refuses γ = 0; here the vanishing φ column is shown and flagged instead).
+        let jac = g.actuated.map(|a| [js.grad_x[a][0], js.grad_x[a][1]]);
         ik.push(IkRow {
             gamma_deg: x.gamma.to_degrees(),
             phi_deg: x.phi.to_degrees(),
             theta_deg: th.map(f64::to_degrees),
             joints_deg: js.q.map(f64::to_degrees),
-            inverse_jacobian: jac.map(|j| [[j[(0, 0)], j[(0, 1)]], [j[(1, 0)], j[(1, 1)]]]),
-            inverse_jacobian_det: jac.map(|j| j.determinant()),
+            inverse_jacobian: jac,
+            inverse_jacobian_det: jac[0][0] * jac[1][1] - jac[0][1] * jac[1][0],
+            pole_singular: x.gamma.to_degrees() < POLE_WARNING_DEG,
         });
     }
     let mut fk = Vec::with_capacity(v.fk.len());
@@ -294,12 +295,12 @@ pub fn warnings(r: &PanTiltResult) -> Vec<String> {
     let near_pole: Vec<String> =
         r.ik.iter()
             .enumerate()
-            .filter(|(_, q)| q.inverse_jacobian.is_none())
+            .filter(|(_, q)| q.pole_singular)
             .map(|(i, _)| format!("ik[{i}]"))
             .collect();
     if !near_pole.is_empty() {
         w.push(format!(
-            "{} within {POLE_WARNING_DEG}° of γ = 0, where the (γ, φ) inverse Jacobian is singular (φ undefined): it is reported as null there (joint angles and torques are unaffected)",
+            "{} within {POLE_WARNING_DEG}° of γ = 0, where the (γ, φ) inverse Jacobian is singular (φ undefined): its determinant there is (nearly) zero and `pole_singular` is set (joint angles and torques are unaffected)",
             near_pole.join(", ")
         ));
     }
@@ -355,7 +356,11 @@ pub fn report(r: &PanTiltResult) -> Report {
                 sig(q.phi_deg, 6),
                 format!("{:.4}", q.theta_deg[0]),
                 format!("{:.4}", q.theta_deg[1]),
-                q.inverse_jacobian_det.map_or("singular (γ ≈ 0)".into(), |d| sig(d, 5)),
+                if q.pole_singular {
+                    format!("{} (singular: γ ≈ 0)", sig(q.inverse_jacobian_det, 3))
+                } else {
+                    sig(q.inverse_jacobian_det, 5)
+                },
             ]);
         }
         md += &t.render();
