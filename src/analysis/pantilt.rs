@@ -83,7 +83,7 @@ pub struct PathRow {
     /// Joint rotations J1–J8 from home, degrees.
     pub joints_deg: [f64; JOINTS],
     /// Joint rates, degrees/s.
-    pub joint_rates_deg_s: [f64; JOINTS],
+    pub joint_rates_deg_per_s: [f64; JOINTS],
     /// Actuator torques with the springs only, N·mm.
     pub torque_undamped: [f64; 2],
     /// Actuator torques with springs and dampers, N·mm.
@@ -244,7 +244,7 @@ pub fn solve(v: &ValidPanTilt) -> Result<PanTiltResult, AnalysisError> {
                 gamma_deg: s.sample.pose.gamma * deg,
                 phi_deg: s.sample.pose.phi * deg,
                 joints_deg: s.q.map(|q| q * deg),
-                joint_rates_deg_s: s.q_rate.map(|q| q * deg),
+                joint_rates_deg_per_s: s.q_rate.map(|q| q * deg),
                 torque_undamped: s.torque_stiffness,
                 torque_damped: s.torque_total(),
             })
@@ -383,7 +383,7 @@ pub fn report(r: &PanTiltResult) -> Report {
         csv += &format!(",{n}_deg");
     }
     for n in JOINT_NAMES {
-        csv += &format!(",{n}_rate_deg_s");
+        csv += &format!(",{n}_rate_deg_per_s");
     }
     csv += ",torque1_undamped_Nmm,torque2_undamped_Nmm,torque1_damped_Nmm,torque2_damped_Nmm\n";
     if let Some(p) = &r.path {
@@ -416,7 +416,7 @@ pub fn report(r: &PanTiltResult) -> Report {
         md += &t.render();
         for row in &p.rows {
             let mut line = format!("{},{},{}", row.t, row.gamma_deg, row.phi_deg);
-            for v in row.joints_deg.iter().chain(row.joint_rates_deg_s.iter()) {
+            for v in row.joints_deg.iter().chain(row.joint_rates_deg_per_s.iter()) {
                 line += &format!(",{v}");
             }
             for v in row.torque_undamped.iter().chain(row.torque_damped.iter()) {
