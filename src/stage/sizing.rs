@@ -11,6 +11,7 @@
 //! reach the joint rotations of the kinematic requirement sweep (revolute Δα, spherical βm, βn,
 //! βl over z = ±z_travel, ψ, θ = ±tilt) below the allowable stress.
 
+use crate::fem::SolverCache;
 use crate::hinge::HingeSpec;
 use crate::kinematics::{workspace, PoseBox};
 use crate::stage::{Drive, StageDesign, StageError};
@@ -109,6 +110,15 @@ pub struct Responses {
 
 /// Evaluates a design: one linear solve of a unit pure-z stroke set.
 pub fn evaluate(d: &StageDesign, demand: &RotationDemand) -> Result<Responses, StageError> {
+    evaluate_with(&mut SolverCache::new(), d, demand)
+}
+
+/// [`evaluate`] with the caller's solver cache (designs of one loop share the topology).
+pub fn evaluate_with(
+    cache: &mut SolverCache,
+    d: &StageDesign,
+    demand: &RotationDemand,
+) -> Result<Responses, StageError> {
     let stage = d.build()?;
     let j = d
         .prs
@@ -118,7 +128,9 @@ pub fn evaluate(d: &StageDesign, demand: &RotationDemand) -> Result<Responses, S
             message: e.to_string(),
         })?;
     let s = [j[(0, 0)], j[(1, 0)], j[(2, 0)]];
-    let r = stage.solve(&[("unit_z".to_string(), Drive::Strokes(s))])?.remove(0);
+    let r = stage
+        .solve_with(cache, &[("unit_z".to_string(), Drive::Strokes(s))])?
+        .remove(0);
     let z = r.platform.z;
     let s_mean = (s[0] + s[1] + s[2]) / 3.0;
     let eta = r.forces.iter().sum::<f64>() / s_mean;
@@ -199,12 +211,12 @@ pub fn sensitivity(
     let r0 = evaluate(base, demand).map_err(|e| format!("base design: {e}"))?;
     let rows: Result<Vec<SensitivityRow>, String> = (0..5)
         .into_par_iter()
-        .map(|k| {
+        .map_init(SolverCache::new, |cache, k| {
             let name = PARAMETERS[k];
-            let eval = |f: f64| {
+            let mut eval = |f: f64| {
                 let mut p = p0;
                 p[k] *= f;
-                evaluate(&with_params(base, &p), demand).map_err(|e| format!("{name} × {f}: {e}"))
+                evaluate_with(cache, &with_params(base, &p), demand).map_err(|e| format!("{name} × {f}: {e}"))
             };
             let r1 = eval(1.0 + increment)?;
             let (rp, rm) = (eval(1.01)?, eval(0.99)?);
@@ -344,8 +356,14 @@ struct Eval {
     merit_eta: f64,
 }
 
-fn eval_point(base: &StageDesign, p: &Params, demand: &RotationDemand, req: &Requirements) -> Eval {
-    match evaluate(&with_params(base, p), demand) {
+fn eval_point(
+    cache: &mut SolverCache,
+    base: &StageDesign,
+    p: &Params,
+    demand: &RotationDemand,
+    req: &Requirements,
+) -> Eval {
+    match evaluate_with(cache, &with_params(base, p), demand) {
         Ok(r) if r.eta.is_finite() && r.z_at_allowable.is_finite() && r.t_ratio.is_finite() => {
             let viol = constraints(&r, req)
                 .iter()
@@ -413,7 +431,9 @@ pub fn optimise(
         .collect();
     let evals: Vec<Eval> = pts
         .par_iter()
-        .map(|u| eval_point(&base, &to_p(u), &demand, req))
+        .map_init(SolverCache::new, |cache, u| {
+            eval_point(cache, &base, &to_p(u), &demand, req)
+        })
         .collect();
     let mut history: Vec<HistoryEntry> = evals.iter().map(|e| entry("sample", e)).collect();
     let mut evaluations = evals.len();
@@ -424,7 +444,8 @@ pub fn optimise(
         }
     }
     let mut u = pts[best_i];
-    let mut best = eval_point(&base, &to_p(&u), &demand, req);
+    let mut cache = SolverCache::new();
+    let mut best = eval_point(&mut cache, &base, &to_p(&u), &demand, req);
     evaluations += 1;
     let merit = |e: &Eval, mu: f64| -> f64 {
         match &e.r {
@@ -439,20 +460,20 @@ pub fn optimise(
     for mu in [10.0, 100.0, 1e3, 1e4] {
         let mut step = 0.1;
         for _ in 0..15 {
-            let cur = eval_point(&base, &to_p(&u), &demand, req);
+            let cur = eval_point(&mut cache, &base, &to_p(&u), &demand, req);
             let f0 = merit(&cur, mu);
             if !f0.is_finite() {
                 break;
             }
             let grads: Vec<f64> = (0..5)
                 .into_par_iter()
-                .map(|k| {
+                .map_init(SolverCache::new, |cache, k| {
                     let mut up = u;
                     let mut um = u;
                     up[k] = (up[k] + h).min(1.0);
                     um[k] = (um[k] - h).max(0.0);
-                    let fp = merit(&eval_point(&base, &to_p(&up), &demand, req), mu);
-                    let fm = merit(&eval_point(&base, &to_p(&um), &demand, req), mu);
+                    let fp = merit(&eval_point(cache, &base, &to_p(&up), &demand, req), mu);
+                    let fm = merit(&eval_point(cache, &base, &to_p(&um), &demand, req), mu);
                     if fp.is_finite() && fm.is_finite() && up[k] > um[k] {
                         (fp - fm) / (up[k] - um[k])
                     } else {
@@ -468,7 +489,7 @@ pub fn optimise(
             let mut moved = false;
             while step > 1e-4 {
                 let trial: [f64; 5] = std::array::from_fn(|k| (u[k] - step * grads[k] / gn).clamp(0.0, 1.0));
-                let e = eval_point(&base, &to_p(&trial), &demand, req);
+                let e = eval_point(&mut cache, &base, &to_p(&trial), &demand, req);
                 evaluations += 1;
                 if merit(&e, mu) < f0 {
                     u = trial;
