@@ -3,8 +3,10 @@
 //! parallel pan-tilt platform", Meccanica 51 (2016) 1559–1570, doi:10.1007/s11012-015-0116-1.
 //! Results in degrees, N·mm and s.
 
-use super::{AnalysisError, Report};
-use crate::case::pantilt::ValidPanTilt;
+use super::kind::{Analysis, Ctx};
+use super::{AnalysisError, Report, RunError};
+use crate::case::pantilt::{PanTiltCase, ValidPanTilt};
+use crate::case::{Case, CaseError};
 use crate::kinematics::pantilt::{PanTilt, PanTiltError, PathState, JOINTS};
 use crate::report::markdown::{sig, Table};
 use crate::report::svg;
@@ -482,4 +484,36 @@ pub fn plots(r: &PanTiltResult) -> Vec<(String, Vec<u8>)> {
         svg::scatter("Actuator torques", "time (s)", "torque (N·mm)", &refs).into_bytes(),
     ));
     files
+}
+
+/// `pantilt`: the 8R pan-tilt PRBM.
+pub struct PanTiltKind;
+
+impl Analysis for PanTiltKind {
+    const KIND: &'static str = "pantilt";
+    type Case = PanTiltCase;
+    type Result = PanTiltResult;
+
+    fn case(case: &Case) -> Option<&Self::Case> {
+        match case {
+            Case::PanTilt(c) => Some(c),
+            _ => None,
+        }
+    }
+    fn check(case: &Self::Case) -> Result<(), CaseError> {
+        case.validate().map(|_| ())
+    }
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        let r = solve(&case.validate()?)?;
+        if ctx.with_files {
+            ctx.files.extend(plots(&r));
+        }
+        Ok(r)
+    }
+    fn report(r: &Self::Result) -> Report {
+        report(r)
+    }
+    fn result_warnings(_case: &Self::Case, r: &Self::Result) -> Vec<String> {
+        warnings(r)
+    }
 }

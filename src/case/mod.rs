@@ -46,6 +46,9 @@ pub enum Case {
     Design(design::DesignCase),
     /// Natural frequencies and mode shapes of a generic beam/shell model.
     Modal(mesh::ModalCase),
+    /// Pseudo-rigid-body model of the 8R compliant parallel pan-tilt (Yu, Lu and Hao (2016)).
+    #[serde(rename = "pantilt")]
+    PanTilt(pantilt::PanTiltCase),
 }
 
 /// The `analysis` names this build understands.
@@ -59,6 +62,7 @@ pub const ANALYSES: &[&str] = &[
     "static",
     "modal",
     "sweep",
+    "pantilt",
 ];
 
 impl Case {
@@ -74,6 +78,7 @@ impl Case {
             Case::Sensitivity(_) => "sensitivity",
             Case::Design(_) => "design",
             Case::Modal(_) => "modal",
+            Case::PanTilt(_) => "pantilt",
         }
     }
 }
@@ -181,6 +186,7 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
         "fem_vs_fkp" => Ok(Case::FemVsFkp(from_value(value, "")?)),
         "sensitivity" => Ok(Case::Sensitivity(from_value(value, "")?)),
         "design" => Ok(Case::Design(from_value(value, "")?)),
+        "pantilt" => Ok(Case::PanTilt(from_value(value, "")?)),
         "static" | "modal" => {
             unknown_model_field(map, &analysis)?;
             let mesh_name = match map.remove("mesh") {
