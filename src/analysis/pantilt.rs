@@ -270,12 +270,12 @@ pub fn solve(v: &ValidPanTilt) -> Result<PanTiltResult, AnalysisError> {
     };
     Ok(PanTiltResult {
         geometry: GeometryOut {
-            theta0_deg: g.theta0 * deg,
-            delta_deg: g.delta * deg,
+            theta0_deg: v.spec.theta0_deg,
+            delta_deg: v.spec.delta_deg,
             beta_deg: m.beta() * deg,
-            azimuths_deg: g.azimuths.map(|a| a * deg),
-            rr_limb: g.rr_limb + 1,
-            actuated: g.actuated.map(|a| a + 1),
+            azimuths_deg: v.spec.azimuths_deg,
+            rr_limb: v.spec.rr_limb,
+            actuated: v.spec.actuated,
             joints: joint_descriptions(m),
         },
         stiffness_per_deg: v.springs.stiffness.map(|k| k / deg),

@@ -222,6 +222,8 @@ pub const MAX_GAMMA_DEG: f64 = 80.0;
 pub struct ValidPanTilt {
     /// The mechanism.
     pub model: PanTilt,
+    /// Its geometry as given (degrees, 1-based limbs), for the echo in results.
+    pub spec: MechanismSpec,
     /// Joint springs and dampers (per radian).
     pub springs: JointSprings,
     /// Path samples (empty without a path).
@@ -427,6 +429,7 @@ impl PanTiltCase {
         }
         Ok(ValidPanTilt {
             model,
+            spec: self.mechanism.clone(),
             springs,
             path,
             ik,
