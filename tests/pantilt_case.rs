@@ -62,11 +62,14 @@ fn bundled_case_reproduces_the_worked_example_and_tables_4_and_5() {
 }
 
 #[test]
-fn pole_query_is_flagged_and_its_jacobian_null() {
-    // The bundled case's second IK query is the home pose γ = 0: the (γ, φ) inverse Jacobian of
-    // Yu et al. Eq. (17) is singular there (zero φ column), flagged, and a warning names the
-    // query; the γ = 10° query's Jacobian is regular.
-    let r = run(bundled());
+fn pole_query_is_flagged_and_warned() {
+    // An IK query at the home pose γ = 0: the (γ, φ) inverse Jacobian of Yu et al. Eq. (17) is
+    // singular there (zero φ column), flagged, and a warning names the query; the γ = 10° query's
+    // Jacobian is regular. (The bundled case has no such query: bundled results carry no
+    // warnings.)
+    let r = run(json!({"analysis": "pantilt", "ik": [
+        {"gamma_deg": 10, "phi_deg": 45}, {"gamma_deg": 0, "phi_deg": 0}]}));
+    assert!(warnings(&run(bundled())).is_empty());
     assert!(r.ik[1].pole_singular && r.ik[1].inverse_jacobian_det == 0.0);
     assert!(r.ik[1].inverse_jacobian.iter().all(|row| row[1] == 0.0));
     assert!(!r.ik[0].pole_singular && r.ik[0].inverse_jacobian_det.abs() > 1e-3);
