@@ -35,6 +35,10 @@ pub struct FemVsFkpResult {
     pub fem_nonlinear_note: String,
     /// Idealisations.
     pub model: Vec<String>,
+    /// Solid-calibration warnings of the validated design's hinges (reported with the case's
+    /// warnings, not in this object).
+    #[serde(skip)]
+    pub calibration_warnings: Vec<String>,
 }
 
 fn diff(a: PoseOut, b: PoseOut) -> PoseOut {
@@ -50,8 +54,8 @@ fn diff(a: PoseOut, b: PoseOut) -> PoseOut {
 
 /// Runs a `fem_vs_fkp` case.
 pub fn run_fem_vs_fkp(case: &FemVsFkpCase) -> Result<FemVsFkpResult, RunError> {
-    let design = case.validate()?;
-    let s = design.build().map_err(fem_err)?;
+    let design = case.validated()?;
+    let s = design.build();
     let drives: Vec<(String, Drive)> = case
         .strokes
         .iter()
@@ -86,6 +90,7 @@ pub fn run_fem_vs_fkp(case: &FemVsFkpCase) -> Result<FemVsFkpResult, RunError> {
             m[0] = "fem_linear: linear statics, small displacements; fem_nonlinear: geometrically nonlinear statics of the same model (co-rotational legs and hinges, rigid platform exact under finite rotation)".to_string();
             m
         },
+        calibration_warnings: crate::case::stage::stage_warnings(&design),
         fem_nonlinear_note: format!(
             "co-rotational FEM (large rotations, small strains), same hinge and leg model as the linear FEM, Newton-Raphson in {steps} stroke steps; platform angles from its rotation matrix R = Ry(θ)·Rx(ψ)·Rz(φ)"
         ),

@@ -116,10 +116,8 @@ impl Analysis for Stage {
     fn report(r: &Self::Result) -> Report {
         stage_report::stage_report(r)
     }
-    fn case_warnings(case: &Self::Case) -> Vec<String> {
-        case.validate()
-            .map(|(d, _)| warn::stage_warnings(&d))
-            .unwrap_or_default()
+    fn result_warnings(_case: &Self::Case, r: &Self::Result) -> Vec<String> {
+        r.calibration_warnings.clone()
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         one_material(&case.material)
@@ -173,8 +171,8 @@ impl Analysis for FemVsFkp {
     fn report(r: &Self::Result) -> Report {
         fem_vs_fkp::fem_vs_fkp_report(r).0
     }
-    fn case_warnings(case: &Self::Case) -> Vec<String> {
-        case.validate().map(|d| warn::stage_warnings(&d)).unwrap_or_default()
+    fn result_warnings(_case: &Self::Case, r: &Self::Result) -> Vec<String> {
+        r.calibration_warnings.clone()
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         one_material(&case.material)

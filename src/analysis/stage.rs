@@ -125,6 +125,10 @@ pub struct StageResult {
     /// Natural frequencies and shapes (when the case asks for `modes`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub modes: Option<Vec<super::modal::ModeRow>>,
+    /// Solid-calibration warnings of the validated design's hinges (reported with the case's
+    /// warnings, not in this object).
+    #[serde(skip)]
+    pub calibration_warnings: Vec<String>,
 }
 
 fn row(r: &StageCaseResult, allowable: f64) -> StageRow {
@@ -151,7 +155,7 @@ fn row(r: &StageCaseResult, allowable: f64) -> StageRow {
 
 pub(super) fn fem_err(e: stage::StageError) -> RunError {
     match e {
-        stage::StageError::Geometry { .. } => RunError::Case(stage_error(e)),
+        stage::StageError::Geometry { .. } | stage::StageError::Hinge { .. } => RunError::Case(stage_error(e)),
         stage::StageError::Fem(f) => RunError::Analysis(AnalysisError::new("stage", f.to_string())),
     }
 }
@@ -206,8 +210,8 @@ pub fn run_stage_with(
     files: bool,
     cache: &mut crate::fem::SolverCache,
 ) -> Result<(StageResult, super::Files), RunError> {
-    let (design, mut drives) = case.validate()?;
-    let s = design.build().map_err(fem_err)?;
+    let (design, mut drives) = case.validated()?;
+    let s = design.build();
     let allowable = design.material.allowable;
     // One linear pass: the user's cases, a unit force on every actuator (reach at the allowable)
     // and a unit pure-z stroke set (structural stiffness), plus the platform compliance.
@@ -291,6 +295,7 @@ pub fn run_stage_with(
             }
             None => None,
         },
+        calibration_warnings: crate::case::stage::stage_warnings(&design),
     };
     Ok((result, out_files))
 }

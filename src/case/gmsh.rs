@@ -17,10 +17,11 @@
 //! densely in file order.
 
 use super::error::CaseError;
-use super::mesh::{DofName, ElementSpec, MeshSpec, SupportSpec};
+use super::mesh::load_shapes::DofName;
+use super::mesh::shapes::{ElementSpec, MeshSpec, SupportSpec};
 use std::collections::{BTreeMap, HashMap};
 
-pub use super::mesh::{GmshMapping, GroupSpec};
+pub use super::mesh::shapes::{GmshMapping, GroupSpec};
 
 struct Lines<'a> {
     it: std::iter::Enumerate<std::str::Lines<'a>>,
@@ -320,6 +321,11 @@ pub fn parse_msh_traced(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, 
             skipped += 1;
             continue;
         }
+        if matches!((e.kind, nodes.len()), (15, 1) | (1, 2) | (2, 3) | (3, 4)) {
+            for &(gname, _) in &groups {
+                spec.group_cells.entry(gname.clone()).or_default().push(nodes.clone());
+            }
+        }
         for &(gname, g) in &groups {
             if !g.fix.is_empty() {
                 for &n in &nodes {
@@ -374,7 +380,12 @@ pub fn parse_msh_traced(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, 
     for (node, mut fix) in fixed {
         fix.sort_by_key(|d| *d as u8);
         fix.dedup();
-        spec.supports.push(SupportSpec { node, fix });
+        spec.supports.push(SupportSpec {
+            node,
+            fix,
+            frame: None,
+            axis: None,
+        });
     }
     let notes = vec![format!(
         "gmsh: {} nodes, {} elements built, {} skipped (no mapped group, or points); triangles as degenerate quads",

@@ -21,6 +21,7 @@ pub mod element;
 pub mod elements;
 pub mod error;
 pub mod lattice;
+pub mod loads;
 pub mod mass;
 pub mod modal;
 pub mod model;
