@@ -2,6 +2,7 @@
 //! joint rotations, Jacobians and the requirement sweep.
 
 pub mod prs;
+pub mod prs_stiffness;
 pub mod workspace;
 
 pub use prs::{FkpSolution, IkpSolution, KinematicsError, Pose, Prs};
