@@ -723,36 +723,62 @@ pub enum MapMetric {
 impl MapMetric {
     /// Evaluates the metric; `None` when it is unbounded (rigid legs).
     pub fn eval(&self, ps: &PoseStiffness, length: f64) -> Option<f64> {
-        match *self {
+        eval_metrics(std::slice::from_ref(self), ps, length)[0]
+    }
+}
+
+/// Evaluates up to 8 metrics at one pose, each eigen-decomposition at most once.
+fn eval_metrics(metrics: &[MapMetric], ps: &PoseStiffness, length: f64) -> [Option<f64>; 8] {
+    let mut out = [None; 8];
+    let mut full: Option<(f64, f64)> = None;
+    let mut indep: Option<(f64, f64)> = None;
+    for (o, m) in out.iter_mut().zip(metrics) {
+        *o = match *m {
             MapMetric::Diagonal(i) => ps.stiffness.map(|k| k[(i, i)]),
             MapMetric::Directional(i) => ps.directional(i),
             MapMetric::LambdaMin | MapMetric::LambdaMax => {
-                // Eigenvalues of K̃ are the reciprocals of those of C̃ = T⁻¹CT⁻¹; using C keeps
-                // rigid legs (λ = ∞) out.
-                let mut s = Matrix6::<f64>::identity();
-                for j in 3..6 {
-                    s[(j, j)] = length;
-                }
-                let cs = s * ps.compliance * s;
-                let ev = SymmetricEigen::new(0.5 * (cs + cs.transpose())).eigenvalues;
-                let (lo, hi) = ev
-                    .iter()
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
-                match self {
-                    MapMetric::LambdaMin => (hi > 0.0).then(|| 1.0 / hi),
-                    _ => (lo > 1e-300).then(|| 1.0 / lo),
+                let (lo, hi) = *full.get_or_insert_with(|| {
+                    // Eigenvalues of K̃ are the reciprocals of those of C̃ = T⁻¹CT⁻¹; using C
+                    // keeps rigid legs (λ = ∞) out.
+                    let mut cs = ps.compliance;
+                    for j in 0..6 {
+                        for k in 0..6 {
+                            let f = if j >= 3 { length } else { 1.0 } * if k >= 3 { length } else { 1.0 };
+                            cs[(j, k)] *= f;
+                        }
+                    }
+                    let ev = cs.symmetric_eigenvalues();
+                    ev.iter()
+                        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)))
+                });
+                if matches!(m, MapMetric::LambdaMin) {
+                    (hi > 0.0).then(|| 1.0 / hi)
+                } else {
+                    (lo > 1e-300).then(|| 1.0 / lo)
                 }
             }
             MapMetric::IndependentLambdaMin | MapMetric::IndependentLambdaMax => {
-                let e = scaled_eigen(&ps.independent, 1, length);
-                Some(if matches!(self, MapMetric::IndependentLambdaMin) {
-                    e.values[0]
+                let (lo, hi) = *indep.get_or_insert_with(|| {
+                    let mut k = ps.independent;
+                    for j in 0..3 {
+                        for c in 0..3 {
+                            let f = if j >= 1 { 1.0 / length } else { 1.0 } * if c >= 1 { 1.0 / length } else { 1.0 };
+                            k[(j, c)] *= f;
+                        }
+                    }
+                    let ev = k.symmetric_eigenvalues();
+                    ev.iter()
+                        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)))
+                });
+                Some(if matches!(m, MapMetric::IndependentLambdaMin) {
+                    lo
                 } else {
-                    e.values[2]
+                    hi
                 })
             }
-        }
+        };
     }
+    out
 }
 
 /// One cell of a stiffness map.
@@ -832,9 +858,7 @@ pub fn map(
                 cell.py = ps.state.py;
                 cell.phi = ps.state.phi;
                 cell.ok = true;
-                for (v, m) in cell.values.iter_mut().zip(metrics) {
-                    *v = m.eval(&ps, length);
-                }
+                cell.values = eval_metrics(metrics, &ps, length);
             }
             cell
         })
