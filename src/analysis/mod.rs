@@ -6,6 +6,7 @@ pub mod finite;
 pub mod hinge;
 pub mod kinematics;
 pub mod modal;
+pub mod prs_stiffness;
 pub mod stage;
 pub mod vtu;
 
