@@ -5,11 +5,12 @@
 //! Technical Journal, UET Taxila; H. Nigatu et al., "The Stiffness of 3-PRS PM Across Parasitic and
 //! Orientational Workspace"; X. Han, Y. Wang, J. Shi, "Stiffness Modeling of 3-PRS Mechanism".
 
-use flexfem::analysis::prs_stiffness::{files, report, solve, PrsStiffnessCase, PrsStiffnessResult};
+use flexfem::analysis::prs_stiffness::{files, report, solve, PrsStiffnessResult};
 use flexfem::analysis::RunError;
+use flexfem::case::prs_stiffness::PrsStiffnessCase;
 use serde_json::{json, Value};
 
-const DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/prs_stiffness");
+const DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/cases");
 
 fn load(name: &str) -> Value {
     let text = std::fs::read_to_string(format!("{DIR}/{name}.json")).unwrap();
@@ -35,7 +36,7 @@ fn khan_case_reproduces_the_reconstruction() {
     assert!(r.poses[0].stiffness.is_none());
     assert!(r.poses[0].directional[2].unwrap() > 0.0);
     let m = r.map.as_ref().unwrap();
-    assert_eq!(m.cells.len(), 31 * 31);
+    assert_eq!(m.cells.len(), 21 * 21);
     let w = m.workspace.as_ref().unwrap();
     assert!(w.fraction > 0.0 && w.fraction <= 1.0);
 }

@@ -12,6 +12,7 @@ pub mod kinematics;
 pub mod limits;
 pub mod material;
 pub mod mesh;
+pub mod prs_stiffness;
 pub mod stage;
 pub mod sweep;
 
@@ -45,6 +46,8 @@ pub enum Case {
     Design(design::DesignCase),
     /// Natural frequencies and mode shapes of a generic beam/shell model.
     Modal(mesh::ModalCase),
+    /// Jacobian stiffness of a 3-PRS with compliant legs.
+    PrsStiffness(prs_stiffness::PrsStiffnessCase),
 }
 
 /// The `analysis` names this build understands.
@@ -58,6 +61,7 @@ pub const ANALYSES: &[&str] = &[
     "static",
     "modal",
     "sweep",
+    "prs_stiffness",
 ];
 
 impl Case {
@@ -73,6 +77,7 @@ impl Case {
             Case::Sensitivity(_) => "sensitivity",
             Case::Design(_) => "design",
             Case::Modal(_) => "modal",
+            Case::PrsStiffness(_) => "prs_stiffness",
         }
     }
 }
@@ -180,6 +185,7 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
         "fem_vs_fkp" => Ok(Case::FemVsFkp(from_value(value, "")?)),
         "sensitivity" => Ok(Case::Sensitivity(from_value(value, "")?)),
         "design" => Ok(Case::Design(from_value(value, "")?)),
+        "prs_stiffness" => Ok(Case::PrsStiffness(from_value(value, "")?)),
         "static" | "modal" => {
             unknown_model_field(map, &analysis)?;
             let mesh_name = match map.remove("mesh") {
