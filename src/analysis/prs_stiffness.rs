@@ -375,29 +375,29 @@ pub fn report(r: &PrsStiffnessResult) -> Report {
                 100.0 * w.fraction
             );
         }
-        csv += "psi_deg,theta_deg,reachable,px_mm,py_mm,phi_deg";
-        for name in &m.metrics {
-            csv += &format!(",{name}");
-        }
-        if m.workspace.is_some() {
-            csv += ",in_workspace";
+        // `kind`: reachable, unreachable, or workspace (reachable and in the stiffness-limited
+        // workspace); metric columns carry their unit.
+        csv += "psi_deg,theta_deg,kind,px_mm,py_mm,phi_deg";
+        for (name, unit) in m.metrics.iter().zip(&m.units) {
+            let suffix = if unit == "N/mm" { "N_per_mm" } else { "Nmm_per_rad" };
+            csv += &format!(",{name}_{suffix}");
         }
         csv += "\n";
         for c in &m.cells {
-            csv += &format!(
-                "{},{},{},{},{},{}",
-                c.psi_deg, c.theta_deg, c.reachable, c.px, c.py, c.phi_deg
-            );
-            for v in &c.values {
+            let kind = match (c.reachable, c.in_workspace) {
+                (false, _) => "unreachable",
+                (true, Some(true)) => "workspace",
+                (true, _) => "reachable",
+            };
+            csv += &format!("{},{},{kind},{},{},{}", c.psi_deg, c.theta_deg, c.px, c.py, c.phi_deg);
+            for j in 0..m.metrics.len() {
+                let v = c.values.get(j).copied().flatten();
                 csv += &format!(",{}", v.map_or(String::new(), |x| x.to_string()));
-            }
-            if let Some(b) = c.in_workspace {
-                csv += &format!(",{b}");
             }
             csv += "\n";
         }
     } else {
-        csv += "pz_mm,psi_deg,theta_deg,phi_deg,px_mm,py_mm,s1_mm,s2_mm,s3_mm,lambda_min_indep,lambda_max_indep\n";
+        csv += "pz_mm,psi_deg,theta_deg,phi_deg,px_mm,py_mm,s1_mm,s2_mm,s3_mm,lambda_min_independent_N_per_mm,lambda_max_independent_N_per_mm\n";
         for p in &r.poses {
             csv += &format!(
                 "{},{},{},{},{},{},{},{},{},{},{}\n",
@@ -428,13 +428,16 @@ pub fn files(r: &PrsStiffnessResult) -> Files {
             m.cells
                 .iter()
                 .filter_map(|c| {
-                    c.values[j].map(|v| {
+                    c.values.get(j).copied().flatten().map(|v| {
                         let (x, y) = if par { (c.px, c.py) } else { (c.psi_deg, c.theta_deg) };
                         (x, y, v, c.in_workspace.unwrap_or(true))
                     })
                 })
                 .collect()
         };
+        if pts(false).is_empty() {
+            continue;
+        }
         let title = format!("{name} at p_z = {} mm", m.pz);
         out.push((
             format!("prs_stiffness_{name}.svg"),
