@@ -651,7 +651,7 @@ impl PrsStiffness {
         } else {
             self.layout.wrench_matrix(&st, &st.p())?
         };
-        let jac = (gp.transpose() * t).fixed_view::<3, 3>(0, 0).into_owned();
+        let jac = gp.fixed_columns::<3>(0).transpose() * t;
         let mut cl = [0.0; 6];
         for i in 0..3 {
             let [ca, cc] = self.leg.compliances(&self.layout, &st, i)?;
@@ -664,12 +664,19 @@ impl PrsStiffness {
                 "the 6×6 wrench matrix G is singular (constraint or actuation singularity)".into(),
             )
         })?;
-        let cdiag = Matrix6::from_diagonal(&Vector6::from_row_slice(&cl));
-        let mut compliance = ginv.transpose() * cdiag * ginv;
+        // C = G⁻ᵀ·diag(c)·G⁻¹ and K = G·diag(1/c)·Gᵀ, the diagonal applied by scaling rows/columns.
+        let mut scaled = ginv;
+        for (k, c) in cl.iter().enumerate() {
+            scaled.row_mut(k).scale_mut(*c);
+        }
+        let mut compliance = ginv.transpose() * scaled;
         compliance = 0.5 * (compliance + compliance.transpose());
         let stiffness = if cl.iter().all(|&c| c > 0.0) {
-            let kd = Matrix6::from_diagonal(&Vector6::from_iterator(cl.iter().map(|c| 1.0 / c)));
-            let k = g * kd * g.transpose();
+            let mut gs = g;
+            for (k, c) in cl.iter().enumerate() {
+                gs.column_mut(k).scale_mut(1.0 / c);
+            }
+            let k = gs * g.transpose();
             Some(0.5 * (k + k.transpose()))
         } else {
             None
