@@ -327,10 +327,18 @@ fn sprint_kzz_is_three_ka_everywhere() {
     // The stiffness-limited workspace keeps the centre and loses cells as the threshold rises.
     let (_, all) = stiffness_limited(&cells, 1, 0.0);
     assert_eq!(all, 1.0);
+    // λ_min (ℓ = 1 m) is largest at the untilted centre (Nigatu et al. Figs. 4–9: stiffness peaks at
+    // zero orientation): a threshold just below it keeps only the centre cell.
     let centre = cells[220].values[1].unwrap();
     let (mask, frac) = stiffness_limited(&cells, 1, 0.999 * centre);
-    assert!(frac < 1.0);
-    assert!(mask[220] || cells.iter().any(|c| c.values[1].unwrap() > centre));
+    assert!(mask[220], "the centre cell must pass");
+    assert_eq!(
+        mask.iter().filter(|&&b| b).count(),
+        1,
+        "only the centre cell, fraction {frac}"
+    );
+    let (_, half) = stiffness_limited(&cells, 1, 0.5 * centre);
+    assert!(half > 1.0 / 441.0 && half < 1.0, "half-threshold fraction {half}");
 }
 
 /// Han et al. Tables I–III. Readings we had to choose (not published): vertical rails with the
@@ -459,3 +467,27 @@ const PIN_HAN_IZ: [f64; 3] = [0.35299517204290703, 0.35343316604005526, 0.356410
 
 /// Our Han et al. deformations (mm) for β = 0, 5, 10° under the readings of `han`.
 const PIN_HAN: [f64; 3] = [0.10885477998706646, 0.10503016898976353, 0.10109718806903639];
+
+/// The stiffness about a tool point Q = P + R·t is the rigid-body transfer of the one about P
+/// (Nigatu et al. §VI: "adjusted through the 6×6 adjoint"): a wrench [f; m] at Q is [f; m + r × f]
+/// at P, and the twist at Q is [δp_P + δα × r; δα], r = Q − P.
+#[test]
+fn tool_point_compliance_is_the_rigid_transfer_of_the_centre_one() {
+    let m = han(8.64e6);
+    let tool = Vector3::new(20.0, -35.0, -150.0);
+    let (pz, psi, theta) = (-400.0, deg(3.0), deg(7.0));
+    let at_p = m.at(pz, psi, theta, &Vector3::zeros()).unwrap();
+    let at_q = m.at(pz, psi, theta, &tool).unwrap();
+    let r = at_q.point - at_p.state.p();
+    assert!((r - at_p.state.r * tool).norm() < 1e-12);
+    let (f, mq) = (Vector3::new(1e3, -2e3, 5e3), Vector3::new(3e4, 1e4, -2e4));
+    let wp = Vector6::from_iterator(f.iter().chain((mq + r.cross(&f)).iter()).copied());
+    let dp = at_p.deformation(&wp);
+    let da = Vector3::new(dp[3], dp[4], dp[5]);
+    let want = Vector3::new(dp[0], dp[1], dp[2]) + da.cross(&r);
+    let dq = at_q.deformation(&Vector6::from_iterator(f.iter().chain(mq.iter()).copied()));
+    assert!((Vector3::new(dq[0], dq[1], dq[2]) - want).norm() < 1e-9 * want.norm());
+    assert!((Vector3::new(dq[3], dq[4], dq[5]) - da).norm() < 1e-9 * da.norm());
+    // The actuation Jacobian does not depend on the reference point.
+    assert!((at_q.jacobian - at_p.jacobian).norm() < 1e-12 * at_p.jacobian.norm());
+}

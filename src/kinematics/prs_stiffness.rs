@@ -37,16 +37,9 @@
 //!   `T = diag(1, 1, 1, 1/ℓ, 1/ℓ, 1/ℓ)` has all entries in N/mm; eigenvectors are given in y.
 //!   ℓ = 1000 mm (rotations in metres of arc per metre, i.e. SI units) reproduces Khan et al.
 
-use crate::kinematics::prs::{orientation, parasitic_phi};
+use crate::kinematics::prs::{orientation, parasitic_phi, XI};
 use nalgebra::{Matrix3, Matrix3x2, Matrix6, SymmetricEigen, Vector3, Vector6};
 use thiserror::Error;
-
-/// Leg plane angles ξᵢ, rad.
-const XI: [f64; 3] = [
-    0.0,
-    2.0 * std::f64::consts::FRAC_PI_3,
-    4.0 * std::f64::consts::FRAC_PI_3,
-];
 
 /// Errors of the stiffness model.
 #[derive(Debug, Error, Clone, PartialEq)]
