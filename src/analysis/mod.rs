@@ -10,6 +10,7 @@ pub mod kinds;
 pub mod kinematics;
 pub mod modal;
 pub mod pantilt;
+pub mod prs_stiffness;
 pub mod registry;
 pub mod stage;
 pub mod stage_report;

@@ -14,6 +14,7 @@ pub mod limits;
 pub mod material;
 pub mod mesh;
 pub mod pantilt;
+pub mod prs_stiffness;
 pub mod stage;
 pub mod sweep;
 
@@ -50,6 +51,8 @@ pub enum Case {
     /// Pseudo-rigid-body model of the 8R compliant parallel pan-tilt (Yu, Lu and Hao (2016)).
     #[serde(rename = "pantilt")]
     PanTilt(pantilt::PanTiltCase),
+    /// Jacobian stiffness of a 3-PRS with compliant legs.
+    PrsStiffness(prs_stiffness::PrsStiffnessCase),
 }
 
 /// The `analysis` names this build understands.
@@ -64,6 +67,7 @@ pub const ANALYSES: &[&str] = &[
     "modal",
     "sweep",
     "pantilt",
+    "prs_stiffness",
 ];
 
 impl Case {
@@ -80,6 +84,7 @@ impl Case {
             Case::Design(_) => "design",
             Case::Modal(_) => "modal",
             Case::PanTilt(_) => "pantilt",
+            Case::PrsStiffness(_) => "prs_stiffness",
         }
     }
 }
@@ -188,6 +193,7 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
         "sensitivity" => Ok(Case::Sensitivity(from_value(value, "")?)),
         "design" => Ok(Case::Design(from_value(value, "")?)),
         "pantilt" => Ok(Case::PanTilt(from_value(value, "")?)),
+        "prs_stiffness" => Ok(Case::PrsStiffness(from_value(value, "")?)),
         "static" => Ok(Case::Static(fem_case::parse_static(value, base)?)),
         "modal" => Ok(Case::Modal(fem_case::parse_modal(value, base)?)),
         other => Err(CaseError::value(
