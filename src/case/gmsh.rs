@@ -17,10 +17,11 @@
 //! densely in file order.
 
 use super::error::CaseError;
-use super::mesh::{DofName, ElementSpec, MeshSpec, SupportSpec};
+use super::mesh::load_shapes::DofName;
+use super::mesh::shapes::{ElementSpec, MeshSpec, SupportSpec};
 use std::collections::{BTreeMap, HashMap};
 
-pub use super::mesh::{GmshMapping, GroupSpec};
+pub use super::mesh::shapes::{GmshMapping, GroupSpec};
 
 struct Lines<'a> {
     it: std::iter::Enumerate<std::str::Lines<'a>>,

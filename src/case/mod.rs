@@ -6,6 +6,7 @@
 
 pub mod design;
 pub mod error;
+pub mod fem_case;
 pub mod gmsh;
 pub mod hinge;
 pub mod kinematics;
@@ -29,7 +30,7 @@ pub enum Case {
     /// 3-PRS rigid-body kinematics.
     Kinematics(kinematics::KinematicsCase),
     /// Linear (or nonlinear) statics of a generic beam model.
-    Static(mesh::StaticCase),
+    Static(fem_case::StaticCase),
     /// One flexure hinge in its blank.
     Hinge(hinge::HingeCase),
     /// Batch runs over a base case.
@@ -44,7 +45,7 @@ pub enum Case {
     /// Requirement-driven sizing of the stage hinges.
     Design(design::DesignCase),
     /// Natural frequencies and mode shapes of a generic beam/shell model.
-    Modal(mesh::ModalCase),
+    Modal(fem_case::ModalCase),
 }
 
 /// The `analysis` names this build understands.
@@ -180,233 +181,14 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
         "fem_vs_fkp" => Ok(Case::FemVsFkp(from_value(value, "")?)),
         "sensitivity" => Ok(Case::Sensitivity(from_value(value, "")?)),
         "design" => Ok(Case::Design(from_value(value, "")?)),
-        "static" | "modal" => {
-            unknown_model_field(map, &analysis)?;
-            let mesh_name = match map.remove("mesh") {
-                None | Some(Value::Null) => None,
-                Some(Value::String(s)) => Some(s),
-                Some(other) => return Err(CaseError::value("mesh", short(&other), "must be a file name (string)")),
-            };
-            let nonlinear = match if analysis == "static" {
-                map.remove("nonlinear")
-            } else {
-                None
-            } {
-                None | Some(Value::Null) => false,
-                Some(Value::Bool(b)) => b,
-                Some(other) => return Err(CaseError::value("nonlinear", short(&other), "must be true or false")),
-            };
-            let steps = match if analysis == "static" {
-                map.remove("steps")
-            } else {
-                None
-            } {
-                None | Some(Value::Null) => None,
-                Some(v) => match v.as_u64() {
-                    Some(n) => Some(usize::try_from(n).unwrap_or(usize::MAX)),
-                    None => {
-                        return Err(CaseError::value(
-                            "steps",
-                            short(&v),
-                            "must be a positive integer (number of load steps)",
-                        ))
-                    }
-                },
-            };
-            let steps = stage::check_steps("steps", steps, nonlinear)?;
-            let modal = if analysis == "modal" {
-                let modes = match map.remove("modes") {
-                    Some(Value::Number(n)) => match n.as_u64() {
-                        Some(k) if (1..=1000).contains(&k) => k as usize,
-                        _ => {
-                            return Err(CaseError::value(
-                                "modes",
-                                n.to_string(),
-                                "must be an integer from 1 to 1000",
-                            ))
-                        }
-                    },
-                    Some(other) => {
-                        return Err(CaseError::value(
-                            "modes",
-                            short(&other),
-                            "must be an integer from 1 to 1000",
-                        ))
-                    }
-                    None => {
-                        return Err(CaseError::new(
-                            "modes",
-                            "missing field `modes` (number of modes wanted)",
-                        ))
-                    }
-                };
-                let shift_hz = match map.remove("shift_hz") {
-                    None | Some(Value::Null) => None,
-                    Some(Value::Number(n)) => match n.as_f64() {
-                        Some(f) if f.is_finite() && f >= 0.0 => Some(f),
-                        _ => {
-                            return Err(CaseError::value(
-                                "shift_hz",
-                                n.to_string(),
-                                "must be a frequency ≥ 0, Hz",
-                            ))
-                        }
-                    },
-                    Some(other) => {
-                        return Err(CaseError::value(
-                            "shift_hz",
-                            short(&other),
-                            "must be a frequency ≥ 0, Hz",
-                        ))
-                    }
-                };
-                let shapes = match map.remove("shapes") {
-                    None | Some(Value::Null) => true,
-                    Some(Value::Bool(b)) => b,
-                    Some(other) => {
-                        return Err(CaseError::value(
-                            "shapes",
-                            short(&other),
-                            "must be true or false (mode shapes in the JSON result; modes.vtu always has them)",
-                        ))
-                    }
-                };
-                Some((modes, shift_hz, shapes))
-            } else {
-                None
-            };
-            let gmsh_map = match map.remove("gmsh") {
-                None | Some(Value::Null) => None,
-                Some(v) => Some(from_value::<gmsh::GmshMapping>(v, "gmsh")?),
-            };
-            check_node_count("nodes", &value)?;
-            let inline: mesh::MeshSpec = from_value(value, "")?;
-            let gmsh_kept = gmsh_map.clone();
-            let model = match &mesh_name {
-                Some(name) if name.ends_with(".msh") => {
-                    let Some(mapping) = gmsh_map.clone() else {
-                        return Err(CaseError::new(
-                            "gmsh",
-                            "a .msh mesh needs a `gmsh` mapping: {\"groups\": {\"NAME\": {\"section\", \"material\"} or {\"fix\": [...]}}}",
-                        ));
-                    };
-                    let file = resolve_file(name, base);
-                    let bytes = limits::read_file("mesh", "mesh file", &format!("\"{name}\""), &file)?;
-                    let text = gmsh::msh_text(&bytes)
-                        .map_err(|e| CaseError::new(e.path.clone(), format!("in {name}: {}", e.message)))?;
-                    let (from_file, _notes, origin) = gmsh::parse_msh_traced(text, &mapping)
-                        .map_err(|e| CaseError::new(e.path.clone(), format!("in {name}: {}", e.message)))?;
-                    let merged = mesh::MeshSpec::merge_inline(from_file, inline)?;
-                    // Errors in elements built from the .msh belong to the user's group mapping.
-                    merged
-                        .build_model(false)
-                        .map_err(|e| gmsh::group_error(e, &origin, name))?;
-                    merged
-                }
-                Some(_) if gmsh_map.is_some() => {
-                    return Err(CaseError::new(
-                        "gmsh",
-                        "a `gmsh` mapping is only used with a .msh mesh file",
-                    ))
-                }
-                Some(name) => {
-                    let mut mv = read_json("mesh", name, base)?;
-                    check_node_count("mesh", &mv)?;
-                    if let Value::Object(m) = &mut mv {
-                        m.remove("analysis");
-                    }
-                    let from_file: mesh::MeshSpec = from_value(mv, "").map_err(|e| {
-                        CaseError::new(
-                            "mesh",
-                            format!("in mesh file \"{name}\" at `{}`: {}", e.path, e.message),
-                        )
-                    })?;
-                    mesh::MeshSpec::merge_inline(from_file, inline)?
-                }
-                None if gmsh_map.is_some() => {
-                    return Err(CaseError::new(
-                        "gmsh",
-                        "a `gmsh` mapping is only used with a .msh mesh file",
-                    ))
-                }
-                None => inline,
-            };
-            Ok(match modal {
-                Some((modes, shift_hz, shapes)) => Case::Modal(mesh::ModalCase {
-                    mesh: mesh_name,
-                    gmsh: gmsh_kept,
-                    modes,
-                    shift_hz,
-                    shapes,
-                    model,
-                }),
-                None => Case::Static(mesh::StaticCase {
-                    mesh: mesh_name,
-                    gmsh: gmsh_kept,
-                    model,
-                    nonlinear,
-                    steps,
-                }),
-            })
-        }
+        "static" => Ok(Case::Static(fem_case::parse_static(value, base)?)),
+        "modal" => Ok(Case::Modal(fem_case::parse_modal(value, base)?)),
         other => Err(CaseError::value(
             "analysis",
             format!("\"{other}\""),
             format!("must be one of {}", ANALYSES.join(", ")),
         )),
     }
-}
-
-/// The top-level fields of a `static` or `modal` case (the model fields are those of
-/// [`mesh::MeshSpec`]).
-const MODEL_FIELDS: [&str; 7] = [
-    "materials",
-    "sections",
-    "nodes",
-    "elements",
-    "rigid_links",
-    "supports",
-    "load_cases",
-];
-
-/// Refuses a top-level field that a `static` or `modal` case does not take, listing all it does.
-fn unknown_model_field(map: &serde_json::Map<String, Value>, analysis: &str) -> Result<(), CaseError> {
-    let (own, other, other_fields): (&[&str], &str, &[&str]) = if analysis == "static" {
-        (
-            &["analysis", "mesh", "gmsh", "nonlinear", "steps"],
-            "modal",
-            &["modes", "shift_hz", "shapes"],
-        )
-    } else {
-        (
-            &["analysis", "mesh", "gmsh", "modes", "shift_hz", "shapes"],
-            "static",
-            &["nonlinear", "steps"],
-        )
-    };
-    let Some(key) = map
-        .keys()
-        .find(|k| !own.contains(&k.as_str()) && !MODEL_FIELDS.contains(&k.as_str()))
-    else {
-        return Ok(());
-    };
-    let expected: Vec<String> = own
-        .iter()
-        .chain(MODEL_FIELDS.iter())
-        .map(|f| format!("`{f}`"))
-        .collect();
-    let hint = if other_fields.contains(&key.as_str()) {
-        format!(" (`{key}` belongs to a `{other}` case)")
-    } else {
-        String::new()
-    };
-    Err(CaseError::new(
-        key.clone(),
-        format!(
-            "unknown field `{key}` in a `{analysis}` case{hint}, expected one of {}",
-            expected.join(", ")
-        ),
-    ))
 }
 
 /// Refuses an array where the case schema allows only an object.

@@ -233,7 +233,15 @@ pub struct StageCase {
     pub platform_thickness: Option<f64>,
 }
 
-pub(crate) use super::mesh::{nonlinear_true, steps_given};
+/// Schema: `steps` is given as a number.
+pub(crate) fn steps_given() -> serde_json::Value {
+    serde_json::json!({"required": ["steps"], "properties": {"steps": {"type": "integer"}}})
+}
+
+/// Schema: `"nonlinear": true`.
+pub(crate) fn nonlinear_true() -> serde_json::Value {
+    serde_json::json!({"required": ["nonlinear"], "properties": {"nonlinear": {"const": true}}})
+}
 
 /// Default number of nonlinear load steps.
 pub const DEFAULT_STEPS: usize = 20;

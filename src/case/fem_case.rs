@@ -1,0 +1,293 @@
+//! `static` and `modal` cases: plain serde shapes (their options and the model), and the
+//! reading of a case's model from inline fields, a JSON mesh file or a Gmsh `.msh` file.
+
+use super::error::CaseError;
+use super::gmsh::{self, GmshMapping};
+use super::mesh::MeshSpec;
+use super::stage::{self, nonlinear_true, steps_given};
+use super::{check_node_count, from_value, limits, read_json, resolve_file};
+use serde::Deserialize;
+use serde_json::{Map, Value};
+use std::path::Path;
+
+/// `"analysis": "modal"`: the lowest `modes` natural frequencies and mass-normalised shapes of
+/// a model given as for `static` (supports optional: a free body gives six rigid-body modes
+/// first; load cases are ignored).
+#[derive(Debug, Clone, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+#[schemars(extend("allOf" = model_rules(false)))]
+pub struct ModalCase {
+    /// Mesh file, as for `static`: a JSON mesh file or a Gmsh `.msh` file.
+    pub mesh: Option<String>,
+    /// Physical-group mapping of a Gmsh `.msh` mesh (only with a `.msh` mesh, which needs it).
+    pub gmsh: Option<GmshMapping>,
+    /// Number of modes (the lowest), 1 … 1000.
+    #[schemars(range(min = 1, max = 1000))]
+    pub modes: usize,
+    /// Optional shift frequency f, Hz (σ = (2πf)²): the modes nearest above it are found instead of
+    /// the lowest; ≥ 0. Default: 0 (a small negative shift for free bodies).
+    #[schemars(range(min = 0))]
+    pub shift_hz: Option<f64>,
+    /// Mode shapes in the JSON result (default true). `false` leaves them out (a 100k-DOF model
+    /// would write tens of MB); `modes.vtu` (with `--out`) always holds them.
+    #[serde(default = "shapes_default")]
+    pub shapes: bool,
+    /// The model.
+    #[serde(flatten)]
+    pub model: MeshSpec,
+}
+
+/// Mode shapes are in the JSON result unless `"shapes": false`.
+fn shapes_default() -> bool {
+    true
+}
+
+/// `"analysis": "static"`: a model inline or from a `mesh` file, plus load cases.
+#[derive(Debug, Clone, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+#[schemars(extend("allOf" = model_rules(true)))]
+pub struct StaticCase {
+    /// Path of a JSON mesh file (relative to the case file's folder, then to the working folder)
+    /// holding `materials`, `sections`, `nodes`, `elements`, `supports` and optionally `load_cases`.
+    pub mesh: Option<String>,
+    /// Physical-group mapping of a Gmsh `.msh` mesh (only with a `.msh` mesh, which needs it):
+    /// `{"groups": {"NAME": {"section", "material", "up"} or {"fix": [...]}}}`.
+    pub gmsh: Option<GmshMapping>,
+    /// The inline model (or additions to the mesh: materials, sections, load cases).
+    #[serde(flatten)]
+    pub model: MeshSpec,
+    /// Geometrically nonlinear statics (co-rotational beams, Newton–Raphson in load steps).
+    #[serde(default)]
+    pub nonlinear: bool,
+    /// Load steps of the nonlinear analysis, 1 … 10000 (default 20; only with
+    /// `"nonlinear": true`). After parsing: the steps to use when nonlinear, `None` when linear.
+    #[serde(default)]
+    #[schemars(range(min = 1, max = 10000))]
+    pub steps: Option<usize>,
+}
+
+/// Schema rules of a `static` (`need_loads`) or `modal` case that relate fields: the model is
+/// inline (at least one node; static: at least one load case) or comes from `mesh` (then no
+/// inline nodes, elements, supports or rigid links); a `.msh` mesh needs `gmsh` and `gmsh` needs
+/// a `.msh` mesh; `steps` only with `"nonlinear": true`.
+fn model_rules(need_loads: bool) -> serde_json::Value {
+    let mut inline = serde_json::json!({"required": ["nodes"], "properties": {"nodes": {"minItems": 1}}});
+    if need_loads {
+        inline = serde_json::json!({"allOf": [inline, {"required": ["load_cases"], "properties": {"load_cases": {"minItems": 1}}}]});
+    }
+    let empty = serde_json::json!({"maxItems": 0});
+    serde_json::json!([
+        {
+            "if": {"required": ["mesh"], "properties": {"mesh": {"type": "string"}}},
+            "then": {"properties": {"nodes": empty, "elements": empty, "supports": empty, "rigid_links": empty}},
+            "else": inline
+        },
+        {
+            "if": {"required": ["mesh"], "properties": {"mesh": {"type": "string", "pattern": "\\.msh$"}}},
+            "then": {"required": ["gmsh"], "properties": {"gmsh": {"type": "object"}}},
+            "else": {"properties": {"gmsh": {"type": "null"}}}
+        },
+        {
+            "if": steps_given(),
+            "then": nonlinear_true()
+        }
+    ])
+}
+
+/// The options of a `static` case besides its model, as in the case file.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct StaticOptions {
+    #[serde(default)]
+    mesh: Option<String>,
+    #[serde(default)]
+    gmsh: Option<GmshMapping>,
+    #[serde(default)]
+    nonlinear: Option<bool>,
+    #[serde(default)]
+    steps: Option<usize>,
+}
+
+/// The options of a `modal` case besides its model, as in the case file.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ModalOptions {
+    #[serde(default)]
+    mesh: Option<String>,
+    #[serde(default)]
+    gmsh: Option<GmshMapping>,
+    #[serde(default)]
+    modes: Option<usize>,
+    #[serde(default)]
+    shift_hz: Option<f64>,
+    #[serde(default)]
+    shapes: Option<bool>,
+}
+
+/// The top-level fields of a `static` or `modal` case that are the model's (those of
+/// [`MeshSpec`]).
+const MODEL_FIELDS: [&str; 7] = [
+    "materials",
+    "sections",
+    "nodes",
+    "elements",
+    "rigid_links",
+    "supports",
+    "load_cases",
+];
+
+const STATIC_OWN: [&str; 5] = ["analysis", "mesh", "gmsh", "nonlinear", "steps"];
+const MODAL_OWN: [&str; 6] = ["analysis", "mesh", "gmsh", "modes", "shift_hz", "shapes"];
+
+/// Splits a case object into its options (the fields in `own`) and its model (the rest).
+fn split(mut value: Value, own: &[&str]) -> (Value, Value) {
+    let mut options = Map::new();
+    if let Value::Object(map) = &mut value {
+        map.remove("analysis");
+        for k in own {
+            if let Some(v) = map.remove(*k) {
+                options.insert((*k).to_string(), v);
+            }
+        }
+    }
+    (Value::Object(options), value)
+}
+
+/// Parses a `static` case (the object without `analysis` checks); files it names resolve
+/// against `base` first.
+pub fn parse_static(value: Value, base: Option<&Path>) -> Result<StaticCase, CaseError> {
+    unknown_model_field(&value, "static")?;
+    let (options, model) = split(value, &STATIC_OWN);
+    let o: StaticOptions = from_value(options, "")?;
+    let nonlinear = o.nonlinear.unwrap_or(false);
+    let steps = stage::check_steps("steps", o.steps, nonlinear)?;
+    let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
+    Ok(StaticCase {
+        mesh: o.mesh,
+        gmsh: o.gmsh,
+        model,
+        nonlinear,
+        steps,
+    })
+}
+
+/// Parses a `modal` case, as [`parse_static`].
+pub fn parse_modal(value: Value, base: Option<&Path>) -> Result<ModalCase, CaseError> {
+    unknown_model_field(&value, "modal")?;
+    let (options, model) = split(value, &MODAL_OWN);
+    let o: ModalOptions = from_value(options, "")?;
+    let modes = match o.modes {
+        Some(k) if (1..=1000).contains(&k) => k,
+        Some(k) => return Err(CaseError::value("modes", k, "must be an integer from 1 to 1000")),
+        None => {
+            return Err(CaseError::new(
+                "modes",
+                "missing field `modes` (number of modes wanted)",
+            ))
+        }
+    };
+    if let Some(f) = o.shift_hz {
+        if !(f.is_finite() && f >= 0.0) {
+            return Err(CaseError::value("shift_hz", f, "must be a frequency ≥ 0, Hz"));
+        }
+    }
+    let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
+    Ok(ModalCase {
+        mesh: o.mesh,
+        gmsh: o.gmsh,
+        modes,
+        shift_hz: o.shift_hz,
+        shapes: o.shapes.unwrap_or(true),
+        model,
+    })
+}
+
+/// The model of a case: the inline fields `value`, merged into the `mesh` file's model if one
+/// is named (a JSON mesh file, or a Gmsh `.msh` file read through the `gmsh` mapping).
+fn read_model(
+    value: Value,
+    mesh_name: Option<&str>,
+    gmsh_map: Option<&GmshMapping>,
+    base: Option<&Path>,
+) -> Result<MeshSpec, CaseError> {
+    check_node_count("nodes", &value)?;
+    let inline: MeshSpec = from_value(value, "")?;
+    Ok(match mesh_name {
+        Some(name) if name.ends_with(".msh") => {
+            let Some(mapping) = gmsh_map else {
+                return Err(CaseError::new(
+                    "gmsh",
+                    "a .msh mesh needs a `gmsh` mapping: {\"groups\": {\"NAME\": {\"section\", \"material\"} or {\"fix\": [...]}}}",
+                ));
+            };
+            let file = resolve_file(name, base);
+            let bytes = limits::read_file("mesh", "mesh file", &format!("\"{name}\""), &file)?;
+            let text = gmsh::msh_text(&bytes)
+                .map_err(|e| CaseError::new(e.path.clone(), format!("in {name}: {}", e.message)))?;
+            let (from_file, _notes, origin) = gmsh::parse_msh_traced(text, mapping)
+                .map_err(|e| CaseError::new(e.path.clone(), format!("in {name}: {}", e.message)))?;
+            let merged = MeshSpec::merge_inline(from_file, inline)?;
+            // Errors in elements built from the .msh belong to the user's group mapping.
+            merged
+                .build_model(false)
+                .map_err(|e| gmsh::group_error(e, &origin, name))?;
+            merged
+        }
+        Some(_) | None if gmsh_map.is_some() => {
+            return Err(CaseError::new(
+                "gmsh",
+                "a `gmsh` mapping is only used with a .msh mesh file",
+            ))
+        }
+        Some(name) => {
+            let mut mv = read_json("mesh", name, base)?;
+            check_node_count("mesh", &mv)?;
+            if let Value::Object(m) = &mut mv {
+                m.remove("analysis");
+            }
+            let from_file: MeshSpec = from_value(mv, "").map_err(|e| {
+                CaseError::new(
+                    "mesh",
+                    format!("in mesh file \"{name}\" at `{}`: {}", e.path, e.message),
+                )
+            })?;
+            MeshSpec::merge_inline(from_file, inline)?
+        }
+        None => inline,
+    })
+}
+
+/// Refuses a top-level field that a `static` or `modal` case does not take, listing all it does.
+fn unknown_model_field(value: &Value, analysis: &str) -> Result<(), CaseError> {
+    let Some(map) = value.as_object() else {
+        return Ok(());
+    };
+    let (own, other, other_fields): (&[&str], &str, &[&str]) = if analysis == "static" {
+        (&STATIC_OWN, "modal", &["modes", "shift_hz", "shapes"])
+    } else {
+        (&MODAL_OWN, "static", &["nonlinear", "steps"])
+    };
+    let Some(key) = map
+        .keys()
+        .find(|k| !own.contains(&k.as_str()) && !MODEL_FIELDS.contains(&k.as_str()))
+    else {
+        return Ok(());
+    };
+    let expected: Vec<String> = own
+        .iter()
+        .chain(MODEL_FIELDS.iter())
+        .map(|f| format!("`{f}`"))
+        .collect();
+    let hint = if other_fields.contains(&key.as_str()) {
+        format!(" (`{key}` belongs to a `{other}` case)")
+    } else {
+        String::new()
+    };
+    Err(CaseError::new(
+        key.clone(),
+        format!(
+            "unknown field `{key}` in a `{analysis}` case{hint}, expected one of {}",
+            expected.join(", ")
+        ),
+    ))
+}

@@ -1,0 +1,317 @@
+//! Builds the FE model from the model shapes ([`super::shapes`]): validates every reference and
+//! value once, naming its JSON path.
+
+use super::lookup::{BuiltSection, Ctx, Named};
+use super::shapes::{ElementSpec, MeshSpec, RigidSpec, SectionSpec};
+use crate::case::error::{check, CaseError};
+use crate::fem::{self, Dof};
+use std::collections::BTreeMap;
+
+impl MeshSpec {
+    /// Combines a mesh file's model with inline additions: inline materials and sections are
+    /// added (inline wins on equal names), inline load cases replace the mesh's.
+    pub fn merge_inline(mut mesh: MeshSpec, inline: MeshSpec) -> Result<MeshSpec, CaseError> {
+        for (field, given) in [
+            ("nodes", !inline.nodes.is_empty()),
+            ("elements", !inline.elements.is_empty()),
+            ("supports", !inline.supports.is_empty()),
+            ("rigid_links", !inline.rigid_links.is_empty()),
+        ] {
+            if given {
+                return Err(CaseError::new(
+                    field,
+                    "the model comes from `mesh`: give nodes, elements, supports and rigid links there, not inline",
+                ));
+            }
+        }
+        mesh.materials.extend(inline.materials);
+        mesh.sections.extend(inline.sections);
+        if !inline.load_cases.is_empty() {
+            mesh.load_cases = inline.load_cases;
+        }
+        Ok(mesh)
+    }
+
+    /// Validates every reference and value and builds the FE model (at least one load case).
+    pub fn build(&self) -> Result<fem::Model, CaseError> {
+        self.build_model(true)
+    }
+
+    /// As [`MeshSpec::build`]; `need_loads = false` accepts a model without load cases (modal).
+    pub fn build_model(&self, need_loads: bool) -> Result<fem::Model, CaseError> {
+        let materials = Named::validate("material", "materials", &self.materials, |m, p| m.resolve(p))?;
+        let sections = Named::validate("section", "sections", &self.sections, section)?;
+        if self.nodes.is_empty() {
+            return Err(CaseError::new("nodes", "the model has no nodes"));
+        }
+        let mut cx = Ctx {
+            spec: self,
+            materials,
+            sections,
+            model: fem::Model::new(),
+            model_index: Vec::with_capacity(self.elements.len()),
+        };
+        for (i, x) in self.nodes.iter().enumerate() {
+            for (k, v) in x.iter().enumerate() {
+                check::finite(&format!("nodes[{i}][{k}]"), *v)?;
+            }
+            cx.model.add_node(*x);
+        }
+        let mut rigid: Vec<(String, RigidSpec)> = self
+            .rigid_links
+            .iter()
+            .enumerate()
+            .map(|(i, r)| (format!("rigid_links[{i}]"), r.clone()))
+            .collect();
+        for (ie, e) in self.elements.iter().enumerate() {
+            let p = format!("elements[{ie}]");
+            let before = cx.model.elements.len();
+            if let ElementSpec::Rigid { master, slaves } = e {
+                rigid.push((
+                    p,
+                    RigidSpec {
+                        master: *master,
+                        slaves: slaves.clone(),
+                    },
+                ));
+            } else {
+                element(&mut cx, &p, e)?;
+            }
+            let built = (cx.model.elements.len() > before).then_some(before);
+            cx.model_index.push(built);
+        }
+        for (p, r) in rigid {
+            let master = cx.node(format!("{p}.master"), r.master)?;
+            let mut slaves = Vec::with_capacity(r.slaves.len());
+            for (i, s) in r.slaves.iter().enumerate() {
+                let s = cx.node(format!("{p}.slaves[{i}]"), *s)?;
+                if cx.model.frames.contains_key(&s) {
+                    return Err(CaseError::value(
+                        format!("{p}.slaves[{i}]"),
+                        s,
+                        "this node carries the frame of a joint element and a rigid-link slave cannot: make it the link's master, or join it by a stiff beam",
+                    ));
+                }
+                slaves.push(s);
+            }
+            cx.model.rigid_links.push(fem::RigidLink { master, slaves });
+        }
+        for (i, s) in self.supports.iter().enumerate() {
+            let node = cx.node(format!("supports[{i}].node"), s.node)?;
+            let dofs: Vec<Dof> = s.fix.iter().map(|d| d.dof()).collect();
+            if cx.model.frames.contains_key(&node) && dofs.len() < 6 {
+                return Err(CaseError::value(
+                    format!("supports[{i}].fix"),
+                    format!("{:?}", s.fix),
+                    format!("node {node} carries the frame of a joint element: a partial support there would act in the joint frame; clamp it (all six DOFs) or support a node joined to it"),
+                ));
+            }
+            cx.model.supports.push(fem::Support::dofs(node, &dofs));
+        }
+        if need_loads && self.load_cases.is_empty() {
+            return Err(CaseError::new("load_cases", "at least one load case is needed"));
+        }
+        unique_load_case_names(self.load_cases.iter().map(|c| c.name.as_str()))?;
+        for (ic, c) in self.load_cases.iter().enumerate() {
+            let lc = super::build_loads::load_case(&cx, &format!("load_cases[{ic}]"), c)?;
+            cx.model.load_cases.push(lc);
+        }
+        Ok(cx.model)
+    }
+}
+
+/// Builds one case element (not a rigid link) into the model.
+fn element(cx: &mut Ctx, p: &str, e: &ElementSpec) -> Result<(), CaseError> {
+    match e {
+        ElementSpec::Beam {
+            nodes,
+            section,
+            material,
+            up,
+            shear,
+        } => {
+            let (a, b) = cx.two_nodes(p, *nodes, "beam")?;
+            let BuiltSection::Beam(sec) = *cx.sections.get(&format!("{p}.section"), section)? else {
+                return Err(CaseError::value(
+                    format!("{p}.section"),
+                    format!("\"{section}\""),
+                    "a shell section cannot be used by a beam",
+                ));
+            };
+            let mat = *cx.materials.get(&format!("{p}.material"), material)?;
+            cx.axis_and_up(p, (a, b), *up, "beam")?;
+            let mut beam = fem::Beam::new(a, b, sec, mat, *up);
+            if !shear {
+                beam = beam.euler_bernoulli();
+            }
+            cx.model.add_beam(beam);
+        }
+        ElementSpec::Spring { nodes, k } => {
+            if nodes.is_empty() || nodes.len() > 2 {
+                return Err(CaseError::value(
+                    format!("{p}.nodes"),
+                    format!("{nodes:?}"),
+                    "a spring has one node (to ground) or two",
+                ));
+            }
+            for (i, kv) in k.iter().enumerate() {
+                check::non_negative(&format!("{p}.k[{i}]"), *kv, "N/mm or N·mm/rad")?;
+            }
+            let a = cx.node(format!("{p}.nodes[0]"), nodes[0])?;
+            let b = match nodes.get(1) {
+                Some(&b) => Some(cx.node(format!("{p}.nodes[1]"), b)?),
+                None => None,
+            };
+            cx.model.add_element(fem::Element::Spring(fem::Spring {
+                a,
+                b,
+                k: *k,
+                axes: fem::SpringAxes::Global,
+            }));
+        }
+        ElementSpec::Mass { node, mass, inertia } => {
+            let node = cx.node(format!("{p}.node"), *node)?;
+            check::non_negative(&format!("{p}.mass"), *mass, "tonne")?;
+            for (i, v) in inertia.iter().enumerate() {
+                check::non_negative(&format!("{p}.inertia[{i}]"), *v, "tonne·mm²")?;
+            }
+            cx.model.masses.push(fem::PointMass {
+                node,
+                mass: *mass,
+                inertia: *inertia,
+            });
+        }
+        ElementSpec::Rigid { .. } => {}
+        ElementSpec::Hinge {
+            nodes,
+            hinge,
+            material,
+            up,
+        } => super::hinge::hinge_element(cx, p, *nodes, hinge, material, *up)?,
+        ElementSpec::Joint {
+            nodes,
+            kind,
+            axis,
+            axis2,
+        } => super::joint::joint_element(cx, p, *nodes, *kind, *axis, *axis2)?,
+        ElementSpec::Shell4 {
+            nodes,
+            section,
+            material,
+        } => shell4(cx, p, *nodes, section, material)?,
+    }
+    Ok(())
+}
+
+fn shell4(cx: &mut Ctx, p: &str, nodes: [usize; 4], section: &str, material: &str) -> Result<(), CaseError> {
+    let mut ns = [0usize; 4];
+    for (k, &nd) in nodes.iter().enumerate() {
+        ns[k] = cx.node(format!("{p}.nodes[{k}]"), nd)?;
+    }
+    // A triangle may be given as a degenerate quad [a, b, c, c].
+    for a in 0..4 {
+        for b in 0..a {
+            if ns[a] == ns[b] && !(a == 3 && b == 2) {
+                return Err(CaseError::value(
+                    format!("{p}.nodes"),
+                    format!("{ns:?}"),
+                    "a shell4 needs four different nodes (or [a, b, c, c] for a triangle)",
+                ));
+            }
+        }
+    }
+    let BuiltSection::Shell(t) = *cx.sections.get(&format!("{p}.section"), section)? else {
+        return Err(CaseError::value(
+            format!("{p}.section"),
+            format!("\"{section}\""),
+            "a shell4 needs a section with \"shape\": \"shell\"",
+        ));
+    };
+    let mat = *cx.materials.get(&format!("{p}.material"), material)?;
+    let x = ns.map(|i| cx.spec.nodes[i]);
+    if fem::shell::shell_geometry(&x).is_none() {
+        return Err(CaseError::value(
+            format!("{p}.nodes"),
+            format!("{ns:?}"),
+            "the four nodes must form a convex quadrilateral, listed around it (not crossed, no zero area)",
+        ));
+    }
+    cx.model.add_element(fem::Element::Shell4(fem::Shell4 {
+        nodes: ns,
+        t,
+        material: mat,
+    }));
+    Ok(())
+}
+
+/// Refuses two load cases with the same name, or with names that give the same output file
+/// name (each load case writes `NAME.vtu`): the error names `load_cases[i].name` of the later.
+pub fn unique_load_case_names<'a>(names: impl Iterator<Item = &'a str>) -> Result<(), CaseError> {
+    let mut seen: BTreeMap<String, (usize, &str)> = BTreeMap::new();
+    for (i, name) in names.enumerate() {
+        let stem = crate::report::vtk::file_stem(name);
+        if let Some((j, first)) = seen.get(&stem) {
+            let why = if *first == name {
+                format!("load_cases[{j}] has the same name; load case names must be unique")
+            } else {
+                format!(
+                    "load_cases[{j}] (\"{first}\") gives the same output file name `{stem}.vtu`; load case names must differ in letters, digits, `-` or `_`"
+                )
+            };
+            return Err(CaseError::value(
+                format!("load_cases[{i}].name"),
+                format!("\"{name}\""),
+                why,
+            ));
+        }
+        seen.insert(stem, (i, name));
+    }
+    Ok(())
+}
+/// Validates a section.
+fn section(s: &SectionSpec, p: &str) -> Result<BuiltSection, CaseError> {
+    let f = |k: &str| format!("{p}.{k}");
+    Ok(BuiltSection::Beam(match *s {
+        SectionSpec::Rect { w, h } => {
+            check::positive(&f("w"), w, "mm")?;
+            check::positive(&f("h"), h, "mm")?;
+            fem::Section::Rect { w, h }
+        }
+        SectionSpec::Circle { d } => {
+            check::positive(&f("d"), d, "mm")?;
+            fem::Section::Circle { d }
+        }
+        SectionSpec::Tube { d, t } => {
+            check::positive(&f("d"), d, "mm")?;
+            check::positive(&f("t"), t, "mm")?;
+            if 2.0 * t >= d {
+                return Err(CaseError::value(
+                    f("t"),
+                    t,
+                    format!("the wall must be thinner than half the diameter ({} mm)", d / 2.0),
+                ));
+            }
+            fem::Section::Tube {
+                d_out: d,
+                d_in: d - 2.0 * t,
+            }
+        }
+        SectionSpec::General { a, iy, iz, j, asy, asz } => {
+            check::positive(&f("A"), a, "mm²")?;
+            check::positive(&f("Iy"), iy, "mm⁴")?;
+            check::positive(&f("Iz"), iz, "mm⁴")?;
+            check::positive(&f("J"), j, "mm⁴")?;
+            if let Some(v) = asy {
+                check::positive(&f("Asy"), v, "mm²")?;
+            }
+            if let Some(v) = asz {
+                check::positive(&f("Asz"), v, "mm²")?;
+            }
+            fem::Section::General { a, iy, iz, j, asy, asz }
+        }
+        SectionSpec::Shell { t } => {
+            check::positive(&f("t"), t, "mm")?;
+            return Ok(BuiltSection::Shell(t));
+        }
+    }))
+}

@@ -1,0 +1,137 @@
+//! Builds the load cases of a model from their shapes ([`super::load_shapes`]).
+
+use super::load_shapes::DofName;
+use super::load_shapes::LoadCaseSpec;
+use super::lookup::Ctx;
+use crate::case::error::{check, CaseError};
+use crate::fem;
+
+/// Builds load case `c` (at JSON path `p`) on the model built so far.
+pub(super) fn load_case(cx: &Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::LoadCase, CaseError> {
+    let mut lc = fem::LoadCase::new(c.name.clone());
+    for (i, f) in c.forces.iter().enumerate() {
+        let node = cx.node(format!("{p}.forces[{i}].node"), f.node)?;
+        for (k, v) in f.f.iter().enumerate() {
+            check::finite(&format!("{p}.forces[{i}].F[{k}]"), *v)?;
+        }
+        lc = lc.force(node, f.f);
+    }
+    for (i, d) in c.displacements.iter().enumerate() {
+        let node = cx.node(format!("{p}.displacements[{i}].node"), d.node)?;
+        check::finite(&format!("{p}.displacements[{i}].value"), d.value)?;
+        if cx.model.frames.contains_key(&node) {
+            return Err(CaseError::value(
+                format!("{p}.displacements[{i}].node"),
+                node,
+                "this node carries the frame of a joint element, in which a prescribed DOF would act: prescribe it at a node joined to it",
+            ));
+        }
+        // Case files give rotations in degrees; the model works in radians.
+        let value = match d.dof {
+            DofName::Rx | DofName::Ry | DofName::Rz => d.value.to_radians(),
+            DofName::Ux | DofName::Uy | DofName::Uz => d.value,
+        };
+        lc = lc.displacement(node, d.dof.dof(), value);
+    }
+    for (i, pr) in c.pressures.iter().enumerate() {
+        let pp = format!("{p}.pressures[{i}]");
+        check::finite(&format!("{pp}.p"), pr.p)?;
+        let mut list: Vec<(String, usize)> = Vec::new();
+        for (k, &e) in pr.elements.iter().enumerate() {
+            let at = format!("{pp}.elements[{k}]");
+            let me = cx.model_index.get(e).copied().flatten();
+            match me.and_then(|m| cx.model.elements.get(m)) {
+                Some(fem::Element::Shell4(_)) => list.push((at, me.unwrap_or(e))),
+                Some(_) => return Err(CaseError::value(at, e, "a pressure acts on shell4 elements only")),
+                None if e < cx.spec.elements.len() => {
+                    return Err(CaseError::value(at, e, "a pressure acts on shell4 elements only"))
+                }
+                None => {
+                    return Err(CaseError::value(
+                        at,
+                        e,
+                        format!(
+                            "element index must be < {} (the number of elements)",
+                            cx.spec.elements.len()
+                        ),
+                    ))
+                }
+            }
+        }
+        if let Some(gname) = &pr.group {
+            let at = format!("{pp}.group");
+            if cx.spec.element_groups.is_empty() {
+                return Err(CaseError::value(
+                    at,
+                    format!("\"{gname}\""),
+                    "a group names a Gmsh physical group: only with a .msh mesh; give `elements` otherwise",
+                ));
+            }
+            let before = list.len();
+            for (e, groups) in cx.spec.element_groups.iter().enumerate() {
+                let Some(me) = cx.model_index.get(e).copied().flatten() else {
+                    continue;
+                };
+                if groups.iter().any(|g| g == gname)
+                    && matches!(cx.model.elements.get(me), Some(fem::Element::Shell4(_)))
+                {
+                    list.push((at.clone(), me));
+                }
+            }
+            if list.len() == before {
+                return Err(CaseError::value(
+                    at,
+                    format!("\"{gname}\""),
+                    "no shell element of the model belongs to this group (it must be listed in `gmsh.groups` and hold triangles or quadrangles)",
+                ));
+            }
+        }
+        if list.is_empty() {
+            return Err(CaseError::new(
+                pp,
+                "give the loaded shells by `elements` and/or `group`",
+            ));
+        }
+        for (at, e) in list {
+            let Some(fem::Element::Shell4(sh)) = cx.model.elements.get(e) else {
+                continue;
+            };
+            let x = sh.nodes.map(|n| cx.model.nodes[n]);
+            let f = fem::shell_loads::pressure_loads(&x, pr.p)
+                .ok_or_else(|| CaseError::value(at, e, "degenerate shell geometry"))?;
+            for (k, &n) in sh.nodes.iter().enumerate() {
+                lc = lc.force(n, f[k]);
+            }
+        }
+    }
+    for (i, el) in c.edge_loads.iter().enumerate() {
+        let pe = format!("{p}.edge_loads[{i}]");
+        let a = cx.node(format!("{pe}.nodes[0]"), el.nodes[0])?;
+        let b = cx.node(format!("{pe}.nodes[1]"), el.nodes[1])?;
+        for (k, v) in el.q.iter().chain(&el.m).enumerate() {
+            let name = if k < 3 {
+                format!("q[{k}]")
+            } else {
+                format!("m[{}]", k - 3)
+            };
+            check::finite(&format!("{pe}.{name}"), *v)?;
+        }
+        let is_edge = cx.model.elements.iter().any(|e| match e {
+            fem::Element::Shell4(sh) => (0..4).any(|k| {
+                let (x, y) = (sh.nodes[k], sh.nodes[(k + 1) % 4]);
+                x != y && ((x, y) == (a, b) || (x, y) == (b, a))
+            }),
+            _ => false,
+        });
+        if !is_edge {
+            return Err(CaseError::value(
+                format!("{pe}.nodes"),
+                format!("[{a}, {b}]"),
+                "must be two nodes adjacent in the node list of a shell4 element (an element edge)",
+            ));
+        }
+        let f = fem::shell_loads::edge_loads(cx.model.nodes[a], cx.model.nodes[b], el.q, el.m);
+        lc = lc.force(a, f[0]).force(b, f[1]);
+    }
+    Ok(lc)
+}

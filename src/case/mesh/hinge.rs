@@ -1,0 +1,145 @@
+//! The `hinge` element of mesh cases: a flexure hinge between two nodes as one flexibility
+//! element carrying the compliance of the `hinge` analysis, plus its mass.
+
+use super::lookup::Ctx;
+use crate::case::error::CaseError;
+use crate::case::hinge::hinge_error;
+use crate::fem;
+use crate::hinge::{self, Contour, HingeSpec, Profile};
+use crate::material::Material;
+use serde_json::Value;
+
+/// Builds a `hinge` element at JSON path `p`.
+///
+/// One [`fem::FlexElement`] from node a to node b: its compliance is exactly that of the
+/// `hinge` analysis for the same hinge with `blank_length` = (node distance − notch length)/2
+/// (blank per side), so the solid-calibrated model (load spreading, short-notch and
+/// plane-strain factors, warping-restrained torsion) comes with it. One element rather than
+/// blank beam + notch + blank beam: the compliance between the two end faces is what the hinge
+/// analysis computes, and it is reproduced with no internal nodes (the flexibility element is
+/// co-rotational in the nonlinear solver, as the stage's hinges). Mass: the geometric volume of
+/// notch and blank times the density, lumped half at each node (translational only).
+pub(super) fn hinge_element(
+    cx: &mut Ctx,
+    p: &str,
+    nodes: [usize; 2],
+    hinge: &Value,
+    material: &str,
+    up: [f64; 3],
+) -> Result<(), CaseError> {
+    let (a, b) = cx.two_nodes(p, nodes, "hinge")?;
+    let mat = *cx.materials.get(&format!("{p}.material"), material)?;
+    let len = cx.axis_and_up(p, (a, b), up, "hinge")?;
+    let hp = format!("{p}.hinge");
+    let spec = parse_spec(&hp, hinge)?;
+    let herr = |e: hinge::HingeError| hinge_error(&e, &hp, &format!("materials.{material}"));
+    let notch = spec.profile_with_blank(Some(0.0)).map_err(herr)?;
+    let notch_len = 2.0 * notch.half_notch;
+    if len < notch_len * (1.0 - 1e-12) {
+        return Err(CaseError::value(
+            format!("{p}.nodes"),
+            format!("[{a}, {b}]"),
+            format!("the node distance {len} mm is shorter than the notch length {notch_len} mm of the hinge"),
+        ));
+    }
+    let blank = ((len - notch_len) / 2.0).max(0.0);
+    let (compliance, mass) = flex_of(&spec, &mat, blank).map_err(herr)?;
+    cx.model.add_element(fem::Element::Flex(fem::FlexElement {
+        nodes: [a, b],
+        compliance,
+        up,
+    }));
+    for node in [a, b] {
+        cx.model.masses.push(fem::PointMass {
+            node,
+            mass: mass / 2.0,
+            inertia: [0.0; 3],
+        });
+    }
+    Ok(())
+}
+
+/// The hinge spec of an element (its `blank_length` comes from the node distance).
+fn parse_spec(hp: &str, hinge: &Value) -> Result<HingeSpec, CaseError> {
+    let mut v = hinge.clone();
+    let Value::Object(map) = &mut v else {
+        return Err(CaseError::value(
+            hp,
+            crate::case::short(hinge),
+            "must be a hinge object {\"type\": …}",
+        ));
+    };
+    if map.contains_key("blank_length") {
+        return Err(CaseError::new(
+            format!("{hp}.blank_length"),
+            "a hinge element takes no blank_length: the blank fills the node distance beyond the notch",
+        ));
+    }
+    map.insert("blank_length".into(), Value::from(0.0));
+    crate::case::from_value(v, hp)
+}
+
+/// The 6×6 compliance (hinge axes: x along, y compliant, z across; the far end face loaded,
+/// the near one clamped) and the mass (tonne) of a hinge with `blank` of blank per side.
+pub fn flex_of(spec: &HingeSpec, material: &Material, blank: f64) -> Result<([[f64; 6]; 6], f64), hinge::HingeError> {
+    let profile = spec.profile_with_blank(Some(blank))?;
+    let st = hinge::profile_stiffness(&profile, material)?;
+    Ok((st.compliance, material.density * volume(&profile)))
+}
+
+/// Geometric volume of a hinge profile (notch and blanks), mm³: Simpson's rule on 2000
+/// intervals over the notch, exact over the prismatic blanks.
+fn volume(p: &Profile) -> f64 {
+    let area = |x: f64| match p.contour {
+        Contour::SphericalNeck { .. } => {
+            if x.abs() >= p.half_notch {
+                p.h * p.h
+            } else {
+                hinge::section::clipped_disk(p.thickness(x) / 2.0, p.h, 0.3).area
+            }
+        }
+        _ => p.w * p.thickness(x),
+    };
+    let n = 2000;
+    let (x0, dx) = (-p.half_notch, 2.0 * p.half_notch / n as f64);
+    let mut s = 0.0;
+    for i in 0..=n {
+        let wgt = if i == 0 || i == n {
+            1.0
+        } else if i % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        };
+        // The notch's end values from inside (a leaf's thickness jumps to h at its ends).
+        s += wgt * area((x0 + i as f64 * dx) * (1.0 - 1e-12));
+    }
+    s * dx / 3.0 + 2.0 * p.blank * area(p.half_length())
+}
+
+/// Schema of a hinge element's `hinge`: that of the `hinge` analysis without `blank_length`.
+pub fn element_hinge_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+    let mut v = schemars::schema_for!(HingeSpec).to_value();
+    strip_blank(&mut v);
+    if let Value::Object(m) = &mut v {
+        m.remove("$schema");
+        m.remove("title");
+    }
+    schemars::Schema::try_from(v).unwrap_or_default()
+}
+
+fn strip_blank(v: &mut Value) {
+    match v {
+        Value::Object(m) => {
+            if let Some(Value::Object(props)) = m.get_mut("properties") {
+                props.remove("blank_length");
+            }
+            if let Some(Value::Array(req)) = m.get_mut("required") {
+                req.retain(|r| r != "blank_length");
+            }
+            m.values_mut().for_each(strip_blank);
+        }
+        Value::Array(a) => a.iter_mut().for_each(strip_blank),
+        _ => {}
+    }
+}

@@ -1,0 +1,169 @@
+//! The `joint` element of mesh cases: an ideal joint between two coincident nodes, by
+//! elimination (a [`fem::Tie`] in a node frame whose local x is the joint axis).
+
+use super::lookup::{norm, Ctx};
+use super::shapes::JointKind;
+use crate::case::error::CaseError;
+use crate::fem;
+
+/// Relative distance (to the model size) up to which two nodes count as coincident.
+const COINCIDENT: f64 = 1e-6;
+
+/// Builds a `joint` element at JSON path `p`.
+///
+/// The DOFs the joint does not release are tied in the joint frame (rows: x = `axis`, y =
+/// `axis2` for a universal joint or a perpendicular, z = x × y). Both nodes get that frame;
+/// a node has one frame, so a node already framed by another joint with other axes is refused
+/// (give each joint its own coincident node, joined to the body by a rigid link or stiff beam —
+/// the link's master, not a slave, since slaves cannot carry frames). Spherical and weld joints
+/// tie whole vectors, the same in every frame: they need no axis and adopt a frame present.
+pub(super) fn joint_element(
+    cx: &mut Ctx,
+    p: &str,
+    nodes: [usize; 2],
+    kind: JointKind,
+    axis: Option<[f64; 3]>,
+    axis2: Option<[f64; 3]>,
+) -> Result<(), CaseError> {
+    let (a, b) = cx.two_nodes(p, nodes, "joint")?;
+    let (xa, xb) = (cx.spec.nodes[a], cx.spec.nodes[b]);
+    let d = norm([xb[0] - xa[0], xb[1] - xa[1], xb[2] - xa[2]]);
+    let tol = COINCIDENT * model_size(&cx.spec.nodes);
+    if d > tol {
+        return Err(CaseError::value(
+            format!("{p}.nodes"),
+            format!("[{a}, {b}]"),
+            format!("the nodes are {d} mm apart; a joint joins coincident nodes (within {COINCIDENT} of the model size, {tol} mm)"),
+        ));
+    }
+    let name = format!("{kind:?}").to_lowercase();
+    let (needs_axis, needs_axis2) = match kind {
+        JointKind::Revolute | JointKind::Cylindrical | JointKind::Prismatic => (true, false),
+        JointKind::Universal => (true, true),
+        JointKind::Spherical | JointKind::Weld => (false, false),
+    };
+    let x = unit_axis(p, "axis", axis, needs_axis, &name)?;
+    let y = unit_axis(p, "axis2", axis2, needs_axis2, &name)?;
+    let frame = match (x, y) {
+        (Some(x), Some(y)) => {
+            let c = x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+            if c.abs() > 1e-6 {
+                return Err(CaseError::value(
+                    format!("{p}.axis2"),
+                    format!("{:?}", axis2.unwrap_or_default()),
+                    format!("must be perpendicular to `axis` (cosine {c})"),
+                ));
+            }
+            let y = unit([y[0] - c * x[0], y[1] - c * x[1], y[2] - c * x[2]]);
+            Some([x, y, cross(x, y)])
+        }
+        (Some(x), None) => {
+            let t = if x[0].abs() < 0.9 {
+                [1.0, 0.0, 0.0]
+            } else {
+                [0.0, 1.0, 0.0]
+            };
+            let y = unit(cross(x, t));
+            Some([x, y, cross(x, y)])
+        }
+        _ => None,
+    };
+    let free: &[usize] = match kind {
+        JointKind::Revolute => &[3],
+        JointKind::Spherical => &[3, 4, 5],
+        JointKind::Universal => &[3, 4],
+        JointKind::Cylindrical => &[0, 3],
+        JointKind::Prismatic => &[0],
+        JointKind::Weld => &[],
+    };
+    let frame = frame.or_else(|| cx.model.frames.get(&a).or(cx.model.frames.get(&b)).copied());
+    if let Some(f) = frame {
+        for n in [a, b] {
+            if let Some(g) = cx.model.frames.get(&n) {
+                let diff = (0..3)
+                    .flat_map(|i| (0..3).map(move |j| (i, j)))
+                    .map(|(i, j)| (f[i][j] - g[i][j]).abs())
+                    .fold(0.0, f64::max);
+                if diff > 1e-12 {
+                    return Err(CaseError::value(
+                        format!("{p}.nodes"),
+                        format!("[{a}, {b}]"),
+                        format!("node {n} already has the frame of another joint (rows {g:?}); a node carries one joint frame: give this joint its own coincident node"),
+                    ));
+                }
+            }
+        }
+        cx.model.set_frame(a, f);
+        cx.model.set_frame(b, f);
+    }
+    let mut dofs = [true; 6];
+    for &k in free {
+        dofs[k] = false;
+    }
+    cx.model.ties.push(fem::Tie { a, b, dofs });
+    Ok(())
+}
+
+/// The unit vector of an optional axis field: required when `needed`, refused otherwise.
+fn unit_axis(
+    p: &str,
+    field: &str,
+    v: Option<[f64; 3]>,
+    needed: bool,
+    kind: &str,
+) -> Result<Option<[f64; 3]>, CaseError> {
+    match (v, needed) {
+        (None, false) => Ok(None),
+        (None, true) => Err(CaseError::new(
+            format!("{p}.{field}"),
+            format!("missing field `{field}`: a {kind} joint needs it (a direction [x, y, z])"),
+        )),
+        (Some(v), false) => Err(CaseError::value(
+            format!("{p}.{field}"),
+            format!("{v:?}"),
+            format!("a {kind} joint takes no `{field}`"),
+        )),
+        (Some(v), true) => {
+            let n = norm(v);
+            if !(n.is_finite() && n > 0.0) {
+                return Err(CaseError::value(
+                    format!("{p}.{field}"),
+                    format!("{v:?}"),
+                    "must be a non-zero direction [x, y, z]",
+                ));
+            }
+            Ok(Some(v.map(|c| c / n)))
+        }
+    }
+}
+
+fn unit(v: [f64; 3]) -> [f64; 3] {
+    let n = norm(v);
+    v.map(|c| c / n)
+}
+
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// Diagonal of the nodes' bounding box, mm (1 for a single point).
+fn model_size(nodes: &[[f64; 3]]) -> f64 {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for x in nodes {
+        for k in 0..3 {
+            lo[k] = lo[k].min(x[k]);
+            hi[k] = hi[k].max(x[k]);
+        }
+    }
+    let d = norm([hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]]);
+    if d > 0.0 {
+        d
+    } else {
+        1.0
+    }
+}

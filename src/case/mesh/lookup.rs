@@ -1,0 +1,134 @@
+//! What a model builder looks up: node indices, named sections and materials (one helper,
+//! [`Named`]), and the model built so far.
+
+use super::shapes::MeshSpec;
+use crate::case::error::CaseError;
+use crate::fem;
+use crate::material::Material;
+use std::collections::BTreeMap;
+
+/// Validated named items of one kind (`what`: "section", "material"), looked up by name with
+/// an error naming the JSON path, the name given and the names defined.
+pub struct Named<'a, V> {
+    what: &'static str,
+    items: BTreeMap<&'a str, V>,
+}
+
+impl<'a, V> Named<'a, V> {
+    /// Validates every item of `specs` (named `FIELD.KEY` in errors) by `validate`.
+    pub fn validate<S>(
+        what: &'static str,
+        field: &str,
+        specs: &'a BTreeMap<String, S>,
+        mut validate: impl FnMut(&S, &str) -> Result<V, CaseError>,
+    ) -> Result<Self, CaseError> {
+        let mut items = BTreeMap::new();
+        for (k, s) in specs {
+            items.insert(k.as_str(), validate(s, &format!("{field}.{k}"))?);
+        }
+        Ok(Named { what, items })
+    }
+
+    /// The item called `name`, referenced at `path`.
+    pub fn get(&self, path: &str, name: &str) -> Result<&V, CaseError> {
+        self.items.get(name).ok_or_else(|| {
+            CaseError::value(
+                path,
+                format!("\"{name}\""),
+                format!("unknown {}; defined: {}", self.what, self.defined()),
+            )
+        })
+    }
+
+    fn defined(&self) -> String {
+        if self.items.is_empty() {
+            "none".into()
+        } else {
+            self.items
+                .keys()
+                .map(|k| format!("\"{k}\""))
+                .collect::<Vec<_>>()
+                .join(", ")
+        }
+    }
+}
+
+/// A validated section: for beams, or the thickness of a shell.
+#[derive(Debug, Clone, Copy)]
+pub(super) enum BuiltSection {
+    Beam(fem::Section),
+    Shell(f64),
+}
+
+/// A model being built: the validated named items, the model so far and what each case element
+/// became.
+pub(super) struct Ctx<'a> {
+    pub spec: &'a MeshSpec,
+    pub materials: Named<'a, Material>,
+    pub sections: Named<'a, BuiltSection>,
+    pub model: fem::Model,
+    /// Model element index of each case element (masses and rigid links are no elements).
+    pub model_index: Vec<Option<usize>>,
+}
+
+impl Ctx<'_> {
+    /// Two different nodes of a two-node element, checked.
+    pub fn two_nodes(&self, p: &str, nodes: [usize; 2], what: &str) -> Result<(usize, usize), CaseError> {
+        let a = self.node(format!("{p}.nodes[0]"), nodes[0])?;
+        let b = self.node(format!("{p}.nodes[1]"), nodes[1])?;
+        if a == b {
+            return Err(CaseError::value(
+                format!("{p}.nodes"),
+                format!("[{a}, {b}]"),
+                format!("a {what} needs two different nodes"),
+            ));
+        }
+        Ok((a, b))
+    }
+
+    /// The axis a→b of a two-node element with orientation vector `up`, checked: its length.
+    pub fn axis_and_up(&self, p: &str, (a, b): (usize, usize), up: [f64; 3], what: &str) -> Result<f64, CaseError> {
+        let (xa, xb) = (self.spec.nodes[a], self.spec.nodes[b]);
+        let axis = [xb[0] - xa[0], xb[1] - xa[1], xb[2] - xa[2]];
+        let len = norm(axis);
+        if len <= 1e-12 {
+            return Err(CaseError::value(
+                format!("{p}.nodes"),
+                format!("[{a}, {b}]"),
+                format!("the two nodes coincide (zero-length {what})"),
+            ));
+        }
+        let un = norm(up);
+        let cross = norm([
+            axis[1] * up[2] - axis[2] * up[1],
+            axis[2] * up[0] - axis[0] * up[2],
+            axis[0] * up[1] - axis[1] * up[0],
+        ]);
+        if !(un.is_finite() && un > 0.0 && cross > 1e-6 * len * un) {
+            return Err(CaseError::value(
+                format!("{p}.up"),
+                format!("{up:?}"),
+                format!("must be a non-zero vector not parallel to the {what} axis"),
+            ));
+        }
+        Ok(len)
+    }
+
+    /// Checks a node index given at `path`.
+    pub fn node(&self, path: String, i: usize) -> Result<usize, CaseError> {
+        let n = self.spec.nodes.len();
+        if i < n {
+            Ok(i)
+        } else {
+            Err(CaseError::value(
+                path,
+                i,
+                format!("node index must be < {n} (the number of nodes)"),
+            ))
+        }
+    }
+}
+
+pub(super) fn norm(v: [f64; 3]) -> f64 {
+    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+}

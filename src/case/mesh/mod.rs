@@ -1,0 +1,19 @@
+//! The generic beam/shell model (`static`, `modal`): inline or from `meshes/*.json`.
+//!
+//! One way: [`shapes`] and [`load_shapes`] are the plain serde shapes of the JSON (what a case
+//! file, a mesh file or the Gmsh reader produces); [`build`] turns them into an [`crate::fem::Model`],
+//! validating once and naming JSON paths (named sections and materials are looked up by one
+//! helper, [`lookup::Named`]).
+
+pub mod build;
+mod build_loads;
+mod hinge;
+mod joint;
+pub mod load_shapes;
+mod lookup;
+pub mod shapes;
+
+pub use super::fem_case::{ModalCase, StaticCase};
+pub use build::unique_load_case_names;
+pub use load_shapes::{DisplacementSpec, DofName, EdgeLoadSpec, ForceSpec, LoadCaseSpec, PressureSpec};
+pub use shapes::{ElementSpec, GmshMapping, GroupSpec, JointKind, MeshSpec, RigidSpec, SectionSpec, SupportSpec};

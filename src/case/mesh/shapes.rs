@@ -1,0 +1,258 @@
+//! The model shapes of a `static`/`modal` case or mesh file: plain serde structs, no
+//! validation (that is [`super::build`]'s job). Load-case shapes are in [`super::load_shapes`].
+
+use super::load_shapes::{DofName, LoadCaseSpec};
+use crate::case::material::MaterialSpec;
+use serde::Deserialize;
+use std::collections::BTreeMap;
+
+/// A cross-section, by `shape`.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(tag = "shape", rename_all = "snake_case", deny_unknown_fields)]
+pub enum SectionSpec {
+    /// Solid rectangle: `h` along local z, `w` along local y (Iy = w·h³/12), mm.
+    Rect {
+        /// Width along local y, mm, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        w: f64,
+        /// Height along local z, mm, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        h: f64,
+    },
+    /// Solid circle of diameter `d`, mm.
+    Circle {
+        /// Diameter, mm, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        d: f64,
+    },
+    /// Circular tube: outer diameter `d`, wall thickness `t`, mm.
+    Tube {
+        /// Outer diameter, mm, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        d: f64,
+        /// Wall thickness, mm, > 0 and < d/2.
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        t: f64,
+    },
+    /// Explicit properties (mm², mm⁴); omitted shear areas mean no shear deformation.
+    General {
+        /// Area, mm², > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        #[serde(rename = "A")]
+        a: f64,
+        /// Second moment about local y, mm⁴, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        #[serde(rename = "Iy")]
+        iy: f64,
+        /// Second moment about local z, mm⁴, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        #[serde(rename = "Iz")]
+        iz: f64,
+        /// Torsion constant, mm⁴, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        #[serde(rename = "J")]
+        j: f64,
+        /// Shear area for local y, mm², > 0.
+        #[serde(rename = "Asy", default)]
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        asy: Option<f64>,
+        /// Shear area for local z, mm², > 0.
+        #[serde(rename = "Asz", default)]
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        asz: Option<f64>,
+    },
+    /// Shell of thickness `t`, mm (shell elements).
+    Shell {
+        /// Thickness, mm, > 0.
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        t: f64,
+    },
+}
+
+/// An element, by `type`.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum ElementSpec {
+    /// 2-node 3D beam (Timoshenko; `"shear": false` for Euler–Bernoulli).
+    Beam {
+        /// Node indices (0-based).
+        nodes: [usize; 2],
+        /// Section name (key of `sections`).
+        section: String,
+        /// Material name (key of `materials`).
+        material: String,
+        /// Vector fixing local z (its component normal to the axis).
+        up: [f64; 3],
+        /// Include shear deformation (default true).
+        #[serde(default = "yes")]
+        shear: bool,
+    },
+    /// 6-DOF spring between two nodes, or from one node to ground; stiffness in global axes
+    /// (N/mm, N·mm/rad).
+    Spring {
+        /// One node (to ground) or two.
+        #[schemars(length(min = 1, max = 2))]
+        nodes: Vec<usize>,
+        /// [kx, ky, kz, krx, kry, krz], each ≥ 0.
+        #[schemars(extend("items" = {"type": "number", "minimum": 0}))]
+        k: [f64; 6],
+    },
+    /// Point mass, tonne (rotary inertia tonne·mm² optional).
+    Mass {
+        /// Node index.
+        node: usize,
+        /// Mass, tonne, ≥ 0.
+        #[schemars(range(min = 0))]
+        mass: f64,
+        /// Rotary inertia about x, y, z, tonne·mm², each ≥ 0.
+        #[serde(default)]
+        #[schemars(extend("items" = {"type": "number", "minimum": 0}))]
+        inertia: [f64; 3],
+    },
+    /// Rigid link: every slave moves with the master as a rigid body.
+    Rigid {
+        /// Master node.
+        master: usize,
+        /// Slave nodes.
+        slaves: Vec<usize>,
+    },
+    /// Flexure hinge from `nodes[0]` to `nodes[1]` (local x): the notch of `hinge` centred at the
+    /// midpoint, blank of the hinge's section on both sides up to the nodes; one flexibility
+    /// element with the compliance of the `hinge` analysis (blank_length = (distance − notch
+    /// length)/2). Local axes as for beams: the notch thins along local z (`up`), the compliant
+    /// axis is local y.
+    Hinge {
+        /// Node indices (0-based); their distance must be at least the notch length.
+        nodes: [usize; 2],
+        /// The hinge, as the `hinge` object of a `hinge` case without `blank_length`.
+        #[schemars(schema_with = "super::hinge::element_hinge_schema")]
+        hinge: serde_json::Value,
+        /// Material name (key of `materials`).
+        material: String,
+        /// Vector fixing local z (the direction the notch thins along).
+        up: [f64; 3],
+    },
+    /// Ideal joint between two coincident nodes, by elimination (no penalty): the DOFs the joint
+    /// does not release are tied in the joint frame (local x along `axis`).
+    Joint {
+        /// The two coincident nodes.
+        nodes: [usize; 2],
+        /// The joint kind.
+        kind: JointKind,
+        /// Joint axis (revolute, cylindrical, prismatic; universal: the first pin).
+        #[serde(default)]
+        axis: Option<[f64; 3]>,
+        /// Second pin of a universal joint, perpendicular to `axis`.
+        #[serde(default)]
+        axis2: Option<[f64; 3]>,
+    },
+    /// 4-node flat shell (a triangle as the degenerate quad [a, b, c, c]).
+    Shell4 {
+        /// Node indices.
+        nodes: [usize; 4],
+        /// Section name (a `shell` section).
+        section: String,
+        /// Material name.
+        material: String,
+    },
+}
+
+/// Kind of an ideal joint: what it releases.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, schemars::JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum JointKind {
+    /// Rotation about `axis` free.
+    Revolute,
+    /// All rotations free.
+    Spherical,
+    /// Rotations about `axis` and `axis2` free.
+    Universal,
+    /// Rotation about and translation along `axis` free.
+    Cylindrical,
+    /// Translation along `axis` free.
+    Prismatic,
+    /// Nothing free.
+    Weld,
+}
+
+fn yes() -> bool {
+    true
+}
+
+/// A support.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SupportSpec {
+    /// Node index.
+    pub node: usize,
+    /// DOFs fixed.
+    pub fix: Vec<DofName>,
+}
+
+/// The model part of a `static` or `modal` case (also the content of a mesh file).
+#[derive(Debug, Clone, Default, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MeshSpec {
+    /// Named materials.
+    #[serde(default)]
+    pub materials: BTreeMap<String, MaterialSpec>,
+    /// Named sections.
+    #[serde(default)]
+    pub sections: BTreeMap<String, SectionSpec>,
+    /// Node coordinates, mm.
+    #[serde(default)]
+    pub nodes: Vec<[f64; 3]>,
+    /// Elements.
+    #[serde(default)]
+    pub elements: Vec<ElementSpec>,
+    /// Rigid links (also accepted as elements of type `rigid`).
+    #[serde(default)]
+    pub rigid_links: Vec<RigidSpec>,
+    /// Supports.
+    #[serde(default)]
+    pub supports: Vec<SupportSpec>,
+    /// Load cases (`static`: at least one, inline or in the mesh file; `modal` ignores them).
+    #[serde(default)]
+    pub load_cases: Vec<LoadCaseSpec>,
+    /// Gmsh meshes: the mapped physical groups of each element (filled by the `.msh` reader;
+    /// not a case-file field).
+    #[serde(skip)]
+    #[schemars(skip)]
+    pub element_groups: Vec<Vec<String>>,
+}
+
+/// A rigid link.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RigidSpec {
+    /// Master node.
+    pub master: usize,
+    /// Slave nodes.
+    pub slaves: Vec<usize>,
+}
+
+/// What a physical group becomes.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct GroupSpec {
+    /// Section name (a `shell` section for triangles/quads, a beam section for lines).
+    #[serde(default)]
+    pub section: Option<String>,
+    /// Material name.
+    #[serde(default)]
+    pub material: Option<String>,
+    /// Beam orientation vector (lines).
+    #[serde(default)]
+    pub up: Option<[f64; 3]>,
+    /// Fixed DOFs of every node of the group.
+    #[serde(default)]
+    pub fix: Vec<DofName>,
+}
+
+/// The `gmsh` mapping of a case with a `.msh` mesh.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct GmshMapping {
+    /// Physical group name → what it becomes.
+    pub groups: BTreeMap<String, GroupSpec>,
+}
