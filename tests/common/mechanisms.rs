@@ -35,22 +35,27 @@ impl Builder {
 
     /// A `hinge` element a→b (compliant axis = local y; the notch thins along local z = `up`).
     pub fn hinge(&mut self, a: usize, b: usize, spec: &Value, material: &str, up: [f64; 3]) -> usize {
-        self.elements.push(json!({"type": "hinge", "nodes": [a, b], "hinge": spec, "material": material, "up": rounded(up)}));
+        self.elements
+            .push(json!({"type": "hinge", "nodes": [a, b], "hinge": spec, "material": material, "up": rounded(up)}));
         self.elements.len() - 1
     }
 
     pub fn beam(&mut self, a: usize, b: usize, section: &str, material: &str, up: [f64; 3]) -> usize {
-        self.elements.push(json!({"type": "beam", "nodes": [a, b], "section": section, "material": material, "up": rounded(up)}));
+        self.elements.push(
+            json!({"type": "beam", "nodes": [a, b], "section": section, "material": material, "up": rounded(up)}),
+        );
         self.elements.len() - 1
     }
 
     pub fn rigid(&mut self, master: usize, slaves: &[usize]) -> usize {
-        self.elements.push(json!({"type": "rigid", "master": master, "slaves": slaves}));
+        self.elements
+            .push(json!({"type": "rigid", "master": master, "slaves": slaves}));
         self.elements.len() - 1
     }
 
     pub fn clamp(&mut self, node: usize) {
-        self.supports.push(json!({"node": node, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}));
+        self.supports
+            .push(json!({"node": node, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}));
     }
 
     /// The model part of a mesh file (materials and sections given by the caller).
@@ -82,7 +87,11 @@ pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
 }
 pub fn unit(a: [f64; 3]) -> [f64; 3] {
     scale(a, 1.0 / dot(a, a).sqrt())
@@ -214,7 +223,15 @@ impl PanTilt {
             ("variant 3: R = 2", PanTilt { r: 2.0, ..s }, 9.070, 48.20),
             ("variant 4: delta = 1", PanTilt { delta: 1.0, ..s }, 8.253, 51.13),
             ("variant 5: h = 10", PanTilt { h: 10.0, ..s }, 8.710, 48.98),
-            ("no passive limb", PanTilt { passive_limb: false, ..s }, 9.155, 47.38),
+            (
+                "no passive limb",
+                PanTilt {
+                    passive_limb: false,
+                    ..s
+                },
+                9.155,
+                47.38,
+            ),
         ]
     }
 
@@ -343,10 +360,9 @@ pub fn pantilt_mesh(p: &PanTilt) -> PanTiltMesh {
         slaves.push(ends[7][1]);
     }
     b.rigid(platform, &slaves);
-    for j in 0..3 {
-        if p.passive_limb || j != 2 {
-            b.clamp(ends[j][0]);
-        }
+    let bases = if p.passive_limb { 3 } else { 2 };
+    for end in &ends[..bases] {
+        b.clamp(end[0]);
     }
     let mut sections = json!({});
     if p.links == Links::Nylon {
@@ -422,7 +438,11 @@ pub fn pantilt_ikp(pitch_deg: f64, phase_deg: f64) -> [f64; 2] {
         let (rho, psi) = ((c * c + s * s).sqrt(), s.atan2(c));
         let d = (0.5 / rho).acos();
         let cands = [psi + d - al, psi - d - al];
-        let best = if cands[0].abs() < cands[1].abs() { cands[0] } else { cands[1] };
+        let best = if cands[0].abs() < cands[1].abs() {
+            cands[0]
+        } else {
+            cands[1]
+        };
         out[j] = best.to_degrees();
     }
     out
@@ -460,7 +480,8 @@ pub fn lever_case() -> Value {
     b.hinge(act, inp, &spec, "al", [1.0, 0.0, 0.0]);
     b.rigid(top, &[inp, out]);
     b.clamp(foot);
-    b.supports.push(json!({"node": act, "fix": ["ux", "uz", "rx", "ry", "rz"]}));
+    b.supports
+        .push(json!({"node": act, "fix": ["ux", "uz", "rx", "ry", "rz"]}));
     let mut case = b.mesh(json!({"al": "Al7075"}), json!({}));
     let obj = case.as_object_mut().unwrap();
     obj.shift_remove("sections");
@@ -472,4 +493,127 @@ pub fn lever_case() -> Value {
         json!([{"name": "stroke_10um", "displacements": [{"node": act, "dof": "uy", "value": LEVER_STROKE}]}]),
     );
     Value::Object(out_case)
+}
+
+// ---------------------------------------------------------------------------------------------
+// Seed 004: 3-PRS friction-stir-welding head (Han, Wang and Shi)
+// ---------------------------------------------------------------------------------------------
+
+/// Link length, base and platform radii (seed 004, Tables I and III), mm.
+pub const PRS_LINK: f64 = 185.0;
+pub const PRS_BASE_R: f64 = 470.0;
+pub const PRS_PLATFORM_R: f64 = 315.0;
+/// Lead screw: 600 mm between its fixed-fixed mounts, A = 183.5 mm², E = 231 GPa, nut at
+/// mid-length (a = b = 300 mm, the pose z = −0.4 m the paper calls the poorest):
+/// k = A·E·L/(a·b) (seed 004, Eq. (8)), N/mm.
+pub fn prs_screw_stiffness() -> f64 {
+    183.5 * 231_000.0 * 600.0 / (300.0 * 300.0)
+}
+/// Platform centre height (the paper's z = −0.4 m), mm.
+pub const PRS_Z: f64 = -400.0;
+/// Node of the platform centre (the tool point) in `prs_head_case`.
+pub const PRS_TOOL_NODE: usize = 0;
+
+/// Seed 004's 3-PRS head at tilt β (deg, about the base y axis; the paper's α = 0 read as the
+/// tilt axis' azimuth): vertical actuators (sliders) at radius 470 mm, 120° apart; ideal
+/// joints — a revolute joint (axis tangential, the slider's mᵢ) between each slider and its
+/// link, a spherical joint between each link and the platform (radius 315 mm; three arms
+/// from its centre, 5 orders stiffer than the links, stand for the rigid platform);
+/// links 185 mm steel beams (A = 7200 mm², I = 8.64e6 mm⁴ for bending out of the leg plane,
+/// 2.16e6 mm⁴ in it, J = 1.296e6 mm⁴, E = 210 GPa, G = 82.4 GPa); each slider guided along z
+/// (its other five DOFs held by the guide) and held along z by its lead screw as an axial
+/// spring `prs_screw_stiffness`. The pose (slider strokes, platform placement) is the 3-PRS
+/// inverse kinematics of `flexfem::kinematics` with γ = 90° (vertical actuators). Load: the
+/// paper's F = [100, 50, 50] kN in the platform frame, at the platform centre (assumed to be
+/// the tool tip; the paper gives no tool length).
+pub fn prs_head_case(beta_deg: f64) -> Value {
+    prs_head_case_with(beta_deg, 0.0)
+}
+
+/// `prs_head_case` with the tool tip `tool` mm below the platform centre along the platform
+/// normal (a stiff arm; the load acts at the tip and the tip is node `PRS_TOOL_NODE`).
+pub fn prs_head_case_with(beta_deg: f64, tool: f64) -> Value {
+    use flexfem::kinematics::prs::Prs;
+    let prs = Prs::with_base_radius(PRS_LINK, PRS_PLATFORM_R, PRS_BASE_R, 90f64.to_radians()).unwrap();
+    let z0 = prs.p_home()[2];
+    let ik = prs.ikp(z0, 0.0, beta_deg.to_radians()).unwrap();
+    let (p, rot) = prs.placement(&ik.pose);
+    // Shift so the platform centre sits at the paper's z = −400 mm.
+    let dz = PRS_Z - p[2];
+    let at = |v: [f64; 3]| [v[0], v[1], v[2] + dz];
+    let mut b = Builder::default();
+    let w = [rot[(0, 2)], rot[(1, 2)], rot[(2, 2)]];
+    let tip = b.node(at(sub([p[0], p[1], p[2]], scale(w, tool))));
+    assert_eq!(tip, PRS_TOOL_NODE);
+    let tool_node = if tool > 0.0 {
+        b.node(at([p[0], p[1], p[2]]))
+    } else {
+        tip
+    };
+    if tool > 0.0 {
+        b.beam(
+            tool_node,
+            tip,
+            "platform_arm",
+            "steel",
+            [rot[(0, 0)], rot[(1, 0)], rot[(2, 0)]],
+        );
+    }
+    let tool = tool_node;
+    let mut platform_points = Vec::new();
+    let mut springs = Vec::new();
+    for i in 0..3 {
+        let c = prs.c_point(i, ik.s[i]);
+        let bp = prs.b_point(i, &ik.pose);
+        let m = prs.m(i);
+        let (c, bp, m) = ([c[0], c[1], c[2]], [bp[0], bp[1], bp[2]], [m[0], m[1], m[2]]);
+        // The slider: guided along z at its nut, 50 mm below the revolute joint, joined to
+        // the joint node by a stiff arm (a joint node carries the joint frame: it takes no
+        // partial support).
+        let nut = b.node(at(sub(c, [0.0, 0.0, 50.0])));
+        let slider = b.node(at(c));
+        b.beam(nut, slider, "platform_arm", "steel", m);
+        let link_foot = b.node(at(c));
+        let link_head = b.node(at(bp));
+        let plat = b.node(at(bp));
+        b.elements
+            .push(json!({"type": "joint", "nodes": [slider, link_foot], "kind": "revolute", "axis": rounded(m)}));
+        b.beam(link_foot, link_head, "link", "steel", m);
+        b.elements
+            .push(json!({"type": "joint", "nodes": [link_head, plat], "kind": "spherical"}));
+        b.supports
+            .push(json!({"node": nut, "fix": ["ux", "uy", "rx", "ry", "rz"]}));
+        springs.push(nut);
+        platform_points.push(plat);
+    }
+    // The platform: stiff arms from its centre to the three spherical joints (a joint cannot
+    // tie a rigid-link slave; the arms are 5 orders stiffer than the links).
+    for &q in &platform_points {
+        let x = unit(sub(b.nodes[q], b.nodes[tool]));
+        b.beam(tool, q, "platform_arm", "steel", unit(cross(x, [0.0, 0.0, 1.0])));
+    }
+    let k = prs_screw_stiffness();
+    for s in springs {
+        b.elements
+            .push(json!({"type": "spring", "nodes": [s], "k": [0, 0, r9(k), 0, 0, 0]}));
+    }
+    let f_local = [100_000.0, 50_000.0, 50_000.0];
+    let f: Vec<f64> = (0..3)
+        .map(|r| r9(rot[(r, 0)] * f_local[0] + rot[(r, 1)] * f_local[1] + rot[(r, 2)] * f_local[2]))
+        .collect();
+    let mesh = b.mesh(
+        json!({"steel": {"E": 210000, "nu": 0.2743, "density": 7.85e-9}}),
+        json!({
+            "link": {"shape": "general", "A": 7200, "Iy": 8.64e6, "Iz": 2.16e6, "J": 1.296e6},
+            "platform_arm": {"shape": "general", "A": 1e6, "Iy": 1e11, "Iz": 1e11, "J": 1e11}
+        }),
+    );
+    let mut case = serde_json::Map::new();
+    case.insert("analysis".into(), json!("static"));
+    case.extend(mesh.as_object().unwrap().clone());
+    case.insert(
+        "load_cases".into(),
+        json!([{"name": format!("fsw_beta{beta_deg}"), "forces": [{"node": tip, "F": [f[0], f[1], f[2], 0, 0, 0]}]}]),
+    );
+    Value::Object(case)
 }
