@@ -375,7 +375,12 @@ pub fn parse_msh_traced(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, 
     for (node, mut fix) in fixed {
         fix.sort_by_key(|d| *d as u8);
         fix.dedup();
-        spec.supports.push(SupportSpec { node, fix });
+        spec.supports.push(SupportSpec {
+            node,
+            fix,
+            frame: None,
+            axis: None,
+        });
     }
     let notes = vec![format!(
         "gmsh: {} nodes, {} elements built, {} skipped (no mapped group, or points); triangles as degenerate quads",

@@ -1,6 +1,7 @@
 //! Builds the FE model from the model shapes ([`super::shapes`]): validates every reference and
 //! value once, naming its JSON path.
 
+use super::frames;
 use super::lookup::{BuiltSection, Ctx, Named};
 use super::shapes::{ElementSpec, MeshSpec, RigidSpec, SectionSpec};
 use crate::case::error::{check, CaseError};
@@ -49,6 +50,7 @@ impl MeshSpec {
             materials,
             sections,
             model: fem::Model::new(),
+            frame_owner: BTreeMap::new(),
             model_index: Vec::with_capacity(self.elements.len()),
         };
         for (i, x) in self.nodes.iter().enumerate() {
@@ -99,21 +101,45 @@ impl MeshSpec {
         for (i, s) in self.supports.iter().enumerate() {
             let node = cx.node(format!("supports[{i}].node"), s.node)?;
             let dofs: Vec<Dof> = s.fix.iter().map(|d| d.dof()).collect();
-            if cx.model.frames.contains_key(&node) && dofs.len() < 6 {
-                return Err(CaseError::value(
-                    format!("supports[{i}].fix"),
-                    format!("{:?}", s.fix),
-                    format!("node {node} carries the frame of a joint element: a partial support there would act in the joint frame; clamp it (all six DOFs) or support a node joined to it"),
-                ));
+            let p = format!("supports[{i}]");
+            match frames::local(&p, s.frame, s.axis)? {
+                Some(l) => {
+                    if l.axis_only {
+                        frames::check_axis_dofs(&format!("{p}.fix"), &s.fix)?;
+                    }
+                    frames::set_node_frame(
+                        &mut cx,
+                        &format!("{p}.{}", if l.axis_only { "axis" } else { "frame" }),
+                        node,
+                        l.rows,
+                    )?;
+                }
+                None if cx.model.frames.contains_key(&node) && dofs.len() < 6 => {
+                    let owner = cx.frame_owner.get(&node).cloned().unwrap_or_default();
+                    return Err(CaseError::value(
+                        format!("{p}.fix"),
+                        format!("{:?}", s.fix),
+                        format!("node {node} carries the frame of `{owner}`, in which a partial support would act: give the support that `frame`, clamp all six DOFs, or support a node joined to it"),
+                    ));
+                }
+                None => {}
             }
             cx.model.supports.push(fem::Support::dofs(node, &dofs));
+        }
+        // A tie makes node b follow node a, so b must carry no support: a joint whose second
+        // node is supported ties the other way round (the joint is symmetric).
+        for t in &mut cx.model.ties {
+            let supported = |n: usize| cx.model.supports.iter().any(|s| s.node == n);
+            if supported(t.b) && !supported(t.a) {
+                std::mem::swap(&mut t.a, &mut t.b);
+            }
         }
         if need_loads && self.load_cases.is_empty() {
             return Err(CaseError::new("load_cases", "at least one load case is needed"));
         }
         unique_load_case_names(self.load_cases.iter().map(|c| c.name.as_str()))?;
         for (ic, c) in self.load_cases.iter().enumerate() {
-            let lc = super::build_loads::load_case(&cx, &format!("load_cases[{ic}]"), c)?;
+            let lc = super::build_loads::load_case(&mut cx, &format!("load_cases[{ic}]"), c)?;
             cx.model.load_cases.push(lc);
         }
         Ok(cx.model)

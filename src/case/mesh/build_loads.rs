@@ -1,5 +1,6 @@
 //! Builds the load cases of a model from their shapes ([`super::load_shapes`]).
 
+use super::frames;
 use super::load_shapes::DofName;
 use super::load_shapes::LoadCaseSpec;
 use super::lookup::Ctx;
@@ -7,24 +8,58 @@ use crate::case::error::{check, CaseError};
 use crate::fem;
 
 /// Builds load case `c` (at JSON path `p`) on the model built so far.
-pub(super) fn load_case(cx: &Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::LoadCase, CaseError> {
+pub(super) fn load_case(cx: &mut Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::LoadCase, CaseError> {
     let mut lc = fem::LoadCase::new(c.name.clone());
     for (i, f) in c.forces.iter().enumerate() {
         let node = cx.node(format!("{p}.forces[{i}].node"), f.node)?;
         for (k, v) in f.f.iter().enumerate() {
             check::finite(&format!("{p}.forces[{i}].F[{k}]"), *v)?;
         }
-        lc = lc.force(node, f.f);
+        let fp = format!("{p}.forces[{i}]");
+        let f = match frames::local(&fp, f.frame, f.axis)? {
+            Some(l) => frames::to_global(&l.rows, f.f),
+            None => f.f,
+        };
+        lc = lc.force(node, f);
     }
     for (i, d) in c.displacements.iter().enumerate() {
         let node = cx.node(format!("{p}.displacements[{i}].node"), d.node)?;
         check::finite(&format!("{p}.displacements[{i}].value"), d.value)?;
-        if cx.model.frames.contains_key(&node) {
-            return Err(CaseError::value(
-                format!("{p}.displacements[{i}].node"),
-                node,
-                "this node carries the frame of a joint element, in which a prescribed DOF would act: prescribe it at a node joined to it",
-            ));
+        let dp = format!("{p}.displacements[{i}]");
+        match frames::local(&dp, d.frame, d.axis)? {
+            Some(l) => {
+                if l.axis_only && !matches!(d.dof, DofName::Ux | DofName::Rx) {
+                    return Err(CaseError::value(
+                        format!("{dp}.dof"),
+                        format!("{:?}", d.dof).to_lowercase(),
+                        "with `axis` only ux (along it) or rx (about it) is defined; give `frame` for another direction",
+                    ));
+                }
+                let at = format!("{dp}.{}", if l.axis_only { "axis" } else { "frame" });
+                if !cx.model.frames.contains_key(&node)
+                    && cx
+                        .model
+                        .supports
+                        .iter()
+                        .any(|s| s.node == node && s.fix.iter().filter(|&&x| x).count() < 6)
+                {
+                    return Err(CaseError::value(
+                        at,
+                        format!("{:?}", l.rows),
+                        format!("node {node} has a partial support in global axes, which this frame would turn: give the support the same frame"),
+                    ));
+                }
+                frames::set_node_frame(cx, &at, node, l.rows)?;
+            }
+            None if cx.model.frames.contains_key(&node) => {
+                let owner = cx.frame_owner.get(&node).cloned().unwrap_or_default();
+                return Err(CaseError::value(
+                    format!("{dp}.node"),
+                    node,
+                    format!("this node carries the frame of `{owner}`, in which a prescribed DOF would act: give the displacement that `frame`, or prescribe it at another node"),
+                ));
+            }
+            None => {}
         }
         // Case files give rotations in degrees; the model works in radians.
         let value = match d.dof {

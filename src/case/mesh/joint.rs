@@ -1,6 +1,7 @@
 //! The `joint` element of mesh cases: an ideal joint between two coincident nodes, by
 //! elimination (a [`fem::Tie`] in a node frame whose local x is the joint axis).
 
+use super::frames::{cross, set_node_frame};
 use super::lookup::{norm, Ctx};
 use super::shapes::JointKind;
 use crate::case::error::CaseError;
@@ -78,23 +79,9 @@ pub(super) fn joint_element(
     };
     let frame = frame.or_else(|| cx.model.frames.get(&a).or(cx.model.frames.get(&b)).copied());
     if let Some(f) = frame {
-        for n in [a, b] {
-            if let Some(g) = cx.model.frames.get(&n) {
-                let diff = (0..3)
-                    .flat_map(|i| (0..3).map(move |j| (i, j)))
-                    .map(|(i, j)| (f[i][j] - g[i][j]).abs())
-                    .fold(0.0, f64::max);
-                if diff > 1e-12 {
-                    return Err(CaseError::value(
-                        format!("{p}.nodes"),
-                        format!("[{a}, {b}]"),
-                        format!("node {n} already has the frame of another joint (rows {g:?}); a node carries one joint frame: give this joint its own coincident node"),
-                    ));
-                }
-            }
-        }
-        cx.model.set_frame(a, f);
-        cx.model.set_frame(b, f);
+        let at = format!("{p}.nodes");
+        set_node_frame(cx, &at, a, f)?;
+        set_node_frame(cx, &at, b, f)?;
     }
     let mut dofs = [true; 6];
     for &k in free {
@@ -140,14 +127,6 @@ fn unit_axis(
 fn unit(v: [f64; 3]) -> [f64; 3] {
     let n = norm(v);
     v.map(|c| c / n)
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
 }
 
 /// Diagonal of the nodes' bounding box, mm (1 for a single point).

@@ -45,6 +45,13 @@ pub struct ForceSpec {
     /// [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)], global axes.
     #[serde(rename = "F")]
     pub f: [f64; 6],
+    /// Local frame: three orthonormal, right-handed rows (local x, y, z in global axes); the
+    /// DOF names (components) are then local.
+    #[serde(default)]
+    pub frame: Option<[[f64; 3]; 3]>,
+    /// One direction instead of `frame`: `ux` (`rx`) is then along it.
+    #[serde(default)]
+    pub axis: Option<[f64; 3]>,
 }
 
 /// A prescribed displacement.
@@ -56,8 +63,15 @@ pub struct DisplacementSpec {
     /// Which DOF.
     pub dof: DofName,
     /// Value: mm for `ux`, `uy`, `uz`; degrees for `rx`, `ry`, `rz` (rotation about the global
-    /// axis, right-handed).
+    /// axis, or the local one with `frame`/`axis`, right-handed).
     pub value: f64,
+    /// Local frame: three orthonormal, right-handed rows (local x, y, z in global axes); the
+    /// DOF names (components) are then local.
+    #[serde(default)]
+    pub frame: Option<[[f64; 3]; 3]>,
+    /// One direction instead of `frame`: `ux` (`rx`) is then along it.
+    #[serde(default)]
+    pub axis: Option<[f64; 3]>,
 }
 
 /// A load case.

@@ -67,6 +67,8 @@ pub(super) struct Ctx<'a> {
     pub materials: Named<'a, Material>,
     pub sections: Named<'a, BuiltSection>,
     pub model: fem::Model,
+    /// The JSON path that gave each framed node its frame.
+    pub frame_owner: BTreeMap<usize, String>,
     /// Model element index of each case element (masses and rigid links are no elements).
     pub model_index: Vec<Option<usize>>,
 }

@@ -7,6 +7,7 @@
 
 pub mod build;
 mod build_loads;
+mod frames;
 mod hinge;
 mod joint;
 pub mod load_shapes;

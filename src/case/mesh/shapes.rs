@@ -187,6 +187,13 @@ pub struct SupportSpec {
     pub node: usize,
     /// DOFs fixed.
     pub fix: Vec<DofName>,
+    /// Local frame: three orthonormal, right-handed rows (local x, y, z in global axes); the
+    /// DOF names (components) are then local.
+    #[serde(default)]
+    pub frame: Option<[[f64; 3]; 3]>,
+    /// One direction instead of `frame`: `ux` (`rx`) is then along it.
+    #[serde(default)]
+    pub axis: Option<[f64; 3]>,
 }
 
 /// The model part of a `static` or `modal` case (also the content of a mesh file).
