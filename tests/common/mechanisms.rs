@@ -400,6 +400,13 @@ pub fn pantilt_case(m: &PanTiltMesh) -> Value {
     })
 }
 
+/// `cases/pantilt_8r_modal.json`: the six lowest modes of the undriven pan-tilt (base hinges
+/// clamped at their proximal ends only; masses of the hinges and nylon links, no platform or
+/// camera mass — the paper gives none).
+pub fn pantilt_modal_case() -> Value {
+    json!({"analysis": "modal", "mesh": "../meshes/pantilt_8r.json", "modes": 6, "shapes": false})
+}
+
 /// Pitch and phase (deg) of the platform from its rotation vector (deg): the platform normal
 /// (top axis r7, z at home) after the rotation, n = R·z; pitch = angle of n from z, phase =
 /// azimuth of n.
