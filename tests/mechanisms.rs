@@ -88,17 +88,20 @@ fn pantilt_axes_reproduce_the_papers_inverse_kinematics() {
     assert!(h[0].abs() < 1e-12 && h[1].abs() < 1e-12, "{h:?}");
 }
 
-/// The hinge of the parallelogram as the `hinge` analysis sees it: the element's notch with
-/// the element's blank on either side.
-fn parallelogram_hinge_stiffness() -> f64 {
-    let spec = HingeSpec::CircularNotch {
+/// The hinge of the parallelogram (and the lever) as the `hinge` analysis sees it: the
+/// element's notch with the element's blank on either side.
+fn para_spec() -> HingeSpec {
+    HingeSpec::CircularNotch {
         r: PARA_R,
         t: PARA_T,
         w: PARA_W,
         h: PARA_H,
         blank_length: (PARA_HINGE_LEN - 2.0 * PARA_R) / 2.0,
-    };
-    characterise(&spec, &Material::AL7075).unwrap().hinge.k_bend
+    }
+}
+
+fn parallelogram_hinge_stiffness() -> f64 {
+    characterise(&para_spec(), &Material::AL7075).unwrap().hinge.k_bend
 }
 
 /// Parallelogram guide: lateral stiffness of the rigid four-bar with two torsion springs per
@@ -184,13 +187,7 @@ fn pivot_spread(spec: &HingeSpec) -> f64 {
 /// refined linkage.
 #[test]
 fn parallelogram_parasitic_drop_single_element_shortfall() {
-    let spec = HingeSpec::CircularNotch {
-        r: PARA_R,
-        t: PARA_T,
-        w: PARA_W,
-        h: PARA_H,
-        blank_length: (PARA_HINGE_LEN - 2.0 * PARA_R) / 2.0,
-    };
+    let spec = para_spec();
     let spread = pivot_spread(&spec);
     for l in [PARA_LEG, 50.0] {
         let mut case = parallelogram(l);
@@ -284,13 +281,7 @@ fn lever_amplifier_ratio_matches_the_lumped_lever() {
     let res = run_value(&read_json("cases/lever_amplifier.json"));
     let u_out = disp(&res, 0, LEVER_OUTPUT_NODE)[1];
     let ratio = u_out / LEVER_STROKE;
-    let spec = HingeSpec::CircularNotch {
-        r: PARA_R,
-        t: PARA_T,
-        w: PARA_W,
-        h: PARA_H,
-        blank_length: (PARA_HINGE_LEN - 2.0 * PARA_R) / 2.0,
-    };
+    let spec = para_spec();
     let hr = characterise(&spec, &Material::AL7075).unwrap().hinge;
     let (a, b) = (LEVER_IN, LEVER_OUT);
     let g = 2.0 * hr.k_bend / (a * hr.k_axial);
