@@ -7,6 +7,9 @@ use flexfem::material::Material;
 use rayon::prelude::*;
 use std::hint::black_box;
 
+#[path = "../tests/common/fixtures.rs"]
+mod fixtures;
+
 /// 10,000 circular-notch and spherical-neck designs over the Ruiz et al. design box.
 fn designs() -> Vec<HingeSpec> {
     (0..10_000)
@@ -36,20 +39,8 @@ fn designs() -> Vec<HingeSpec> {
 
 fn bench(c: &mut Criterion) {
     let al = Material::AL7075;
-    let circ = HingeSpec::CircularNotch {
-        r: 8.0,
-        t: 2.0,
-        w: 10.0,
-        h: 10.0,
-        blank_length: 20.0,
-    };
-    let neck = HingeSpec::SphericalNeck {
-        l: 5.0,
-        t: 3.0,
-        r: 4.0,
-        h: 10.0,
-        blank_length: 20.0,
-    };
+    let circ = fixtures::ruiz2019_revolute_hinge();
+    let neck = fixtures::ruiz2019_spherical_hinge();
     let mut g = c.benchmark_group("hinge");
     g.throughput(Throughput::Elements(1));
     g.bench_function("characterise_circular_notch", |b| {

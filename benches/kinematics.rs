@@ -1,11 +1,14 @@
 //! IKP and FKP speed. Target (issue 2): FKP from home to a 1 mm pose in under 5 µs.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use flexfem::kinematics::{workspace, PoseBox, Prs};
+use flexfem::kinematics::{workspace, PoseBox};
 use std::hint::black_box;
 
+#[path = "../tests/common/fixtures.rs"]
+mod fixtures;
+
 fn bench(c: &mut Criterion) {
-    let prs = Prs::new(109.215, 47.91, 45f64.to_radians(), 0.0).expect("Ruiz et al. (2019) geometry");
+    let prs = fixtures::ruiz2019_prs(0.0);
     let (psi, theta) = (0.1f64.to_radians(), -0.15f64.to_radians());
     let target = prs.ikp(1.0, psi, theta).expect("reachable");
     c.bench_function("ikp_one_pose", |b| {

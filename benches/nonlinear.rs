@@ -2,21 +2,14 @@
 //! co-rotational hinges and legs (target < 100 ms).
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use flexfem::case::{self, Case};
 use flexfem::stage::Drive;
 use std::hint::black_box;
 
-const CASE: &str = r#"{"analysis": "stage", "material": "Al7075",
-  "stage": {"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": 0, "leg": {"w": 10, "h": 10},
-            "revolute": {"type": "circular_notch", "R": 8, "t": 2},
-            "spherical": {"type": "spherical_neck", "l": 5, "t": 3, "R": 4}},
-  "load_cases": [{"name": "F20", "actuator_forces": [20, 20, 20]}]}"#;
+#[path = "../tests/common/fixtures.rs"]
+mod fixtures;
 
 fn bench(c: &mut Criterion) {
-    let Ok(Case::Stage(sc)) = case::parse(CASE) else {
-        panic!("bench case must parse")
-    };
-    let (design, _) = sc.validate().expect("valid");
+    let design = fixtures::ruiz2019_stage_design();
     let s = design.build().expect("builds");
     let strokes = vec![("row1".to_string(), Drive::Strokes([1.395, 1.531, 1.306]))];
     c.bench_function("stage_nonlinear_row1_20_steps", |b| {

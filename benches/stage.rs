@@ -1,21 +1,16 @@
 //! Full 3-PRS compliant stage: build + factorise + solve one load case (target < 5 ms).
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use flexfem::case::{self, Case};
 use flexfem::stage::Drive;
 use std::hint::black_box;
 
-const CASE: &str = r#"{"analysis": "stage", "material": "Al7075",
-  "stage": {"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": 0, "leg": {"w": 10, "h": 10},
-            "revolute": {"type": "circular_notch", "R": 8, "t": 2},
-            "spherical": {"type": "spherical_neck", "l": 5, "t": 3, "R": 4}},
-  "load_cases": [{"name": "F20", "actuator_forces": [20, 20, 20]}]}"#;
+#[path = "../tests/common/fixtures.rs"]
+mod fixtures;
 
 fn bench(c: &mut Criterion) {
-    let Ok(Case::Stage(sc)) = case::parse(CASE) else {
-        panic!("bench case must parse")
-    };
-    let (design, drives) = sc.validate().expect("valid");
+    // The bundled case's first load case, F20 (equal 20 N actuator forces).
+    let (design, mut drives) = fixtures::stage_case(fixtures::RUIZ2019_STAGE);
+    drives.truncate(1);
     c.bench_function("stage_build_factor_solve_one_case", |b| {
         b.iter(|| {
             let s = design.build().expect("builds");

@@ -77,14 +77,13 @@ fn design_meets_the_paper_requirements_verified_by_a_stage_run() {
     assert_eq!(v["meets"], true, "{}", v["message"]);
     let d = &v["design"];
     // Re-run the returned design through the `stage` analysis.
-    let stage = format!(
-        r#"{{"analysis": "stage", "material": "Al7075",
-            "stage": {{"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": 0, "leg": {{"w": 10, "h": 10}},
-                      "revolute": {{"type": "circular_notch", "R": {}, "t": {}}},
-                      "spherical": {{"type": "spherical_neck", "l": {}, "t": {}, "R": {}}}}},
-            "load_cases": [{{"name": "F", "actuator_forces": [20, 20, 20]}}]}}"#,
-        d["R_rev"], d["t_rev"], d["l_sph"], d["t_sph"], d["R_sph"]
-    );
+    let stage = fixtures::ruiz2019_stage_with(|case| {
+        let s = &mut case["stage"];
+        s["revolute"] = serde_json::json!({"type": "circular_notch", "R": d["R_rev"], "t": d["t_rev"]});
+        s["spherical"] =
+            serde_json::json!({"type": "spherical_neck", "l": d["l_sph"], "t": d["t_sph"], "R": d["R_sph"]});
+        case["load_cases"] = serde_json::json!([{"name": "F", "actuator_forces": [20, 20, 20]}]);
+    });
     let (code, s, err) = run_json_text("verify_design", &stage);
     assert_eq!(code, Some(0), "{err}");
     let z = f(&s["at_allowable"]["z"]);

@@ -8,6 +8,8 @@ use flexfem::fem::{
 };
 use flexfem::material::Material;
 
+mod common;
+
 const STEEL: Material = Material::STEEL;
 
 /// Steel 1e6× stiffer (the ideal-joint convention for rigid bodies).
@@ -278,21 +280,9 @@ fn shell_plate_without_in_plane_support_is_a_mechanism_in_plane() {
     // in x and y and spin about z (the in-plane rigid motions), so only ux, uy, rz move.
     let (n, a) = (4, 40.0);
     let mut m = Model::new();
-    for j in 0..=n {
-        for i in 0..=n {
-            m.add_node([a * i as f64 / n as f64, a * j as f64 / n as f64, 0.0]);
-        }
-    }
-    let id = |i: usize, j: usize| j * (n + 1) + i;
-    for j in 0..n {
-        for i in 0..n {
-            m.add_element(Element::Shell4(flexfem::fem::Shell4 {
-                nodes: [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)],
-                t: 1.0,
-                material: STEEL,
-            }));
-        }
-    }
+    let id = common::meshes::shell_grid(&mut m, (n, n), 1.0, STEEL, |i, j| {
+        [a * i as f64 / n as f64, a * j as f64 / n as f64, 0.0]
+    });
     for j in 0..=n {
         for i in 0..=n {
             if i == 0 || j == 0 || i == n || j == n {

@@ -554,6 +554,14 @@ impl Findings {
             *e = (e.0, text, what.to_string(), detail);
         }
     }
+
+    /// Records a refusal of `doc` whose error `path` is not in the case.
+    fn unlocated(&mut self, doc: &Value, what: &str, analysis: &str, path: &str, message: &str) {
+        if !path_resolves(doc, path) {
+            let m = format!("error path `{path}` is not in the case: {message}");
+            self.add(class_of("refusal without a JSON path", analysis, path), doc, what, m);
+        }
+    }
 }
 
 fn class_of(kind: &str, analysis: &str, detail: &str) -> String {
@@ -606,15 +614,7 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
         }
         Ok(Err(e)) => {
             f.refused += 1;
-            if !path_resolves(doc, &e.path) {
-                let m = format!("error path `{}` is not in the case: {}", e.path, e.message);
-                f.add(
-                    class_of("refusal without a JSON path", &analysis, &e.path),
-                    doc,
-                    what,
-                    m,
-                );
-            }
+            f.unlocated(doc, what, &analysis, &e.path, &e.message);
             return;
         }
         Ok(Ok(c)) => c,
@@ -628,15 +628,7 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
             }
             Ok(Err(e)) => {
                 f.refused += 1;
-                if !path_resolves(doc, &e.path) {
-                    let m = format!("error path `{}` is not in the case: {}", e.path, e.message);
-                    f.add(
-                        class_of("refusal without a JSON path", &analysis, &e.path),
-                        doc,
-                        what,
-                        m,
-                    );
-                }
+                f.unlocated(doc, what, &analysis, &e.path, &e.message);
             }
             Ok(Ok(sweep)) => {
                 let n = sweep.len();
@@ -647,15 +639,7 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
                             exercise(&d, &format!("{what}; sweep design {i}"), f);
                         }
                         Err(e) => {
-                            if !path_resolves(doc, &e.path) {
-                                let m = format!("error path `{}` is not in the case: {}", e.path, e.message);
-                                f.add(
-                                    class_of("refusal without a JSON path", &analysis, &e.path),
-                                    doc,
-                                    what,
-                                    m,
-                                );
-                            }
+                            f.unlocated(doc, what, &analysis, &e.path, &e.message);
                         }
                     }
                 }
@@ -692,15 +676,7 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
                     m,
                 );
             }
-            if !path_resolves(doc, &e.path) {
-                let m = format!("error path `{}` is not in the case: {}", e.path, e.message);
-                f.add(
-                    class_of("refusal without a JSON path", &analysis, &e.path),
-                    doc,
-                    what,
-                    m,
-                );
-            }
+            f.unlocated(doc, what, &analysis, &e.path, &e.message);
         }
         Err(RunError::Analysis(e)) => {
             f.failed += 1;

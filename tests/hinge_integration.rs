@@ -4,15 +4,12 @@ use flexfem::hinge::integrate::{flex_integrals, Moduli, Quadrature};
 use flexfem::hinge::{segment_compliance, HingeSpec};
 use flexfem::material::Material;
 
+mod common;
+use common::fixtures;
+
 fn specs() -> Vec<HingeSpec> {
     vec![
-        HingeSpec::CircularNotch {
-            r: 8.0,
-            t: 2.0,
-            w: 10.0,
-            h: 10.0,
-            blank_length: 20.0,
-        },
+        fixtures::ruiz2019_revolute_hinge(),
         HingeSpec::CircularNotch {
             r: 10.0,
             t: 0.01,
@@ -28,14 +25,7 @@ fn specs() -> Vec<HingeSpec> {
             h: 4.0,
             blank_length: 10.0,
         },
-        HingeSpec::CornerFilleted {
-            l: 5.0,
-            r: 1.75,
-            t: 0.6,
-            w: 10.0,
-            h: 15.0,
-            blank_length: 15.0,
-        },
+        fixtures::pantilt_corner_filleted_hinge(),
         HingeSpec::Leaf {
             l: 10.0,
             t: 0.5,
@@ -43,13 +33,7 @@ fn specs() -> Vec<HingeSpec> {
             h: 5.0,
             blank_length: 10.0,
         },
-        HingeSpec::SphericalNeck {
-            l: 5.0,
-            t: 3.0,
-            r: 4.0,
-            h: 10.0,
-            blank_length: 20.0,
-        },
+        fixtures::ruiz2019_spherical_hinge(),
         HingeSpec::SphericalNeck {
             l: 1.0,
             t: 0.3,
@@ -135,13 +119,7 @@ fn prismatic_cantilever_matches_timoshenko() {
 fn segments_compose_to_whole() {
     // Flexibility of [a, c] = flexibility of [b, c] + that of [a, b] transported to c
     // (rigid transfer over c − b), so the stage builder may chain segment elements.
-    let spec = HingeSpec::CircularNotch {
-        r: 8.0,
-        t: 2.0,
-        w: 10.0,
-        h: 10.0,
-        blank_length: 20.0,
-    };
+    let spec = fixtures::ruiz2019_revolute_hinge();
     let p = spec.profile().unwrap();
     let m = Material::AL7075;
     let (a, b, c) = (-p.half_length(), 1.3, p.half_length());

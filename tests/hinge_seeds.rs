@@ -1,7 +1,10 @@
 //! Seed hinges against their published / reference stiffnesses.
 
-use flexfem::hinge::{characterise, HingeSpec};
+use flexfem::hinge::characterise;
 use flexfem::material::Material;
+
+mod common;
+use common::fixtures;
 
 fn pct(got: f64, reference: f64) -> f64 {
     100.0 * (got - reference) / reference
@@ -16,13 +19,7 @@ fn al() -> Material {
 fn seed000_revolute_circular_notch() {
     // Ruiz et al. (2019) §5: R = 8, t = 2 in the 10×10 leg, 20 mm blank each side;
     // ANSYS K = 98.37 N·m/rad = 98370 N·mm/rad about the compliant axis.
-    let spec = HingeSpec::CircularNotch {
-        r: 8.0,
-        t: 2.0,
-        w: 10.0,
-        h: 10.0,
-        blank_length: 20.0,
-    };
+    let spec = fixtures::ruiz2019_revolute_hinge();
     let r = characterise(&spec, &al()).unwrap();
     let e = pct(r.hinge.k_bend, 98_370.0);
     assert!(e.abs() < 5.0, "k_bend {} ({e:.2} %)", r.hinge.k_bend);
@@ -38,13 +35,7 @@ fn seed000_revolute_circular_notch() {
 fn seed000_spherical_neck() {
     // Ruiz et al. (2019) §5: l = 5, t = 3, R = 4 in the 10×10 leg, 20 mm blank each side;
     // ANSYS bending 32.67 N·m/rad, torsion 24.46 N·m/rad.
-    let spec = HingeSpec::SphericalNeck {
-        l: 5.0,
-        t: 3.0,
-        r: 4.0,
-        h: 10.0,
-        blank_length: 20.0,
-    };
+    let spec = fixtures::ruiz2019_spherical_hinge();
     let r = characterise(&spec, &al()).unwrap();
     let eb = pct(r.hinge.k_bend, 32_670.0);
     let et = pct(r.hinge.k_torsion, 24_460.0);
@@ -60,14 +51,7 @@ fn seed002_corner_filleted_nylon() {
     // ν = 0.33), 15 mm blank each side. Reference 4.05 N·mm/deg: converged 3-D solid FEM of the
     // stated geometry. The published 4.78 N·mm/deg does not follow from the stated
     // dimensions (plane-strain FEM gives 4.13), so it is not used.
-    let spec = HingeSpec::CornerFilleted {
-        l: 5.0,
-        r: 1.75,
-        t: 0.6,
-        w: 10.0,
-        h: 15.0,
-        blank_length: 15.0,
-    };
+    let spec = fixtures::pantilt_corner_filleted_hinge();
     let r = characterise(&spec, &Material::NYLON66).unwrap();
     let per_deg = r.hinge.k_bend.to_radians();
     let e = pct(per_deg, 4.05);
@@ -77,13 +61,7 @@ fn seed002_corner_filleted_nylon() {
 #[test]
 fn result_serialises_with_interface_names() {
     // The hinge result's field names.
-    let spec = HingeSpec::CircularNotch {
-        r: 8.0,
-        t: 2.0,
-        w: 10.0,
-        h: 10.0,
-        blank_length: 20.0,
-    };
+    let spec = fixtures::ruiz2019_revolute_hinge();
     let r = characterise(&spec, &al()).unwrap();
     let v = serde_json::to_value(&r).unwrap();
     for key in [

@@ -4,9 +4,12 @@ use flexfem::kinematics::{workspace, Pose, PoseBox, Prs};
 use nalgebra::{Matrix3, Vector3, Vector6};
 use proptest::prelude::*;
 
+mod common;
+use common::fixtures;
+
 /// Ruiz et al. (2019) §4: L = 109.215 mm, b = 47.91 mm, α₀ = 45°, horizontal actuators.
 fn ruiz() -> Prs {
-    Prs::new(109.215, 47.91, 45f64.to_radians(), 0.0).unwrap()
+    fixtures::ruiz2019_prs(0.0)
 }
 
 const ARCSEC: f64 = 1.0 / 3600.0;
@@ -196,7 +199,7 @@ fn gammas() -> impl Strategy<Value = f64> {
 /// A mechanism for γ: Ruiz et al. (2019) geometry for γ = 0, and the same leg/platform with the legs
 /// at 45° for the inclined layouts (Khan et al. / Nigatu et al. style).
 fn mechanism(gamma_deg: f64) -> Prs {
-    Prs::new(109.215, 47.91, 45f64.to_radians(), gamma_deg.to_radians()).unwrap()
+    fixtures::ruiz2019_prs(gamma_deg)
 }
 
 proptest! {

@@ -54,7 +54,7 @@ fn hinge_element_reproduces_the_hinge_analysis_compliance() {
     let al = flexfem::material::Material::builtin("Al7075").unwrap();
     for (h, d) in FAMILIES {
         let model = model_of(&case_text(h, d));
-        let res = fem::analysis::solve_static(&model).unwrap();
+        let res = fem::solve_static(&model).unwrap();
         let mut v: serde_json::Value = serde_json::from_str(h).unwrap();
         let notch: HingeSpec = {
             v["blank_length"] = 0.0.into();
@@ -117,7 +117,7 @@ fn hinge_element_nonlinear_and_modal() {
     let (h, d) = FAMILIES[0];
     let al = flexfem::material::Material::builtin("Al7075").unwrap();
     let model = model_of(&case_text(h, d));
-    let c44 = fem::analysis::solve_static(&model).unwrap().load_cases[4].displacements[1][4];
+    let c44 = fem::solve_static(&model).unwrap().load_cases[4].displacements[1][4];
     let m = 1e-4 / c44;
     let mut nl = model.clone();
     nl.load_cases = vec![fem::LoadCase::new("m").force(1, [0.0, 0.0, 0.0, 0.0, m, 0.0])];

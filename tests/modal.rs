@@ -4,17 +4,13 @@
 //! NASA SP-160, 1969, eq. 4.20: ω = π²(m² + n²)/a² · √(D/ρh)).
 
 use flexfem::fem::modal::{solve_modal, ModalOptions};
-use flexfem::fem::{Beam, Dof, Element, Model, PointMass, RigidLink, Section, Shell4, Support};
+use flexfem::fem::{Beam, Dof, Model, PointMass, RigidLink, Section, Support};
 use flexfem::material::Material;
 use std::f64::consts::PI;
 
-const STEEL: Material = Material {
-    e: 210_000.0,
-    nu: 0.3,
-    density: 7.85e-9,
-    yield_strength: f64::INFINITY,
-    allowable: f64::INFINITY,
-};
+mod common;
+
+use common::materials::STEEL;
 
 /// Beam of length 1000 mm, 10×10 mm steel, `ne` Euler–Bernoulli elements along x.
 fn beam(ne: usize) -> Model {
@@ -94,21 +90,9 @@ fn free_free_beam_six_rigid_modes_then_bending() {
 
 fn plate(n: usize, a: f64, t: f64, mat: Material) -> (Model, Vec<usize>) {
     let mut m = Model::new();
-    for j in 0..=n {
-        for i in 0..=n {
-            m.add_node([a * i as f64 / n as f64, a * j as f64 / n as f64, 0.0]);
-        }
-    }
-    let id = |i: usize, j: usize| j * (n + 1) + i;
-    for j in 0..n {
-        for i in 0..n {
-            m.add_element(Element::Shell4(Shell4 {
-                nodes: [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)],
-                t,
-                material: mat,
-            }));
-        }
-    }
+    let id = common::meshes::shell_grid(&mut m, (n, n), t, mat, |i, j| {
+        [a * i as f64 / n as f64, a * j as f64 / n as f64, 0.0]
+    });
     let edge = (0..=n)
         .flat_map(|j| (0..=n).map(move |i| (i, j)))
         .filter(|&(i, j)| i == 0 || j == 0 || i == n || j == n)

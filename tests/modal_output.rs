@@ -4,6 +4,8 @@
 
 use serde_json::{json, Value};
 
+mod common;
+
 fn f(v: &Value) -> f64 {
     v.as_f64().expect("number")
 }
@@ -11,22 +13,8 @@ fn f(v: &Value) -> f64 {
 /// A free (unsupported) steel plate 100 × 60 × 2 mm, 10×6 shells.
 fn free_plate(density: Value, shapes: Option<bool>, modes: usize) -> Value {
     let (nx, ny) = (10, 6);
-    let mut nodes = Vec::new();
-    for j in 0..=ny {
-        for i in 0..=nx {
-            nodes.push([10.0 * i as f64, 10.0 * j as f64, 0.0]);
-        }
-    }
-    let id = |i: usize, j: usize| j * (nx + 1) + i;
-    let mut elements = Vec::new();
-    for j in 0..ny {
-        for i in 0..nx {
-            elements.push(
-                json!({"type": "shell4", "nodes": [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)],
-                                  "section": "s", "material": "steel"}),
-            );
-        }
-    }
+    let (nodes, elements) =
+        common::meshes::shell_grid_json((nx, ny), "s", "steel", |i, j| [10.0 * i as f64, 10.0 * j as f64, 0.0]);
     let mut case = json!({
         "analysis": "modal",
         "modes": modes,

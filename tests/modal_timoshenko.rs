@@ -21,13 +21,8 @@ use flexfem::fem::{Beam, Dof, Model, Section, Support};
 use flexfem::material::Material;
 use std::f64::consts::PI;
 
-const STEEL: Material = Material {
-    e: 210_000.0,
-    nu: 0.3,
-    density: 7.85e-9,
-    yield_strength: f64::INFINITY,
-    allowable: f64::INFINITY,
-};
+mod common;
+use common::materials::STEEL;
 
 /// Timoshenko's simply supported frequency of mode n (Hz), smaller root of the quadratic in ω².
 fn timoshenko_ss_hz(n: usize, l: f64, d: f64, mat: &Material) -> f64 {

@@ -1,6 +1,7 @@
 //! Geometric nonlinearity (co-rotational beams, Newton–Raphson / arc length) against published
 //! large-deflection references.
 
+use common::nonlinear::{mat, opts};
 use flexfem::fem::solve::Parallelism;
 use flexfem::fem::{
     solve_nonlinear, solve_static_with, Beam, Dof, Element, FlexElement, LoadCase, Model, NodeDof, NonlinearOptions,
@@ -8,16 +9,6 @@ use flexfem::fem::{
 };
 use flexfem::material::Material;
 use std::f64::consts::PI;
-
-fn mat(e: f64, nu: f64) -> Material {
-    Material {
-        e,
-        nu,
-        density: 0.0,
-        yield_strength: 1e9,
-        allowable: 1e9,
-    }
-}
 
 /// Straight cantilever along x from the origin, `n` Euler–Bernoulli elements, clamped at node 0.
 fn cantilever(l: f64, n: usize, section: Section, m: Material) -> Model {
@@ -30,13 +21,6 @@ fn cantilever(l: f64, n: usize, section: Section, m: Material) -> Model {
     }
     model.supports.push(Support::clamp(0));
     model
-}
-
-fn opts(steps: usize) -> NonlinearOptions {
-    NonlinearOptions {
-        steps,
-        ..Default::default()
-    }
 }
 
 /// Cantilever rolled into a full circle by an end moment M = 2πEI/L: the tip returns to the
@@ -388,16 +372,8 @@ fn divergence_is_an_error_with_context() {
 /// (rigid-body) and the linear FEM. Ruiz et al. (2019) Table 4: FKP Δz = 1384, 722, −631, −1511 µm.
 #[test]
 fn stage_table4_nonlinear() {
-    use flexfem::stage::{pose_angles, Drive, StageDesign};
-    let text = r#"{"analysis": "stage", "material": "Al7075",
-        "stage": {"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": 0, "leg": {"w": 10, "h": 10},
-                  "revolute": {"type": "circular_notch", "R": 8, "t": 2},
-                  "spherical": {"type": "spherical_neck", "l": 5, "t": 3, "R": 4}},
-        "load_cases": [{"name": "x", "actuator_strokes": [0, 0, 0]}]}"#;
-    let flexfem::case::Case::Stage(c) = flexfem::case::parse(text).unwrap_or_else(|e| panic!("{e}")) else {
-        panic!("not a stage case")
-    };
-    let design: StageDesign = c.validate().unwrap_or_else(|e| panic!("{e}")).0;
+    use flexfem::stage::{pose_angles, Drive};
+    let design = common::fixtures::ruiz2019_stage_design();
     let stage = design.build().unwrap_or_else(|e| panic!("{e}"));
     let strokes = [
         [1.395, 1.531, 1.306],
@@ -539,12 +515,12 @@ fn static_nonlinear_case_and_steps_validation() {
         assert_eq!(out.status.code(), Some(2), "{extra}: {}", stderr(&out));
         assert!(stderr(&out).contains(msg), "{extra}: {}", stderr(&out));
     }
-    let stage_bad = r#"{"analysis": "stage", "material": "Al7075",
-        "stage": {"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": 0, "leg": {"w": 10, "h": 10},
-                  "revolute": {"type": "circular_notch", "R": 8, "t": 2},
-                  "spherical": {"type": "spherical_neck", "l": 5, "t": 3, "R": 4}},
-        "load_cases": [{"name": "x", "actuator_strokes": [1, 1, 1]}], "nonlinear": true, "steps": 100000}"#;
-    let out = run_case_text("nl_stage_bad", stage_bad);
+    let stage_bad = fixtures::ruiz2019_stage_with(|v| {
+        v["load_cases"] = serde_json::json!([{"name": "x", "actuator_strokes": [1, 1, 1]}]);
+        v["nonlinear"] = true.into();
+        v["steps"] = 100000.into();
+    });
+    let out = run_case_text("nl_stage_bad", &stage_bad);
     assert_eq!(out.status.code(), Some(2));
     assert!(stderr(&out).contains("`steps`"), "{}", stderr(&out));
 }
@@ -554,16 +530,8 @@ fn static_nonlinear_case_and_steps_validation() {
 /// the nonlinear Table 4 Δz by < 0.2 µm from the default 4 elements.
 #[test]
 fn stage_hinge_subdivision() {
-    use flexfem::stage::{Drive, StageDesign, NONLINEAR_HINGE_SEGMENTS};
-    let text = r#"{"analysis": "stage", "material": "Al7075",
-        "stage": {"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": 0, "leg": {"w": 10, "h": 10},
-                  "revolute": {"type": "circular_notch", "R": 8, "t": 2},
-                  "spherical": {"type": "spherical_neck", "l": 5, "t": 3, "R": 4}},
-        "load_cases": [{"name": "x", "actuator_strokes": [0, 0, 0]}]}"#;
-    let flexfem::case::Case::Stage(c) = flexfem::case::parse(text).unwrap_or_else(|e| panic!("{e}")) else {
-        panic!("not a stage case")
-    };
-    let design: StageDesign = c.validate().unwrap_or_else(|e| panic!("{e}")).0;
+    use flexfem::stage::{Drive, NONLINEAR_HINGE_SEGMENTS};
+    let design = common::fixtures::ruiz2019_stage_design();
     let stage = design.build().unwrap_or_else(|e| panic!("{e}"));
     let cases: Vec<(String, Drive)> = vec![
         ("row1".into(), Drive::Strokes([1.395, 1.531, 1.306])),
@@ -611,16 +579,8 @@ fn stage_hinge_subdivision() {
 /// finite rotation.
 #[test]
 fn ideal_joint_stage_follows_the_fkp_at_finite_strokes() {
-    use flexfem::stage::{Drive, StageDesign};
-    let text = r#"{"analysis": "stage", "material": "Al7075",
-        "stage": {"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": 0, "leg": {"w": 10, "h": 10},
-                  "revolute": {"type": "circular_notch", "R": 8, "t": 2},
-                  "spherical": {"type": "spherical_neck", "l": 5, "t": 3, "R": 4}, "ideal_joints": true},
-        "load_cases": [{"name": "x", "actuator_strokes": [0, 0, 0]}]}"#;
-    let flexfem::case::Case::Stage(c) = flexfem::case::parse(text).unwrap_or_else(|e| panic!("{e}")) else {
-        panic!("not a stage case")
-    };
-    let design: StageDesign = c.validate().unwrap_or_else(|e| panic!("{e}")).0;
+    use flexfem::stage::Drive;
+    let design = common::fixtures::ruiz2019_ideal_stage_design(0.0);
     let stage = design.build().unwrap_or_else(|e| panic!("{e}"));
     let strokes = [[1.395, 1.531, 1.306], [-1.485, -1.175, -1.781]];
     let cases: Vec<(String, Drive)> = strokes

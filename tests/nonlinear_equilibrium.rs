@@ -3,27 +3,10 @@
 //! Regression for the L-shaped cantilever that was accepted at one load step with its tip at
 //! (−2553, 1513, −454) mm, reactions of 5e6 N against a 60 N load and exit 0.
 
-use flexfem::fem::{solve_nonlinear, Beam, LoadCase, Model, NonlinearCase, NonlinearOptions, Section, Support};
-use flexfem::material::Material;
+use flexfem::fem::{solve_nonlinear, Beam, LoadCase, Model, NonlinearCase, Section, Support};
 
 mod common;
-
-fn mat(e: f64, nu: f64) -> Material {
-    Material {
-        e,
-        nu,
-        density: 0.0,
-        yield_strength: 1e9,
-        allowable: 1e9,
-    }
-}
-
-fn opts(steps: usize) -> NonlinearOptions {
-    NonlinearOptions {
-        steps,
-        ..Default::default()
-    }
-}
+use common::nonlinear::{mat, opts, Lcg};
 
 /// Sum of loads and reactions (forces, moments about the origin at the deformed positions)
 /// relative to the applied load: the statics of the returned state, recomputed here.
@@ -144,22 +127,6 @@ fn l_cantilever_cli_exit_code() {
         }
         Some(1) => assert!(stderr.contains("step "), "{stderr}"),
         other => panic!("exit {other:?}: {stderr}"),
-    }
-}
-
-/// Deterministic 64-bit LCG (Knuth's MMIX constants), uniform in [0, 1).
-struct Lcg(u64);
-
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * self.next()
     }
 }
 

@@ -10,19 +10,16 @@ use flexfem::material::Material;
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use std::f64::consts::PI;
 
+mod common;
+use common::nonlinear::{opts, Lcg};
+
 const E: f64 = 72000.0;
 const NU: f64 = 0.33;
 const D: f64 = 4.0;
 const L: f64 = 100.0;
 
 fn mat() -> Material {
-    Material {
-        e: E,
-        nu: NU,
-        density: 0.0,
-        yield_strength: 1e9,
-        allowable: 1e9,
-    }
+    common::nonlinear::mat(E, NU)
 }
 
 fn inertia() -> f64 {
@@ -49,13 +46,6 @@ fn bar(n: usize, m: Vector3<f64>, q: &Matrix3<f64>) -> Model {
     model
 }
 
-fn opts(steps: usize) -> NonlinearOptions {
-    NonlinearOptions {
-        steps,
-        ..Default::default()
-    }
-}
-
 fn tip(model: &Model, c: &NonlinearCase, n: usize) -> Vector3<f64> {
     Vector3::from(model.nodes[n])
         + Vector3::new(
@@ -69,21 +59,10 @@ fn rot(c: &NonlinearCase, n: usize) -> Matrix3<f64> {
     Matrix3::from_fn(|i, j| c.rotations[n][i][j])
 }
 
-/// Deterministic LCG (Knuth's MMIX constants), uniform in [0, 1).
-struct Lcg(u64);
-
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn rotation(&mut self) -> Matrix3<f64> {
-        let v = Vector3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * 2.0 * PI;
-        Rotation3::new(v).into_inner()
-    }
+/// A random rotation from three uniform draws of `rng`.
+fn random_rotation(rng: &mut Lcg) -> Matrix3<f64> {
+    let v = Vector3::new(rng.next() - 0.5, rng.next() - 0.5, rng.next() - 0.5) * 2.0 * PI;
+    Rotation3::new(v).into_inner()
 }
 
 /// Semicircle roll-up, M = πEI/L (the bar bends into a half circle of diameter 2L/π; classic
@@ -223,7 +202,7 @@ fn random_rotations_give_the_rotated_answer() {
         let r0 = solve_nonlinear(&base, &opts(20)).unwrap_or_else(|e| panic!("{name}: {e}"));
         let (t0, q0) = (tip(&base, &r0.load_cases[0], n), rot(&r0.load_cases[0], n));
         for k in 0..3 {
-            let q = rng.rotation();
+            let q = random_rotation(&mut rng);
             let model = bar(n, m, &q);
             let r = solve_nonlinear(&model, &opts(20)).unwrap_or_else(|e| panic!("{name} rotation {k}: {e}"));
             let (t, rr) = (tip(&model, &r.load_cases[0], n), rot(&r.load_cases[0], n));

@@ -2,28 +2,11 @@
 //! and every converged point is checked for stability (positive definite tangent stiffness),
 //! reported as `stable` and the bracketing `critical_load_factor`.
 
-use flexfem::fem::{solve_nonlinear, Beam, Dof, LoadCase, Model, NonlinearOptions, Section, Support};
-use flexfem::material::Material;
+use flexfem::fem::{solve_nonlinear, Beam, Dof, LoadCase, Model, Section, Support};
 use std::f64::consts::PI;
 
 mod common;
-
-fn mat(e: f64) -> Material {
-    Material {
-        e,
-        nu: 0.3,
-        density: 0.0,
-        yield_strength: 1e9,
-        allowable: 1e9,
-    }
-}
-
-fn opts(steps: usize) -> NonlinearOptions {
-    NonlinearOptions {
-        steps,
-        ..Default::default()
-    }
-}
+use common::nonlinear::{mat, opts};
 
 /// A straight leaf (L 50, 10 × 0.5, E 70000, 16 elements) clamped at the base, its top
 /// guided (rotations and lateral translations of a parallel guide: rotations fixed, axial
@@ -40,7 +23,7 @@ fn leaf_compressed_past_euler_is_flagged() {
         model.add_node([0.0, 0.0, l * i as f64 / n as f64]);
     }
     for i in 0..n {
-        model.add_beam(Beam::new(i, i + 1, Section::Rect { w, h: t }, mat(e), [1.0, 0.0, 0.0]).euler_bernoulli());
+        model.add_beam(Beam::new(i, i + 1, Section::Rect { w, h: t }, mat(e, 0.3), [1.0, 0.0, 0.0]).euler_bernoulli());
     }
     model.supports.push(Support::clamp(0));
     model
@@ -96,7 +79,7 @@ fn shallow_arch_snap_through_is_flagged() {
                     i,
                     i + 1,
                     Section::Rect { w: 10.0, h: 1.0 },
-                    mat(70000.0),
+                    mat(70000.0, 0.3),
                     [0.0, 0.0, 1.0],
                 )
                 .euler_bernoulli(),

@@ -7,8 +7,8 @@ mod common;
 use common::*;
 use std::fs;
 use std::os::unix::fs::symlink;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::path::Path;
+use std::process::{Command, Stdio};
 
 const SWEEP: &str = r#"{"analysis": "sweep",
  "base": {"analysis": "hinge", "material": "Al7075",
@@ -17,26 +17,12 @@ const SWEEP: &str = r#"{"analysis": "sweep",
 
 const PRECIOUS: &str = "precious data that is not flexfem output\n";
 
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    fs::write(&p, text).unwrap();
-    p
-}
-
 fn s(p: &Path) -> &str {
     p.to_str().unwrap()
 }
 
-fn code(o: &Output) -> Option<i32> {
-    o.status.code()
-}
-
 fn line_count(p: &Path) -> usize {
     fs::read_to_string(p).unwrap().lines().count()
-}
-
-fn cleanup(d: &Path) {
-    let _ = fs::remove_dir_all(d);
 }
 
 /// Symbolic links planted at every temporary name the old code used (`FILE.tmp`,

@@ -8,6 +8,8 @@
 //!   cross-reference rules) are listed in [`NOT_EXPRESSIBLE`] with the reason; the schema must
 //!   accept those (so the list stays honest).
 
+mod common;
+
 use serde_json::Value;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -293,13 +295,9 @@ fn unknown_static_or_modal_field_lists_every_accepted_field() {
 fn positional_arrays_for_objects_are_refused_like_the_schema_does() {
     let v = validator();
     let stage = |leg: Value| {
-        serde_json::json!({
-            "analysis": "stage",
-            "stage": {"L": 109.215, "b": 47.91, "alpha0_deg": 45, "leg": leg,
-                      "revolute": {"type": "circular_notch", "R": 8, "t": 2},
-                      "spherical": {"type": "spherical_neck", "l": 5, "t": 3, "R": 4}},
-            "load_cases": [{"name": "F", "actuator_forces": [1, 1, 1]}]
-        })
+        let mut case = common::fixtures::ruiz2019_stage_json();
+        case["stage"]["leg"] = leg;
+        case
     };
     let named = stage(serde_json::json!({"w": 10, "h": 10}));
     assert!(v.is_valid(&named));

@@ -7,8 +7,10 @@
 //! +4…+28 % on the square (modes 5–6 +28 %) and +7…+47 % on the skew plate.
 
 use flexfem::fem::modal::{solve_modal, ModalOptions};
-use flexfem::fem::{self, Element, LoadCase, Model, Shell4, Support};
+use flexfem::fem::{self, LoadCase, Model, Support};
 use flexfem::material::Material;
+
+mod common;
 
 const A: f64 = 100.0;
 const T: f64 = 0.1;
@@ -32,22 +34,10 @@ fn clamped_plate(n: usize, skew_deg: f64) -> Vec<f64> {
     let mat = Material::AL7075;
     let (sn, cs) = (skew_deg.to_radians().sin(), skew_deg.to_radians().cos());
     let mut m = Model::new();
-    for j in 0..=n {
-        for i in 0..=n {
-            let (u, v) = (A * i as f64 / n as f64, A * j as f64 / n as f64);
-            m.add_node([u + v * sn, v * cs, 0.0]);
-        }
-    }
-    let id = |i: usize, j: usize| j * (n + 1) + i;
-    for j in 0..n {
-        for i in 0..n {
-            m.add_element(Element::Shell4(Shell4 {
-                nodes: [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)],
-                t: T,
-                material: mat,
-            }));
-        }
-    }
+    let id = common::meshes::shell_grid(&mut m, (n, n), T, mat, |i, j| {
+        let (u, v) = (A * i as f64 / n as f64, A * j as f64 / n as f64);
+        [u + v * sn, v * cs, 0.0]
+    });
     for j in 0..=n {
         for i in 0..=n {
             if i == 0 || j == 0 || i == n || j == n {
@@ -134,12 +124,9 @@ fn clamped_square_plate_under_pressure_8x8() {
     let (n, q) = (8, 1e-3);
     let mat = Material::AL7075;
     let mut m = Model::new();
-    for j in 0..=n {
-        for i in 0..=n {
-            m.add_node([A * i as f64 / n as f64, A * j as f64 / n as f64, 0.0]);
-        }
-    }
-    let id = |i: usize, j: usize| j * (n + 1) + i;
+    let id = common::meshes::shell_grid(&mut m, (n, n), T, mat, |i, j| {
+        [A * i as f64 / n as f64, A * j as f64 / n as f64, 0.0]
+    });
     let h = A / n as f64;
     let mut lc = LoadCase::new("q");
     for j in 0..=n {
@@ -149,15 +136,6 @@ fn clamped_square_plate_under_pressure_8x8() {
             } else {
                 lc = lc.force(id(i, j), [0.0, 0.0, -q * h * h, 0.0, 0.0, 0.0]);
             }
-        }
-    }
-    for j in 0..n {
-        for i in 0..n {
-            m.add_element(Element::Shell4(Shell4 {
-                nodes: [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)],
-                t: T,
-                material: mat,
-            }));
         }
     }
     m.load_cases.push(lc);

@@ -10,38 +10,21 @@
 //! below the first bending mode (133 Hz).
 
 use flexfem::fem::modal::{solve_modal, ModalOptions, ModalResults};
-use flexfem::fem::{Dof, Element, Model, Shell4, Support};
-use flexfem::material::Material;
+use flexfem::fem::{Dof, Model, Support};
 
-const STEEL: Material = Material {
-    e: 210_000.0,
-    nu: 0.3,
-    density: 7.85e-9,
-    yield_strength: f64::INFINITY,
-    allowable: f64::INFINITY,
-};
+mod common;
+
+use common::materials::STEEL;
 
 /// Clamped 45° rhombus of side `a` (mm), `n`×`n` shells of thickness `t`; with `in_plane_held`
 /// every node also has u, v, θz fixed.
 fn rhombus(n: usize, a: f64, t: f64, in_plane_held: bool) -> Model {
     let (c, s) = (std::f64::consts::FRAC_1_SQRT_2, std::f64::consts::FRAC_1_SQRT_2);
     let mut m = Model::new();
-    for j in 0..=n {
-        for i in 0..=n {
-            let (u, v) = (a * i as f64 / n as f64, a * j as f64 / n as f64);
-            m.add_node([u + v * c, v * s, 0.0]);
-        }
-    }
-    let id = |i: usize, j: usize| j * (n + 1) + i;
-    for j in 0..n {
-        for i in 0..n {
-            m.add_element(Element::Shell4(Shell4 {
-                nodes: [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)],
-                t,
-                material: STEEL,
-            }));
-        }
-    }
+    let id = common::meshes::shell_grid(&mut m, (n, n), t, STEEL, |i, j| {
+        let (u, v) = (a * i as f64 / n as f64, a * j as f64 / n as f64);
+        [u + v * c, v * s, 0.0]
+    });
     for j in 0..=n {
         for i in 0..=n {
             if i == 0 || j == 0 || i == n || j == n {

@@ -4,6 +4,8 @@
 
 use serde_json::{json, Value};
 
+mod common;
+
 fn run(case: Value) -> Value {
     let c = flexfem::case::parse_value(case, None).expect("valid case");
     flexfem::analysis::run(&c).expect("analysis runs").json
@@ -42,22 +44,10 @@ fn simply_supported_plate_under_pressure_matches_navier() {
     let (e, nu): (f64, f64) = (210000.0, 0.3);
     let n = 16;
     let h = 0.5 * a;
-    let mut nodes = Vec::new();
-    for j in 0..=n {
-        for i in 0..=n {
-            nodes.push([h * i as f64 / n as f64, h * j as f64 / n as f64, 0.0]);
-        }
-    }
-    let id = |i: usize, j: usize| j * (n + 1) + i;
-    let mut elements = Vec::new();
-    for j in 0..n {
-        for i in 0..n {
-            elements.push(
-                json!({"type": "shell4", "nodes": [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)],
-                                  "section": "s", "material": "m"}),
-            );
-        }
-    }
+    let (nodes, elements) = common::meshes::shell_grid_json((n, n), "s", "m", |i, j| {
+        [h * i as f64 / n as f64, h * j as f64 / n as f64, 0.0]
+    });
+    let id = common::meshes::grid_id(n);
     let mut supports = Vec::new();
     for j in 0..=n {
         for i in 0..=n {

@@ -4,6 +4,8 @@
 
 use serde_json::{json, Value};
 
+mod common;
+
 /// Runs a case given as JSON; the JSON result.
 fn run(case: Value) -> Value {
     let c = flexfem::case::parse_value(case, None).expect("valid case");
@@ -12,23 +14,32 @@ fn run(case: Value) -> Value {
 
 /// Structured flat strip [0, l] × [0, b] in z = 0, nx × ny quads (node (i, j) = j(nx+1) + i).
 fn strip(l: f64, b: f64, nx: usize, ny: usize) -> (Vec<[f64; 3]>, Vec<Value>) {
-    let mut nodes = Vec::new();
-    for j in 0..=ny {
-        for i in 0..=nx {
-            nodes.push([l * i as f64 / nx as f64, b * j as f64 / ny as f64, 0.0]);
-        }
-    }
-    let id = |i: usize, j: usize| j * (nx + 1) + i;
-    let mut el = Vec::new();
+    common::meshes::shell_grid_json((nx, ny), "s", "m", |i, j| {
+        [l * i as f64 / nx as f64, b * j as f64 / ny as f64, 0.0]
+    })
+}
+
+/// The statically determinate strip in pure bending: `strip(l, b, nx, ny)` of thickness `t`
+/// and `material`, end moment `mm` (about +y at x = l, −`mm` at x = 0) as edge moments
+/// `mm`/b per length, held against rigid motion only.
+fn bending_strip(l: f64, b: f64, t: f64, mm: f64, (nx, ny): (usize, usize), material: Value) -> Value {
+    let (nodes, elements) = strip(l, b, nx, ny);
+    let mut edges = Vec::new();
     for j in 0..ny {
-        for i in 0..nx {
-            el.push(
-                json!({"type": "shell4", "nodes": [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)],
-                           "section": "s", "material": "m"}),
-            );
-        }
+        edges.push(json!({"nodes": [j * (nx + 1) + nx, (j + 1) * (nx + 1) + nx], "m": [0.0, mm / b, 0.0]}));
+        edges.push(json!({"nodes": [j * (nx + 1), (j + 1) * (nx + 1)], "m": [0.0, -mm / b, 0.0]}));
     }
-    (nodes, el)
+    json!({
+        "analysis": "static",
+        "materials": {"m": material},
+        "sections": {"s": {"shape": "shell", "t": t}},
+        "nodes": nodes,
+        "elements": elements,
+        "supports": [{"node": 0, "fix": ["ux", "uy", "uz"]},
+                     {"node": nx, "fix": ["uy", "uz"]},
+                     {"node": ny * (nx + 1), "fix": ["uz"]}],
+        "load_cases": [{"name": "M", "edge_loads": edges}]
+    })
 }
 
 fn f(v: &Value) -> f64 {
@@ -44,23 +55,14 @@ fn f(v: &Value) -> f64 {
 fn strip_end_moment_gives_6m_over_bt2() {
     let (l, b, t, mm) = (100.0, 20.0, 2.0, 1500.0);
     let (nx, ny) = (10, 4);
-    let (nodes, elements) = strip(l, b, nx, ny);
-    let mut edges = Vec::new();
-    for j in 0..ny {
-        edges.push(json!({"nodes": [j * (nx + 1) + nx, (j + 1) * (nx + 1) + nx], "m": [0.0, mm / b, 0.0]}));
-        edges.push(json!({"nodes": [j * (nx + 1), (j + 1) * (nx + 1)], "m": [0.0, -mm / b, 0.0]}));
-    }
-    let case = json!({
-        "analysis": "static",
-        "materials": {"m": {"E": 70000.0, "nu": 0.3, "density": 2.7e-9, "yield": 500.0, "allowable": 300.0}},
-        "sections": {"s": {"shape": "shell", "t": t}},
-        "nodes": nodes,
-        "elements": elements,
-        "supports": [{"node": 0, "fix": ["ux", "uy", "uz"]},
-                     {"node": nx, "fix": ["uy", "uz"]},
-                     {"node": ny * (nx + 1), "fix": ["uz"]}],
-        "load_cases": [{"name": "M", "edge_loads": edges}]
-    });
+    let case = bending_strip(
+        l,
+        b,
+        t,
+        mm,
+        (nx, ny),
+        json!({"E": 70000.0, "nu": 0.3, "density": 2.7e-9, "yield": 500.0, "allowable": 300.0}),
+    );
     let r = run(case);
     let lc = &r["load_cases"][0];
     let sigma = 6.0 * mm / (b * t * t);
@@ -252,23 +254,7 @@ fn shell_forces_balance_the_load_on_a_free_body() {
 fn vtu_and_report_carry_shell_stresses() {
     let (l, b, t, mm) = (100.0, 20.0, 2.0, 1500.0);
     let (nx, ny) = (4, 2);
-    let (nodes, elements) = strip(l, b, nx, ny);
-    let mut edges = Vec::new();
-    for j in 0..ny {
-        edges.push(json!({"nodes": [j * (nx + 1) + nx, (j + 1) * (nx + 1) + nx], "m": [0.0, mm / b, 0.0]}));
-        edges.push(json!({"nodes": [j * (nx + 1), (j + 1) * (nx + 1)], "m": [0.0, -mm / b, 0.0]}));
-    }
-    let case = json!({
-        "analysis": "static",
-        "materials": {"m": "Al7075"},
-        "sections": {"s": {"shape": "shell", "t": t}},
-        "nodes": nodes,
-        "elements": elements,
-        "supports": [{"node": 0, "fix": ["ux", "uy", "uz"]},
-                     {"node": nx, "fix": ["uy", "uz"]},
-                     {"node": ny * (nx + 1), "fix": ["uz"]}],
-        "load_cases": [{"name": "M", "edge_loads": edges}]
-    });
+    let case = bending_strip(l, b, t, mm, (nx, ny), json!("Al7075"));
     let c = flexfem::case::parse_value(case, None).unwrap();
     let out = flexfem::analysis::run_with_files(&c).unwrap();
     let (_, vtu) = out.files.iter().find(|(n, _)| n == "M.vtu").expect("M.vtu");

@@ -3,8 +3,10 @@
 //! "Stress projection for membrane and shear locking in shell finite elements", CMAME 51 (1985)
 //! 221–258), and Timoshenko's clamped plate. Meshes and errors are stated per test.
 
-use flexfem::fem::{self, Dof, Element, LoadCase, Model, Shell4, Support};
+use flexfem::fem::{self, Dof, Element, LoadCase, Model, Support};
 use flexfem::material::Material;
+
+mod common;
 
 fn mat(e: f64, nu: f64) -> Material {
     Material {
@@ -19,23 +21,10 @@ fn mat(e: f64, nu: f64) -> Material {
 /// Structured grid of (nx+1)×(ny+1) nodes placed by `f(s, r)` with s, r ∈ [0, 1]; returns the
 /// node index function.
 fn grid(m: &mut Model, nx: usize, ny: usize, t: f64, mat: Material, f: impl Fn(f64, f64) -> [f64; 3]) -> Vec<usize> {
-    let base = m.nodes.len();
-    for j in 0..=ny {
-        for i in 0..=nx {
-            m.add_node(f(i as f64 / nx as f64, j as f64 / ny as f64));
-        }
-    }
-    let id = |i: usize, j: usize| base + j * (nx + 1) + i;
-    for j in 0..ny {
-        for i in 0..nx {
-            m.add_element(Element::Shell4(Shell4 {
-                nodes: [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)],
-                t,
-                material: mat,
-            }));
-        }
-    }
-    (0..(nx + 1) * (ny + 1)).map(|k| base + k).collect()
+    let id = common::meshes::shell_grid(m, (nx, ny), t, mat, |i, j| {
+        f(i as f64 / nx as f64, j as f64 / ny as f64)
+    });
+    (0..=ny).flat_map(|j| (0..=nx).map(move |i| id(i, j))).collect()
 }
 
 /// Consistent nodal loads of a uniform pressure/traction `q` (vector per unit area) on every

@@ -3,9 +3,8 @@
 
 mod common;
 use common::*;
-use flexfem::case::{self, Case};
 use flexfem::kinematics::Prs;
-use flexfem::stage::{Drive, StageDesign};
+use flexfem::stage::Drive;
 use proptest::prelude::*;
 
 fn run_json(path: &str) -> serde_json::Value {
@@ -74,27 +73,13 @@ fn table4_linear_fem_column_within_10um() {
     }
 }
 
-fn ideal_design(gamma_deg: f64) -> StageDesign {
-    let text = format!(
-        r#"{{"analysis": "stage", "material": "Al7075",
-            "stage": {{"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": {gamma_deg}, "leg": {{"w": 10, "h": 10}},
-                      "revolute": {{"type": "circular_notch", "R": 8, "t": 2}},
-                      "spherical": {{"type": "spherical_neck", "l": 5, "t": 3, "R": 4}}, "ideal_joints": true}},
-            "load_cases": [{{"name": "x", "actuator_strokes": [0, 0, 0]}}]}}"#
-    );
-    let Case::Stage(c) = case::parse(&text).unwrap() else {
-        panic!()
-    };
-    c.validate().unwrap().0
-}
-
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(24))]
     #[test]
     fn ideal_joint_fem_equals_fkp(gamma in prop_oneof![Just(0.0), Just(30.0)], s in prop::array::uniform3(-0.01f64..0.01)) {
         // With exact joints and stiff legs the FE model is the rigid mechanism: at 10 µm strokes
         // its (linear) pose equals the FKP pose to 0.1 µm (second-order terms are ~1e-3 µm).
-        let d = ideal_design(gamma);
+        let d = fixtures::ruiz2019_ideal_stage_design(gamma);
         let model = d.build().unwrap();
         let r = model.solve(&[("s".into(), Drive::Strokes(s))]).unwrap().remove(0);
         let prs: Prs = d.prs;

@@ -5,7 +5,6 @@ mod common;
 use common::*;
 use serde_json::Value;
 use std::collections::BTreeSet;
-use std::path::{Path, PathBuf};
 use std::process::Output;
 
 const BUNDLED: &str = "cases/ruiz2019_hinge_sweep.json";
@@ -16,20 +15,8 @@ fn bundled() -> String {
     root().join(BUNDLED).to_str().unwrap().to_string()
 }
 
-fn sweep(dir: &Path, args: &[&str]) -> Output {
-    let mut all = vec!["sweep"];
-    all.extend_from_slice(args);
-    run_in(dir, &all)
-}
-
 fn ok(o: &Output) {
     assert_eq!(o.status.code(), Some(0), "stderr: {}", stderr(o));
-}
-
-fn parse_lines(text: &str) -> Vec<Value> {
-    text.lines()
-        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("not a JSON line ({e}): {l}")))
-        .collect()
 }
 
 fn index(v: &Value) -> usize {
@@ -40,17 +27,6 @@ fn sorted_lines(text: &str) -> Vec<String> {
     let mut v: Vec<String> = text.lines().map(str::to_string).collect();
     v.sort();
     v
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-/// Removes a passing test's temp dir (a failing test leaves it for inspection).
-fn cleanup(d: &Path) {
-    let _ = std::fs::remove_dir_all(d);
 }
 
 fn rel(a: f64, b: f64) -> f64 {

@@ -6,7 +6,7 @@
 mod common;
 use common::*;
 use serde_json::Value;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
 const HINGE: &str = r#"{"type": "circular_notch", "R": 8, "t": 2, "w": 10, "h": 10, "blank_length": 20}"#;
@@ -19,32 +19,8 @@ fn sweep_case(material: &str, hinge: &str, vary: &str) -> String {
     )
 }
 
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-fn sweep(dir: &Path, args: &[&str]) -> Output {
-    let mut all = vec!["sweep"];
-    all.extend_from_slice(args);
-    run_in(dir, &all)
-}
-
-fn code(o: &Output) -> Option<i32> {
-    o.status.code()
-}
-
 fn lines(path: &Path) -> Vec<Value> {
-    std::fs::read_to_string(path)
-        .unwrap()
-        .lines()
-        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("not a JSON line ({e}): {l}")))
-        .collect()
-}
-
-fn cleanup(d: &Path) {
-    let _ = std::fs::remove_dir_all(d);
+    parse_lines(&std::fs::read_to_string(path).unwrap())
 }
 
 /// Resume after the base case changed: every finished line is stale (its `design_hash` no

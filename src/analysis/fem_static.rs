@@ -110,7 +110,16 @@ pub struct Units {
 
 /// Solves every load case of the model.
 pub fn solve(model: &Model) -> Result<(StaticResult, fem::StaticResults), AnalysisError> {
-    let res = fem::solve_static(model).map_err(|e| AnalysisError::new("model", e.to_string()))?;
+    solve_with(model, &mut fem::SolverCache::new())
+}
+
+/// [`solve`] reusing the systems of the worker's solver cache where the topology matches.
+pub fn solve_with(
+    model: &Model,
+    cache: &mut fem::SolverCache,
+) -> Result<(StaticResult, fem::StaticResults), AnalysisError> {
+    let res = fem::solve_static_cached(model, fem::solve::Parallelism::Rayon, cache)
+        .map_err(|e| AnalysisError::new("model", e.to_string()))?;
     let rows = res
         .load_cases
         .iter()

@@ -113,7 +113,7 @@ fn large_rotation(
             fe.elements[first_notch].section_forces[0],
             fe.elements[last_notch].section_forces[1],
         ];
-        crate::stage::hinge_peak_stress(&profile, m.nu, kt, &sf, neck)
+        crate::hinge::hinge_peak_stress(&profile, m.nu, kt, &sf, neck)
     };
     // Linear response to a unit force: rotation and stress per newton.
     model.load_cases = vec![LoadCase::new("unit").force(tip, [0.0, 0.0, 1.0, 0.0, 0.0, 0.0])];

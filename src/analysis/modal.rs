@@ -2,7 +2,7 @@
 //! mode shapes, effective mass fractions; VTK file with the mode shapes.
 
 use super::{AnalysisError, Report};
-use crate::fem::modal::{solve_modal, ModalOptions, ModalResults};
+use crate::fem::modal::{ModalOptions, ModalResults};
 use crate::fem::Model;
 use crate::report::markdown::Table;
 use serde::Serialize;
@@ -68,9 +68,21 @@ pub struct ModalResult {
 
 /// Solves the modal problem.
 pub fn solve(model: &Model, modes: usize, shift_hz: Option<f64>) -> Result<(ModalResult, ModalResults), AnalysisError> {
+    solve_with(model, modes, shift_hz, &mut crate::fem::SolverCache::new())
+}
+
+/// [`solve`] reusing the pattern and symbolic factorisation of the worker's solver cache where
+/// the topology matches.
+pub fn solve_with(
+    model: &Model,
+    modes: usize,
+    shift_hz: Option<f64>,
+    cache: &mut crate::fem::SolverCache,
+) -> Result<(ModalResult, ModalResults), AnalysisError> {
     let mut opts = ModalOptions::new(modes);
     opts.shift = shift_hz.map(|f| (2.0 * std::f64::consts::PI * f).powi(2));
-    let r = solve_modal(model, &opts).map_err(|e| AnalysisError::new("model", e.to_string()))?;
+    let r = crate::fem::modal::solve_modal_cached(model, &opts, cache)
+        .map_err(|e| AnalysisError::new("model", e.to_string()))?;
     let mut cum = [0.0; 6];
     let rows = r
         .modes

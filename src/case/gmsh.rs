@@ -321,6 +321,11 @@ pub fn parse_msh_traced(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, 
             skipped += 1;
             continue;
         }
+        if matches!((e.kind, nodes.len()), (15, 1) | (1, 2) | (2, 3) | (3, 4)) {
+            for &(gname, _) in &groups {
+                spec.group_cells.entry(gname.clone()).or_default().push(nodes.clone());
+            }
+        }
         for &(gname, g) in &groups {
             if !g.fix.is_empty() {
                 for &n in &nodes {

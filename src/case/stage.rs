@@ -3,8 +3,8 @@
 use super::error::{check, CaseError};
 use super::kinematics::MechanismSpec;
 use super::material::MaterialSpec;
-use crate::hinge::HingeSpec;
-use crate::stage::{Drive, StageDesign, StageError};
+use crate::hinge::{Contour, HingeError, HingeSpec};
+use crate::stage::{Drive, StageDesign, StageError, ValidStage};
 use serde::Deserialize;
 
 /// Leg cross-section.
@@ -19,113 +19,15 @@ pub struct LegSpec {
     pub h: f64,
 }
 
-/// A hinge of the stage; its width and blank come from the leg.
-#[derive(Debug, Clone, Copy, Deserialize, schemars::JsonSchema)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
-pub enum StageHinge {
-    /// Circular notch: radius R, minimum thickness t, mm.
-    CircularNotch {
-        /// Notch radius, mm, > 0.
-        #[serde(rename = "R")]
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        r: f64,
-        /// Minimum thickness, mm, > 0 and < the leg height `h`.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        t: f64,
-    },
-    /// Elliptical notch: semi-axes ax (along the leg), ay (depth), minimum thickness t, mm.
-    EllipticalNotch {
-        /// Semi-axis along the leg, mm, > 0.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        ax: f64,
-        /// Semi-axis across, mm, > 0.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        ay: f64,
-        /// Minimum thickness, mm, > 0 and < the leg height `h`.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        t: f64,
-    },
-    /// Corner-filleted notch: length l, fillet radius R, thickness t, mm.
-    CornerFilleted {
-        /// Total notch length, mm, > 0.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        l: f64,
-        /// Fillet radius, mm, > 0 and ≤ l/2.
-        #[serde(rename = "R")]
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        r: f64,
-        /// Thickness, mm, > 0 and < the leg height `h`.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        t: f64,
-    },
-    /// Leaf: length l, thickness t, mm.
-    Leaf {
-        /// Length, mm, > 0.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        l: f64,
-        /// Thickness, mm, > 0 and < the leg height `h`.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        t: f64,
-    },
-    /// Turned neck: diameter t over length l, fillet radius R, mm.
-    SphericalNeck {
-        /// Straight neck length, mm, ≥ 0.
-        #[schemars(range(min = 0))]
-        l: f64,
-        /// Neck diameter, mm, > 0 and < the smaller leg side.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        t: f64,
-        /// Fillet radius, mm, > 0.
-        #[serde(rename = "R")]
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        r: f64,
-    },
-}
+/// A hinge of the stage, by `type`: the hinge family and notch contour; its width and blank
+/// come from the leg.
+pub type StageHinge = Contour;
 
-impl StageHinge {
-    /// The full hinge spec in a w × h leg, blank length 0.
-    pub fn spec(&self, leg: &LegSpec) -> HingeSpec {
-        let (w, h) = (leg.w, leg.h);
-        match *self {
-            StageHinge::CircularNotch { r, t } => HingeSpec::CircularNotch {
-                r,
-                t,
-                w,
-                h,
-                blank_length: 0.0,
-            },
-            StageHinge::EllipticalNotch { ax, ay, t } => HingeSpec::EllipticalNotch {
-                ax,
-                ay,
-                t,
-                w,
-                h,
-                blank_length: 0.0,
-            },
-            StageHinge::CornerFilleted { l, r, t } => HingeSpec::CornerFilleted {
-                l,
-                r,
-                t,
-                w,
-                h,
-                blank_length: 0.0,
-            },
-            StageHinge::Leaf { l, t } => HingeSpec::Leaf {
-                l,
-                t,
-                w,
-                h,
-                blank_length: 0.0,
-            },
-            StageHinge::SphericalNeck { l, t, r } => HingeSpec::SphericalNeck {
-                l,
-                t,
-                r,
-                h: w.min(h),
-                blank_length: 0.0,
-            },
-        }
-    }
+/// The full hinge spec of a stage joint in a w × h leg (the neck in a square of the smaller
+/// leg side), blank length 0.
+pub fn stage_hinge_spec(c: &StageHinge, leg: &LegSpec) -> HingeSpec {
+    let h = if c.is_neck() { leg.w.min(leg.h) } else { leg.h };
+    HingeSpec::in_blank(*c, leg.w, h, 0.0)
 }
 
 /// The `stage` object: 3-PRS geometry, leg section and hinges. Give either `alpha0_deg` or `a`.
@@ -281,18 +183,44 @@ pub struct FemVsFkpCase {
     pub steps: Option<usize>,
 }
 
-/// Maps a stage-builder error to a case error under `stage`.
+/// Maps a stage-builder error to a case error: design parameters under `stage`, hinge
+/// parameters under `stage.revolute` / `stage.spherical`, material constants under `material`.
 pub fn stage_error(e: StageError) -> CaseError {
     match e {
-        StageError::Geometry { field, message } if field.starts_with("material.") => CaseError::new(field, message),
         StageError::Geometry { field, message } => CaseError::new(format!("stage.{field}"), message),
+        StageError::Hinge { joint, source } => match source {
+            HingeError::InvalidGeometry { param, value, allowed } => CaseError::new(
+                format!("stage.{}.{param}", joint.name()),
+                format!("value {value} is not allowed: {allowed}"),
+            ),
+            HingeError::InvalidMaterial { param, value, allowed } => CaseError::new(
+                format!("material.{param}"),
+                format!("value {value} is not allowed: {allowed}"),
+            ),
+        },
         StageError::Fem(f) => CaseError::new("stage", f.to_string()),
     }
+}
+
+/// Solid-calibration warnings of a validated stage's hinges, under their JSON paths
+/// (`stage.revolute: …`, `stage.spherical: …`).
+pub fn stage_warnings(v: &ValidStage) -> Vec<String> {
+    let [rev, sph] = v.calibration_warnings();
+    let at = |path: &'static str| move |w: String| format!("{path}: {w}");
+    rev.into_iter()
+        .map(at("stage.revolute"))
+        .chain(sph.into_iter().map(at("stage.spherical")))
+        .collect()
 }
 
 impl StageSpec {
     /// Validates and builds the design.
     pub fn design(&self, material: &MaterialSpec) -> Result<StageDesign, CaseError> {
+        self.valid_design(material).map(ValidStage::into_design)
+    }
+
+    /// Validates the design once, into the value the stage builder takes.
+    pub fn valid_design(&self, material: &MaterialSpec) -> Result<ValidStage, CaseError> {
         let material = material.resolve("material")?;
         let mech = MechanismSpec {
             l: self.l,
@@ -304,11 +232,10 @@ impl StageSpec {
         let prs = mech.build("stage")?;
         check::positive("stage.leg.w", self.leg.w, "mm")?;
         check::positive("stage.leg.h", self.leg.h, "mm")?;
-        if matches!(self.revolute, StageHinge::SphericalNeck { .. }) {
+        if !self.revolute.fits_revolute() {
             return Err(CaseError::value("stage.revolute.type", "\"spherical_neck\"", "the revolute joint needs a notch with one compliant axis: circular_notch, elliptical_notch, corner_filleted or leaf"));
         }
-        if let StageHinge::SphericalNeck { .. } = self.spherical {
-        } else {
+        if !self.spherical.fits_spherical() {
             return Err(CaseError::value(
                 "stage.spherical.type",
                 "(a notch type)",
@@ -319,21 +246,25 @@ impl StageSpec {
             prs,
             leg_w: self.leg.w,
             leg_h: self.leg.h,
-            revolute: self.revolute.spec(&self.leg),
-            spherical: self.spherical.spec(&self.leg),
+            revolute: stage_hinge_spec(&self.revolute, &self.leg),
+            spherical: stage_hinge_spec(&self.spherical, &self.leg),
             material,
             ideal_joints: self.ideal_joints,
             leg_elements: self.leg_elements,
         };
-        d.validate().map_err(stage_error)?;
-        Ok(d)
+        d.validate().map_err(stage_error)
     }
 }
 
 impl StageCase {
     /// Validates everything before solving.
     pub fn validate(&self) -> Result<(StageDesign, Vec<(String, Drive)>), CaseError> {
-        let d = self.stage.design(&self.material)?;
+        self.validated().map(|(d, drives)| (d.into_design(), drives))
+    }
+
+    /// Validates everything before solving, keeping the validated design for the builder.
+    pub fn validated(&self) -> Result<(ValidStage, Vec<(String, Drive)>), CaseError> {
+        let d = self.stage.valid_design(&self.material)?;
         check_steps("steps", self.steps, self.nonlinear)?;
         if let Some(n) = self.modes {
             if !(1..=1000).contains(&n) {
@@ -402,7 +333,12 @@ impl FemVsFkpCase {
 
     /// Validates everything before solving.
     pub fn validate(&self) -> Result<StageDesign, CaseError> {
-        let d = self.stage.design(&self.material)?;
+        self.validated().map(ValidStage::into_design)
+    }
+
+    /// Validates everything before solving, keeping the validated design for the builder.
+    pub fn validated(&self) -> Result<ValidStage, CaseError> {
+        let d = self.stage.valid_design(&self.material)?;
         check_steps("steps", self.steps, true)?;
         if self.strokes.is_empty() {
             return Err(CaseError::new("strokes", "give at least one stroke set"));

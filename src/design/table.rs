@@ -87,6 +87,13 @@ pub fn csv(axes: &[&str], lines: &[&str]) -> String {
         .par_iter()
         .filter_map(|l| serde_json::from_str::<Value>(l).ok().filter(Value::is_object))
         .collect();
+    csv_of_rows(axes, &rows)
+}
+
+/// [`csv`] of sweep rows already in memory (the JSON objects of their lines, in index order;
+/// non-objects are skipped).
+pub fn csv_of_rows(axes: &[&str], rows: &[Value]) -> String {
+    let rows: Vec<&Value> = rows.iter().filter(|r| r.is_object()).collect();
 
     // Columns in order of first appearance; each row's leaves as (column, value).
     let mut columns: Vec<String> = Vec::new();

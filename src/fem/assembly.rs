@@ -40,7 +40,7 @@ pub enum MatrixKind {
 
 /// Calls `f(a, b, eq_a, eq_b)` for every lower-triangle pair of free element DOFs.
 #[inline]
-fn for_each_pair(eqs: &[usize], n: usize, mut f: impl FnMut(usize, usize, usize, usize)) {
+pub(crate) fn for_each_pair(eqs: &[usize], n: usize, mut f: impl FnMut(usize, usize, usize, usize)) {
     for a in 0..n {
         let ea = eqs[a];
         if ea == NONE {

@@ -390,12 +390,15 @@ impl DofMap {
         self.eq_dof.iter().map(|&g| fi[g]).collect()
     }
 
-    /// Full displacement vector (6 per node) from the equation values `q` and the values of the
-    /// constrained DOFs `u_c` (a full-length vector read only at constrained DOFs).
-    pub fn expand(&self, q: &[f64], u_c: &[f64]) -> Vec<f64> {
+    /// Independent components (6 per node, node frame at framed nodes; slaves zero) from the
+    /// equation values `q`, the values of the constrained DOFs `u_c` (a full-length vector read
+    /// only at constrained DOFs; `None` = zero) and tied DOFs following their roots.
+    pub fn scatter(&self, q: &[f64], u_c: Option<&[f64]>) -> Vec<f64> {
         let mut u = vec![0.0; self.eq.len()];
-        for &g in &self.constrained {
-            u[g] = u_c[g];
+        if let Some(u_c) = u_c {
+            for &g in &self.constrained {
+                u[g] = u_c[g];
+            }
         }
         for (i, &g) in self.eq_dof.iter().enumerate() {
             u[g] = q[i];
@@ -403,6 +406,13 @@ impl DofMap {
         for &(g, root) in &self.alias {
             u[g] = u[root];
         }
+        u
+    }
+
+    /// Full displacement vector (6 per node) from the equation values `q` and the values of the
+    /// constrained DOFs `u_c` (a full-length vector read only at constrained DOFs).
+    pub fn expand(&self, q: &[f64], u_c: &[f64]) -> Vec<f64> {
+        let mut u = self.scatter(q, Some(u_c));
         // Slaves from their masters' (possibly local) DOFs, then framed nodes to global.
         for (node, arm) in self.arm.iter().enumerate() {
             let m = self.rep[node];

@@ -109,13 +109,7 @@ pub fn element_mass(model: &Model, ie: usize) -> Result<Option<ElementMatrix>, F
         Some(Element::Beam(b)) => {
             let (p, e, g) = model.beam_props(ie)?;
             let (lam, l) = model.element_frame(ie)?;
-            let rho = b.material.density;
-            if !(rho.is_finite() && rho >= 0.0) {
-                return Err(FemError::BadElement {
-                    element: ie,
-                    reason: format!("density must be finite and non-negative, got {rho}"),
-                });
-            }
+            let rho = checked_density(ie, b.material.density)?;
             // Same shear parameters as the stiffness (Φ = 0 without shear: Euler–Bernoulli).
             let phi = |i: f64, a_s: Option<f64>| match (b.shear, a_s) {
                 (true, Some(a_s)) => 12.0 * e * i / (g * a_s * l * l),
@@ -144,16 +138,21 @@ pub fn element_mass(model: &Model, ie: usize) -> Result<Option<ElementMatrix>, F
     }
 }
 
-/// Global (lumped) mass of shell element `ie` (24×24).
-pub fn shell_mass_matrix(model: &Model, ie: usize) -> Result<ShellMatrix, FemError> {
-    let (s, x) = model.shell_checked(ie)?;
-    let rho = s.material.density;
+/// `rho` (tonne/mm³) if finite and non-negative, else the error of element `ie`.
+fn checked_density(ie: usize, rho: f64) -> Result<f64, FemError> {
     if !(rho.is_finite() && rho >= 0.0) {
         return Err(FemError::BadElement {
             element: ie,
             reason: format!("density must be finite and non-negative, got {rho}"),
         });
     }
+    Ok(rho)
+}
+
+/// Global (lumped) mass of shell element `ie` (24×24).
+pub fn shell_mass_matrix(model: &Model, ie: usize) -> Result<ShellMatrix, FemError> {
+    let (s, x) = model.shell_checked(ie)?;
+    let rho = checked_density(ie, s.material.density)?;
     let k = shell_mass(&x, s.t, rho).ok_or_else(|| FemError::BadElement {
         element: ie,
         reason: format!("shell nodes {:?} do not form a convex quadrilateral", s.nodes),

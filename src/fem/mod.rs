@@ -8,21 +8,26 @@
 //! Flow: [`model::Model`] (plain data) → [`constraints::DofMap`] (validated DOF numbering,
 //! rigid links eliminated) → [`assembly::Pattern`] (sparsity once per topology) + values →
 //! [`solve::SymbolicFactor`] / [`solve::Factor`] → [`analysis::System`] solves load cases →
-//! [`recovery`] (end forces, stresses, reactions).
+//! [`recovery`] (end forces, stresses, reactions) → [`results`] (typed results).
 
 pub mod analysis;
 pub mod assembly;
+pub mod cache;
 pub mod constraints;
 pub mod corot;
+pub mod diagnose;
 pub mod dof;
 pub mod element;
+pub mod elements;
 pub mod error;
 pub mod lattice;
+pub mod loads;
 pub mod mass;
 pub mod modal;
 pub mod model;
 pub mod nonlinear;
 pub mod recovery;
+pub mod results;
 pub mod section;
 pub mod shell;
 pub mod shell_loads;
@@ -30,7 +35,9 @@ pub mod shell_recovery;
 pub mod solve;
 pub mod transform;
 
-pub use analysis::{solve_static, solve_static_with, CaseResult, StaticResults, System};
+pub use analysis::{CaseResult, StaticResults, System};
+pub use cache::SolverCache;
+pub use cache::{solve_static, solve_static_cached, solve_static_with};
 pub use dof::{Dof, NodeDof};
 pub use error::FemError;
 pub use model::{

@@ -8,12 +8,12 @@
 //! body) gets a small negative shift so that K − σM is positive definite and the six rigid-body
 //! modes come out first at λ ≈ 0.
 
-use super::analysis::check_free_bodies;
-use super::assembly::{MatrixKind, Pattern};
+use super::assembly::MatrixKind;
 use super::constraints::DofMap;
+use super::diagnose::check_free_bodies;
 use super::error::FemError;
 use super::model::Model;
-use super::solve::{Factor, FactorError, FullSymmetric, Parallelism, SparseMatrix, SymbolicFactor};
+use super::solve::{Factor, FactorError, FullSymmetric, Parallelism, SparseMatrix};
 use nalgebra::{DMatrix, Vector3, Vector6};
 use rayon::prelude::*;
 
@@ -162,12 +162,22 @@ fn rigid_vectors(model: &Model, map: &DofMap) -> [Vec<f64>; 6] {
 /// are ignored). Errors if the model has no mass, or if K − σM is singular (a massless
 /// mechanism).
 pub fn solve_modal(model: &Model, opts: &ModalOptions) -> Result<ModalResults, FemError> {
+    solve_modal_cached(model, opts, &mut super::cache::SolverCache::new())
+}
+
+/// [`solve_modal`] reusing the pattern and symbolic factorisation of `cache` where the topology
+/// matches (see [`super::cache`]).
+pub fn solve_modal_cached(
+    model: &Model,
+    opts: &ModalOptions,
+    cache: &mut super::cache::SolverCache,
+) -> Result<ModalResults, FemError> {
     model.validate()?;
     if opts.n_modes == 0 {
         return Err(FemError::BadInput("modal analysis needs at least one mode".into()));
     }
     let map = DofMap::new(model, &[], None)?;
-    let pattern = Pattern::new(model, &map)?;
+    let pattern = cache.modal_pattern(model, &map)?;
     let k = pattern.matrix(&pattern.values_of(model, &map, MatrixKind::Stiffness)?)?;
     let m = pattern.matrix(&pattern.values_of(model, &map, MatrixKind::Mass)?)?;
     let n = map.n_eq();
@@ -200,7 +210,7 @@ pub fn solve_modal(model: &Model, opts: &ModalOptions) -> Result<ModalResults, F
         None => vec![negative_shift()],
     };
     shifts.reverse();
-    let symbolic = SymbolicFactor::new(pattern.sparse())?;
+    let symbolic = cache.modal_symbolic(&pattern)?;
     let (shift, factor) = loop {
         let Some(shift) = shifts.pop() else {
             return Err(singular(&map, &k));
@@ -214,7 +224,7 @@ pub fn solve_modal(model: &Model, opts: &ModalOptions) -> Result<ModalResults, F
                     .pivots()
                     .iter()
                     .zip(a.diagonal())
-                    .any(|(p, d)| p.is_nan() || *p <= super::analysis::PIVOT_TOL * d);
+                    .any(|(p, d)| p.is_nan() || *p <= super::diagnose::PIVOT_TOL * d);
                 if !tiny {
                     break (shift, f);
                 }

@@ -1,131 +1,15 @@
 //! The model: nodes, elements, supports, rigid links, point masses and load cases (plain data,
-//! no JSON). [`Model::validate`] checks it; the analysis validates again before solving.
+//! no JSON). [`Model::validate`] checks it; the analysis validates again before solving. The
+//! element kinds and their matrices live in [`super::elements`]; `Model` dispatches to them.
 
-use super::dof::{Dof, NodeDof};
-use super::element::{beam_local_stiffness, flex_local_stiffness, flex_tip_stiffness};
+mod validate;
+
+use super::dof::Dof;
+pub use super::elements::{Beam, Element, ElementMatrix, FlexElement, Shell4, ShellMatrix, Spring, SpringAxes};
 use super::error::FemError;
-use super::section::{Section, SectionProps};
-use super::shell::{shell_stiffness, Mat24};
-use super::transform::{beam_frame, frame_from_x_up, rigid_arm, t12, t6, Mat12};
-use crate::material::Material;
+use super::section::SectionProps;
+use super::transform::{beam_frame, rotate12, t12, Mat12};
 use nalgebra::{Matrix3, Matrix6, SMatrix, Vector3};
-
-/// Two-node 3D beam (Timoshenko unless `shear` is false).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Beam {
-    /// First and second node; local x runs from `nodes[0]` to `nodes[1]`.
-    pub nodes: [usize; 2],
-    pub section: Section,
-    pub material: Material,
-    /// Orientation vector (global): local z is its component normal to the axis.
-    pub up: [f64; 3],
-    /// Include shear deformation (Timoshenko). `false` = Euler–Bernoulli.
-    pub shear: bool,
-}
-
-impl Beam {
-    /// Timoshenko beam from `n1` to `n2`.
-    pub fn new(n1: usize, n2: usize, section: Section, material: Material, up: [f64; 3]) -> Beam {
-        Beam {
-            nodes: [n1, n2],
-            section,
-            material,
-            up,
-            shear: true,
-        }
-    }
-
-    /// Same beam, Euler–Bernoulli.
-    pub fn euler_bernoulli(mut self) -> Beam {
-        self.shear = false;
-        self
-    }
-}
-
-/// Two-node element given by its cantilever tip compliance (see
-/// [`super::element::flex_local_stiffness`]). Local axes as for [`Beam`]; the length is the
-/// node distance.
-#[derive(Debug, Clone, PartialEq)]
-pub struct FlexElement {
-    pub nodes: [usize; 2],
-    /// 6×6 compliance of node 2 relative to clamped node 1, local axes at node 2, order
-    /// u v w θx θy θz (mm/N, rad/N, rad/(N·mm)); symmetric positive definite.
-    pub compliance: [[f64; 6]; 6],
-    /// Orientation vector, as for beams.
-    pub up: [f64; 3],
-}
-
-/// Axes in which a spring's six stiffnesses act.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum SpringAxes {
-    /// Global x, y, z.
-    Global,
-    /// Rows are the spring's local x, y, z axes in global coordinates (orthonormal,
-    /// right-handed). Build with [`SpringAxes::from_x_up`].
-    Frame([[f64; 3]; 3]),
-}
-
-impl SpringAxes {
-    /// Local x along `x`, local z = component of `up` normal to x, y = z × x.
-    /// `None` if `up` is parallel to `x` or a vector is zero.
-    pub fn from_x_up(x: [f64; 3], up: [f64; 3]) -> Option<SpringAxes> {
-        let lam = frame_from_x_up(Vector3::from(x), Vector3::from(up))?;
-        let mut rows = [[0.0; 3]; 3];
-        for (i, row) in rows.iter_mut().enumerate() {
-            for (j, v) in row.iter_mut().enumerate() {
-                *v = lam[(i, j)];
-            }
-        }
-        Some(SpringAxes::Frame(rows))
-    }
-}
-
-/// Six uncoupled springs (translational N/mm, rotational N·mm/rad) between two nodes, or
-/// between a node and the ground. Between two nodes the spring acts at their midpoint through
-/// rigid arms, so it is equilibrium-consistent even when the nodes do not coincide.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Spring {
-    pub a: usize,
-    /// Second node, `None` = ground.
-    pub b: Option<usize>,
-    /// [kx, ky, kz, krx, kry, krz] in `axes`.
-    pub k: [f64; 6],
-    pub axes: SpringAxes,
-}
-
-/// Four-node flat shell (see [`super::shell`]): membrane with drilling rotation + MITC4
-/// bending/shear (stabilized shear), lumped mass. Nodes in order around the element (the normal follows the right-hand rule).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Shell4 {
-    pub nodes: [usize; 4],
-    /// Thickness, mm.
-    pub t: f64,
-    pub material: Material,
-}
-
-/// Elements that contribute stiffness.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Element {
-    Beam(Beam),
-    Flex(FlexElement),
-    Spring(Spring),
-    Shell4(Shell4),
-}
-
-impl Element {
-    /// Nodes of the element (1 for a ground spring).
-    pub fn nodes(&self) -> Vec<usize> {
-        match self {
-            Element::Beam(b) => b.nodes.to_vec(),
-            Element::Flex(f) => f.nodes.to_vec(),
-            Element::Spring(s) => match s.b {
-                Some(b) => vec![s.a, b],
-                None => vec![s.a],
-            },
-            Element::Shell4(s) => s.nodes.to_vec(),
-        }
-    }
-}
 
 /// Fixed DOFs of a node (zero displacement unless prescribed in a load case).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -242,23 +126,6 @@ pub struct Model {
     pub ties: Vec<Tie>,
 }
 
-/// A global shell element matrix (stiffness or mass) on its four nodes.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ShellMatrix {
-    pub nodes: [usize; 4],
-    pub k: Mat24,
-}
-
-/// A global element matrix on its nodes (`n_nodes` = 1 or 2; for 1 only the top-left 6×6 is
-/// used).
-#[derive(Debug, Clone, PartialEq)]
-pub struct ElementMatrix {
-    pub nodes: [usize; 2],
-    pub n_nodes: usize,
-    /// Global stiffness, N/mm, N, N·mm/rad.
-    pub k: Mat12,
-}
-
 impl Model {
     /// Empty model.
     pub fn new() -> Model {
@@ -282,6 +149,18 @@ impl Model {
     pub fn set_frame(&mut self, node: usize, rows: [[f64; 3]; 3]) {
         self.frames.insert(node, rows);
     }
+    /// Lower and upper corners of the nodes' axis-aligned bounding box, mm (±∞ without nodes).
+    pub fn bounding_box(&self) -> ([f64; 3], [f64; 3]) {
+        let mut lo = [f64::INFINITY; 3];
+        let mut hi = [f64::NEG_INFINITY; 3];
+        for x in &self.nodes {
+            for c in 0..3 {
+                lo[c] = lo[c].min(x[c]);
+                hi[c] = hi[c].max(x[c]);
+            }
+        }
+        (lo, hi)
+    }
     /// Number of global DOFs (6 per node).
     pub fn n_dofs(&self) -> usize {
         6 * self.nodes.len()
@@ -297,122 +176,6 @@ impl Model {
                 n_nodes: self.nodes.len(),
             })
         }
-    }
-
-    /// Checks indices, geometry, sections, materials, compliances and loads (not constraints;
-    /// those are checked by [`super::constraints::DofMap::new`]).
-    pub fn validate(&self) -> Result<(), FemError> {
-        for (i, x) in self.nodes.iter().enumerate() {
-            if x.iter().any(|v| !v.is_finite()) {
-                return Err(FemError::BadNode { node: i });
-            }
-        }
-        for (ie, e) in self.elements.iter().enumerate() {
-            match e {
-                Element::Shell4(_) => {
-                    self.shell_matrix(ie)?;
-                }
-                _ => {
-                    self.element_matrix(ie)?;
-                }
-            }
-        }
-        for (i, s) in self.supports.iter().enumerate() {
-            self.check_node(|| format!("support {i}"), s.node)?;
-        }
-        for (i, l) in self.rigid_links.iter().enumerate() {
-            self.check_node(|| format!("rigid link {i} (master)"), l.master)?;
-            for &s in &l.slaves {
-                self.check_node(|| format!("rigid link {i} (slave)"), s)?;
-            }
-        }
-        for (&node, f) in &self.frames {
-            self.check_node(|| "node frame".to_string(), node)?;
-            let m = nalgebra::Matrix3::from_row_slice(&[
-                f[0][0], f[0][1], f[0][2], f[1][0], f[1][1], f[1][2], f[2][0], f[2][1], f[2][2],
-            ]);
-            let err = (m * m.transpose() - nalgebra::Matrix3::identity()).norm();
-            if !(err < 1e-9 && m.determinant() > 0.0) {
-                return Err(FemError::BadInput(format!(
-                    "node {node}: its frame must be orthonormal and right-handed (rows {f:?})"
-                )));
-            }
-        }
-        for (i, t) in self.ties.iter().enumerate() {
-            self.check_node(|| format!("tie {i}"), t.a)?;
-            self.check_node(|| format!("tie {i}"), t.b)?;
-            if t.a == t.b {
-                return Err(FemError::BadInput(format!("tie {i}: ties node {} to itself", t.a)));
-            }
-            let (xa, xb) = (self.nodes[t.a], self.nodes[t.b]);
-            let dist = ((xa[0] - xb[0]).powi(2) + (xa[1] - xb[1]).powi(2) + (xa[2] - xb[2]).powi(2)).sqrt();
-            let scale = xa.iter().chain(xb.iter()).fold(1.0f64, |m, v| m.max(v.abs()));
-            if dist > 1e-9 * scale {
-                return Err(FemError::BadInput(format!(
-                    "tie {i}: nodes {} and {} are {dist} mm apart; a tie joins coincident nodes",
-                    t.a, t.b
-                )));
-            }
-            let fa = self.frames.get(&t.a);
-            let fb = self.frames.get(&t.b);
-            let same = match (fa, fb) {
-                (None, None) => true,
-                (Some(x), Some(y)) => x
-                    .iter()
-                    .flatten()
-                    .zip(y.iter().flatten())
-                    .all(|(p, q)| (p - q).abs() < 1e-12),
-                _ => false,
-            };
-            if !same {
-                return Err(FemError::BadInput(format!(
-                    "tie {i}: nodes {} and {} must have the same frame (or none)",
-                    t.a, t.b
-                )));
-            }
-        }
-        for (i, m) in self.masses.iter().enumerate() {
-            self.check_node(|| format!("point mass {i}"), m.node)?;
-            if !(m.mass.is_finite() && m.mass >= 0.0 && m.inertia.iter().all(|v| v.is_finite() && *v >= 0.0)) {
-                return Err(FemError::BadInput(format!(
-                    "point mass {i}: mass and inertia must be finite and non-negative"
-                )));
-            }
-        }
-        for case in &self.load_cases {
-            self.validate_case(case)?;
-        }
-        Ok(())
-    }
-
-    /// Checks one load case (node indices, finite values, no DOF prescribed twice).
-    pub fn validate_case(&self, case: &LoadCase) -> Result<(), FemError> {
-        let err = |reason: String| FemError::LoadCase {
-            case: case.name.clone(),
-            reason,
-        };
-        for (i, f) in case.forces.iter().enumerate() {
-            self.check_node(|| format!("load case {:?} force {i}", case.name), f.node)?;
-            if f.f.iter().any(|v| !v.is_finite()) {
-                return Err(err(format!("force {i} has a non-finite component")));
-            }
-        }
-        let mut seen: Vec<NodeDof> = Vec::new();
-        for (i, p) in case.displacements.iter().enumerate() {
-            self.check_node(|| format!("load case {:?} displacement {i}", case.name), p.node)?;
-            if !p.value.is_finite() {
-                return Err(err(format!("displacement {i} is not finite")));
-            }
-            let nd = NodeDof {
-                node: p.node,
-                dof: p.dof,
-            };
-            if seen.contains(&nd) {
-                return Err(err(format!("{nd} is prescribed twice")));
-            }
-            seen.push(nd);
-        }
-        Ok(())
     }
 
     fn coords(&self, n: usize) -> Vector3<f64> {
@@ -449,39 +212,26 @@ impl Model {
         let Some(Element::Beam(b)) = self.elements.get(ie) else {
             return Err(FemError::BadInput(format!("element {ie} is not a beam")));
         };
-        b.section
-            .validate()
-            .map_err(|reason| FemError::BadElement { element: ie, reason })?;
-        let m = &b.material;
-        if !(m.e.is_finite() && m.e > 0.0 && m.nu.is_finite() && m.nu > -1.0 && m.nu < 0.5) {
-            return Err(FemError::BadElement {
-                element: ie,
-                reason: format!("material needs E > 0 and −1 < ν < 0.5 (E = {}, ν = {})", m.e, m.nu),
-            });
-        }
-        Ok((b.section.properties(m.nu), m.e, m.shear_modulus()))
+        b.props(ie)
+    }
+
+    /// Local stiffness k and direction cosines Λ of a beam or flexibility element.
+    fn element_local_frame(&self, ie: usize) -> Result<(Mat12, Matrix3<f64>), FemError> {
+        let (lam, l) = self.element_frame(ie)?;
+        let k = match &self.elements[ie] {
+            Element::Beam(b) => b.local_stiffness(ie, l)?,
+            Element::Flex(f) => f.local_stiffness(ie, l)?,
+            Element::Spring(_) | Element::Shell4(_) => {
+                return Err(FemError::BadInput(format!("element {ie} is not a beam")))
+            }
+        };
+        Ok((k, lam))
     }
 
     /// Local stiffness k and transformation T (d_local = T d_global) of a beam or flexibility
     /// element.
     pub fn element_local(&self, ie: usize) -> Result<(Mat12, Mat12), FemError> {
-        let (lam, l) = self.element_frame(ie)?;
-        let k = match &self.elements[ie] {
-            Element::Beam(b) => {
-                let (p, e, g) = self.beam_props(ie)?;
-                beam_local_stiffness(e, g, &p, l, b.shear)
-            }
-            Element::Flex(f) => {
-                let c = Matrix6::from_fn(|i, j| f.compliance[i][j]);
-                flex_local_stiffness(&c, l).ok_or_else(|| FemError::BadElement {
-                    element: ie,
-                    reason: "compliance must be finite, symmetric and positive definite".into(),
-                })?
-            }
-            Element::Spring(_) | Element::Shell4(_) => {
-                return Err(FemError::BadInput(format!("element {ie} is not a beam")))
-            }
-        };
+        let (k, lam) = self.element_local_frame(ie)?;
         Ok((k, t12(&lam)))
     }
 
@@ -495,43 +245,10 @@ impl Model {
         if let Some(b) = s.b {
             self.check_node(|| format!("element {ie} (spring)"), b)?;
         }
-        if s.k.iter().any(|k| !(k.is_finite() && *k >= 0.0)) {
-            return Err(FemError::BadElement {
-                element: ie,
-                reason: "spring stiffnesses must be finite and non-negative".into(),
-            });
-        }
-        let lam = match s.axes {
-            SpringAxes::Global => Matrix3::identity(),
-            SpringAxes::Frame(rows) => {
-                let lam = Matrix3::from_fn(|i, j| rows[i][j]);
-                let ortho = (lam * lam.transpose() - Matrix3::identity()).amax();
-                if ortho.is_nan() || ortho >= 1e-9 || lam.determinant().is_nan() || lam.determinant() <= 0.0 {
-                    return Err(FemError::BadElement {
-                        element: ie,
-                        reason: "spring axes must be orthonormal and right-handed".into(),
-                    });
-                }
-                lam
-            }
-        };
-        let l6 = t6(&lam);
-        let mut bm = SMatrix::<f64, 6, 12>::zeros();
-        match s.b {
-            None => {
-                bm.fixed_view_mut::<6, 6>(0, 0).copy_from(&l6);
-                Ok((bm, s.k, 1))
-            }
-            Some(b) => {
-                let (xa, xb) = (self.coords(s.a), self.coords(b));
-                let mid = (xa + xb) * 0.5;
-                bm.fixed_view_mut::<6, 6>(0, 0)
-                    .copy_from(&(-l6 * rigid_arm(&(mid - xa))));
-                bm.fixed_view_mut::<6, 6>(0, 6)
-                    .copy_from(&(l6 * rigid_arm(&(mid - xb))));
-                Ok((bm, s.k, 2))
-            }
-        }
+        let xa = self.coords(s.a);
+        let xb = s.b.map_or(xa, |b| self.coords(b));
+        let (bm, n) = s.b_matrix(ie, xa, xb)?;
+        Ok((bm, s.k, n))
     }
 
     /// Global stiffness of element `ie`: K = Tᵀ k T (beams, flexibility elements),
@@ -540,31 +257,18 @@ impl Model {
         match self.elements.get(ie) {
             None => Err(FemError::BadInput(format!("no element {ie}"))),
             Some(Element::Spring(s)) => {
-                let (b, k, n) = self.spring_b(ie)?;
-                let kd = Matrix6::from_diagonal(&nalgebra::Vector6::from(k));
-                Ok(ElementMatrix {
-                    nodes: [s.a, s.b.unwrap_or(s.a)],
-                    n_nodes: n,
-                    k: b.transpose() * kd * b,
-                })
+                let (b, _, n) = self.spring_b(ie)?;
+                Ok(s.matrix(&b, n))
             }
             Some(Element::Shell4(_)) => Err(FemError::BadInput(format!(
                 "element {ie} is a shell (use Model::shell_matrix)"
             ))),
             Some(e) => {
-                let (k, t) = self.element_local(ie)?;
-                let nodes = match e {
-                    Element::Beam(b) => b.nodes,
-                    Element::Flex(f) => f.nodes,
-                    Element::Spring(s) => [s.a, s.b.unwrap_or(s.a)],
-                    Element::Shell4(s) => [s.nodes[0], s.nodes[1]],
-                };
-                // t = diag(Λ, Λ, Λ, Λ): rotate block-wise.
-                let lam: nalgebra::Matrix3<f64> = t.fixed_view::<3, 3>(0, 0).into_owned();
+                let (k, lam) = self.element_local_frame(ie)?;
                 Ok(ElementMatrix {
-                    nodes,
+                    nodes: e.end_nodes(),
                     n_nodes: 2,
-                    k: super::transform::rotate12(&k, &lam),
+                    k: rotate12(&k, &lam),
                 })
             }
         }
@@ -579,36 +283,14 @@ impl Model {
         for &n in &s.nodes {
             self.check_node(|| format!("element {ie} (shell)"), n)?;
         }
-        let m = &s.material;
-        if !(m.e.is_finite() && m.e > 0.0 && m.nu.is_finite() && m.nu > -1.0 && m.nu < 0.5) {
-            return Err(FemError::BadElement {
-                element: ie,
-                reason: format!("material needs E > 0 and −1 < ν < 0.5 (E = {}, ν = {})", m.e, m.nu),
-            });
-        }
-        if !(s.t.is_finite() && s.t > 0.0) {
-            return Err(FemError::BadElement {
-                element: ie,
-                reason: format!("shell thickness must be positive and finite, got {}", s.t),
-            });
-        }
+        s.check(ie)?;
         Ok((s, s.nodes.map(|n| self.nodes[n])))
-    }
-
-    fn bad_quad(ie: usize, nodes: [usize; 4]) -> FemError {
-        FemError::BadElement {
-            element: ie,
-            reason: format!(
-                "shell nodes {nodes:?} do not form a convex quadrilateral (zero area, repeated nodes or crossed order)"
-            ),
-        }
     }
 
     /// Global stiffness of shell element `ie` (24×24).
     pub fn shell_matrix(&self, ie: usize) -> Result<ShellMatrix, FemError> {
         let (s, x) = self.shell_checked(ie)?;
-        let k = shell_stiffness(&x, s.t, &s.material).ok_or_else(|| Self::bad_quad(ie, s.nodes))?;
-        Ok(ShellMatrix { nodes: s.nodes, k })
+        s.matrix(ie, &x)
     }
 
     /// Tip stiffness C⁻¹ of a flexibility element (local axes at node 2).
@@ -616,10 +298,6 @@ impl Model {
         let Some(Element::Flex(f)) = self.elements.get(ie) else {
             return Err(FemError::BadInput(format!("element {ie} is not a flexibility element")));
         };
-        let c = Matrix6::from_fn(|i, j| f.compliance[i][j]);
-        flex_tip_stiffness(&c).ok_or_else(|| FemError::BadElement {
-            element: ie,
-            reason: "compliance must be finite, symmetric and positive definite".into(),
-        })
+        f.tip_stiffness(ie)
     }
 }

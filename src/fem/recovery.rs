@@ -4,70 +4,11 @@
 use super::constraints::DofMap;
 use super::error::FemError;
 use super::model::{Element, Model};
+pub use super::results::{CaseResult, ElementResult, Statics};
 use super::section::{Section, SectionProps, StressPoint};
-use super::shell::{shell_stress, ShellStress, Vec24};
+use super::shell::{shell_stress, Vec24};
 use nalgebra::{SVector, Vector3};
 use rayon::prelude::*;
-
-/// Per-element results of a load case, local axes.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ElementResult {
-    /// Forces the nodes exert on the element, f = k·d, at node 1 and node 2:
-    /// [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)] in element local axes (spring axes for springs;
-    /// for a ground spring the first entry is the spring force k·δ, the second is zero).
-    pub end_forces: [[f64; 6]; 2],
-    /// Internal section forces [N, Vy, Vz (N), T, My, Mz (N·mm)] at end 1 and end 2
-    /// (positive-face convention: N > 0 in tension; s₁ = −f₁, s₂ = f₂).
-    pub section_forces: [[f64; 6]; 2],
-    /// Largest von Mises stress at end 1 and end 2, MPa (`None` without stress points).
-    /// For unloaded prismatic beams the section forces vary linearly, so the ends bound the
-    /// element.
-    pub von_mises: Option<[f64; 2]>,
-    /// Strain energy ½ dᵀ k d, N·mm.
-    pub strain_energy: f64,
-    /// Shells: centre stresses (von Mises top/mid/bottom, membrane forces, moments; local
-    /// axes). `None` for other elements.
-    pub shell: Option<ShellStress>,
-}
-
-impl ElementResult {
-    /// Largest von Mises stress of the element, MPa.
-    pub fn max_von_mises(&self) -> Option<f64> {
-        self.von_mises.map(|v| v[0].max(v[1]))
-    }
-}
-
-/// Resultants about the global origin: [Fx, Fy, Fz, Mx, My, Mz] (N, N·mm).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Statics {
-    /// Sum of applied nodal loads.
-    pub loads: [f64; 6],
-    /// Sum of support reactions and ground-spring reactions.
-    pub reactions: [f64; 6],
-}
-
-impl Statics {
-    /// loads + reactions (zero for a balanced structure).
-    pub fn residual(&self) -> [f64; 6] {
-        std::array::from_fn(|i| self.loads[i] + self.reactions[i])
-    }
-
-    /// Is the residual below `rel` times the load/reaction scale (forces and moments checked
-    /// separately; moments scaled by the model size `length`, mm)?
-    pub fn is_balanced(&self, rel: f64, length: f64) -> bool {
-        let r = self.residual();
-        let fscale = (0..3)
-            .map(|i| self.loads[i].abs() + self.reactions[i].abs())
-            .fold(0.0, f64::max);
-        let mscale = (3..6)
-            .map(|i| self.loads[i].abs() + self.reactions[i].abs())
-            .fold(0.0, f64::max)
-            .max(fscale * length);
-        let tiny = f64::MIN_POSITIVE;
-        (0..3).all(|i| r[i].abs() <= rel * fscale.max(mscale / length.max(tiny)) + tiny)
-            && (3..6).all(|i| r[i].abs() <= rel * mscale + tiny)
-    }
-}
 
 /// Von Mises stress at one stress point for section forces s = [N, Vy, Vz, T, My, Mz]:
 /// σ = N/A + My·z/Iy − Mz·y/Iz, τxy = T·t_xy + Vy·vy_xy, τxz = T·t_xz + Vz·vz_xz,
@@ -176,30 +117,34 @@ pub fn element_result(model: &Model, ie: usize, u: &[f64]) -> Result<ElementResu
             if n == 1 {
                 d.fixed_rows_mut::<6>(6).fill(0.0);
             }
-            let delta = b * d;
-            let f: [f64; 6] = std::array::from_fn(|i| k[i] * delta[i]);
-            let energy = 0.5 * (0..6).map(|i| k[i] * delta[i] * delta[i]).sum::<f64>();
-            let end_forces = if n == 1 { [f, [0.0; 6]] } else { [f.map(|v| -v), f] };
-            Ok(ElementResult {
-                end_forces,
-                section_forces: [f, f],
-                von_mises: None,
-                strain_energy: energy,
-                shell: None,
-            })
+            Ok(spring_result(&k, &(b * d), n))
         }
         e => {
             let (k, t) = model.element_local(ie)?;
-            let nodes = match e {
-                Element::Beam(b) => b.nodes,
-                Element::Flex(f) => f.nodes,
-                Element::Spring(s) => [s.a, s.b.unwrap_or(s.a)],
-                Element::Shell4(s) => [s.nodes[0], s.nodes[1]],
-            };
-            let d = t * elem_vec(u, nodes);
+            let d = t * elem_vec(u, e.end_nodes());
             let f = k * d;
             Ok(from_local_end_forces(e, f.as_slice(), 0.5 * d.dot(&f)))
         }
+    }
+}
+
+/// Result of a spring from its relative motion δ = B·d in spring axes, its stiffnesses `k` and
+/// its node count (1 = ground spring): spring forces k·δ, end forces, energy ½ Σ kᵢ δᵢ². Shared
+/// by the linear recovery and the co-rotational solver (which passes δ of the current state).
+pub fn spring_result(k: &[f64; 6], delta: &SVector<f64, 6>, n_nodes: usize) -> ElementResult {
+    let f: [f64; 6] = std::array::from_fn(|i| k[i] * delta[i]);
+    let energy = 0.5 * (0..6).map(|i| k[i] * delta[i] * delta[i]).sum::<f64>();
+    let end_forces = if n_nodes == 1 {
+        [f, [0.0; 6]]
+    } else {
+        [f.map(|v| -v), f]
+    };
+    ElementResult {
+        end_forces,
+        section_forces: [f, f],
+        von_mises: None,
+        strain_energy: energy,
+        shell: None,
     }
 }
 
@@ -232,49 +177,10 @@ pub fn from_local_end_forces(e: &Element, f: &[f64], strain_energy: f64) -> Elem
     }
 }
 
-fn resultant(x: [f64; 3], f: &[f64]) -> [f64; 6] {
-    let xv = Vector3::from(x);
-    let fv = Vector3::new(f[0], f[1], f[2]);
-    let m = xv.cross(&fv);
-    [f[0], f[1], f[2], m.x + f[3], m.y + f[4], m.z + f[5]]
-}
-
-fn add(acc: &mut [f64; 6], v: [f64; 6]) {
-    for i in 0..6 {
-        acc[i] += v[i];
-    }
-}
-
 /// Largest distance between nodes along any axis (statics tolerance scale), mm.
 pub fn model_size(model: &Model) -> f64 {
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    for x in &model.nodes {
-        for i in 0..3 {
-            lo[i] = lo[i].min(x[i]);
-            hi[i] = hi[i].max(x[i]);
-        }
-    }
+    let (lo, hi) = model.bounding_box();
     (0..3).map(|i| hi[i] - lo[i]).fold(0.0, f64::max).max(1.0)
-}
-
-/// Results of one load case.
-#[derive(Debug, Clone, PartialEq)]
-pub struct CaseResult {
-    pub name: String,
-    /// Per node [ux, uy, uz (mm), rx, ry, rz (rad)], global axes.
-    pub displacements: Vec<[f64; 6]>,
-    /// Support reactions (force the support exerts on the structure) per constrained node,
-    /// sorted by node: [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)], global axes, zero on free DOFs.
-    /// Includes the loads of rigid-link slaves carried by a supported master.
-    pub reactions: Vec<(usize, [f64; 6])>,
-    /// Per element (model order): end forces, section forces, stresses, energy.
-    pub elements: Vec<ElementResult>,
-    /// Largest von Mises stress over all elements with stress points, MPa (`None` if no
-    /// element has stress points).
-    pub max_von_mises: Option<f64>,
-    /// Statics check (sums about the global origin).
-    pub statics: Statics,
 }
 
 /// Reactions per constrained node from the out-of-balance forces `gi` in independent (node-frame)
@@ -309,15 +215,12 @@ pub fn case_result(model: &Model, map: &DofMap, name: &str, u: &[f64], f: &[f64]
     let p = internal_forces(model, u)?;
     let g: Vec<f64> = p.iter().zip(f).map(|(a, b)| a - b).collect();
     let reactions = reactions_at(map, &map.to_independent(&g));
-    let mut statics = Statics {
-        loads: [0.0; 6],
-        reactions: [0.0; 6],
-    };
+    let mut statics = Statics::default();
     for (n, x) in model.nodes.iter().enumerate() {
-        add(&mut statics.loads, resultant(*x, &f[6 * n..6 * n + 6]));
+        statics.add_load(Vector3::from(*x), &f[6 * n..6 * n + 6]);
     }
     for (n, r) in &reactions {
-        add(&mut statics.reactions, resultant(model.nodes[*n], r));
+        statics.add_reaction(Vector3::from(model.nodes[*n]), r);
     }
     for ie in 0..model.elements.len() {
         if let Element::Spring(s) = &model.elements[ie] {
@@ -325,7 +228,7 @@ pub fn case_result(model: &Model, map: &DofMap, name: &str, u: &[f64], f: &[f64]
                 let em = model.element_matrix(ie)?;
                 let fs = em.k.fixed_view::<6, 6>(0, 0) * node_vec(u, s.a);
                 let neg: Vec<f64> = fs.iter().map(|v| -v).collect();
-                add(&mut statics.reactions, resultant(model.nodes[s.a], &neg));
+                statics.add_reaction(Vector3::from(model.nodes[s.a]), &neg);
             }
         }
     }
@@ -339,19 +242,8 @@ pub fn case_result(model: &Model, map: &DofMap, name: &str, u: &[f64], f: &[f64]
         .into_par_iter()
         .map(|ie| element_result(model, ie, u))
         .collect::<Result<_, _>>()?;
-    let max_von_mises = elements
-        .iter()
-        .filter_map(|e| e.max_von_mises())
-        .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
     let displacements = (0..model.nodes.len())
         .map(|n| std::array::from_fn(|i| u[6 * n + i]))
         .collect();
-    Ok(CaseResult {
-        name: name.to_string(),
-        displacements,
-        reactions,
-        elements,
-        max_von_mises,
-        statics,
-    })
+    Ok(CaseResult::new(name, displacements, reactions, elements, statics))
 }

@@ -54,6 +54,21 @@ pub struct SectionProps {
     pub asz: Option<f64>,
 }
 
+impl SectionProps {
+    /// Axisymmetric section of area `a`, second moment `i` about every diameter (J = 2I) and
+    /// shear coefficient `kappa` in both directions.
+    fn round(a: f64, i: f64, kappa: f64) -> SectionProps {
+        SectionProps {
+            a,
+            iy: i,
+            iz: i,
+            j: 2.0 * i,
+            asy: Some(kappa * a),
+            asz: Some(kappa * a),
+        }
+    }
+}
+
 /// A point of the cross-section where stresses are evaluated, with stress coefficients per unit
 /// section force. Normal stress σ = N/A + My·z/Iy − Mz·y/Iz (from the props); shear
 /// τxy = T·`t_xy` + Vy·`vy_xy`, τxz = T·`t_xz` + Vz·`vz_xz`; on round sections the transverse
@@ -212,14 +227,7 @@ impl Section {
                 let a = PI * d * d / 4.0;
                 let i = PI * d.powi(4) / 64.0;
                 let kappa = 6.0 * (1.0 + nu) / (7.0 + 6.0 * nu);
-                SectionProps {
-                    a,
-                    iy: i,
-                    iz: i,
-                    j: 2.0 * i,
-                    asy: Some(kappa * a),
-                    asz: Some(kappa * a),
-                }
+                SectionProps::round(a, i, kappa)
             }
             Section::Tube { d_out, d_in } => {
                 let a = PI * (d_out * d_out - d_in * d_in) / 4.0;
@@ -227,14 +235,7 @@ impl Section {
                 let m2 = (d_in / d_out).powi(2);
                 let p = (1.0 + m2).powi(2);
                 let kappa = 6.0 * (1.0 + nu) * p / ((7.0 + 6.0 * nu) * p + (20.0 + 12.0 * nu) * m2);
-                SectionProps {
-                    a,
-                    iy: i,
-                    iz: i,
-                    j: 2.0 * i,
-                    asy: Some(kappa * a),
-                    asz: Some(kappa * a),
-                }
+                SectionProps::round(a, i, kappa)
             }
             Section::General { a, iy, iz, j, asy, asz } => SectionProps { a, iy, iz, j, asy, asz },
         }

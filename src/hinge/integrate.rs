@@ -20,7 +20,8 @@
 
 use nalgebra::Matrix6;
 
-use super::profile::{Map, Profile};
+use super::pieces::Map;
+use super::profile::Profile;
 
 /// 8-point Gauss–Legendre abscissae on [−1, 1] (positive half).
 const GL8_X: [f64; 4] = [

@@ -31,180 +31,30 @@
 
 pub mod calibration;
 pub mod closed_form;
+pub mod contour;
+pub mod element;
 pub mod error;
 pub mod integrate;
+pub mod pieces;
 pub mod profile;
 pub mod section;
 pub mod solid_effects;
+pub mod spec;
 pub mod stress;
 pub mod torsion;
 
 use std::collections::BTreeMap;
 
 use nalgebra::Matrix6;
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
 use crate::material::Material;
+pub use element::{flex_region, hinge_element, hinge_peak_stress, spreading_region, HingeRegion};
 pub use error::HingeError;
 use integrate::{flex_integrals, Moduli, Quadrature};
 pub use profile::{Contour, Profile};
 pub use section::Section;
-
-/// A hinge as given in a case file, by `type`. Lengths in mm.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
-pub enum HingeSpec {
-    /// Circular notch of radius R, minimum thickness t, in a w × h blank.
-    CircularNotch {
-        /// Notch radius R.
-        #[serde(rename = "R")]
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        r: f64,
-        /// Minimum thickness t (along h).
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        t: f64,
-        /// Width w (constant).
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        w: f64,
-        /// Blank height h.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        h: f64,
-        /// Blank length beyond each end of the notch.
-        #[schemars(range(min = 0))]
-        blank_length: f64,
-    },
-    /// Elliptical notch, semi-axes ax (along the hinge) and ay (depth).
-    EllipticalNotch {
-        /// Semi-axis along the hinge.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        ax: f64,
-        /// Semi-axis across.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        ay: f64,
-        /// Minimum thickness t.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        t: f64,
-        /// Width w.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        w: f64,
-        /// Blank height h.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        h: f64,
-        /// Blank length beyond each end of the notch.
-        #[schemars(range(min = 0))]
-        blank_length: f64,
-    },
-    /// Corner-filleted notch: total length l with two fillets of radius R.
-    CornerFilleted {
-        /// Total notch length l (including both fillets).
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        l: f64,
-        /// Fillet radius R.
-        #[serde(rename = "R")]
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        r: f64,
-        /// Thickness t of the straight part.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        t: f64,
-        /// Width w.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        w: f64,
-        /// Blank height h.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        h: f64,
-        /// Blank length beyond each end of the notch.
-        #[schemars(range(min = 0))]
-        blank_length: f64,
-    },
-    /// Prismatic leaf of length l.
-    Leaf {
-        /// Length l.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        l: f64,
-        /// Thickness t.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        t: f64,
-        /// Width w.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        w: f64,
-        /// Blank height h.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        h: f64,
-        /// Blank length beyond each end of the leaf.
-        #[schemars(range(min = 0))]
-        blank_length: f64,
-    },
-    /// Turned (spherical) neck: diameter t over length l, fillets of radius R, in an h × h blank.
-    SphericalNeck {
-        /// Straight neck length l.
-        #[schemars(range(min = 0))]
-        l: f64,
-        /// Neck diameter t.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        t: f64,
-        /// Fillet radius R.
-        #[serde(rename = "R")]
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        r: f64,
-        /// Side of the square blank.
-        #[schemars(extend("exclusiveMinimum" = 0))]
-        h: f64,
-        /// Blank length beyond each end of the notch region.
-        #[schemars(range(min = 0))]
-        blank_length: f64,
-    },
-}
-
-impl HingeSpec {
-    /// Validated profile with the given blank length (`None`: the spec's own).
-    pub fn profile_with_blank(&self, blank: Option<f64>) -> Result<Profile, HingeError> {
-        use HingeSpec::*;
-        match *self {
-            CircularNotch {
-                r,
-                t,
-                w,
-                h,
-                blank_length,
-            } => Profile::rectangular(Contour::Circular { r, t }, w, h, blank.unwrap_or(blank_length)),
-            EllipticalNotch {
-                ax,
-                ay,
-                t,
-                w,
-                h,
-                blank_length,
-            } => Profile::rectangular(Contour::Elliptical { ax, ay, t }, w, h, blank.unwrap_or(blank_length)),
-            CornerFilleted {
-                l,
-                r,
-                t,
-                w,
-                h,
-                blank_length,
-            } => Profile::rectangular(Contour::CornerFilleted { l, r, t }, w, h, blank.unwrap_or(blank_length)),
-            Leaf {
-                l,
-                t,
-                w,
-                h,
-                blank_length,
-            } => Profile::rectangular(Contour::Leaf { l, t }, w, h, blank.unwrap_or(blank_length)),
-            SphericalNeck {
-                l,
-                t,
-                r,
-                h,
-                blank_length,
-            } => Profile::neck(l, t, r, h, blank.unwrap_or(blank_length)),
-        }
-    }
-
-    /// Validated profile.
-    pub fn profile(&self) -> Result<Profile, HingeError> {
-        self.profile_with_blank(None)
-    }
-}
+pub use spec::HingeSpec;
 
 /// Stiffness and stress of one configuration (hinge in its blank, or notch alone).
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -345,12 +195,6 @@ pub fn characterise(spec: &HingeSpec, material: &Material) -> Result<HingeResult
         stress_concentration: kt,
         model,
     })
-}
-
-/// Stiffness, compliance and stress of the notch alone (blank length 0), without the closed
-/// forms.
-pub fn notch_stiffness(spec: &HingeSpec, material: &Material) -> Result<Stiffness, HingeError> {
-    profile_stiffness(&spec.profile_with_blank(Some(0.0))?, material)
 }
 
 /// Stiffness, compliance and stress of a validated profile as it stands (its own blank).

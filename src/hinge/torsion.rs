@@ -32,7 +32,8 @@
 //! banded Cholesky on the stack.
 
 use super::integrate::PEAK;
-use super::profile::{Map, Profile};
+use super::pieces::Map;
+use super::profile::Profile;
 use super::section::{rect_torsion_constant, rect_warping_constant};
 
 /// 4-point Gauss–Legendre on [0, 1].

@@ -1,9 +1,9 @@
-//! Building the stage FE model from a design: the hinge profiles checked, legs, hinges (as
-//! flexibility elements or ideal joints), sliders and platform.
+//! Building the stage FE model from a design: the design checked once into a [`ValidStage`],
+//! then legs, hinges (as flexibility elements or ideal joints), sliders and platform.
 
 use super::*;
 use crate::fem::{self, Dof, Model};
-use crate::hinge::{self, Profile};
+use crate::hinge;
 use crate::material::Material;
 use nalgebra::Vector3;
 
@@ -11,19 +11,6 @@ pub(super) fn geometry_err(field: &str, message: impl Into<String>) -> StageErro
     StageError::Geometry {
         field: field.into(),
         message: message.into(),
-    }
-}
-
-pub(super) fn hinge_err(prefix: &str, e: hinge::HingeError) -> StageError {
-    match e {
-        hinge::HingeError::InvalidGeometry { param, value, allowed } => geometry_err(
-            &format!("{prefix}.{param}"),
-            format!("value {value} is not allowed: {allowed}"),
-        ),
-        hinge::HingeError::InvalidMaterial { param, value, allowed } => geometry_err(
-            &format!("material.{param}"),
-            format!("value {value} is not allowed: {allowed}"),
-        ),
     }
 }
 
@@ -36,20 +23,12 @@ pub(super) fn arr(v: Vector3<f64>) -> [f64; 3] {
     [v[0], v[1], v[2]]
 }
 
-/// The 6×6 compliance of a hinge region (notch + load-spreading zone) with the
-/// warping-restrained torsion of [`hinge::characterise`], in hinge axes (x along the hinge,
-/// y compliant axis, z across).
-pub(super) fn hinge_region(
-    profile: &Profile,
-    material: &Material,
-    prefix: &str,
-) -> Result<hinge::Stiffness, StageError> {
-    hinge::profile_stiffness(profile, material).map_err(|e| hinge_err(prefix, e))
-}
-
 impl StageDesign {
-    /// Checks the design before anything is built.
-    pub fn validate(&self) -> Result<(Profile, Profile), StageError> {
+    /// Checks the design before anything is built: leg section and element count, the hinge
+    /// families the joints allow ([`HingeSpec::fits_revolute`], [`HingeSpec::fits_spherical`]),
+    /// hinge geometry and material, and that both hinge regions fit in the leg length.
+    /// Errors name the design parameter ([`StageError`]); case files map them to JSON paths.
+    pub fn validate(&self) -> Result<ValidStage, StageError> {
         for (f, v) in [("leg.w", self.leg_w), ("leg.h", self.leg_h)] {
             if !(v.is_finite() && v > 0.0) {
                 return Err(geometry_err(
@@ -64,14 +43,23 @@ impl StageDesign {
                 format!("value {} is not allowed: must be in 1..=1000", self.leg_elements),
             ));
         }
+        if !self.revolute.fits_revolute() {
+            return Err(geometry_err(
+                "revolute.type",
+                "the revolute joint needs a notch with one compliant axis: circular_notch, elliptical_notch, corner_filleted or leaf",
+            ));
+        }
+        if !self.spherical.fits_spherical() {
+            return Err(geometry_err(
+                "spherical.type",
+                "the spherical joint must be a spherical_neck (turned neck)",
+            ));
+        }
         // Each hinge element spans its notch plus the stretch of leg over which load still
-        // spreads out of it (Profile::spread_reach): the leg beams start beyond.
-        let region = |p: Profile| Profile {
-            blank: (p.spread_reach() - p.half_notch).max(0.0),
-            ..p
-        };
-        let rp = region(self.revolute.profile().map_err(|e| hinge_err("revolute", e))?);
-        let sp = region(self.spherical.profile().map_err(|e| hinge_err("spherical", e))?);
+        // spreads out of it (hinge::spreading_region): the leg beams start beyond.
+        let hinge_err = |joint: Joint| move |source: HingeError| StageError::Hinge { joint, source };
+        let rp = hinge::spreading_region(self.revolute.profile().map_err(hinge_err(Joint::Revolute))?);
+        let sp = hinge::spreading_region(self.spherical.profile().map_err(hinge_err(Joint::Spherical))?);
         let used = rp.half_length() + sp.half_length();
         if used >= self.prs.l {
             return Err(geometry_err(
@@ -82,14 +70,26 @@ impl StageDesign {
                 ),
             ));
         }
-        let clearance = self.prs.a_point(0).norm() - self.prs.b;
-        let _ = clearance;
-        Ok((rp, sp))
+        let revolute = hinge::flex_region(&rp, &self.material).map_err(hinge_err(Joint::Revolute))?;
+        let spherical = hinge::flex_region(&sp, &self.material).map_err(hinge_err(Joint::Spherical))?;
+        Ok(ValidStage {
+            design: self.clone(),
+            revolute,
+            spherical,
+        })
     }
 
-    /// Builds the FE model (no load cases).
+    /// Validates ([`StageDesign::validate`]) and builds the FE model (no load cases): the
+    /// library entry; a caller holding a [`ValidStage`] calls [`ValidStage::build`].
     pub fn build(&self) -> Result<StageModel, StageError> {
-        let (rp, sp) = self.validate()?;
+        Ok(self.validate()?.build())
+    }
+}
+
+impl ValidStage {
+    /// Builds the FE model (no load cases) of the validated design.
+    pub fn build(&self) -> StageModel {
+        let (rp, sp) = (&self.revolute.profile, &self.spherical.profile);
         let prs = &self.prs;
         let mut model = Model::new();
         let stiff = if self.ideal_joints { 1e6 } else { 1.0 };
@@ -98,18 +98,8 @@ impl StageDesign {
             ..self.material
         };
         let p = model.add_node(arr(prs.p_home()));
-        let rev_h = hinge_region(&rp, &self.material, "revolute")?;
-        let sph_h = hinge_region(&sp, &self.material, "spherical")?;
-        let rev_c = if self.ideal_joints {
-            None
-        } else {
-            Some(rev_h.compliance)
-        };
-        let sph_c = if self.ideal_joints {
-            None
-        } else {
-            Some(sph_h.compliance)
-        };
+        let rev_c = (!self.ideal_joints).then(|| self.revolute.compliance());
+        let sph_c = (!self.ideal_joints).then(|| self.spherical.compliance());
         let (hr, hs) = if self.ideal_joints {
             (0.0, 0.0)
         } else {
@@ -224,20 +214,13 @@ impl StageDesign {
             });
         }
         let legs = [legs[0], legs[1], legs[2]];
-        let kt = [
-            hinge::stress::stress_factor(&rp, self.material.nu),
-            hinge::stress::stress_factor(&sp, self.material.nu),
-        ];
-        Ok(StageModel {
-            design: self.clone(),
+        StageModel {
+            design: self.design.clone(),
             model,
             platform: p,
             legs,
-            rev_profile: rp,
-            sph_profile: sp,
-            kt,
-            rev_hinge: rev_h,
-            sph_hinge: sph_h,
-        })
+            revolute: self.revolute.clone(),
+            spherical: self.spherical.clone(),
+        }
     }
 }

@@ -26,28 +26,56 @@ mod results;
 pub mod sizing;
 mod solve;
 
+pub use crate::hinge::hinge_peak_stress;
 use build::*;
 pub use nonlinear::NONLINEAR_HINGE_SEGMENTS;
-pub use results::hinge_peak_stress;
 pub use solve::{stiffness_z, StageAnalysis};
 
 use crate::fem::{self, FemError, Model};
-use crate::hinge::{self, HingeSpec, Profile};
+use crate::hinge::{self, HingeError, HingeRegion, HingeSpec};
 use crate::kinematics::Prs;
 use crate::material::Material;
 use nalgebra::{Matrix3, Vector3};
 use thiserror::Error;
 
+/// The two joints of a leg.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Joint {
+    /// The revolute joint at Cᵢ ([`StageDesign::revolute`]).
+    Revolute,
+    /// The spherical joint at Bᵢ ([`StageDesign::spherical`]).
+    Spherical,
+}
+
+impl Joint {
+    /// `revolute` or `spherical`, the design parameter's name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Joint::Revolute => "revolute",
+            Joint::Spherical => "spherical",
+        }
+    }
+}
+
 /// Errors of the stage builder and solver.
 #[derive(Debug, Error)]
 pub enum StageError {
-    /// Non-physical stage geometry (names the stage field).
+    /// Non-physical stage geometry (names the design parameter).
     #[error("stage field `{field}`: {message}")]
     Geometry {
-        /// Field of the `stage` object, e.g. `revolute.t`.
+        /// Design parameter, e.g. `leg.w`, `L`, `revolute.type`.
         field: String,
         /// What is wrong and what is allowed.
         message: String,
+    },
+    /// A hinge (or the material it needs) is not physical; the [`HingeError`] names the hinge
+    /// parameter (`t`, `R`, …) or material constant.
+    #[error("{}", hinge_message(*joint, source))]
+    Hinge {
+        /// Which joint.
+        joint: Joint,
+        /// The hinge library's error.
+        source: HingeError,
     },
     /// The FE model failed (singular, …).
     #[error("stage FE model: {0}")]
@@ -73,6 +101,62 @@ pub struct StageDesign {
     pub ideal_joints: bool,
     /// Beam elements per leg (≥ 1).
     pub leg_elements: usize,
+}
+
+/// `stage field `revolute.t`: value … is not allowed: …` (`material.E` for the material).
+fn hinge_message(joint: Joint, e: &HingeError) -> String {
+    match e {
+        HingeError::InvalidGeometry { param, value, allowed } => {
+            format!(
+                "stage field `{}.{param}`: value {value} is not allowed: {allowed}",
+                joint.name()
+            )
+        }
+        HingeError::InvalidMaterial { param, value, allowed } => {
+            format!("stage field `material.{param}`: value {value} is not allowed: {allowed}")
+        }
+    }
+}
+
+/// A stage design that passed [`StageDesign::validate`] (the only way to make one), with its
+/// two hinge regions (notch plus load-spreading zone) characterised: what [`ValidStage::build`]
+/// takes, so building does not check again. Reads as the design through `Deref`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ValidStage {
+    design: StageDesign,
+    /// The revolute hinge region: profile, flexibility, stress model.
+    pub revolute: HingeRegion,
+    /// The spherical hinge region.
+    pub spherical: HingeRegion,
+}
+
+impl ValidStage {
+    /// The validated design.
+    pub fn design(&self) -> &StageDesign {
+        &self.design
+    }
+
+    /// The validated design, by value.
+    pub fn into_design(self) -> StageDesign {
+        self.design
+    }
+
+    /// Solid-calibration range warnings of the (revolute, spherical) hinges
+    /// ([`hinge::calibration::calibration_warnings`]), without JSON paths.
+    pub fn calibration_warnings(&self) -> [Vec<String>; 2] {
+        [&self.design.revolute, &self.design.spherical].map(|spec| {
+            spec.profile()
+                .map(|p| hinge::calibration::calibration_warnings(&p))
+                .unwrap_or_default()
+        })
+    }
+}
+
+impl std::ops::Deref for ValidStage {
+    type Target = StageDesign;
+    fn deref(&self) -> &StageDesign {
+        &self.design
+    }
 }
 
 /// Node and element numbers of one leg.
@@ -109,16 +193,11 @@ pub struct StageModel {
     pub platform: usize,
     /// Per-leg ids.
     pub legs: [LegIds; 3],
-    /// Revolute notch profile (blank 0), for stresses.
-    pub rev_profile: Profile,
-    /// Spherical neck profile (blank 0), for stresses.
-    pub sph_profile: Profile,
-    /// Notch stress-concentration factors (revolute, spherical).
-    pub kt: [f64; 2],
-    /// Characterisation of the revolute notch alone (blank 0).
-    pub rev_hinge: hinge::Stiffness,
-    /// Characterisation of the spherical neck alone (blank 0).
-    pub sph_hinge: hinge::Stiffness,
+    /// The revolute hinge region (notch and load-spreading zone): profile, flexibility of the
+    /// hinge elements, stress model.
+    pub revolute: HingeRegion,
+    /// The spherical hinge region.
+    pub spherical: HingeRegion,
 }
 
 /// How one load case drives the actuators.

@@ -61,8 +61,8 @@ impl StageModel {
         if segments > 1 {
             for leg in &self.legs {
                 for (el, profile, single) in [
-                    (leg.rev_element, &self.rev_profile, &self.rev_hinge),
-                    (leg.sph_element, &self.sph_profile, &self.sph_hinge),
+                    (leg.rev_element, &self.revolute.profile, &self.revolute.stiffness),
+                    (leg.sph_element, &self.spherical.profile, &self.spherical.stiffness),
                 ] {
                     if let Some(el) = el {
                         let last = self.split_hinge(&mut model, el, profile, single, segments)?;

@@ -1,8 +1,9 @@
 //! Linear solves of the stage: load cases by drive kind (one factorisation each, reused across
-//! stages of the same topology on a thread), the platform compliance, the z stiffness.
+//! stages of the same topology through the caller's [`fem::SolverCache`]), the platform
+//! compliance, the z stiffness.
 
 use super::*;
-use crate::fem::{self, Dof, Model};
+use crate::fem::{self, Dof};
 use nalgebra::Matrix6;
 
 impl StageModel {
@@ -26,6 +27,15 @@ impl StageModel {
         Ok(self.analyse(cases, false)?.cases)
     }
 
+    /// [`Self::solve`] with the caller's solver cache.
+    pub fn solve_with(
+        &self,
+        cache: &mut fem::SolverCache,
+        cases: &[(String, Drive)],
+    ) -> Result<Vec<StageCaseResult>, StageError> {
+        Ok(self.analyse_with(cache, cases, false)?.cases)
+    }
+
     /// Slider stroke DOFs (local ux of each slider frame), sorted.
     pub(super) fn stroke_dofs(&self) -> Vec<fem::NodeDof> {
         let mut v: Vec<fem::NodeDof> = self
@@ -42,10 +52,20 @@ impl StageModel {
 
     /// Solves load cases and, if asked, the 6×6 compliance of the platform centre with the
     /// sliders held. Force-driven cases share one factorisation, stroke-driven cases (and the
-    /// compliance) another. Within a thread the pattern and symbolic factorisation of the last
-    /// stage of the same topology are reused (sweeps and the design loop refactor numerically
-    /// only).
+    /// compliance) another. A fresh solver cache: see [`Self::analyse_with`].
     pub fn analyse(&self, cases: &[(String, Drive)], compliance: bool) -> Result<StageAnalysis, StageError> {
+        self.analyse_with(&mut fem::SolverCache::new(), cases, compliance)
+    }
+
+    /// [`Self::analyse`] with the caller's solver cache: the pattern and symbolic factorisation
+    /// of the last stage of the same topology solved with `cache` are reused (sweeps and the
+    /// design loop refactor numerically only).
+    pub fn analyse_with(
+        &self,
+        cache: &mut fem::SolverCache,
+        cases: &[(String, Drive)],
+        compliance: bool,
+    ) -> Result<StageAnalysis, StageError> {
         let model = &self.model;
         let mut out: Vec<Option<StageCaseResult>> = vec![None; cases.len()];
         let lcs: Vec<fem::LoadCase> = cases.iter().map(|(n, d)| self.load_case(n, *d)).collect();
@@ -58,7 +78,7 @@ impl StageModel {
                 continue;
             }
             let prescribed = if strokes { self.stroke_dofs() } else { Vec::new() };
-            let sys = cached_system(model, &prescribed, usize::from(strokes))?;
+            let sys = cache.system(model, &prescribed, fem::solve::Parallelism::Sequential)?;
             let refs: Vec<&fem::LoadCase> = idx.iter().map(|&i| &lcs[i]).collect();
             let res = sys.solve_cases(model, &refs)?;
             for (&i, r) in idx.iter().zip(res) {
@@ -82,33 +102,6 @@ pub struct StageAnalysis {
     pub cases: Vec<StageCaseResult>,
     /// Platform-centre compliance with the sliders held, if asked.
     pub compliance: Option<Matrix6<f64>>,
-}
-
-thread_local! {
-    /// The last factorised stage system of this thread, per drive kind (forces, strokes).
-    static LAST: std::cell::RefCell<[Option<fem::System>; 2]> = const { std::cell::RefCell::new([None, None]) };
-}
-
-/// A factorised system for `model`, reusing the pattern and symbolic factorisation of the last
-/// system of the same kind on this thread when the topology matches.
-pub(super) fn cached_system(
-    model: &Model,
-    prescribed: &[fem::NodeDof],
-    kind: usize,
-) -> Result<fem::System, StageError> {
-    let par = fem::solve::Parallelism::Sequential;
-    let reused = LAST.with(|c| {
-        c.borrow()[kind]
-            .as_ref()
-            .filter(|s| s.prescribed() == prescribed)
-            .and_then(|s| fem::System::with_topology_of(s, model, par).ok())
-    });
-    let sys = match reused {
-        Some(s) => s,
-        None => fem::System::new(model, prescribed, par)?,
-    };
-    LAST.with(|c| c.borrow_mut()[kind] = Some(sys.clone()));
-    Ok(sys)
 }
 
 /// Total actuator force per mm of stroke for a pure-z motion, N/mm: the sum of the actuator

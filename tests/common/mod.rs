@@ -4,6 +4,11 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+pub mod fixtures;
+pub mod materials;
+pub mod meshes;
+pub mod nonlinear;
+
 /// Path of the built `flexfem` binary.
 pub fn bin() -> &'static str {
     env!("CARGO_BIN_EXE_flexfem")
@@ -66,4 +71,35 @@ pub fn summary(o: &Output) -> [usize; 4] {
         head[start..].parse().unwrap()
     };
     [num(" designs"), num(" already done"), num(" run"), num(" failed")]
+}
+
+/// Runs `flexfem sweep ARGS` in `dir`.
+pub fn sweep(dir: &Path, args: &[&str]) -> Output {
+    let mut all = vec!["sweep"];
+    all.extend_from_slice(args);
+    run_in(dir, &all)
+}
+
+/// Writes `text` to `dir/name`; the path.
+pub fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+/// Removes a passing test's temp dir (a failing test leaves it for inspection).
+pub fn cleanup(d: &Path) {
+    let _ = std::fs::remove_dir_all(d);
+}
+
+/// The exit code.
+pub fn code(o: &Output) -> Option<i32> {
+    o.status.code()
+}
+
+/// Each line of `text` as JSON (a sweep's JSON-lines output).
+pub fn parse_lines(text: &str) -> Vec<serde_json::Value> {
+    text.lines()
+        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("not a JSON line ({e}): {l}")))
+        .collect()
 }

@@ -168,5 +168,6 @@ pub(super) fn load_case(cx: &mut Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::
         let f = fem::shell_loads::edge_loads(cx.model.nodes[a], cx.model.nodes[b], el.q, el.m);
         lc = lc.force(a, f[0]).force(b, f[1]);
     }
+    super::build_body_loads::body_loads(cx, p, c, &mut lc)?;
     Ok(lc)
 }

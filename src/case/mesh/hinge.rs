@@ -5,8 +5,7 @@ use super::lookup::Ctx;
 use crate::case::error::CaseError;
 use crate::case::hinge::hinge_error;
 use crate::fem;
-use crate::hinge::{self, Contour, HingeSpec, Profile};
-use crate::material::Material;
+use crate::hinge::{self, HingeSpec};
 use serde_json::Value;
 
 /// Builds a `hinge` element at JSON path `p`.
@@ -42,11 +41,11 @@ pub(super) fn hinge_element(
             format!("the node distance {len} mm is shorter than the notch length {notch_len} mm of the hinge"),
         ));
     }
-    let blank = ((len - notch_len) / 2.0).max(0.0);
-    let (compliance, mass) = flex_of(&spec, &mat, blank).map_err(herr)?;
+    let region = hinge::hinge_element(&spec, &mat, len.max(notch_len)).map_err(herr)?;
+    let mass = mat.density * region.volume();
     cx.model.add_element(fem::Element::Flex(fem::FlexElement {
         nodes: [a, b],
-        compliance,
+        compliance: region.compliance(),
         up,
     }));
     for node in [a, b] {
@@ -77,44 +76,6 @@ fn parse_spec(hp: &str, hinge: &Value) -> Result<HingeSpec, CaseError> {
     }
     map.insert("blank_length".into(), Value::from(0.0));
     crate::case::from_value(v, hp)
-}
-
-/// The 6×6 compliance (hinge axes: x along, y compliant, z across; the far end face loaded,
-/// the near one clamped) and the mass (tonne) of a hinge with `blank` of blank per side.
-pub fn flex_of(spec: &HingeSpec, material: &Material, blank: f64) -> Result<([[f64; 6]; 6], f64), hinge::HingeError> {
-    let profile = spec.profile_with_blank(Some(blank))?;
-    let st = hinge::profile_stiffness(&profile, material)?;
-    Ok((st.compliance, material.density * volume(&profile)))
-}
-
-/// Geometric volume of a hinge profile (notch and blanks), mm³: Simpson's rule on 2000
-/// intervals over the notch, exact over the prismatic blanks.
-fn volume(p: &Profile) -> f64 {
-    let area = |x: f64| match p.contour {
-        Contour::SphericalNeck { .. } => {
-            if x.abs() >= p.half_notch {
-                p.h * p.h
-            } else {
-                hinge::section::clipped_disk(p.thickness(x) / 2.0, p.h, 0.3).area
-            }
-        }
-        _ => p.w * p.thickness(x),
-    };
-    let n = 2000;
-    let (x0, dx) = (-p.half_notch, 2.0 * p.half_notch / n as f64);
-    let mut s = 0.0;
-    for i in 0..=n {
-        let wgt = if i == 0 || i == n {
-            1.0
-        } else if i % 2 == 1 {
-            4.0
-        } else {
-            2.0
-        };
-        // The notch's end values from inside (a leaf's thickness jumps to h at its ends).
-        s += wgt * area((x0 + i as f64 * dx) * (1.0 - 1e-12));
-    }
-    s * dx / 3.0 + 2.0 * p.blank * area(p.half_length())
 }
 
 /// Schema of a hinge element's `hinge`: that of the `hinge` analysis without `blank_length`.

@@ -94,6 +94,63 @@ pub struct LoadCaseSpec {
     /// Uniform loads along shell edges (consistent nodal loads).
     #[serde(default)]
     pub edge_loads: Vec<EdgeLoadSpec>,
+    /// Gravity: acceleration [gx, gy, gz], mm/s², global axes (e.g. `[0, 0, -9810]`); every
+    /// element with mass and every point mass takes M·g with the mass matrices of the modal
+    /// analysis (the consistent load ρ·A·g on beams, the lumped mass × g on shells).
+    #[serde(default)]
+    pub gravity: Option<[f64; 3]>,
+    /// Uniform line loads over whole beam elements (consistent nodal loads q·L/2, q·L²/12).
+    #[serde(default)]
+    pub line_loads: Vec<LineLoadSpec>,
+    /// Total forces (and moments about the group's centroid) spread over a node group.
+    #[serde(default)]
+    pub group_forces: Vec<GroupForceSpec>,
+}
+
+/// Axes of a line load.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, schemars::JsonSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum LineAxes {
+    /// Global x, y, z.
+    #[default]
+    Global,
+    /// The beam's local x (node 1 → node 2), y, z (local z = the component of `up` normal to the
+    /// axis).
+    Local,
+}
+
+/// A uniform load per unit length over the whole length of one beam element.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct LineLoadSpec {
+    /// Index (in `elements`) of a `beam` element.
+    pub element: usize,
+    /// Force per length [qx, qy, qz], N/mm, in `axes`.
+    pub q: [f64; 3],
+    /// `global` (default) or `local` (the beam's axes).
+    #[serde(default)]
+    pub axes: LineAxes,
+}
+
+/// A total force and moment spread over a node group: a Gmsh physical group (weights: the
+/// tributary length or area of each node of its lines or surfaces, equal for points) or a node
+/// list (equal weights). The moment acts about the group's weighted centroid and is carried by
+/// the forces of a rigid rotation of the group (weighted like the force); its part about an
+/// axis the group has no lever arm for (one node, the direction of a straight edge) is applied
+/// as nodal moments. The nodal loads sum to exactly `F`.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct GroupForceSpec {
+    /// Name of a Gmsh physical group listed in `gmsh.groups` (`.msh` meshes only; a group may
+    /// be listed with no fields, `{}`, just to be loaded).
+    #[serde(default)]
+    pub group: Option<String>,
+    /// Node indices (instead of `group`).
+    #[serde(default)]
+    pub nodes: Vec<usize>,
+    /// Total [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)], global axes.
+    #[serde(rename = "F")]
+    pub f: [f64; 6],
 }
 
 /// A uniform pressure on shell elements, given by element list and/or Gmsh physical group.

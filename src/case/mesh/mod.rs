@@ -6,6 +6,7 @@
 //! helper, [`lookup::Named`]).
 
 pub mod build;
+mod build_body_loads;
 mod build_loads;
 mod frames;
 mod hinge;
@@ -16,5 +17,8 @@ pub mod shapes;
 
 pub use super::fem_case::{ModalCase, StaticCase};
 pub use build::unique_load_case_names;
-pub use load_shapes::{DisplacementSpec, DofName, EdgeLoadSpec, ForceSpec, LoadCaseSpec, PressureSpec};
+pub use load_shapes::{
+    DisplacementSpec, DofName, EdgeLoadSpec, ForceSpec, GroupForceSpec, LineAxes, LineLoadSpec, LoadCaseSpec,
+    PressureSpec,
+};
 pub use shapes::{ElementSpec, GmshMapping, GroupSpec, JointKind, MeshSpec, RigidSpec, SectionSpec, SupportSpec};

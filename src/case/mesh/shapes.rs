@@ -226,6 +226,12 @@ pub struct MeshSpec {
     #[serde(skip)]
     #[schemars(skip)]
     pub element_groups: Vec<Vec<String>>,
+    /// Gmsh meshes: the cells (node lists of points, 2-node lines, 3-node triangles and 4-node
+    /// quadrangles) of every mapped physical group, for group loads (filled by the `.msh`
+    /// reader; not a case-file field).
+    #[serde(skip)]
+    #[schemars(skip)]
+    pub group_cells: BTreeMap<String, Vec<Vec<usize>>>,
 }
 
 /// A rigid link.

@@ -42,7 +42,7 @@
 //!   with caps on cuts and steps so a failing case stops quickly;
 //! * each converged point is stable when the symmetric tangent of the reduced system is
 //!   positive definite (Cholesky succeeds with every pivot above
-//!   [`super::analysis::PIVOT_TOL`] of its diagonal) and it was reached without a jump; the
+//!   [`super::diagnose::PIVOT_TOL`] of its diagonal) and it was reached without a jump; the
 //!   first loss is bracketed by the load factors of the last stable and first unstable
 //!   points. With applied moments this is the static (divergence) criterion on the symmetric
 //!   part only.
@@ -50,9 +50,10 @@
 use crate::fem::dof::NodeDof;
 use crate::fem::error::FemError;
 use crate::fem::model::Model;
-use crate::fem::recovery::CaseResult;
+use crate::fem::results::CaseResult;
 use crate::fem::solve::Parallelism;
 
+mod convergence;
 mod load_case;
 mod newton;
 mod path;

@@ -1,5 +1,7 @@
-//! Newton–Raphson iterations of one load step, with the convergence test.
+//! Newton–Raphson iterations of one load step; the convergence test is
+//! [`super::convergence::Convergence`].
 
+use super::convergence::{Convergence, Correction, Iterate, Verdict};
 use super::residual::{dot, norm};
 use super::state::{CaseCtx, State};
 use super::NonlinearOptions;
@@ -44,12 +46,14 @@ pub(super) fn newton(
     opts: &NonlinearOptions,
     converged_internal: f64,
 ) -> Result<NewtonOk, StepFail> {
-    let mut e0: f64 = 0.0;
+    let mut test = Convergence::new(
+        opts.tol_residual,
+        opts.tol_energy,
+        ctx.round,
+        opts.max_iterations,
+        converged_internal,
+    );
     let mut last_dq: Option<Vec<f64>> = None;
-    let mut r0 = f64::NAN;
-    let mut scale = 0.0;
-    let mut r_prev = f64::INFINITY;
-    let (mut best, mut stall) = (f64::INFINITY, 0);
     let mut acc = vec![0.0; ctx.n_eq()];
     let mut out = NewtonOk {
         iterations: 0,
@@ -68,60 +72,38 @@ pub(super) fn newton(
         })?;
         let rn = norm(&ev.r);
         out.residuals.push(rn);
-        if it == 0 {
-            r0 = rn;
-            scale = ev.load.max(converged_internal);
-        }
-        let done = |out: NewtonOk| {
-            Ok(NewtonOk {
-                iterations: it,
+        let iterate = Iterate {
+            residual: rn,
+            load: ev.load,
+            internal: ev.internal,
+            correction: last_dq.as_ref().map(|dq| Correction {
+                energy: dot(dq, &ev.r).abs(),
+                norm: norm(dq),
                 total: norm(&acc),
-                internal: ev.internal,
-                ..out
-            })
+            }),
         };
-        let force_ok = rn <= bound(ctx, opts.tol_residual, scale) || ev.load == 0.0 && ev.internal == 0.0;
-        let energy_ok = match &last_dq {
-            None => rn == 0.0 || ev.load == 0.0 && ev.internal == 0.0,
-            Some(dq) => dot(dq, &ev.r).abs() <= opts.tol_energy * e0.max(f64::MIN_POSITIVE),
-        };
-        if force_ok && (energy_ok || rn <= bound(ctx, 1e-3 * opts.tol_residual, scale)) {
-            return done(out);
-        }
-        // Displacement + energy: for mechanisms moving almost force-free (ideal joints), the
-        // force scale is itself round-off, so converge on the corrections instead — but never
-        // above the final equilibrium bound.
-        let disp_ok = last_dq.as_ref().is_some_and(|dq| norm(dq) <= 1e-10 * norm(&acc));
-        let near = rn <= bound(ctx, 1e-7, scale);
-        if energy_ok && disp_ok && near {
-            return done(out);
-        }
-        // Round-off floor: accept when the correction's energy is negligible and the residual
-        // no longer decreases, if it is within the final equilibrium bound.
-        if energy_ok && it > 1 && rn > 0.1 * r_prev && near {
-            return done(out);
-        }
-        if rn < 0.5 * best {
-            best = rn;
-            stall = 0;
-        } else {
-            stall += 1;
-        }
-        if stall >= 3 && near {
-            return done(out);
-        }
-        r_prev = rn;
-        if it == opts.max_iterations {
-            return Err(StepFail {
-                residual: rn,
-                reason: format!("no convergence in {} iterations", opts.max_iterations),
-            });
-        }
-        if it > 2 && rn > 1e6 * r0.max(opts.tol_residual * scale) {
-            return Err(StepFail {
-                residual: rn,
-                reason: "residual diverges".into(),
-            });
+        match test.check(&iterate) {
+            Verdict::Converged => {
+                return Ok(NewtonOk {
+                    iterations: it,
+                    total: norm(&acc),
+                    internal: ev.internal,
+                    ..out
+                })
+            }
+            Verdict::NoConvergence => {
+                return Err(StepFail {
+                    residual: rn,
+                    reason: format!("no convergence in {} iterations", opts.max_iterations),
+                })
+            }
+            Verdict::Diverges => {
+                return Err(StepFail {
+                    residual: rn,
+                    reason: "residual diverges".into(),
+                })
+            }
+            Verdict::Continue => {}
         }
         let neg: Vec<f64> = ev.r.iter().map(|v| -v).collect();
         let sol = ctx
@@ -141,7 +123,7 @@ pub(super) fn newton(
             });
         }
         if it == 0 {
-            e0 = dot(&dq, &ev.r).abs();
+            test.first_correction(dot(&dq, &ev.r).abs());
             out.first = norm(&dq);
         }
         ctx.apply(st, &dq, None);

@@ -6,15 +6,9 @@ use super::state::{fail, CaseCtx, ElemData, State};
 use super::{NonlinearCase, PathPoint};
 use crate::fem::corot;
 use crate::fem::error::FemError;
-use crate::fem::recovery::CaseResult;
-use crate::fem::recovery::{self, ElementResult, Statics};
-use nalgebra::{SMatrix, Vector3};
-
-pub(super) fn resultant(x: Vector3<f64>, f: &[f64]) -> [f64; 6] {
-    let fv = Vector3::new(f[0], f[1], f[2]);
-    let m = x.cross(&fv);
-    [f[0], f[1], f[2], m.x + f[3], m.y + f[4], m.z + f[5]]
-}
+use crate::fem::recovery;
+use crate::fem::results::{resultant, CaseResult, Statics};
+use nalgebra::Vector3;
 
 #[allow(clippy::too_many_arguments)]
 pub(super) fn finish(
@@ -35,15 +29,10 @@ pub(super) fn finish(
     let mut frames = Vec::with_capacity(ctx.elems.len());
     for (ie, e) in ctx.elems.iter().enumerate() {
         match e {
-            ElemData::Corot { nodes, geom, k_local } => {
-                let r = corot::response(
-                    geom,
-                    k_local,
-                    &CaseCtx::node_state(st, nodes[0]),
-                    &CaseCtx::node_state(st, nodes[1]),
-                    false,
-                )
-                .ok_or_else(|| fail(name, steps, lambda, f64::NAN, format!("element {ie} degenerate")))?;
+            ElemData::Corot { .. } => {
+                let (nodes, r) = ctx
+                    .corot_response(st, ie, false)
+                    .ok_or_else(|| fail(name, steps, lambda, f64::NAN, format!("element {ie} degenerate")))?;
                 for s in 0..2 {
                     for d in 0..6 {
                         f_int[6 * nodes[s] + d] += r.f[6 * s + d];
@@ -66,29 +55,8 @@ pub(super) fn finish(
                         f_int[6 * nodes[s] + d] += f[6 * s + d];
                     }
                 }
-                let mut dvec = SMatrix::<f64, 12, 1>::zeros();
-                for (s, &n) in nodes.iter().enumerate().take(*n_nodes) {
-                    let rv = corot::rot_log(&st.r[n]);
-                    for j in 0..3 {
-                        dvec[6 * s + j] = st.u[n][j];
-                        dvec[6 * s + 3 + j] = rv[j];
-                    }
-                }
-                let delta = **b * dvec;
-                let fs: [f64; 6] = std::array::from_fn(|i| k[i] * delta[i]);
-                let energy = 0.5 * (0..6).map(|i| k[i] * delta[i] * delta[i]).sum::<f64>();
-                let end_forces = if *n_nodes == 1 {
-                    [fs, [0.0; 6]]
-                } else {
-                    [fs.map(|v| -v), fs]
-                };
-                elements.push(ElementResult {
-                    end_forces,
-                    section_forces: [fs, fs],
-                    von_mises: None,
-                    strain_energy: energy,
-                    shell: None,
-                });
+                let dvec = CaseCtx::spring_motion(st, nodes, *n_nodes);
+                elements.push(recovery::spring_result(k, &(**b * dvec), *n_nodes));
                 frames.push([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]);
             }
         }
@@ -96,29 +64,16 @@ pub(super) fn finish(
     let f_app: Vec<f64> = ctx.f_ext.iter().map(|v| v * lambda).collect();
     let net: Vec<f64> = f_int.iter().zip(&f_app).map(|(a, b)| a - b).collect();
     let gi = ctx.to_independent(&arms, &net);
-    let reactions = crate::fem::recovery::reactions_at(&ctx.map, &gi);
+    let reactions = recovery::reactions_at(&ctx.map, &gi);
     let pos = |n: usize| Vector3::from(model.nodes[n]) + st.u[n];
-    let mut statics = Statics {
-        loads: [0.0; 6],
-        reactions: [0.0; 6],
-    };
+    let mut statics = Statics::default();
     for n in 0..nn {
-        let v = resultant(pos(n), &f_app[6 * n..6 * n + 6]);
-        for (a, b) in statics.loads.iter_mut().zip(v) {
-            *a += b;
-        }
+        statics.add_load(pos(n), &f_app[6 * n..6 * n + 6]);
     }
     for (n, r) in &reactions {
-        let v = resultant(pos(*n), r);
-        for (a, b) in statics.reactions.iter_mut().zip(v) {
-            *a += b;
-        }
+        statics.add_reaction(pos(*n), r);
     }
     verify_equilibrium(ctx, st, name, steps, lambda, &f_int, &f_app, &gi, &reactions)?;
-    let max_von_mises = elements
-        .iter()
-        .filter_map(|e| e.max_von_mises())
-        .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
     let displacements: Vec<[f64; 6]> = (0..nn)
         .map(|n| {
             let rv = corot::rot_log(&st.r[n]);
@@ -130,14 +85,7 @@ pub(super) fn finish(
             .map(|r| std::array::from_fn(|i| std::array::from_fn(|j| r[(i, j)])))
             .collect();
     Ok(NonlinearCase {
-        fe: CaseResult {
-            name: name.to_string(),
-            displacements,
-            reactions,
-            elements,
-            max_von_mises,
-            statics,
-        },
+        fe: CaseResult::new(name, displacements, reactions, elements, statics),
         rotations,
         path,
         iterations,

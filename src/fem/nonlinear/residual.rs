@@ -2,6 +2,7 @@
 //! reduced residual and the symmetric or full tangent, and the linear solves (Cholesky, LU).
 
 use super::state::{Assemble, CaseCtx, ElemData, Eval, Solution, State};
+use crate::fem::assembly::for_each_pair;
 use crate::fem::constraints::{frame_block, NONE};
 use crate::fem::corot;
 use crate::fem::dof::NodeDof;
@@ -11,6 +12,40 @@ use nalgebra::{Matrix3, Matrix6, SMatrix, Vector3, Vector6};
 
 impl CaseCtx<'_> {
     /// Element internal forces (global, on its nodes) and tangents.
+    /// Co-rotational response of beam or flexibility element `ie` (`None` for a spring or a
+    /// degenerate element), with its nodes.
+    pub(super) fn corot_response(
+        &self,
+        st: &State,
+        ie: usize,
+        tangent: bool,
+    ) -> Option<([usize; 2], corot::CorotResponse)> {
+        let ElemData::Corot { nodes, geom, k_local } = &self.elems[ie] else {
+            return None;
+        };
+        let r = corot::response(
+            geom,
+            k_local,
+            &Self::node_state(st, nodes[0]),
+            &Self::node_state(st, nodes[1]),
+            tangent,
+        )?;
+        Some((*nodes, r))
+    }
+
+    /// Spring DOFs d = [u, rotation vector] of its `n_nodes` nodes (12 values; zero beyond).
+    pub(super) fn spring_motion(st: &State, nodes: &[usize; 2], n_nodes: usize) -> SMatrix<f64, 12, 1> {
+        let mut d = SMatrix::<f64, 12, 1>::zeros();
+        for (s, &n) in nodes.iter().enumerate().take(n_nodes) {
+            let rv = corot::rot_log(&st.r[n]);
+            for j in 0..3 {
+                d[6 * s + j] = st.u[n][j];
+                d[6 * s + 3 + j] = rv[j];
+            }
+        }
+        d
+    }
+
     pub(super) fn element_response(
         &self,
         st: &State,
@@ -18,25 +53,12 @@ impl CaseCtx<'_> {
         tangent: bool,
     ) -> Option<([usize; 2], usize, Mat12, [f64; 12])> {
         match &self.elems[ie] {
-            ElemData::Corot { nodes, geom, k_local } => {
-                let r = corot::response(
-                    geom,
-                    k_local,
-                    &Self::node_state(st, nodes[0]),
-                    &Self::node_state(st, nodes[1]),
-                    tangent,
-                )?;
-                Some((*nodes, 2, r.k, std::array::from_fn(|i| r.f[i])))
+            ElemData::Corot { .. } => {
+                let (nodes, r) = self.corot_response(st, ie, tangent)?;
+                Some((nodes, 2, r.k, std::array::from_fn(|i| r.f[i])))
             }
             ElemData::Spring { nodes, n_nodes, b, k } => {
-                let mut d = SMatrix::<f64, 12, 1>::zeros();
-                for (s, &n) in nodes.iter().enumerate().take(*n_nodes) {
-                    let rv = corot::rot_log(&st.r[n]);
-                    for j in 0..3 {
-                        d[6 * s + j] = st.u[n][j];
-                        d[6 * s + 3 + j] = rv[j];
-                    }
-                }
+                let d = Self::spring_motion(st, nodes, *n_nodes);
                 let kd = Matrix6::from_diagonal(&Vector6::from(*k));
                 let km = b.transpose() * kd * **b;
                 let f = km * d;
@@ -171,7 +193,7 @@ impl CaseCtx<'_> {
     }
 
     /// Cholesky factor of the symmetric tangent (lower values), `None` when it is not
-    /// positive definite (a pivot at or below [`crate::fem::analysis::PIVOT_TOL`] of its diagonal).
+    /// positive definite (a pivot at or below [`crate::fem::diagnose::PIVOT_TOL`] of its diagonal).
     pub(super) fn cholesky(&self, values: &[f64]) -> Result<Option<Factor>, String> {
         let k = self.pattern.matrix(values).map_err(|e| e.to_string())?;
         let Ok(f) = Factor::new(&self.symbolic, &k, self.par) else {
@@ -182,7 +204,7 @@ impl CaseCtx<'_> {
             .pivots()
             .iter()
             .zip(&diag)
-            .all(|(p, d)| p.is_finite() && *p > crate::fem::analysis::PIVOT_TOL * d);
+            .all(|(p, d)| p.is_finite() && *p > crate::fem::diagnose::PIVOT_TOL * d);
         Ok(ok.then_some(f))
     }
 
@@ -224,23 +246,7 @@ pub(super) fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
-/// Same pair order as [`crate::fem::assembly`]: lower-triangle pairs of free DOFs, a-major.
-#[inline]
-pub(super) fn for_each_pair(eqs: &[usize; 12], n: usize, mut f: impl FnMut(usize, usize, usize, usize)) {
-    for a in 0..n {
-        let ea = eqs[a];
-        if ea == NONE {
-            continue;
-        }
-        for (b, &eb) in eqs.iter().enumerate().take(n) {
-            if eb != NONE && ea >= eb {
-                f(a, b, ea, eb);
-            }
-        }
-    }
-}
-
-/// [`for_each_pair`] (`lower`) or every pair of free DOFs (the full non-symmetric pattern).
+/// [`for_each_pair`] (`lower`, the order of [`crate::fem::assembly`]) or every pair of free DOFs (the full non-symmetric pattern).
 #[inline]
 pub(super) fn for_each_pair_in(
     lower: bool,

@@ -198,19 +198,7 @@ impl CaseCtx<'_> {
     /// frame for framed nodes; read at constrained DOFs only).
     pub(super) fn apply(&self, st: &mut State, q: &[f64], dc: Option<&[f64]>) {
         let map = &self.map;
-        let nd = 6 * self.model.nodes.len();
-        let mut d = vec![0.0; nd];
-        if let Some(dc) = dc {
-            for &g in &map.constrained {
-                d[g] = dc[g];
-            }
-        }
-        for (i, &g) in map.eq_dof.iter().enumerate() {
-            d[g] = q[i];
-        }
-        for &(g, root) in &map.alias {
-            d[g] = d[root];
-        }
+        let d = map.scatter(q, dc);
         for n in 0..self.model.nodes.len() {
             if map.rep[n] != n {
                 continue;

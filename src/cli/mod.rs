@@ -1,4 +1,8 @@
-//! Command line: `run`, `check`, `schema`.
+//! Command line: `run`, `check`, `schema`, `sweep`.
+
+pub mod resume;
+pub mod sweep;
+mod targets;
 
 use crate::analysis::{self, RunError};
 use crate::case::{self, CaseError};
@@ -191,7 +195,7 @@ pub fn run(cli: Cli) -> ExitCode {
             csv,
             force,
             keep_errors,
-        } => crate::design::sweep::run_cli(crate::design::sweep::SweepArgs {
+        } => sweep::run_cli(sweep::SweepArgs {
             case,
             shard,
             out,

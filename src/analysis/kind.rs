@@ -1,0 +1,180 @@
+//! The typed analysis layer: one [`Analysis`] implementation per `analysis` kind (its case
+//! type, validation, run, typed result, reports and files), registered once in
+//! [`super::registry::REGISTRY`]. Drivers (`flexfem run`, `flexfem check`, sweeps) reach every
+//! kind through the object-safe [`DynAnalysis`] view of the registry and never name a kind.
+//!
+//! Adding an analysis kind: a module implementing [`Analysis`] and one line in the registry.
+
+use super::{Files, Report, RunError};
+use crate::case::{Case, CaseError, MaterialSpec};
+use crate::fem::SolverCache;
+use crate::material::Material;
+use serde::Serialize;
+
+/// What a run hands back besides its typed result, and what it may reuse.
+pub struct Ctx<'a> {
+    /// The worker's solver cache (a fresh one for a single run; one per worker in a sweep).
+    pub cache: &'a mut SolverCache,
+    /// Render the extra output files (`.vtu`, `.svg`): only `run --out` writes them.
+    pub with_files: bool,
+    /// Extra output files (file name, contents), pushed by the run when `with_files`.
+    pub files: Files,
+    /// Warnings found while running (before [`Analysis::case_warnings`]).
+    pub warnings: Vec<String>,
+}
+
+impl<'a> Ctx<'a> {
+    /// A context using `cache`.
+    pub fn new(cache: &'a mut SolverCache, with_files: bool) -> Self {
+        Ctx {
+            cache,
+            with_files,
+            files: Vec::new(),
+            warnings: Vec::new(),
+        }
+    }
+}
+
+/// A resolved material of a case: (key, spec, material); the key is empty for the one material
+/// of a hinge/stage/design case.
+pub type UsedMaterial = (String, MaterialSpec, Material);
+
+/// One analysis kind.
+pub trait Analysis: 'static {
+    /// The `analysis` name in case files.
+    const KIND: &'static str;
+    /// The parsed case (a serde shape of [`crate::case`]).
+    type Case;
+    /// The typed result; its JSON is the `result.json` of a run and the `result` of a sweep line.
+    type Result: Serialize;
+
+    /// The case of this kind inside a parsed case file, if it is one.
+    fn case(case: &Case) -> Option<&Self::Case>;
+    /// Validates the case (everything checked before solving).
+    fn check(case: &Self::Case) -> Result<(), CaseError>;
+    /// Validates and runs the case; extra files and run warnings go into `ctx`.
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError>;
+    /// Markdown and CSV views of the result.
+    fn report(result: &Self::Result) -> Report;
+    /// Warnings that depend only on the case (e.g. hinge calibration ranges), listed after the
+    /// run's own.
+    fn case_warnings(_case: &Self::Case) -> Vec<String> {
+        Vec::new()
+    }
+    /// Warnings that depend on the case and its result, listed after [`Self::case_warnings`].
+    fn result_warnings(_case: &Self::Case, _result: &Self::Result) -> Vec<String> {
+        Vec::new()
+    }
+    /// The materials the case uses, resolved (echoed in the result and the report).
+    fn materials(_case: &Self::Case) -> Vec<UsedMaterial> {
+        Vec::new()
+    }
+    /// Files a sweep over this kind writes beside its `--out FILE.jsonl`.
+    fn sweep_files() -> &'static [SweepFile] {
+        &[]
+    }
+    /// Renders one of [`Self::sweep_files`] that is not the table from the sweep's finished
+    /// lines (in index order), `None` when there is nothing to show.
+    fn render_sweep_file(_file: &SweepFile, _lines: &[String]) -> Option<String> {
+        None
+    }
+}
+
+/// A file a sweep over some analysis kind writes beside its JSON lines.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SweepFile {
+    /// Extension replacing `.jsonl` (`"csv"`, `"svg"`).
+    pub extension: &'static str,
+    /// How messages name the file (`"the stage plot"`).
+    pub label: &'static str,
+    /// The sweep's CSV table (written by the driver, only when no `--csv` is given); else a
+    /// file rendered by [`Analysis::render_sweep_file`].
+    pub table: bool,
+}
+
+/// The typed result of a run plus its views, before the JSON is made.
+pub struct Typed<R> {
+    /// The typed result.
+    pub result: R,
+    /// Markdown and CSV views.
+    pub report: Report,
+    /// Run, case and result warnings, in that order.
+    pub warnings: Vec<String>,
+    /// Extra output files.
+    pub files: Files,
+}
+
+/// Runs `case` as analysis `A`.
+pub fn run_typed<A: Analysis>(case: &A::Case, ctx: &mut Ctx) -> Result<Typed<A::Result>, RunError> {
+    let result = A::run(case, ctx)?;
+    let mut warnings = std::mem::take(&mut ctx.warnings);
+    warnings.extend(A::case_warnings(case));
+    warnings.extend(A::result_warnings(case, &result));
+    Ok(Typed {
+        report: A::report(&result),
+        warnings,
+        files: std::mem::take(&mut ctx.files),
+        result,
+    })
+}
+
+/// The object-safe view of an [`Analysis`], as the registry holds it.
+pub trait DynAnalysis: Sync {
+    /// [`Analysis::KIND`].
+    fn kind(&self) -> &'static str;
+    /// [`Analysis::check`] of a parsed case of this kind (`None` if the case is another kind).
+    fn check(&self, case: &Case) -> Option<Result<(), CaseError>>;
+    /// Runs a parsed case of this kind into its outcome (`None` if the case is another kind).
+    fn run(&self, case: &Case, ctx: &mut Ctx) -> Option<Result<super::Outcome, RunError>>;
+    /// [`Analysis::materials`].
+    fn materials(&self, case: &Case) -> Vec<UsedMaterial>;
+    /// [`Analysis::sweep_files`].
+    fn sweep_files(&self) -> &'static [SweepFile];
+    /// [`Analysis::render_sweep_file`].
+    fn render_sweep_file(&self, file: &SweepFile, lines: &[String]) -> Option<String>;
+}
+
+/// The registry entry of analysis `A`.
+pub struct Entry<A>(std::marker::PhantomData<fn() -> A>);
+
+impl<A> Entry<A> {
+    /// The entry (a zero-sized value).
+    pub const fn new() -> Self {
+        Entry(std::marker::PhantomData)
+    }
+}
+
+impl<A> Default for Entry<A> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<A: Analysis> DynAnalysis for Entry<A> {
+    fn kind(&self) -> &'static str {
+        A::KIND
+    }
+    fn check(&self, case: &Case) -> Option<Result<(), CaseError>> {
+        A::case(case).map(A::check)
+    }
+    fn run(&self, case: &Case, ctx: &mut Ctx) -> Option<Result<super::Outcome, RunError>> {
+        let c = A::case(case)?;
+        Some(run_typed::<A>(c, ctx).and_then(|t| {
+            Ok(super::Outcome {
+                json: super::to_checked_json(&t.result)?,
+                warnings: t.warnings,
+                report: t.report,
+                files: t.files,
+            })
+        }))
+    }
+    fn materials(&self, case: &Case) -> Vec<UsedMaterial> {
+        A::case(case).map(A::materials).unwrap_or_default()
+    }
+    fn sweep_files(&self) -> &'static [SweepFile] {
+        A::sweep_files()
+    }
+    fn render_sweep_file(&self, file: &SweepFile, lines: &[String]) -> Option<String> {
+        A::render_sweep_file(file, lines)
+    }
+}

@@ -1,0 +1,361 @@
+//! The [`Analysis`] implementations of the built-in kinds: each wires a case shape of
+//! [`crate::case`] to the run and report functions of its analysis module.
+
+use super::kind::{Analysis, Ctx, SweepFile, UsedMaterial};
+use super::{design, fem_static, fem_vs_fkp, hinge, kinematics, modal, stage, stage_report, warn, Report, RunError};
+use crate::case::{self, Case, CaseError, MaterialSpec};
+
+fn one_material(spec: &MaterialSpec) -> Vec<UsedMaterial> {
+    spec.resolve("material")
+        .map(|m| vec![(String::new(), spec.clone(), m)])
+        .unwrap_or_default()
+}
+
+fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>) -> Vec<UsedMaterial> {
+    specs
+        .iter()
+        .filter_map(|(k, spec)| spec.resolve(k).ok().map(|m| (k.clone(), spec.clone(), m)))
+        .collect()
+}
+
+/// Stability warnings of nonlinear load cases (`stable`, critical load-factor bracket).
+fn stability<'a>(cases: impl Iterator<Item = (&'a str, Option<bool>, Option<[f64; 2]>)>) -> Vec<String> {
+    cases
+        .filter_map(|(name, stable, bracket)| fem_static::stability_text(name, stable, bracket))
+        .collect()
+}
+
+/// `kinematics`: 3-PRS rigid-body kinematics.
+pub struct Kinematics;
+
+impl Analysis for Kinematics {
+    const KIND: &'static str = "kinematics";
+    type Case = case::kinematics::KinematicsCase;
+    type Result = kinematics::KinematicsResult;
+
+    fn case(case: &Case) -> Option<&Self::Case> {
+        match case {
+            Case::Kinematics(c) => Some(c),
+            _ => None,
+        }
+    }
+    fn check(case: &Self::Case) -> Result<(), CaseError> {
+        case.validate().map(|_| ())
+    }
+    fn run(case: &Self::Case, _ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        let (prs, bx) = case.validate()?;
+        Ok(kinematics::solve(case, &prs, bx.as_ref())?)
+    }
+    fn report(r: &Self::Result) -> Report {
+        kinematics::report(r)
+    }
+}
+
+/// `hinge`: one flexure hinge in its blank.
+pub struct Hinge;
+
+impl Analysis for Hinge {
+    const KIND: &'static str = "hinge";
+    type Case = case::hinge::HingeCase;
+    type Result = hinge::HingeOut;
+
+    fn case(case: &Case) -> Option<&Self::Case> {
+        match case {
+            Case::Hinge(c) => Some(c),
+            _ => None,
+        }
+    }
+    fn check(case: &Self::Case) -> Result<(), CaseError> {
+        case.validate().map(|_| ())
+    }
+    fn run(case: &Self::Case, _ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        hinge::solve(case)
+    }
+    fn report(r: &Self::Result) -> Report {
+        let mut report = hinge::report(&r.result);
+        if let Some(lr) = &r.large_rotation {
+            report.markdown += &hinge::large_rotation_report(lr);
+        }
+        report
+    }
+    fn case_warnings(case: &Self::Case) -> Vec<String> {
+        warn::hinge_warnings("hinge", &case.hinge)
+    }
+    fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
+        one_material(&case.material)
+    }
+}
+
+/// `stage`: the monolithic 3-PRS compliant stage.
+pub struct Stage;
+
+impl Analysis for Stage {
+    const KIND: &'static str = "stage";
+    type Case = case::stage::StageCase;
+    type Result = stage::StageResult;
+
+    fn case(case: &Case) -> Option<&Self::Case> {
+        match case {
+            Case::Stage(c) => Some(c),
+            _ => None,
+        }
+    }
+    fn check(case: &Self::Case) -> Result<(), CaseError> {
+        case.validate().map(|_| ())
+    }
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        let (r, files) = stage::run_stage_with(case, ctx.with_files, ctx.cache)?;
+        ctx.files = files;
+        ctx.warnings = stability(
+            r.load_cases
+                .iter()
+                .map(|c| (c.name.as_str(), c.stable, c.critical_load_factor)),
+        );
+        Ok(r)
+    }
+    fn report(r: &Self::Result) -> Report {
+        stage_report::stage_report(r)
+    }
+    fn result_warnings(_case: &Self::Case, r: &Self::Result) -> Vec<String> {
+        r.calibration_warnings.clone()
+    }
+    fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
+        one_material(&case.material)
+    }
+    fn sweep_files() -> &'static [SweepFile] {
+        &STAGE_SWEEP_FILES
+    }
+    fn render_sweep_file(_file: &SweepFile, lines: &[String]) -> Option<String> {
+        super::sweep_plot::stage_sweep_svg(lines)
+    }
+}
+
+/// A stage sweep writes an SVG plot (stiffness against reach) and, without `--csv`, its CSV
+/// table beside the JSON lines.
+const STAGE_SWEEP_FILES: [SweepFile; 2] = [
+    SweepFile {
+        extension: "svg",
+        label: "the stage plot",
+        table: false,
+    },
+    SweepFile {
+        extension: "csv",
+        label: "the stage table",
+        table: true,
+    },
+];
+
+/// `fem_vs_fkp`: FEM versus rigid-body forward kinematics.
+pub struct FemVsFkp;
+
+impl Analysis for FemVsFkp {
+    const KIND: &'static str = "fem_vs_fkp";
+    type Case = case::stage::FemVsFkpCase;
+    type Result = fem_vs_fkp::FemVsFkpResult;
+
+    fn case(case: &Case) -> Option<&Self::Case> {
+        match case {
+            Case::FemVsFkp(c) => Some(c),
+            _ => None,
+        }
+    }
+    fn check(case: &Self::Case) -> Result<(), CaseError> {
+        case.validate().map(|_| ())
+    }
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        let r = fem_vs_fkp::run_fem_vs_fkp(case)?;
+        // The plot is part of the report's files; rendered whether or not they are written.
+        ctx.files = fem_vs_fkp::fem_vs_fkp_report(&r).1;
+        Ok(r)
+    }
+    fn report(r: &Self::Result) -> Report {
+        fem_vs_fkp::fem_vs_fkp_report(r).0
+    }
+    fn result_warnings(_case: &Self::Case, r: &Self::Result) -> Vec<String> {
+        r.calibration_warnings.clone()
+    }
+    fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
+        one_material(&case.material)
+    }
+}
+
+/// `sensitivity`: sensitivities of the stage design to its hinge parameters.
+pub struct Sensitivity;
+
+impl Analysis for Sensitivity {
+    const KIND: &'static str = "sensitivity";
+    type Case = case::design::SensitivityCase;
+    type Result = design::SensitivityResult;
+
+    fn case(case: &Case) -> Option<&Self::Case> {
+        match case {
+            Case::Sensitivity(c) => Some(c),
+            _ => None,
+        }
+    }
+    fn check(case: &Self::Case) -> Result<(), CaseError> {
+        case.validate().map(|_| ())
+    }
+    fn run(case: &Self::Case, _ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        design::run_sensitivity(case)
+    }
+    fn report(r: &Self::Result) -> Report {
+        design::sensitivity_report(r)
+    }
+    fn case_warnings(case: &Self::Case) -> Vec<String> {
+        case.validate().map(|d| warn::stage_warnings(&d)).unwrap_or_default()
+    }
+    fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
+        one_material(&case.material)
+    }
+}
+
+/// `design`: requirement-driven sizing of the stage hinges.
+pub struct Design;
+
+impl Analysis for Design {
+    const KIND: &'static str = "design";
+    type Case = case::design::DesignCase;
+    type Result = design::DesignResult;
+
+    fn case(case: &Case) -> Option<&Self::Case> {
+        match case {
+            Case::Design(c) => Some(c),
+            _ => None,
+        }
+    }
+    fn check(case: &Self::Case) -> Result<(), CaseError> {
+        case.validate().map(|_| ())
+    }
+    fn run(case: &Self::Case, _ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        design::run_design(case)
+    }
+    fn report(r: &Self::Result) -> Report {
+        design::design_report(r)
+    }
+    fn result_warnings(case: &Self::Case, r: &Self::Result) -> Vec<String> {
+        warn::design_warnings(case, r)
+    }
+    fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
+        one_material(&case.material)
+    }
+}
+
+/// `static`: linear (or nonlinear) statics of a generic beam/shell model.
+pub struct Static;
+
+impl Analysis for Static {
+    const KIND: &'static str = "static";
+    type Case = case::mesh::StaticCase;
+    type Result = fem_static::StaticResult;
+
+    fn case(case: &Case) -> Option<&Self::Case> {
+        match case {
+            Case::Static(c) => Some(c),
+            _ => None,
+        }
+    }
+    fn check(case: &Self::Case) -> Result<(), CaseError> {
+        case.model.build().map(|_| ())
+    }
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        let model = case.model.build()?;
+        let (r, raw) = match case.steps.filter(|_| case.nonlinear) {
+            Some(steps) => fem_static::solve_nonlinear(&model, steps)?,
+            None => fem_static::solve_with(&model, ctx.cache)?,
+        };
+        if ctx.with_files {
+            ctx.files = fem_static::vtu_files(&model, &raw)?;
+        }
+        ctx.warnings = if case.nonlinear {
+            let mut w = warn::stretch_warnings(&model, &r);
+            w.extend(stability(
+                r.load_cases
+                    .iter()
+                    .map(|c| (c.name.as_str(), c.stable, c.critical_load_factor)),
+            ));
+            w
+        } else {
+            fem_static::shell_orientation_warnings(&model)
+        };
+        Ok(r)
+    }
+    fn report(r: &Self::Result) -> Report {
+        fem_static::report(r)
+    }
+    fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
+        named_materials(&case.model.materials)
+    }
+}
+
+/// `modal`: natural frequencies and mode shapes of a generic beam/shell model.
+pub struct Modal;
+
+impl Analysis for Modal {
+    const KIND: &'static str = "modal";
+    type Case = case::mesh::ModalCase;
+    type Result = modal::ModalResult;
+
+    fn case(case: &Case) -> Option<&Self::Case> {
+        match case {
+            Case::Modal(c) => Some(c),
+            _ => None,
+        }
+    }
+    fn check(case: &Self::Case) -> Result<(), CaseError> {
+        case::limits::check_modal(case.modes, case.model.nodes.len())?;
+        case.model.build_model(false).map(|_| ())
+    }
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        case::limits::check_modal(case.modes, case.model.nodes.len())?;
+        let model = case.model.build_model(false)?;
+        let (mut r, raw) = modal::solve_with(&model, case.modes, case.shift_hz, ctx.cache)?;
+        modal::mark_rigid_body(&model, &raw, &mut r);
+        if !case.shapes {
+            r.modes.iter_mut().for_each(|row| row.shape = None);
+        }
+        ctx.warnings = modal::drilling_warnings(&model, &raw);
+        if ctx.with_files {
+            ctx.files = vec![("modes.vtu".to_string(), modal::vtu(&model, &raw)?)];
+        }
+        Ok(r)
+    }
+    fn report(r: &Self::Result) -> Report {
+        modal::report(r)
+    }
+    fn case_warnings(case: &Self::Case) -> Vec<String> {
+        warn::density_warnings(&case.model)
+    }
+    fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
+        named_materials(&case.model.materials)
+    }
+}
+
+/// `sweep`: checked here, run by `flexfem sweep` (a batch driver over the other kinds).
+pub struct SweepKind;
+
+impl Analysis for SweepKind {
+    const KIND: &'static str = "sweep";
+    type Case = case::sweep::SweepCase;
+    type Result = ();
+
+    fn case(case: &Case) -> Option<&Self::Case> {
+        match case {
+            Case::Sweep(c) => Some(c),
+            _ => None,
+        }
+    }
+    fn check(case: &Self::Case) -> Result<(), CaseError> {
+        case.build().map(|_| ())
+    }
+    fn run(_case: &Self::Case, _ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        Err(RunError::Case(CaseError::value(
+            "analysis",
+            "\"sweep\"",
+            "a sweep runs with `flexfem sweep CASE.json`, not `flexfem run`",
+        )))
+    }
+    fn report(_r: &Self::Result) -> Report {
+        Report::default()
+    }
+}

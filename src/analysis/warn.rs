@@ -1,0 +1,98 @@
+//! Warnings of the analyses: hinge calibration ranges, the small-strain assumption, unit slips.
+
+/// Calibration-range warnings of a hinge, prefixed with where it sits in the case file.
+pub fn hinge_warnings(at: &str, spec: &crate::hinge::HingeSpec) -> Vec<String> {
+    match spec.profile() {
+        Ok(p) => crate::hinge::calibration::calibration_warnings(&p)
+            .into_iter()
+            .map(|w| format!("{at}: {w}"))
+            .collect(),
+        Err(_) => Vec::new(),
+    }
+}
+
+/// Calibration warnings of a stage design's two hinges.
+pub fn stage_warnings(d: &crate::stage::StageDesign) -> Vec<String> {
+    let mut w = hinge_warnings("stage.revolute", &d.revolute);
+    w.extend(hinge_warnings("stage.spherical", &d.spherical));
+    w
+}
+
+/// Largest element stretch in a geometrically nonlinear result above which it is reported: the
+/// co-rotational elements assume small strains (a linear-elastic element at 1 % strain is at
+/// the end of the elastic range of every structural metal).
+pub const SMALL_STRAIN: f64 = 0.01;
+
+/// Warnings for load cases in which a two-node element's chord stretches or shortens by more
+/// than [`SMALL_STRAIN`] (one per load case, naming the worst element).
+pub fn stretch_warnings(model: &crate::fem::Model, r: &super::fem_static::StaticResult) -> Vec<String> {
+    let mut out = Vec::new();
+    for (ic, c) in r.load_cases.iter().enumerate() {
+        let mut worst: Option<(usize, f64)> = None;
+        for (ie, e) in model.elements.iter().enumerate() {
+            let [a, b] = match e {
+                crate::fem::Element::Beam(b) => b.nodes,
+                crate::fem::Element::Flex(f) => f.nodes,
+                _ => continue,
+            };
+            let (Some(da), Some(db)) = (c.displacements.get(a), c.displacements.get(b)) else {
+                continue;
+            };
+            let (xa, xb) = (model.nodes[a], model.nodes[b]);
+            let l0 = (0..3).map(|k| (xb[k] - xa[k]).powi(2)).sum::<f64>().sqrt();
+            let l = (0..3)
+                .map(|k| ((xb[k] + db[k]) - (xa[k] + da[k])).powi(2))
+                .sum::<f64>()
+                .sqrt();
+            let strain = l / l0 - 1.0;
+            if strain.abs() > SMALL_STRAIN && worst.is_none_or(|(_, w)| strain.abs() > w.abs()) {
+                worst = Some((ie, strain));
+            }
+        }
+        if let Some((ie, strain)) = worst {
+            let pct = strain * 100.0;
+            let pct = if pct.abs() < 1e4 {
+                format!("{pct:+.2}")
+            } else {
+                format!("{pct:+.3e}")
+            };
+            out.push(format!(
+                "load_cases[{ic}] (\"{}\"): element {ie} changes length by {pct} %, beyond the small-strain assumption of the co-rotational elements (|strain| <= {} %): the displacements are those of a linear-elastic material at that strain",
+                c.name,
+                SMALL_STRAIN * 100.0
+            ));
+        }
+    }
+    out
+}
+
+/// Calibration warnings of the hinges of the design found by a `design` run.
+pub fn design_warnings(case: &crate::case::design::DesignCase, r: &super::design::DesignResult) -> Vec<String> {
+    use crate::stage::sizing::{with_params, PARAMETERS};
+    let Ok((base, _, _)) = case.validate() else {
+        return Vec::new();
+    };
+    let mut p = [0.0; 5];
+    for (v, k) in p.iter_mut().zip(PARAMETERS) {
+        match r.design.get(k).and_then(|v| v.as_f64()) {
+            Some(x) => *v = x,
+            None => return Vec::new(),
+        }
+    }
+    stage_warnings(&with_params(&base, &p))
+        .into_iter()
+        .map(|w| format!("design found, {w}"))
+        .collect()
+}
+
+/// Implausible densities (unit slips) of a modal model's materials.
+pub fn density_warnings(spec: &crate::case::mesh::MeshSpec) -> Vec<String> {
+    spec.materials
+        .iter()
+        .filter_map(|(k, m)| {
+            let at = format!("materials.{k}");
+            let mat = m.resolve(&at).ok()?;
+            crate::case::material::density_warning(&at, &mat)
+        })
+        .collect()
+}

@@ -1,0 +1,338 @@
+//! `flexfem sweep` on the command line: output files, resume, locking, progress, exit codes.
+//!
+//! The designs run through the batch driver [`crate::design::sweep`]. With `--out FILE.jsonl`
+//! the lines stream to `FILE.jsonl.partial` (appended, one write per line); a re-run skips the
+//! designs already finished ([`super::resume`]). At the end all lines, sorted by index, replace
+//! `FILE.jsonl` atomically and the partial file is removed. So a killed sweep resumes where it
+//! stopped and never loses finished designs.
+//!
+//! The output is locked while the sweep runs (`FILE.jsonl.lock`, see [`crate::output::Lock`]):
+//! a second sweep on the same `--out` — another shard, say — is refused instead of losing
+//! designs. flexfem only replaces a `--out` file that is its own sweep output (every complete
+//! line a sweep line) unless `--force`. A sweep with any error row exits 1.
+
+use super::resume::{Accept, Finished};
+use super::targets::{check_replaceable, io_context, Kind, Stop, Targets};
+use crate::case::sweep::Sweep;
+use crate::case::CaseError;
+use crate::design::sweep::{load, run_sweep, Row, Shard};
+use crate::design::table;
+use crate::output::write_atomic;
+use serde_json::Value;
+use std::collections::HashSet;
+use std::fmt;
+use std::fs::{self, File};
+use std::io::{self, IsTerminal, Read, Seek, SeekFrom, Write};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+/// Command-line arguments of `flexfem sweep`.
+#[derive(Debug, Clone)]
+pub struct SweepArgs {
+    /// The sweep case file.
+    pub case: PathBuf,
+    /// `K/N`: run only designs with index ≡ K−1 (mod N).
+    pub shard: Option<String>,
+    /// JSON-lines output file (stdout when `None`).
+    pub out: Option<PathBuf>,
+    /// Optional CSV output.
+    pub csv: Option<PathBuf>,
+    /// Replace `out`/`csv` even when they are not flexfem's own output.
+    pub force: bool,
+    /// Keep earlier error rows on resume instead of running those designs again.
+    pub keep_errors: bool,
+}
+
+/// Opens the partial file for appending; if it ends in a torn line, starts a new line so the
+/// next row is not glued to the fragment (the fragment stays unreadable and is ignored).
+fn open_partial(path: &Path) -> io::Result<File> {
+    let mut f = crate::output::open_append_no_follow(path)?;
+    let len = f.metadata()?.len();
+    if len > 0 {
+        f.seek(SeekFrom::Start(len - 1))?;
+        let mut last = [0u8; 1];
+        f.read_exact(&mut last)?;
+        if last[0] != b'\n' {
+            f.write_all(b"\n")?;
+        }
+    }
+    Ok(f)
+}
+
+/// Where finished lines go during the run.
+enum Stream {
+    Stdout(io::Stdout),
+    File(File),
+}
+
+struct SinkState {
+    stream: Stream,
+    /// Rows kept for the CSV when they are not in a file (the values they were written from).
+    kept: Option<Vec<(usize, Value)>>,
+    buf: Vec<u8>,
+}
+
+fn progress_bar(len: usize) -> indicatif::ProgressBar {
+    use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+    if !io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let pb = ProgressBar::with_draw_target(Some(len as u64), ProgressDrawTarget::stderr());
+    if let Ok(style) =
+        ProgressStyle::with_template("{spinner} [{elapsed_precise}] {bar:40} {pos}/{len} designs  {per_sec}  ETA {eta}")
+    {
+        pb.set_style(style);
+    }
+    pb
+}
+
+fn bad_case(e: &CaseError) -> ExitCode {
+    eprintln!("error: {e}");
+    ExitCode::from(crate::output::EXIT_BAD_CASE)
+}
+
+fn failed(msg: impl fmt::Display) -> ExitCode {
+    eprintln!("error: {msg}");
+    ExitCode::from(crate::output::EXIT_FAILED)
+}
+
+/// Runs a sweep; returns the exit code: 0 when every design succeeded, 1 when any design
+/// failed (error rows) or the output could not be written, 2 for a bad case file or arguments.
+pub fn run_cli(args: SweepArgs) -> ExitCode {
+    let shard = match args.shard.as_deref().map(|s| (s, s.parse::<Shard>())) {
+        None => Shard::ALL,
+        Some((_, Ok(s))) => s,
+        Some((text, Err(msg))) => {
+            eprintln!("error: invalid --shard `{text}`: {msg}");
+            return ExitCode::from(crate::output::EXIT_BAD_CASE);
+        }
+    };
+    let sweep = match load(&args.case) {
+        Ok(s) => s,
+        Err(e) => return bad_case(&e),
+    };
+    let base_dir = args.case.parent();
+    match execute(&sweep, base_dir, shard, &args) {
+        Ok(0) => ExitCode::SUCCESS,
+        Ok(_) => ExitCode::from(crate::output::EXIT_FAILED),
+        Err(Stop::Usage(msg)) => {
+            eprintln!("error: {msg}");
+            ExitCode::from(crate::output::EXIT_BAD_CASE)
+        }
+        Err(Stop::Io(e)) => failed(e),
+    }
+}
+
+/// Runs the sweep; returns the number of failed designs (error rows in the output).
+fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArgs) -> Result<usize, Stop> {
+    let start = Instant::now();
+    let in_shard = shard.count(sweep.len());
+    let targets = Targets::new(sweep, &args.case, args.out.as_deref(), args.csv.as_deref())?;
+    let partial = targets.partial.as_deref();
+    // One sweep per output file at a time: held until this function returns.
+    let _lock = match &targets.out {
+        Some(out) => Some(crate::output::Lock::acquire(out).map_err(|e| io::Error::other(e.to_string()))?),
+        None => None,
+    };
+    let mut sources: Vec<&Path> = Vec::new();
+    if let (Some(out), Some(partial)) = (&targets.out, partial) {
+        if check_replaceable("--out", out, Kind::Jsonl, args.force)? {
+            sources.push(out);
+        }
+        if crate::output::is_symlink(partial) {
+            return Err(Stop::Io(io::Error::other(format!(
+                "{} is a symbolic link; flexfem does not write through links (remove it)",
+                partial.display()
+            ))));
+        }
+        if check_replaceable("the partial file", partial, Kind::Jsonl, args.force)? {
+            sources.push(partial);
+        } else if args.force && partial.exists() {
+            fs::remove_file(partial).map_err(io_context("remove", partial))?;
+        }
+    }
+    if let Some(p) = targets.csv.as_deref() {
+        check_replaceable("--csv", p, Kind::Csv, args.force)?;
+    }
+    // Tables first, then plots (the order of the refusals).
+    let mut extras: Vec<&(crate::analysis::kind::SweepFile, PathBuf)> = targets.extras.iter().collect();
+    extras.sort_by_key(|(f, _)| !f.table);
+    for (file, p) in extras {
+        check_replaceable(file.label, p, Kind::of(file), args.force)?;
+    }
+
+    let accept = Accept {
+        base_dir,
+        keep_errors: args.keep_errors,
+    };
+    let (done, stream) = match partial {
+        Some(partial) => {
+            let done = Finished::read(sweep, accept, &sources)?;
+            let file = open_partial(partial).map_err(io_context("open", partial))?;
+            (done, Stream::File(file))
+        }
+        None => (Finished::default(), Stream::Stdout(io::stdout())),
+    };
+    let skip: HashSet<usize> = done.lines.keys().copied().filter(|&i| shard.contains(i)).collect();
+    let to_run = in_shard - skip.len();
+    let keep_for_csv = args.csv.is_some() && args.out.is_none();
+    let state = Mutex::new(SinkState {
+        stream,
+        kept: keep_for_csv.then(Vec::new),
+        buf: Vec::with_capacity(4096),
+    });
+    let pb = progress_bar(to_run);
+    let stdout_tty = args.out.is_none() && io::stdout().is_terminal();
+    let tally = run_sweep(sweep, base_dir, shard, &skip, |row: Row| {
+        let mut st = state.lock().unwrap_or_else(|p| p.into_inner());
+        let SinkState { stream, kept, buf } = &mut *st;
+        buf.clear();
+        buf.extend_from_slice(row.line.as_bytes());
+        buf.push(b'\n');
+        match stream {
+            Stream::File(f) => f
+                .write_all(buf)
+                .map_err(|e| io_context("append to", partial.unwrap_or(Path::new("")))(e))?,
+            Stream::Stdout(s) => {
+                let write = || -> io::Result<()> {
+                    let mut lock = s.lock();
+                    lock.write_all(buf)?;
+                    lock.flush()
+                };
+                let write = || write().map_err(|e| io::Error::new(e.kind(), format!("cannot write to stdout: {e}")));
+                if stdout_tty {
+                    pb.suspend(write)?
+                } else {
+                    write()?
+                }
+            }
+        }
+        if let Some(k) = kept {
+            k.push((row.index, row.value));
+        }
+        pb.inc(1);
+        Ok(())
+    });
+    pb.finish_and_clear();
+    let tally = tally?;
+    let state = state.into_inner().unwrap_or_else(|p| p.into_inner());
+    drop(state.stream);
+
+    let mut failed_total = tally.failed + done.failed.iter().filter(|&&i| shard.contains(i)).count();
+    let axes: Vec<&str> = sweep.axes.iter().map(|(p, _)| p.as_str()).collect();
+    let csv_text: Option<String> = match (&targets.out, partial) {
+        (Some(out), Some(partial)) => {
+            // Oldest first, so the lines just written replace retried or stale ones.
+            sources.retain(|p| *p != partial);
+            sources.push(partial);
+            let all = Finished::read(
+                sweep,
+                Accept {
+                    keep_errors: true,
+                    ..accept
+                },
+                &sources,
+            )?;
+            failed_total = all.failed.iter().filter(|&&i| shard.contains(i)).count();
+            write_atomic(out, &all.to_jsonl()).map_err(io_context("write", out))?;
+            fs::remove_file(partial).or_else(|e| match e.kind() {
+                io::ErrorKind::NotFound => Ok(()),
+                _ => Err(e),
+            })?;
+            if all.in_shard(shard) != in_shard {
+                eprintln!(
+                    "warning: {} holds {} of the {in_shard} designs",
+                    out.display(),
+                    all.in_shard(shard)
+                );
+            }
+            // Files of the base case's analysis beside the JSON lines (a stage sweep's plot
+            // and table).
+            let lines: Vec<String> = all.lines.values().cloned().collect();
+            for (file, p) in &targets.extras {
+                let text = if file.table {
+                    let refs: Vec<&str> = lines.iter().map(String::as_str).collect();
+                    Some(table::csv(&axes, &refs))
+                } else {
+                    sweep_kind(sweep).and_then(|a| a.render_sweep_file(file, &lines))
+                };
+                if let Some(text) = text {
+                    write_atomic(p, text.as_bytes()).map_err(io_context("write", p))?;
+                }
+            }
+            args.csv.as_ref().map(|_| {
+                let refs: Vec<&str> = lines.iter().map(String::as_str).collect();
+                table::csv(&axes, &refs)
+            })
+        }
+        // Rows of this run only, in memory: the table reads the values the lines were written
+        // from (no round trip through the text).
+        _ => state.kept.map(|mut k| {
+            k.sort_unstable_by_key(|(i, _)| *i);
+            let rows: Vec<Value> = k.into_iter().map(|(_, v)| v).collect();
+            table::csv_of_rows(&axes, &rows)
+        }),
+    };
+    if let (Some(csv), Some(text)) = (&args.csv, csv_text) {
+        write_atomic(csv, text.as_bytes()).map_err(io_context("write", csv))?;
+    }
+
+    let secs = start.elapsed().as_secs_f64();
+    let shard_note = if shard == Shard::ALL {
+        String::new()
+    } else {
+        format!(" (shard {shard} of {})", sweep.len())
+    };
+    let mut note = String::new();
+    if done.foreign > 0 || done.unreadable > 0 {
+        note = format!(
+            "; ignored {} earlier lines of other designs and {} unreadable",
+            done.foreign, done.unreadable
+        );
+    }
+    if done.stale > 0 {
+        note += &format!(
+            "; reran {} designs whose earlier lines were stale (base case, mesh file or line format changed)",
+            done.stale
+        );
+    }
+    if done.errors > 0 {
+        note += &format!("; retried {} earlier error rows", done.errors);
+    }
+    let kept_errors = done.failed.iter().filter(|&&i| shard.contains(i)).count();
+    if kept_errors > 0 {
+        note += &format!("; kept {kept_errors} earlier error rows (--keep-errors)");
+    }
+    eprintln!(
+        "sweep: {in_shard} designs{shard_note}, {} already done, {} run, {} failed, {:.2} s ({:.0} designs/s){note}",
+        skip.len(),
+        tally.run,
+        tally.failed,
+        secs,
+        rate(tally.run, start.elapsed()),
+    );
+    if failed_total > 0 {
+        eprintln!("error: {failed_total} of {in_shard} designs failed (their lines hold an \"error\"; exit code 1)");
+    }
+    Ok(failed_total)
+}
+
+/// The registered analysis of a sweep's base case.
+fn sweep_kind(sweep: &Sweep) -> Option<&'static dyn crate::analysis::DynAnalysis> {
+    sweep
+        .base
+        .get("analysis")
+        .and_then(Value::as_str)
+        .and_then(crate::analysis::registry::find)
+}
+
+fn rate(n: usize, d: Duration) -> f64 {
+    let s = d.as_secs_f64();
+    if s > 0.0 {
+        n as f64 / s
+    } else {
+        0.0
+    }
+}

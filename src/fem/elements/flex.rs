@@ -1,0 +1,43 @@
+//! Flexibility (compliance) element: data, local and tip stiffness (see
+//! [`crate::fem::element::flex_local_stiffness`]).
+
+use crate::fem::element::{flex_local_stiffness, flex_tip_stiffness};
+use crate::fem::error::FemError;
+use crate::fem::transform::Mat12;
+use nalgebra::Matrix6;
+
+/// Two-node element given by its cantilever tip compliance (see
+/// [`crate::fem::element::flex_local_stiffness`]). Local axes as for [`super::Beam`]; the
+/// length is the node distance.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FlexElement {
+    pub nodes: [usize; 2],
+    /// 6×6 compliance of node 2 relative to clamped node 1, local axes at node 2, order
+    /// u v w θx θy θz (mm/N, rad/N, rad/(N·mm)); symmetric positive definite.
+    pub compliance: [[f64; 6]; 6],
+    /// Orientation vector, as for beams.
+    pub up: [f64; 3],
+}
+
+impl FlexElement {
+    fn compliance_matrix(&self) -> Matrix6<f64> {
+        Matrix6::from_fn(|i, j| self.compliance[i][j])
+    }
+
+    fn bad(ie: usize) -> FemError {
+        FemError::BadElement {
+            element: ie,
+            reason: "compliance must be finite, symmetric and positive definite".into(),
+        }
+    }
+
+    /// Local 12×12 stiffness for length `l` (mm) (`ie`: the element's index, for errors).
+    pub fn local_stiffness(&self, ie: usize, l: f64) -> Result<Mat12, FemError> {
+        flex_local_stiffness(&self.compliance_matrix(), l).ok_or_else(|| Self::bad(ie))
+    }
+
+    /// Tip stiffness C⁻¹ (local axes at node 2).
+    pub fn tip_stiffness(&self, ie: usize) -> Result<Matrix6<f64>, FemError> {
+        flex_tip_stiffness(&self.compliance_matrix()).ok_or_else(|| Self::bad(ie))
+    }
+}

@@ -1,0 +1,72 @@
+//! Structured meshes shared by the shell tests. Each test keeps its own node placement (the
+//! formula, so the coordinates are the very doubles it always used); these helpers only number
+//! the grid and connect it: node (i, j), i ∈ 0..=nx, j ∈ 0..=ny, is `j(nx + 1) + i`, quad (i, j)
+//! joins (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1).
+#![allow(dead_code)]
+
+use flexfem::fem::{Element, Model, Shell4};
+use flexfem::material::Material;
+use serde_json::{json, Value};
+
+/// Index of node (i, j) in a grid `nx` quads wide.
+pub fn grid_id(nx: usize) -> impl Fn(usize, usize) -> usize + Copy {
+    move |i, j| j * (nx + 1) + i
+}
+
+/// The four corners of quad (i, j), counter-clockwise.
+fn quad(id: impl Fn(usize, usize) -> usize, i: usize, j: usize) -> [usize; 4] {
+    [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]
+}
+
+/// Adds an (nx+1)×(ny+1) grid of nodes at `at(i, j)` after the nodes already in `m`, and
+/// nx×ny four-node shells of thickness `t` on it; the index of node (i, j) in `m`.
+pub fn shell_grid(
+    m: &mut Model,
+    (nx, ny): (usize, usize),
+    t: f64,
+    material: Material,
+    at: impl Fn(usize, usize) -> [f64; 3],
+) -> impl Fn(usize, usize) -> usize + Copy {
+    let base = m.nodes.len();
+    for j in 0..=ny {
+        for i in 0..=nx {
+            m.add_node(at(i, j));
+        }
+    }
+    let local = grid_id(nx);
+    let id = move |i: usize, j: usize| base + local(i, j);
+    for j in 0..ny {
+        for i in 0..nx {
+            m.add_element(Element::Shell4(Shell4 {
+                nodes: quad(id, i, j),
+                t,
+                material,
+            }));
+        }
+    }
+    id
+}
+
+/// The same grid as case-file JSON: the nodes at `at(i, j)` and `shell4` elements naming
+/// `section` and `material`.
+pub fn shell_grid_json(
+    (nx, ny): (usize, usize),
+    section: &str,
+    material: &str,
+    at: impl Fn(usize, usize) -> [f64; 3],
+) -> (Vec<[f64; 3]>, Vec<Value>) {
+    let mut nodes = Vec::new();
+    for j in 0..=ny {
+        for i in 0..=nx {
+            nodes.push(at(i, j));
+        }
+    }
+    let id = grid_id(nx);
+    let mut elements = Vec::new();
+    for j in 0..ny {
+        for i in 0..nx {
+            elements.push(json!({"type": "shell4", "nodes": quad(id, i, j), "section": section, "material": material}));
+        }
+    }
+    (nodes, elements)
+}
