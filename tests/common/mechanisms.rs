@@ -526,8 +526,11 @@ pub const PRS_TOOL_NODE: usize = 0;
 /// joints — a revolute joint (axis tangential, the slider's mᵢ) between each slider and its
 /// link, a spherical joint between each link and the platform (radius 315 mm; three arms
 /// from its centre, 5 orders stiffer than the links, stand for the rigid platform);
-/// links 185 mm steel beams (A = 7200 mm², I = 8.64e6 mm⁴ for bending out of the leg plane,
-/// 2.16e6 mm⁴ in it, J = 1.296e6 mm⁴, E = 210 GPa, G = 82.4 GPa); each slider guided along z
+/// links 185 mm steel Euler–Bernoulli beams of a 60 × 120 mm rectangle (the paper's A = 7200
+/// mm², I = 8.64e6 mm⁴ for bending out of the leg plane, 2.16e6 mm⁴ in it; its polar moment
+/// 1.296e6 mm⁴ is below the rectangle's torsion constant, which is used — the links carry no
+/// torque to first order; E = 210 GPa, G = 82.4 GPa → ν = 0.2743; yield 355 and allowable 235
+/// MPa assumed, S355 steel); each slider guided along z
 /// (its other five DOFs held by the guide) and held along z by its lead screw as an axial
 /// spring `prs_screw_stiffness`. The pose (slider strokes, platform placement) is the 3-PRS
 /// inverse kinematics of `flexfem::kinematics` with γ = 90° (vertical actuators). Load: the
@@ -585,7 +588,9 @@ pub fn prs_head_case_with(beta_deg: f64, tool: f64) -> Value {
         let plat = b.node(at(bp));
         b.elements
             .push(json!({"type": "joint", "nodes": [slider, link_foot], "kind": "revolute", "axis": rounded(m)}));
-        b.beam(link_foot, link_head, "link", "steel", m);
+        // Euler–Bernoulli, as the paper's link compliance (its Eq. (1)).
+        let link = b.beam(link_foot, link_head, "link", "steel", m);
+        b.elements[link]["shear"] = json!(false);
         b.elements
             .push(json!({"type": "joint", "nodes": [link_head, plat], "kind": "spherical"}));
         b.supports
@@ -609,9 +614,9 @@ pub fn prs_head_case_with(beta_deg: f64, tool: f64) -> Value {
         .map(|r| r9(rot[(r, 0)] * f_local[0] + rot[(r, 1)] * f_local[1] + rot[(r, 2)] * f_local[2]))
         .collect();
     let mesh = b.mesh(
-        json!({"steel": {"E": 210000, "nu": 0.2743, "density": 7.85e-9}}),
+        json!({"steel": {"E": 210000, "nu": 0.2743, "density": 7.85e-9, "yield": 355, "allowable": 235}}),
         json!({
-            "link": {"shape": "general", "A": 7200, "Iy": 8.64e6, "Iz": 2.16e6, "J": 1.296e6},
+            "link": {"shape": "rect", "w": 60, "h": 120},
             "platform_arm": {"shape": "general", "A": 1e6, "Iy": 1e11, "Iz": 1e11, "J": 1e11}
         }),
     );
