@@ -8,7 +8,20 @@ use crate::fem;
 use crate::hinge::{self, HingeSpec};
 use serde_json::Value;
 
-/// Builds a `hinge` element at JSON path `p`.
+/// A hinge element of a built model: where it is and its hinge (for the per-hinge results).
+#[derive(Debug, Clone)]
+pub struct BuiltHinge {
+    /// Index of the element in the case's `elements`.
+    pub case_element: usize,
+    /// Index of the element in the FE model (model order, as `element_von_mises`).
+    pub element: usize,
+    /// Its hinge region: compliance and stress model, as in the `hinge` analysis.
+    pub region: hinge::HingeRegion,
+    /// Allowable stress of its material, MPa (∞ when the material has none).
+    pub allowable: f64,
+}
+
+/// Builds a `hinge` element at JSON path `p` (case element `case_element`).
 ///
 /// One [`fem::FlexElement`] from node a to node b: its compliance is exactly that of the
 /// `hinge` analysis for the same hinge with `blank_length` = (node distance − notch length)/2
@@ -25,6 +38,7 @@ pub(super) fn hinge_element(
     hinge: &Value,
     material: &str,
     up: [f64; 3],
+    case_element: usize,
 ) -> Result<(), CaseError> {
     let (a, b) = cx.two_nodes(p, nodes, "hinge")?;
     let mat = *cx.materials.get(&format!("{p}.material"), material)?;
@@ -43,11 +57,17 @@ pub(super) fn hinge_element(
     }
     let region = hinge::hinge_element(&spec, &mat, len.max(notch_len)).map_err(herr)?;
     let mass = mat.density * region.volume();
-    cx.model.add_element(fem::Element::Flex(fem::FlexElement {
+    let element = cx.model.add_element(fem::Element::Flex(fem::FlexElement {
         nodes: [a, b],
         compliance: region.compliance(),
         up,
     }));
+    cx.hinges.push(BuiltHinge {
+        case_element,
+        element,
+        region,
+        allowable: mat.allowable,
+    });
     for node in [a, b] {
         cx.model.masses.push(fem::PointMass {
             node,
