@@ -72,18 +72,3 @@ fn hinge_rotation_and_stress_under_a_tip_moment() {
     }
     assert_eq!(h["element"].as_u64(), Some(0));
 }
-
-/// Nonlinear: a moment-loaded hinge (a pure tip moment, zero applied force) runs — the
-/// equilibrium check once refused it for a 2e-6 N imbalance measured against 0 N of applied
-/// force — and its finite rotation still equals C·M (the element's moment–rotation relation is
-/// linear in the co-rotational frame) to 1e-9.
-#[test]
-fn nonlinear_hinge_under_a_pure_tip_moment() {
-    let (r, _) = reference();
-    let m = 2000.0;
-    let out = analysis::run(&hinge_case([0.0, 0.0, 0.0, 0.0, m, 0.0], true)).unwrap_or_else(|e| panic!("{e}"));
-    let h = hinge_row(&out);
-    let want = (r.hinge.compliance[4][4] * m).to_degrees();
-    let rot = h["rotation_deg"].as_f64().unwrap();
-    assert!((rot - want).abs() <= 1e-9 * want.abs(), "{rot} vs {want}");
-}
