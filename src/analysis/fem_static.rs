@@ -68,7 +68,7 @@ pub struct HingeRow {
     pub utilisation: f64,
     /// Rotation left until the peak stress reaches the allowable, degrees, by linear
     /// extrapolation: rotation_deg · (allowable/peak_von_mises − 1) (`null` when unbounded:
-    /// no allowable or no stress).
+    /// no allowable or no stress; negative when the allowable is already exceeded).
     #[serde(serialize_with = "crate::report::numbers::ratio_or_null")]
     pub remaining_rotation_deg: f64,
 }
@@ -404,8 +404,45 @@ pub fn report(r: &StaticResult) -> Report {
             md += &format!("({} nodes: see result.csv)\n", c.displacements.len());
         }
         md += "\n";
+        md += &hinge_table(c);
     }
     Report { markdown: md, csv }
+}
+
+/// The Markdown table of a load case's hinge elements (empty without hinges).
+fn hinge_table(c: &StaticCaseRow) -> String {
+    if c.hinges.is_empty() {
+        return String::new();
+    }
+    let mut t = Table::new(&[
+        "element",
+        "rotation (°)",
+        "peak von Mises (MPa)",
+        "utilisation",
+        "remaining rotation (°)",
+        "My a (N·mm)",
+        "My b (N·mm)",
+    ]);
+    for h in &c.hinges {
+        let rem = if h.remaining_rotation_deg.is_finite() {
+            format!("{:.4}", h.remaining_rotation_deg)
+        } else {
+            "unbounded".to_string()
+        };
+        t.row(vec![
+            h.element.to_string(),
+            format!("{:.6}", h.rotation_deg),
+            format!("{:.4}", h.peak_von_mises),
+            format!("{:.4}", h.utilisation),
+            rem,
+            format!("{:.6e}", h.end_forces[0][4]),
+            format!("{:.6e}", h.end_forces[1][4]),
+        ]);
+    }
+    format!(
+        "Hinge elements (rotation about the compliant axis, local y; remaining rotation to the allowable stress by linear extrapolation):\n\n{}\n",
+        t.render()
+    )
 }
 
 /// Markdown lines with the largest and smallest principal shell stresses of a load case and
