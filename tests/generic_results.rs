@@ -72,3 +72,117 @@ fn hinge_rotation_and_stress_under_a_tip_moment() {
     }
     assert_eq!(h["element"].as_u64(), Some(0));
 }
+
+/// A cantilever along x of length L = 100 mm in 4 Euler–Bernoulli beams (rect w = 10 along
+/// local y, h = 5 along local z, up = z), clamped at node 0; a tip force `f`, plus the
+/// case-level extras `extra`.
+fn cantilever(f: [f64; 6], extra: &str) -> analysis::Outcome {
+    let text = format!(
+        r#"{{"analysis": "static", "materials": {{"al": "Al7075"}},
+            "sections": {{"s": {{"shape": "rect", "w": 10, "h": 5}}}},
+            "nodes": [[0, 0, 0], [25, 0, 0], [50, 0, 0], [75, 0, 0], [100, 0, 0]],
+            "elements": [
+              {{"type": "beam", "nodes": [0, 1], "section": "s", "material": "al", "up": [0, 0, 1], "shear": false}},
+              {{"type": "beam", "nodes": [1, 2], "section": "s", "material": "al", "up": [0, 0, 1], "shear": false}},
+              {{"type": "beam", "nodes": [2, 3], "section": "s", "material": "al", "up": [0, 0, 1], "shear": false}},
+              {{"type": "beam", "nodes": [3, 4], "section": "s", "material": "al", "up": [0, 0, 1], "shear": false}}],
+            "supports": [{{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}}],
+            "load_cases": [{{"name": "tip", "forces": [{{"node": 4, "F": {f:?}}}]}}]{extra}}}"#
+    );
+    analysis::run(&case::parse(&text).unwrap_or_else(|e| panic!("{e}"))).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn result(out: &analysis::Outcome) -> &Value {
+    if out.json["result"].is_object() {
+        &out.json["result"]
+    } else {
+        &out.json
+    }
+}
+
+/// Statics of a cantilever under a tip force F_z (positive-face convention: the part beyond
+/// the section acts on the part before it): V_z = F and M_y = −F·(L − x) at every section,
+/// all other section forces zero, to 1e-9 of F and F·L. Without `"output"` no `beam_forces`.
+#[test]
+fn beam_section_forces_of_a_cantilever() {
+    let (l, f) = (100.0, 3.0);
+    let plain = cantilever([0.0, 0.0, f, 0.0, 0.0, 0.0], "");
+    assert!(result(&plain)["load_cases"][0].get("beam_forces").is_none());
+    let out = cantilever([0.0, 0.0, f, 0.0, 0.0, 0.0], r#", "output": {"section_forces": true}"#);
+    let bf = result(&out)["load_cases"][0]["beam_forces"].as_array().unwrap().clone();
+    assert_eq!(bf.len(), 4);
+    for (k, b) in bf.iter().enumerate() {
+        assert_eq!(b["element"].as_u64(), Some(k as u64));
+        for end in 0..2 {
+            let x = 25.0 * (k + end) as f64;
+            let s: Vec<f64> = (0..6).map(|i| b["section_forces"][end][i].as_f64().unwrap()).collect();
+            let want = [0.0, 0.0, f, 0.0, -f * (l - x), 0.0];
+            for i in 0..6 {
+                let scale = if i < 3 { f } else { f * l };
+                assert!(
+                    (s[i] - want[i]).abs() <= 1e-9 * scale,
+                    "element {k} end {end} (x = {x}): component {i} = {} vs {}",
+                    s[i],
+                    want[i]
+                );
+            }
+        }
+    }
+}
+
+/// Tip compliance of the Euler–Bernoulli cantilever (closed forms): uz/Fz = L³/(3EI_y),
+/// uy/Fy = L³/(3EI_z), ux/Fx = L/(EA), ry/My = L/(EI_y), |uz/My| = L²/(2EI_y), to 1e-9; in a frame
+/// turned 90° about z the first row is the global y one; the translational eigen extremes are
+/// the smallest and largest of the three translational diagonal entries (uncoupled block), and a
+/// clamped node has zero compliance.
+#[test]
+fn node_compliance_of_a_cantilever_tip() {
+    let al = flexfem::material::Material::builtin("Al7075").unwrap();
+    let (l, w, h): (f64, f64, f64) = (100.0, 10.0, 5.0);
+    let (iy, iz, a) = (w * h.powi(3) / 12.0, h * w.powi(3) / 12.0, w * h);
+    let out = cantilever(
+        [0.0, 0.0, 1.0, 0.0, 0.0, 0.0],
+        r#", "compliance": [{"node": 4}, {"node": 4, "frame": [[0, 1, 0], [-1, 0, 0], [0, 0, 1]]}, {"node": 0}]"#,
+    );
+    let c = &result(&out)["compliance"];
+    let m = |k: usize, i: usize, j: usize| c[k]["matrix"][i][j].as_f64().unwrap();
+    let e = al.e;
+    let close = |got: f64, want: f64, what: &str| {
+        assert!((got - want).abs() <= 1e-9 * want.abs(), "{what}: {got} vs {want}");
+    };
+    close(m(0, 2, 2), l.powi(3) / (3.0 * e * iy), "uz/Fz");
+    close(m(0, 1, 1), l.powi(3) / (3.0 * e * iz), "uy/Fy");
+    close(m(0, 0, 0), l / (e * a), "ux/Fx");
+    close(m(0, 4, 4), l / (e * iy), "ry/My");
+    close(m(0, 2, 4).abs(), l * l / (2.0 * e * iy), "|uz/My|");
+    close(m(1, 0, 0), l.powi(3) / (3.0 * e * iz), "frame: u'x/F'x = uy/Fy");
+    close(m(1, 1, 1), l / (e * a), "frame: u'y/F'y = ux/Fx");
+    let ev = |k: usize, i: usize| c[k]["translational_eigen"][i].as_f64().unwrap();
+    close(ev(0, 0), l / (e * a), "smallest translational eigenvalue");
+    close(ev(0, 1), l.powi(3) / (3.0 * e * iy), "largest translational eigenvalue");
+    for i in 0..6 {
+        for j in 0..6 {
+            assert_eq!(m(2, i, j), 0.0, "clamped node: C[{i}][{j}]");
+        }
+    }
+}
+
+/// A compliance request naming a node outside the model, or a frame that is not orthonormal,
+/// is refused at parse time naming its JSON path.
+#[test]
+fn compliance_request_errors_name_the_path() {
+    let base = r#"{"analysis": "static", "materials": {"al": "Al7075"},
+        "sections": {"s": {"shape": "rect", "w": 10, "h": 5}},
+        "nodes": [[0, 0, 0], [25, 0, 0]],
+        "elements": [{"type": "beam", "nodes": [0, 1], "section": "s", "material": "al", "up": [0, 0, 1]}],
+        "supports": [{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}],
+        "load_cases": [{"name": "tip", "forces": [{"node": 1, "F": [0, 0, 1, 0, 0, 0]}]}],
+        "compliance": "#;
+    let e = case::parse(&format!("{base}[{{\"node\": 1}}, {{\"node\": 7}}]}}")).unwrap_err();
+    assert!(e.to_string().contains("compliance[1].node"), "{e}");
+    let e = case::parse(&format!(
+        "{base}[{{\"node\": 1, \"frame\": [[1, 0, 0], [1, 0, 0], [0, 0, 1]]}}]}}"
+    ))
+    .unwrap_err();
+    assert!(e.to_string().contains("compliance[0].frame"), "{e}");
+}
