@@ -11,9 +11,14 @@ const D: f64 = 40.0;
 /// A hinge element from node 0 (clamped) to node 1 along x (notch thinning along z, compliant
 /// axis y), loaded at node 1 by `load` = [Fx, Fy, Fz, Mx, My, Mz].
 fn hinge_case(load: [f64; 6], nonlinear: bool) -> Case {
+    hinge_case_along([D, 0.0, 0.0], load, nonlinear)
+}
+
+/// As [`hinge_case`] with node 1 at `b` (up = z).
+fn hinge_case_along(b: [f64; 3], load: [f64; 6], nonlinear: bool) -> Case {
     let text = format!(
         r#"{{"analysis": "static", "materials": {{"al": "Al7075"}}, "nonlinear": {nonlinear},
-            "nodes": [[0, 0, 0], [{D}, 0, 0]],
+            "nodes": [[0, 0, 0], {b:?}],
             "elements": [{{"type": "hinge", "nodes": [0, 1], "hinge": {CIRCULAR}, "material": "al", "up": [0, 0, 1]}}],
             "supports": [{{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}}],
             "load_cases": [{{"name": "m", "forces": [{{"node": 1, "F": {load:?}}}]}}]}}"#
@@ -185,4 +190,21 @@ fn compliance_request_errors_name_the_path() {
     ))
     .unwrap_err();
     assert!(e.to_string().contains("compliance[0].frame"), "{e}");
+}
+
+/// The rotation is taken about the element's own local y: a hinge along global y (local
+/// y = z × y = −x) under a moment M about −x turns by C_ry,My·M (the `hinge` analysis's
+/// compliance) to 1e-9, and a moment about its stiff axis (global z = local z) gives a rotation
+/// about the compliant axis of zero (to 1e-12 of the compliant one).
+#[test]
+fn hinge_rotation_follows_the_element_axes() {
+    let m = 500.0;
+    let (r, _) = reference();
+    let want = (r.hinge.compliance[4][4] * m).to_degrees();
+    let out = analysis::run(&hinge_case_along([0.0, D, 0.0], [0.0, 0.0, 0.0, -m, 0.0, 0.0], false)).unwrap();
+    let rot = hinge_row(&out)["rotation_deg"].as_f64().unwrap();
+    assert!((rot - want).abs() <= 1e-9 * want, "{rot} vs {want}");
+    let out = analysis::run(&hinge_case_along([0.0, D, 0.0], [0.0, 0.0, 0.0, 0.0, 0.0, m], false)).unwrap();
+    let rot = hinge_row(&out)["rotation_deg"].as_f64().unwrap();
+    assert!(rot.abs() <= 1e-12 * want, "{rot}");
 }
