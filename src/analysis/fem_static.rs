@@ -100,8 +100,10 @@ pub struct HingeRow {
     /// peak_von_mises / allowable of the element's material (0 without an allowable).
     pub utilisation: f64,
     /// Rotation left until the peak stress reaches the allowable, degrees, by linear
-    /// extrapolation: rotation_deg · (allowable/peak_von_mises − 1) (`null` when unbounded:
-    /// no allowable or no stress; negative when the allowable is already exceeded).
+    /// extrapolation of the load case (stress proportional to rotation):
+    /// rotation_deg · (allowable/peak_von_mises − 1). Signed like rotation_deg (further rotation
+    /// in the same sense); of the opposite sign when the allowable is already exceeded; `null`
+    /// when unbounded (no allowable, or no stress).
     #[serde(serialize_with = "crate::report::numbers::ratio_or_null")]
     pub remaining_rotation_deg: f64,
 }
@@ -503,7 +505,38 @@ pub fn report(r: &StaticResult) -> Report {
         md += "\n";
         md += &hinge_table(c);
     }
+    md += &compliance_section(&r.compliance);
     Report { markdown: md, csv }
+}
+
+/// The Markdown section of the requested node compliances (empty without).
+fn compliance_section(rows: &[ComplianceRow]) -> String {
+    if rows.is_empty() {
+        return String::new();
+    }
+    let mut md = String::from(
+        "## Node compliance\n\nLinear, undeformed model with its supports; C[i][j] = displacement i per unit load j, [ux, uy, uz, rx, ry, rz] × [Fx, Fy, Fz, Mx, My, Mz] in the given frame: mm/N, mm/(N·mm), rad/N, rad/(N·mm).\n\n",
+    );
+    for c in rows {
+        md += &format!(
+            "### Node {}\n\nFrame rows (local x, y, z): {:?}. Translational eigenvalues {:.6e} … {:.6e} mm/N; rotational {:.6e} … {:.6e} rad/(N·mm).\n\n",
+            c.node,
+            c.frame,
+            c.translational_eigen[0],
+            c.translational_eigen[1],
+            c.rotational_eigen[0],
+            c.rotational_eigen[1]
+        );
+        let mut t = Table::new(&["", "Fx", "Fy", "Fz", "Mx", "My", "Mz"]);
+        for (i, name) in ["ux", "uy", "uz", "rx", "ry", "rz"].iter().enumerate() {
+            let mut row = vec![name.to_string()];
+            row.extend(c.matrix[i].iter().map(|v| format!("{v:.6e}")));
+            t.row(row);
+        }
+        md += &t.render();
+        md += "\n";
+    }
+    md
 }
 
 /// The Markdown table of a load case's hinge elements (empty without hinges).
