@@ -208,3 +208,13 @@ fn hinge_rotation_follows_the_element_axes() {
     let rot = hinge_row(&out)["rotation_deg"].as_f64().unwrap();
     assert!(rot.abs() <= 1e-12 * want, "{rot}");
 }
+
+/// An unloaded hinge has no stress: utilisation 0 and the remaining rotation unbounded, written
+/// as `null` (0·∞ is undefined), not NaN (the result's finite check would refuse it).
+#[test]
+fn unloaded_hinge_has_unbounded_remaining_rotation() {
+    let out = analysis::run(&hinge_case([0.0; 6], false)).unwrap_or_else(|e| panic!("{e}"));
+    let h = hinge_row(&out);
+    assert_eq!(h["utilisation"].as_f64(), Some(0.0), "{h}");
+    assert!(h["remaining_rotation_deg"].is_null(), "{h}");
+}
