@@ -1,6 +1,6 @@
 //! Bundled mechanisms built from `hinge` elements and rigid links in `static` mesh cases: the
 //! parallelogram guide (against the rigid four-bar linkage with the hinge's own stiffness), and
-//! seed 002's 8R spherical pan-tilt (against the PRBM kinematics and the FEM of its Table 3).
+//! Yu, Lu and Hao's (2016) 8R spherical pan-tilt (against the PRBM kinematics and the FEM of its Table 3).
 //!
 //! The geometry of every model comes from `tests/common/mechanisms.rs`; the bundled files must
 //! equal what it writes (`FLEXFEM_BLESS=1` rewrites them).
@@ -76,7 +76,7 @@ fn bundled_mechanism_files_match_their_generator() {
     }
 }
 
-/// Seed 002, §3: the PRBM inverse kinematics for pitch γ = 10°, phase φ = 45° gives θ₁ = 7.36°,
+/// Yu, Lu and Hao (2016), §3: the PRBM inverse kinematics for pitch γ = 10°, phase φ = 45° gives θ₁ = 7.36°,
 /// θ₂ = 3.09° (printed to 0.01°). The joint-axis layout of `pantilt_axes` reproduces both.
 #[test]
 fn pantilt_axes_reproduce_the_papers_inverse_kinematics() {
@@ -228,7 +228,7 @@ fn pantilt_pose(p: &PanTilt, theta: [f64; 2], nonlinear: bool) -> (f64, f64) {
     pitch_phase([d[3], d[4], d[5]])
 }
 
-/// Seed 002, Table 3 (ANSYS FEM of the 8R compliant pan-tilt at θ₁ = 7.36°, θ₂ = 3.09°): the
+/// Yu, Lu and Hao (2016), Table 3 (ANSYS FEM of the 8R compliant pan-tilt at θ₁ = 7.36°, θ₂ = 3.09°): the
 /// platform pitch and phase for the standard hinge and five variants (and without the passive
 /// limb). Printed beside the paper's; asserted: every pose is near the PRBM target (pitch
 /// within 2.5° of 10°, phase within 7° of 45°, the paper's spread), and the extremes of the
@@ -299,7 +299,7 @@ fn lever_amplifier_ratio_matches_the_lumped_lever() {
     assert!(rel.abs() < 5e-3, "ratio {ratio} vs lumped {lumped} ({rel:+.3e})");
 }
 
-/// Seed 004 (X. Han, Y. Wang and J. Shi, "Stiffness modeling of 3-PRS mechanism", Table IV):
+/// X. Han, Y. Wang and J. Shi, "Stiffness modeling of 3-PRS mechanism", Table IV:
 /// deformation of the FSW head under F = [100, 50, 50] kN at z = −0.4 m, α = 0, β = 0/5/10°:
 /// 0.25/0.47/0.69 mm (their analytic model: link beams + lead screws, ideal joints) and
 /// 0.21/0.42/0.61 mm (their ANSYS). The same idealisation here (beams, axial springs, ideal
@@ -332,7 +332,7 @@ fn prs_head_deformation_against_han2019() {
     assert!(ours[0] < ours[1] && ours[1] < ours[2], "{ours:?}");
 }
 
-/// Seed 002 (Yu et al. 2016), Table 1: the 8R compliant mechanism's lowest frequencies 24.4,
+/// Yu, Lu and Hao (2016), Table 1: the 8R compliant mechanism's lowest frequencies 24.4,
 /// 27.4, 79.9, 132.7, 146.0, 200.2 Hz, read there as proof of two DOFs: "the first and the
 /// second natural frequencies are closer and far less than the third". Printed beside the
 /// paper (our model carries no platform or camera mass, which the paper does not give, so the
@@ -354,7 +354,7 @@ fn pantilt_modes_show_two_dofs() {
     assert!(f[2] > 2.5 * f[1], "{f:?}");
 }
 
-/// Why variant 5 (blank height h = 10) of seed 002's Table 3 deviates more than the standard
+/// Why variant 5 (blank height h = 10) of Yu, Lu and Hao's (2016) Table 3 deviates more than the standard
 /// hinge (paper: pitch 8.710° against 9.195°): h leaves the notch's compliant-axis, torsional
 /// and axial stiffness alike (the blank is ~10³ times stiffer than the notch per length) and
 /// acts through the links, whose section is the blank's (w × h). With rigid links the two

@@ -172,7 +172,7 @@ pub fn parallelogram_case() -> Value {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Seed 002 8R pan-tilt
+// Yu, Lu and Hao (2016): 8R pan-tilt
 // ---------------------------------------------------------------------------------------------
 
 /// How the links of the pan-tilt are modelled.
@@ -185,7 +185,7 @@ pub enum Links {
 }
 
 /// The corner-filleted hinge of the pan-tilt and the options of the model. Paper notation
-/// (seed 002, Fig. 2 and Table 3): blank height h, width t, notch length l, fillet radius R,
+/// (Yu, Lu and Hao (2016), Fig. 2 and Table 3): blank height h, width t, notch length l, fillet radius R,
 /// minimum thickness δ. In the `hinge` element: `w` = paper t, `t` = paper δ.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PanTilt {
@@ -213,7 +213,7 @@ impl PanTilt {
         }
     }
 
-    /// Table 3 of seed 002: (label, hinge, paper's FEM pitch (deg), paper's FEM phase (deg)).
+    /// Table 3 of Yu, Lu and Hao (2016): (label, hinge, paper's FEM pitch (deg), paper's FEM phase (deg)).
     pub fn table3() -> Vec<(&'static str, PanTilt, f64, f64)> {
         let s = PanTilt::standard();
         vec![
@@ -243,10 +243,10 @@ impl PanTilt {
 /// Length of every pan-tilt hinge element (the paper's hinge block "L = 15 mm" of its §4.1):
 /// the notch l plus (15 − l)/2 of blank on each side.
 pub const PT_HINGE_LEN: f64 = 15.0;
-/// Positions of the joints along their axes from the centre of the sphere, a1 … a8 (seed 002
+/// Positions of the joints along their axes from the centre of the sphere, a1 … a8 (Yu, Lu and Hao (2016)
 /// §2.1): a1 = a2 = a3 = 40, a4 = a5 = 65, a6 = 55, a7 = 70, a8 = 48 mm.
 pub const PT_A: [f64; 8] = [40.0, 40.0, 40.0, 65.0, 65.0, 55.0, 70.0, 48.0];
-/// The PRBM inverse kinematics of seed 002 for pitch 10°, phase 45° (its §3).
+/// The PRBM inverse kinematics of Yu, Lu and Hao (2016) for pitch 10°, phase 45° (its §3).
 pub const PT_THETA: [f64; 2] = [7.36, 3.09];
 /// Azimuths βj of the middle-joint axes (deg): 270° and 150° reproduce the paper's
 /// θ₁ = 7.36°, θ₂ = 3.09°; the passive limb's 30° completes the 120° pattern (assumed).
@@ -292,7 +292,7 @@ pub struct PanTiltMesh {
     pub platform: usize,
 }
 
-/// Seed 002's 8R spherical pan-tilt (RRR–RR–RRR), every joint a corner-filleted hinge element:
+/// Yu, Lu and Hao's (2016) 8R spherical pan-tilt (RRR–RR–RRR), every joint a corner-filleted hinge element:
 ///
 /// * Every joint axis passes through the centre O of the sphere (origin); joint Ji's hinge is
 ///   centred on its axis at a_i (`PT_A`) from O. Axes at home (`pantilt_axes`): base axes r1,
@@ -427,7 +427,7 @@ pub fn pitch_phase(rot_deg: [f64; 3]) -> (f64, f64) {
     (n[2].acos().to_degrees(), n[1].atan2(n[0]).to_degrees())
 }
 
-/// Seed 002's PRBM inverse kinematics (its Eqs. (1)–(11), restated for the geometry above):
+/// Yu, Lu and Hao's (2016) PRBM inverse kinematics (its Eqs. (1)–(11), restated for the geometry above):
 /// the base rotations θ₁, θ₂ (deg) that give the top axis r7 = (sin γ cos φ, sin γ sin φ,
 /// cos γ) — the root of r_{j+3}(θj)·r7 = cos 60° nearest zero, r_{j+3}(θ) = (cos(α+θ) cos βj,
 /// cos(α+θ) sin βj, sin(α+θ)).
@@ -503,16 +503,16 @@ pub fn lever_case() -> Value {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Seed 004: 3-PRS friction-stir-welding head (Han, Wang and Shi)
+// Han, Wang and Shi: 3-PRS friction-stir-welding head (Han, Wang and Shi)
 // ---------------------------------------------------------------------------------------------
 
-/// Link length, base and platform radii (seed 004, Tables I and III), mm.
+/// Link length, base and platform radii (Han, Wang and Shi, Tables I and III), mm.
 pub const PRS_LINK: f64 = 185.0;
 pub const PRS_BASE_R: f64 = 470.0;
 pub const PRS_PLATFORM_R: f64 = 315.0;
 /// Lead screw: 600 mm between its fixed-fixed mounts, A = 183.5 mm², E = 231 GPa, nut at
 /// mid-length (a = b = 300 mm, the pose z = −0.4 m the paper calls the poorest):
-/// k = A·E·L/(a·b) (seed 004, Eq. (8)), N/mm.
+/// k = A·E·L/(a·b) (Han, Wang and Shi, Eq. (8)), N/mm.
 pub fn prs_screw_stiffness() -> f64 {
     183.5 * 231_000.0 * 600.0 / (300.0 * 300.0)
 }
@@ -521,7 +521,7 @@ pub const PRS_Z: f64 = -400.0;
 /// Node of the platform centre (the tool point) in `prs_head_case`.
 pub const PRS_TOOL_NODE: usize = 0;
 
-/// Seed 004's 3-PRS head at tilt β (deg, about the base y axis; the paper's α = 0 read as the
+/// Han, Wang and Shi's 3-PRS head at tilt β (deg, about the base y axis; the paper's α = 0 read as the
 /// tilt axis' azimuth): vertical actuators (sliders) at radius 470 mm, 120° apart; ideal
 /// joints — a revolute joint (axis tangential, the slider's mᵢ) between each slider and its
 /// link, a spherical joint between each link and the platform (radius 315 mm; three arms
