@@ -52,6 +52,7 @@ impl MeshSpec {
             model: fem::Model::new(),
             frame_owner: BTreeMap::new(),
             model_index: Vec::with_capacity(self.elements.len()),
+            hinge_chains: Vec::new(),
         };
         for (i, x) in self.nodes.iter().enumerate() {
             for (k, v) in x.iter().enumerate() {
@@ -81,6 +82,11 @@ impl MeshSpec {
             }
             let built = (cx.model.elements.len() > before).then_some(before);
             cx.model_index.push(built);
+        }
+        // Hinges of several segments: inner nodes and further elements after the case's own,
+        // so node and element indices of the case stay those of the model.
+        for (el, region, mat, n) in std::mem::take(&mut cx.hinge_chains) {
+            crate::hinge::split_flex(&mut cx.model, el, &region.profile, &mat, &region.stiffness, n);
         }
         for (p, r) in rigid {
             let master = cx.node(format!("{p}.master"), r.master)?;
@@ -213,7 +219,8 @@ fn element(cx: &mut Ctx, p: &str, e: &ElementSpec) -> Result<(), CaseError> {
             hinge,
             material,
             up,
-        } => super::hinge::hinge_element(cx, p, *nodes, hinge, material, *up)?,
+            segments,
+        } => super::hinge::hinge_element(cx, p, *nodes, hinge, material, *up, *segments)?,
         ElementSpec::Joint {
             nodes,
             kind,

@@ -25,6 +25,7 @@ pub(super) fn hinge_element(
     hinge: &Value,
     material: &str,
     up: [f64; 3],
+    segments: Option<usize>,
 ) -> Result<(), CaseError> {
     let (a, b) = cx.two_nodes(p, nodes, "hinge")?;
     let mat = *cx.materials.get(&format!("{p}.material"), material)?;
@@ -42,12 +43,23 @@ pub(super) fn hinge_element(
         ));
     }
     let region = hinge::hinge_element(&spec, &mat, len.max(notch_len)).map_err(herr)?;
+    let segments = segments.unwrap_or(1);
+    if !(1..=64).contains(&segments) {
+        return Err(CaseError::value(
+            format!("{p}.segments"),
+            segments,
+            "must be an integer from 1 to 64",
+        ));
+    }
     let mass = mat.density * region.volume();
-    cx.model.add_element(fem::Element::Flex(fem::FlexElement {
+    let el = cx.model.add_element(fem::Element::Flex(fem::FlexElement {
         nodes: [a, b],
         compliance: region.compliance(),
         up,
     }));
+    if segments > 1 {
+        cx.hinge_chains.push((el, region, mat, segments));
+    }
     for node in [a, b] {
         cx.model.masses.push(fem::PointMass {
             node,

@@ -131,6 +131,14 @@ pub enum ElementSpec {
         material: String,
         /// Vector fixing local z (the direction the notch thins along).
         up: [f64; 3],
+        /// Co-rotational flexibility elements the hinge is made of, 1 … 64 (default 1): the
+        /// region split into equal lengths (compliances of the sub-intervals, torsion scaled to
+        /// keep the single element's), so a hinge bending through degrees is followed more
+        /// closely in nonlinear analyses; the linear response is that of one element up to the
+        /// quadrature. Inner nodes (and the further elements) come after the case's own.
+        #[serde(default)]
+        #[schemars(range(min = 1, max = 64))]
+        segments: Option<usize>,
     },
     /// Ideal joint between two coincident nodes, by elimination (no penalty): the DOFs the joint
     /// does not release are tied in the joint frame (local x along `axis`).
