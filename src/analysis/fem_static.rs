@@ -40,6 +40,37 @@ pub struct StaticCaseRow {
     /// for models without shells).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub shell_forces: Vec<ShellForcesRow>,
+    /// Per `hinge` element: rotation, end forces, peak stress and margin (omitted for models
+    /// without hinge elements).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub hinges: Vec<HingeRow>,
+}
+
+/// Results of one `hinge` element in one load case.
+#[derive(Debug, Clone, Serialize)]
+pub struct HingeRow {
+    /// Index of the element in the case's `elements`.
+    pub element: usize,
+    /// Index of the element in the FE model (the order of `element_von_mises`).
+    pub model_element: usize,
+    /// Rotation about the compliant axis (element local y), degrees: the relative rotation of
+    /// node b with respect to node a about the element's local y. Linear: (θ_b − θ_a)·e_y.
+    /// Nonlinear: the local-y component of the rotation vector of R_aᵀ·R_b (finite rotations,
+    /// in the undeformed element axes).
+    pub rotation_deg: f64,
+    /// Section forces [N, Vy, Vz (N), T, My, Mz (N·mm)] at end a and end b, element axes
+    /// (deformed element axes in nonlinear runs; N > 0 in tension).
+    pub end_forces: [[f64; 6]; 2],
+    /// Peak von Mises stress along the hinge with the notch factor, MPa (the stress model of the
+    /// `hinge` analysis and the `stage`).
+    pub peak_von_mises: f64,
+    /// peak_von_mises / allowable of the element's material (0 without an allowable).
+    pub utilisation: f64,
+    /// Rotation left until the peak stress reaches the allowable, degrees, by linear
+    /// extrapolation: rotation_deg · (allowable/peak_von_mises − 1) (`null` when unbounded:
+    /// no allowable or no stress; negative when the allowable is already exceeded).
+    #[serde(serialize_with = "crate::report::numbers::ratio_or_null")]
+    pub remaining_rotation_deg: f64,
 }
 
 /// Nodal stresses of the shells: per node [sxx, syy, szz, sxy, syz, szx] (MPa, global axes),
@@ -251,7 +282,79 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
         critical_load_factor: None,
         shell_stress: None,
         shell_forces: Vec::new(),
+        hinges: Vec::new(),
     }
+}
+
+/// Adds the per-hinge results of every load case (`raw`: the solver's results in the order
+/// of `r.load_cases`; `nonlinear`: rotations are finite rotation vectors).
+pub fn add_hinges(
+    r: &mut StaticResult,
+    model: &Model,
+    raw: &fem::StaticResults,
+    hinges: &[crate::case::mesh::BuiltHinge],
+    nonlinear: bool,
+) -> Result<(), AnalysisError> {
+    if hinges.is_empty() {
+        return Ok(());
+    }
+    for (row, c) in r.load_cases.iter_mut().zip(&raw.load_cases) {
+        row.hinges = hinges
+            .iter()
+            .map(|h| hinge_row(model, c, h, nonlinear))
+            .collect::<Result<_, _>>()?;
+    }
+    Ok(())
+}
+
+/// The results of hinge element `h` in load case `c`.
+pub fn hinge_row(
+    model: &Model,
+    c: &fem::CaseResult,
+    h: &crate::case::mesh::BuiltHinge,
+    nonlinear: bool,
+) -> Result<HingeRow, AnalysisError> {
+    use nalgebra::Vector3;
+    let err = |e: fem::FemError| AnalysisError::new(format!("elements[{}]", h.case_element), e.to_string());
+    let (lam, _) = model.element_frame(h.element).map_err(err)?;
+    // A hinge of several segments runs from the first segment's node a to the last one's b.
+    let nodes = match (&model.elements[h.element], &model.elements[h.last]) {
+        (fem::Element::Flex(f), fem::Element::Flex(g)) => [f.nodes[0], g.nodes[1]],
+        _ => {
+            return Err(AnalysisError::new(
+                format!("elements[{}]", h.case_element),
+                "not a hinge element",
+            ))
+        }
+    };
+    let rot = |n: usize| {
+        let d = &c.displacements[n];
+        Vector3::new(d[3], d[4], d[5])
+    };
+    let (ta, tb) = (rot(nodes[0]), rot(nodes[1]));
+    let rel = if nonlinear {
+        let ra = fem::corot::rot_exp(&ta);
+        let rb = fem::corot::rot_exp(&tb);
+        fem::corot::rot_log(&(ra.transpose() * rb))
+    } else {
+        tb - ta
+    };
+    let ey = Vector3::new(lam[(1, 0)], lam[(1, 1)], lam[(1, 2)]);
+    let rotation_deg = ey.dot(&rel).to_degrees();
+    let sf = [
+        c.elements[h.element].section_forces[0],
+        c.elements[h.last].section_forces[1],
+    ];
+    let peak = h.region.peak_stress(&sf);
+    Ok(HingeRow {
+        element: h.case_element,
+        model_element: h.element,
+        rotation_deg,
+        end_forces: sf,
+        peak_von_mises: peak,
+        utilisation: peak / h.allowable,
+        remaining_rotation_deg: rotation_deg * (h.allowable / peak - 1.0),
+    })
 }
 
 /// The warning (plain text, for the result's `warnings`) for a nonlinear load case whose path
@@ -305,8 +408,45 @@ pub fn report(r: &StaticResult) -> Report {
             md += &format!("({} nodes: see result.csv)\n", c.displacements.len());
         }
         md += "\n";
+        md += &hinge_table(c);
     }
     Report { markdown: md, csv }
+}
+
+/// The Markdown table of a load case's hinge elements (empty without hinges).
+fn hinge_table(c: &StaticCaseRow) -> String {
+    if c.hinges.is_empty() {
+        return String::new();
+    }
+    let mut t = Table::new(&[
+        "element",
+        "rotation (°)",
+        "peak von Mises (MPa)",
+        "utilisation",
+        "remaining rotation (°)",
+        "My a (N·mm)",
+        "My b (N·mm)",
+    ]);
+    for h in &c.hinges {
+        let rem = if h.remaining_rotation_deg.is_finite() {
+            format!("{:.4}", h.remaining_rotation_deg)
+        } else {
+            "unbounded".to_string()
+        };
+        t.row(vec![
+            h.element.to_string(),
+            format!("{:.6}", h.rotation_deg),
+            format!("{:.4}", h.peak_von_mises),
+            format!("{:.4}", h.utilisation),
+            rem,
+            format!("{:.6e}", h.end_forces[0][4]),
+            format!("{:.6e}", h.end_forces[1][4]),
+        ]);
+    }
+    format!(
+        "Hinge elements (rotation about the compliant axis, local y; remaining rotation to the allowable stress by linear extrapolation):\n\n{}\n",
+        t.render()
+    )
 }
 
 /// Markdown lines with the largest and smallest principal shell stresses of a load case and

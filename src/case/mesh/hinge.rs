@@ -8,7 +8,28 @@ use crate::fem;
 use crate::hinge::{self, HingeSpec};
 use serde_json::Value;
 
-/// Builds a `hinge` element at JSON path `p`.
+/// A hinge element of a built model: where it is and its hinge (for the per-hinge results).
+#[derive(Debug, Clone)]
+pub struct BuiltHinge {
+    /// Index of the element in the case's `elements`.
+    pub case_element: usize,
+    /// Index of the element in the FE model (model order, as `element_von_mises`); with
+    /// `segments` > 1 the first segment of the chain.
+    pub element: usize,
+    /// The last segment of the chain (`element` for a hinge of one segment); the inner
+    /// segments are appended to the model after the case's own elements.
+    pub last: usize,
+    /// Co-rotational segments the hinge is made of.
+    pub segments: usize,
+    /// Its material.
+    pub material: crate::material::Material,
+    /// Its hinge region: compliance and stress model, as in the `hinge` analysis.
+    pub region: hinge::HingeRegion,
+    /// Allowable stress of its material, MPa (∞ when the material has none).
+    pub allowable: f64,
+}
+
+/// Builds a `hinge` element at JSON path `p` (case element `case_element`).
 ///
 /// One [`fem::FlexElement`] from node a to node b: its compliance is exactly that of the
 /// `hinge` analysis for the same hinge with `blank_length` = (node distance − notch length)/2
@@ -26,6 +47,7 @@ pub(super) fn hinge_element(
     material: &str,
     up: [f64; 3],
     segments: Option<usize>,
+    case_element: usize,
 ) -> Result<(), CaseError> {
     let (a, b) = cx.two_nodes(p, nodes, "hinge")?;
     let mat = *cx.materials.get(&format!("{p}.material"), material)?;
@@ -52,14 +74,20 @@ pub(super) fn hinge_element(
         ));
     }
     let mass = mat.density * region.volume();
-    let el = cx.model.add_element(fem::Element::Flex(fem::FlexElement {
+    let element = cx.model.add_element(fem::Element::Flex(fem::FlexElement {
         nodes: [a, b],
         compliance: region.compliance(),
         up,
     }));
-    if segments > 1 {
-        cx.hinge_chains.push((el, region, mat, segments));
-    }
+    cx.hinges.push(BuiltHinge {
+        case_element,
+        element,
+        last: element,
+        segments,
+        material: mat,
+        region,
+        allowable: mat.allowable,
+    });
     for node in [a, b] {
         cx.model.masses.push(fem::PointMass {
             node,

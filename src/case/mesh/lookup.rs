@@ -71,9 +71,8 @@ pub(super) struct Ctx<'a> {
     pub frame_owner: BTreeMap<usize, String>,
     /// Model element index of each case element (masses and rigid links are no elements).
     pub model_index: Vec<Option<usize>>,
-    /// Hinge elements to split into co-rotational chains once every element is built:
-    /// (model element, hinge region, material, segments).
-    pub hinge_chains: Vec<(usize, crate::hinge::HingeRegion, Material, usize)>,
+    /// The hinge elements built so far (side table: `fem` knows no hinges).
+    pub hinges: Vec<super::hinge::BuiltHinge>,
 }
 
 impl Ctx<'_> {

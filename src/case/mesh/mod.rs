@@ -9,7 +9,7 @@ pub mod build;
 mod build_body_loads;
 mod build_loads;
 mod frames;
-mod hinge;
+pub mod hinge;
 mod joint;
 pub mod load_shapes;
 mod lookup;
@@ -17,6 +17,7 @@ pub mod shapes;
 
 pub use super::fem_case::{ModalCase, StaticCase};
 pub use build::unique_load_case_names;
+pub use hinge::BuiltHinge;
 pub use load_shapes::{
     DisplacementSpec, DofName, EdgeLoadSpec, ForceSpec, GroupForceSpec, LineAxes, LineLoadSpec, LoadCaseSpec,
     PressureSpec,
