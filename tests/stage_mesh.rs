@@ -237,3 +237,54 @@ fn stage_mesh_reproduces_the_nonlinear_stage() {
     let w = compare("cases/ruiz2019_stage_nonlinear.json", "nl");
     assert!(w.iter().all(|&x| x <= TOL), "worst [pose, strokes, stresses] {w:?}");
 }
+
+/// With ideal joints (exact releases, stiff legs; the `stage` analysis itself refuses this
+/// model under forces, a mechanism, so only the library writes it) the mesh case holds `joint`
+/// elements — a revolute joint at each slider in the frame (mᵢ, eᵢ × mᵢ, eᵢ), the slider guide
+/// and stroke in the same frame, a spherical joint at each platform point — and through
+/// `static` gives the stage's stroke-driven platform pose to 1e-9 of its translation (the
+/// stage's slider frame is (eᵢ, mᵢ, eᵢ × mᵢ): the frames differ, so only rounding of the
+/// rotated constraint rows separates the two solves).
+#[test]
+fn ideal_joint_stage_mesh_has_joint_elements_and_the_same_pose() {
+    let Case::Stage(mut c) = case::load(&root().join("cases/ruiz2019_stage.json")).unwrap() else {
+        panic!()
+    };
+    c.stage.ideal_joints = true;
+    let s = c.validated().unwrap().0.build();
+    let strokes = [1.0, 0.5, -0.3];
+    let cases = vec![("s".to_string(), flexfem::stage::Drive::Strokes(strokes))];
+    let want = s.solve(&cases).unwrap().remove(0);
+    let mesh = s.mesh_case(&cases, None).unwrap();
+    let joints: Vec<&Value> = mesh["elements"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|e| e["type"] == "joint")
+        .collect();
+    assert_eq!(joints.len(), 6);
+    assert_eq!(joints.iter().filter(|j| j["kind"] == "revolute").count(), 3);
+    let Case::Static(sc) = case::parse_value(mesh, None).unwrap() else {
+        panic!()
+    };
+    let got = &fem::solve_static(&sc.model.build().unwrap()).unwrap().load_cases[0];
+    let up = got.displacements[s.platform];
+    let p = want.platform;
+    let w = [p.x, p.y, p.z, p.psi, p.theta, p.phi];
+    let t_scale = amax(&w[..3]);
+    let r_scale = amax(&w[3..]).max(t_scale / s.design.prs.l);
+    let dt = worst(&up[..3], &w[..3], t_scale);
+    let dr = worst(&up[3..], &w[3..], r_scale);
+    let stroke: Vec<f64> = s
+        .legs
+        .iter()
+        .map(|leg| (0..3).map(|k| leg.e[k] * got.displacements[leg.slider][k]).sum())
+        .collect();
+    let ds = worst(&stroke, &strokes, 1.0);
+    eprintln!("ideal joints: pose {w:?}; translation {dt:.2e}, rotation {dr:.2e}, strokes {ds:.2e}");
+    assert!(
+        t_scale > 0.1 && amax(&w[3..]) > 1e-3,
+        "the strokes move the platform: {w:?}"
+    );
+    assert!(dt <= TOL && dr <= TOL && ds <= TOL, "{dt:e} {dr:e} {ds:e}");
+}

@@ -6,12 +6,21 @@
 //! strokes along the sliders — so `flexfem run stage_mesh.json` solves the model the stage
 //! solves. Nodes and elements are written in the stage model's order, so node and element
 //! indices (and with them the solution) are the stage's.
+//!
+//! With ideal joints the releases become `joint` elements (after the beams: they build no FE
+//! element): a revolute joint between each slider node and the coincident foot of the leg, in
+//! the frame (mᵢ, eᵢ × mᵢ, eᵢ) — joint axis mᵢ as local x, the slider direction as local z, so
+//! the slider guide (all fixed but uz) and the strokes act in the same node frame — and a
+//! spherical joint at each platform point; legs and platform links stay the stiff beams.
 
 use super::*;
-use crate::fem::Element;
+use crate::fem::{self, Element};
 use serde_json::{json, Map, Value};
 
 /// Names of the DOFs in case files, in the order ux uy uz rx ry rz.
+/// Stiffening of legs and platform links with ideal joints (as the stage builder).
+const STIFF: f64 = 1e6;
+
 const DOF_NAMES: [&str; 6] = ["ux", "uy", "uz", "rx", "ry", "rz"];
 
 /// A material as a case-file object (strengths only when finite: "unlimited" has no JSON
@@ -46,25 +55,56 @@ impl StageModel {
     /// [`super::NONLINEAR_HINGE_SEGMENTS`] co-rotational segments as in
     /// [`StageModel::solve_nonlinear`].
     ///
-    /// `None` with ideal joints: their revolute release ties the slider node in its hinge
-    /// frame, while the slider guide holds it in the slider frame, and a mesh-case node
-    /// carries one frame.
+    /// `None` only if the model holds elements the stage does not build (springs, shells).
     pub fn mesh_case(&self, cases: &[(String, Drive)], nonlinear_steps: Option<usize>) -> Option<Value> {
-        if self.design.ideal_joints {
-            return None;
-        }
+        let ideal = self.design.ideal_joints;
         let model = &self.model;
         let segments = nonlinear_steps.map(|_| super::NONLINEAR_HINGE_SEGMENTS);
-        let mut elements = Vec::with_capacity(model.elements.len());
+        let mut elements = Vec::with_capacity(model.elements.len() + 6);
+        let mut materials = Map::new();
+        materials.insert("stage".into(), material_json(&self.design.material));
+        let mut sections = Map::new();
+        sections.insert(
+            "leg".into(),
+            json!({"shape": "rect", "w": self.design.leg_w, "h": self.design.leg_h}),
+        );
+        // Slider frames: the stage's (eᵢ, mᵢ, eᵢ × mᵢ), or with ideal joints the revolute
+        // joint's (mᵢ, eᵢ × mᵢ, eᵢ), whose DOF k is the stage frame's `dof[k]`.
+        let slider_frame = |i: usize| -> Option<[[f64; 3]; 3]> {
+            let leg = &self.legs[i];
+            if ideal {
+                Some(build::rows(leg.m, leg.e.cross(&leg.m), leg.e))
+            } else {
+                model.frames.get(&leg.slider).copied()
+            }
+        };
+        let dof = |k: usize| if ideal { [1, 2, 0][k % 3] + 3 * (k / 3) } else { k };
+        let stroke_dof = dof_index_of(0, &dof);
         for (ie, el) in model.elements.iter().enumerate() {
             match el {
-                Element::Beam(b) => elements.push(json!({
-                    "type": "beam",
-                    "nodes": b.nodes,
-                    "section": "leg",
-                    "material": "stage",
-                    "up": b.up,
-                })),
+                Element::Beam(b) => {
+                    let section = match b.section {
+                        fem::Section::Rect { .. } => "leg",
+                        fem::Section::Circle { d } => {
+                            sections.insert("platform_link".into(), json!({"shape": "circle", "d": d}));
+                            "platform_link"
+                        }
+                        _ => return None,
+                    };
+                    let material = if b.material == self.design.material {
+                        "stage"
+                    } else {
+                        materials.insert("stiff".into(), material_json(&b.material));
+                        "stiff"
+                    };
+                    elements.push(json!({
+                        "type": "beam",
+                        "nodes": b.nodes,
+                        "section": section,
+                        "material": material,
+                        "up": b.up,
+                    }))
+                }
                 Element::Flex(f) => {
                     let spec = if self.legs.iter().any(|l| l.rev_element == Some(ie)) {
                         &self.design.revolute
@@ -87,13 +127,33 @@ impl StageModel {
                 Element::Spring(_) | Element::Shell4(_) => return None,
             }
         }
+        if ideal {
+            for (i, leg) in self.legs.iter().enumerate() {
+                elements.push(json!({
+                    "type": "joint", "kind": "revolute", "nodes": [leg.slider, leg.rev_top], "frame": slider_frame(i),
+                }));
+                elements.push(json!({
+                    "type": "joint", "kind": "spherical", "nodes": [leg.sph_top, leg.sph_bottom],
+                }));
+            }
+        }
         let supports: Vec<Value> = model
             .supports
             .iter()
             .map(|s| {
-                let fix: Vec<&str> = (0..6).filter(|&k| s.fix[k]).map(|k| DOF_NAMES[k]).collect();
-                let mut o = json!({"node": s.node, "fix": fix});
-                if let Some(f) = model.frames.get(&s.node) {
+                let leg = self.legs.iter().position(|l| l.slider == s.node);
+                let frame = match leg {
+                    Some(i) => slider_frame(i),
+                    None => model.frames.get(&s.node).copied(),
+                };
+                let mut fix: Vec<usize> = (0..6).filter(|&k| s.fix[k]).collect();
+                if leg.is_some() {
+                    fix = fix.into_iter().map(|k| dof_index_of(k, &dof)).collect();
+                    fix.sort();
+                }
+                let names: Vec<&str> = fix.iter().map(|&k| DOF_NAMES[k]).collect();
+                let mut o = json!({"node": s.node, "fix": names});
+                if let Some(f) = frame {
                     o["frame"] = json!(f);
                 }
                 o
@@ -107,21 +167,21 @@ impl StageModel {
         let load_cases: Vec<Value> = cases
             .iter()
             .map(|(name, drive)| {
-                let frame = |i: usize| model.frames.get(&self.legs[i].slider).copied();
+                let frame = slider_frame;
                 match drive {
                     Drive::Forces(f) => json!({
                         "name": name,
-                        "forces": (0..3).map(|i| json!({
-                            "node": self.legs[i].slider,
-                            "F": [f[i], 0.0, 0.0, 0.0, 0.0, 0.0],
-                            "frame": frame(i),
-                        })).collect::<Vec<_>>(),
+                        "forces": (0..3).map(|i| {
+                            let mut v = [0.0; 6];
+                            v[stroke_dof] = f[i];
+                            json!({"node": self.legs[i].slider, "F": v, "frame": frame(i)})
+                        }).collect::<Vec<_>>(),
                     }),
                     Drive::Strokes(s) => json!({
                         "name": name,
                         "displacements": (0..3).map(|i| json!({
                             "node": self.legs[i].slider,
-                            "dof": "ux",
+                            "dof": DOF_NAMES[stroke_dof],
                             "value": s[i],
                             "frame": frame(i),
                         })).collect::<Vec<_>>(),
@@ -130,12 +190,20 @@ impl StageModel {
             })
             .collect();
         let p = &self.design.prs;
+        let joints = if ideal {
+            format!(
+                "Ideal joints (a consistency check): the hinges are exact releases, `joint` elements listed after the beams (revolute at each slider in the frame (m_i, e_i x m_i, e_i), spherical at each platform point); legs and the links from P to the platform points are beams of the stage material {}x stiffer. Leg i's slider node (nodes {}, {}, {}) carries that frame, in which the guide fixes all but uz, the actuator force or stroke acting along e_i = local z.",
+                STIFF, self.legs[0].slider, self.legs[1].slider, self.legs[2].slider
+            )
+        } else {
+            format!(
+                "Hinges are `hinge` elements over the notch and its load-spreading zone (the stage's hinge regions); the platform is a rigid link from P to the neck tops. Leg i's slider node (nodes {}, {}, {}) carries the slider frame (rows e_i, m_i, e_i x m_i), in which the guide fixes all but ux, the actuator force or stroke acting along e_i = local x.",
+                self.legs[0].slider, self.legs[1].slider, self.legs[2].slider
+            )
+        };
         let description = format!(
-            "The 3-PRS compliant stage of a `stage` case (Ruiz et al. 2019, §5) as a `static` mesh case, written by flexfem: the same FE model from native parts. Nodes and elements in the stage model's order: node {} is the platform centre P (master of the platform's rigid link); leg i's slider node (nodes {}, {}, {}) carries the slider frame (rows e_i, m_i, e_i x m_i) in which the guide fixes all but ux, the actuator force or stroke acting along e_i. Hinges are `hinge` elements over the notch and its load-spreading zone (the stage's hinge regions); legs are {} w x h = {} x {} mm beams. L = {} mm, b = {} mm, a = {} mm.{}",
+            "The 3-PRS compliant stage of a `stage` case (Ruiz et al. 2019, sec. 5) as a `static` mesh case, written by flexfem: the same FE model from native parts, nodes and elements in the stage model's order. Node {} is the platform centre P. {joints} Legs: {} beams each, w x h = {} x {} mm. L = {} mm, b = {} mm, a = {} mm.{}",
             self.platform,
-            self.legs[0].slider,
-            self.legs[1].slider,
-            self.legs[2].slider,
             self.design.leg_elements,
             self.design.leg_w,
             self.design.leg_h,
@@ -153,8 +221,8 @@ impl StageModel {
         let mut case = json!({
             "analysis": "static",
             "description": description,
-            "materials": {"stage": material_json(&self.design.material)},
-            "sections": {"leg": {"shape": "rect", "w": self.design.leg_w, "h": self.design.leg_h}},
+            "materials": materials,
+            "sections": sections,
             "nodes": model.nodes,
             "elements": elements,
             "rigid_links": rigid,
@@ -167,4 +235,9 @@ impl StageModel {
         }
         Some(case)
     }
+}
+
+/// The index of the stage-frame DOF `k` in the written frame (`dof` maps written → stage).
+fn dof_index_of(k: usize, dof: &impl Fn(usize) -> usize) -> usize {
+    (0..6).find(|&j| dof(j) == k).unwrap_or(k)
 }

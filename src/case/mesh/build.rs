@@ -242,7 +242,8 @@ fn element(cx: &mut Ctx, p: &str, e: &ElementSpec) -> Result<(), CaseError> {
             kind,
             axis,
             axis2,
-        } => super::joint::joint_element(cx, p, *nodes, *kind, *axis, *axis2)?,
+            frame,
+        } => super::joint::joint_element(cx, p, *nodes, *kind, [*axis, *axis2], *frame)?,
         ElementSpec::Shell4 {
             nodes,
             section,

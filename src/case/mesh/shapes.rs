@@ -153,6 +153,11 @@ pub enum ElementSpec {
         /// Second pin of a universal joint, perpendicular to `axis`.
         #[serde(default)]
         axis2: Option<[f64; 3]>,
+        /// The joint frame in full instead of `axis`/`axis2`: three orthonormal, right-handed
+        /// rows; the joint axis is local x (universal: the second pin local y). For a node that
+        /// also carries a support or prescribed DOF in this frame (a slider with a hinge).
+        #[serde(default)]
+        frame: Option<[[f64; 3]; 3]>,
     },
     /// 4-node flat shell (a triangle as the degenerate quad [a, b, c, c]).
     Shell4 {
