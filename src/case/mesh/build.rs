@@ -236,7 +236,12 @@ fn element(cx: &mut Ctx, p: &str, e: &ElementSpec) -> Result<(), CaseError> {
             material,
             up,
             segments,
-        } => super::hinge::hinge_element(cx, p, *nodes, hinge, material, *up, *segments, cx.model_index.len())?,
+        } => {
+            super::hinge::hinge_element(cx, p, *nodes, hinge, material, *up, cx.model_index.len())?;
+            if let Some(n) = segments {
+                super::hinge::set_segments(cx, p, *n)?;
+            }
+        }
         ElementSpec::Joint {
             nodes,
             kind,

@@ -13,7 +13,7 @@ const COINCIDENT: f64 = 1e-6;
 /// Builds a `joint` element at JSON path `p`.
 ///
 /// The DOFs the joint does not release are tied in the joint frame (rows: x = `axis`, y =
-/// `axis2` for a universal joint or a perpendicular, z = x × y). Both nodes get that frame;
+/// `axis2` for a universal joint or a perpendicular, z = x × y; or `full_frame` as given). Both nodes get that frame;
 /// a node has one frame, so a node already framed by another joint with other axes is refused
 /// (give each joint its own coincident node, joined to the body by a rigid link or stiff beam —
 /// the link's master, not a slave, since slaves cannot carry frames). Spherical and weld joints
