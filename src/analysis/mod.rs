@@ -9,6 +9,8 @@ pub mod kind;
 pub mod kinds;
 pub mod kinematics;
 pub mod modal;
+pub mod pantilt;
+pub mod prs_stiffness;
 pub mod registry;
 pub mod stage;
 pub mod stage_report;

@@ -14,6 +14,8 @@ pub static REGISTRY: &[&dyn DynAnalysis] = &[
     &Entry::<kinds::Static>::new(),
     &Entry::<kinds::Modal>::new(),
     &Entry::<kinds::SweepKind>::new(),
+    &Entry::<super::pantilt::PanTiltKind>::new(),
+    &Entry::<super::prs_stiffness::PrsStiffnessAnalysis>::new(),
 ];
 
 /// The registered analysis of `kind`, if any.

@@ -13,6 +13,8 @@ pub mod kinematics;
 pub mod limits;
 pub mod material;
 pub mod mesh;
+pub mod pantilt;
+pub mod prs_stiffness;
 pub mod stage;
 pub mod sweep;
 
@@ -46,6 +48,11 @@ pub enum Case {
     Design(design::DesignCase),
     /// Natural frequencies and mode shapes of a generic beam/shell model.
     Modal(fem_case::ModalCase),
+    /// Pseudo-rigid-body model of the 8R compliant parallel pan-tilt (Yu, Lu and Hao (2016)).
+    #[serde(rename = "pantilt")]
+    PanTilt(pantilt::PanTiltCase),
+    /// Jacobian stiffness of a 3-PRS with compliant legs.
+    PrsStiffness(prs_stiffness::PrsStiffnessCase),
 }
 
 /// The `analysis` names this build understands.
@@ -59,6 +66,8 @@ pub const ANALYSES: &[&str] = &[
     "static",
     "modal",
     "sweep",
+    "pantilt",
+    "prs_stiffness",
 ];
 
 impl Case {
@@ -74,6 +83,8 @@ impl Case {
             Case::Sensitivity(_) => "sensitivity",
             Case::Design(_) => "design",
             Case::Modal(_) => "modal",
+            Case::PanTilt(_) => "pantilt",
+            Case::PrsStiffness(_) => "prs_stiffness",
         }
     }
 }
@@ -181,6 +192,8 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
         "fem_vs_fkp" => Ok(Case::FemVsFkp(from_value(value, "")?)),
         "sensitivity" => Ok(Case::Sensitivity(from_value(value, "")?)),
         "design" => Ok(Case::Design(from_value(value, "")?)),
+        "pantilt" => Ok(Case::PanTilt(from_value(value, "")?)),
+        "prs_stiffness" => Ok(Case::PrsStiffness(from_value(value, "")?)),
         "static" => Ok(Case::Static(fem_case::parse_static(value, base)?)),
         "modal" => Ok(Case::Modal(fem_case::parse_modal(value, base)?)),
         other => Err(CaseError::value(
