@@ -265,6 +265,10 @@ impl Analysis for Static {
             None => fem_static::solve_with(&model, ctx.cache)?,
         };
         fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
+        if case.output.section_forces {
+            fem_static::add_beam_forces(&mut r, &model, &raw);
+        }
+        r.compliance = fem_static::node_compliances(&model, &case.compliance)?;
         if ctx.with_files {
             ctx.files = fem_static::vtu_files(&model, &raw)?;
         }

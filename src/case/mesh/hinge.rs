@@ -1,33 +1,13 @@
 //! The `hinge` element of mesh cases: a flexure hinge between two nodes as one flexibility
 //! element carrying the compliance of the `hinge` analysis, plus its mass.
 
+pub use super::lookup::BuiltHinge;
 use super::lookup::Ctx;
 use crate::case::error::CaseError;
 use crate::case::hinge::hinge_error;
 use crate::fem;
 use crate::hinge::{self, HingeSpec};
 use serde_json::Value;
-
-/// A hinge element of a built model: where it is and its hinge (for the per-hinge results).
-#[derive(Debug, Clone)]
-pub struct BuiltHinge {
-    /// Index of the element in the case's `elements`.
-    pub case_element: usize,
-    /// Index of the element in the FE model (model order, as `element_von_mises`); with
-    /// `segments` > 1 the first segment of the chain.
-    pub element: usize,
-    /// The last segment of the chain (`element` for a hinge of one segment); the inner
-    /// segments are appended to the model after the case's own elements.
-    pub last: usize,
-    /// Co-rotational segments the hinge is made of.
-    pub segments: usize,
-    /// Its material.
-    pub material: crate::material::Material,
-    /// Its hinge region: compliance and stress model, as in the `hinge` analysis.
-    pub region: hinge::HingeRegion,
-    /// Allowable stress of its material, MPa (∞ when the material has none).
-    pub allowable: f64,
-}
 
 /// Builds a `hinge` element at JSON path `p` (case element `case_element`).
 ///

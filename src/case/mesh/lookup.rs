@@ -62,6 +62,27 @@ pub(super) enum BuiltSection {
 
 /// A model being built: the validated named items, the model so far and what each case element
 /// became.
+/// A hinge element of a built model: where it is and its hinge (for the per-hinge results).
+#[derive(Debug, Clone)]
+pub struct BuiltHinge {
+    /// Index of the element in the case's `elements`.
+    pub case_element: usize,
+    /// Index of the element in the FE model (model order, as `element_von_mises`); with
+    /// `segments` > 1 the first segment of the chain.
+    pub element: usize,
+    /// The last segment of the chain (`element` for a hinge of one segment); the inner
+    /// segments are appended to the model after the case's own elements.
+    pub last: usize,
+    /// Co-rotational segments the hinge is made of.
+    pub segments: usize,
+    /// Its material.
+    pub material: Material,
+    /// Its hinge region: compliance and stress model, as in the `hinge` analysis.
+    pub region: crate::hinge::HingeRegion,
+    /// Allowable stress of its material, MPa (∞ when the material has none).
+    pub allowable: f64,
+}
+
 pub(super) struct Ctx<'a> {
     pub spec: &'a MeshSpec,
     pub materials: Named<'a, Material>,
@@ -72,7 +93,7 @@ pub(super) struct Ctx<'a> {
     /// Model element index of each case element (masses and rigid links are no elements).
     pub model_index: Vec<Option<usize>>,
     /// The hinge elements built so far (side table: `fem` knows no hinges).
-    pub hinges: Vec<super::hinge::BuiltHinge>,
+    pub hinges: Vec<BuiltHinge>,
 }
 
 impl Ctx<'_> {

@@ -13,6 +13,7 @@ pub mod hinge;
 mod joint;
 pub mod load_shapes;
 mod lookup;
+pub mod requests;
 pub mod shapes;
 
 pub use super::fem_case::{ModalCase, StaticCase};
@@ -22,4 +23,5 @@ pub use load_shapes::{
     DisplacementSpec, DofName, EdgeLoadSpec, ForceSpec, GroupForceSpec, LineAxes, LineLoadSpec, LoadCaseSpec,
     PressureSpec,
 };
+pub use requests::{ComplianceRequest, StaticOutput};
 pub use shapes::{ElementSpec, GmshMapping, GroupSpec, JointKind, MeshSpec, RigidSpec, SectionSpec, SupportSpec};
