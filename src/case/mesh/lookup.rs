@@ -67,8 +67,16 @@ pub(super) enum BuiltSection {
 pub struct BuiltHinge {
     /// Index of the element in the case's `elements`.
     pub case_element: usize,
-    /// Index of the element in the FE model (model order, as `element_von_mises`).
+    /// Index of the element in the FE model (model order, as `element_von_mises`); with
+    /// `segments` > 1 the first segment of the chain.
     pub element: usize,
+    /// The last segment of the chain (`element` for a hinge of one segment); the inner
+    /// segments are appended to the model after the case's own elements.
+    pub last: usize,
+    /// Co-rotational segments the hinge is made of.
+    pub segments: usize,
+    /// Its material.
+    pub material: Material,
     /// Its hinge region: compliance and stress model, as in the `hinge` analysis.
     pub region: crate::hinge::HingeRegion,
     /// Allowable stress of its material, MPa (∞ when the material has none).
