@@ -386,3 +386,30 @@ fn pantilt_variant5_acts_through_the_links() {
         "nylon links: standard {ns}, variant 5 {n5}"
     );
 }
+
+#[test]
+fn scratch_segments_drop() {
+    let spec = para_spec();
+    let spread = pivot_spread(&spec);
+    for l in [PARA_LEG, 50.0] {
+        for n in [1usize, 4, 8, 16, 32] {
+            let mut case = parallelogram_case();
+            case.as_object_mut().unwrap().shift_remove("mesh");
+            let mut mesh = parallelogram_mesh_with(l);
+            for e in mesh["elements"].as_array_mut().unwrap() {
+                if e["type"] == "hinge" {
+                    e["segments"] = json!(n);
+                }
+            }
+            let mut case = inline(&mesh, case);
+            case["nonlinear"] = json!(true);
+            case["steps"] = json!(4);
+            let res = run_value(&case);
+            let d = disp(&res, 1, PARA_BAR_NODE);
+            let drop = -d[1];
+            let linkage = l - (l * l - 1.0).sqrt();
+            let refined = linkage * (1.0 - 2.0 * spread / l);
+            eprintln!("SCRATCH L={l} n={n}: drop {drop:.6e} vs linkage {:+.4e} refined {:+.4e}", drop / linkage - 1.0, drop / refined - 1.0);
+        }
+    }
+}

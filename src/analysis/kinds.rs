@@ -274,6 +274,7 @@ impl Analysis for Static {
         }
         ctx.warnings = if case.nonlinear {
             let mut w = warn::stretch_warnings(&model, &r);
+            w.extend(warn::single_segment_hinge_warnings(&hinges));
             w.extend(stability(
                 r.load_cases
                     .iter()

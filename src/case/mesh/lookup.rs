@@ -60,8 +60,6 @@ pub(super) enum BuiltSection {
     Shell(f64),
 }
 
-/// A model being built: the validated named items, the model so far and what each case element
-/// became.
 /// A hinge element of a built model: where it is and its hinge (for the per-hinge results).
 #[derive(Debug, Clone)]
 pub struct BuiltHinge {
@@ -83,6 +81,8 @@ pub struct BuiltHinge {
     pub allowable: f64,
 }
 
+/// A model being built: the validated named items, the model so far and what each case element
+/// became.
 pub(super) struct Ctx<'a> {
     pub spec: &'a MeshSpec,
     pub materials: Named<'a, Material>,
