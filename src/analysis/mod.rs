@@ -16,6 +16,9 @@ pub mod sweep_plot;
 pub mod vtu;
 pub mod warn;
 
+use registry::analysis_modules;
+crate::case::kinds::analyses!(analysis_modules);
+
 pub use kind::{Analysis, Ctx, DynAnalysis};
 pub use warn::{hinge_warnings, SMALL_STRAIN};
 

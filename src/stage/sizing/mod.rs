@@ -133,7 +133,9 @@ pub fn evaluate_with(
             message: e.to_string(),
         })?;
     let s = [j[(0, 0)], j[(1, 0)], j[(2, 0)]];
-    let r = stage.solve_with(cache, &[("unit_z".to_string(), Drive::Strokes(s))])?.remove(0);
+    let r = stage
+        .solve_with(cache, &[("unit_z".to_string(), Drive::Strokes(s))])?
+        .remove(0);
     let z = r.platform.z;
     let s_mean = (s[0] + s[1] + s[2]) / 3.0;
     let eta = r.forces.iter().sum::<f64>() / s_mean;
