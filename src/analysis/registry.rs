@@ -8,7 +8,7 @@ use super::*;
 /// Expands the list of kinds on the `analysis` side: the registry.
 macro_rules! analysis_side {
     ($(
-        $(#[doc = $doc:literal])*
+        $(#[$attr:meta])*
         $variant:ident = $name:literal #$rank:literal,
         $(mod $module:ident,)?
         case $shape:path, parse $parse:path, analysis $analysis:path;
@@ -23,7 +23,7 @@ macro_rules! analysis_side {
 /// name (`src/analysis/NAME.rs`).
 macro_rules! analysis_modules {
     ($(
-        $(#[doc = $doc:literal])*
+        $(#[$attr:meta])*
         $variant:ident = $name:literal #$rank:literal,
         $(mod $module:ident,)?
         case $shape:path, parse $parse:path, analysis $analysis:path;

@@ -65,7 +65,7 @@ pub fn shape<T: serde::de::DeserializeOwned>(
 /// Expands [`analyses!`] on the `case` side.
 macro_rules! case_side {
     ($(
-        $(#[doc = $doc:literal])*
+        $(#[$attr:meta])*
         $variant:ident = $name:literal #$rank:literal,
         $(mod $module:ident,)?
         case $shape:path, parse $parse:path, analysis $analysis:path;
@@ -77,7 +77,7 @@ macro_rules! case_side {
         #[serde(tag = "analysis", rename_all = "snake_case")]
         pub enum Case {
             $(
-                $(#[doc = $doc])*
+                $(#[$attr])*
                 $variant($shape),
             )*
         }
