@@ -491,6 +491,9 @@ fn has_unit(col: &str) -> bool {
         "_Nmm_per_rad",
         "_N_per_mm",
         "_MPa_per_Nmm",
+        "_s",
+        "_deg_per_s",
+        "_Nmm",
     ];
     const PLAIN: &[&str] = &[
         "kind",

@@ -42,6 +42,9 @@ macro_rules! analyses {
             Design = "design" #5, case design::DesignCase, parse shape, analysis kinds::Design;
             /// Natural frequencies and mode shapes of a generic beam/shell model.
             Modal = "modal" #7, case fem_case::ModalCase, parse fem_case::parse_modal, analysis kinds::Modal;
+            /// Pseudo-rigid-body model of the 8R compliant parallel pan-tilt (Yu, Lu and Hao (2016)).
+            #[serde(rename = "pantilt")]
+            PanTilt = "pantilt" #9, mod pantilt, case pantilt::PanTiltCase, parse shape, analysis pantilt::PanTiltKind;
         }
     };
 }

@@ -144,6 +144,36 @@ pub fn hinge_peak_stress(profile: &Profile, nu: f64, kt: f64, sf: &[[f64; 6]; 2]
     peak
 }
 
+/// Geometric volume of a hinge profile (notch and blanks), mm³: Simpson's rule on 2000
+/// intervals over the notch, exact over the prismatic blanks.
+pub fn profile_volume(p: &Profile) -> f64 {
+    let area = |x: f64| match p.contour {
+        Contour::SphericalNeck { .. } => {
+            if x.abs() >= p.half_notch {
+                p.h * p.h
+            } else {
+                super::section::clipped_disk(p.thickness(x) / 2.0, p.h, 0.3).area
+            }
+        }
+        _ => p.w * p.thickness(x),
+    };
+    let n = 2000;
+    let (x0, dx) = (-p.half_notch, 2.0 * p.half_notch / n as f64);
+    let mut s = 0.0;
+    for i in 0..=n {
+        let wgt = if i == 0 || i == n {
+            1.0
+        } else if i % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        };
+        // The notch's end values from inside (a leaf's thickness jumps to h at its ends).
+        s += wgt * area((x0 + i as f64 * dx) * (1.0 - 1e-12));
+    }
+    s * dx / 3.0 + 2.0 * p.blank * area(p.half_length())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -264,34 +294,4 @@ mod tests {
         assert_eq!(r.half_length(), p.spread_reach().max(p.half_notch));
         assert!(r.blank > 0.0);
     }
-}
-
-/// Geometric volume of a hinge profile (notch and blanks), mm³: Simpson's rule on 2000
-/// intervals over the notch, exact over the prismatic blanks.
-pub fn profile_volume(p: &Profile) -> f64 {
-    let area = |x: f64| match p.contour {
-        Contour::SphericalNeck { .. } => {
-            if x.abs() >= p.half_notch {
-                p.h * p.h
-            } else {
-                super::section::clipped_disk(p.thickness(x) / 2.0, p.h, 0.3).area
-            }
-        }
-        _ => p.w * p.thickness(x),
-    };
-    let n = 2000;
-    let (x0, dx) = (-p.half_notch, 2.0 * p.half_notch / n as f64);
-    let mut s = 0.0;
-    for i in 0..=n {
-        let wgt = if i == 0 || i == n {
-            1.0
-        } else if i % 2 == 1 {
-            4.0
-        } else {
-            2.0
-        };
-        // The notch's end values from inside (a leaf's thickness jumps to h at its ends).
-        s += wgt * area((x0 + i as f64 * dx) * (1.0 - 1e-12));
-    }
-    s * dx / 3.0 + 2.0 * p.blank * area(p.half_length())
 }
