@@ -166,14 +166,13 @@ impl Analysis for Sensitivity {
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.validate().map(|_| ())
     }
-    fn run(case: &Self::Case, _ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        design::run_sensitivity(case)
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        let (r, warnings) = design::run_sensitivity_warned(case)?;
+        ctx.warnings = warnings;
+        Ok(r)
     }
     fn report(r: &Self::Result) -> Report {
         design::sensitivity_report(r)
-    }
-    fn case_warnings(case: &Self::Case) -> Vec<String> {
-        case.validate().map(|d| warn::stage_warnings(&d)).unwrap_or_default()
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         one_material(&case.material)
@@ -191,14 +190,13 @@ impl Analysis for Design {
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.validate().map(|_| ())
     }
-    fn run(case: &Self::Case, _ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        design::run_design(case)
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        let (r, warnings) = design::run_design_warned(case)?;
+        ctx.warnings = warnings;
+        Ok(r)
     }
     fn report(r: &Self::Result) -> Report {
         design::design_report(r)
-    }
-    fn result_warnings(case: &Self::Case, r: &Self::Result) -> Vec<String> {
-        warn::design_warnings(case, r)
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         one_material(&case.material)
