@@ -7,12 +7,7 @@ use super::*;
 
 /// Expands the list of kinds on the `analysis` side: the registry.
 macro_rules! analysis_side {
-    ($(
-        $(#[$attr:meta])*
-        $variant:ident = $name:literal #$rank:literal,
-        $(mod $module:ident,)?
-        case $shape:path, parse $parse:path, analysis $analysis:path;
-    )*) => {
+    ($($(#[$attr:meta])* $variant:ident = $name:literal #$rank:literal, $(mod $module:ident,)? case $shape:path, parse $parse:path, analysis $analysis:path;)*) => {
         /// Every analysis kind, in the order of the list of kinds (the order of
         /// [`crate::case::Case`]'s variants).
         pub static REGISTRY: &[&dyn DynAnalysis] = &[$(&Entry::<$analysis>::new()),*];
@@ -22,12 +17,7 @@ macro_rules! analysis_side {
 /// Expands the list of kinds into the declarations of the analysis modules its `mod` lines
 /// name (`src/analysis/NAME.rs`).
 macro_rules! analysis_modules {
-    ($(
-        $(#[$attr:meta])*
-        $variant:ident = $name:literal #$rank:literal,
-        $(mod $module:ident,)?
-        case $shape:path, parse $parse:path, analysis $analysis:path;
-    )*) => {
+    ($($(#[$attr:meta])* $variant:ident = $name:literal #$rank:literal, $(mod $module:ident,)? case $shape:path, parse $parse:path, analysis $analysis:path;)*) => {
         $($(pub mod $module;)?)*
     };
 }

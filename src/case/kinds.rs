@@ -67,12 +67,7 @@ pub fn shape<T: serde::de::DeserializeOwned>(
 
 /// Expands [`analyses!`] on the `case` side.
 macro_rules! case_side {
-    ($(
-        $(#[$attr:meta])*
-        $variant:ident = $name:literal #$rank:literal,
-        $(mod $module:ident,)?
-        case $shape:path, parse $parse:path, analysis $analysis:path;
-    )*) => {
+    ($($(#[$attr:meta])* $variant:ident = $name:literal #$rank:literal, $(mod $module:ident,)? case $shape:path, parse $parse:path, analysis $analysis:path;)*) => {
         $($(pub mod $module;)?)*
 
         /// A parsed case file (not yet validated).
