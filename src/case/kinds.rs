@@ -45,6 +45,8 @@ macro_rules! analyses {
             /// Pseudo-rigid-body model of the 8R compliant parallel pan-tilt (Yu, Lu and Hao (2016)).
             #[serde(rename = "pantilt")]
             PanTilt = "pantilt" #9, mod pantilt, case pantilt::PanTiltCase, parse shape, analysis pantilt::PanTiltKind;
+            /// Jacobian stiffness of a 3-PRS with compliant legs.
+            PrsStiffness = "prs_stiffness" #10, mod prs_stiffness, case prs_stiffness::PrsStiffnessCase, parse shape, analysis prs_stiffness::PrsStiffnessAnalysis;
         }
     };
 }

@@ -3,6 +3,7 @@
 
 pub mod pantilt;
 pub mod prs;
+pub mod prs_stiffness;
 pub mod workspace;
 
 pub use prs::{FkpSolution, IkpSolution, KinematicsError, Pose, Prs};

@@ -16,7 +16,7 @@ use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 use thiserror::Error;
 
 /// Leg plane angles ξᵢ, rad.
-const XI: [f64; 3] = [
+pub(crate) const XI: [f64; 3] = [
     0.0,
     2.0 * std::f64::consts::FRAC_PI_3,
     4.0 * std::f64::consts::FRAC_PI_3,
