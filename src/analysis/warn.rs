@@ -11,13 +11,6 @@ pub fn hinge_warnings(at: &str, spec: &crate::hinge::HingeSpec) -> Vec<String> {
     }
 }
 
-/// Calibration warnings of a stage design's two hinges.
-pub fn stage_warnings(d: &crate::stage::StageDesign) -> Vec<String> {
-    let mut w = hinge_warnings("stage.revolute", &d.revolute);
-    w.extend(hinge_warnings("stage.spherical", &d.spherical));
-    w
-}
-
 /// Largest element stretch in a geometrically nonlinear result above which it is reported: the
 /// co-rotational elements assume small strains (a linear-elastic element at 1 % strain is at
 /// the end of the elastic range of every structural metal).
@@ -64,25 +57,6 @@ pub fn stretch_warnings(model: &crate::fem::Model, r: &super::fem_static::Static
         }
     }
     out
-}
-
-/// Calibration warnings of the hinges of the design found by a `design` run.
-pub fn design_warnings(case: &crate::case::design::DesignCase, r: &super::design::DesignResult) -> Vec<String> {
-    use crate::stage::sizing::{with_params, PARAMETERS};
-    let Ok((base, _, _)) = case.validate() else {
-        return Vec::new();
-    };
-    let mut p = [0.0; 5];
-    for (v, k) in p.iter_mut().zip(PARAMETERS) {
-        match r.design.get(k).and_then(|v| v.as_f64()) {
-            Some(x) => *v = x,
-            None => return Vec::new(),
-        }
-    }
-    stage_warnings(&with_params(&base, &p))
-        .into_iter()
-        .map(|w| format!("design found, {w}"))
-        .collect()
 }
 
 /// Implausible densities (unit slips) of a modal model's materials.

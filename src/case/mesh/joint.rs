@@ -2,7 +2,7 @@
 //! elimination (a [`fem::Tie`] in a node frame whose local x is the joint axis).
 
 use super::frames::{cross, set_node_frame};
-use super::lookup::{norm, Ctx};
+use super::lookup::{norm, unit_direction, Ctx};
 use super::shapes::JointKind;
 use crate::case::error::CaseError;
 use crate::fem;
@@ -131,17 +131,7 @@ fn unit_axis(
             format!("{v:?}"),
             format!("a {kind} joint takes no `{field}`"),
         )),
-        (Some(v), true) => {
-            let n = norm(v);
-            if !(n.is_finite() && n > 0.0) {
-                return Err(CaseError::value(
-                    format!("{p}.{field}"),
-                    format!("{v:?}"),
-                    "must be a non-zero direction [x, y, z]",
-                ));
-            }
-            Ok(Some(v.map(|c| c / n)))
-        }
+        (Some(v), true) => unit_direction(format!("{p}.{field}"), v).map(Some),
     }
 }
 

@@ -157,3 +157,16 @@ impl Ctx<'_> {
 pub(super) fn norm(v: [f64; 3]) -> f64 {
     (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
 }
+
+/// The unit vector along the direction `v` given at `path`, refusing a zero or non-finite one.
+pub(super) fn unit_direction(path: String, v: [f64; 3]) -> Result<[f64; 3], CaseError> {
+    let n = norm(v);
+    if !(n.is_finite() && n > 0.0) {
+        return Err(CaseError::value(
+            path,
+            format!("{v:?}"),
+            "must be a non-zero direction [x, y, z]",
+        ));
+    }
+    Ok(v.map(|c| c / n))
+}
