@@ -16,7 +16,7 @@ fn al() -> Material {
 }
 
 #[test]
-fn seed000_revolute_circular_notch() {
+fn ruiz2019_revolute_circular_notch() {
     // Ruiz et al. (2019) §5: R = 8, t = 2 in the 10×10 leg, 20 mm blank each side;
     // ANSYS K = 98.37 N·m/rad = 98370 N·mm/rad about the compliant axis.
     let spec = fixtures::ruiz2019_revolute_hinge();
@@ -32,7 +32,7 @@ fn seed000_revolute_circular_notch() {
 }
 
 #[test]
-fn seed000_spherical_neck() {
+fn ruiz2019_spherical_neck() {
     // Ruiz et al. (2019) §5: l = 5, t = 3, R = 4 in the 10×10 leg, 20 mm blank each side;
     // ANSYS bending 32.67 N·m/rad, torsion 24.46 N·m/rad.
     let spec = fixtures::ruiz2019_spherical_hinge();
@@ -46,7 +46,7 @@ fn seed000_spherical_neck() {
 }
 
 #[test]
-fn seed002_corner_filleted_nylon() {
+fn yu2016_corner_filleted_nylon() {
     // The 8R pan-tilt paper: l = 5, R = 1.75, δ = t = 0.6, width 10, blank height 15, nylon 66 (E = 3300,
     // ν = 0.33), 15 mm blank each side. Reference 4.05 N·mm/deg: converged 3-D solid FEM of the
     // stated geometry. The published 4.78 N·mm/deg does not follow from the stated

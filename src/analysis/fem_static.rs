@@ -40,6 +40,72 @@ pub struct StaticCaseRow {
     /// for models without shells).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub shell_forces: Vec<ShellForcesRow>,
+    /// Per `hinge` element: rotation, end forces, peak stress and margin (omitted for models
+    /// without hinge elements).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub hinges: Vec<HingeRow>,
+    /// With `"output": {"section_forces": true}`: section forces of every beam element
+    /// (omitted otherwise).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub beam_forces: Vec<BeamForcesRow>,
+}
+
+/// Section forces of one beam element in one load case.
+#[derive(Debug, Clone, Serialize)]
+pub struct BeamForcesRow {
+    /// Index of the element in the FE model (the order of `element_von_mises`).
+    pub element: usize,
+    /// [N, Vy, Vz (N), T, My, Mz (N·mm)] at end a (first node) and end b, element axes
+    /// (deformed element axes in nonlinear runs); positive-face convention: N > 0 in tension,
+    /// the forces the part beyond the section exerts on the part before it.
+    pub section_forces: [[f64; 6]; 2],
+}
+
+/// The 6×6 compliance of one node (result field `compliance`).
+#[derive(Debug, Clone, Serialize)]
+pub struct ComplianceRow {
+    /// The node.
+    pub node: usize,
+    /// Axes of the matrix: rows are the local x, y, z in global coordinates.
+    pub frame: [[f64; 3]; 3],
+    /// C[i][j] = displacement i per unit load j at the node, order [ux, uy, uz, rx, ry, rz] ×
+    /// [Fx, Fy, Fz, Mx, My, Mz] in `frame`: mm/N (translation/force), mm/(N·mm)
+    /// (translation/moment), rad/N (rotation/force), rad/(N·mm) (rotation/moment). Symmetric;
+    /// rows and columns of supported DOFs are zero.
+    pub matrix: [[f64; 6]; 6],
+    /// Smallest and largest eigenvalue of the translational 3×3 block, mm/N.
+    pub translational_eigen: [f64; 2],
+    /// Smallest and largest eigenvalue of the rotational 3×3 block, rad/(N·mm).
+    pub rotational_eigen: [f64; 2],
+}
+
+/// Results of one `hinge` element in one load case.
+#[derive(Debug, Clone, Serialize)]
+pub struct HingeRow {
+    /// Index of the element in the case's `elements`.
+    pub element: usize,
+    /// Index of the element in the FE model (the order of `element_von_mises`).
+    pub model_element: usize,
+    /// Rotation about the compliant axis (element local y), degrees: the relative rotation of
+    /// node b with respect to node a about the element's local y. Linear: (θ_b − θ_a)·e_y.
+    /// Nonlinear: the local-y component of the rotation vector of R_aᵀ·R_b (finite rotations,
+    /// in the undeformed element axes).
+    pub rotation_deg: f64,
+    /// Section forces [N, Vy, Vz (N), T, My, Mz (N·mm)] at end a and end b, element axes
+    /// (deformed element axes in nonlinear runs; N > 0 in tension).
+    pub end_forces: [[f64; 6]; 2],
+    /// Peak von Mises stress along the hinge with the notch factor, MPa (the stress model of the
+    /// `hinge` analysis and the `stage`).
+    pub peak_von_mises: f64,
+    /// peak_von_mises / allowable of the element's material (0 without an allowable).
+    pub utilisation: f64,
+    /// Rotation left until the peak stress reaches the allowable, degrees, by linear
+    /// extrapolation of the load case (stress proportional to rotation):
+    /// rotation_deg · (allowable/peak_von_mises − 1). Signed like rotation_deg (further rotation
+    /// in the same sense); of the opposite sign when the allowable is already exceeded; `null`
+    /// when unbounded (no allowable, or no stress).
+    #[serde(serialize_with = "crate::report::numbers::ratio_or_null")]
+    pub remaining_rotation_deg: f64,
 }
 
 /// Nodal stresses of the shells: per node [sxx, syy, szz, sxy, syz, szx] (MPa, global axes),
@@ -97,6 +163,10 @@ pub struct StaticResult {
     pub units: Units,
     /// Model notes.
     pub model: Vec<String>,
+    /// Node compliances the case asked for (`"compliance"`), linear, with the model's supports
+    /// (DOFs prescribed in load cases are free here); omitted when none was asked.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub compliance: Vec<ComplianceRow>,
 }
 
 /// Units of the `static` result.
@@ -146,6 +216,7 @@ pub fn solve_with(
                 reactions: "N, N, N, N·mm, N·mm, N·mm",
             },
             model: notes,
+            compliance: Vec::new(),
         },
         res,
     ))
@@ -183,6 +254,7 @@ pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<(StaticResult, fem
             "beams and flexibility elements: co-rotational, local linear element (exact Timoshenko); rigid links exact under finite rotation; springs linear (small rotations)".to_string(),
             "stresses from the section forces in the deformed element frames".to_string(),
         ],
+        compliance: Vec::new(),
     };
     Ok((result, raw))
 }
@@ -251,7 +323,133 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
         critical_load_factor: None,
         shell_stress: None,
         shell_forces: Vec::new(),
+        hinges: Vec::new(),
+        beam_forces: Vec::new(),
     }
+}
+
+/// Adds the section forces of every beam element to each load case (`raw` in the order of
+/// `r.load_cases`).
+pub fn add_beam_forces(r: &mut StaticResult, model: &Model, raw: &fem::StaticResults) {
+    for (row, c) in r.load_cases.iter_mut().zip(&raw.load_cases) {
+        row.beam_forces = model
+            .elements
+            .iter()
+            .enumerate()
+            .filter(|(_, e)| matches!(e, fem::Element::Beam(_)))
+            .map(|(ie, _)| BeamForcesRow {
+                element: ie,
+                section_forces: c.elements[ie].section_forces,
+            })
+            .collect();
+    }
+}
+
+/// The node compliances `reqs` asks for (linear, undeformed model, its supports only).
+pub fn node_compliances(
+    model: &Model,
+    reqs: &[crate::case::mesh::ComplianceRequest],
+) -> Result<Vec<ComplianceRow>, AnalysisError> {
+    use nalgebra::{Matrix3, Matrix6};
+    if reqs.is_empty() {
+        return Ok(Vec::new());
+    }
+    let sys = fem::System::new(model, &[], fem::solve::Parallelism::Rayon)
+        .map_err(|e| AnalysisError::new("compliance", e.to_string()))?;
+    reqs.iter()
+        .enumerate()
+        .map(|(i, q)| {
+            let c = sys
+                .node_compliance(model, q.node)
+                .map_err(|e| AnalysisError::new(format!("compliance[{i}]"), e.to_string()))?;
+            let frame = q.frame.unwrap_or([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]);
+            let f = Matrix3::from_fn(|a, b| frame[a][b]);
+            let mut t = Matrix6::zeros();
+            t.fixed_view_mut::<3, 3>(0, 0).copy_from(&f);
+            t.fixed_view_mut::<3, 3>(3, 3).copy_from(&f);
+            let cl = t * c * t.transpose();
+            let cl = (cl + cl.transpose()) * 0.5;
+            let extremes = |k: usize| {
+                let b: Matrix3<f64> = cl.fixed_view::<3, 3>(k, k).into_owned();
+                let ev = b.symmetric_eigenvalues();
+                [ev.min(), ev.max()]
+            };
+            Ok(ComplianceRow {
+                node: q.node,
+                frame,
+                matrix: std::array::from_fn(|a| std::array::from_fn(|b| cl[(a, b)])),
+                translational_eigen: extremes(0),
+                rotational_eigen: extremes(3),
+            })
+        })
+        .collect()
+}
+
+/// Adds the per-hinge results of every load case (`raw`: the solver's results in the order
+/// of `r.load_cases`; `nonlinear`: rotations are finite rotation vectors).
+pub fn add_hinges(
+    r: &mut StaticResult,
+    model: &Model,
+    raw: &fem::StaticResults,
+    hinges: &[crate::case::mesh::BuiltHinge],
+    nonlinear: bool,
+) -> Result<(), AnalysisError> {
+    if hinges.is_empty() {
+        return Ok(());
+    }
+    for (row, c) in r.load_cases.iter_mut().zip(&raw.load_cases) {
+        row.hinges = hinges
+            .iter()
+            .map(|h| hinge_row(model, c, h, nonlinear))
+            .collect::<Result<_, _>>()?;
+    }
+    Ok(())
+}
+
+/// The results of hinge element `h` in load case `c`.
+pub fn hinge_row(
+    model: &Model,
+    c: &fem::CaseResult,
+    h: &crate::case::mesh::BuiltHinge,
+    nonlinear: bool,
+) -> Result<HingeRow, AnalysisError> {
+    use nalgebra::Vector3;
+    let err = |e: fem::FemError| AnalysisError::new(format!("elements[{}]", h.case_element), e.to_string());
+    let (lam, _) = model.element_frame(h.element).map_err(err)?;
+    let nodes = match &model.elements[h.element] {
+        fem::Element::Flex(f) => f.nodes,
+        _ => {
+            return Err(AnalysisError::new(
+                format!("elements[{}]", h.case_element),
+                "not a hinge element",
+            ))
+        }
+    };
+    let rot = |n: usize| {
+        let d = &c.displacements[n];
+        Vector3::new(d[3], d[4], d[5])
+    };
+    let (ta, tb) = (rot(nodes[0]), rot(nodes[1]));
+    let rel = if nonlinear {
+        let ra = fem::corot::rot_exp(&ta);
+        let rb = fem::corot::rot_exp(&tb);
+        fem::corot::rot_log(&(ra.transpose() * rb))
+    } else {
+        tb - ta
+    };
+    let ey = Vector3::new(lam[(1, 0)], lam[(1, 1)], lam[(1, 2)]);
+    let rotation_deg = ey.dot(&rel).to_degrees();
+    let sf = c.elements[h.element].section_forces;
+    let peak = h.region.peak_stress(&sf);
+    Ok(HingeRow {
+        element: h.case_element,
+        model_element: h.element,
+        rotation_deg,
+        end_forces: sf,
+        peak_von_mises: peak,
+        utilisation: peak / h.allowable,
+        remaining_rotation_deg: rotation_deg * (h.allowable / peak - 1.0),
+    })
 }
 
 /// The warning (plain text, for the result's `warnings`) for a nonlinear load case whose path
@@ -305,8 +503,76 @@ pub fn report(r: &StaticResult) -> Report {
             md += &format!("({} nodes: see result.csv)\n", c.displacements.len());
         }
         md += "\n";
+        md += &hinge_table(c);
     }
+    md += &compliance_section(&r.compliance);
     Report { markdown: md, csv }
+}
+
+/// The Markdown section of the requested node compliances (empty without).
+fn compliance_section(rows: &[ComplianceRow]) -> String {
+    if rows.is_empty() {
+        return String::new();
+    }
+    let mut md = String::from(
+        "## Node compliance\n\nLinear, undeformed model with its supports; C[i][j] = displacement i per unit load j, [ux, uy, uz, rx, ry, rz] × [Fx, Fy, Fz, Mx, My, Mz] in the given frame: mm/N, mm/(N·mm), rad/N, rad/(N·mm).\n\n",
+    );
+    for c in rows {
+        md += &format!(
+            "### Node {}\n\nFrame rows (local x, y, z): {:?}. Translational eigenvalues {:.6e} … {:.6e} mm/N; rotational {:.6e} … {:.6e} rad/(N·mm).\n\n",
+            c.node,
+            c.frame,
+            c.translational_eigen[0],
+            c.translational_eigen[1],
+            c.rotational_eigen[0],
+            c.rotational_eigen[1]
+        );
+        let mut t = Table::new(&["", "Fx", "Fy", "Fz", "Mx", "My", "Mz"]);
+        for (i, name) in ["ux", "uy", "uz", "rx", "ry", "rz"].iter().enumerate() {
+            let mut row = vec![name.to_string()];
+            row.extend(c.matrix[i].iter().map(|v| format!("{v:.6e}")));
+            t.row(row);
+        }
+        md += &t.render();
+        md += "\n";
+    }
+    md
+}
+
+/// The Markdown table of a load case's hinge elements (empty without hinges).
+fn hinge_table(c: &StaticCaseRow) -> String {
+    if c.hinges.is_empty() {
+        return String::new();
+    }
+    let mut t = Table::new(&[
+        "element",
+        "rotation (°)",
+        "peak von Mises (MPa)",
+        "utilisation",
+        "remaining rotation (°)",
+        "My a (N·mm)",
+        "My b (N·mm)",
+    ]);
+    for h in &c.hinges {
+        let rem = if h.remaining_rotation_deg.is_finite() {
+            format!("{:.4}", h.remaining_rotation_deg)
+        } else {
+            "unbounded".to_string()
+        };
+        t.row(vec![
+            h.element.to_string(),
+            format!("{:.6}", h.rotation_deg),
+            format!("{:.4}", h.peak_von_mises),
+            format!("{:.4}", h.utilisation),
+            rem,
+            format!("{:.6e}", h.end_forces[0][4]),
+            format!("{:.6e}", h.end_forces[1][4]),
+        ]);
+    }
+    format!(
+        "Hinge elements (rotation about the compliant axis, local y; remaining rotation to the allowable stress by linear extrapolation):\n\n{}\n",
+        t.render()
+    )
 }
 
 /// Markdown lines with the largest and smallest principal shell stresses of a load case and

@@ -259,11 +259,16 @@ impl Analysis for Static {
         case.model.build().map(|_| ())
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        let model = case.model.build()?;
-        let (r, raw) = match case.steps.filter(|_| case.nonlinear) {
+        let (model, hinges) = case.model.build_with_hinges(true)?;
+        let (mut r, raw) = match case.steps.filter(|_| case.nonlinear) {
             Some(steps) => fem_static::solve_nonlinear(&model, steps)?,
             None => fem_static::solve_with(&model, ctx.cache)?,
         };
+        fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
+        if case.output.section_forces {
+            fem_static::add_beam_forces(&mut r, &model, &raw);
+        }
+        r.compliance = fem_static::node_compliances(&model, &case.compliance)?;
         if ctx.with_files {
             ctx.files = fem_static::vtu_files(&model, &raw)?;
         }

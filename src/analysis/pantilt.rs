@@ -1,6 +1,6 @@
 //! The `pantilt` analysis: PRBM kinematics and quasi-static actuation torques of the 8R
 //! compliant parallel pan-tilt of J. Yu, D. Lu and G. Hao, "Design and analysis of a compliant
-//! parallel pan-tilt platform", Meccanica 51 (2016) 1559–1570, doi:10.1007/s11012-015-0116-1.
+//! parallel pan-tilt platform", Meccanica (2016).
 //! Results in degrees, N·mm and s.
 
 use super::kind::{Analysis, Ctx};

@@ -64,6 +64,13 @@ pub struct StaticCase {
     #[serde(default)]
     #[schemars(range(min = 1, max = 10000))]
     pub steps: Option<usize>,
+    /// Optional result fields: `{"section_forces": true}` adds the section forces of every beam.
+    #[serde(default)]
+    pub output: super::mesh::StaticOutput,
+    /// Nodes whose 6×6 compliance (with the model's supports, undeformed) the result lists:
+    /// `[{"node": n, "frame": [[..], [..], [..]]}]` (frame optional, default global axes).
+    #[serde(default)]
+    pub compliance: Vec<super::mesh::ComplianceRequest>,
 }
 
 /// Schema rules of a `static` (`need_loads`) or `modal` case that relate fields: the model is
@@ -106,6 +113,10 @@ struct StaticOptions {
     nonlinear: Option<bool>,
     #[serde(default)]
     steps: Option<usize>,
+    #[serde(default)]
+    output: super::mesh::StaticOutput,
+    #[serde(default)]
+    compliance: Vec<super::mesh::ComplianceRequest>,
 }
 
 /// The options of a `modal` case besides its model, as in the case file.
@@ -136,7 +147,7 @@ const MODEL_FIELDS: [&str; 7] = [
     "load_cases",
 ];
 
-const STATIC_OWN: [&str; 5] = ["analysis", "mesh", "gmsh", "nonlinear", "steps"];
+const STATIC_OWN: [&str; 7] = ["analysis", "mesh", "gmsh", "nonlinear", "steps", "output", "compliance"];
 const MODAL_OWN: [&str; 6] = ["analysis", "mesh", "gmsh", "modes", "shift_hz", "shapes"];
 
 /// Splits a case object into its options (the fields in `own`) and its model (the rest).
@@ -162,12 +173,15 @@ pub fn parse_static(value: Value, base: Option<&Path>) -> Result<StaticCase, Cas
     let nonlinear = o.nonlinear.unwrap_or(false);
     let steps = stage::check_steps("steps", o.steps, nonlinear)?;
     let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
+    super::mesh::requests::check_compliance(&o.compliance, model.nodes.len())?;
     Ok(StaticCase {
         mesh: o.mesh,
         gmsh: o.gmsh,
         model,
         nonlinear,
         steps,
+        output: o.output,
+        compliance: o.compliance,
     })
 }
 

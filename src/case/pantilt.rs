@@ -1,6 +1,6 @@
 //! The `pantilt` case: pseudo-rigid-body model of the 8R compliant parallel pan-tilt of J. Yu,
 //! D. Lu and G. Hao, "Design and analysis of a compliant parallel pan-tilt platform", Meccanica
-//! 51 (2016) 1559–1570, doi:10.1007/s11012-015-0116-1. Every field has that paper's value as
+//! (2016). Every field has that paper's value as
 //! its default (with the limb azimuth reading documented in [`crate::kinematics::pantilt`]).
 
 use super::error::{check, num, CaseError};

@@ -1,6 +1,6 @@
 //! Pseudo-rigid-body model (PRBM) of the 8R (RRR–RR–RRR) spherical compliant parallel pan-tilt
 //! platform of J. Yu, D. Lu and G. Hao, "Design and analysis of a compliant parallel pan-tilt
-//! platform", Meccanica 51 (2016) 1559–1570, doi:10.1007/s11012-015-0116-1 (§3 kinematics,
+//! platform", Meccanica (2016) (§3 kinematics,
 //! §4 joint damping and input torques).
 //!
 //! # Geometry

@@ -2,6 +2,7 @@
 //! value once, naming its JSON path.
 
 use super::frames;
+use super::hinge::BuiltHinge;
 use super::lookup::{BuiltSection, Ctx, Named};
 use super::shapes::{ElementSpec, MeshSpec, RigidSpec, SectionSpec};
 use crate::case::error::{check, CaseError};
@@ -40,6 +41,12 @@ impl MeshSpec {
 
     /// As [`MeshSpec::build`]; `need_loads = false` accepts a model without load cases (modal).
     pub fn build_model(&self, need_loads: bool) -> Result<fem::Model, CaseError> {
+        self.build_with_hinges(need_loads).map(|(m, _)| m)
+    }
+
+    /// As [`MeshSpec::build_model`], also returning the model's hinge elements (their element
+    /// index, hinge region and allowable stress) for the per-hinge results.
+    pub fn build_with_hinges(&self, need_loads: bool) -> Result<(fem::Model, Vec<BuiltHinge>), CaseError> {
         let materials = Named::validate("material", "materials", &self.materials, |m, p| m.resolve(p))?;
         let sections = Named::validate("section", "sections", &self.sections, section)?;
         if self.nodes.is_empty() {
@@ -52,6 +59,7 @@ impl MeshSpec {
             model: fem::Model::new(),
             frame_owner: BTreeMap::new(),
             model_index: Vec::with_capacity(self.elements.len()),
+            hinges: Vec::new(),
         };
         for (i, x) in self.nodes.iter().enumerate() {
             for (k, v) in x.iter().enumerate() {
@@ -142,7 +150,7 @@ impl MeshSpec {
             let lc = super::build_loads::load_case(&mut cx, &format!("load_cases[{ic}]"), c)?;
             cx.model.load_cases.push(lc);
         }
-        Ok(cx.model)
+        Ok((cx.model, cx.hinges))
     }
 }
 
@@ -213,7 +221,7 @@ fn element(cx: &mut Ctx, p: &str, e: &ElementSpec) -> Result<(), CaseError> {
             hinge,
             material,
             up,
-        } => super::hinge::hinge_element(cx, p, *nodes, hinge, material, *up)?,
+        } => super::hinge::hinge_element(cx, p, *nodes, hinge, material, *up, cx.model_index.len())?,
         ElementSpec::Joint {
             nodes,
             kind,

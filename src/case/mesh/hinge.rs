@@ -1,6 +1,7 @@
 //! The `hinge` element of mesh cases: a flexure hinge between two nodes as one flexibility
 //! element carrying the compliance of the `hinge` analysis, plus its mass.
 
+pub use super::lookup::BuiltHinge;
 use super::lookup::Ctx;
 use crate::case::error::CaseError;
 use crate::case::hinge::hinge_error;
@@ -8,7 +9,7 @@ use crate::fem;
 use crate::hinge::{self, HingeSpec};
 use serde_json::Value;
 
-/// Builds a `hinge` element at JSON path `p`.
+/// Builds a `hinge` element at JSON path `p` (case element `case_element`).
 ///
 /// One [`fem::FlexElement`] from node a to node b: its compliance is exactly that of the
 /// `hinge` analysis for the same hinge with `blank_length` = (node distance − notch length)/2
@@ -25,6 +26,7 @@ pub(super) fn hinge_element(
     hinge: &Value,
     material: &str,
     up: [f64; 3],
+    case_element: usize,
 ) -> Result<(), CaseError> {
     let (a, b) = cx.two_nodes(p, nodes, "hinge")?;
     let mat = *cx.materials.get(&format!("{p}.material"), material)?;
@@ -43,11 +45,17 @@ pub(super) fn hinge_element(
     }
     let region = hinge::hinge_element(&spec, &mat, len.max(notch_len)).map_err(herr)?;
     let mass = mat.density * region.volume();
-    cx.model.add_element(fem::Element::Flex(fem::FlexElement {
+    let element = cx.model.add_element(fem::Element::Flex(fem::FlexElement {
         nodes: [a, b],
         compliance: region.compliance(),
         up,
     }));
+    cx.hinges.push(BuiltHinge {
+        case_element,
+        element,
+        region,
+        allowable: mat.allowable,
+    });
     for node in [a, b] {
         cx.model.masses.push(fem::PointMass {
             node,

@@ -62,6 +62,19 @@ pub(super) enum BuiltSection {
 
 /// A model being built: the validated named items, the model so far and what each case element
 /// became.
+/// A hinge element of a built model: where it is and its hinge (for the per-hinge results).
+#[derive(Debug, Clone)]
+pub struct BuiltHinge {
+    /// Index of the element in the case's `elements`.
+    pub case_element: usize,
+    /// Index of the element in the FE model (model order, as `element_von_mises`).
+    pub element: usize,
+    /// Its hinge region: compliance and stress model, as in the `hinge` analysis.
+    pub region: crate::hinge::HingeRegion,
+    /// Allowable stress of its material, MPa (∞ when the material has none).
+    pub allowable: f64,
+}
+
 pub(super) struct Ctx<'a> {
     pub spec: &'a MeshSpec,
     pub materials: Named<'a, Material>,
@@ -71,6 +84,8 @@ pub(super) struct Ctx<'a> {
     pub frame_owner: BTreeMap<usize, String>,
     /// Model element index of each case element (masses and rigid links are no elements).
     pub model_index: Vec<Option<usize>>,
+    /// The hinge elements built so far (side table: `fem` knows no hinges).
+    pub hinges: Vec<BuiltHinge>,
 }
 
 impl Ctx<'_> {

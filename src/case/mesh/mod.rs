@@ -9,16 +9,19 @@ pub mod build;
 mod build_body_loads;
 mod build_loads;
 mod frames;
-mod hinge;
+pub mod hinge;
 mod joint;
 pub mod load_shapes;
 mod lookup;
+pub mod requests;
 pub mod shapes;
 
 pub use super::fem_case::{ModalCase, StaticCase};
 pub use build::unique_load_case_names;
+pub use hinge::BuiltHinge;
 pub use load_shapes::{
     DisplacementSpec, DofName, EdgeLoadSpec, ForceSpec, GroupForceSpec, LineAxes, LineLoadSpec, LoadCaseSpec,
     PressureSpec,
 };
+pub use requests::{ComplianceRequest, StaticOutput};
 pub use shapes::{ElementSpec, GmshMapping, GroupSpec, JointKind, MeshSpec, RigidSpec, SectionSpec, SupportSpec};

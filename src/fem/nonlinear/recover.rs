@@ -167,7 +167,11 @@ pub(super) fn verify_equilibrium(
     let msum = Vector3::new(sum[3], sum[4], sum[5]).norm();
     // Moments about the origin: forces act on levers up to the model's extent from it.
     let lever = (0..nn).map(|n| pos(n).norm()).fold(0.0, f64::max).max(1.0);
-    let force_ok = fsum <= EQUILIBRIUM_TOL * scale_f + round;
+    // Force scale: the applied forces plus the applied moments over the model's size (a pure
+    // moment loads the structure with internal force pairs of order M/size; without this term a
+    // moment-only load case would be checked against a zero force).
+    let size = model_size(model, st).max(1e-300);
+    let force_ok = fsum <= EQUILIBRIUM_TOL * (scale_f + scale_m / size) + round;
     let moment_ok = msum <= EQUILIBRIUM_TOL * (scale_m + lever * scale_f) + round * lever;
     if nodal_ok && force_ok && moment_ok {
         return Ok(());
@@ -178,7 +182,23 @@ pub(super) fn verify_equilibrium(
         lambda,
         rn,
         format!(
-            "the accepted state is not in equilibrium: unbalanced force {fsum:.3e} N and moment {msum:.3e} N·mm (statics at the deformed positions, against applied loads of {scale_f:.3e} N); nodal residual {rn:.3e}"
+            "the accepted state is not in equilibrium: unbalanced force {fsum:.3e} N and moment {msum:.3e} N·mm (statics at the deformed positions, against applied loads of {scale_f:.3e} N and {scale_m:.3e} N·mm over a model size of {size:.3e} mm); nodal residual {rn:.3e}"
         ),
     ))
+}
+
+/// Diagonal of the bounding box of the deformed nodes, mm.
+fn model_size(model: &crate::fem::Model, st: &State) -> f64 {
+    let mut lo = Vector3::repeat(f64::INFINITY);
+    let mut hi = Vector3::repeat(f64::NEG_INFINITY);
+    for (n, x) in model.nodes.iter().enumerate() {
+        let p = Vector3::from(*x) + st.u[n];
+        lo = lo.inf(&p);
+        hi = hi.sup(&p);
+    }
+    if model.nodes.is_empty() {
+        0.0
+    } else {
+        (hi - lo).norm()
+    }
 }

@@ -1,0 +1,50 @@
+//! Extra outputs a `static` case asks for: beam section forces and node compliances.
+
+use super::frames;
+use crate::case::error::CaseError;
+use serde::Deserialize;
+
+/// `"output"` of a `static` case: optional result fields (all off by default, so results stay
+/// compact).
+#[derive(Debug, Clone, Default, PartialEq, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct StaticOutput {
+    /// Section forces [N, Vy, Vz, T, My, Mz] at both ends of every beam element, per load case
+    /// (`beam_forces` in each load case of the result). Default false.
+    #[serde(default)]
+    pub section_forces: bool,
+}
+
+/// One entry of `"compliance"`: the 6×6 compliance of a node with the model's supports.
+#[derive(Debug, Clone, PartialEq, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ComplianceRequest {
+    /// The node.
+    pub node: usize,
+    /// Axes of the result: three orthonormal right-handed rows (local x, y, z in global
+    /// coordinates); default the global axes.
+    #[serde(default)]
+    pub frame: Option<[[f64; 3]; 3]>,
+}
+
+/// Validates the compliance requests against a model of `n_nodes` nodes (paths
+/// `compliance[i].node`, `compliance[i].frame`).
+pub fn check_compliance(reqs: &[ComplianceRequest], n_nodes: usize) -> Result<(), CaseError> {
+    for (i, r) in reqs.iter().enumerate() {
+        let p = format!("compliance[{i}]");
+        if r.node >= n_nodes {
+            return Err(CaseError::value(
+                format!("{p}.node"),
+                r.node,
+                format!("the model has nodes 0 … {}", n_nodes.saturating_sub(1)),
+            ));
+        }
+        if let Some(f) = r.frame {
+            for (k, v) in f.iter().flatten().enumerate() {
+                crate::case::error::check::finite(&format!("{p}.frame[{}][{}]", k / 3, k % 3), *v)?;
+            }
+        }
+        frames::local(&p, r.frame, None)?;
+    }
+    Ok(())
+}
