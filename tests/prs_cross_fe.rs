@@ -5,7 +5,7 @@
 //! fixed–fixed, k = A·E·ℓ/(a·(ℓ − a)), a = stroke), `joint` elements of kind spherical
 //! (platform–link) and revolute (link–slider, axis along the revolute axis mᵢ), sliders supported
 //! in the joint frame with only the rail free — against the `prs_stiffness` model: the 6×6
-//! platform compliance (six unit load cases at P: the node compliance through `static`) and the
+//! platform compliance (the `static` case's `"compliance": [{"node": 0}]`) and the
 //! deformation under the published load (F = [100, 50, 50] kN in the platform frame,
 //! p_z = −400 mm, β = 0/5/10°). The joints tie by elimination (no penalty); the one stiff part is
 //! the platform, a star of beams 1e5 times stiffer than steel (a joint cannot tie a rigid-link
@@ -41,14 +41,11 @@ fn han() -> PrsStiffness {
     .unwrap()
 }
 
-/// Unit load magnitudes of the compliance load cases: 10 kN and 10 kN·m (= 1e7 N·mm).
-const UNIT_F: f64 = 1e4;
-const UNIT_M: f64 = 1e7;
 /// The platform's stiff beams: square side (mm) and Young's modulus (MPa).
 const PLAT_W: f64 = 600.0;
 const PLAT_E: f64 = 2.1e10;
 
-/// The frame case at p_z = −400 mm, ψ = 0, θ = β: six unit load cases at P, then the published load.
+/// The frame case at p_z = −400 mm, ψ = 0, θ = β: the published load at P and the compliance of P.
 fn frame_case(m: &PrsStiffness, beta: f64) -> Value {
     let round = |v: Vector3<f64>| -> [f64; 3] { [v[0], v[1], v[2]].map(|x| (x * 1e9).round() / 1e9) };
     let ps = m.at(-400.0, 0.0, beta, &Vector3::zeros()).unwrap();
@@ -101,17 +98,8 @@ fn frame_case(m: &PrsStiffness, beta: f64) -> Value {
         .chain((13..16).map(|n| json!({"node": n, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]})))
         .collect();
     let f = ps.state.r * Vector3::new(100e3, 50e3, 50e3);
-    let mut load_cases: Vec<Value> = ["Fx", "Fy", "Fz", "Mx", "My", "Mz"]
-        .iter()
-        .enumerate()
-        .map(|(k, name)| {
-            let mut w = [0.0; 6];
-            w[k] = if k < 3 { UNIT_F } else { UNIT_M };
-            json!({"name": format!("unit_{name}"), "forces": [{"node": 0, "F": w}]})
-        })
-        .collect();
     let [fx, fy, fz] = round(f);
-    load_cases.push(json!({"name": "han_table_iv", "forces": [{"node": 0, "F": [fx, fy, fz, 0.0, 0.0, 0.0]}]}));
+    let load_cases = vec![json!({"name": "han_table_iv", "forces": [{"node": 0, "F": [fx, fy, fz, 0.0, 0.0, 0.0]}]})];
     json!({
         "analysis": "static",
         "materials": {"steel": {"E": 210000.0, "nu": 0.3, "yield": 355.0, "allowable": 355.0}, "platform": {"E": PLAT_E, "nu": 0.3, "yield": 355.0, "allowable": 355.0}},
@@ -119,45 +107,41 @@ fn frame_case(m: &PrsStiffness, beta: f64) -> Value {
         "nodes": nodes,
         "elements": elements,
         "supports": supports,
-        "load_cases": load_cases
+        "load_cases": load_cases,
+        "compliance": [{"node": 0}]
     })
 }
 
-/// Platform-centre displacement [mm; rad] of each load case.
-fn run_frame(case: Value) -> Vec<Vector6<f64>> {
+/// Platform-centre displacement [mm; rad] under the load case and the node compliance of P
+/// (the case's `"compliance"` field: mm/N, rad/N, rad/(N·mm) blocks, global axes).
+fn run_frame(case: Value) -> (Vector6<f64>, Matrix6<f64>) {
     let parsed = flexfem::case::parse_value(case, None).unwrap();
     let out = flexfem::analysis::run(&parsed).unwrap();
-    out.json["load_cases"]
+    let d: Vec<f64> = out.json["load_cases"][0]["displacements"][0]
         .as_array()
         .unwrap()
         .iter()
-        .map(|lc| {
-            let d: Vec<f64> = lc["displacements"][0]
-                .as_array()
-                .unwrap()
-                .iter()
-                .map(|x| x.as_f64().unwrap())
-                .collect();
-            Vector6::new(
-                d[0],
-                d[1],
-                d[2],
-                d[3].to_radians(),
-                d[4].to_radians(),
-                d[5].to_radians(),
-            )
-        })
-        .collect()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    let c = &out.json["compliance"][0]["matrix"];
+    let c = Matrix6::from_fn(|i, j| c[i][j].as_f64().unwrap());
+    (
+        Vector6::new(
+            d[0],
+            d[1],
+            d[2],
+            d[3].to_radians(),
+            d[4].to_radians(),
+            d[5].to_radians(),
+        ),
+        c,
+    )
 }
 
 /// (compliance rel. diff, deformation rel. diff) of the frame case against `prs_stiffness`.
 fn compare(m: &PrsStiffness, beta: f64, case: Value) -> (f64, f64) {
     let ps = m.at(-400.0, 0.0, beta, &Vector3::zeros()).unwrap();
-    let d = run_frame(case);
-    let mut c_fe = Matrix6::zeros();
-    for (k, dk) in d.iter().take(6).enumerate() {
-        c_fe.set_column(k, &(dk / if k < 3 { UNIT_F } else { UNIT_M }));
-    }
+    let (d, c_fe) = run_frame(case);
     // Rotations count through ℓ = 1000 mm so that the mixed-unit blocks weigh alike.
     let ell = 1000.0;
     let s = Matrix6::from_diagonal(&Vector6::new(1.0, 1.0, 1.0, ell, ell, ell));
@@ -165,11 +149,11 @@ fn compare(m: &PrsStiffness, beta: f64, case: Value) -> (f64, f64) {
     let rel = (a - b).norm() / b.norm();
     let f = ps.state.r * Vector3::new(100e3, 50e3, 50e3);
     let want = ps.deformation(&Vector6::new(f[0], f[1], f[2], 0.0, 0.0, 0.0));
-    let rel_d = (d[6] - want).norm() / want.norm();
+    let rel_d = (d - want).norm() / want.norm();
     eprintln!(
         "β = {:.0}°: compliance rel. diff {rel:.2e}, deformation rel. diff {rel_d:.2e}, |δp| FE {:.6} mm, model {:.6} mm",
         beta.to_degrees(),
-        d[6].fixed_rows::<3>(0).norm(),
+        d.fixed_rows::<3>(0).norm(),
         want.fixed_rows::<3>(0).norm()
     );
     (rel, rel_d)
