@@ -12,7 +12,8 @@
 //! lateral compliance along the revolute axis at Bᵢ. What the rigid-body model leaves out: the
 //! rotational stiffness of the hinges about their compliant axes (revolute about mᵢ, the neck in
 //! all three rotations), which the FE carries in parallel with the leg chains, and the in-plane
-//! lateral and cross couplings of the legs, which the model takes as rigid/absent.
+//! lateral and cross couplings of the legs, which the model takes as rigid/absent. The rigid-body
+//! model is bundled as cases/prs_stiffness_ruiz2019_stage.json (home pose, a tilted pose, a ±5° map).
 
 use flexfem::case::{self, Case};
 use flexfem::kinematics::prs_stiffness::{Branch, LegModel, PrsLayout, PrsStiffness};
@@ -53,6 +54,7 @@ fn beam_compliance(l: f64, e: f64, nu: f64, w: f64, h: f64) -> Matrix6<f64> {
 }
 
 struct Cross {
+    layout: (f64, f64, f64, f64, f64),
     c_fe: Matrix6<f64>,
     c_rb: Matrix6<f64>,
     actuation: Vec<f64>,
@@ -127,6 +129,7 @@ fn cross_check(release: f64) -> Cross {
         ps.state.s
     );
     Cross {
+        layout: (prs.a, prs.b, prs.l, prs.gamma.to_degrees(), prs.z0),
         c_fe,
         c_rb: ps.compliance,
         actuation,
@@ -153,6 +156,7 @@ fn ratios(x: &Cross, fe: &Matrix6<f64>) -> [f64; 6] {
 #[test]
 fn stage_prs_stiffness_against_stage_fe() {
     let x = cross_check(0.0);
+    eprintln!("layout (a, b, L, γ°, z0) {:?}", x.layout);
     eprintln!(
         "actuation chain {:?} N/mm, constraint chain {:?} N/mm",
         x.actuation, x.constraint
@@ -200,5 +204,32 @@ fn stage_with_released_hinges_matches_in_z() {
             "direction {i}: model/FE = {} (measured {want})",
             r[i]
         );
+    }
+}
+
+/// The bundled case cases/prs_stiffness_ruiz2019_stage.json is this cross-check's rigid-body
+/// model: the stage's layout (a, b, L, γ, home height) and the chain stiffnesses derived above,
+/// to 1e-12 relative.
+#[test]
+fn bundled_stage_case_holds_the_derived_chains() {
+    let x = cross_check(0.0);
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/cases/prs_stiffness_ruiz2019_stage.json");
+    let v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let close = |got: &serde_json::Value, want: f64, what: &str| {
+        let g = got.as_f64().unwrap_or(f64::NAN);
+        assert!(
+            (g - want).abs() <= 1e-12 * want.abs().max(1.0),
+            "{what}: case {g}, derived {want}"
+        );
+    };
+    let (a, b, l, gamma_deg, z0) = x.layout;
+    close(&v["mechanism"]["a"], a, "a");
+    close(&v["mechanism"]["b"], b, "b");
+    close(&v["mechanism"]["L"], l, "L");
+    close(&v["mechanism"]["gamma_deg"], gamma_deg, "gamma_deg");
+    close(&v["poses"][0]["pz"], z0, "pz");
+    for k in 0..3 {
+        close(&v["legs"]["actuation"][k], x.actuation[k], "actuation");
+        close(&v["legs"]["constraint"][k], x.constraint[k], "constraint");
     }
 }
