@@ -450,7 +450,7 @@ fn path_resolves(doc: &Value, path: &str) -> bool {
 /// Fields whose `null` in a result means "not applicable" or "unbounded" by design (an `Option`,
 /// or a documented `null` for an unlimited quantity); any other `null` in a result is a NaN or
 /// an infinity that serde_json wrote as `null`.
-const OPTIONAL_RESULT_FIELDS: [&str; 13] = [
+const OPTIONAL_RESULT_FIELDS: [&str; 14] = [
     "max_von_mises",
     "element_von_mises",
     "rotation_at_allowable_deg",
@@ -464,6 +464,8 @@ const OPTIONAL_RESULT_FIELDS: [&str; 13] = [
     "max_rotation_deg",
     "T",
     "factor_at_allowable",
+    // A static hinge's rotation left to the allowable: null when unbounded (no stress).
+    "remaining_rotation_deg",
 ];
 
 /// Is a `null` at `path` (ending in `key`) one of the documented ones?

@@ -169,48 +169,67 @@ fn pivot_spread(spec: &HingeSpec) -> f64 {
 /// Parallelogram guide at a 1 mm stroke, geometrically nonlinear: the parasitic drop of the
 /// moving bar.
 ///
-/// Physical expectation: the linkage's L − √(L² − δ²) (each leg a rigid link between pivots at
-/// the notch centres), slightly less because a notch turns its leg over a few millimetres, not
-/// at a point: with θ(s) = θ₀·f(s) through a hinge (f the running fraction of its compliant-axis
-/// compliance), δ = θ₀L is unchanged but ½∫θ² ds shrinks by the factor 1 − 2·∫f(1 − f)ds / L
-/// (the "refined linkage": −1.45 % at L = 100 mm, −2.9 % at 50 mm).
+/// Reference: the linkage's L − √(L² − δ²) (each leg a rigid link between pivots at the notch
+/// centres), within 2 % (the must-show) for the bundled L = 100 mm. The remainder is physical: a
+/// notch turns its leg over a few millimetres, not at a point. With θ(s) = θ₀·f(s) through a
+/// hinge (f the running fraction of its compliant-axis compliance), δ = θ₀L is unchanged but
+/// ½∫θ² ds shrinks by the factor 1 − 2·∫f(1 − f)ds / L (the "refined linkage": −1.45 % at
+/// L = 100 mm, −2.9 % at 50 mm); the FE drop is asserted within 0.5 % (L = 100) and 1 %
+/// (L = 50) of that. Measured with 8 segments per hinge: −1.69 % / −0.25 % (L = 100),
+/// −3.58 % / −0.71 % (L = 50) against the linkage / refined linkage.
 ///
-/// What the `hinge` element gives: it is ONE co-rotational flexibility element, whose
-/// deformation is measured from its chord; the chord's length stays fixed to first order, so
-/// the far end sits on a chord turned by θ/2 instead of a blank turned by θ about the notch
-/// centre, and the leg drops as a point-pivot linkage of length L − L_e/2 (L_e = 15 mm, the
-/// element length): δ²/(2L)·(1 − L_e/(2L)), 7.5 % short at L = 100 mm, 15 % at 50 mm. This
-/// test pins that shortfall (within 0.5 %) and prints the refined linkage beside it; the
-/// must-show "within 2 % of the linkage" needs the element subdivided along the notch (a chain
-/// of segment flexibilities, as the `hinge` analysis's large-rotation curve uses: 1.58 % short
-/// at L = 100 mm, 0.13 % from the refined linkage), and then this assertion changes to the
-/// refined linkage.
+/// With ONE co-rotational segment per hinge the drop is that of a point-pivot linkage of length
+/// L − L_e/2 (the element measures deformation from its chord, whose length stays fixed to first
+/// order: 7.6 % short at L = 100 mm); asserted within 0.5 % of that chord model, so the warning
+/// the static analysis gives for single-segment hinges in nonlinear runs stays true.
 #[test]
-fn parallelogram_parasitic_drop_single_element_shortfall() {
+fn parallelogram_parasitic_drop() {
     let spec = para_spec();
     let spread = pivot_spread(&spec);
-    for l in [PARA_LEG, 50.0] {
-        let mut case = parallelogram(l);
+    let drop_at = |l: f64, segments: Option<usize>| {
+        let mut case = parallelogram_case();
+        case.as_object_mut().unwrap().shift_remove("mesh");
+        let mut mesh = parallelogram_mesh_with(l);
+        for e in mesh["elements"].as_array_mut().unwrap() {
+            if e["type"] == "hinge" {
+                match segments {
+                    Some(n) => e["segments"] = json!(n),
+                    None => {
+                        e.as_object_mut().unwrap().shift_remove("segments");
+                    }
+                }
+            }
+        }
+        let mut case = inline(&mesh, case);
         case["nonlinear"] = json!(true);
         case["steps"] = json!(4);
         let res = run_value(&case);
         let d = disp(&res, 1, PARA_BAR_NODE);
         assert!((d[0] - 1.0).abs() < 1e-12);
-        let drop = -d[1];
+        -d[1]
+    };
+    for (l, tol_refined) in [(PARA_LEG, 5e-3), (50.0, 1e-2)] {
         let linkage = l - (l * l - 1.0).sqrt();
         let refined = linkage * (1.0 - 2.0 * spread / l);
-        let chord = linkage * (1.0 - PARA_HINGE_LEN / (2.0 * l));
+        let drop = drop_at(l, Some(PARA_SEGMENTS));
         let rel = |x: f64| drop / x - 1.0;
         eprintln!(
-            "parallelogram L = {l}, drop at 1 mm: FE {drop:.6e} mm; linkage {linkage:.6e} ({:+.4e}); refined {refined:.6e} (∫f(1−f) = {spread:.4} mm, {:+.4e}); single-element chord model {chord:.6e} ({:+.4e})",
+            "parallelogram L = {l}, drop at 1 mm: FE {drop:.6e} mm; linkage {linkage:.6e} ({:+.4e}); refined {refined:.6e} (∫f(1−f) = {spread:.4} mm, {:+.4e})",
             rel(linkage),
-            rel(refined),
-            rel(chord)
+            rel(refined)
         );
+        if l == PARA_LEG {
+            assert!(rel(linkage).abs() < 0.02, "L = {l}: drop {drop} vs linkage {linkage}");
+        }
         assert!(
-            rel(chord).abs() < 5e-3,
-            "L = {l}: drop {drop} vs chord model {chord} ({:+.3e})",
-            rel(chord)
+            rel(refined).abs() < tol_refined,
+            "L = {l}: drop {drop} vs refined {refined}"
+        );
+        let single = drop_at(l, None);
+        let chord = linkage * (1.0 - PARA_HINGE_LEN / (2.0 * l));
+        assert!(
+            (single / chord - 1.0).abs() < 5e-3,
+            "L = {l}: single-segment drop {single} vs chord model {chord}"
         );
     }
 }

@@ -2,8 +2,10 @@
 
 use super::{AnalysisError, Report, RunError};
 use crate::case::design::{DesignCase, SensitivityCase};
+use crate::case::stage::stage_warnings;
 use crate::report::markdown::{sig, Table};
 use crate::stage::sizing::{self as stage_design, DesignOutcome, Responses, SensitivityRow, PARAMETERS};
+use crate::stage::StageDesign;
 use serde::Serialize;
 
 /// Result of `sensitivity`.
@@ -21,11 +23,20 @@ pub struct SensitivityResult {
 
 /// Runs a `sensitivity` case.
 pub fn run_sensitivity(c: &SensitivityCase) -> Result<SensitivityResult, RunError> {
-    let d = c.validate()?;
-    let demand = stage_design::rotation_demand(&d, c.z_travel, c.tilt_deg.to_radians())
+    run_sensitivity_warned(c).map(|(r, _)| r)
+}
+
+/// Runs a `sensitivity` case, with the calibration warnings of the validated stage design.
+pub fn run_sensitivity_warned(c: &SensitivityCase) -> Result<(SensitivityResult, Vec<String>), RunError> {
+    let v = c.validated()?;
+    Ok((sensitivity_of(c, v.design())?, stage_warnings(&v)))
+}
+
+fn sensitivity_of(c: &SensitivityCase, d: &StageDesign) -> Result<SensitivityResult, RunError> {
+    let demand = stage_design::rotation_demand(d, c.z_travel, c.tilt_deg.to_radians())
         .map_err(|e| AnalysisError::new("stage", e.to_string()))?;
     let (base, rows) =
-        stage_design::sensitivity(&d, c.increment, &demand).map_err(|m| AnalysisError::new("sensitivity", m))?;
+        stage_design::sensitivity(d, c.increment, &demand).map_err(|m| AnalysisError::new("sensitivity", m))?;
     Ok(SensitivityResult {
         base,
         increment: c.increment,
@@ -106,7 +117,13 @@ pub struct DesignResult {
 
 /// Runs a `design` case.
 pub fn run_design(c: &DesignCase) -> Result<DesignResult, RunError> {
-    let (d, bounds, req) = c.validate()?;
+    run_design_warned(c).map(|(r, _)| r)
+}
+
+/// Runs a `design` case, with the calibration warnings of the hinges of the design found
+/// (derived from the validated base design with the found parameters).
+pub fn run_design_warned(c: &DesignCase) -> Result<(DesignResult, Vec<String>), RunError> {
+    let (d, bounds, req) = c.validated()?;
     let out: DesignOutcome =
         stage_design::optimise(&d, &bounds, &req, c.samples).map_err(|m| AnalysisError::new("design", m))?;
     let message = if out.meets {
@@ -128,7 +145,14 @@ pub fn run_design(c: &DesignCase) -> Result<DesignResult, RunError> {
         })
     };
     let dm = out.demand;
-    Ok(DesignResult {
+    let warnings = stage_design::with_params(&d, &out.params)
+        .validate()
+        .map(|found| stage_warnings(&found))
+        .unwrap_or_default()
+        .into_iter()
+        .map(|w| format!("design found, {w}"))
+        .collect();
+    let r = DesignResult {
         design: PARAMETERS
             .iter()
             .zip(out.params)
@@ -142,7 +166,8 @@ pub fn run_design(c: &DesignCase) -> Result<DesignResult, RunError> {
         rotation_demand_deg: [dm.revolute, dm.spherical_m, dm.spherical_n, dm.spherical_l].map(f64::to_degrees),
         evaluations: out.evaluations,
         history: out.history,
-    })
+    };
+    Ok((r, warnings))
 }
 
 /// Markdown/CSV of a design result.

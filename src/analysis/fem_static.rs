@@ -416,8 +416,9 @@ pub fn hinge_row(
     use nalgebra::Vector3;
     let err = |e: fem::FemError| AnalysisError::new(format!("elements[{}]", h.case_element), e.to_string());
     let (lam, _) = model.element_frame(h.element).map_err(err)?;
-    let nodes = match &model.elements[h.element] {
-        fem::Element::Flex(f) => f.nodes,
+    // A hinge of several segments runs from the first segment's node a to the last one's b.
+    let nodes = match (&model.elements[h.element], &model.elements[h.last]) {
+        (fem::Element::Flex(f), fem::Element::Flex(g)) => [f.nodes[0], g.nodes[1]],
         _ => {
             return Err(AnalysisError::new(
                 format!("elements[{}]", h.case_element),
@@ -439,7 +440,10 @@ pub fn hinge_row(
     };
     let ey = Vector3::new(lam[(1, 0)], lam[(1, 1)], lam[(1, 2)]);
     let rotation_deg = ey.dot(&rel).to_degrees();
-    let sf = c.elements[h.element].section_forces;
+    let sf = [
+        c.elements[h.element].section_forces[0],
+        c.elements[h.last].section_forces[1],
+    ];
     let peak = h.region.peak_stress(&sf);
     Ok(HingeRow {
         element: h.case_element,

@@ -4,7 +4,7 @@ use super::Report;
 use crate::case::hinge::{hinge_error, HingeCase};
 use crate::case::CaseError;
 use crate::fem::{Element, FlexElement, LoadCase, Model, Support};
-use crate::hinge::{characterise, segment_compliance, HingeResult};
+use crate::hinge::{characterise, HingeResult};
 use crate::material::Material;
 use crate::report::markdown::{sig, Table};
 use serde::Serialize;
@@ -77,28 +77,17 @@ fn large_rotation(
         .hinge
         .profile()
         .map_err(|e| super::RunError::Case(hinge_error(&e, "hinge", "material")))?;
-    let (half, hn) = (profile.half_length(), profile.half_notch);
-    let mut xs = vec![-half];
-    if profile.blank > 0.0 {
-        xs.push(-hn);
-    }
     let n = 16;
-    for k in 1..=n {
-        xs.push(-hn + 2.0 * hn * k as f64 / n as f64);
-    }
-    if profile.blank > 0.0 {
-        xs.push(half);
-    }
+    let (xs, chain) = crate::hinge::flex_chain(&profile, m, n);
     let mut model = Model::new();
     for &x in &xs {
         model.add_node([x, 0.0, 0.0]);
     }
     let first_notch = usize::from(profile.blank > 0.0);
-    for (i, w) in xs.windows(2).enumerate() {
-        let c = segment_compliance(&profile, m, w[0], w[1]);
+    for (i, compliance) in chain.into_iter().enumerate() {
         model.add_element(Element::Flex(FlexElement {
             nodes: [i, i + 1],
-            compliance: std::array::from_fn(|a| std::array::from_fn(|b| c[(a, b)])),
+            compliance,
             up: [0.0, 0.0, 1.0],
         }));
     }
@@ -175,7 +164,7 @@ fn large_rotation(
     Ok(LargeRotation {
         load: format!(
             "transverse end force (fixed direction) at the blank end face, {:.3} mm from the notch centre; clamped opposite face; 16 co-rotational flexibility elements over the notch",
-            half
+            profile.half_length()
         ),
         points,
         rotation_at_allowable_deg,

@@ -6,7 +6,7 @@
 //! Adding an analysis kind: a module implementing [`Analysis`] and one line in the registry.
 
 use super::{Files, Report, RunError};
-use crate::case::{Case, CaseError, MaterialSpec};
+use crate::case::{Case, CaseError, MaterialSpec, OfCase};
 use crate::fem::SolverCache;
 use crate::material::Material;
 use serde::Serialize;
@@ -43,13 +43,15 @@ pub type UsedMaterial = (String, MaterialSpec, Material);
 pub trait Analysis: 'static {
     /// The `analysis` name in case files.
     const KIND: &'static str;
-    /// The parsed case (a serde shape of [`crate::case`]).
-    type Case;
+    /// The parsed case (a serde shape of [`crate::case`], one variant of [`Case`]).
+    type Case: OfCase;
     /// The typed result; its JSON is the `result.json` of a run and the `result` of a sweep line.
     type Result: Serialize;
 
     /// The case of this kind inside a parsed case file, if it is one.
-    fn case(case: &Case) -> Option<&Self::Case>;
+    fn case(case: &Case) -> Option<&Self::Case> {
+        Self::Case::of_case(case)
+    }
     /// Validates the case (everything checked before solving).
     fn check(case: &Self::Case) -> Result<(), CaseError>;
     /// Validates and runs the case; extra files and run warnings go into `ctx`.

@@ -3,7 +3,7 @@
 
 use super::kind::{Analysis, Ctx, SweepFile, UsedMaterial};
 use super::{design, fem_static, fem_vs_fkp, hinge, kinematics, modal, stage, stage_report, warn, Report, RunError};
-use crate::case::{self, Case, CaseError, MaterialSpec};
+use crate::case::{self, CaseError, MaterialSpec};
 
 fn one_material(spec: &MaterialSpec) -> Vec<UsedMaterial> {
     spec.resolve("material")
@@ -33,12 +33,6 @@ impl Analysis for Kinematics {
     type Case = case::kinematics::KinematicsCase;
     type Result = kinematics::KinematicsResult;
 
-    fn case(case: &Case) -> Option<&Self::Case> {
-        match case {
-            Case::Kinematics(c) => Some(c),
-            _ => None,
-        }
-    }
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.validate().map(|_| ())
     }
@@ -59,12 +53,6 @@ impl Analysis for Hinge {
     type Case = case::hinge::HingeCase;
     type Result = hinge::HingeOut;
 
-    fn case(case: &Case) -> Option<&Self::Case> {
-        match case {
-            Case::Hinge(c) => Some(c),
-            _ => None,
-        }
-    }
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.validate().map(|_| ())
     }
@@ -94,12 +82,6 @@ impl Analysis for Stage {
     type Case = case::stage::StageCase;
     type Result = stage::StageResult;
 
-    fn case(case: &Case) -> Option<&Self::Case> {
-        match case {
-            Case::Stage(c) => Some(c),
-            _ => None,
-        }
-    }
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.validate().map(|_| ())
     }
@@ -153,12 +135,6 @@ impl Analysis for FemVsFkp {
     type Case = case::stage::FemVsFkpCase;
     type Result = fem_vs_fkp::FemVsFkpResult;
 
-    fn case(case: &Case) -> Option<&Self::Case> {
-        match case {
-            Case::FemVsFkp(c) => Some(c),
-            _ => None,
-        }
-    }
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.validate().map(|_| ())
     }
@@ -187,23 +163,16 @@ impl Analysis for Sensitivity {
     type Case = case::design::SensitivityCase;
     type Result = design::SensitivityResult;
 
-    fn case(case: &Case) -> Option<&Self::Case> {
-        match case {
-            Case::Sensitivity(c) => Some(c),
-            _ => None,
-        }
-    }
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.validate().map(|_| ())
     }
-    fn run(case: &Self::Case, _ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        design::run_sensitivity(case)
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        let (r, warnings) = design::run_sensitivity_warned(case)?;
+        ctx.warnings = warnings;
+        Ok(r)
     }
     fn report(r: &Self::Result) -> Report {
         design::sensitivity_report(r)
-    }
-    fn case_warnings(case: &Self::Case) -> Vec<String> {
-        case.validate().map(|d| warn::stage_warnings(&d)).unwrap_or_default()
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         one_material(&case.material)
@@ -218,23 +187,16 @@ impl Analysis for Design {
     type Case = case::design::DesignCase;
     type Result = design::DesignResult;
 
-    fn case(case: &Case) -> Option<&Self::Case> {
-        match case {
-            Case::Design(c) => Some(c),
-            _ => None,
-        }
-    }
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.validate().map(|_| ())
     }
-    fn run(case: &Self::Case, _ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        design::run_design(case)
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        let (r, warnings) = design::run_design_warned(case)?;
+        ctx.warnings = warnings;
+        Ok(r)
     }
     fn report(r: &Self::Result) -> Report {
         design::design_report(r)
-    }
-    fn result_warnings(case: &Self::Case, r: &Self::Result) -> Vec<String> {
-        warn::design_warnings(case, r)
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         one_material(&case.material)
@@ -249,12 +211,6 @@ impl Analysis for Static {
     type Case = case::mesh::StaticCase;
     type Result = fem_static::StaticResult;
 
-    fn case(case: &Case) -> Option<&Self::Case> {
-        match case {
-            Case::Static(c) => Some(c),
-            _ => None,
-        }
-    }
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.model.build().map(|_| ())
     }
@@ -274,6 +230,7 @@ impl Analysis for Static {
         }
         ctx.warnings = if case.nonlinear {
             let mut w = warn::stretch_warnings(&model, &r);
+            w.extend(warn::single_segment_hinge_warnings(&hinges));
             w.extend(stability(
                 r.load_cases
                     .iter()
@@ -301,12 +258,6 @@ impl Analysis for Modal {
     type Case = case::mesh::ModalCase;
     type Result = modal::ModalResult;
 
-    fn case(case: &Case) -> Option<&Self::Case> {
-        match case {
-            Case::Modal(c) => Some(c),
-            _ => None,
-        }
-    }
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case::limits::check_modal(case.modes, case.model.nodes.len())?;
         case.model.build_model(false).map(|_| ())
@@ -344,12 +295,6 @@ impl Analysis for SweepKind {
     type Case = case::sweep::SweepCase;
     type Result = ();
 
-    fn case(case: &Case) -> Option<&Self::Case> {
-        match case {
-            Case::Sweep(c) => Some(c),
-            _ => None,
-        }
-    }
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.build().map(|_| ())
     }

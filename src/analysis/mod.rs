@@ -9,14 +9,15 @@ pub mod kind;
 pub mod kinds;
 pub mod kinematics;
 pub mod modal;
-pub mod pantilt;
-pub mod prs_stiffness;
 pub mod registry;
 pub mod stage;
 pub mod stage_report;
 pub mod sweep_plot;
 pub mod vtu;
 pub mod warn;
+
+use registry::analysis_modules;
+crate::case::kinds::analyses!(analysis_modules);
 
 pub use kind::{Analysis, Ctx, DynAnalysis};
 pub use warn::{hinge_warnings, SMALL_STRAIN};

@@ -1,22 +1,29 @@
-//! The analysis kinds this build runs: one line each.
+//! The analysis kinds this build runs, generated from the one list of kinds,
+//! [`crate::case::kinds`] (a line there registers a kind on both sides).
 
 use super::kind::{DynAnalysis, Entry};
-use super::kinds;
+#[allow(unused_imports)]
+use super::*;
 
-/// Every analysis kind, in the order of [`crate::case::ANALYSES`].
-pub static REGISTRY: &[&dyn DynAnalysis] = &[
-    &Entry::<kinds::Kinematics>::new(),
-    &Entry::<kinds::Hinge>::new(),
-    &Entry::<kinds::Stage>::new(),
-    &Entry::<kinds::FemVsFkp>::new(),
-    &Entry::<kinds::Sensitivity>::new(),
-    &Entry::<kinds::Design>::new(),
-    &Entry::<kinds::Static>::new(),
-    &Entry::<kinds::Modal>::new(),
-    &Entry::<kinds::SweepKind>::new(),
-    &Entry::<super::pantilt::PanTiltKind>::new(),
-    &Entry::<super::prs_stiffness::PrsStiffnessAnalysis>::new(),
-];
+/// Expands the list of kinds on the `analysis` side: the registry.
+macro_rules! analysis_side {
+    ($($(#[$attr:meta])* $variant:ident = $name:literal #$rank:literal, $(mod $module:ident,)? case $shape:path, parse $parse:path, analysis $analysis:path;)*) => {
+        /// Every analysis kind, in the order of the list of kinds (the order of
+        /// [`crate::case::Case`]'s variants).
+        pub static REGISTRY: &[&dyn DynAnalysis] = &[$(&Entry::<$analysis>::new()),*];
+    };
+}
+
+/// Expands the list of kinds into the declarations of the analysis modules its `mod` lines
+/// name (`src/analysis/NAME.rs`).
+macro_rules! analysis_modules {
+    ($($(#[$attr:meta])* $variant:ident = $name:literal #$rank:literal, $(mod $module:ident,)? case $shape:path, parse $parse:path, analysis $analysis:path;)*) => {
+        $($(pub mod $module;)?)*
+    };
+}
+pub(crate) use analysis_modules;
+
+crate::case::kinds::analyses!(analysis_side);
 
 /// The registered analysis of `kind`, if any.
 pub fn find(kind: &str) -> Option<&'static dyn DynAnalysis> {

@@ -272,6 +272,14 @@ pub fn run_stage_with(
             ));
         }
     }
+    if files {
+        // The same model as a `static` case (none with ideal joints, see StageModel::mesh_case).
+        if let Some(mesh) = s.mesh_case(&user, case.nonlinear_steps()) {
+            let text = serde_json::to_string_pretty(&mesh)
+                .map_err(|e| AnalysisError::new("stage", format!("stage_mesh.json: {e}")))?;
+            out_files.push(("stage_mesh.json".to_string(), text.into_bytes()));
+        }
+    }
     let mut model = model_notes(&s);
     if let Some(steps) = case.nonlinear_steps() {
         model[0] = format!("load cases: geometrically nonlinear statics (co-rotational legs and hinges, rigid platform exact under finite rotation, Newton-Raphson in {steps} load steps); stiffness_z, at_allowable and platform_stiffness stay linear");

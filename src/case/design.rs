@@ -6,7 +6,7 @@ use super::error::{check, CaseError};
 use super::material::MaterialSpec;
 use super::stage::StageSpec;
 use crate::stage::sizing::{self as stage_design, Requirements, PARAMETERS};
-use crate::stage::StageDesign;
+use crate::stage::{StageDesign, ValidStage};
 use serde::Deserialize;
 
 /// `"analysis": "sensitivity"`.
@@ -137,8 +137,14 @@ fn check_loop_design(d: &StageDesign) -> Result<(), CaseError> {
 impl SensitivityCase {
     /// Validates before solving.
     pub fn validate(&self) -> Result<StageDesign, CaseError> {
-        let d = self.stage.design(&self.material)?;
-        check_loop_design(&d)?;
+        self.validated().map(ValidStage::into_design)
+    }
+
+    /// Validates before solving, keeping the validated design.
+    pub fn validated(&self) -> Result<ValidStage, CaseError> {
+        let v = self.stage.valid_design(&self.material)?;
+        let d = v.design();
+        check_loop_design(d)?;
         if !(self.increment.is_finite() && self.increment > 0.0 && self.increment <= 2.0) {
             return Err(CaseError::value(
                 "increment",
@@ -147,11 +153,11 @@ impl SensitivityCase {
             ));
         }
         // The increased design must still be buildable.
-        let p = stage_design::params_of(&d).map_err(|m| CaseError::new("stage", m))?;
+        let p = stage_design::params_of(d).map_err(|m| CaseError::new("stage", m))?;
         for (k, name) in PARAMETERS.iter().enumerate() {
             let mut q = p;
             q[k] *= 1.0 + self.increment;
-            stage_design::with_params(&d, &q).validate().map_err(|e| {
+            stage_design::with_params(d, &q).validate().map_err(|e| {
                 CaseError::value(
                     "increment",
                     self.increment,
@@ -161,14 +167,19 @@ impl SensitivityCase {
         }
         check::positive("z_travel", self.z_travel, "mm")?;
         check::within("tilt_deg", self.tilt_deg, 0.0, 10.0, "degrees")?;
-        Ok(d)
+        Ok(v)
     }
 }
 
 impl DesignCase {
     /// Validates before solving.
     pub fn validate(&self) -> Result<(StageDesign, [[f64; 2]; 5], Requirements), CaseError> {
-        let d = self.stage.design(&self.material)?;
+        self.validated().map(|(v, b, r)| (v.into_design(), b, r))
+    }
+
+    /// Validates before solving, keeping the validated design.
+    pub fn validated(&self) -> Result<(ValidStage, [[f64; 2]; 5], Requirements), CaseError> {
+        let d = self.stage.valid_design(&self.material)?;
         check_loop_design(&d)?;
         let r = &self.requirements;
         check::positive("requirements.z_travel", r.z_travel, "mm")?;

@@ -47,6 +47,8 @@ fn shapes_default() -> bool {
 #[serde(deny_unknown_fields)]
 #[schemars(extend("allOf" = model_rules(true)))]
 pub struct StaticCase {
+    /// Free text saying what the model is (not used by the analysis).
+    pub description: Option<String>,
     /// Path of a JSON mesh file (relative to the case file's folder, then to the working folder)
     /// holding `materials`, `sections`, `nodes`, `elements`, `supports` and optionally `load_cases`.
     pub mesh: Option<String>,
@@ -106,6 +108,8 @@ fn model_rules(need_loads: bool) -> serde_json::Value {
 #[serde(deny_unknown_fields)]
 struct StaticOptions {
     #[serde(default)]
+    description: Option<String>,
+    #[serde(default)]
     mesh: Option<String>,
     #[serde(default)]
     gmsh: Option<GmshMapping>,
@@ -147,7 +151,16 @@ const MODEL_FIELDS: [&str; 7] = [
     "load_cases",
 ];
 
-const STATIC_OWN: [&str; 7] = ["analysis", "mesh", "gmsh", "nonlinear", "steps", "output", "compliance"];
+const STATIC_OWN: [&str; 8] = [
+    "analysis",
+    "description",
+    "mesh",
+    "gmsh",
+    "nonlinear",
+    "steps",
+    "output",
+    "compliance",
+];
 const MODAL_OWN: [&str; 6] = ["analysis", "mesh", "gmsh", "modes", "shift_hz", "shapes"];
 
 /// Splits a case object into its options (the fields in `own`) and its model (the rest).
@@ -175,6 +188,7 @@ pub fn parse_static(value: Value, base: Option<&Path>) -> Result<StaticCase, Cas
     let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
     super::mesh::requests::check_compliance(&o.compliance, model.nodes.len())?;
     Ok(StaticCase {
+        description: o.description,
         mesh: o.mesh,
         gmsh: o.gmsh,
         model,

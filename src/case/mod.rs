@@ -9,85 +9,24 @@ pub mod error;
 pub mod fem_case;
 pub mod gmsh;
 pub mod hinge;
+pub mod kinds;
 pub mod kinematics;
 pub mod limits;
 pub mod material;
 pub mod mesh;
-pub mod pantilt;
-pub mod prs_stiffness;
 pub mod stage;
 pub mod sweep;
 
 pub use error::CaseError;
+use kinds::case_side;
+pub use kinds::OfCase;
 pub use material::MaterialSpec;
 
 use serde::de::DeserializeOwned;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
-/// A parsed case file (not yet validated).
-#[derive(Debug, Clone, schemars::JsonSchema)]
-#[serde(tag = "analysis", rename_all = "snake_case")]
-pub enum Case {
-    /// 3-PRS rigid-body kinematics.
-    Kinematics(kinematics::KinematicsCase),
-    /// Linear (or nonlinear) statics of a generic beam model.
-    Static(fem_case::StaticCase),
-    /// One flexure hinge in its blank.
-    Hinge(hinge::HingeCase),
-    /// Batch runs over a base case.
-    Sweep(sweep::SweepCase),
-    /// The monolithic 3-PRS compliant stage.
-    Stage(stage::StageCase),
-    /// FEM versus rigid-body forward kinematics.
-    FemVsFkp(stage::FemVsFkpCase),
-    /// Sensitivities of the stage design to its hinge parameters (the design guidelines of
-    /// Table 1 of Ruiz et al. (2019), 3-PRS compliant parallel stage).
-    Sensitivity(design::SensitivityCase),
-    /// Requirement-driven sizing of the stage hinges.
-    Design(design::DesignCase),
-    /// Natural frequencies and mode shapes of a generic beam/shell model.
-    Modal(fem_case::ModalCase),
-    /// Pseudo-rigid-body model of the 8R compliant parallel pan-tilt (Yu, Lu and Hao (2016)).
-    #[serde(rename = "pantilt")]
-    PanTilt(pantilt::PanTiltCase),
-    /// Jacobian stiffness of a 3-PRS with compliant legs.
-    PrsStiffness(prs_stiffness::PrsStiffnessCase),
-}
-
-/// The `analysis` names this build understands.
-pub const ANALYSES: &[&str] = &[
-    "kinematics",
-    "hinge",
-    "stage",
-    "fem_vs_fkp",
-    "sensitivity",
-    "design",
-    "static",
-    "modal",
-    "sweep",
-    "pantilt",
-    "prs_stiffness",
-];
-
-impl Case {
-    /// The `analysis` name.
-    pub fn analysis(&self) -> &'static str {
-        match self {
-            Case::Kinematics(_) => "kinematics",
-            Case::Static(_) => "static",
-            Case::Hinge(_) => "hinge",
-            Case::Sweep(_) => "sweep",
-            Case::Stage(_) => "stage",
-            Case::FemVsFkp(_) => "fem_vs_fkp",
-            Case::Sensitivity(_) => "sensitivity",
-            Case::Design(_) => "design",
-            Case::Modal(_) => "modal",
-            Case::PanTilt(_) => "pantilt",
-            Case::PrsStiffness(_) => "prs_stiffness",
-        }
-    }
-}
+kinds::analyses!(case_side);
 
 /// Deserialises `value` into `T`, turning serde errors into [`CaseError`]s under `prefix`.
 pub fn from_value<T: DeserializeOwned>(value: Value, prefix: &str) -> Result<T, CaseError> {
@@ -184,24 +123,13 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
             ))
         }
     };
-    match analysis.as_str() {
-        "kinematics" => Ok(Case::Kinematics(from_value(value, "")?)),
-        "hinge" => Ok(Case::Hinge(from_value(value, "")?)),
-        "sweep" => Ok(Case::Sweep(from_value(value, "")?)),
-        "stage" => Ok(Case::Stage(from_value(value, "")?)),
-        "fem_vs_fkp" => Ok(Case::FemVsFkp(from_value(value, "")?)),
-        "sensitivity" => Ok(Case::Sensitivity(from_value(value, "")?)),
-        "design" => Ok(Case::Design(from_value(value, "")?)),
-        "pantilt" => Ok(Case::PanTilt(from_value(value, "")?)),
-        "prs_stiffness" => Ok(Case::PrsStiffness(from_value(value, "")?)),
-        "static" => Ok(Case::Static(fem_case::parse_static(value, base)?)),
-        "modal" => Ok(Case::Modal(fem_case::parse_modal(value, base)?)),
-        other => Err(CaseError::value(
+    parse_kind(&analysis, value, base).unwrap_or_else(|| {
+        Err(CaseError::value(
             "analysis",
-            format!("\"{other}\""),
+            format!("\"{analysis}\""),
             format!("must be one of {}", ANALYSES.join(", ")),
-        )),
-    }
+        ))
+    })
 }
 
 /// Refuses an array where the case schema allows only an object.

@@ -17,6 +17,7 @@
 //! * [`spreading_region`] + [`flex_region`]: the shortest region that still holds the whole
 //!   load-spreading zone, as the stage uses for its revolute and spherical joints.
 //! * [`HingeRegion::peak_stress`]: peak von Mises stress from the end section forces.
+//! * [`flex_chain`]: a hinge in its blank as a chain of flexibility segments (finite rotations).
 
 use super::profile::{Contour, Profile};
 use super::{error::geom, profile_stiffness, stress, HingeError, HingeSpec, Stiffness};
@@ -111,6 +112,33 @@ pub fn hinge_element(spec: &HingeSpec, material: &Material, length: f64) -> Resu
     }
     let blank = (0.5 * length - notch.half_notch).max(0.0);
     flex_region(&spec.profile_with_blank(Some(blank))?, material)
+}
+
+/// A hinge in its blank as a chain of flexibility segments along x, for finite-rotation
+/// models (a co-rotational element per segment): the stations x (from −half-length: the blank
+/// on each side as one segment when there is blank, the notch in `n` equal segments) and the
+/// 6×6 compliance of each sub-interval between consecutive stations
+/// ([`super::segment_compliance`], hinge axes, see the module docs).
+pub fn flex_chain(profile: &Profile, material: &Material, n: usize) -> (Vec<f64>, Vec<[[f64; 6]; 6]>) {
+    let (half, hn) = (profile.half_length(), profile.half_notch);
+    let mut xs = vec![-half];
+    if profile.blank > 0.0 {
+        xs.push(-hn);
+    }
+    for k in 1..=n {
+        xs.push(-hn + 2.0 * hn * k as f64 / n as f64);
+    }
+    if profile.blank > 0.0 {
+        xs.push(half);
+    }
+    let compliances = xs
+        .windows(2)
+        .map(|w| {
+            let c = super::segment_compliance(profile, material, w[0], w[1]);
+            std::array::from_fn(|a| std::array::from_fn(|b| c[(a, b)]))
+        })
+        .collect();
+    (xs, compliances)
 }
 
 /// Peak von Mises stress along a hinge element from its end section forces (linear moment

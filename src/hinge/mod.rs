@@ -30,6 +30,7 @@
 //! Units: mm, N, MPa; rotations in radians inside, degrees only in `max_rotation_deg`.
 
 pub mod calibration;
+pub mod chain;
 pub mod closed_form;
 pub mod contour;
 pub mod element;
@@ -49,7 +50,8 @@ use nalgebra::Matrix6;
 use serde::Serialize;
 
 use crate::material::Material;
-pub use element::{flex_region, hinge_element, hinge_peak_stress, spreading_region, HingeRegion};
+pub use chain::split_flex;
+pub use element::{flex_chain, flex_region, hinge_element, hinge_peak_stress, spreading_region, HingeRegion};
 pub use error::HingeError;
 use integrate::{flex_integrals, Moduli, Quadrature};
 pub use profile::{Contour, Profile};

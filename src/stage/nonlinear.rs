@@ -4,7 +4,7 @@
 use super::*;
 use crate::fem::{self, Dof, FemError, Model};
 use crate::hinge::{self, Profile};
-use nalgebra::{Matrix3, Matrix6, Vector3};
+use nalgebra::Matrix3;
 
 /// Co-rotational elements per hinge region in the nonlinear stage solve: the region (notch +
 /// load-spreading zone, ~14–25 mm for the paper's hinges) bends through up to ~2° at the paper's
@@ -106,51 +106,10 @@ impl StageModel {
         single: &hinge::Stiffness,
         n: usize,
     ) -> Result<usize, StageError> {
-        let Some(fem::Element::Flex(f)) = model.elements.get(el).cloned() else {
-            return Err(StageError::Fem(FemError::BadInput(format!(
+        hinge::split_flex(model, el, profile, &self.design.material, single, n).ok_or_else(|| {
+            StageError::Fem(FemError::BadInput(format!(
                 "element {el} is not a hinge flexibility element"
-            ))));
-        };
-        let (a, b) = (
-            Vector3::from(model.nodes[f.nodes[0]]),
-            Vector3::from(model.nodes[f.nodes[1]]),
-        );
-        let half = profile.half_length();
-        let material = &self.design.material;
-        let xs: Vec<f64> = (0..=n).map(|k| -half + 2.0 * half * k as f64 / n as f64).collect();
-        let cs: Vec<Matrix6<f64>> = xs
-            .windows(2)
-            .map(|w| hinge::segment_compliance(profile, material, w[0], w[1]))
-            .collect();
-        let sv: f64 = cs.iter().map(|c| c[(3, 3)]).sum();
-        let scale = single.compliance[3][3] / sv;
-        let mut prev = f.nodes[0];
-        let mut last = el;
-        for (k, c) in cs.iter().enumerate() {
-            let next = if k + 1 == n {
-                f.nodes[1]
-            } else {
-                let x = a + (b - a) * ((k + 1) as f64 / n as f64);
-                model.add_node([x[0], x[1], x[2]])
-            };
-            let mut cm = [[0.0; 6]; 6];
-            for (i, row) in cm.iter_mut().enumerate() {
-                for (j, v) in row.iter_mut().enumerate() {
-                    *v = c[(i, j)] * if i == 3 && j == 3 { scale } else { 1.0 };
-                }
-            }
-            let e = fem::Element::Flex(fem::FlexElement {
-                nodes: [prev, next],
-                compliance: cm,
-                up: f.up,
-            });
-            if k == 0 {
-                model.elements[el] = e;
-            } else {
-                last = model.add_element(e);
-            }
-            prev = next;
-        }
-        Ok(last)
+            )))
+        })
     }
 }

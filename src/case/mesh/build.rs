@@ -90,6 +90,20 @@ impl MeshSpec {
             let built = (cx.model.elements.len() > before).then_some(before);
             cx.model_index.push(built);
         }
+        // Hinges of several segments: inner nodes and further elements after the case's own,
+        // so node and element indices of the case stay those of the model.
+        for h in cx.hinges.iter_mut().filter(|h| h.segments > 1) {
+            if let Some(last) = crate::hinge::split_flex(
+                &mut cx.model,
+                h.element,
+                &h.region.profile,
+                &h.material,
+                &h.region.stiffness,
+                h.segments,
+            ) {
+                h.last = last;
+            }
+        }
         for (p, r) in rigid {
             let master = cx.node(format!("{p}.master"), r.master)?;
             let mut slaves = Vec::with_capacity(r.slaves.len());
@@ -221,13 +235,20 @@ fn element(cx: &mut Ctx, p: &str, e: &ElementSpec) -> Result<(), CaseError> {
             hinge,
             material,
             up,
-        } => super::hinge::hinge_element(cx, p, *nodes, hinge, material, *up, cx.model_index.len())?,
+            segments,
+        } => {
+            super::hinge::hinge_element(cx, p, *nodes, hinge, material, *up, cx.model_index.len())?;
+            if let Some(n) = segments {
+                super::hinge::set_segments(cx, p, *n)?;
+            }
+        }
         ElementSpec::Joint {
             nodes,
             kind,
             axis,
             axis2,
-        } => super::joint::joint_element(cx, p, *nodes, *kind, *axis, *axis2)?,
+            frame,
+        } => super::joint::joint_element(cx, p, *nodes, *kind, [*axis, *axis2], *frame)?,
         ElementSpec::Shell4 {
             nodes,
             section,

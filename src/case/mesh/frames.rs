@@ -2,7 +2,7 @@
 //! the one node frame each node may carry (shared with joint elements).
 
 use super::load_shapes::DofName;
-use super::lookup::{norm, Ctx};
+use super::lookup::{norm, unit_direction, Ctx};
 use crate::case::error::CaseError;
 
 /// A validated local frame: rows local x, y, z in global axes; `axis_only` when given by
@@ -44,15 +44,7 @@ pub(super) fn local(p: &str, frame: Option<[[f64; 3]; 3]>, axis: Option<[f64; 3]
             }))
         }
         (None, Some(a)) => {
-            let n = norm(a);
-            if !(n.is_finite() && n > 0.0) {
-                return Err(CaseError::value(
-                    format!("{p}.axis"),
-                    format!("{a:?}"),
-                    "must be a non-zero direction [x, y, z]",
-                ));
-            }
-            let x = a.map(|c| c / n);
+            let x = unit_direction(format!("{p}.axis"), a)?;
             let t = if x[0].abs() < 0.9 {
                 [1.0, 0.0, 0.0]
             } else {

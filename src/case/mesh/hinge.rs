@@ -19,6 +19,11 @@ use serde_json::Value;
 /// analysis computes, and it is reproduced with no internal nodes (the flexibility element is
 /// co-rotational in the nonlinear solver, as the stage's hinges). Mass: the geometric volume of
 /// notch and blank times the density, lumped half at each node (translational only).
+///
+/// With `segments` ([`set_segments`]; 1 … 64, default 1) the element is split into a chain of that many
+/// co-rotational flexibility elements over equal lengths ([`hinge::split_flex`], as the
+/// stage's nonlinear solve), once every case element is built, so the inner nodes and
+/// elements come after the case's own.
 pub(super) fn hinge_element(
     cx: &mut Ctx,
     p: &str,
@@ -53,6 +58,9 @@ pub(super) fn hinge_element(
     cx.hinges.push(BuiltHinge {
         case_element,
         element,
+        last: element,
+        segments: 1,
+        material: mat,
         region,
         allowable: mat.allowable,
     });
@@ -62,6 +70,22 @@ pub(super) fn hinge_element(
             mass: mass / 2.0,
             inertia: [0.0; 3],
         });
+    }
+    Ok(())
+}
+
+/// Makes the hinge element just built at JSON path `p` a chain of `segments` (1 … 64)
+/// co-rotational elements (split once every case element is built).
+pub(super) fn set_segments(cx: &mut Ctx, p: &str, segments: usize) -> Result<(), CaseError> {
+    if !(1..=64).contains(&segments) {
+        return Err(CaseError::value(
+            format!("{p}.segments"),
+            segments,
+            "must be an integer from 1 to 64",
+        ));
+    }
+    if let Some(h) = cx.hinges.last_mut() {
+        h.segments = segments;
     }
     Ok(())
 }

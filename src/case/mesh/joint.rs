@@ -2,7 +2,7 @@
 //! elimination (a [`fem::Tie`] in a node frame whose local x is the joint axis).
 
 use super::frames::{cross, set_node_frame};
-use super::lookup::{norm, Ctx};
+use super::lookup::{norm, unit_direction, Ctx};
 use super::shapes::JointKind;
 use crate::case::error::CaseError;
 use crate::fem;
@@ -13,7 +13,7 @@ const COINCIDENT: f64 = 1e-6;
 /// Builds a `joint` element at JSON path `p`.
 ///
 /// The DOFs the joint does not release are tied in the joint frame (rows: x = `axis`, y =
-/// `axis2` for a universal joint or a perpendicular, z = x × y). Both nodes get that frame;
+/// `axis2` for a universal joint or a perpendicular, z = x × y; or `full_frame` as given). Both nodes get that frame;
 /// a node has one frame, so a node already framed by another joint with other axes is refused
 /// (give each joint its own coincident node, joined to the body by a rigid link or stiff beam —
 /// the link's master, not a slave, since slaves cannot carry frames). Spherical and weld joints
@@ -23,8 +23,8 @@ pub(super) fn joint_element(
     p: &str,
     nodes: [usize; 2],
     kind: JointKind,
-    axis: Option<[f64; 3]>,
-    axis2: Option<[f64; 3]>,
+    [axis, axis2]: [Option<[f64; 3]>; 2],
+    full_frame: Option<[[f64; 3]; 3]>,
 ) -> Result<(), CaseError> {
     let (a, b) = cx.two_nodes(p, nodes, "joint")?;
     let (xa, xb) = (cx.spec.nodes[a], cx.spec.nodes[b]);
@@ -43,9 +43,30 @@ pub(super) fn joint_element(
         JointKind::Universal => (true, true),
         JointKind::Spherical | JointKind::Weld => (false, false),
     };
-    let x = unit_axis(p, "axis", axis, needs_axis, &name)?;
-    let y = unit_axis(p, "axis2", axis2, needs_axis2, &name)?;
-    let frame = match (x, y) {
+    let given = match full_frame {
+        Some(f) => {
+            if let Some((field, _)) = [("axis", axis.is_some()), ("axis2", axis2.is_some())]
+                .into_iter()
+                .find(|(_, g)| *g)
+            {
+                return Err(CaseError::new(
+                    format!("{p}.{field}"),
+                    "give either `frame` (three rows, joint axis = local x) or `axis`/`axis2`, not both",
+                ));
+            }
+            super::frames::local(p, Some(f), None)?.map(|l| l.rows)
+        }
+        None => None,
+    };
+    let (x, y) = if given.is_some() {
+        (None, None)
+    } else {
+        (
+            unit_axis(p, "axis", axis, needs_axis, &name)?,
+            unit_axis(p, "axis2", axis2, needs_axis2, &name)?,
+        )
+    };
+    let frame = given.or(match (x, y) {
         (Some(x), Some(y)) => {
             let c = x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
             if c.abs() > 1e-6 {
@@ -68,7 +89,7 @@ pub(super) fn joint_element(
             Some([x, y, cross(x, y)])
         }
         _ => None,
-    };
+    });
     let free: &[usize] = match kind {
         JointKind::Revolute => &[3],
         JointKind::Spherical => &[3, 4, 5],
@@ -110,17 +131,7 @@ fn unit_axis(
             format!("{v:?}"),
             format!("a {kind} joint takes no `{field}`"),
         )),
-        (Some(v), true) => {
-            let n = norm(v);
-            if !(n.is_finite() && n > 0.0) {
-                return Err(CaseError::value(
-                    format!("{p}.{field}"),
-                    format!("{v:?}"),
-                    "must be a non-zero direction [x, y, z]",
-                ));
-            }
-            Ok(Some(v.map(|c| c / n)))
-        }
+        (Some(v), true) => unit_direction(format!("{p}.{field}"), v).map(Some),
     }
 }
 

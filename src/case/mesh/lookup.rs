@@ -60,21 +60,29 @@ pub(super) enum BuiltSection {
     Shell(f64),
 }
 
-/// A model being built: the validated named items, the model so far and what each case element
-/// became.
 /// A hinge element of a built model: where it is and its hinge (for the per-hinge results).
 #[derive(Debug, Clone)]
 pub struct BuiltHinge {
     /// Index of the element in the case's `elements`.
     pub case_element: usize,
-    /// Index of the element in the FE model (model order, as `element_von_mises`).
+    /// Index of the element in the FE model (model order, as `element_von_mises`); with
+    /// `segments` > 1 the first segment of the chain.
     pub element: usize,
+    /// The last segment of the chain (`element` for a hinge of one segment); the inner
+    /// segments are appended to the model after the case's own elements.
+    pub last: usize,
+    /// Co-rotational segments the hinge is made of.
+    pub segments: usize,
+    /// Its material.
+    pub material: Material,
     /// Its hinge region: compliance and stress model, as in the `hinge` analysis.
     pub region: crate::hinge::HingeRegion,
     /// Allowable stress of its material, MPa (∞ when the material has none).
     pub allowable: f64,
 }
 
+/// A model being built: the validated named items, the model so far and what each case element
+/// became.
 pub(super) struct Ctx<'a> {
     pub spec: &'a MeshSpec,
     pub materials: Named<'a, Material>,
@@ -148,4 +156,17 @@ impl Ctx<'_> {
 
 pub(super) fn norm(v: [f64; 3]) -> f64 {
     (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+}
+
+/// The unit vector along the direction `v` given at `path`, refusing a zero or non-finite one.
+pub(super) fn unit_direction(path: String, v: [f64; 3]) -> Result<[f64; 3], CaseError> {
+    let n = norm(v);
+    if !(n.is_finite() && n > 0.0) {
+        return Err(CaseError::value(
+            path,
+            format!("{v:?}"),
+            "must be a non-zero direction [x, y, z]",
+        ));
+    }
+    Ok(v.map(|c| c / n))
 }

@@ -131,6 +131,14 @@ pub enum ElementSpec {
         material: String,
         /// Vector fixing local z (the direction the notch thins along).
         up: [f64; 3],
+        /// Co-rotational flexibility elements the hinge is made of, 1 … 64 (default 1): the
+        /// region split into equal lengths (compliances of the sub-intervals, torsion scaled to
+        /// keep the single element's), so a hinge bending through degrees is followed more
+        /// closely in nonlinear analyses; the linear response is that of one element up to the
+        /// quadrature. Inner nodes (and the further elements) come after the case's own.
+        #[serde(default)]
+        #[schemars(range(min = 1, max = 64))]
+        segments: Option<usize>,
     },
     /// Ideal joint between two coincident nodes, by elimination (no penalty): the DOFs the joint
     /// does not release are tied in the joint frame (local x along `axis`).
@@ -145,6 +153,11 @@ pub enum ElementSpec {
         /// Second pin of a universal joint, perpendicular to `axis`.
         #[serde(default)]
         axis2: Option<[f64; 3]>,
+        /// The joint frame in full instead of `axis`/`axis2`: three orthonormal, right-handed
+        /// rows; the joint axis is local x (universal: the second pin local y). For a node that
+        /// also carries a support or prescribed DOF in this frame (a slider with a hinge).
+        #[serde(default)]
+        frame: Option<[[f64; 3]; 3]>,
     },
     /// 4-node flat shell (a triangle as the degenerate quad [a, b, c, c]).
     Shell4 {

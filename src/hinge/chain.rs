@@ -1,0 +1,70 @@
+//! A hinge region as a chain of co-rotational flexibility elements, for geometrically
+//! nonlinear solves: the region bends through degrees, which one co-rotational element
+//! represents only to first order in the rotation.
+
+use super::{segment_compliance, Profile, Stiffness};
+use crate::fem::{self, Model};
+use crate::material::Material;
+use nalgebra::{Matrix6, Vector3};
+
+/// Replaces the flexibility element `el` of `model` (spanning the hinge region `profile`, one
+/// element of compliance `single`) by a chain of `n` flexibility elements over equal
+/// sub-intervals of the region; returns the index of the last one (the first keeps index `el`,
+/// the others and the `n − 1` inner nodes are appended to the model).
+///
+/// Segment compliances from [`segment_compliance`]; their Saint-Venant torsion compliance is
+/// scaled so the chain keeps the torsion compliance of the single element (warping-restrained
+/// for rectangular notches), so the linear response is that of the single element. `None`
+/// when `el` is not a flexibility element.
+pub fn split_flex(
+    model: &mut Model,
+    el: usize,
+    profile: &Profile,
+    material: &Material,
+    single: &Stiffness,
+    n: usize,
+) -> Option<usize> {
+    let Some(fem::Element::Flex(f)) = model.elements.get(el).cloned() else {
+        return None;
+    };
+    let (a, b) = (
+        Vector3::from(model.nodes[f.nodes[0]]),
+        Vector3::from(model.nodes[f.nodes[1]]),
+    );
+    let half = profile.half_length();
+    let xs: Vec<f64> = (0..=n).map(|k| -half + 2.0 * half * k as f64 / n as f64).collect();
+    let cs: Vec<Matrix6<f64>> = xs
+        .windows(2)
+        .map(|w| segment_compliance(profile, material, w[0], w[1]))
+        .collect();
+    let sv: f64 = cs.iter().map(|c| c[(3, 3)]).sum();
+    let scale = single.compliance[3][3] / sv;
+    let mut prev = f.nodes[0];
+    let mut last = el;
+    for (k, c) in cs.iter().enumerate() {
+        let next = if k + 1 == n {
+            f.nodes[1]
+        } else {
+            let x = a + (b - a) * ((k + 1) as f64 / n as f64);
+            model.add_node([x[0], x[1], x[2]])
+        };
+        let mut cm = [[0.0; 6]; 6];
+        for (i, row) in cm.iter_mut().enumerate() {
+            for (j, v) in row.iter_mut().enumerate() {
+                *v = c[(i, j)] * if i == 3 && j == 3 { scale } else { 1.0 };
+            }
+        }
+        let e = fem::Element::Flex(fem::FlexElement {
+            nodes: [prev, next],
+            compliance: cm,
+            up: f.up,
+        });
+        if k == 0 {
+            model.elements[el] = e;
+        } else {
+            last = model.add_element(e);
+        }
+        prev = next;
+    }
+    Some(last)
+}
