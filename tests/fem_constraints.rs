@@ -21,12 +21,15 @@ macro_rules! assert_close {
 }
 
 fn spring(a: usize, b: Option<usize>, k: [f64; 6]) -> Element {
-    Element::Spring(Spring {
-        a,
-        b,
-        k,
-        axes: SpringAxes::Global,
-    })
+    Element::Spring(Spring::global(a, b, k))
+}
+
+/// A rigid link from `master` to the one node `slave`.
+fn link(master: usize, slave: usize) -> RigidLink {
+    RigidLink {
+        master,
+        slaves: vec![slave],
+    }
 }
 
 #[test]
@@ -42,10 +45,7 @@ fn rigid_link_in_a_cantilever() {
     }
     m.add_beam(Beam::new(0, 1, sec, STEEL, [0.0, 0.0, 1.0]).euler_bernoulli());
     m.add_beam(Beam::new(2, 3, sec, STEEL, [0.0, 0.0, 1.0]).euler_bernoulli());
-    m.rigid_links.push(RigidLink {
-        master: 1,
-        slaves: vec![2],
-    });
+    m.rigid_links.push(link(1, 2));
     m.supports.push(Support::clamp(0));
     m.load_cases = vec![LoadCase::new("P").force(3, [0.0, 0.0, p, 0.0, 0.0, 0.0])];
     let r = solve_static(&m).unwrap();
@@ -79,10 +79,7 @@ fn load_on_a_rigid_link_slave_equals_force_plus_moment_at_master() {
     base.supports.push(Support::clamp(0));
     let mut ml = base.clone();
     let s = ml.add_node([50.0, 10.0, -5.0]);
-    ml.rigid_links.push(RigidLink {
-        master: 1,
-        slaves: vec![s],
-    });
+    ml.rigid_links.push(link(1, s));
     let f = [2.0, -1.0, 3.0];
     let rv = [0.0, 10.0, -5.0];
     let mom = [
@@ -226,48 +223,24 @@ fn over(m: &Model) -> String {
 #[test]
 fn conflicting_rigid_links_and_supports_are_named() {
     let mut m = small_frame();
-    m.rigid_links = vec![
-        RigidLink {
-            master: 1,
-            slaves: vec![3],
-        },
-        RigidLink {
-            master: 2,
-            slaves: vec![3],
-        },
-    ];
+    m.rigid_links = vec![link(1, 3), link(2, 3)];
     let e = over(&m);
     assert!(
         e.contains("node 3 is a slave of rigid link 0 (master 1) and of rigid link 1 (master 2)"),
         "{e}"
     );
 
-    m.rigid_links = vec![
-        RigidLink {
-            master: 1,
-            slaves: vec![2],
-        },
-        RigidLink {
-            master: 2,
-            slaves: vec![3],
-        },
-    ];
+    m.rigid_links = vec![link(1, 2), link(2, 3)];
     let e = over(&m);
     assert!(
         e.contains("node 2 is the master of rigid link 1 and a slave of rigid link 0"),
         "{e}"
     );
 
-    m.rigid_links = vec![RigidLink {
-        master: 1,
-        slaves: vec![1],
-    }];
+    m.rigid_links = vec![link(1, 1)];
     assert!(over(&m).contains("node 1 is listed as its own slave"));
 
-    m.rigid_links = vec![RigidLink {
-        master: 2,
-        slaves: vec![3],
-    }];
+    m.rigid_links = vec![link(2, 3)];
     m.supports.push(Support::dofs(3, &[Dof::Uz, Dof::Rx]));
     let e = over(&m);
     assert!(

@@ -84,10 +84,9 @@ fn prescribed_displacement_in_a_node_frame() {
     );
 }
 
-#[test]
-fn tie_of_all_dofs_equals_a_shared_node() {
-    // Two beams meeting at coincident nodes tied in all six DOFs behave as one continuous
-    // cantilever: tip deflection P L³/(3EI) with L = 200 (Euler–Bernoulli).
+/// Two 100 mm Euler–Bernoulli beams (10 × 10 mm) a–b1 and b2–c along x, b1 and b2 coincident
+/// at x = 100 and not yet connected, clamped at a; returns the model and [a, b1, b2, c].
+fn split_cantilever() -> (Model, [usize; 4]) {
     let mut m = Model::new();
     let a = m.add_node([0.0, 0.0, 0.0]);
     let b1 = m.add_node([100.0, 0.0, 0.0]);
@@ -97,6 +96,14 @@ fn tie_of_all_dofs_equals_a_shared_node() {
     m.add_beam(Beam::new(a, b1, sec, mat(), [0.0, 0.0, 1.0]).euler_bernoulli());
     m.add_beam(Beam::new(b2, c, sec, mat(), [0.0, 0.0, 1.0]).euler_bernoulli());
     m.supports.push(Support::clamp(a));
+    (m, [a, b1, b2, c])
+}
+
+#[test]
+fn tie_of_all_dofs_equals_a_shared_node() {
+    // Two beams meeting at coincident nodes tied in all six DOFs behave as one continuous
+    // cantilever: tip deflection P L³/(3EI) with L = 200 (Euler–Bernoulli).
+    let (mut m, [_, b1, b2, c]) = split_cantilever();
     m.ties.push(Tie {
         a: b1,
         b: b2,
@@ -116,15 +123,7 @@ fn hinge_tie_releases_one_rotation() {
     // A beam clamped at both ends with an exact hinge (rotation about y released) at mid-span,
     // loaded at the hinge: two equal cantilevers in parallel, δ = P L³/(3EI)/2 with L = 100, and
     // the two sides rotate by ∓(P/2) L²/(2EI) (Euler–Bernoulli).
-    let mut m = Model::new();
-    let a = m.add_node([0.0, 0.0, 0.0]);
-    let h1 = m.add_node([100.0, 0.0, 0.0]);
-    let h2 = m.add_node([100.0, 0.0, 0.0]);
-    let c = m.add_node([200.0, 0.0, 0.0]);
-    let sec = Section::Rect { w: 10.0, h: 10.0 };
-    m.add_beam(Beam::new(a, h1, sec, mat(), [0.0, 0.0, 1.0]).euler_bernoulli());
-    m.add_beam(Beam::new(h2, c, sec, mat(), [0.0, 0.0, 1.0]).euler_bernoulli());
-    m.supports.push(Support::clamp(a));
+    let (mut m, [_, h1, h2, c]) = split_cantilever();
     m.supports.push(Support::clamp(c));
     m.ties.push(Tie {
         a: h1,

@@ -1,9 +1,7 @@
 //! Singular models: every kind of missing support is reported with node and direction.
 
 use flexfem::fem::solve::Parallelism;
-use flexfem::fem::{
-    Beam, Dof, Element, FemError, LoadCase, Model, NodeDof, Section, Spring, SpringAxes, Support, System,
-};
+use flexfem::fem::{Beam, Dof, Element, FemError, LoadCase, Model, NodeDof, Section, Spring, Support, System};
 use flexfem::material::Material;
 
 const STEEL: Material = Material::STEEL;
@@ -39,12 +37,11 @@ fn single_dof_without_stiffness_names_node_and_direction() {
     let mut m = beam_line(1);
     m.supports.push(Support::clamp(0));
     let n2 = m.add_node([20.0, 0.0, 0.0]);
-    m.add_element(Element::Spring(Spring {
-        a: 1,
-        b: Some(n2),
-        k: [1e3, 1e3, 1e3, 1e3, 1e3, 0.0],
-        axes: SpringAxes::Global,
-    }));
+    m.add_element(Element::Spring(Spring::global(
+        1,
+        Some(n2),
+        [1e3, 1e3, 1e3, 1e3, 1e3, 0.0],
+    )));
     let e = err(&m);
     assert_eq!(e.to_string(), "node 2 rz is unconstrained (mechanism)");
     assert!(matches!(e, FemError::Unconstrained { ref dofs } if dofs == &[nd(2, Dof::Rz)]));
@@ -113,12 +110,11 @@ fn pin_inside_a_chain_is_a_mechanism_naming_the_swinging_part() {
     m.supports.push(Support::clamp(0));
     let a = m.add_node([20.0, 0.0, 0.0]);
     let b = m.add_node([40.0, 0.0, 0.0]);
-    m.add_element(Element::Spring(Spring {
-        a: 1,
-        b: Some(a),
-        k: [1e6, 1e6, 1e6, 1e9, 0.0, 1e9],
-        axes: SpringAxes::Global,
-    }));
+    m.add_element(Element::Spring(Spring::global(
+        1,
+        Some(a),
+        [1e6, 1e6, 1e6, 1e9, 0.0, 1e9],
+    )));
     m.add_beam(Beam::new(
         a,
         b,
@@ -141,12 +137,7 @@ fn pin_inside_a_chain_is_a_mechanism_naming_the_swinging_part() {
 fn ground_springs_alone_are_a_valid_support() {
     let mut m = beam_line(1);
     for n in 0..2 {
-        m.add_element(Element::Spring(Spring {
-            a: n,
-            b: None,
-            k: [1e3; 6],
-            axes: SpringAxes::Global,
-        }));
+        m.add_element(Element::Spring(Spring::global(n, None, [1e3; 6])));
     }
     m.load_cases = vec![LoadCase::new("F").force(1, [1.0, 2.0, 3.0, 4.0, 5.0, 6.0])];
     let r = flexfem::fem::solve_static(&m).unwrap();

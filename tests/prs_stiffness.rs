@@ -10,12 +10,16 @@
 //!   Tables I–II.
 //! - X. Han, Y. Wang, J. Shi, "Stiffness Modeling of 3-PRS Mechanism" — Tables I–IV.
 
+#[path = "common/references.rs"]
+mod references;
+
 use flexfem::kinematics::prs::orientation;
 use flexfem::kinematics::prs_stiffness::{
-    map, parasitic_rate_coupling, scaled_eigen, stiffness_limited, Branch, Grid, LegModel, Link, MapMetric, MomentSign,
-    PrsLayout, PrsStiffness, Screw, ScrewMount,
+    map, parasitic_rate_coupling, scaled_eigen, stiffness_limited, Branch, Grid, LegModel, MapMetric, MomentSign,
+    PrsLayout, PrsStiffness,
 };
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
+use references::han;
 
 fn deg(x: f64) -> f64 {
     x.to_radians()
@@ -341,35 +345,12 @@ fn sprint_kzz_is_three_ka_everywhere() {
     assert!(half > 1.0 / 441.0 && half < 1.0, "half-threshold fraction {half}");
 }
 
-/// Han et al. Tables I–III. Readings we had to choose (not published): vertical rails with the
-/// platform hanging below the revolutes (γ = −90°), the screw fixed–fixed over its 600 mm with the
-/// first bearing at the zero-stroke point Aᵢ (at p_z = −400 mm the nut is then 299 mm from it, the
-/// "poorest posture" a = b of the paper), the load applied at P, I_y = 8.64e6 mm⁴ as the
-/// out-of-plane (constraint) bending, no nut or joint compliance, (α, β) = (0, β) read as ψ = 0,
-/// θ = β.
-fn han(i_lateral: f64) -> PrsStiffness {
-    let layout = PrsLayout::new(470.0, 315.0, 185.0, deg(-90.0), Branch::Minus).unwrap();
-    PrsStiffness::new(
-        layout,
-        LegModel::ScrewLink {
-            screw: Screw {
-                area: 183.5,
-                e: 231_000.0,
-                mount: ScrewMount::FixedFixed {
-                    length: 600.0,
-                    nut_at_zero_stroke: 0.0,
-                },
-                nut_k: None,
-            },
-            link: Link {
-                area: 7200.0,
-                e: 210_000.0,
-                i_lateral,
-            },
-        },
-    )
-    .unwrap()
-}
+// Han et al. Tables I–III (`references::han`). Readings we had to choose (not published): vertical rails with the
+// platform hanging below the revolutes (γ = −90°), the screw fixed–fixed over its 600 mm with the
+// first bearing at the zero-stroke point Aᵢ (at p_z = −400 mm the nut is then 299 mm from it, the
+// "poorest posture" a = b of the paper), the load applied at P, I_y = 8.64e6 mm⁴ as the
+// out-of-plane (constraint) bending, no nut or joint compliance, (α, β) = (0, β) read as ψ = 0,
+// θ = β.
 
 /// Platform compliance from the energy of the leg springs, with the leg deflections differentiated
 /// numerically from the exact geometry (no wrench matrix): δsᵢ from the leg equation with Bᵢ projected

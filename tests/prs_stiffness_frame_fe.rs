@@ -10,33 +10,12 @@
 //! direction but the rail, where a spring of the screw stiffness holds it. The penalty error is
 //! first order in 1/p: two runs (p, 2p) are extrapolated, d = 2·d(2p) − d(p).
 
-use flexfem::kinematics::prs_stiffness::{Branch, LegModel, Link, PrsLayout, PrsStiffness, Screw, ScrewMount};
+#[path = "common/references.rs"]
+mod references;
+
+use flexfem::kinematics::prs_stiffness::PrsStiffness;
 use nalgebra::{Matrix6, Vector3, Vector6};
 use serde_json::{json, Value};
-
-fn han() -> PrsStiffness {
-    let layout = PrsLayout::new(470.0, 315.0, 185.0, (-90f64).to_radians(), Branch::Minus).unwrap();
-    PrsStiffness::new(
-        layout,
-        LegModel::ScrewLink {
-            screw: Screw {
-                area: 183.5,
-                e: 231_000.0,
-                mount: ScrewMount::FixedFixed {
-                    length: 600.0,
-                    nut_at_zero_stroke: 0.0,
-                },
-                nut_k: None,
-            },
-            link: Link {
-                area: 7200.0,
-                e: 210_000.0,
-                i_lateral: 8.64e6,
-            },
-        },
-    )
-    .unwrap()
-}
 
 /// The frame case at one pose with the given load cases at P ([F (N); M (N·mm)] each).
 fn frame_case(m: &PrsStiffness, beta: f64, loads: &[Vector6<f64>], p: f64) -> Value {
@@ -119,7 +98,7 @@ fn run_frame(case: Value) -> Vec<Vector6<f64>> {
 /// so that rotations count through ℓ = 1000 mm) and on the deformation under Han et al.'s load.
 #[test]
 fn han_frame_fe_matches_prs_stiffness() {
-    let m = han();
+    let m = references::han(8.64e6);
     let ell = 1000.0;
     for beta_deg in [0.0f64, 5.0, 10.0] {
         let beta = beta_deg.to_radians();

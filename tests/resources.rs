@@ -47,6 +47,14 @@ fn static_case(mesh: &str) -> String {
     )
 }
 
+/// `flexfem check FILE` in `dir` (with `FLEXFEM_LIMITS=limits`) refuses the case (exit 2);
+/// returns its stderr.
+fn check_refused(dir: &Path, file: &str, limits: Option<&str>) -> String {
+    let o = run_limited(dir, &["check", file], limits);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    stderr(&o)
+}
+
 /// `/dev/zero` is not a regular file: refused at once (exit 2, path `mesh`).
 #[test]
 fn dev_zero_mesh_is_refused() {
@@ -72,9 +80,7 @@ fn oversized_mesh_file_is_refused() {
     let f = std::fs::File::create(d.join("big.json")).unwrap();
     f.set_len(300 << 20).unwrap();
     std::fs::write(d.join("case.json"), static_case("big.json")).unwrap();
-    let o = run_limited(&d, &["check", "case.json"], None);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    let e = stderr(&o);
+    let e = check_refused(&d, "case.json", None);
     assert!(
         e.contains("`mesh`") && e.contains("300.0 MiB") && e.contains("256.0 MiB"),
         "{e}"
@@ -106,9 +112,7 @@ fn msh_node_count_is_refused_from_the_header() {
       "materials": {"al": "Al7075"}, "sections": {"s": {"shape": "shell", "t": 1}},
       "load_cases": [{"name": "a", "forces": [{"node": 0, "F": [1, 0, 0, 0, 0, 0]}]}]}"#;
     std::fs::write(d.join("case.json"), case).unwrap();
-    let o = run_limited(&d, &["check", "case.json"], None);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    let e = stderr(&o);
+    let e = check_refused(&d, "case.json", None);
     assert!(e.contains("10000000 nodes") && e.contains("limit of 2000000"), "{e}");
     let o = run_limited(&d, &["check", "case.json"], Some("nodes=2e7"));
     assert_eq!(o.status.code(), Some(2));
@@ -122,9 +126,7 @@ fn json_node_count_is_refused() {
     let nodes: Vec<String> = (0..1001).map(|i| format!("[{i}, 0, 0]")).collect();
     std::fs::write(d.join("mesh.json"), format!(r#"{{"nodes": [{}]}}"#, nodes.join(", "))).unwrap();
     std::fs::write(d.join("case.json"), static_case("mesh.json")).unwrap();
-    let o = run_limited(&d, &["check", "case.json"], Some("nodes=1000"));
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    let e = stderr(&o);
+    let e = check_refused(&d, "case.json", Some("nodes=1000"));
     assert!(
         e.contains("`mesh`") && e.contains("1001 nodes") && e.contains("limit of 1000"),
         "{e}"
@@ -166,9 +168,7 @@ fn modal_memory_estimate_refuses_1000_modes_of_120k_dofs() {
         )
     };
     std::fs::write(d.join("big.json"), case(1000)).unwrap();
-    let o = run_limited(&d, &["check", "big.json"], None);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    let e = stderr(&o);
+    let e = check_refused(&d, "big.json", None);
     assert!(
         e.contains("`modes`") && e.contains("120000 DOFs") && e.contains("GiB"),
         "{e}"

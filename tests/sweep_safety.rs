@@ -6,7 +6,7 @@
 mod common;
 use common::*;
 use serde_json::Value;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
 const HINGE: &str = r#"{"type": "circular_notch", "R": 8, "t": 2, "w": 10, "h": 10, "blank_length": 20}"#;
@@ -17,6 +17,20 @@ fn sweep_case(material: &str, hinge: &str, vary: &str) -> String {
  "base": {{"analysis": "hinge", "material": "{material}", "hinge": {hinge}}},
  "vary": {vary}}}"#
     )
+}
+
+/// A fresh directory `name` holding `s.json`, a sweep of the Al7075 circular-notch `HINGE` over
+/// `vary`; returns it, the case file and the `--out` path `s.jsonl` in it.
+fn al7075_sweep(name: &str, vary: &str) -> (PathBuf, PathBuf, PathBuf) {
+    let d = tempdir(name);
+    let case = write(&d, "s.json", &sweep_case("Al7075", HINGE, vary));
+    let out = d.join("s.jsonl");
+    (d, case, out)
+}
+
+/// Runs `flexfem sweep CASE --out OUT` in `dir`.
+fn sweep_to(dir: &Path, case: &Path, out: &Path) -> Output {
+    sweep(dir, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()])
 }
 
 fn lines(path: &Path) -> Vec<Value> {
@@ -30,22 +44,20 @@ fn lines(path: &Path) -> Vec<Value> {
 /// 2.9× — the check below compares k_bend with a fresh run to 1e-12.
 #[test]
 fn resume_after_a_base_case_change_reruns_stale_lines() {
-    let d = tempdir("stale");
     let vary = r#"{"hinge.t": [1, 2, 3], "hinge.R": [4, 8]}"#;
-    let case = write(&d, "s.json", &sweep_case("Al7075", HINGE, vary));
-    let out = d.join("s.jsonl");
-    let first = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let (d, case, out) = al7075_sweep("stale", vary);
+    let first = sweep_to(&d, &case, &out);
     assert_eq!(code(&first), Some(0), "{}", stderr(&first));
     assert_eq!(summary(&first), [6, 0, 6, 0]);
     let al = lines(&out);
 
     // Unchanged: nothing to run.
-    let again = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let again = sweep_to(&d, &case, &out);
     assert_eq!(summary(&again), [6, 6, 0, 0]);
 
     // Another base material, same varied values: all six lines are stale.
     write(&d, "s.json", &sweep_case("steel", HINGE, vary));
-    let o = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let o = sweep_to(&d, &case, &out);
     assert_eq!(code(&o), Some(0), "{}", stderr(&o));
     assert_eq!(summary(&o), [6, 0, 6, 0]);
     assert!(
@@ -57,7 +69,7 @@ fn resume_after_a_base_case_change_reruns_stale_lines() {
     let fresh_dir = d.join("fresh");
     std::fs::create_dir_all(&fresh_dir).unwrap();
     let fresh_out = fresh_dir.join("f.jsonl");
-    let f = sweep(&d, &[case.to_str().unwrap(), "--out", fresh_out.to_str().unwrap()]);
+    let f = sweep_to(&d, &case, &fresh_out);
     assert_eq!(code(&f), Some(0));
     assert_eq!(
         std::fs::read_to_string(&out).unwrap(),
@@ -76,7 +88,7 @@ fn resume_after_a_base_case_change_reruns_stale_lines() {
     // A base field outside the varied paths (the blank width w) makes every line stale again.
     let wider = HINGE.replace("\"w\": 10", "\"w\": 12");
     write(&d, "s.json", &sweep_case("steel", &wider, vary));
-    let o = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let o = sweep_to(&d, &case, &out);
     assert_eq!(summary(&o), [6, 0, 6, 0]);
     cleanup(&d);
 }
@@ -96,13 +108,13 @@ fn resume_after_a_mesh_file_change_reruns_stale_lines() {
  "vary": {"load_cases.0.forces.0.F.2": [-10, -20]}}"#,
     );
     let out = d.join("s.jsonl");
-    let o = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let o = sweep_to(&d, &case, &out);
     assert_eq!(code(&o), Some(0), "{}", stderr(&o));
-    let o = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let o = sweep_to(&d, &case, &out);
     assert_eq!(summary(&o), [2, 2, 0, 0]);
     // Same mesh, one more space: bytes differ, so the lines are stale.
     write(&d, "m.json", &format!("{mesh} "));
-    let o = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let o = sweep_to(&d, &case, &out);
     assert_eq!(summary(&o), [2, 0, 2, 0]);
     cleanup(&d);
 }
@@ -111,23 +123,16 @@ fn resume_after_a_mesh_file_change_reruns_stale_lines() {
 /// (they fail again: still exit 1), `--keep-errors` keeps them.
 #[test]
 fn failed_designs_exit_1_and_error_rows_are_retried_on_resume() {
-    let d = tempdir("retry");
-    let case = write(
-        &d,
-        "s.json",
-        &sweep_case(
-            "Al7075",
-            HINGE,
-            r#"{"hinge.t": {"from": 2, "to": 12, "steps": 6}, "hinge.R": [4, 8]}"#,
-        ),
+    let (d, case, out) = al7075_sweep(
+        "retry",
+        r#"{"hinge.t": {"from": 2, "to": 12, "steps": 6}, "hinge.R": [4, 8]}"#,
     );
-    let out = d.join("s.jsonl");
-    let o = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let o = sweep_to(&d, &case, &out);
     assert_eq!(code(&o), Some(1), "{}", stderr(&o));
     assert_eq!(summary(&o), [12, 0, 12, 4]);
     assert!(stderr(&o).contains("error: 4 of 12 designs failed"), "{}", stderr(&o));
 
-    let o = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let o = sweep_to(&d, &case, &out);
     assert_eq!(code(&o), Some(1));
     assert_eq!(summary(&o), [12, 8, 4, 4]);
     assert!(stderr(&o).contains("retried 4 earlier error rows"), "{}", stderr(&o));
@@ -155,17 +160,10 @@ fn failed_designs_exit_1_and_error_rows_are_retried_on_resume() {
 /// the file holds every design exactly once and equal to an unsharded run.
 #[test]
 fn concurrent_shards_to_one_out_lose_no_designs() {
-    let d = tempdir("concurrent");
-    let case = write(
-        &d,
-        "s.json",
-        &sweep_case(
-            "Al7075",
-            HINGE,
-            r#"{"hinge.t": {"from": 1, "to": 3, "steps": 40}, "hinge.R": {"from": 3, "to": 12, "steps": 50}}"#,
-        ),
+    let (d, case, out) = al7075_sweep(
+        "concurrent",
+        r#"{"hinge.t": {"from": 1, "to": 3, "steps": 40}, "hinge.R": {"from": 3, "to": 12, "steps": 50}}"#,
     );
-    let out = d.join("s.jsonl");
     let spawn = |k: usize| {
         Command::new(bin())
             .args([
@@ -216,7 +214,7 @@ fn concurrent_shards_to_one_out_lose_no_designs() {
     assert!(!d.join("s.jsonl.lock").exists());
     assert!(!d.join("s.jsonl.partial").exists());
     let whole = d.join("whole.jsonl");
-    let o = sweep(&d, &[case.to_str().unwrap(), "--out", whole.to_str().unwrap()]);
+    let o = sweep_to(&d, &case, &whole);
     assert_eq!(code(&o), Some(0));
     assert_eq!(
         std::fs::read_to_string(&out).unwrap(),
@@ -229,13 +227,7 @@ fn concurrent_shards_to_one_out_lose_no_designs() {
 /// drop the first one's lines).
 #[test]
 fn sequential_shards_to_one_out_accumulate() {
-    let d = tempdir("seqshards");
-    let case = write(
-        &d,
-        "s.json",
-        &sweep_case("Al7075", HINGE, r#"{"hinge.t": [1, 2, 3], "hinge.R": [4, 8, 12]}"#),
-    );
-    let out = d.join("s.jsonl");
+    let (d, case, out) = al7075_sweep("seqshards", r#"{"hinge.t": [1, 2, 3], "hinge.R": [4, 8, 12]}"#);
     for k in 1..=3 {
         let o = sweep(
             &d,
@@ -259,15 +251,13 @@ fn sequential_shards_to_one_out_accumulate() {
 /// a process that no longer exists on this host is taken over.
 #[test]
 fn held_lock_is_refused_and_stale_lock_taken_over() {
-    let d = tempdir("lock");
-    let case = write(&d, "s.json", &sweep_case("Al7075", HINGE, r#"{"hinge.t": [1, 2]}"#));
-    let out = d.join("s.jsonl");
+    let (d, case, out) = al7075_sweep("lock", r#"{"hinge.t": [1, 2]}"#);
     let lock = d.join("s.jsonl.lock");
     let host = std::fs::read_to_string("/proc/sys/kernel/hostname").unwrap();
     let host = host.trim();
     // This test process is alive: its lock is held.
     std::fs::write(&lock, format!("pid={} host={host}\n", std::process::id())).unwrap();
-    let o = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let o = sweep_to(&d, &case, &out);
     assert_eq!(code(&o), Some(1), "{}", stderr(&o));
     assert!(
         stderr(&o).contains("is locked by another flexfem sweep"),
@@ -281,7 +271,7 @@ fn held_lock_is_refused_and_stale_lock_taken_over() {
     let dead = child.id();
     child.wait().unwrap();
     std::fs::write(&lock, format!("pid={dead} host={host}\n")).unwrap();
-    let o = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let o = sweep_to(&d, &case, &out);
     assert_eq!(code(&o), Some(0), "{}", stderr(&o));
     assert!(stderr(&o).contains("removed the stale lock"), "{}", stderr(&o));
     assert_eq!(lines(&out).len(), 2);

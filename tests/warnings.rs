@@ -10,6 +10,21 @@ use common::{root, run, run_case_text, tempdir};
 use flexfem::analysis;
 use flexfem::case;
 
+/// Runs the bundled `cases/FILE` (in-process) after `edit` changes its JSON.
+fn run_bundled_with(file: &str, edit: impl FnOnce(&mut serde_json::Value)) -> analysis::Outcome {
+    let base = std::fs::read_to_string(root().join("cases").join(file)).unwrap();
+    let mut c: serde_json::Value = serde_json::from_str(&base).unwrap();
+    edit(&mut c);
+    analysis::run(&case::parse(&c.to_string()).unwrap()).unwrap()
+}
+
+/// `out` has a warning starting with `prefix`, and its JSON lists every warning.
+fn assert_warns(out: &analysis::Outcome, prefix: &str) {
+    let w = &out.warnings;
+    assert!(w.iter().any(|s| s.starts_with(prefix)), "{w:?}");
+    assert_eq!(out.json["warnings"].as_array().unwrap().len(), w.len());
+}
+
 fn json(o: &std::process::Output) -> serde_json::Value {
     assert_eq!(
         o.status.code(),
@@ -106,20 +121,12 @@ fn neck_and_leaf_outside_calibration_warn() {
 /// place in the case file (`stage.revolute`).
 #[test]
 fn stage_hinge_outside_calibration_warns() {
-    let base = std::fs::read_to_string(root().join("cases/ruiz2019_stage.json")).unwrap();
-    let mut c: serde_json::Value = serde_json::from_str(&base).unwrap();
     // t/R = 0.5/16 = 0.031 < 0.06.
-    c["stage"]["revolute"]["R"] = serde_json::json!(16.0);
-    c["stage"]["revolute"]["t"] = serde_json::json!(0.5);
-    let case = case::parse(&c.to_string()).unwrap();
-    let out = analysis::run(&case).unwrap();
-    let w = &out.warnings;
-    assert!(
-        w.iter()
-            .any(|s| s.starts_with("stage.revolute: circular_notch t/R = 0.0313")),
-        "{w:?}"
-    );
-    assert_eq!(out.json["warnings"].as_array().unwrap().len(), w.len());
+    let out = run_bundled_with("ruiz2019_stage.json", |c| {
+        c["stage"]["revolute"]["R"] = serde_json::json!(16.0);
+        c["stage"]["revolute"]["t"] = serde_json::json!(0.5);
+    });
+    assert_warns(&out, "stage.revolute: circular_notch t/R = 0.0313");
     assert!(out.report.markdown.contains("## Warnings"));
 }
 
@@ -127,11 +134,10 @@ fn stage_hinge_outside_calibration_warns() {
 /// when those hinges leave the calibrated range (turned neck l/t > 5 here).
 #[test]
 fn sensitivity_and_design_warn_about_their_hinges() {
-    let base = std::fs::read_to_string(root().join("cases/ruiz2019_sensitivity.json")).unwrap();
-    let mut c: serde_json::Value = serde_json::from_str(&base).unwrap();
     // l/t = 18/3 = 6 > 5.
-    c["stage"]["spherical"]["l"] = serde_json::json!(18.0);
-    let out = analysis::run(&case::parse(&c.to_string()).unwrap()).unwrap();
+    let out = run_bundled_with("ruiz2019_sensitivity.json", |c| {
+        c["stage"]["spherical"]["l"] = serde_json::json!(18.0);
+    });
     assert!(
         out.warnings
             .iter()
@@ -140,20 +146,12 @@ fn sensitivity_and_design_warn_about_their_hinges() {
         out.warnings
     );
 
-    let base = std::fs::read_to_string(root().join("cases/ruiz2019_design.json")).unwrap();
-    let mut c: serde_json::Value = serde_json::from_str(&base).unwrap();
     // Every neck inside these bounds has l/t ≥ 13/2.4 = 5.4 > 5.
-    c["bounds"]["l_sph"] = serde_json::json!([13, 14]);
-    c["bounds"]["t_sph"] = serde_json::json!([2, 2.4]);
-    let out = analysis::run(&case::parse(&c.to_string()).unwrap()).unwrap();
-    assert!(
-        out.warnings
-            .iter()
-            .any(|w| w.starts_with("design found, stage.spherical: spherical_neck l/t")),
-        "{:?}",
-        out.warnings
-    );
-    assert_eq!(out.json["warnings"].as_array().unwrap().len(), out.warnings.len());
+    let out = run_bundled_with("ruiz2019_design.json", |c| {
+        c["bounds"]["l_sph"] = serde_json::json!([13, 14]);
+        c["bounds"]["t_sph"] = serde_json::json!([2, 2.4]);
+    });
+    assert_warns(&out, "design found, stage.spherical: spherical_neck l/t");
 }
 
 /// Geometrically nonlinear statics within small strains (a cantilever under a tip force

@@ -66,27 +66,7 @@ design_hash still matches the design (base case with the varied values, and its 
 reruns stale ones, and retries error rows unless --keep-errors. While it runs, FILE.lock \
 stops a second sweep (e.g. another shard) from writing the same FILE at the same time: run \
 shards one after another (their lines accumulate in FILE) or give each its own --out.")]
-    Sweep {
-        /// The sweep case file (`"analysis": "sweep"`).
-        case: PathBuf,
-        /// Run only the designs whose index ≡ K−1 (mod N).
-        #[arg(long, value_name = "K/N")]
-        shard: Option<String>,
-        /// Write the JSON lines to FILE (resumable) instead of stdout. FILE must be new or
-        /// flexfem sweep output; anything else is refused unless --force.
-        #[arg(long, value_name = "FILE.jsonl")]
-        out: Option<PathBuf>,
-        /// Also write a CSV table of parameters and scalar results.
-        #[arg(long, value_name = "FILE.csv")]
-        csv: Option<PathBuf>,
-        /// Replace --out/--csv files that are not flexfem's own output. The case file itself
-        /// is never overwritten.
-        #[arg(long)]
-        force: bool,
-        /// On resume, keep earlier error rows instead of running those designs again.
-        #[arg(long)]
-        keep_errors: bool,
-    },
+    Sweep(sweep::SweepArgs),
 }
 
 pub use crate::output::{EXIT_BAD_CASE, EXIT_FAILED};
@@ -188,21 +168,7 @@ fn emit(text: &str) -> ExitCode {
 /// Runs the command line; returns the process exit code.
 pub fn run(cli: Cli) -> ExitCode {
     match cli.command {
-        Command::Sweep {
-            case,
-            shard,
-            out,
-            csv,
-            force,
-            keep_errors,
-        } => sweep::run_cli(sweep::SweepArgs {
-            case,
-            shard,
-            out,
-            csv,
-            force,
-            keep_errors,
-        }),
+        Command::Sweep(args) => sweep::run_cli(args),
         Command::Schema => emit(&format!(
             "{}\n",
             serde_json::to_string_pretty(&case::schema()).unwrap_or_default()

@@ -29,19 +29,26 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 /// Command-line arguments of `flexfem sweep`.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, clap::Args)]
 pub struct SweepArgs {
-    /// The sweep case file.
+    /// The sweep case file (`"analysis": "sweep"`).
     pub case: PathBuf,
-    /// `K/N`: run only designs with index ≡ K−1 (mod N).
+    /// Run only the designs whose index ≡ K−1 (mod N).
+    #[arg(long, value_name = "K/N")]
     pub shard: Option<String>,
-    /// JSON-lines output file (stdout when `None`).
+    /// Write the JSON lines to FILE (resumable) instead of stdout. FILE must be new or
+    /// flexfem sweep output; anything else is refused unless --force.
+    #[arg(long, value_name = "FILE.jsonl")]
     pub out: Option<PathBuf>,
-    /// Optional CSV output.
+    /// Also write a CSV table of parameters and scalar results.
+    #[arg(long, value_name = "FILE.csv")]
     pub csv: Option<PathBuf>,
-    /// Replace `out`/`csv` even when they are not flexfem's own output.
+    /// Replace --out/--csv files that are not flexfem's own output. The case file itself
+    /// is never overwritten.
+    #[arg(long)]
     pub force: bool,
-    /// Keep earlier error rows on resume instead of running those designs again.
+    /// On resume, keep earlier error rows instead of running those designs again.
+    #[arg(long)]
     pub keep_errors: bool,
 }
 

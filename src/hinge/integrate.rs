@@ -111,41 +111,39 @@ impl FlexIntegrals {
     }
 }
 
+/// The 8-point Gauss–Legendre rule on `n` equal panels of [lo, hi]: calls `f(t, weight)` at
+/// each point, in order of panel, then node pair (t = mid ∓ d).
+#[inline]
+fn gl8_panels(lo: f64, hi: f64, n: usize, mut f: impl FnMut(f64, f64)) {
+    let hl = (hi - lo) / n as f64;
+    for p in 0..n {
+        let mid = lo + (p as f64 + 0.5) * hl;
+        for k in 0..4 {
+            let d = 0.5 * hl * GL8_X[k];
+            let w = 0.5 * hl * GL8_W[k];
+            f(mid - d, w);
+            f(mid + d, w);
+        }
+    }
+}
+
 /// Calls `f(x, weight)` at the quadrature points of [a, b] (a < b) on a piece with `map`.
 #[inline]
 pub(crate) fn quadrature_points(a: f64, b: f64, map: Map, panels: usize, mut f: impl FnMut(f64, f64)) {
     match map {
         Map::Linear => {
-            let n = panels.max(1);
-            let hl = (b - a) / n as f64;
-            for p in 0..n {
-                let mid = a + (p as f64 + 0.5) * hl;
-                for k in 0..4 {
-                    let d = 0.5 * hl * GL8_X[k];
-                    let w = 0.5 * hl * GL8_W[k];
-                    f(mid - d, w);
-                    f(mid + d, w);
-                }
-            }
+            gl8_panels(a, b, panels.max(1), f);
         }
         Map::Taper { origin, size0, slope } => {
             // x = origin + (size0/slope)(e^ψ − 1): size = size0 e^ψ. Orientation as for arcs.
             let psi_of = |x: f64| (1.0 + slope * (x - origin) / size0).max(1e-300).ln();
             let (pa, pb) = (psi_of(a), psi_of(b));
             let (lo, hi, orient) = if pa <= pb { (pa, pb, 1.0) } else { (pb, pa, -1.0) };
-            let n = panels.max(1) * 2;
-            let hl = (hi - lo) / n as f64;
             let scale = size0 / slope;
-            for p in 0..n {
-                let mid = lo + (p as f64 + 0.5) * hl;
-                for k in 0..4 {
-                    for sgn in [-1.0, 1.0] {
-                        let psi = mid + sgn * 0.5 * hl * GL8_X[k];
-                        let ex = psi.exp();
-                        f(origin + scale * (ex - 1.0), orient * 0.5 * hl * GL8_W[k] * scale * ex);
-                    }
-                }
-            }
+            gl8_panels(lo, hi, panels.max(1) * 2, |psi, w| {
+                let ex = psi.exp();
+                f(origin + scale * (ex - 1.0), orient * w * scale * ex);
+            });
         }
         Map::Arc { origin, radius, c } => {
             // φ = arc angle, x = origin + radius sin φ. Near the waist (φ < PEAK·c) use
@@ -157,32 +155,18 @@ pub(crate) fn quadrature_points(a: f64, b: f64, map: Map, panels: usize, mut f: 
             let n = panels.max(1);
             let tan_part = |p0: f64, p1: f64, f: &mut dyn FnMut(f64, f64)| {
                 let (q0, q1) = ((p0 / c).atan(), (p1 / c).atan());
-                let hl = (q1 - q0) / n as f64;
-                for p in 0..n {
-                    let mid = q0 + (p as f64 + 0.5) * hl;
-                    for k in 0..4 {
-                        for sgn in [-1.0, 1.0] {
-                            let ps = mid + sgn * 0.5 * hl * GL8_X[k];
-                            let tp = ps.tan();
-                            let phi = c * tp;
-                            let x = origin + radius * phi.sin();
-                            let dxdpsi = radius * phi.cos() * c * (1.0 + tp * tp);
-                            f(x, 0.5 * hl * GL8_W[k] * dxdpsi);
-                        }
-                    }
-                }
+                gl8_panels(q0, q1, n, |ps, w| {
+                    let tp = ps.tan();
+                    let phi = c * tp;
+                    let x = origin + radius * phi.sin();
+                    let dxdpsi = radius * phi.cos() * c * (1.0 + tp * tp);
+                    f(x, w * dxdpsi);
+                });
             };
             let phi_part = |p0: f64, p1: f64, f: &mut dyn FnMut(f64, f64)| {
-                let hl = (p1 - p0) / n as f64;
-                for p in 0..n {
-                    let mid = p0 + (p as f64 + 0.5) * hl;
-                    for k in 0..4 {
-                        for sgn in [-1.0, 1.0] {
-                            let phi = mid + sgn * 0.5 * hl * GL8_X[k];
-                            f(origin + radius * phi.sin(), 0.5 * hl * GL8_W[k] * radius * phi.cos());
-                        }
-                    }
-                }
+                gl8_panels(p0, p1, n, |phi, w| {
+                    f(origin + radius * phi.sin(), w * radius * phi.cos())
+                });
             };
             let (lo, hi) = if fa <= fb { (fa, fb) } else { (fb, fa) };
             // Integrate over [lo, hi] in φ, then fix the orientation sign.

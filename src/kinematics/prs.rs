@@ -22,6 +22,21 @@ pub(crate) const XI: [f64; 3] = [
     4.0 * std::f64::consts::FRAC_PI_3,
 ];
 
+/// Unit radial direction dᵢ = Rz(ξᵢ)·[1, 0, 0] of leg `i` (0-based).
+pub(crate) fn radial(i: usize) -> Vector3<f64> {
+    Vector3::new(XI[i].cos(), XI[i].sin(), 0.0)
+}
+
+/// Unit slider direction eᵢ = −cos γ·dᵢ + sin γ·z of leg `i` for actuator inclination `gamma` (rad).
+pub(crate) fn slider_dir(gamma: f64, i: usize) -> Vector3<f64> {
+    -gamma.cos() * radial(i) + gamma.sin() * Vector3::z()
+}
+
+/// Revolute axis mᵢ = Rz(ξᵢ)·[0, 1, 0] of leg `i` (normal of the leg plane).
+pub(crate) fn revolute_axis(i: usize) -> Vector3<f64> {
+    Vector3::new(-XI[i].sin(), XI[i].cos(), 0.0)
+}
+
 /// Errors of the rigid-body kinematics.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum KinematicsError {
@@ -259,17 +274,17 @@ impl Prs {
 
     /// Unit radial direction dᵢ of leg `i` (0-based).
     pub fn d(&self, i: usize) -> Vector3<f64> {
-        Vector3::new(XI[i].cos(), XI[i].sin(), 0.0)
+        radial(i)
     }
 
     /// Unit slider direction eᵢ = −cos γ·dᵢ + sin γ·z.
     pub fn e(&self, i: usize) -> Vector3<f64> {
-        -self.gamma.cos() * self.d(i) + self.gamma.sin() * Vector3::z()
+        slider_dir(self.gamma, i)
     }
 
     /// Revolute axis mᵢ = Rz(ξᵢ)·[0, 1, 0].
     pub fn m(&self, i: usize) -> Vector3<f64> {
-        Vector3::new(-XI[i].sin(), XI[i].cos(), 0.0)
+        revolute_axis(i)
     }
 
     /// Zero-stroke slider point Aᵢ = a·dᵢ, mm.

@@ -37,7 +37,7 @@
 //!   `T = diag(1, 1, 1, 1/ℓ, 1/ℓ, 1/ℓ)` has all entries in N/mm; eigenvectors are given in y.
 //!   ℓ = 1000 mm (rotations in metres of arc per metre, i.e. SI units) reproduces Khan et al.
 
-use crate::kinematics::prs::{orientation, parasitic_phi, XI};
+use crate::kinematics::prs::{orientation, parasitic_phi, radial, revolute_axis, slider_dir};
 use nalgebra::{Matrix3, Matrix3x2, Matrix6, SymmetricEigen, Vector3, Vector6};
 use thiserror::Error;
 
@@ -172,17 +172,17 @@ impl PrsLayout {
 
     /// Unit radial direction dᵢ (0-based leg).
     pub fn d(&self, i: usize) -> Vector3<f64> {
-        Vector3::new(XI[i].cos(), XI[i].sin(), 0.0)
+        radial(i)
     }
 
     /// Unit slider direction eᵢ = −cos γ·dᵢ + sin γ·z.
     pub fn e(&self, i: usize) -> Vector3<f64> {
-        -self.gamma.cos() * self.d(i) + self.gamma.sin() * Vector3::z()
+        slider_dir(self.gamma, i)
     }
 
     /// Revolute axis mᵢ = Rz(ξᵢ)·[0, 1, 0] (normal of the leg plane).
     pub fn m(&self, i: usize) -> Vector3<f64> {
-        Vector3::new(-XI[i].sin(), XI[i].cos(), 0.0)
+        revolute_axis(i)
     }
 
     /// Inverse kinematics at absolute height `pz` (mm) and tilts `psi`, `theta` (rad).

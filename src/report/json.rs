@@ -15,7 +15,6 @@ fn scalar(v: &Value) -> bool {
 }
 
 fn write(v: &Value, indent: usize, out: &mut String) {
-    let pad = |n: usize| "  ".repeat(n);
     match v {
         Value::Array(a) if a.is_empty() => out.push_str("[]"),
         Value::Array(a) if a.iter().all(scalar) => {
@@ -28,35 +27,37 @@ fn write(v: &Value, indent: usize, out: &mut String) {
             }
             out.push(']');
         }
-        Value::Array(a) => {
-            out.push_str("[\n");
-            for (i, x) in a.iter().enumerate() {
-                out.push_str(&pad(indent + 1));
-                write(x, indent + 1, out);
-                if i + 1 < a.len() {
-                    out.push(',');
-                }
-                out.push('\n');
-            }
-            out.push_str(&pad(indent));
-            out.push(']');
-        }
+        Value::Array(a) => write_block(('[', ']'), a.iter().map(|x| (None, x)), indent, out),
         Value::Object(m) if m.is_empty() => out.push_str("{}"),
-        Value::Object(m) => {
-            out.push_str("{\n");
-            for (i, (k, x)) in m.iter().enumerate() {
-                out.push_str(&pad(indent + 1));
-                out.push_str(&Value::String(k.clone()).to_string());
-                out.push_str(": ");
-                write(x, indent + 1, out);
-                if i + 1 < m.len() {
-                    out.push(',');
-                }
-                out.push('\n');
-            }
-            out.push_str(&pad(indent));
-            out.push('}');
-        }
+        Value::Object(m) => write_block(('{', '}'), m.iter().map(|(k, x)| (Some(k), x)), indent, out),
         other => out.push_str(&other.to_string()),
     }
+}
+
+/// An array or object over several lines: one item (`"key": ` first when given) per line at
+/// `indent + 1`, comma-separated, between the `brackets`.
+fn write_block<'a>(
+    brackets: (char, char),
+    items: impl ExactSizeIterator<Item = (Option<&'a String>, &'a Value)>,
+    indent: usize,
+    out: &mut String,
+) {
+    let pad = |n: usize| "  ".repeat(n);
+    let len = items.len();
+    out.push(brackets.0);
+    out.push('\n');
+    for (i, (k, x)) in items.enumerate() {
+        out.push_str(&pad(indent + 1));
+        if let Some(k) = k {
+            out.push_str(&Value::String(k.clone()).to_string());
+            out.push_str(": ");
+        }
+        write(x, indent + 1, out);
+        if i + 1 < len {
+            out.push(',');
+        }
+        out.push('\n');
+    }
+    out.push_str(&pad(indent));
+    out.push(brackets.1);
 }

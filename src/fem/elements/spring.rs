@@ -45,6 +45,17 @@ pub struct Spring {
 }
 
 impl Spring {
+    /// Springs `k` = [kx, ky, kz, krx, kry, krz] along the global axes between nodes `a` and `b`
+    /// (`None` = ground).
+    pub fn global(a: usize, b: Option<usize>, k: [f64; 6]) -> Spring {
+        Spring {
+            a,
+            b,
+            k,
+            axes: SpringAxes::Global,
+        }
+    }
+
     /// B (6×12, only the first 6 columns used for a ground spring) with δ = B·d the relative
     /// motion in spring axes, and the node count; `xa`, `xb`: coordinates of nodes `a` and `b`
     /// (`xb` unused for a ground spring). Checks stiffnesses and axes (`ie`: the element's
