@@ -13,32 +13,16 @@
 //! The bundled case cases/prs_stiffness_han_fsw_frame.json is the β = 0 instance (yield and
 //! allowable 355 MPa, S355 steel per EN 10025-2, are not from the paper: only for the stress report).
 
-use flexfem::kinematics::prs_stiffness::{Branch, LegModel, Link, PrsLayout, PrsStiffness, Screw, ScrewMount};
+#[path = "common/references.rs"]
+mod references;
+
+use flexfem::kinematics::prs_stiffness::PrsStiffness;
 use nalgebra::{Matrix6, Vector3, Vector6};
 use serde_json::{json, Value};
 
+/// Han et al.'s 3-PRS with the paper's I_y = 8.64e6 mm⁴ out of plane (the shared reference).
 fn han() -> PrsStiffness {
-    let layout = PrsLayout::new(470.0, 315.0, 185.0, (-90f64).to_radians(), Branch::Minus).unwrap();
-    PrsStiffness::new(
-        layout,
-        LegModel::ScrewLink {
-            screw: Screw {
-                area: 183.5,
-                e: 231_000.0,
-                mount: ScrewMount::FixedFixed {
-                    length: 600.0,
-                    nut_at_zero_stroke: 0.0,
-                },
-                nut_k: None,
-            },
-            link: Link {
-                area: 7200.0,
-                e: 210_000.0,
-                i_lateral: 8.64e6,
-            },
-        },
-    )
-    .unwrap()
+    references::han(8.64e6)
 }
 
 /// The platform's stiff beams: square side (mm) and Young's modulus (MPa).
