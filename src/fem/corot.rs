@@ -262,6 +262,31 @@ fn perturbed(n: &NodeState, j: usize, h: f64) -> NodeState {
     m
 }
 
+/// Geometric part ∂(Bᵀ f₇)/∂d of the tangent at fixed local forces `f7` = [N, M₁, M₂]
+/// (central differences of the closed-form B, see the module docs), global, not symmetrised.
+/// `None` for a degenerate configuration.
+pub fn geometric_tangent(g: &CorotGeometry, n1: &NodeState, n2: &NodeState, f7: &Vec7) -> Option<Mat12> {
+    let mut k = Mat12::zeros();
+    let ht = 1e-6 * g.l0.max(1e-12);
+    let hr = 1e-6;
+    for j in 0..12 {
+        let (node, dof) = (j / 6, j % 6);
+        let h = if dof < 3 { ht } else { hr };
+        let mut cols = [Vec12::zeros(); 2];
+        for (s, col) in [h, -h].iter().zip(cols.iter_mut()) {
+            let (a, b) = if node == 0 {
+                (perturbed(n1, dof, *s), *n2)
+            } else {
+                (*n1, perturbed(n2, dof, *s))
+            };
+            let kp = kinematics(g, &a, &b)?;
+            *col = kp.b.transpose() * f7;
+        }
+        k.set_column(j, &((cols[0] - cols[1]) / (2.0 * h)));
+    }
+    Some(k)
+}
+
 /// Internal force and consistent tangent of a co-rotational element with linear local
 /// stiffness `k_local` (12×12, local axes of the initial frame). `with_tangent = false`
 /// skips the tangent (zero matrix). `None` for a degenerate configuration.
@@ -280,28 +305,7 @@ pub fn response(
     let f_local = k_local * d_local;
     let mut k = Mat12::zeros();
     if with_tangent {
-        k = kin.b.transpose() * k7 * kin.b;
-        // Geometric part: central differences of Bᵀ f₇ at fixed f₇.
-        let ht = 1e-6 * g.l0.max(1e-12);
-        let hr = 1e-6;
-        for j in 0..12 {
-            let (node, dof) = (j / 6, j % 6);
-            let h = if dof < 3 { ht } else { hr };
-            let mut cols = [Vec12::zeros(); 2];
-            for (s, col) in [h, -h].iter().zip(cols.iter_mut()) {
-                let (a, b) = if node == 0 {
-                    (perturbed(n1, dof, *s), *n2)
-                } else {
-                    (*n1, perturbed(n2, dof, *s))
-                };
-                let kp = kinematics(g, &a, &b)?;
-                *col = kp.b.transpose() * f7;
-            }
-            let dcol = (cols[0] - cols[1]) / (2.0 * h);
-            for i in 0..12 {
-                k[(i, j)] += dcol[i];
-            }
-        }
+        k = kin.b.transpose() * k7 * kin.b + geometric_tangent(g, n1, n2, &f7)?;
     }
     if f.iter().any(|v| !v.is_finite()) || k.iter().any(|v| !v.is_finite()) {
         return None;

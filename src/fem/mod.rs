@@ -12,6 +12,7 @@
 
 pub mod analysis;
 pub mod assembly;
+pub mod buckling;
 pub mod cache;
 pub mod constraints;
 pub mod corot;
@@ -20,6 +21,7 @@ pub mod dof;
 pub mod element;
 pub mod elements;
 pub mod error;
+pub mod lanczos;
 pub mod lattice;
 pub mod loads;
 pub mod mass;
