@@ -2,7 +2,7 @@
 //! buckling of a deep beam, the parallel leaf-spring guide under axial load.
 
 use flexfem::fem::buckling::{solve_buckling, BucklingOptions};
-use flexfem::fem::{Beam, Dof, LoadCase, Model, NodalLoad, Section, Support};
+use flexfem::fem::{Beam, Dof, LoadCase, Model, NodalLoad, RigidLink, Section, Support};
 use std::f64::consts::PI;
 
 mod common;
@@ -91,4 +91,90 @@ fn reversed_load_gives_a_negative_multiplier() {
     m.load_cases.push(load(10, [2.0, 0.0, 0.0, 0.0, 0.0, 0.0]));
     let lam = lowest(&m, 1)[0];
     check("reversed clamped–free", -2.0 * lam, PI * PI * ei / (4.0 * l * l), 1e-3);
+}
+
+/// Lateral–torsional buckling of a deep simply supported beam (fork supports: lateral
+/// displacement and twist held, warping free) under uniform moment:
+/// M_cr = (π/L)·√(E·I_z·G·J) (Timoshenko & Gere 1961, §6.2, eq. (6-19) without warping
+/// rigidity), within 2 % with 20 elements. Section 5 × 50 mm (h along local z): strong axis
+/// local y, weak axis local z.
+#[test]
+fn lateral_torsional_buckling_of_a_deep_beam() {
+    use Dof::*;
+    let (l, w, h): (f64, f64, f64) = (1000.0, 5.0, 50.0);
+    let ne = 20;
+    let mut m = column(ne, l, w, h);
+    m.supports.push(Support::dofs(0, &[Ux, Uy, Uz, Rx]));
+    m.supports.push(Support::dofs(ne, &[Uy, Uz, Rx]));
+    // Equal and opposite end moments about the strong axis (global y = local y).
+    let mut c = load(0, [0.0, 0.0, 0.0, 0.0, -1.0, 0.0]);
+    c.forces.push(NodalLoad {
+        node: ne,
+        f: [0.0, 0.0, 0.0, 0.0, 1.0, 0.0],
+    });
+    m.load_cases.push(c);
+    let p = Section::Rect { w, h }.properties(STEEL.nu);
+    let g = STEEL.e / (2.0 * (1.0 + STEEL.nu));
+    let m_cr = PI / l * (STEEL.e * p.iz * g * p.j).sqrt();
+    let lam = lowest(&m, 2);
+    check("lateral–torsional (20 el.)", lam[0].abs(), m_cr, 0.02);
+    // Uniform moment of either sign buckles the beam at the same magnitude.
+    check("lateral–torsional, reversed", lam[1].abs(), m_cr, 0.02);
+    assert!(lam[0] * lam[1] < 0.0, "one positive, one negative multiplier: {lam:?}");
+}
+
+/// The parallel leaf-spring guide under axial load: two leaves clamped at the base, their tops
+/// joined by a rigid bar (a rigid link). The bar cannot rotate (the leaves are axially stiff),
+/// so in the first (sway) mode each leaf is clamped at the base and guided at the top: a
+/// clamped–guided column with sway has K = 1 (Timoshenko & Gere 1961, §2.2: its deflected shape
+/// is half of a pinned–pinned column of length 2L mirrored, i.e. w = (δ/2)(1 − cos πx/L)), so
+/// the guide carries P = 2·π²EI/L². Within 1 % with 16 elements per leaf.
+#[test]
+fn parallel_leaf_guide_under_axial_load() {
+    let (l, t, b, sep): (f64, f64, f64, f64) = (50.0, 0.5, 10.0, 30.0);
+    let ne = 16;
+    let mut m = Model::new();
+    let mut tops = Vec::new();
+    for x in [0.0, sep] {
+        let base = m.nodes.len();
+        for i in 0..=ne {
+            m.add_node([x, 0.0, l * i as f64 / ne as f64]);
+        }
+        for i in 0..ne {
+            // Leaf along z; thickness t along global x (local z with up = x).
+            m.add_beam(
+                Beam::new(
+                    base + i,
+                    base + i + 1,
+                    Section::Rect { w: b, h: t },
+                    STEEL,
+                    [1.0, 0.0, 0.0],
+                )
+                .euler_bernoulli(),
+            );
+        }
+        m.supports.push(Support::clamp(base));
+        tops.push(base + ne);
+    }
+    m.rigid_links.push(RigidLink {
+        master: tops[0],
+        slaves: vec![tops[1]],
+    });
+    let mut c = load(tops[0], [0.0, 0.0, -0.5, 0.0, 0.0, 0.0]);
+    c.forces.push(NodalLoad {
+        node: tops[1],
+        f: [0.0, 0.0, -0.5, 0.0, 0.0, 0.0],
+    });
+    m.load_cases.push(c);
+    let ei = STEEL.e * b * t.powi(3) / 12.0;
+    let r = solve_buckling(&m, 0, &BucklingOptions::new(1)).unwrap();
+    check(
+        "leaf guide sway",
+        r.modes[0].load_factor,
+        2.0 * PI * PI * ei / (l * l),
+        0.01,
+    );
+    // The mode is the sway of the bar along x (the leaves' compliant direction).
+    let top = r.modes[0].shape[tops[0]];
+    assert!((top[0].abs() - 1.0).abs() < 1e-9, "bar sways along x: {top:?}");
 }

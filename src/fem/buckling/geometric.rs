@@ -141,8 +141,13 @@ fn link_geometric(model: &Model, u: &[f64], case: &LoadCase) -> Result<Vec<(usiz
 }
 
 /// The reduced geometric stiffness K_G (equations of `map`) of the reference state with global
-/// displacements `u` under `case`.
-pub fn assemble_geometric(model: &Model, map: &DofMap, u: &[f64], case: &LoadCase) -> Result<SparseMatrix, FemError> {
+/// displacements `u` under `case`, and its largest entry in magnitude.
+pub fn assemble_geometric(
+    model: &Model,
+    map: &DofMap,
+    u: &[f64],
+    case: &LoadCase,
+) -> Result<(SparseMatrix, f64), FemError> {
     let mats: Vec<Option<Mat12>> = (0..model.elements.len())
         .into_par_iter()
         .map(|ie| element_geometric(model, ie, u))
@@ -171,8 +176,9 @@ pub fn assemble_geometric(model: &Model, map: &DofMap, u: &[f64], case: &LoadCas
     }
     let n = map.n_eq();
     pairs.extend((0..n).map(|i| (i, i)));
+    let largest = values.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     values.resize(pairs.len(), 0.0);
-    SparsePattern::new(n, &pairs)?.matrix(&values)
+    Ok((SparsePattern::new(n, &pairs)?.matrix(&values)?, largest))
 }
 
 #[cfg(test)]

@@ -119,10 +119,9 @@ pub fn solve_buckling(model: &Model, case: usize, opts: &BucklingOptions) -> Res
         .ok_or_else(|| FemError::Solver("no reference solution".into()))?;
     let u: Vec<f64> = reference.displacements.iter().flatten().copied().collect();
     let map = sys.dof_map();
-    let kg = geometric::assemble_geometric(model, map, &u, lc)?;
+    let (kg, scale) = geometric::assemble_geometric(model, map, &u, lc)?;
     let n = map.n_eq();
-    let scale = kg.diagonal().iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    if !(scale > 0.0) {
+    if !(scale > 0.0 && scale.is_finite()) {
         return Err(FemError::BadInput(format!(
             "load case \"{}\" puts no axial force or moment into any beam, hinge or rigid link: there is no geometric stiffness, nothing can buckle",
             lc.name
