@@ -47,6 +47,8 @@ macro_rules! analyses {
             PanTilt = "pantilt" #9, mod pantilt, case pantilt::PanTiltCase, parse shape, analysis pantilt::PanTiltKind;
             /// Jacobian stiffness of a 3-PRS with compliant legs.
             PrsStiffness = "prs_stiffness" #10, mod prs_stiffness, case prs_stiffness::PrsStiffnessCase, parse shape, analysis prs_stiffness::PrsStiffnessAnalysis;
+            /// Linear buckling: load multipliers and mode shapes of a reference load on a generic beam model.
+            Buckling = "buckling" #11, mod buckling, case buckling::BucklingCase, parse buckling::parse_buckling, analysis buckling::Buckling;
         }
     };
 }
