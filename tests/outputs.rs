@@ -508,6 +508,8 @@ fn has_unit(col: &str) -> bool {
         "stiffness_ratio",
         "displacement_ratio",
         "stress_ratio_ratio",
+        "load_factor",
+        "reversed",
     ];
     UNITS.iter().any(|u| col.ends_with(u)) || PLAIN.contains(&col) || col.starts_with("mef_")
 }
