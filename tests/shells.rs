@@ -66,13 +66,11 @@ fn clamped_plate(n: usize) -> f64 {
     let (a, t, e, nu, q) = (100.0, 0.1, 1.0e5, 0.3, 1e-3);
     let mut m = Model::new();
     let ids = grid(&mut m, n, n, t, mat(e, nu), |s, r| [a * s, a * r, 0.0]);
-    for j in 0..=n {
-        for i in 0..=n {
-            if i == 0 || j == 0 || i == n || j == n {
-                m.supports.push(Support::clamp(ids[j * (n + 1) + i]));
-            }
+    common::meshes::each_node(n, |i, j, edge| {
+        if edge {
+            m.supports.push(Support::clamp(ids[j * (n + 1) + i]));
         }
-    }
+    });
     let f = area_load(&m, [0.0, 0.0, -q]);
     let m = with_loads(m, &f);
     let r = fem::solve_static(&m).unwrap();
@@ -297,13 +295,11 @@ fn gmsh_import_clamped_plate() {
     let n = 16;
     let mut m = Model::new();
     let ids = grid(&mut m, n, n, 1.0, al, |s, r| [100.0 * s, 100.0 * r, 0.0]);
-    for j in 0..=n {
-        for i in 0..=n {
-            if i == 0 || j == 0 || i == n || j == n {
-                m.supports.push(Support::clamp(ids[j * (n + 1) + i]));
-            }
+    common::meshes::each_node(n, |i, j, edge| {
+        if edge {
+            m.supports.push(Support::clamp(ids[j * (n + 1) + i]));
         }
-    }
+    });
     m.load_cases
         .push(LoadCase::new("c").force(144, [0.0, 0.0, -100.0, 0.0, 0.0, 0.0]));
     let direct = -fem::solve_static(&m).unwrap().load_cases[0].displacements[144][2];
