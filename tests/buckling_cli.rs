@@ -100,10 +100,18 @@ fn reversed_load_and_vtk() {
     let modes = r["buckling"].as_array().unwrap();
     assert_eq!(modes.len(), 2);
     for m in modes {
-        assert!(m["load_factor"].as_f64().unwrap() < 0.0 && m["reversed"] == json!(true), "{m}");
+        assert!(
+            m["load_factor"].as_f64().unwrap() < 0.0 && m["reversed"] == json!(true),
+            "{m}"
+        );
     }
     let warns = r["warnings"].as_array().unwrap();
-    assert!(warns.iter().any(|w| w.as_str().unwrap().contains("reversed reference load")), "{warns:?}");
+    assert!(
+        warns
+            .iter()
+            .any(|w| w.as_str().unwrap().contains("reversed reference load")),
+        "{warns:?}"
+    );
     let vtu = std::fs::read_to_string(d.join("o/buckling_modes.vtu")).unwrap();
     assert!(vtu.contains("load_factor") && vtu.contains("mode_2_translation_mm"));
 }

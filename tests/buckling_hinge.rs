@@ -1,6 +1,6 @@
 //! Linear buckling of a column standing on a notch hinge (mesh `hinge` element).
 
-use flexfem::case::{self, Case};
+use flexfem::analysis::{self, Case};
 use flexfem::fem::buckling::{solve_buckling, BucklingOptions};
 use flexfem::fem::Model;
 
@@ -23,7 +23,7 @@ fn hinge_column(segments: usize) -> Model {
             "supports": [{{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}}],
             "load_cases": [{{"name": "axial", "forces": [{{"node": 5, "F": [-1, 0, 0, 0, 0, 0]}}]}}]}}"#
     );
-    match case::parse(&text).unwrap_or_else(|e| panic!("{e}")) {
+    match analysis::parse(&text).unwrap_or_else(|e| panic!("{e}")) {
         Case::Static(s) => s.model.build().unwrap_or_else(|e| panic!("{e}")),
         _ => panic!("not static"),
     }
