@@ -6,14 +6,14 @@
 use super::kind::{Analysis, Ctx, UsedMaterial};
 use super::kinds::named_materials;
 use super::{AnalysisError, Report, RunError};
-use crate::case::fem_case::{read_model, split};
+use crate::case::fem_case::{modes_of, read_model, shapes_default, split, ModalOptions};
 use crate::case::gmsh::GmshMapping;
 use crate::case::mesh::MeshSpec;
 use crate::case::{from_value, CaseError};
 use crate::fem::buckling::{solve_buckling, BucklingOptions, BucklingResults};
 use crate::fem::{Element, Model};
 use crate::report::markdown::Table;
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 use serde_json::Value;
 use std::path::Path;
 
@@ -41,26 +41,6 @@ pub struct BucklingCase {
     pub model: MeshSpec,
 }
 
-fn shapes_default() -> bool {
-    true
-}
-
-/// The options of a `buckling` case besides its model, as in the case file.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct Options {
-    #[serde(default)]
-    description: Option<String>,
-    #[serde(default)]
-    mesh: Option<String>,
-    #[serde(default)]
-    gmsh: Option<GmshMapping>,
-    #[serde(default)]
-    modes: Option<usize>,
-    #[serde(default)]
-    shapes: Option<bool>,
-}
-
 const OWN: [&str; 6] = ["analysis", "description", "mesh", "gmsh", "modes", "shapes"];
 
 /// Parses a `buckling` case; files it names resolve against `base` first.
@@ -75,17 +55,8 @@ pub fn parse_buckling(value: Value, base: Option<&Path>) -> Result<BucklingCase,
         ));
     }
     let (options, model) = split(value, &OWN);
-    let o: Options = from_value(options, "")?;
-    let modes = match o.modes {
-        Some(k) if (1..=1000).contains(&k) => k,
-        Some(k) => return Err(CaseError::value("modes", k, "must be an integer from 1 to 1000")),
-        None => {
-            return Err(CaseError::new(
-                "modes",
-                "missing field `modes` (number of buckling modes wanted)",
-            ))
-        }
-    };
+    let o: ModalOptions = from_value(options, "")?;
+    let modes = modes_of(o.modes, "buckling modes")?;
     let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
     match model.load_cases.len() {
         1 => {}

@@ -38,7 +38,7 @@ pub struct ModalCase {
 }
 
 /// Mode shapes are in the JSON result unless `"shapes": false`.
-fn shapes_default() -> bool {
+pub(crate) fn shapes_default() -> bool {
     true
 }
 
@@ -123,20 +123,23 @@ struct StaticOptions {
     compliance: Vec<super::mesh::ComplianceRequest>,
 }
 
-/// The options of a `modal` case besides its model, as in the case file.
+/// The options of a `modal` (or `buckling`) case besides its model, as in the case file (each
+/// kind splits off only the fields it takes).
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct ModalOptions {
+pub(crate) struct ModalOptions {
     #[serde(default)]
-    mesh: Option<String>,
+    pub(crate) description: Option<String>,
     #[serde(default)]
-    gmsh: Option<GmshMapping>,
+    pub(crate) mesh: Option<String>,
     #[serde(default)]
-    modes: Option<usize>,
+    pub(crate) gmsh: Option<GmshMapping>,
     #[serde(default)]
-    shift_hz: Option<f64>,
+    pub(crate) modes: Option<usize>,
     #[serde(default)]
-    shapes: Option<bool>,
+    pub(crate) shift_hz: Option<f64>,
+    #[serde(default)]
+    pub(crate) shapes: Option<bool>,
 }
 
 /// The top-level fields of a `static` or `modal` case that are the model's (those of
@@ -204,16 +207,7 @@ pub fn parse_modal(value: Value, base: Option<&Path>) -> Result<ModalCase, CaseE
     unknown_model_field(&value, "modal")?;
     let (options, model) = split(value, &MODAL_OWN);
     let o: ModalOptions = from_value(options, "")?;
-    let modes = match o.modes {
-        Some(k) if (1..=1000).contains(&k) => k,
-        Some(k) => return Err(CaseError::value("modes", k, "must be an integer from 1 to 1000")),
-        None => {
-            return Err(CaseError::new(
-                "modes",
-                "missing field `modes` (number of modes wanted)",
-            ))
-        }
-    };
+    let modes = modes_of(o.modes, "modes")?;
     if let Some(f) = o.shift_hz {
         if !(f.is_finite() && f >= 0.0) {
             return Err(CaseError::value("shift_hz", f, "must be a frequency ≥ 0, Hz"));
@@ -228,6 +222,19 @@ pub fn parse_modal(value: Value, base: Option<&Path>) -> Result<ModalCase, CaseE
         shapes: o.shapes.unwrap_or(true),
         model,
     })
+}
+
+/// The checked `modes` of a `modal` or `buckling` case: 1 … 1000, required (`what` names them
+/// in the message).
+pub(crate) fn modes_of(modes: Option<usize>, what: &str) -> Result<usize, CaseError> {
+    match modes {
+        Some(k) if (1..=1000).contains(&k) => Ok(k),
+        Some(k) => Err(CaseError::value("modes", k, "must be an integer from 1 to 1000")),
+        None => Err(CaseError::new(
+            "modes",
+            format!("missing field `modes` (number of {what} wanted)"),
+        )),
+    }
 }
 
 /// The model of a case: the inline fields `value`, merged into the `mesh` file's model if one

@@ -40,7 +40,7 @@ impl BucklingOptions {
     pub fn new(n: usize) -> BucklingOptions {
         BucklingOptions {
             n_modes: n,
-            tol: 1e-8,
+            tol: 1e-6,
             par: Parallelism::Rayon,
         }
     }
