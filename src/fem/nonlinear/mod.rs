@@ -60,6 +60,9 @@ mod path;
 mod recover;
 mod residual;
 mod state;
+mod track;
+
+pub use track::{StepQuantities, StepTrack};
 
 use load_case::solve_case;
 use state::element_data;
@@ -91,6 +94,9 @@ pub struct NonlinearOptions {
     /// DOFs whose values are recorded along the path (translations in mm; rotations: the
     /// rotation-vector component, rad; global axes).
     pub track: Vec<NodeDof>,
+    /// Natural frequencies and node compliances evaluated at every accepted point of the path
+    /// with the current tangent stiffness ([`NonlinearCase::step_quantities`]); none by default.
+    pub step_track: StepTrack,
     /// Threading of the sparse factorisation.
     pub parallelism: Parallelism,
 }
@@ -107,6 +113,7 @@ impl Default for NonlinearOptions {
             tangent: Tangent::Auto,
             arc_length: false,
             track: Vec::new(),
+            step_track: StepTrack::default(),
             parallelism: Parallelism::Sequential,
         }
     }
@@ -175,6 +182,9 @@ pub struct NonlinearCase {
     /// Co-rotated frame of each beam/flexibility element at the end (rows: local x, y, z in
     /// global coordinates; identity for springs).
     pub element_frames: Vec<[[f64; 3]; 3]>,
+    /// With [`NonlinearOptions::step_track`]: the tracked quantities at every accepted point of
+    /// the path, in path order (empty otherwise).
+    pub step_quantities: Vec<StepQuantities>,
 }
 
 /// Results of all load cases, in model order.

@@ -94,6 +94,8 @@ pub(super) struct CaseCtx<'a> {
     /// Master nodes of rigid links (their 6×6 blocks carry the link geometric stiffness).
     pub(super) masters: Vec<usize>,
     pub(super) par: Parallelism,
+    /// Quantities evaluated at every accepted point ([`super::StepTrack`]), when asked.
+    pub(super) tracker: Option<super::track::Tracker>,
 }
 
 /// Residual, tangent values and force norms at one configuration.
