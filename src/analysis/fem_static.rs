@@ -48,6 +48,10 @@ pub struct StaticCaseRow {
     /// (omitted otherwise).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub beam_forces: Vec<BeamForcesRow>,
+    /// Nonlinear with `"track"`: frequencies and node compliances at every accepted load step
+    /// (omitted otherwise).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub track: Option<super::track::TrackRow>,
 }
 
 /// Section forces of one beam element in one load case.
@@ -226,17 +230,31 @@ pub fn solve_with(
 /// output are the components of each node's rotation vector (degrees). Also returns the final
 /// state of each load case in the linear result's shape (for the `.vtu` files).
 pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<(StaticResult, fem::StaticResults), AnalysisError> {
+    solve_nonlinear_tracked(model, steps, None)
+}
+
+/// [`solve_nonlinear`] with the quantities `track` asks for at every accepted load step.
+pub fn solve_nonlinear_tracked(
+    model: &Model,
+    steps: usize,
+    track: Option<&crate::case::mesh::TrackRequest>,
+) -> Result<(StaticResult, fem::StaticResults), AnalysisError> {
+    let (step_track, strokes) = track.map(|t| super::track::options(model, t)).unwrap_or_default();
     let opts = fem::NonlinearOptions {
         steps,
+        track: strokes.clone(),
+        step_track,
         ..Default::default()
     };
     let res = fem::solve_nonlinear(model, &opts).map_err(|e| AnalysisError::new("model", e.to_string()))?;
     let rows = res
         .load_cases
         .iter()
-        .map(|c| StaticCaseRow {
+        .zip(&model.load_cases)
+        .map(|(c, lc)| StaticCaseRow {
             stable: Some(c.stable),
             critical_load_factor: c.critical_load_factor,
+            track: track.map(|t| super::track::row(t, lc, c, &strokes)),
             ..row(&c.fe)
         })
         .collect();
@@ -325,6 +343,7 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
         shell_forces: Vec::new(),
         hinges: Vec::new(),
         beam_forces: Vec::new(),
+        track: None,
     }
 }
 
@@ -350,7 +369,6 @@ pub fn node_compliances(
     model: &Model,
     reqs: &[crate::case::mesh::ComplianceRequest],
 ) -> Result<Vec<ComplianceRow>, AnalysisError> {
-    use nalgebra::{Matrix3, Matrix6};
     if reqs.is_empty() {
         return Ok(Vec::new());
     }
@@ -362,27 +380,34 @@ pub fn node_compliances(
             let c = sys
                 .node_compliance(model, q.node)
                 .map_err(|e| AnalysisError::new(format!("compliance[{i}]"), e.to_string()))?;
-            let frame = q.frame.unwrap_or([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]);
-            let f = Matrix3::from_fn(|a, b| frame[a][b]);
-            let mut t = Matrix6::zeros();
-            t.fixed_view_mut::<3, 3>(0, 0).copy_from(&f);
-            t.fixed_view_mut::<3, 3>(3, 3).copy_from(&f);
-            let cl = t * c * t.transpose();
-            let cl = (cl + cl.transpose()) * 0.5;
-            let extremes = |k: usize| {
-                let b: Matrix3<f64> = cl.fixed_view::<3, 3>(k, k).into_owned();
-                let ev = b.symmetric_eigenvalues();
-                [ev.min(), ev.max()]
-            };
-            Ok(ComplianceRow {
-                node: q.node,
-                frame,
-                matrix: std::array::from_fn(|a| std::array::from_fn(|b| cl[(a, b)])),
-                translational_eigen: extremes(0),
-                rotational_eigen: extremes(3),
-            })
+            Ok(compliance_row(q.node, q.frame, &c))
         })
         .collect()
+}
+
+/// The [`ComplianceRow`] of `node` from its compliance `c` in global axes, turned into
+/// `frame` (rows: local x, y, z; default the global axes).
+pub fn compliance_row(node: usize, frame: Option<[[f64; 3]; 3]>, c: &nalgebra::Matrix6<f64>) -> ComplianceRow {
+    use nalgebra::{Matrix3, Matrix6};
+    let frame = frame.unwrap_or([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]);
+    let f = Matrix3::from_fn(|a, b| frame[a][b]);
+    let mut t = Matrix6::zeros();
+    t.fixed_view_mut::<3, 3>(0, 0).copy_from(&f);
+    t.fixed_view_mut::<3, 3>(3, 3).copy_from(&f);
+    let cl = t * c * t.transpose();
+    let cl = (cl + cl.transpose()) * 0.5;
+    let extremes = |k: usize| {
+        let b: Matrix3<f64> = cl.fixed_view::<3, 3>(k, k).into_owned();
+        let ev = b.symmetric_eigenvalues();
+        [ev.min(), ev.max()]
+    };
+    ComplianceRow {
+        node,
+        frame,
+        matrix: std::array::from_fn(|a| std::array::from_fn(|b| cl[(a, b)])),
+        translational_eigen: extremes(0),
+        rotational_eigen: extremes(3),
+    }
 }
 
 /// Adds the per-hinge results of every load case (`raw`: the solver's results in the order
@@ -508,6 +533,9 @@ pub fn report(r: &StaticResult) -> Report {
         }
         md += "\n";
         md += &hinge_table(c);
+        if let Some(t) = &c.track {
+            md += &super::track::markdown(t);
+        }
     }
     md += &compliance_section(&r.compliance);
     Report { markdown: md, csv }

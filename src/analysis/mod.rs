@@ -15,6 +15,7 @@ pub mod registry;
 pub mod stage;
 pub mod stage_report;
 pub mod sweep_plot;
+pub mod track;
 pub mod vtu;
 pub mod warn;
 
