@@ -227,7 +227,11 @@ impl Analysis for Static {
         r.compliance = fem_static::node_compliances(&model, &case.compliance)?;
         if ctx.with_files {
             ctx.files = fem_static::vtu_files(&model, &raw)?;
-            ctx.files.extend(super::track::files(&r.load_cases));
+            let tracked = r
+                .load_cases
+                .iter()
+                .filter_map(|c| Some((c.name.as_str(), c.track.as_ref()?)));
+            ctx.files.extend(super::track::files(tracked));
         }
         ctx.warnings = if case.nonlinear {
             let mut w = warn::stretch_warnings(&model, &r);

@@ -2,7 +2,7 @@
 //! stiffness) at every accepted load step, with the tangent stiffness of the deformed state
 //! ([`crate::fem::StepTrack`]); their JSON rows, Markdown table, CSV and SVG plot.
 
-use super::fem_static::{compliance_row, ComplianceRow};
+use super::compliance::{compliance_row, ComplianceRow};
 use crate::case::mesh::TrackRequest;
 use crate::fem::{self, Dof, LoadCase, Model, NodeDof};
 use crate::report::markdown::{sig, Table};
@@ -52,14 +52,16 @@ pub struct TrackCompliance {
 /// The DOF whose value is a load case's stroke (see [`TrackRow::stroke`]).
 fn stroke_dof(lc: &LoadCase) -> Option<NodeDof> {
     if let Some(p) = lc.displacements.first() {
-        return Some(NodeDof { node: p.node, dof: p.dof });
+        return Some(NodeDof {
+            node: p.node,
+            dof: p.dof,
+        });
     }
     let f = lc.forces.first()?;
-    let (i, _) = f
-        .f
-        .iter()
-        .enumerate()
-        .fold((0, 0.0), |(bi, bv), (i, v)| if v.abs() > bv { (i, v.abs()) } else { (bi, bv) });
+    let (i, _) = f.f.iter().enumerate().fold(
+        (0, 0.0),
+        |(bi, bv), (i, v)| if v.abs() > bv { (i, v.abs()) } else { (bi, bv) },
+    );
     Some(NodeDof {
         node: f.node,
         dof: Dof::from_index(i)?,
@@ -137,7 +139,11 @@ fn columns(t: &TrackRow, csv: bool) -> (Vec<String>, Vec<Vec<String>>) {
     let n_modes = first.map_or(0, |s| s.frequencies_hz.len());
     let mut head = vec![
         "lambda".to_string(),
-        if csv { "stroke".to_string() } else { format!("stroke: {}", t.stroke) },
+        if csv {
+            "stroke".to_string()
+        } else {
+            format!("stroke: {}", t.stroke)
+        },
         "stable".to_string(),
     ];
     head.extend((1..=n_modes).map(|k| if csv { format!("f{k}_hz") } else { format!("f{k} (Hz)") }));
@@ -248,15 +254,14 @@ pub fn plot(name: &str, t: &TrackRow) -> String {
     svg::stack(&panels)
 }
 
-/// The CSV and SVG files of every tracked load case (`track_<case>.csv`, `.svg`).
-pub fn files(rows: &[super::fem_static::StaticCaseRow]) -> super::Files {
+/// The CSV and SVG files of the tracked load cases `(name, rows)` (`track_<case>.csv`,
+/// `.svg`).
+pub fn files<'a>(cases: impl Iterator<Item = (&'a str, &'a TrackRow)>) -> super::Files {
     let mut out = Vec::new();
-    for r in rows {
-        if let Some(t) = &r.track {
-            let stem = crate::report::vtk::file_stem(&r.name);
-            out.push((format!("track_{stem}.csv"), csv(t).into_bytes()));
-            out.push((format!("track_{stem}.svg"), plot(&r.name, t).into_bytes()));
-        }
+    for (name, t) in cases {
+        let stem = crate::report::vtk::file_stem(name);
+        out.push((format!("track_{stem}.csv"), csv(t).into_bytes()));
+        out.push((format!("track_{stem}.svg"), plot(name, t).into_bytes()));
     }
     out
 }

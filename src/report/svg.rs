@@ -136,7 +136,9 @@ pub fn scatter(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64,
     let all: Vec<(f64, f64)> = series.iter().flat_map(|(_, p)| p.iter().copied()).collect();
     let f = Frame::new(640.0, 420.0, 20.0, &all, &[], true);
     let mut out = f.open(title, xlabel, ylabel);
-    let colours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"];
+    let colours = [
+        "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf",
+    ];
     for (si, (name, p)) in series.iter().enumerate() {
         let c = colours[si % colours.len()];
         let mut sorted: Vec<(f64, f64)> = p

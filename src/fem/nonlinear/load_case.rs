@@ -78,7 +78,7 @@ pub(super) fn solve_case(
     } else {
         None
     };
-    let tracker = super::track::Tracker::new(model, elems, &map, &pairs, &opts.step_track)?;
+    let tracker = super::state::Tracker::new(model, elems, &map, &pairs, &opts.step_track)?;
     let ctx = CaseCtx {
         model,
         elems,

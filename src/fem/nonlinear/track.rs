@@ -12,7 +12,8 @@
 //! Lanczos of [`crate::fem::modal`]; an unstable state (K_T indefinite) has negative ω².
 
 use super::residual::for_each_pair_in;
-use super::state::{CaseCtx, ElemData, State};
+use super::state::{CaseCtx, ElemData, State, Tracker};
+use super::{StepQuantities, StepTrack};
 use crate::fem::constraints::DofMap;
 use crate::fem::error::FemError;
 use crate::fem::mass::{element_mass, point_mass};
@@ -22,59 +23,6 @@ use crate::fem::solve::{SparsePattern, SymbolicFactor};
 use crate::fem::transform::Mat12;
 use nalgebra::{Matrix3, Matrix6, Vector6};
 use std::cell::RefCell;
-
-/// What to evaluate at every accepted point of a nonlinear path (nothing by default).
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct StepTrack {
-    /// Number of natural frequencies (the lowest) with the current tangent stiffness; 0: none.
-    pub modes: usize,
-    /// Nodes whose 6×6 compliance with the current tangent stiffness is evaluated.
-    pub compliance: Vec<usize>,
-}
-
-impl StepTrack {
-    fn is_empty(&self) -> bool {
-        self.modes == 0 && self.compliance.is_empty()
-    }
-}
-
-/// The tracked quantities at one accepted point of the path.
-#[derive(Debug, Clone, PartialEq)]
-pub struct StepQuantities {
-    /// Index of the point in [`super::NonlinearCase::path`].
-    pub point: usize,
-    /// Load factor λ of the point.
-    pub lambda: f64,
-    /// The lowest [`StepTrack::modes`] eigenvalues ω² of K_T φ = ω² M φ, ascending, (rad/s)²;
-    /// negative where the state is unstable.
-    pub eigenvalues: Vec<f64>,
-    /// Per node of [`StepTrack::compliance`]: C[i][j] = displacement i of the node per unit
-    /// load j at it, [ux, uy, uz, rx, ry, rz] × [Fx, Fy, Fz, Mx, My, Mz], global axes (mm/N,
-    /// rad/N, rad/(N·mm)); rows and columns of held DOFs are zero. Symmetric.
-    pub compliance: Vec<[[f64; 6]; 6]>,
-}
-
-impl StepQuantities {
-    /// Natural frequencies, Hz: √ω²/2π, with a minus sign where ω² < 0 (unstable state).
-    pub fn frequencies_hz(&self) -> Vec<f64> {
-        self.eigenvalues
-            .iter()
-            .map(|l| l.signum() * l.abs().sqrt() / (2.0 * std::f64::consts::PI))
-            .collect()
-    }
-}
-
-/// The fixed data of the tracking of one load case, and what it recorded.
-pub(super) struct Tracker {
-    req: StepTrack,
-    /// Beams (element index) with their undeformed global mass.
-    beams: Vec<(usize, Box<Mat12>)>,
-    /// Tangent pairs then mass pairs (lower triangle): K and M on one pattern.
-    pattern: SparsePattern,
-    symbolic: SymbolicFactor,
-    n_k: usize,
-    pub(super) steps: RefCell<Vec<StepQuantities>>,
-}
 
 impl Tracker {
     /// `None` when nothing is tracked. `k_pairs`: the tangent's lower pairs (pattern order).
