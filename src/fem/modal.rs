@@ -190,17 +190,7 @@ pub fn solve_modal_cached(
             "the model has no mass (give materials a density or add point masses)".into(),
         ));
     }
-    let negative_shift = || {
-        let mut ratios: Vec<f64> = kd
-            .iter()
-            .zip(&md)
-            .filter(|(k, m)| **k > 0.0 && **m > 0.0)
-            .map(|(k, m)| k / m)
-            .collect();
-        ratios.sort_by(f64::total_cmp);
-        let med = ratios.get(ratios.len() / 2).copied().unwrap_or(1.0);
-        -1e-6 * med
-    };
+    let negative_shift = || -1e-6 * median_ratio(&kd, &md);
     let shifts = match opts.shift {
         Some(s) if s.is_finite() => vec![s],
         Some(s) => return Err(FemError::BadInput(format!("modal shift must be finite, got {s}"))),
@@ -262,6 +252,19 @@ pub fn solve_modal_cached(
         lanczos_steps: steps,
         n_eq: n,
     })
+}
+
+/// Median of Kᵢᵢ/Mᵢᵢ over the DOFs where both are positive (1 without any): the scale of the
+/// eigenvalues, for choosing shifts.
+pub(crate) fn median_ratio(kd: &[f64], md: &[f64]) -> f64 {
+    let mut ratios: Vec<f64> = kd
+        .iter()
+        .zip(md)
+        .filter(|(k, m)| **k > 0.0 && **m > 0.0)
+        .map(|(k, m)| k / m)
+        .collect();
+    ratios.sort_by(f64::total_cmp);
+    ratios.get(ratios.len() / 2).copied().unwrap_or(1.0)
 }
 
 /// K − σM factorised (sparse Cholesky) for the first shift σ of `shifts` that makes it positive

@@ -17,7 +17,7 @@ use super::{StepQuantities, StepTrack};
 use crate::fem::constraints::DofMap;
 use crate::fem::error::FemError;
 use crate::fem::mass::{element_mass, point_mass};
-use crate::fem::modal::{factor_shifted, lanczos};
+use crate::fem::modal::{factor_shifted, lanczos, median_ratio};
 use crate::fem::model::{Element, Model};
 use crate::fem::solve::{SparsePattern, SymbolicFactor};
 use crate::fem::transform::Mat12;
@@ -207,14 +207,7 @@ impl CaseCtx<'_> {
         if md.iter().all(|&v| v <= 0.0) {
             return Err("the model has no mass (give materials a density or add point masses)".into());
         }
-        let mut ratios: Vec<f64> = kd
-            .iter()
-            .zip(&md)
-            .filter(|(k, m)| **k > 0.0 && **m > 0.0)
-            .map(|(k, m)| k / m)
-            .collect();
-        ratios.sort_by(f64::total_cmp);
-        let med = ratios.get(ratios.len() / 2).copied().unwrap_or(1.0);
+        let med = median_ratio(&kd, &md);
         // σ = 0 on a stable state; below the lowest (negative) eigenvalue on an unstable one.
         let shifts = [0.0, -1e-6 * med, -1e-3 * med, -med, -1e3 * med];
         let (shift, factor) = factor_shifted(&k, &m, &t.symbolic, &shifts, self.par)
