@@ -109,17 +109,7 @@ fn run_frame(case: Value) -> (Vector6<f64>, Matrix6<f64>) {
         .collect();
     let c = &out.json["compliance"][0]["matrix"];
     let c = Matrix6::from_fn(|i, j| c[i][j].as_f64().unwrap());
-    (
-        Vector6::new(
-            d[0],
-            d[1],
-            d[2],
-            d[3].to_radians(),
-            d[4].to_radians(),
-            d[5].to_radians(),
-        ),
-        c,
-    )
+    (Vector6::from_fn(|i, _| if i < 3 { d[i] } else { d[i].to_radians() }), c)
 }
 
 /// (compliance rel. diff, deformation rel. diff) of the frame case against `prs_stiffness`.
