@@ -43,10 +43,47 @@ pub struct TrackStep {
 pub struct TrackCompliance {
     #[serde(flatten)]
     pub compliance: ComplianceRow,
-    /// 1/C[i][i] per axis of `frame`, [N/mm, N/mm, N/mm, N·mm/rad, N·mm/rad, N·mm/rad]: the
-    /// stiffness against a load along one axis with the other load components zero; `null`
-    /// where the DOF is held (supported or prescribed).
-    pub stiffness: [Option<f64>; 6],
+    /// The support stiffness 1/C[i][i] per axis of `frame`: the stiffness against a load along
+    /// one axis with the other load components zero.
+    pub stiffness: AxisStiffness,
+}
+
+/// 1/C[i][i] per axis of a frame: x, y, z in N/mm, rx, ry, rz in N·mm/rad; an axis whose DOF
+/// is held (supported or prescribed: unbounded stiffness) is left out.
+#[derive(Debug, Clone, Serialize)]
+pub struct AxisStiffness {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub x: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub y: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub z: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rx: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ry: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rz: Option<f64>,
+}
+
+impl AxisStiffness {
+    /// From the diagonal of a compliance matrix (zero: held).
+    fn of(c: &[[f64; 6]; 6]) -> AxisStiffness {
+        let k = |i: usize| (c[i][i] > 0.0).then(|| 1.0 / c[i][i]);
+        AxisStiffness {
+            x: k(0),
+            y: k(1),
+            z: k(2),
+            rx: k(3),
+            ry: k(4),
+            rz: k(5),
+        }
+    }
+
+    /// In the order x, y, z, rx, ry, rz.
+    pub fn values(&self) -> [Option<f64>; 6] {
+        [self.x, self.y, self.z, self.rx, self.ry, self.rz]
+    }
 }
 
 /// The DOF whose value is a load case's stroke (see [`TrackRow::stroke`]).
@@ -115,13 +152,9 @@ pub fn row(req: &TrackRequest, lc: &LoadCase, c: &fem::NonlinearCase, strokes: &
                     .zip(&q.compliance)
                     .map(|(r, m)| {
                         let row = compliance_row(r.node, r.frame, &nalgebra::Matrix6::from_fn(|i, j| m[i][j]));
-                        let stiffness = std::array::from_fn(|i| {
-                            let v = row.matrix[i][i];
-                            (v > 0.0).then(|| 1.0 / v)
-                        });
                         TrackCompliance {
+                            stiffness: AxisStiffness::of(&row.matrix),
                             compliance: row,
-                            stiffness,
                         }
                     })
                     .collect(),
@@ -166,7 +199,7 @@ fn columns(t: &TrackRow, csv: bool) -> (Vec<String>, Vec<Vec<String>>) {
             let mut r = vec![num(s.lambda), num(s.stroke), s.stable.to_string()];
             r.extend(s.frequencies_hz.iter().map(|f| num(*f)));
             for c in &s.compliance {
-                r.extend(c.stiffness.iter().map(|k| match k {
+                r.extend(c.stiffness.values().iter().map(|k| match k {
                     Some(k) => num(*k),
                     None if csv => String::new(),
                     None => "held".to_string(),
@@ -208,12 +241,12 @@ pub fn plot(name: &str, t: &TrackRow) -> String {
     let mut stiff: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
     if let Some(first) = t.steps.first() {
         for (ci, c) in first.compliance.iter().enumerate() {
-            for (i, k0) in c.stiffness.iter().enumerate() {
+            for (i, k0) in c.stiffness.values().iter().enumerate() {
                 let Some(k0) = k0 else { continue };
                 let pts = t
                     .steps
                     .iter()
-                    .filter_map(|s| s.compliance[ci].stiffness[i].map(|k| (s.stroke, k / k0)))
+                    .filter_map(|s| s.compliance[ci].stiffness.values()[i].map(|k| (s.stroke, k / k0)))
                     .collect();
                 let unit = if i < 3 { "N/mm" } else { "N·mm/rad" };
                 stiff.push((
