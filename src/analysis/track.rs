@@ -48,41 +48,34 @@ pub struct TrackCompliance {
     pub stiffness: AxisStiffness,
 }
 
-/// 1/C[i][i] per axis of a frame: x, y, z in N/mm, rx, ry, rz in N·mm/rad; an axis whose DOF
-/// is held (supported or prescribed: unbounded stiffness) is left out.
-#[derive(Debug, Clone, Serialize)]
-pub struct AxisStiffness {
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub x: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub y: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub z: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub rx: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub ry: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub rz: Option<f64>,
-}
+/// 1/C[i][i] per axis of a frame, in the order x, y, z (N/mm), rx, ry, rz (N·mm/rad);
+/// serialised as an object of the axes whose DOF is free (a held DOF, supported or prescribed,
+/// has unbounded stiffness and is left out).
+#[derive(Debug, Clone)]
+pub struct AxisStiffness(pub [Option<f64>; 6]);
 
 impl AxisStiffness {
     /// From the diagonal of a compliance matrix (zero: held).
     fn of(c: &[[f64; 6]; 6]) -> AxisStiffness {
-        let k = |i: usize| (c[i][i] > 0.0).then(|| 1.0 / c[i][i]);
-        AxisStiffness {
-            x: k(0),
-            y: k(1),
-            z: k(2),
-            rx: k(3),
-            ry: k(4),
-            rz: k(5),
-        }
+        AxisStiffness(std::array::from_fn(|i| (c[i][i] > 0.0).then(|| 1.0 / c[i][i])))
     }
 
     /// In the order x, y, z, rx, ry, rz.
     pub fn values(&self) -> [Option<f64>; 6] {
-        [self.x, self.y, self.z, self.rx, self.ry, self.rz]
+        self.0
+    }
+}
+
+impl Serialize for AxisStiffness {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut m = s.serialize_map(None)?;
+        for (axis, k) in AXES.iter().zip(self.0) {
+            if let Some(k) = k {
+                m.serialize_entry(axis, &k)?;
+            }
+        }
+        m.end()
     }
 }
 
