@@ -158,7 +158,7 @@ const BLOCK: usize = 6;
 /// returns the `nev` largest θ of S = A⁻¹M (descending), their M-orthonormal Ritz vectors,
 /// and the number of linear solves.
 /// Ritz values θ (descending), Ritz vectors and the number of solves.
-type RitzPairs = (Vec<f64>, Vec<Vec<f64>>, usize);
+pub(crate) type RitzPairs = (Vec<f64>, Vec<Vec<f64>>, usize);
 
 pub(crate) fn lanczos(pencil: &Pencil, n: usize, nev: usize, tol: f64) -> Result<RitzPairs, FemError> {
     let (m, what) = (pencil.w, pencil.what);

@@ -12,9 +12,10 @@ use super::assembly::MatrixKind;
 use super::constraints::DofMap;
 use super::diagnose::check_free_bodies;
 use super::error::FemError;
-use super::lanczos::{dot, lanczos, Pencil};
+pub(crate) use super::lanczos::RitzPairs;
+use super::lanczos::{dot, Pencil};
 use super::model::Model;
-use super::solve::{Factor, FactorError, Parallelism, SparseMatrix};
+use super::solve::{Factor, FactorError, FullSymmetric, Parallelism, SparseMatrix};
 use nalgebra::{Vector3, Vector6};
 
 /// Options of [`solve_modal`].
@@ -138,18 +139,8 @@ pub fn solve_modal_cached(
             "the model has no mass (give materials a density or add point masses)".into(),
         ));
     }
-    let negative_shift = || {
-        let mut ratios: Vec<f64> = kd
-            .iter()
-            .zip(&md)
-            .filter(|(k, m)| **k > 0.0 && **m > 0.0)
-            .map(|(k, m)| k / m)
-            .collect();
-        ratios.sort_by(f64::total_cmp);
-        let med = ratios.get(ratios.len() / 2).copied().unwrap_or(1.0);
-        -1e-6 * med
-    };
-    let mut shifts = match opts.shift {
+    let negative_shift = || -1e-6 * median_ratio(&kd, &md);
+    let shifts = match opts.shift {
         Some(s) if s.is_finite() => vec![s],
         Some(s) => return Err(FemError::BadInput(format!("modal shift must be finite, got {s}"))),
         // Supported: σ = 0, and if K turns out singular (a mechanism with mass, which has a
@@ -157,38 +148,11 @@ pub fn solve_modal_cached(
         None if check_free_bodies(model, &map).is_ok() => vec![0.0, negative_shift()],
         None => vec![negative_shift()],
     };
-    shifts.reverse();
     let symbolic = cache.modal_symbolic(&pattern)?;
-    let (shift, factor) = loop {
-        let Some(shift) = shifts.pop() else {
-            return Err(singular(&map, &k));
-        };
-        let a = k
-            .lin_comb(1.0, &m, -shift)
-            .ok_or_else(|| FemError::PatternMismatch("K and M patterns differ".into()))?;
-        match Factor::new(&symbolic, &a, opts.par) {
-            Ok(f) => {
-                let tiny = f
-                    .pivots()
-                    .iter()
-                    .zip(a.diagonal())
-                    .any(|(p, d)| p.is_nan() || *p <= super::diagnose::PIVOT_TOL * d);
-                if !tiny {
-                    break (shift, f);
-                }
-            }
-            Err(FactorError::NotPositiveDefinite) => {}
-            Err(FactorError::Other(s)) => return Err(FemError::Solver(s)),
-        }
+    let Some((shift, factor)) = factor_shifted(&k, &m, &symbolic, &shifts, opts.par)? else {
+        return Err(singular(&map, &k));
     };
-    let pencil = Pencil {
-        a: &factor,
-        w: &m.full(),
-        b: None,
-        what: "modes with mass",
-        positive: true,
-    };
-    let (theta, x, steps) = lanczos(&pencil, n, opts.n_modes.min(n), opts.tol)?;
+    let (theta, x, steps) = lanczos(&factor, &m.full(), n, opts.n_modes.min(n), opts.tol)?;
     let rigid = rigid_vectors(model, &map);
     let mr: Vec<Vec<f64>> = rigid.iter().map(|r| m.mul_vec(r)).collect();
     let total_mass: [f64; 6] = std::array::from_fn(|d| dot(&rigid[d], &mr[d]));
@@ -239,6 +203,51 @@ pub fn solve_modal_cached(
     })
 }
 
+/// Median of Kᵢᵢ/Mᵢᵢ over the DOFs where both are positive (1 without any): the scale of the
+/// eigenvalues, for choosing shifts.
+pub(crate) fn median_ratio(kd: &[f64], md: &[f64]) -> f64 {
+    let mut ratios: Vec<f64> = kd
+        .iter()
+        .zip(md)
+        .filter(|(k, m)| **k > 0.0 && **m > 0.0)
+        .map(|(k, m)| k / m)
+        .collect();
+    ratios.sort_by(f64::total_cmp);
+    ratios.get(ratios.len() / 2).copied().unwrap_or(1.0)
+}
+
+/// K − σM factorised (sparse Cholesky) for the first shift σ of `shifts` that makes it positive
+/// definite with every pivot above [`super::diagnose::PIVOT_TOL`] of its diagonal; `None` when
+/// none does. K and M share one pattern.
+pub(crate) fn factor_shifted(
+    k: &SparseMatrix,
+    m: &SparseMatrix,
+    symbolic: &super::solve::SymbolicFactor,
+    shifts: &[f64],
+    par: Parallelism,
+) -> Result<Option<(f64, Factor)>, FemError> {
+    for &shift in shifts {
+        let a = k
+            .lin_comb(1.0, m, -shift)
+            .ok_or_else(|| FemError::PatternMismatch("K and M patterns differ".into()))?;
+        match Factor::new(symbolic, &a, par) {
+            Ok(f) => {
+                let tiny = f
+                    .pivots()
+                    .iter()
+                    .zip(a.diagonal())
+                    .any(|(p, d)| p.is_nan() || *p <= super::diagnose::PIVOT_TOL * d);
+                if !tiny {
+                    return Ok(Some((shift, f)));
+                }
+            }
+            Err(FactorError::NotPositiveDefinite) => {}
+            Err(FactorError::Other(s)) => return Err(FemError::Solver(s)),
+        }
+    }
+    Ok(None)
+}
+
 fn singular(map: &DofMap, k: &SparseMatrix) -> FemError {
     let d = k.diagonal();
     let dofs: Vec<_> = d
@@ -251,4 +260,18 @@ fn singular(map: &DofMap, k: &SparseMatrix) -> FemError {
         return FemError::Unconstrained { dofs };
     }
     FemError::Solver("K − σM is singular: a mechanism without mass, or a massless DOF without stiffness".into())
+}
+
+/// Block shift-invert Lanczos on S = A⁻¹M in the M inner product ([`super::lanczos`]): the
+/// `nev` largest θ (descending, all positive), their M-orthonormal Ritz vectors and the number
+/// of linear solves.
+pub(crate) fn lanczos(a: &Factor, m: &FullSymmetric, n: usize, nev: usize, tol: f64) -> Result<RitzPairs, FemError> {
+    let pencil = Pencil {
+        a,
+        w: m,
+        b: None,
+        what: "modes with mass",
+        positive: true,
+    };
+    super::lanczos::lanczos(&pencil, n, nev, tol)
 }
