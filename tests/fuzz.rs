@@ -23,8 +23,8 @@
 //! changes the seed and `FLEXFEM_FUZZ_SCALE` multiplies the number of mutations (e.g. 10 for
 //! a longer local run). Failures are also written to `$CARGO_TARGET_TMPDIR/fuzz-failures/`.
 
+use flexfem::analysis::Case;
 use flexfem::analysis::{self, RunError};
-use flexfem::case::{self, Case};
 use serde_json::{Map, Value};
 use std::collections::BTreeMap;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -608,7 +608,7 @@ fn quietly<T>(f: impl FnOnce() -> T) -> std::thread::Result<T> {
 fn exercise(doc: &Value, what: &str, f: &mut Findings) {
     let analysis = doc.get("analysis").and_then(Value::as_str).unwrap_or("?").to_string();
     let base = cases_dir();
-    let parsed = match quietly(|| case::parse_value(doc.clone(), Some(&base))) {
+    let parsed = match quietly(|| analysis::parse_value(doc.clone(), Some(&base))) {
         Err(p) => {
             let m = panic_text(p);
             f.add(class_of("panic in parse", &analysis, &m), doc, what, m);
@@ -917,7 +917,7 @@ fn fuzz_binary_exit_codes_and_files() {
             cmd.current_dir(cases_dir());
             if is_sweep {
                 // Only small sweeps: the in-process fuzzer covers the designs.
-                let small = case::parse_value(doc.clone(), Some(&cases_dir()))
+                let small = analysis::parse_value(doc.clone(), Some(&cases_dir()))
                     .ok()
                     .and_then(|c| match c {
                         Case::Sweep(s) => s.build().ok().map(|s| s.len() <= 64),

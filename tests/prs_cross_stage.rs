@@ -15,7 +15,7 @@
 //! lateral and cross couplings of the legs, which the model takes as rigid/absent. The rigid-body
 //! model is bundled as cases/prs_stiffness_ruiz2019_stage.json (home pose, a tilted pose, a ±5° map).
 
-use flexfem::case::{self, Case};
+use flexfem::analysis::{self, Case};
 use flexfem::kinematics::prs_stiffness::{Branch, LegModel, PrsLayout, PrsStiffness};
 use flexfem::stage::Drive;
 use nalgebra::{Matrix3, Matrix6, Vector3};
@@ -71,7 +71,7 @@ fn cross_check(release: f64) -> Cross {
 
 fn cross_check_at(release: f64, at_neck_top: bool) -> Cross {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/cases/ruiz2019_stage.json");
-    let Case::Stage(sc) = case::load(std::path::Path::new(path)).unwrap() else {
+    let Case::Stage(sc) = analysis::load(std::path::Path::new(path)).unwrap() else {
         panic!("not a stage case")
     };
     let (vs, _) = sc.validated().unwrap();

@@ -8,7 +8,7 @@ mod common;
 
 /// Runs a case given as JSON; the JSON result.
 fn run(case: Value) -> Value {
-    let c = flexfem::case::parse_value(case, None).expect("valid case");
+    let c = flexfem::analysis::parse_value(case, None).expect("valid case");
     flexfem::analysis::run(&c).expect("analysis runs").json
 }
 
@@ -255,7 +255,7 @@ fn vtu_and_report_carry_shell_stresses() {
     let (l, b, t, mm) = (100.0, 20.0, 2.0, 1500.0);
     let (nx, ny) = (4, 2);
     let case = bending_strip(l, b, t, mm, (nx, ny), json!("Al7075"));
-    let c = flexfem::case::parse_value(case, None).unwrap();
+    let c = flexfem::analysis::parse_value(case, None).unwrap();
     let out = flexfem::analysis::run_with_files(&c).unwrap();
     let (_, vtu) = out.files.iter().find(|(n, _)| n == "M.vtu").expect("M.vtu");
     let vtu = String::from_utf8_lossy(vtu);

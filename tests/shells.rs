@@ -278,14 +278,13 @@ fn convergence_report() {
 #[test]
 fn gmsh_import_clamped_plate() {
     use flexfem::analysis;
-    use flexfem::case;
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let al = Material::AL7075;
     let d = al.e / (12.0 * (1.0 - al.nu * al.nu));
     let w_ref = 0.00560 * 100.0 * 100.0f64.powi(2) / d;
     let mut w = Vec::new();
     for name in ["gmsh_plate_quads", "gmsh_plate_tris"] {
-        let c = case::load(&root.join(format!("cases/{name}.json"))).unwrap();
+        let c = analysis::load(&root.join(format!("cases/{name}.json"))).unwrap();
         let out = analysis::run(&c).unwrap();
         let wc = -out.json["load_cases"][0]["displacements"][144][2].as_f64().unwrap();
         eprintln!(
@@ -320,7 +319,7 @@ fn gmsh_unknown_group_is_a_case_error() {
     let text = std::fs::read_to_string(root.join("cases/gmsh_plate_quads.json"))
         .unwrap()
         .replace("\"edge\"", "\"edges\"");
-    let err = flexfem::case::parse_in(&text, Some(&root.join("cases"))).unwrap_err();
+    let err = flexfem::analysis::parse_in(&text, Some(&root.join("cases"))).unwrap_err();
     assert!(err.to_string().contains("gmsh.groups.edges"), "{err}");
 }
 
