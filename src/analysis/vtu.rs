@@ -262,29 +262,3 @@ pub fn modes_vtu(model: &Model, modes: &[(f64, &[[f64; 6]])], drawn: &Drawn) -> 
     .map(String::into_bytes)
     .map_err(err)
 }
-
-/// One frame of a time series: the undeformed mesh with the displacements
-/// (`displacement_mm`, `rotation_deg`; rows as for [`static_vtu`]) and the time (field data
-/// `time_s`).
-pub fn displacement_vtu(model: &Model, u: &[[f64; 6]], time: f64) -> Result<String, AnalysisError> {
-    let n = model.nodes.len();
-    if u.len() < n {
-        return Err(AnalysisError::new(
-            "vtu",
-            format!("{} displacement rows for {n} nodes", u.len()),
-        ));
-    }
-    let drawn = Drawn::default();
-    let (points, c) = cells_with_bodies(model, &drawn);
-    let (disp, rot) = point_data(n, u, &drawn.lines);
-    let t = [time];
-    vtk::to_string(&VtuMesh {
-        points: &points,
-        cells: &c.cells,
-        point_vectors: vec![("displacement_mm", &disp), ("rotation_deg", &rot)],
-        cell_scalars: vec![("element", &c.element), ("part", &c.part)],
-        field_scalars: vec![("time_s", &t)],
-        ..Default::default()
-    })
-    .map_err(err)
-}

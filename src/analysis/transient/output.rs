@@ -109,7 +109,7 @@ pub fn result(case: &TransientCase, opts: &TransientOptions, raw: &TransientResu
     }
 }
 
-/// Markdown (records table) and CSV (one row per record).
+/// Markdown (records table) and CSV (one row, five columns per recorded DOF).
 pub fn report(r: &TransientResult) -> Report {
     let mut md = format!(
         "# Transient response\n\nScheme: {}; dt = {} s, {} steps; {} equations; Rayleigh damping alpha = {} 1/s, beta = {} s; {} elements with their own damping.\n\n",
@@ -122,7 +122,7 @@ pub fn report(r: &TransientResult) -> Report {
         r.damping.damped_elements
     );
     let mut t = Table::new(&["node", "dof", "max", "t max (s)", "min", "t min (s)", "final", "unit"]);
-    let mut csv = String::from("node,dof,unit,max,t_max_s,min,t_min_s,final\n");
+    let (mut head, mut row) = (Vec::new(), Vec::new());
     for rec in &r.records {
         t.row(vec![
             rec.node.to_string(),
@@ -134,17 +134,27 @@ pub fn report(r: &TransientResult) -> Report {
             sig(rec.final_value, 5),
             rec.unit.clone(),
         ]);
-        csv += &format!(
-            "{},{},{},{},{},{},{},{}\n",
-            rec.node, rec.dof, rec.unit, rec.max, rec.t_max_s, rec.min, rec.t_min_s, rec.final_value
-        );
+        let (p, u) = (format!("n{}_{}", rec.node, rec.dof), &rec.unit);
+        head.extend([
+            format!("{p}_max_{u}"),
+            format!("{p}_t_max_s"),
+            format!("{p}_min_{u}"),
+            format!("{p}_t_min_s"),
+            format!("{p}_final_{u}"),
+        ]);
+        row.extend([rec.max, rec.t_max_s, rec.min, rec.t_min_s, rec.final_value].map(|v| v.to_string()));
     }
     md += &t.render();
+    // One row: per recorded DOF its peaks and final value, units in the column names.
+    let csv = format!("{}\n{}\n", head.join(","), row.join(","));
     Report { markdown: md, csv }
 }
 
 /// `transient_histories.csv` (time, then displacement, velocity and acceleration of each
-/// recorded DOF), one SVG plot per recorded DOF, and the VTK time series.
+/// recorded DOF), one SVG plot per recorded DOF, and the VTK time series: frames as the
+/// `static` `.vtu` (displacements, element von Mises stress of beams and shells — 0 for hinge
+/// and spring elements, whose stresses the frames do not recover) collected with their times
+/// in `transient.pvd`.
 pub fn files(model: &Model, opts: &TransientOptions, raw: &TransientResults) -> Result<Files, RunError> {
     let mut out: Files = Vec::new();
     if !opts.record.is_empty() {
@@ -185,7 +195,16 @@ pub fn files(model: &Model, opts: &TransientOptions, raw: &TransientResults) -> 
         );
         for (k, (t, u)) in raw.snapshots.iter().enumerate() {
             let name = format!("transient_{k:04}.vtu");
-            let vtu = crate::analysis::vtu::displacement_vtu(model, u, *t)?;
+            let flat: Vec<f64> = u.concat();
+            let vm: Vec<f64> = (0..model.elements.len())
+                .map(|ie| {
+                    crate::fem::recovery::element_result(model, ie, &flat)
+                        .ok()
+                        .and_then(|r| r.max_von_mises())
+                        .unwrap_or(0.0)
+                })
+                .collect();
+            let vtu = crate::analysis::vtu::static_vtu(model, u, &|ie| vm[ie], &Default::default())?;
             pvd += &format!("    <DataSet timestep=\"{t}\" group=\"\" part=\"0\" file=\"{name}\"/>\n");
             out.push((name, vtu.into_bytes()));
         }
