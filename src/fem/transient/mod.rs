@@ -19,6 +19,8 @@
 //! impulse spread over one step) and load the free equations through the coupling columns of
 //! M, C and K.
 
+mod record;
+
 use super::assembly::{MatrixKind, Pattern};
 use super::constraints::DofMap;
 use super::diagnose::diagnose_mechanism;
@@ -376,7 +378,7 @@ pub fn solve_transient(
     }
     // Prescribed DOFs: (u, v, a) per DOF.
     let mut pstate = vec![[0.0f64; 3]; prescribed.len()];
-    let mut out = Recorder::new(opts, model, &map, &prescribed);
+    let mut out = record::Recorder::new(opts, model, &map, &prescribed);
     out.push(0.0, &u, &v, &a, &pstate, &kf, &mf)?;
     let mut f_prev = force(0.0);
     for step in 0..opts.steps {
@@ -401,8 +403,8 @@ pub fn solve_transient(
             let a1 = c0 * du - c2 * s[1] - c3 * s[2];
             let v1 = s[1] + dt * ((1.0 - gamma) * s[2] + gamma * a1);
             let (ku, cv) = (ap * u1 - alpha * s[0], ap * v1 - alpha * s[1]);
-            for i in 0..n {
-                rhs[i] -= c.m[i] * (a1 + ra * cv) + c.k[i] * (ku + rb * cv) + c.ce[i] * cv;
+            for (i, r) in rhs.iter_mut().enumerate() {
+                *r -= c.m[i] * (a1 + ra * cv) + c.k[i] * (ku + rb * cv) + c.ce[i] * cv;
             }
             *s = [u1, v1, a1];
         }
@@ -427,90 +429,4 @@ pub fn solve_transient(
     res.n_eq = n;
     res.warnings = warnings;
     Ok(res)
-}
-
-/// Collects the recorded series.
-struct Recorder<'a> {
-    opts: &'a TransientOptions,
-    map: &'a DofMap,
-    prescribed: &'a [NodeDof],
-    n_nodes: usize,
-    res: TransientResults,
-}
-
-impl<'a> Recorder<'a> {
-    fn new(opts: &'a TransientOptions, model: &Model, map: &'a DofMap, prescribed: &'a [NodeDof]) -> Self {
-        let nr = opts.record.len();
-        Recorder {
-            opts,
-            map,
-            prescribed,
-            n_nodes: model.nodes.len(),
-            res: TransientResults {
-                time: Vec::with_capacity(opts.steps + 1),
-                displacement: vec![Vec::with_capacity(opts.steps + 1); nr],
-                velocity: vec![Vec::with_capacity(opts.steps + 1); nr],
-                acceleration: vec![Vec::with_capacity(opts.steps + 1); nr],
-                snapshots: Vec::new(),
-                energy: Vec::new(),
-                n_eq: 0,
-                warnings: Vec::new(),
-            },
-        }
-    }
-
-    /// Full vector (6 per node, global axes) from equation values and prescribed values.
-    fn expand(&self, q: &[f64], pstate: &[[f64; 3]], which: usize) -> Vec<f64> {
-        let mut uc = vec![0.0; 6 * self.n_nodes];
-        for (p, s) in self.prescribed.iter().zip(pstate) {
-            uc[p.global()] = s[which];
-        }
-        self.map.expand(q, &uc)
-    }
-
-    #[allow(clippy::too_many_arguments)]
-    fn push(
-        &mut self,
-        t: f64,
-        u: &[f64],
-        v: &[f64],
-        a: &[f64],
-        pstate: &[[f64; 3]],
-        kf: &FullSymmetric,
-        mf: &FullSymmetric,
-    ) -> Result<(), FemError> {
-        let step = self.res.time.len();
-        self.res.time.push(t);
-        if !self.opts.record.is_empty() {
-            for (which, q) in [u, v, a].into_iter().enumerate() {
-                let full = self.expand(q, pstate, which);
-                let target = match which {
-                    0 => &mut self.res.displacement,
-                    1 => &mut self.res.velocity,
-                    _ => &mut self.res.acceleration,
-                };
-                for (s, r) in target.iter_mut().zip(&self.opts.record) {
-                    s.push(full[r.global()]);
-                }
-            }
-        }
-        let every = self.opts.snapshot_every;
-        if every > 0 && step % every == 0 {
-            let full = self.expand(u, pstate, 0);
-            let nodes = full.chunks(6).map(|c| std::array::from_fn(|d| c[d])).collect();
-            self.res.snapshots.push((t, nodes));
-        }
-        if self.opts.energy {
-            let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(p, q)| p * q).sum::<f64>();
-            self.res.energy.push(Energy {
-                kinetic: 0.5 * dot(v, &mf.mul_vec(v)),
-                strain: 0.5 * dot(u, &kf.mul_vec(u)),
-            });
-        }
-        Ok(())
-    }
-
-    fn finish(self) -> TransientResults {
-        self.res
-    }
 }
