@@ -37,8 +37,7 @@ fn symlinked_temporary_paths_do_not_redirect_writes() {
     let csv = d.join("s.csv");
     symlink(&victim, d.join("s.jsonl.tmp")).unwrap();
     symlink(&victim, d.join("s.csv.tmp")).unwrap();
-    let o = run_in(&d, &["sweep", s(&case), "--out", s(&out), "--csv", s(&csv)]);
-    assert_eq!(code(&o), Some(0), "{}", stderr(&o));
+    run_ok_in(&d, &["sweep", s(&case), "--out", s(&out), "--csv", s(&csv)]);
     assert_eq!(fs::read_to_string(&victim).unwrap(), PRECIOUS);
     assert!(fs::symlink_metadata(&out).unwrap().is_file());
     assert_eq!(line_count(&out), 3);
@@ -47,11 +46,9 @@ fn symlinked_temporary_paths_do_not_redirect_writes() {
     // `run --out DIR` into an earlier output folder with a link planted at `result.tmp~`.
     let hinge = root().join("cases/ruiz2019_hinge_revolute.json");
     let res = d.join("res");
-    let o = run_in(&d, &["run", s(&hinge), "--out", s(&res)]);
-    assert_eq!(code(&o), Some(0), "{}", stderr(&o));
+    run_ok_in(&d, &["run", s(&hinge), "--out", s(&res)]);
     symlink(&victim, res.join("result.tmp~")).unwrap();
-    let o = run_in(&d, &["run", s(&hinge), "--out", s(&res)]);
-    assert_eq!(code(&o), Some(0), "{}", stderr(&o));
+    run_ok_in(&d, &["run", s(&hinge), "--out", s(&res)]);
     assert_eq!(fs::read_to_string(&victim).unwrap(), PRECIOUS);
     assert!(fs::symlink_metadata(res.join("result.json")).unwrap().is_file());
     // No temporary file is left behind (only the planted link, untouched).
@@ -116,8 +113,7 @@ fn the_case_file_is_never_overwritten() {
         let mut args = vec!["run", s(&inside), "--out", s(&res)];
         args.extend(extra);
         let o = run_in(&d, &args);
-        assert_eq!(code(&o), Some(2), "{}", stderr(&o));
-        assert!(stderr(&o).contains("is the case file"), "{}", stderr(&o));
+        exits_2(&o, &["is the case file"]);
         assert_eq!(fs::read_to_string(&inside).unwrap(), text);
     }
     cleanup(&d);
@@ -132,40 +128,31 @@ fn unrelated_files_are_replaced_only_with_force() {
     let case = write(&d, "s.json", SWEEP);
     let notes = write(&d, "notes.jsonl", PRECIOUS);
     let o = run_in(&d, &["sweep", s(&case), "--out", s(&notes)]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("not a flexfem sweep line") && stderr(&o).contains("--force"));
+    exits_2(&o, &["not a flexfem sweep line", "--force"]);
     assert_eq!(fs::read_to_string(&notes).unwrap(), PRECIOUS);
     let table = write(&d, "table.csv", "a,b\n1,2\n");
     let o = run_in(&d, &["sweep", s(&case), "--csv", s(&table)]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
+    exits_2(&o, &[]);
     assert_eq!(fs::read_to_string(&table).unwrap(), "a,b\n1,2\n");
     assert!(stdout(&o).is_empty(), "refused before running");
 
-    let o = run_in(&d, &["sweep", s(&case), "--out", s(&notes), "--force"]);
-    assert_eq!(code(&o), Some(0), "{}", stderr(&o));
+    run_ok_in(&d, &["sweep", s(&case), "--out", s(&notes), "--force"]);
     assert_eq!(line_count(&notes), 3);
     // Now it is flexfem's own output: a re-run needs no --force.
-    let o = run_in(&d, &["sweep", s(&case), "--out", s(&notes)]);
-    assert_eq!(code(&o), Some(0), "{}", stderr(&o));
+    run_ok_in(&d, &["sweep", s(&case), "--out", s(&notes)]);
 
     let hinge = root().join("cases/ruiz2019_hinge_revolute.json");
     let docs = d.join("docs");
     fs::create_dir_all(&docs).unwrap();
     let readme = write(&docs, "report.md", PRECIOUS);
     let o = run_in(&d, &["run", s(&hinge), "--out", s(&docs)]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
-    assert!(
-        stderr(&o).contains("neither empty nor a flexfem output folder"),
-        "{}",
-        stderr(&o)
-    );
+    exits_2(&o, &["neither empty nor a flexfem output folder"]);
     assert_eq!(fs::read_to_string(&readme).unwrap(), PRECIOUS);
-    let o = run_in(&d, &["run", s(&hinge), "--out", s(&docs), "--force"]);
-    assert_eq!(code(&o), Some(0), "{}", stderr(&o));
+    run_ok_in(&d, &["run", s(&hinge), "--out", s(&docs), "--force"]);
     assert!(docs.join("result.json").is_file());
     // `--out` naming an existing file: refused, file kept.
     let o = run_in(&d, &["run", s(&hinge), "--out", s(&notes)]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
+    exits_2(&o, &[]);
     assert_eq!(line_count(&notes), 3);
     cleanup(&d);
 }
@@ -176,16 +163,11 @@ fn identical_output_paths_are_refused() {
     let d = tempdir("identical");
     let case = write(&d, "s.json", SWEEP);
     let o = run_in(&d, &["sweep", s(&case), "--out", "x.csv", "--csv", "x.csv"]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
-    assert!(
-        stderr(&o).contains("--out and --csv are the same file"),
-        "{}",
-        stderr(&o)
-    );
+    exits_2(&o, &["--out and --csv are the same file"]);
     assert!(!d.join("x.csv").exists());
     // Spelled differently, same file.
     let o = run_in(&d, &["sweep", s(&case), "--out", "x.jsonl", "--csv", "./x.jsonl"]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
+    exits_2(&o, &[]);
     cleanup(&d);
 }
 

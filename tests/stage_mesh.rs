@@ -193,12 +193,12 @@ fn compare(case_file: &str, name: &str) -> [f64; 3] {
             let el = el.unwrap();
             stresses[ic].iter().find(|(e, _)| *e == el).unwrap().1
         };
-        let got_h: Vec<f64> = s
-            .legs
-            .iter()
-            .map(|leg| by_el(leg.rev_element))
-            .chain(s.legs.iter().map(|leg| by_el(leg.sph_element)))
-            .collect();
+        // Revolute hinges of the three legs, then spherical ones.
+        let per_hinge = |of: &dyn Fn(Option<usize>) -> f64| -> Vec<f64> {
+            let rev = s.legs.iter().map(|leg| of(leg.rev_element));
+            rev.chain(s.legs.iter().map(|leg| of(leg.sph_element))).collect()
+        };
+        let got_h = per_hinge(&by_el);
         let hs = &sr["hinge_stress"];
         let want_h: Vec<f64> = (0..3)
             .map(|i| f(&hs["revolute"][i]))
@@ -211,12 +211,7 @@ fn compare(case_file: &str, name: &str) -> [f64; 3] {
             let h = mr["hinges"].as_array().unwrap();
             f(&h.iter().find(|h| h["element"] == el).unwrap()["peak_von_mises"])
         };
-        let got_r: Vec<f64> = s
-            .legs
-            .iter()
-            .map(|leg| from_result(leg.rev_element))
-            .chain(s.legs.iter().map(|leg| from_result(leg.sph_element)))
-            .collect();
+        let got_r = per_hinge(&from_result);
         let stress = worst(&got_h, &want_h, amax(&want_h)).max(worst(&got_r, &want_h, amax(&want_h)));
         eprintln!(
             "{case_file} `{}`: pose {pose:.2e}, strokes {stroke:.2e}, hinge stresses {stress:.2e}",

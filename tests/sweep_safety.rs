@@ -119,6 +119,12 @@ fn resume_after_a_mesh_file_change_reruns_stale_lines() {
     cleanup(&d);
 }
 
+/// Asserts a sweep's exit code, its summary numbers and phrases of its stderr.
+fn expect(o: &Output, exit: i32, summary_is: [usize; 4], needles: &[&str]) {
+    exits(o, exit, needles);
+    assert_eq!(summary(o), summary_is);
+}
+
 /// t ≥ h fails (4 of 12 designs): exit 1 with the count; a resume retries the error rows
 /// (they fail again: still exit 1), `--keep-errors` keeps them.
 #[test]
@@ -127,31 +133,33 @@ fn failed_designs_exit_1_and_error_rows_are_retried_on_resume() {
         "retry",
         r#"{"hinge.t": {"from": 2, "to": 12, "steps": 6}, "hinge.R": [4, 8]}"#,
     );
-    let o = sweep_to(&d, &case, &out);
-    assert_eq!(code(&o), Some(1), "{}", stderr(&o));
-    assert_eq!(summary(&o), [12, 0, 12, 4]);
-    assert!(stderr(&o).contains("error: 4 of 12 designs failed"), "{}", stderr(&o));
+    expect(
+        &sweep_to(&d, &case, &out),
+        1,
+        [12, 0, 12, 4],
+        &["error: 4 of 12 designs failed"],
+    );
 
-    let o = sweep_to(&d, &case, &out);
-    assert_eq!(code(&o), Some(1));
-    assert_eq!(summary(&o), [12, 8, 4, 4]);
-    assert!(stderr(&o).contains("retried 4 earlier error rows"), "{}", stderr(&o));
+    expect(
+        &sweep_to(&d, &case, &out),
+        1,
+        [12, 8, 4, 4],
+        &["retried 4 earlier error rows"],
+    );
     assert_eq!(lines(&out).len(), 12);
 
-    let o = sweep(
-        &d,
-        &[case.to_str().unwrap(), "--out", out.to_str().unwrap(), "--keep-errors"],
+    // The output still holds failed designs: exit 1.
+    let args = [case.to_str().unwrap(), "--out", out.to_str().unwrap(), "--keep-errors"];
+    expect(
+        &sweep(&d, &args),
+        1,
+        [12, 12, 0, 0],
+        &["kept 4 earlier error rows", "4 of 12 designs failed"],
     );
-    assert_eq!(code(&o), Some(1), "the output still holds failed designs");
-    assert_eq!(summary(&o), [12, 12, 0, 0]);
-    assert!(stderr(&o).contains("kept 4 earlier error rows"), "{}", stderr(&o));
-    assert!(stderr(&o).contains("4 of 12 designs failed"));
 
     // Every design failing on stdout: exit 1 as well.
     let all_bad = write(&d, "bad.json", &sweep_case("Al7075", HINGE, r#"{"hinge.t": [10, 11]}"#));
-    let o = sweep(&d, &[all_bad.to_str().unwrap()]);
-    assert_eq!(code(&o), Some(1), "{}", stderr(&o));
-    assert_eq!(summary(&o), [2, 0, 2, 2]);
+    expect(&sweep(&d, &[all_bad.to_str().unwrap()]), 1, [2, 0, 2, 2], &[]);
     cleanup(&d);
 }
 
@@ -359,8 +367,7 @@ fn check_validates_the_base_case_and_each_varied_path() {
     let bad_base = HINGE.replace("\"w\": 10", "\"w\": -10");
     let case = write(&d, "a.json", &sweep_case("Al7075", &bad_base, r#"{"hinge.t": [1, 2]}"#));
     let o = run_in(&d, &["check", case.to_str().unwrap()]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("`base.hinge.w`"), "{}", stderr(&o));
+    exits_2(&o, &["`base.hinge.w`"]);
 
     // t = 12 ≥ h = 10 only at the range's last value.
     let case = write(
@@ -373,7 +380,7 @@ fn check_validates_the_base_case_and_each_varied_path() {
         ),
     );
     let o = run_in(&d, &["check", case.to_str().unwrap()]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
+    exits_2(&o, &[]);
     let err = stderr(&o);
     assert!(err.contains("`vary.hinge.t`") && err.contains("hinge.t = 12"), "{err}");
 
@@ -383,8 +390,7 @@ fn check_validates_the_base_case_and_each_varied_path() {
         &sweep_case("unobtainium", HINGE, r#"{"hinge.t": [1, 2]}"#),
     );
     let o = run_in(&d, &["check", case.to_str().unwrap()]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("`base.material`"), "{}", stderr(&o));
+    exits_2(&o, &["`base.material`"]);
 
     // A good sweep passes and says how many designs were resolved.
     let case = write(
