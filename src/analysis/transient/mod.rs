@@ -141,17 +141,18 @@ pub struct RecordSpec {
 #[serde(deny_unknown_fields)]
 #[schemars(extend("allOf" = model_rules(false)))]
 pub struct TransientCase {
-    /// Free text (not used).
-    pub description: Option<String>,
-    /// Mesh file, as for `static` (its load cases are ignored).
-    pub mesh: Option<String>,
-    /// Physical-group mapping of a Gmsh `.msh` mesh.
-    pub gmsh: Option<GmshMapping>,
     /// Time step, s (> 0).
     pub dt: f64,
     /// Number of steps, 1 … 1000000.
     #[schemars(range(min = 1, max = 1000000))]
     pub steps: usize,
+    /// The model's JSON mesh file or Gmsh `.msh` file, as for `static` (its load cases are
+    /// ignored), or the model inline.
+    pub mesh: Option<String>,
+    /// Physical-group mapping of a Gmsh `.msh` mesh.
+    pub gmsh: Option<GmshMapping>,
+    /// Free text (not used).
+    pub description: Option<String>,
     /// `"newmark"` (default) or `"hht"`.
     pub scheme: SchemeName,
     /// α of HHT, −1/3 … 0 (default −0.05; only with `"scheme": "hht"`).
@@ -175,14 +176,14 @@ pub struct TransientCase {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct Options {
-    #[serde(default)]
-    description: Option<String>,
+    dt: f64,
+    steps: usize,
     #[serde(default)]
     mesh: Option<String>,
     #[serde(default)]
     gmsh: Option<GmshMapping>,
-    dt: f64,
-    steps: usize,
+    #[serde(default)]
+    description: Option<String>,
     #[serde(default)]
     scheme: SchemeName,
     #[serde(default)]
