@@ -136,10 +136,20 @@ pub struct RecordSpec {
     pub dof: Option<DofName>,
 }
 
+/// The model rules of `static`/`modal` cases without the last one (`steps` only when
+/// nonlinear): here `steps` is the number of time steps.
+fn rules() -> Value {
+    let mut v = model_rules(false);
+    if let Some(a) = v.as_array_mut() {
+        a.pop();
+    }
+    v
+}
+
 /// `"analysis": "transient"`.
 #[derive(Debug, Clone, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
-#[schemars(extend("allOf" = model_rules(false)))]
+#[schemars(extend("allOf" = rules()))]
 pub struct TransientCase {
     /// Time step, s (> 0).
     pub dt: f64,
@@ -154,19 +164,25 @@ pub struct TransientCase {
     /// Free text (not used).
     pub description: Option<String>,
     /// `"newmark"` (default) or `"hht"`.
+    #[serde(default)]
     pub scheme: SchemeName,
     /// α of HHT, −1/3 … 0 (default −0.05; only with `"scheme": "hht"`).
     pub hht_alpha: Option<f64>,
+    #[serde(default)]
     pub damping: DampingSpec,
     /// Load histories.
+    #[serde(default)]
     pub loads: Vec<LoadSpec>,
     /// Prescribed-motion histories.
+    #[serde(default)]
     pub motions: Vec<MotionSpec>,
     /// DOFs whose histories are recorded (CSV, SVG; peaks in the JSON result).
+    #[serde(default)]
     pub record: Vec<RecordSpec>,
     /// Frames of the VTK time series written with `--out` (default 50, at most `steps` + 1).
     pub frames: Option<usize>,
     /// Full recorded series in the JSON result (default false: peaks and final values only).
+    #[serde(default)]
     pub histories: bool,
     /// The model.
     #[serde(flatten)]
