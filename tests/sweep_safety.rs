@@ -33,6 +33,14 @@ fn sweep_to(dir: &Path, case: &Path, out: &Path) -> Output {
     sweep(dir, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()])
 }
 
+/// `flexfem sweep CASE --out OUT --shard SHARD` in `dir`.
+fn shard_to(dir: &Path, case: &Path, out: &Path, shard: &str) -> Output {
+    sweep(
+        dir,
+        &[case.to_str().unwrap(), "--out", out.to_str().unwrap(), "--shard", shard],
+    )
+}
+
 fn lines(path: &Path) -> Vec<Value> {
     parse_lines(&std::fs::read_to_string(path).unwrap())
 }
@@ -201,16 +209,7 @@ fn concurrent_shards_to_one_out_lose_no_designs() {
                     k + 1
                 );
                 assert!(err.contains("s.jsonl.lock"), "{err}");
-                let again = sweep(
-                    &d,
-                    &[
-                        case.to_str().unwrap(),
-                        "--out",
-                        out.to_str().unwrap(),
-                        "--shard",
-                        &format!("{}/2", k + 1),
-                    ],
-                );
+                let again = shard_to(&d, &case, &out, &format!("{}/2", k + 1));
                 assert_eq!(code(&again), Some(0), "{}", stderr(&again));
             }
             other => panic!("shard {}: exit {other:?}: {}", k + 1, stderr(o)),
@@ -237,16 +236,7 @@ fn concurrent_shards_to_one_out_lose_no_designs() {
 fn sequential_shards_to_one_out_accumulate() {
     let (d, case, out) = al7075_sweep("seqshards", r#"{"hinge.t": [1, 2, 3], "hinge.R": [4, 8, 12]}"#);
     for k in 1..=3 {
-        let o = sweep(
-            &d,
-            &[
-                case.to_str().unwrap(),
-                "--out",
-                out.to_str().unwrap(),
-                "--shard",
-                &format!("{k}/3"),
-            ],
-        );
+        let o = shard_to(&d, &case, &out, &format!("{k}/3"));
         assert_eq!(code(&o), Some(0), "{}", stderr(&o));
         assert_eq!(summary(&o), [3, 0, 3, 0]);
     }
