@@ -20,6 +20,7 @@ pub mod dof;
 pub mod element;
 pub mod elements;
 pub mod error;
+pub mod history;
 pub mod lattice;
 pub mod loads;
 pub mod mass;
@@ -34,6 +35,7 @@ pub mod shell_loads;
 pub mod shell_recovery;
 pub mod solve;
 pub mod transform;
+pub mod transient;
 
 pub use analysis::{CaseResult, StaticResults, System};
 pub use cache::SolverCache;
