@@ -11,7 +11,7 @@ fn one_material(spec: &MaterialSpec) -> Vec<UsedMaterial> {
         .unwrap_or_default()
 }
 
-pub(crate) fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>) -> Vec<UsedMaterial> {
+pub(super) fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>) -> Vec<UsedMaterial> {
     specs
         .iter()
         .filter_map(|(k, spec)| spec.resolve(k).ok().map(|m| (k.clone(), spec.clone(), m)))
@@ -56,13 +56,20 @@ impl Analysis for Hinge {
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.validate().map(|_| ())
     }
-    fn run(case: &Self::Case, _ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        hinge::solve(case)
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        let out = hinge::solve(case)?;
+        if let (true, Some(d)) = (ctx.with_files, &out.damping) {
+            ctx.files.extend(hinge::damping_files(d));
+        }
+        Ok(out)
     }
     fn report(r: &Self::Result) -> Report {
         let mut report = hinge::report(&r.result);
         if let Some(lr) = &r.large_rotation {
             report.markdown += &hinge::large_rotation_report(lr);
+        }
+        if let Some(d) = &r.damping {
+            report.markdown += &hinge::damping_report(d);
         }
         report
     }

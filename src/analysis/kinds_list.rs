@@ -60,8 +60,10 @@ macro_rules! analyses {
             PanTilt = "pantilt" #9, mod pantilt, analysis pantilt::PanTiltKind;
             /// Jacobian stiffness of a 3-PRS with compliant legs.
             PrsStiffness = "prs_stiffness" #10, mod prs_stiffness, analysis prs_stiffness::PrsStiffnessAnalysis;
+            /// Linear transient response of a beam/shell model to load and motion histories.
+            Transient = "transient" #11, mod transient, analysis transient::TransientKind, parse transient::parse_transient;
             /// Linear buckling: load multipliers and mode shapes of a reference load on a generic beam model.
-            Buckling = "buckling" #11, mod buckling, analysis buckling::Buckling, parse buckling::parse_buckling;
+            Buckling = "buckling" #12, mod buckling, analysis buckling::Buckling, parse buckling::parse_buckling;
         }
     };
 }

@@ -21,6 +21,7 @@ pub mod dof;
 pub mod element;
 pub mod elements;
 pub mod error;
+pub mod history;
 pub mod lanczos;
 pub mod lattice;
 pub mod loads;
@@ -36,6 +37,7 @@ pub mod shell_loads;
 pub mod shell_recovery;
 pub mod solve;
 pub mod transform;
+pub mod transient;
 
 pub use analysis::{CaseResult, StaticResults, System};
 pub use cache::SolverCache;

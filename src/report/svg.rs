@@ -133,6 +133,15 @@ impl Frame {
 
 /// A scatter plot with connecting lines per series, axes with ticks, title and labels.
 pub fn scatter(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])]) -> String {
+    plot(title, xlabel, ylabel, series, true)
+}
+
+/// Like [`scatter`] without point markers (long time histories).
+pub fn lines(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])]) -> String {
+    plot(title, xlabel, ylabel, series, false)
+}
+
+fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])], markers: bool) -> String {
     let all: Vec<(f64, f64)> = series.iter().flat_map(|(_, p)| p.iter().copied()).collect();
     let f = Frame::new(640.0, 420.0, 20.0, &all, &[], true);
     let mut out = f.open(title, xlabel, ylabel);
@@ -155,7 +164,7 @@ pub fn scatter(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64,
             "<polyline fill=\"none\" stroke=\"{c}\" points=\"{}\"/>\n",
             path.join(" ")
         );
-        for &(x, y) in &sorted {
+        for &(x, y) in sorted.iter().filter(|_| markers) {
             out += &format!(
                 "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"4\" fill=\"{c}\"/>\n",
                 f.sx(x),
