@@ -11,7 +11,7 @@ fn one_material(spec: &MaterialSpec) -> Vec<UsedMaterial> {
         .unwrap_or_default()
 }
 
-fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>) -> Vec<UsedMaterial> {
+pub(super) fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>) -> Vec<UsedMaterial> {
     specs
         .iter()
         .filter_map(|(k, spec)| spec.resolve(k).ok().map(|m| (k.clone(), spec.clone(), m)))

@@ -47,6 +47,9 @@ macro_rules! analyses {
             PanTilt = "pantilt" #9, mod pantilt, case pantilt::PanTiltCase, parse shape, analysis pantilt::PanTiltKind;
             /// Jacobian stiffness of a 3-PRS with compliant legs.
             PrsStiffness = "prs_stiffness" #10, mod prs_stiffness, case prs_stiffness::PrsStiffnessCase, parse shape, analysis prs_stiffness::PrsStiffnessAnalysis;
+            /// Exact-constraint check of a mesh model: redundant constraints and free motions of its
+            /// bodies taken rigid (Grübler–Kutzbach by rank; Blanding, Exact Constraint, 1999).
+            Constraints = "constraints" #11, mod constraints, case constraints::ConstraintsCase, parse constraints::parse, analysis constraints::ConstraintsAnalysis;
         }
     };
 }

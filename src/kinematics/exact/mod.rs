@@ -35,6 +35,8 @@ pub enum Source {
     Tie(usize),
     /// `model.load_cases[case].displacements[i]` (a drive).
     Prescribed { case: usize, index: usize },
+    /// An element seen as a joint (numbered by the caller).
+    Element(usize),
 }
 
 /// One scalar constraint equation.
@@ -45,8 +47,10 @@ pub struct Constraint {
     pub dof: usize,
     /// The frame axis of `dof` in global coordinates.
     pub axis: [f64; 3],
-    /// The node the constraint acts at.
+    /// The node the constraint acts on (its body).
     pub node: usize,
+    /// Where it acts, mm (a tie or support: the node).
+    pub at: [f64; 3],
     /// The other node of a tie; `None` for the ground.
     pub other: Option<usize>,
 }
@@ -72,6 +76,7 @@ pub fn model_constraints(model: &Model, drives: bool) -> Vec<Constraint> {
                 dof,
                 axis: f[dof % 3],
                 node,
+                at: model.nodes[node],
                 other,
             });
         }
@@ -153,7 +158,7 @@ pub fn jacobian(nodes: &[[f64; 3]], bodies: &Bodies, constraints: &[Constraint])
     let mut j = DMatrix::zeros(constraints.len(), 6 * bodies.members.len());
     for (r, c) in constraints.iter().enumerate() {
         let e = Vector3::from(c.axis);
-        let p = Vector3::from(nodes[c.node]);
+        let p = Vector3::from(c.at);
         let sides = [(c.node, 1.0)].into_iter().chain(c.other.map(|o| (o, -1.0)));
         for (n, sign) in sides {
             let b = bodies.of_node[n];
@@ -210,7 +215,11 @@ pub enum BodyMotion {
     Translation { direction: [f64; 3] },
     /// Rotation about the axis along `direction` (unit) through `point` (the point of the
     /// axis nearest the body's reference point), with `pitch` mm/rad (0: pure rotation).
-    Rotation { direction: [f64; 3], point: [f64; 3], pitch: f64 },
+    Rotation {
+        direction: [f64; 3],
+        point: [f64; 3],
+        pitch: f64,
+    },
 }
 
 /// One free motion: the bodies that move, with their share (the largest 1).
@@ -283,7 +292,11 @@ fn motion(q: &DVector<f64>, centres: &[Vector3<f64>], l: f64) -> Motion {
             continue;
         }
         let (v, w) = twist(b);
-        let (dir, rate) = if w.norm() <= 1e-9 * big { (v, v.norm()) } else { (w, w.norm()) };
+        let (dir, rate) = if w.norm() <= 1e-9 * big {
+            (v, v.norm())
+        } else {
+            (w, w.norm())
+        };
         // Sign: the largest component of the direction positive.
         let k = dir.iamax();
         let sign = if dir[k] < 0.0 { -1.0 } else { 1.0 };

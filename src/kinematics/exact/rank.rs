@@ -71,7 +71,10 @@ impl Span {
 /// The rank analysis of `j` (rows are constraints; zero rows allowed, others of unit length).
 pub fn analyse(j: &DMatrix<f64>) -> RankAnalysis {
     let (m, n) = j.shape();
-    let mut span = Span { q: Vec::new(), r: Vec::new() };
+    let mut span = Span {
+        q: Vec::new(),
+        r: Vec::new(),
+    };
     let mut independent = Vec::new();
     let mut redundant = Vec::new();
     for row in 0..m {
@@ -111,7 +114,10 @@ pub fn analyse(j: &DMatrix<f64>) -> RankAnalysis {
 
 /// Rank of `j` alone (the greedy decision of [`analyse`], without the null space).
 pub fn rank(j: &DMatrix<f64>) -> usize {
-    let mut span = Span { q: Vec::new(), r: Vec::new() };
+    let mut span = Span {
+        q: Vec::new(),
+        r: Vec::new(),
+    };
     for row in 0..j.nrows() {
         let x: DVector<f64> = j.row(row).transpose();
         if x.norm() == 0.0 {

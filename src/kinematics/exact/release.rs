@@ -63,22 +63,19 @@ pub struct Candidate {
     pub removes: Vec<usize>,
 }
 
-/// The candidates: every joint kind that frees more than a tie does now (each tie's in order
-/// of freed DOFs), the ties in reverse order (the joint closing a loop last is released first
+/// The candidates: every joint kind that frees more than a joint does now (each joint's in order
+/// of freed DOFs), the joints in reverse order (the joint closing a loop last is released first
 /// on ties), then each supported DOF.
 pub fn candidates(constraints: &[Constraint]) -> Vec<Candidate> {
-    let ties: BTreeSet<usize> = constraints
-        .iter()
-        .filter_map(|c| match c.source {
-            Source::Tie(t) => Some(t),
-            _ => None,
-        })
-        .collect();
+    let mut joints: Vec<Source> = Vec::new();
+    for c in constraints {
+        if is_joint(c.source) && !joints.contains(&c.source) {
+            joints.push(c.source);
+        }
+    }
     let mut out = Vec::new();
-    for &t in ties.iter().rev() {
-        let rows: Vec<usize> = (0..constraints.len())
-            .filter(|&r| constraints[r].source == Source::Tie(t))
-            .collect();
+    for &t in joints.iter().rev() {
+        let rows: Vec<usize> = (0..constraints.len()).filter(|&r| constraints[r].source == t).collect();
         let tied: BTreeSet<usize> = rows.iter().map(|&r| constraints[r].dof).collect();
         for kind in Kind::joints() {
             let free = kind.free();
@@ -86,9 +83,13 @@ pub fn candidates(constraints: &[Constraint]) -> Vec<Candidate> {
             if (0..6).any(|d| !tied.contains(&d) && !free.contains(&d)) || free.iter().all(|d| !tied.contains(d)) {
                 continue;
             }
-            let removes = rows.iter().copied().filter(|&r| free.contains(&constraints[r].dof)).collect();
+            let removes = rows
+                .iter()
+                .copied()
+                .filter(|&r| free.contains(&constraints[r].dof))
+                .collect();
             out.push(Candidate {
-                source: Source::Tie(t),
+                source: t,
                 kind,
                 removes,
             });
@@ -104,6 +105,11 @@ pub fn candidates(constraints: &[Constraint]) -> Vec<Candidate> {
         }
     }
     out
+}
+
+/// A joint (a tie, or an element seen as a joint), whose releases are joint kinds.
+fn is_joint(s: Source) -> bool {
+    matches!(s, Source::Tie(_) | Source::Element(_))
 }
 
 /// Largest amount of work (rows · columns · rank, summed over the candidates of one step) the
@@ -129,8 +135,7 @@ pub fn search(j: &DMatrix<f64>, candidates: &[Candidate], max_steps: usize) -> O
                 .iter()
                 .copied()
                 .filter(|r| {
-                    matches!(c.source, Source::Tie(_))
-                        && candidates.iter().any(|o| o.source == c.source && o.removes.contains(r))
+                    is_joint(c.source) && candidates.iter().any(|o| o.source == c.source && o.removes.contains(r))
                 })
                 .collect();
             if same.iter().any(|r| !c.removes.contains(r)) {
@@ -140,7 +145,9 @@ pub fn search(j: &DMatrix<f64>, candidates: &[Candidate], max_steps: usize) -> O
             if new == 0 || best.is_some_and(|(_, s)| s >= new) {
                 continue;
             }
-            let keep: Vec<usize> = (0..m).filter(|r| !removed.contains(r) && !c.removes.contains(r)).collect();
+            let keep: Vec<usize> = (0..m)
+                .filter(|r| !removed.contains(r) && !c.removes.contains(r))
+                .collect();
             if rank::rank(&j.select_rows(keep.iter())) == rank0 {
                 best = Some((ic, new));
             }

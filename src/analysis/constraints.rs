@@ -1,0 +1,200 @@
+//! The `constraints` analysis: exact-constraint check of a mesh model (see
+//! [`crate::kinematics::exact`]): redundant constraints named in joint terms with their
+//! case-file paths, free motions named by body, and releases that remove the redundancy.
+
+mod text;
+
+use super::kind::{Analysis, Ctx, UsedMaterial};
+use super::{AnalysisError, Report, RunError};
+use crate::case::constraints::{ConstraintsCase, HingeView};
+use crate::case::mesh::{ElementSpec, MeshSpec};
+use crate::case::CaseError;
+use crate::kinematics::exact::{self, release, Bodies, BodyMotion, Constraint, Source};
+use serde::Serialize;
+
+/// Most releases suggested.
+pub const MAX_SUGGESTIONS: usize = 12;
+
+/// The result of a `constraints` run.
+#[derive(Debug, Clone, Serialize)]
+pub struct ConstraintsResult {
+    /// Number of bodies (the ground not counted).
+    pub bodies: usize,
+    /// Scalar constraint equations (joints, supports, drives).
+    pub constraints: usize,
+    /// Rank of the constraint Jacobian.
+    pub rank: usize,
+    /// Grübler–Kutzbach count 6·bodies − constraints (negative: at least that many redundant).
+    pub grubler_kutzbach: i64,
+    /// Redundant constraints (degree of over-constraint), constraints − rank.
+    pub redundant: usize,
+    /// Free motions (mobility, degree of under-constraint), 6·bodies − rank.
+    pub mobility: usize,
+    /// Smallest singular value of the independent constraints (unit rows; 1 = orthogonal,
+    /// near 0 = nearly dependent).
+    pub smallest_singular_value: f64,
+    /// The bodies.
+    pub body_list: Vec<text::BodyOut>,
+    /// Each redundant constraint and the independent ones it depends on.
+    pub redundancies: Vec<text::RedundancyOut>,
+    /// A basis of the free motions.
+    pub free_motions: Vec<text::MotionOut>,
+    /// Releases that remove redundant constraints without adding a free motion, in order.
+    pub suggestions: Vec<text::SuggestionOut>,
+}
+
+/// `constraints`: the exact-constraint check.
+pub struct ConstraintsAnalysis;
+
+impl Analysis for ConstraintsAnalysis {
+    const KIND: &'static str = "constraints";
+    type Case = ConstraintsCase;
+    type Result = ConstraintsResult;
+
+    fn check(case: &Self::Case) -> Result<(), CaseError> {
+        case.check_compliant()?;
+        case.model.build_model(false).map(|_| ())
+    }
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        case.check_compliant()?;
+        let (r, warnings) = check(&case.model, &case.compliant, case.hinges, case.drives)?;
+        ctx.warnings = warnings;
+        Ok(r)
+    }
+    fn report(r: &Self::Result) -> Report {
+        text::report(r)
+    }
+    fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
+        super::kinds::named_materials(&case.model.materials)
+    }
+}
+
+/// The model seen by the check: its constraints and bodies.
+pub struct Kinematic {
+    pub constraints: Vec<Constraint>,
+    pub bodies: Bodies,
+    /// Case element index of each tie (the joint elements in order).
+    pub joint_elements: Vec<usize>,
+    /// Frame of each constraint's joint or support node (rows: local x, y, z).
+    pub frames: Vec<[[f64; 3]; 3]>,
+}
+
+/// The bodies and constraints of a model (validated by building it): bodies joined by the
+/// beam, hinge (unless seen as revolute joints), shell4 and rigid elements not listed in
+/// `compliant`, and by rigid links.
+pub fn kinematic(
+    spec: &MeshSpec,
+    compliant: &[usize],
+    hinges: HingeView,
+    drives: bool,
+) -> Result<Kinematic, CaseError> {
+    let model = spec.build_model(false)?;
+    let n = spec.nodes.len();
+    let mut groups: Vec<Vec<usize>> = spec
+        .rigid_links
+        .iter()
+        .map(|r| std::iter::once(r.master).chain(r.slaves.iter().copied()).collect())
+        .collect();
+    let mut joint_elements = Vec::new();
+    let mut extra = Vec::new();
+    for (i, e) in spec.elements.iter().enumerate() {
+        let rigid = !compliant.contains(&i);
+        match e {
+            ElementSpec::Beam { nodes, .. } if rigid => groups.push(nodes.to_vec()),
+            ElementSpec::Shell4 { nodes, .. } if rigid => groups.push(nodes.to_vec()),
+            ElementSpec::Hinge { nodes, up, .. } if rigid => match hinges {
+                HingeView::Rigid => groups.push(nodes.to_vec()),
+                HingeView::Revolute => extra.extend(text::hinge_revolute(spec, i, *nodes, *up)),
+            },
+            ElementSpec::Rigid { master, slaves } => {
+                groups.push(std::iter::once(*master).chain(slaves.iter().copied()).collect())
+            }
+            ElementSpec::Joint { .. } => joint_elements.push(i),
+            _ => {}
+        }
+    }
+    let mut constraints = exact::model_constraints(&model, drives);
+    constraints.extend(extra);
+    let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let frames = constraints
+        .iter()
+        .map(|c| match c.source {
+            Source::Element(_) => text::element_frame(&constraints, c.source),
+            _ => model.frames.get(&c.node).copied().unwrap_or(identity),
+        })
+        .collect();
+    Ok(Kinematic {
+        constraints,
+        bodies: Bodies::new(n, &groups),
+        joint_elements,
+        frames,
+    })
+}
+
+/// Runs the check on a model: the result and its warnings.
+pub fn check(
+    spec: &MeshSpec,
+    compliant: &[usize],
+    hinges: HingeView,
+    drives: bool,
+) -> Result<(ConstraintsResult, Vec<String>), RunError> {
+    let k = kinematic(spec, compliant, hinges, drives)?;
+    let nodes = &spec.nodes;
+    let d = exact::diagnose(nodes, &k.bodies, &k.constraints).map_err(|e| AnalysisError::new("model", e))?;
+    let names = text::Names::new(spec, &k);
+    let mut warnings = text::spring_warnings(spec);
+    let j = exact::jacobian(nodes, &k.bodies, &k.constraints);
+    let cands = release::candidates(&k.constraints);
+    let suggestions = match release::search(&j, &cands, MAX_SUGGESTIONS) {
+        Some(applied) => names.suggestions(&cands, &applied, d.redundant.len()),
+        None => {
+            warnings.push("the model is too large for the search of releases: no suggestions".into());
+            Vec::new()
+        }
+    };
+    if d.svd_rank != d.rank {
+        warnings.push(format!(
+            "the singular values give rank {} where the row-by-row decision gives {}: some constraints are nearly dependent (smallest singular value {:.3e}); the counts are those of the row-by-row decision",
+            d.svd_rank, d.rank, d.min_singular
+        ));
+    }
+    let m = k.constraints.len();
+    let r = ConstraintsResult {
+        bodies: k.bodies.members.len(),
+        constraints: m,
+        rank: d.rank,
+        grubler_kutzbach: 6 * k.bodies.members.len() as i64 - m as i64,
+        redundant: m - d.rank,
+        mobility: 6 * k.bodies.members.len() - d.rank,
+        smallest_singular_value: d.min_singular,
+        body_list: names.bodies(),
+        redundancies: d.redundant.iter().map(|(row, with)| names.redundancy(*row, with)).collect(),
+        free_motions: d.motions.iter().map(|mo| names.motion(mo)).collect(),
+        suggestions,
+    };
+    Ok((r, warnings))
+}
+
+/// A one-line summary of the check for the error of a singular static or modal solve, `None`
+/// when the check itself fails or the model is not a mesh model.
+pub fn singular_hint(spec: &MeshSpec) -> Option<String> {
+    let (r, _) = check(spec, &[], HingeView::Rigid, true).ok()?;
+    let motions: Vec<String> = r.free_motions.iter().take(3).map(|m| m.text.clone()).collect();
+    let more = r.free_motions.len().saturating_sub(3);
+    Some(format!(
+        "exact-constraint check (every element rigid, `\"analysis\": \"constraints\"` for the full report): mobility {}, {} redundant{}{}",
+        r.mobility,
+        r.redundant,
+        if motions.is_empty() { String::new() } else { format!("; free: {}", motions.join("; ")) },
+        if more > 0 { format!(" (and {more} more)") } else { String::new() }
+    ))
+}
+
+/// Which kind of motion a body makes (for the text).
+pub(crate) fn motion_word(m: &BodyMotion) -> &'static str {
+    match m {
+        BodyMotion::Translation { .. } => "translation",
+        BodyMotion::Rotation { pitch, .. } if *pitch != 0.0 => "screw",
+        BodyMotion::Rotation { .. } => "rotation",
+    }
+}
