@@ -57,7 +57,7 @@ impl Analysis for ConstraintsAnalysis {
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         case.check_compliant()?;
-        let (r, warnings) = check(&case.model, &case.compliant, case.hinges, case.drives)?;
+        let (r, warnings) = check(&case.model, &case.compliant, case.hinges, case.drives, true)?;
         ctx.warnings = warnings;
         Ok(r)
     }
@@ -75,6 +75,8 @@ pub struct Kinematic {
     pub bodies: Bodies,
     /// Case element index of each tie (the joint elements in order).
     pub joint_elements: Vec<usize>,
+    /// Case elements that join their nodes into a body.
+    pub joining: Vec<usize>,
     /// Frame of each constraint's joint or support node (rows: local x, y, z).
     pub frames: Vec<[[f64; 3]; 3]>,
 }
@@ -96,22 +98,29 @@ pub fn kinematic(
         .map(|r| std::iter::once(r.master).chain(r.slaves.iter().copied()).collect())
         .collect();
     let mut joint_elements = Vec::new();
+    let mut joining = Vec::new();
     let mut extra = Vec::new();
     for (i, e) in spec.elements.iter().enumerate() {
         let rigid = !compliant.contains(&i);
-        match e {
-            ElementSpec::Beam { nodes, .. } if rigid => groups.push(nodes.to_vec()),
-            ElementSpec::Shell4 { nodes, .. } if rigid => groups.push(nodes.to_vec()),
+        let group: Vec<usize> = match e {
+            ElementSpec::Beam { nodes, .. } if rigid => nodes.to_vec(),
+            ElementSpec::Shell4 { nodes, .. } if rigid => nodes.to_vec(),
             ElementSpec::Hinge { nodes, up, .. } if rigid => match hinges {
-                HingeView::Rigid => groups.push(nodes.to_vec()),
-                HingeView::Revolute => extra.extend(text::hinge_revolute(spec, i, *nodes, *up)),
+                HingeView::Rigid => nodes.to_vec(),
+                HingeView::Revolute => {
+                    extra.extend(text::hinge_revolute(spec, i, *nodes, *up));
+                    continue;
+                }
             },
-            ElementSpec::Rigid { master, slaves } => {
-                groups.push(std::iter::once(*master).chain(slaves.iter().copied()).collect())
+            ElementSpec::Rigid { master, slaves } => std::iter::once(*master).chain(slaves.iter().copied()).collect(),
+            ElementSpec::Joint { .. } => {
+                joint_elements.push(i);
+                continue;
             }
-            ElementSpec::Joint { .. } => joint_elements.push(i),
-            _ => {}
-        }
+            _ => continue,
+        };
+        groups.push(group);
+        joining.push(i);
     }
     let mut constraints = exact::model_constraints(&model, drives);
     constraints.extend(extra);
@@ -127,16 +136,19 @@ pub fn kinematic(
         constraints,
         bodies: Bodies::new(n, &groups),
         joint_elements,
+        joining,
         frames,
     })
 }
 
-/// Runs the check on a model: the result and its warnings.
+/// Runs the check on a model (with the search of releases when `suggest`): the result and its
+/// warnings.
 pub fn check(
     spec: &MeshSpec,
     compliant: &[usize],
     hinges: HingeView,
     drives: bool,
+    suggest: bool,
 ) -> Result<(ConstraintsResult, Vec<String>), RunError> {
     let k = kinematic(spec, compliant, hinges, drives)?;
     let nodes = &spec.nodes;
@@ -145,8 +157,8 @@ pub fn check(
     let mut warnings = text::spring_warnings(spec);
     let j = exact::jacobian(nodes, &k.bodies, &k.constraints);
     let cands = release::candidates(&k.constraints);
-    let suggestions = match release::search(&j, &cands, MAX_SUGGESTIONS) {
-        Some(applied) => names.suggestions(&cands, &applied, d.redundant.len()),
+    let suggestions = match release::search(&j, &cands, if suggest { MAX_SUGGESTIONS } else { 0 }) {
+        Some(applied) => names.suggestions(&cands, &applied),
         None => {
             warnings.push("the model is too large for the search of releases: no suggestions".into());
             Vec::new()
@@ -175,19 +187,26 @@ pub fn check(
     Ok((r, warnings))
 }
 
-/// A one-line summary of the check for the error of a singular static or modal solve, `None`
-/// when the check itself fails or the model is not a mesh model.
-pub fn singular_hint(spec: &MeshSpec) -> Option<String> {
-    let (r, _) = check(spec, &[], HingeView::Rigid, true).ok()?;
+/// The error of a static solve, with the exact-constraint check appended when the solve found
+/// a mechanism, an unconstrained DOF or a free body (`e` unchanged otherwise, or when the check
+/// itself cannot run).
+pub fn singular_hint(e: AnalysisError, spec: &MeshSpec) -> AnalysisError {
+    let singular = ["mechanism", "free body"].iter().any(|w| e.message.contains(w));
+    let Some((r, _)) = singular.then(|| check(spec, &[], HingeView::Rigid, true, false).ok()).flatten() else {
+        return e;
+    };
     let motions: Vec<String> = r.free_motions.iter().take(3).map(|m| m.text.clone()).collect();
     let more = r.free_motions.len().saturating_sub(3);
-    Some(format!(
-        "exact-constraint check (every element rigid, `\"analysis\": \"constraints\"` for the full report): mobility {}, {} redundant{}{}",
+    let hint = format!(
+        "exact-constraint check (elements rigid; `\"analysis\": \"constraints\"` gives the full report): {} free motion{}, {} redundant constraint{}{}{}",
         r.mobility,
+        if r.mobility == 1 { "" } else { "s" },
         r.redundant,
+        if r.redundant == 1 { "" } else { "s" },
         if motions.is_empty() { String::new() } else { format!("; free: {}", motions.join("; ")) },
         if more > 0 { format!(" (and {more} more)") } else { String::new() }
-    ))
+    );
+    AnalysisError::new(e.context, format!("{}\n{hint}", e.message))
 }
 
 /// Which kind of motion a body makes (for the text).

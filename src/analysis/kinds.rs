@@ -217,9 +217,10 @@ impl Analysis for Static {
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         let (model, hinges) = case.model.build_with_hinges(true)?;
         let (mut r, raw) = match case.steps.filter(|_| case.nonlinear) {
-            Some(steps) => fem_static::solve_nonlinear(&model, steps)?,
-            None => fem_static::solve_with(&model, ctx.cache)?,
-        };
+            Some(steps) => fem_static::solve_nonlinear(&model, steps),
+            None => fem_static::solve_with(&model, ctx.cache),
+        }
+        .map_err(|e| super::constraints::singular_hint(e, &case.model))?;
         fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
         if case.output.section_forces {
             fem_static::add_beam_forces(&mut r, &model, &raw);

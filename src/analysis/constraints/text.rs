@@ -184,19 +184,19 @@ impl<'a> Names<'a> {
     /// The elements joining body `b`.
     fn body_elements(&self, b: usize) -> Vec<String> {
         let of = &self.k.bodies.of_node;
-        self.spec
-            .elements
+        self.k
+            .joining
             .iter()
-            .enumerate()
-            .filter_map(|(i, e)| {
-                let first = match e {
+            .filter(|&&i| {
+                let first = match &self.spec.elements[i] {
                     ElementSpec::Beam { nodes, .. } | ElementSpec::Hinge { nodes, .. } => nodes[0],
                     ElementSpec::Shell4 { nodes, .. } => nodes[0],
                     ElementSpec::Rigid { master, .. } => *master,
-                    _ => return None,
+                    _ => return false,
                 };
-                (of.get(first) == Some(&b)).then(|| format!("elements[{i}]"))
+                of.get(first) == Some(&b)
             })
+            .map(|i| format!("elements[{i}]"))
             .collect()
     }
 
@@ -268,7 +268,7 @@ impl<'a> Names<'a> {
 
     /// The releases applied by the search, one per joint or support DOF (a joint released
     /// twice shown with its final kind, at the place of its last release).
-    pub fn suggestions(&self, cands: &[Candidate], applied: &[(usize, usize)], _redundant: usize) -> Vec<SuggestionOut> {
+    pub fn suggestions(&self, cands: &[Candidate], applied: &[(usize, usize)]) -> Vec<SuggestionOut> {
         let mut out: Vec<(Source, SuggestionOut)> = Vec::new();
         for &(ic, after) in applied {
             let c = &cands[ic];
@@ -276,12 +276,16 @@ impl<'a> Names<'a> {
             let (path, _) = self.owner(row);
             let f = self.k.frames[row];
             let ax = |i: usize| vec3(f[i]);
+            let make = match c.source {
+                Source::Element(_) => format!("replace the hinge {path} by"),
+                _ => format!("make {path}"),
+            };
             let change = match c.kind {
-                Kind::Revolute(i) => format!("make {path} a revolute joint with axis {}", ax(i)),
-                Kind::Universal(i, j) => format!("make {path} a universal joint with axis {} and axis2 {}", ax(i), ax(j)),
-                Kind::Spherical => format!("make {path} a spherical joint"),
-                Kind::Cylindrical(i) => format!("make {path} a cylindrical joint with axis {}", ax(i)),
-                Kind::Prismatic(i) => format!("make {path} a prismatic joint with axis {}", ax(i)),
+                Kind::Revolute(i) => format!("{make} a revolute joint with axis {}", ax(i)),
+                Kind::Universal(i, j) => format!("{make} a universal joint with axis {} and axis2 {}", ax(i), ax(j)),
+                Kind::Spherical => format!("{make} a spherical joint"),
+                Kind::Cylindrical(i) => format!("{make} a cylindrical joint with axis {}", ax(i)),
+                Kind::Prismatic(i) => format!("{make} a prismatic joint with axis {}", ax(i)),
                 Kind::SupportDof(d) => format!(
                     "free {} of {path} (node {})",
                     ["ux", "uy", "uz", "rx", "ry", "rz"][d],

@@ -222,7 +222,8 @@ pub enum BodyMotion {
     },
 }
 
-/// One free motion: the bodies that move, with their share (the largest 1).
+/// One free motion: the bodies that move, with their rate (signed against the direction; the
+/// largest ±1, the first body's positive).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Motion {
     pub bodies: Vec<(usize, BodyMotion, f64)>,
@@ -300,7 +301,7 @@ fn motion(q: &DVector<f64>, centres: &[Vector3<f64>], l: f64) -> Motion {
         // Sign: the largest component of the direction positive.
         let k = dir.iamax();
         let sign = if dir[k] < 0.0 { -1.0 } else { 1.0 };
-        let unit = dir * (sign / dir.norm());
+        let unit = clean(dir * (sign / dir.norm()), 1.0);
         let m = if w.norm() <= 1e-9 * big {
             BodyMotion::Translation { direction: unit.into() }
         } else {
@@ -309,11 +310,20 @@ fn motion(q: &DVector<f64>, centres: &[Vector3<f64>], l: f64) -> Motion {
             let pitch = om.dot(&v) / om.norm_squared();
             BodyMotion::Rotation {
                 direction: unit.into(),
-                point: p.into(),
+                point: clean(p, l).into(),
                 pitch: if pitch.abs() <= 1e-9 * l { 0.0 } else { pitch },
             }
         };
         bodies.push((b, m, sign * rate / big));
     }
+    // A free motion has no sign: the first body's rate positive.
+    if bodies.first().is_some_and(|b| b.2 < 0.0) {
+        bodies.iter_mut().for_each(|b| b.2 = -b.2);
+    }
     Motion { bodies }
+}
+
+/// `v` with components below 1e-12 of `scale` set to +0 (no −0, no roundoff residue).
+fn clean(v: Vector3<f64>, scale: f64) -> Vector3<f64> {
+    v.map(|c| if c.abs() < 1e-12 * scale { 0.0 } else { c })
 }
