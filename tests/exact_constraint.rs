@@ -30,7 +30,7 @@ fn parallelogram(kinds: [Value; 4]) -> Value {
         [0, 0, 0]
     ]);
     let mut elements: Vec<Value> = (0..4)
-        .map(|i| json!({"type": "beam", "nodes": [2 * i, 2 * i + 1], "section": "bar", "material": "steel", "up": Z}))
+        .map(|i| json!({"type": "beam", "nodes": [2 * i, 2 * i + 1], "section": "bar", "material": "al", "up": Z}))
         .collect();
     for ((a, b), mut k) in [(1, 2), (3, 4), (5, 6), (7, 0)].into_iter().zip(kinds) {
         k["type"] = json!("joint");
@@ -39,7 +39,7 @@ fn parallelogram(kinds: [Value; 4]) -> Value {
     }
     json!({
         "analysis": "constraints",
-        "materials": {"steel": {"E": 210000, "nu": 0.3, "density": 7.85e-9}},
+        "materials": {"al": "Al7075"},
         "sections": {"bar": {"shape": "rect", "w": 5, "h": 5}},
         "nodes": nodes,
         "elements": elements,

@@ -65,7 +65,7 @@ impl Analysis for ConstraintsAnalysis {
         text::report(r)
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
-        super::kinds::named_materials(&case.model.materials)
+        super::kind::named_materials(&case.model.materials)
     }
 }
 

@@ -1,7 +1,7 @@
 //! The [`Analysis`] implementations of the built-in kinds: each wires a case shape of
 //! [`crate::case`] to the run and report functions of its analysis module.
 
-use super::kind::{Analysis, Ctx, SweepFile, UsedMaterial};
+use super::kind::{named_materials, Analysis, Ctx, SweepFile, UsedMaterial};
 use super::{design, fem_static, fem_vs_fkp, hinge, kinematics, modal, stage, stage_report, warn, Report, RunError};
 use crate::case::{self, CaseError, MaterialSpec};
 
@@ -9,13 +9,6 @@ fn one_material(spec: &MaterialSpec) -> Vec<UsedMaterial> {
     spec.resolve("material")
         .map(|m| vec![(String::new(), spec.clone(), m)])
         .unwrap_or_default()
-}
-
-pub(super) fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>) -> Vec<UsedMaterial> {
-    specs
-        .iter()
-        .filter_map(|(k, spec)| spec.resolve(k).ok().map(|m| (k.clone(), spec.clone(), m)))
-        .collect()
 }
 
 /// Stability warnings of nonlinear load cases (`stable`, critical load-factor bracket).

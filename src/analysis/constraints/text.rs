@@ -50,8 +50,9 @@ pub struct BodyMotionOut {
     pub motion: &'static str,
     /// Translation direction or rotation axis (unit, largest component positive).
     pub direction: [f64; 3],
-    /// A point of the rotation axis (the one nearest the body's centre), mm; none for a
+    /// A point of the rotation axis (the one nearest the body's centre), mm; absent for a
     /// translation.
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub point: Option<[f64; 3]>,
     /// Pitch of a screw, mm/rad (0 for a rotation).
     pub pitch_mm_per_rad: f64,
@@ -386,15 +387,16 @@ pub fn report(r: &ConstraintsResult) -> Report {
         t.row(vec![k.into(), v]);
     }
     md += &t.render();
-    let mut csv = String::from("kind,path,text\n");
+    // CSV: what each listed item is and the joint, support, load case or body it names.
+    let mut csv = String::from("kind,name\n");
     let mut section = |title: &str, kind: &str, rows: Vec<(String, String)>| {
         if rows.is_empty() {
             return;
         }
         md += &format!("\n## {title}\n\n");
-        for (i, (path, text)) in rows.into_iter().enumerate() {
+        for (i, (name, text)) in rows.into_iter().enumerate() {
             md += &format!("{}. {text}\n", i + 1);
-            csv += &format!("{kind},{path},\"{}\"\n", text.replace('"', "\"\""));
+            csv += &format!("{kind},{name}\n");
         }
     };
     section(
@@ -405,7 +407,13 @@ pub fn report(r: &ConstraintsResult) -> Report {
     section(
         "Free motions",
         "free_motion",
-        r.free_motions.iter().map(|x| (String::new(), x.text.clone())).collect(),
+        r.free_motions
+            .iter()
+            .map(|x| {
+                let bodies: Vec<String> = x.bodies.iter().map(|b| format!("body {}", b.body)).collect();
+                (bodies.join(" "), x.text.clone())
+            })
+            .collect(),
     );
     section(
         "Suggested releases",
