@@ -59,7 +59,7 @@ fn universal(axis2: [f64; 3]) -> Value {
 
 /// The JSON result of a case.
 fn run(case: &Value) -> Value {
-    let parsed = flexfem::case::parse(&case.to_string()).expect("case parses");
+    let parsed = flexfem::analysis::parse(&case.to_string()).expect("case parses");
     flexfem::analysis::run(&parsed).expect("analysis runs").json
 }
 
@@ -252,7 +252,7 @@ fn a_compliant_element_opens_the_loop() {
 #[test]
 fn notch_hinge_guide_is_over_constrained_like_the_four_bar() {
     let case = common::root().join("cases/constraints_parallelogram_guide.json");
-    let parsed = flexfem::case::load(&case).unwrap();
+    let parsed = flexfem::analysis::load(&case).unwrap();
     let r = flexfem::analysis::run(&parsed).unwrap().json;
     assert_eq!(counts(&r), [32, 29, -2, 3, 1]);
     let platform = r["free_motions"][0]["bodies"]
@@ -270,7 +270,7 @@ fn notch_hinge_guide_is_over_constrained_like_the_four_bar() {
 
     let mut v: Value = serde_json::from_str(&std::fs::read_to_string(&case).unwrap()).unwrap();
     v.as_object_mut().unwrap().remove("hinges");
-    let parsed = flexfem::case::parse_value(v, case.parent()).unwrap();
+    let parsed = flexfem::analysis::parse_value(v, case.parent()).unwrap();
     let r = flexfem::analysis::run(&parsed).unwrap().json;
     assert_eq!(counts(&r), [12, 6, -6, 6, 0]);
 }

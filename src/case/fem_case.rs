@@ -79,7 +79,7 @@ pub struct StaticCase {
 /// inline (at least one node; static: at least one load case) or comes from `mesh` (then no
 /// inline nodes, elements, supports or rigid links); a `.msh` mesh needs `gmsh` and `gmsh` needs
 /// a `.msh` mesh; `steps` only with `"nonlinear": true`.
-pub(super) fn model_rules(need_loads: bool) -> serde_json::Value {
+pub fn model_rules(need_loads: bool) -> serde_json::Value {
     let mut inline = serde_json::json!({"required": ["nodes"], "properties": {"nodes": {"minItems": 1}}});
     if need_loads {
         inline = serde_json::json!({"allOf": [inline, {"required": ["load_cases"], "properties": {"load_cases": {"minItems": 1}}}]});
@@ -141,7 +141,7 @@ struct ModalOptions {
 
 /// The top-level fields of a `static` or `modal` case that are the model's (those of
 /// [`MeshSpec`]).
-pub(super) const MODEL_FIELDS: [&str; 7] = [
+pub const MODEL_FIELDS: [&str; 7] = [
     "materials",
     "sections",
     "nodes",
@@ -164,7 +164,7 @@ const STATIC_OWN: [&str; 8] = [
 const MODAL_OWN: [&str; 6] = ["analysis", "mesh", "gmsh", "modes", "shift_hz", "shapes"];
 
 /// Splits a case object into its options (the fields in `own`) and its model (the rest).
-pub(super) fn split(mut value: Value, own: &[&str]) -> (Value, Value) {
+pub fn split(mut value: Value, own: &[&str]) -> (Value, Value) {
     let mut options = Map::new();
     if let Value::Object(map) = &mut value {
         map.remove("analysis");
@@ -232,7 +232,7 @@ pub fn parse_modal(value: Value, base: Option<&Path>) -> Result<ModalCase, CaseE
 
 /// The model of a case: the inline fields `value`, merged into the `mesh` file's model if one
 /// is named (a JSON mesh file, or a Gmsh `.msh` file read through the `gmsh` mapping).
-pub(super) fn read_model(
+pub fn read_model(
     value: Value,
     mesh_name: Option<&str>,
     gmsh_map: Option<&GmshMapping>,

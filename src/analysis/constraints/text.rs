@@ -326,7 +326,7 @@ pub fn hinge_revolute(spec: &MeshSpec, e: usize, [a, b]: [usize; 2], up: [f64; 3
     let x = (xb - xa).normalize();
     let u = Vector3::from(up);
     let z = u - x * x.dot(&u);
-    if !(z.norm() > 1e-9 * u.norm()) || !x.iter().all(|v| v.is_finite()) {
+    if z.norm().is_nan() || z.norm() <= 1e-9 * u.norm() || !x.iter().all(|v| v.is_finite()) {
         return Vec::new();
     }
     let z = z.normalize();

@@ -132,13 +132,13 @@ impl Bodies {
         let mut of_node = vec![usize::MAX; n_nodes];
         let mut members: Vec<Vec<usize>> = Vec::new();
         let mut id = vec![usize::MAX; n_nodes];
-        for n in 0..n_nodes {
+        for (n, body) in of_node.iter_mut().enumerate() {
             let r = root(&mut parent, n);
             if id[r] == usize::MAX {
                 id[r] = members.len();
                 members.push(Vec::new());
             }
-            of_node[n] = id[r];
+            *body = id[r];
             members[id[r]].push(n);
         }
         Bodies { of_node, members }
