@@ -19,16 +19,8 @@ const Z: [f64; 3] = [0.0, 0.0, 1.0];
 /// clamped at node 0; bars 1–3 around the square) joined at the corners by the joints `kinds`
 /// (elements 4–7 at (100, 0), (100, 100), (0, 100), (0, 0)).
 fn parallelogram(kinds: [Value; 4]) -> Value {
-    let nodes = json!([
-        [0, 0, 0],
-        [100, 0, 0],
-        [100, 0, 0],
-        [100, 100, 0],
-        [100, 100, 0],
-        [0, 100, 0],
-        [0, 100, 0],
-        [0, 0, 0]
-    ]);
+    let corner = |i: usize| [[0, 0, 0], [100, 0, 0], [100, 100, 0], [0, 100, 0]][i % 4];
+    let nodes: Vec<[i32; 3]> = (0..4).flat_map(|i| [corner(i), corner(i + 1)]).collect();
     let mut elements: Vec<Value> = (0..4)
         .map(|i| json!({"type": "beam", "nodes": [2 * i, 2 * i + 1], "section": "bar", "material": "al", "up": Z}))
         .collect();
@@ -57,6 +49,26 @@ fn universal(axis2: [f64; 3]) -> Value {
     json!({"kind": "universal", "axis": Z, "axis2": axis2})
 }
 
+/// R-R-S-U: revolute joints at (100, 0) and (100, 100), a spherical joint at (0, 100), a
+/// universal joint (pins z and `axis2`) at (0, 0).
+fn rrsu(axis2: [f64; 3]) -> Value {
+    parallelogram([revolute(), revolute(), spherical(), universal(axis2)])
+}
+
+/// Bar 1 alone on its revolute joint (about z at (100, 0)) to the clamped bar 0.
+fn pendulum() -> Value {
+    let mut c = rrrr();
+    let els = c["elements"].as_array().unwrap().clone();
+    c["elements"] = json!([els[0], els[1], els[4]]);
+    c["nodes"] = json!(c["nodes"].as_array().unwrap()[..4]);
+    c
+}
+
+/// The parallelogram of four revolute joints.
+fn rrrr() -> Value {
+    parallelogram([revolute(), revolute(), revolute(), revolute()])
+}
+
 /// The JSON result of a case.
 fn run(case: &Value) -> Value {
     let parsed = flexfem::analysis::parse(&case.to_string()).expect("case parses");
@@ -82,7 +94,7 @@ fn texts(r: &Value, key: &str) -> Vec<String> {
 /// the joint that closes the loop; every constraint they depend on is out of plane too.
 #[test]
 fn planar_parallelogram_of_four_revolutes_has_three_redundancies() {
-    let r = run(&parallelogram([revolute(), revolute(), revolute(), revolute()]));
+    let r = run(&rrrr());
     assert_eq!(counts(&r), [26, 23, -2, 3, 1]);
     let red = r["redundancies"].as_array().unwrap();
     let named: Vec<&str> = red.iter().map(|x| x["constraint"].as_str().unwrap()).collect();
@@ -111,7 +123,7 @@ fn planar_parallelogram_of_four_revolutes_has_three_redundancies() {
 /// leave a mechanism with no redundancy and the same single free motion.
 #[test]
 fn following_the_suggested_releases_leaves_an_exactly_constrained_mechanism() {
-    let r = run(&parallelogram([revolute(), revolute(), revolute(), revolute()]));
+    let r = run(&rrrr());
     let s: Vec<(&str, &str, i64)> = r["suggestions"]
         .as_array()
         .unwrap()
@@ -151,12 +163,7 @@ fn following_the_suggested_releases_leaves_an_exactly_constrained_mechanism() {
 /// to the ground bar) at 100 mm per radian of the cranks.
 #[test]
 fn rrsu_variant_is_exactly_constrained_with_the_parallelogram_motion() {
-    let r = run(&parallelogram([
-        revolute(),
-        revolute(),
-        spherical(),
-        universal([1.0, 0.0, 0.0]),
-    ]));
+    let r = run(&rrsu([1.0, 0.0, 0.0]));
     assert_eq!(counts(&r), [23, 23, 1, 0, 1]);
     assert!(r["redundancies"].as_array().unwrap().is_empty());
     let m = &r["free_motions"][0]["bodies"];
@@ -186,11 +193,7 @@ fn rrsu_variant_is_exactly_constrained_with_the_parallelogram_motion() {
 /// joints (x = 0, z = 0), named as a motion of that bar alone.
 #[test]
 fn too_few_constraints_name_the_free_motion() {
-    let mut pendulum = parallelogram([revolute(), revolute(), revolute(), revolute()]);
-    let els = pendulum["elements"].as_array().unwrap().clone();
-    pendulum["elements"] = json!([els[0], els[1], els[4]]);
-    pendulum["nodes"] = json!(pendulum["nodes"].as_array().unwrap()[..4]);
-    let r = run(&pendulum);
+    let r = run(&pendulum());
     assert_eq!(counts(&r), [11, 11, 1, 0, 1]);
     assert_eq!(
         texts(&r, "free_motions"),
@@ -210,12 +213,7 @@ fn too_few_constraints_name_the_free_motion() {
 /// (1 = 2 − 1): the count alone cannot tell.
 #[test]
 fn universal_pin_along_the_bar_is_a_singular_choice() {
-    let r = run(&parallelogram([
-        revolute(),
-        revolute(),
-        spherical(),
-        universal([0.0, 1.0, 0.0]),
-    ]));
+    let r = run(&rrsu([0.0, 1.0, 0.0]));
     assert_eq!(counts(&r), [23, 22, 1, 1, 2]);
     assert_eq!(r["redundancies"][0]["path"], "elements[7]");
 }
@@ -225,7 +223,7 @@ fn universal_pin_along_the_bar_is_a_singular_choice() {
 /// 0; with `"drives": false` it is 1 again.
 #[test]
 fn prescribed_displacements_count_as_drives() {
-    let mut c = parallelogram([revolute(), revolute(), spherical(), universal([1.0, 0.0, 0.0])]);
+    let mut c = rrsu([1.0, 0.0, 0.0]);
     c["load_cases"] = json!([{"name": "crank", "displacements": [{"node": 3, "dof": "rx", "value": 0.5, "frame": [[0, 0, 1], [0, 1, 0], [-1, 0, 0]]}]}]);
     assert_eq!(counts(&run(&c)), [24, 24, 0, 0, 0]);
     c["drives"] = json!(false);
@@ -238,7 +236,7 @@ fn prescribed_displacements_count_as_drives() {
 /// redundancy.
 #[test]
 fn a_compliant_element_opens_the_loop() {
-    let mut c = parallelogram([revolute(), revolute(), revolute(), revolute()]);
+    let mut c = rrrr();
     c["compliant"] = json!([2]);
     let r = run(&c);
     assert_eq!(r["bodies"], 5);
@@ -278,10 +276,7 @@ fn notch_hinge_guide_is_over_constrained_like_the_four_bar() {
 /// A static solve that fails as a mechanism says what moves, in body terms.
 #[test]
 fn singular_static_solve_carries_the_diagnosis() {
-    let mut c = parallelogram([revolute(), revolute(), revolute(), revolute()]);
-    let els = c["elements"].as_array().unwrap().clone();
-    c["elements"] = json!([els[0], els[1], els[4]]);
-    c["nodes"] = json!(c["nodes"].as_array().unwrap()[..4]);
+    let mut c = pendulum();
     c["analysis"] = json!("static");
     c["load_cases"] = json!([{"name": "push", "forces": [{"node": 3, "F": [1, 0, 0, 0, 0, 0]}]}]);
     let o = run_case_text("exact-static", &c.to_string());
@@ -298,7 +293,7 @@ fn singular_static_solve_carries_the_diagnosis() {
 #[test]
 fn compliant_must_name_a_deformable_element() {
     for (bad, why) in [(9, "no such element"), (5, "only beam, hinge and shell4")] {
-        let mut c = parallelogram([revolute(), revolute(), revolute(), revolute()]);
+        let mut c = rrrr();
         c["compliant"] = json!([bad]);
         let o = run_case_text("exact-compliant", &c.to_string());
         assert_eq!(o.status.code(), Some(2));

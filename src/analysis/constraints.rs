@@ -2,6 +2,7 @@
 //! [`crate::kinematics::exact`]): redundant constraints named in joint terms with their
 //! case-file paths, free motions named by body, and releases that remove the redundancy.
 
+mod report;
 mod text;
 
 use super::kind::{Analysis, Ctx, UsedMaterial};
@@ -23,12 +24,6 @@ use std::path::Path;
 #[serde(deny_unknown_fields)]
 #[schemars(extend("allOf" = model_rules(false)))]
 pub struct ConstraintsCase {
-    /// Free text saying what the model is (not used by the analysis).
-    pub description: Option<String>,
-    /// Mesh file, as for `static`: a JSON mesh file or a Gmsh `.msh` file.
-    pub mesh: Option<String>,
-    /// Physical-group mapping of a Gmsh `.msh` mesh (only with a `.msh` mesh, which needs it).
-    pub gmsh: Option<GmshMapping>,
     /// Indices into `elements` of beam, hinge or shell4 elements taken as compliant: they join
     /// nothing, so their nodes may belong to different bodies (default none).
     #[serde(default)]
@@ -43,6 +38,12 @@ pub struct ConstraintsCase {
     /// a DOF prescribed in several load cases counts once.
     #[serde(default = "yes")]
     pub drives: bool,
+    /// Free text saying what the model is (not used by the analysis).
+    pub description: Option<String>,
+    /// Mesh file, as for `static`: a JSON mesh file or a Gmsh `.msh` file.
+    pub mesh: Option<String>,
+    /// Physical-group mapping of a Gmsh `.msh` mesh (only with a `.msh` mesh, which needs it).
+    pub gmsh: Option<GmshMapping>,
     /// The model.
     #[serde(flatten)]
     pub model: MeshSpec,
@@ -63,22 +64,29 @@ fn yes() -> bool {
     true
 }
 
-/// The options of a `constraints` case besides its model.
+/// The options of a `constraints` case besides its model (each optional).
 #[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(default, deny_unknown_fields)]
 struct Options {
-    #[serde(default)]
-    description: Option<String>,
-    #[serde(default)]
-    mesh: Option<String>,
-    #[serde(default)]
-    gmsh: Option<GmshMapping>,
-    #[serde(default)]
     compliant: Vec<usize>,
-    #[serde(default)]
     hinges: HingeView,
-    #[serde(default = "yes")]
     drives: bool,
+    description: Option<String>,
+    mesh: Option<String>,
+    gmsh: Option<GmshMapping>,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            compliant: Vec::new(),
+            hinges: HingeView::Rigid,
+            drives: true,
+            description: None,
+            mesh: None,
+            gmsh: None,
+        }
+    }
 }
 
 const OWN: [&str; 7] = ["analysis", "description", "mesh", "gmsh", "compliant", "hinges", "drives"];
@@ -189,7 +197,7 @@ impl Analysis for ConstraintsAnalysis {
         Ok(r)
     }
     fn report(r: &Self::Result) -> Report {
-        text::report(r)
+        report::report(r)
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         super::kind::named_materials(&case.model.materials)
