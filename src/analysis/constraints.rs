@@ -306,6 +306,9 @@ pub fn check(
         ));
     }
     let m = k.constraints.len();
+    if k.bodies.members.len() == 1 && m > d.rank {
+        warnings.push("the whole model is one rigid body (every element is taken rigid): its redundant constraints are the supports beyond six, as in any clamped beam or plate; list the deformable elements in `compliant`, or see hinges as joints with `\"hinges\": \"revolute\"`, to check the mechanism".into());
+    }
     let r = ConstraintsResult {
         bodies: k.bodies.members.len(),
         constraints: m,

@@ -191,7 +191,8 @@ fn echelon(mut rows: Vec<DVector<f64>>, n: usize) -> Vec<DVector<f64>> {
 mod tests {
     use super::*;
 
-    /// Three unit rows in the plane: the third is e₁·(1/√2)·… a combination of the first two.
+    /// Three unit rows in the xy plane: the third, (e₁ + e₂)/√2, is redundant with the first two
+    /// (coefficients 1/√2 each, exact), and the null space is the z axis.
     #[test]
     fn dependent_row_is_named_with_its_partners() {
         let s = 0.5_f64.sqrt();
