@@ -4,7 +4,7 @@
 //! and their mode shapes, reports, VTK file of the shapes.
 
 use super::kind::{Analysis, Ctx, UsedMaterial};
-use super::kinds::named_materials;
+use super::kind::named_materials;
 use super::{AnalysisError, Report, RunError};
 use crate::case::fem_case::{modes_of, read_model, shapes_default, split, ModalOptions};
 use crate::case::gmsh::GmshMapping;

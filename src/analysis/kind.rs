@@ -41,6 +41,14 @@ impl<'a> Ctx<'a> {
 /// of a hinge/stage/design case.
 pub type UsedMaterial = (String, MaterialSpec, Material);
 
+/// The materials of a mesh model's `materials` map that resolve, by key.
+pub fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>) -> Vec<UsedMaterial> {
+    specs
+        .iter()
+        .filter_map(|(k, spec)| spec.resolve(k).ok().map(|m| (k.clone(), spec.clone(), m)))
+        .collect()
+}
+
 /// One analysis kind.
 pub trait Analysis: 'static {
     /// The `analysis` name in case files.

@@ -1,7 +1,7 @@
 //! The [`Analysis`] implementations of the built-in kinds: each wires a case shape of
 //! [`crate::case`] to the run and report functions of its analysis module.
 
-use super::kind::{Analysis, Ctx, SweepFile, UsedMaterial};
+use super::kind::{named_materials, Analysis, Ctx, SweepFile, UsedMaterial};
 use super::{design, fem_static, fem_vs_fkp, hinge, kinematics, modal, stage, stage_report, warn, Report, RunError};
 use crate::case::{self, CaseError, MaterialSpec};
 
@@ -9,13 +9,6 @@ fn one_material(spec: &MaterialSpec) -> Vec<UsedMaterial> {
     spec.resolve("material")
         .map(|m| vec![(String::new(), spec.clone(), m)])
         .unwrap_or_default()
-}
-
-pub(super) fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>) -> Vec<UsedMaterial> {
-    specs
-        .iter()
-        .filter_map(|(k, spec)| spec.resolve(k).ok().map(|m| (k.clone(), spec.clone(), m)))
-        .collect()
 }
 
 /// Stability warnings of nonlinear load cases (`stable`, critical load-factor bracket).
@@ -224,9 +217,10 @@ impl Analysis for Static {
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         let (model, hinges) = case.model.build_with_hinges(true)?;
         let (mut r, raw) = match case.steps.filter(|_| case.nonlinear) {
-            Some(steps) => fem_static::solve_nonlinear_tracked(&model, steps, case.track.as_ref())?,
-            None => fem_static::solve_with(&model, ctx.cache)?,
-        };
+            Some(steps) => fem_static::solve_nonlinear_tracked(&model, steps, case.track.as_ref()),
+            None => fem_static::solve_with(&model, ctx.cache),
+        }
+        .map_err(|e| super::constraints::singular_hint(e, &case.model))?;
         fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
         if case.output.section_forces {
             fem_static::add_beam_forces(&mut r, &model, &raw);

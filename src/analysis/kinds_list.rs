@@ -64,6 +64,9 @@ macro_rules! analyses {
             Transient = "transient" #11, mod transient, analysis transient::TransientKind, parse transient::parse_transient;
             /// Linear buckling: load multipliers and mode shapes of a reference load on a generic beam model.
             Buckling = "buckling" #12, mod buckling, analysis buckling::Buckling, parse buckling::parse_buckling;
+            /// Exact-constraint check of a mesh model: redundant constraints and free motions of its
+            /// bodies taken rigid (Grübler–Kutzbach by rank; Blanding, Exact Constraint, 1999).
+            Constraints = "constraints" #13, mod constraints, analysis constraints::ConstraintsAnalysis, parse constraints::parse;
         }
     };
 }

@@ -1,6 +1,7 @@
 //! Rigid-body kinematics of the 3-PRS parallel mechanism: IKP, FKP, parasitic motion, passive
 //! joint rotations, Jacobians and the requirement sweep.
 
+pub mod exact;
 pub mod pantilt;
 pub mod prs;
 pub mod prs_stiffness;

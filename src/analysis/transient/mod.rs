@@ -5,7 +5,7 @@
 mod output;
 
 use super::kind::{Analysis, Ctx, UsedMaterial};
-use super::kinds::named_materials;
+use super::kind::named_materials;
 use super::{Report, RunError};
 use crate::case::fem_case::{model_rules, read_model, split, MODEL_FIELDS};
 use crate::case::mesh::{DofName, GmshMapping, MeshSpec};
