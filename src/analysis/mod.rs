@@ -4,6 +4,7 @@ pub mod design;
 pub mod fem_static;
 pub mod fem_vs_fkp;
 pub mod finite;
+pub mod frf_files;
 pub mod hinge;
 pub mod kind;
 pub mod kinds;

@@ -141,7 +141,7 @@ struct ModalOptions {
 
 /// The top-level fields of a `static` or `modal` case that are the model's (those of
 /// [`MeshSpec`]).
-const MODEL_FIELDS: [&str; 7] = [
+pub(crate) const MODEL_FIELDS: [&str; 7] = [
     "materials",
     "sections",
     "nodes",
@@ -164,7 +164,7 @@ const STATIC_OWN: [&str; 8] = [
 const MODAL_OWN: [&str; 6] = ["analysis", "mesh", "gmsh", "modes", "shift_hz", "shapes"];
 
 /// Splits a case object into its options (the fields in `own`) and its model (the rest).
-fn split(mut value: Value, own: &[&str]) -> (Value, Value) {
+pub(crate) fn split(mut value: Value, own: &[&str]) -> (Value, Value) {
     let mut options = Map::new();
     if let Value::Object(map) = &mut value {
         map.remove("analysis");
@@ -232,7 +232,7 @@ pub fn parse_modal(value: Value, base: Option<&Path>) -> Result<ModalCase, CaseE
 
 /// The model of a case: the inline fields `value`, merged into the `mesh` file's model if one
 /// is named (a JSON mesh file, or a Gmsh `.msh` file read through the `gmsh` mapping).
-fn read_model(
+pub(crate) fn read_model(
     value: Value,
     mesh_name: Option<&str>,
     gmsh_map: Option<&GmshMapping>,

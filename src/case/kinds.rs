@@ -47,6 +47,9 @@ macro_rules! analyses {
             PanTilt = "pantilt" #9, mod pantilt, case pantilt::PanTiltCase, parse shape, analysis pantilt::PanTiltKind;
             /// Jacobian stiffness of a 3-PRS with compliant legs.
             PrsStiffness = "prs_stiffness" #10, mod prs_stiffness, case prs_stiffness::PrsStiffnessCase, parse shape, analysis prs_stiffness::PrsStiffnessAnalysis;
+            /// Frequency response from nodal loads to nodal DOFs (modal superposition with static
+            /// correction, checked by a direct solve) and its state-space model.
+            Frf = "frf" #11, mod frf, case frf::FrfCase, parse frf::parse_frf, analysis frf::FrfKind;
         }
     };
 }

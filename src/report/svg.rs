@@ -133,10 +133,31 @@ impl Frame {
 
 /// A scatter plot with connecting lines per series, axes with ticks, title and labels.
 pub fn scatter(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])]) -> String {
+    plot(title, xlabel, ylabel, series, true, true)
+}
+
+/// A line plot (no point markers, y range from the data) per series, axes with ticks, title
+/// and labels.
+pub fn lines(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])]) -> String {
+    plot(title, xlabel, ylabel, series, false, false)
+}
+
+fn plot(
+    title: &str,
+    xlabel: &str,
+    ylabel: &str,
+    series: &[(&str, &[(f64, f64)])],
+    markers: bool,
+    y_from_zero: bool,
+) -> String {
     let all: Vec<(f64, f64)> = series.iter().flat_map(|(_, p)| p.iter().copied()).collect();
-    let f = Frame::new(640.0, 420.0, 20.0, &all, &[], true);
+    let f = Frame::new(640.0, 420.0, 20.0, &all, &[], y_from_zero);
     let mut out = f.open(title, xlabel, ylabel);
-    let colours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd"];
+    // Scatter plots keep their four colours (cycled); line plots have eight.
+    let palette = [
+        "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf",
+    ];
+    let colours = if markers { &palette[..4] } else { &palette[..] };
     for (si, (name, p)) in series.iter().enumerate() {
         let c = colours[si % colours.len()];
         let mut sorted: Vec<(f64, f64)> = p
@@ -153,7 +174,7 @@ pub fn scatter(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64,
             "<polyline fill=\"none\" stroke=\"{c}\" points=\"{}\"/>\n",
             path.join(" ")
         );
-        for &(x, y) in &sorted {
+        for &(x, y) in sorted.iter().filter(|_| markers) {
             out += &format!(
                 "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"4\" fill=\"{c}\"/>\n",
                 f.sx(x),
