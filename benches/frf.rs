@@ -5,7 +5,7 @@
 //! system).
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use flexfem::case::Case;
+use flexfem::analysis::Case;
 use flexfem::fem::frf::{modal_frf, Damping, DirectFrf};
 use flexfem::fem::SolverCache;
 use std::hint::black_box;
@@ -13,7 +13,7 @@ use std::time::Duration;
 
 fn bench(c: &mut Criterion) {
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let Ok(Case::Frf(case)) = flexfem::case::load(&root.join("cases/ruiz2019_stage_frf.json")) else {
+    let Ok(Case::Frf(case)) = flexfem::analysis::load(&root.join("cases/ruiz2019_stage_frf.json")) else {
         panic!("cases/ruiz2019_stage_frf.json is not an frf case")
     };
     let model = case.model.build_model(false).unwrap();

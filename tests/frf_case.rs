@@ -28,7 +28,7 @@ fn sdof() -> Value {
 }
 
 fn run(v: &Value) -> Value {
-    let c = flexfem::case::parse(&v.to_string()).unwrap_or_else(|e| panic!("{e}"));
+    let c = flexfem::analysis::parse(&v.to_string()).unwrap_or_else(|e| panic!("{e}"));
     flexfem::analysis::run(&c).unwrap_or_else(|e| panic!("{e}")).json
 }
 

@@ -99,7 +99,7 @@ fn frame_case(m: &PrsStiffness, beta: f64) -> Value {
 /// Platform-centre displacement [mm; rad] under the load case and the node compliance of P
 /// (the case's `"compliance"` field: mm/N, rad/N, rad/(N·mm) blocks, global axes).
 fn run_frame(case: Value) -> (Vector6<f64>, Matrix6<f64>) {
-    let parsed = flexfem::case::parse_value(case, None).unwrap();
+    let parsed = flexfem::analysis::parse_value(case, None).unwrap();
     let out = flexfem::analysis::run(&parsed).unwrap();
     let d: Vec<f64> = out.json["load_cases"][0]["displacements"][0]
         .as_array()

@@ -69,7 +69,7 @@ fn frame_case(m: &PrsStiffness, beta: f64, loads: &[Vector6<f64>], p: f64) -> Va
 
 /// Platform-centre displacement [mm; rad] of each load case.
 fn run_frame(case: Value) -> Vec<Vector6<f64>> {
-    let parsed = flexfem::case::parse_value(case, None).unwrap();
+    let parsed = flexfem::analysis::parse_value(case, None).unwrap();
     let out = flexfem::analysis::run(&parsed).unwrap();
     out.json["load_cases"]
         .as_array()

@@ -8,7 +8,7 @@ mod common;
 
 /// Runs a case given as JSON; the JSON result.
 fn run(case: Value) -> Value {
-    let c = flexfem::case::parse_value(case, None).expect("valid case");
+    let c = flexfem::analysis::parse_value(case, None).expect("valid case");
     flexfem::analysis::run(&c).expect("analysis runs").json
 }
 
@@ -93,6 +93,26 @@ fn strip_end_moment_gives_6m_over_bt2() {
     assert_eq!(lc["shell_forces"].as_array().unwrap().len(), nx * ny);
 }
 
+/// A `static` case of shells (section `s` of thickness `t`, material `m`) with one load case of
+/// edge loads.
+fn shell_case(
+    material: Value,
+    t: f64,
+    (nodes, elements): (Vec<[f64; 3]>, Vec<Value>),
+    supports: Vec<Value>,
+    edges: Vec<Value>,
+) -> Value {
+    json!({
+        "analysis": "static",
+        "materials": {"m": material},
+        "sections": {"s": {"shape": "shell", "t": t}},
+        "nodes": nodes,
+        "elements": elements,
+        "supports": supports,
+        "load_cases": [{"name": "edge loads", "edge_loads": edges}]
+    })
+}
+
 /// NAFEMS LE5 Z-section cantilever: L = 10 m, flanges 1 m wide, web 2 m deep (mid-surfaces),
 /// t = 0.1 m, E = 210 GPa, ν = 0.3, clamped at x = 0; a torque of 1.2 MN·m at x = L applied as
 /// two uniform edge shears of 0.6 MN on the flanges' end edges. Target: axial stress σxx at
@@ -142,16 +162,8 @@ fn z_section(nf: usize, nw: usize, nx: usize) -> (f64, f64) {
         let kb = nf + nw + k;
         edges.push(json!({"nodes": [id(nx, kb), id(nx, kb + 1)], "q": [0.0, -q, 0.0]}));
     }
-    let case = json!({
-        "analysis": "static",
-        "materials": {"m": {"E": 210000.0, "nu": 0.3, "density": 7.85e-9, "yield": 1e9, "allowable": 1e9}},
-        "sections": {"s": {"shape": "shell", "t": t}},
-        "nodes": nodes,
-        "elements": elements,
-        "supports": supports,
-        "load_cases": [{"name": "torque", "edge_loads": edges}]
-    });
-    let r = run(case);
+    let steel = json!({"E": 210000.0, "nu": 0.3, "density": 7.85e-9, "yield": 1e9, "allowable": 1e9});
+    let r = run(shell_case(steel, t, (nodes, elements), supports, edges));
     let lc = &r["load_cases"][0];
     assert!(nx.is_multiple_of(4));
     let a_top = id(nx / 4, 0);
@@ -189,16 +201,7 @@ fn strip_free_body(nx: usize, ny: usize) -> Vec<[f64; 4]> {
     let edges: Vec<Value> = (0..ny)
         .map(|j| json!({"nodes": [j * (nx + 1) + nx, (j + 1) * (nx + 1) + nx], "q": [p[0] / b, p[1] / b, p[2] / b]}))
         .collect();
-    let case = json!({
-        "analysis": "static",
-        "materials": {"m": "steel"},
-        "sections": {"s": {"shape": "shell", "t": t}},
-        "nodes": nodes,
-        "elements": elements,
-        "supports": supports,
-        "load_cases": [{"name": "P", "edge_loads": edges}]
-    });
-    let r = run(case);
+    let r = run(shell_case(json!("steel"), t, (nodes, elements), supports, edges));
     let forces = r["load_cases"][0]["shell_forces"].as_array().unwrap().clone();
     let w = b / ny as f64;
     let mut err = Vec::new();
@@ -255,7 +258,7 @@ fn vtu_and_report_carry_shell_stresses() {
     let (l, b, t, mm) = (100.0, 20.0, 2.0, 1500.0);
     let (nx, ny) = (4, 2);
     let case = bending_strip(l, b, t, mm, (nx, ny), json!("Al7075"));
-    let c = flexfem::case::parse_value(case, None).unwrap();
+    let c = flexfem::analysis::parse_value(case, None).unwrap();
     let out = flexfem::analysis::run_with_files(&c).unwrap();
     let (_, vtu) = out.files.iter().find(|(n, _)| n == "M.vtu").expect("M.vtu");
     let vtu = String::from_utf8_lossy(vtu);

@@ -66,13 +66,11 @@ fn clamped_plate(n: usize) -> f64 {
     let (a, t, e, nu, q) = (100.0, 0.1, 1.0e5, 0.3, 1e-3);
     let mut m = Model::new();
     let ids = grid(&mut m, n, n, t, mat(e, nu), |s, r| [a * s, a * r, 0.0]);
-    for j in 0..=n {
-        for i in 0..=n {
-            if i == 0 || j == 0 || i == n || j == n {
-                m.supports.push(Support::clamp(ids[j * (n + 1) + i]));
-            }
+    common::meshes::each_node(n, |i, j, edge| {
+        if edge {
+            m.supports.push(Support::clamp(ids[j * (n + 1) + i]));
         }
-    }
+    });
     let f = area_load(&m, [0.0, 0.0, -q]);
     let m = with_loads(m, &f);
     let r = fem::solve_static(&m).unwrap();
@@ -278,14 +276,13 @@ fn convergence_report() {
 #[test]
 fn gmsh_import_clamped_plate() {
     use flexfem::analysis;
-    use flexfem::case;
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let al = Material::AL7075;
     let d = al.e / (12.0 * (1.0 - al.nu * al.nu));
     let w_ref = 0.00560 * 100.0 * 100.0f64.powi(2) / d;
     let mut w = Vec::new();
     for name in ["gmsh_plate_quads", "gmsh_plate_tris"] {
-        let c = case::load(&root.join(format!("cases/{name}.json"))).unwrap();
+        let c = analysis::load(&root.join(format!("cases/{name}.json"))).unwrap();
         let out = analysis::run(&c).unwrap();
         let wc = -out.json["load_cases"][0]["displacements"][144][2].as_f64().unwrap();
         eprintln!(
@@ -298,13 +295,11 @@ fn gmsh_import_clamped_plate() {
     let n = 16;
     let mut m = Model::new();
     let ids = grid(&mut m, n, n, 1.0, al, |s, r| [100.0 * s, 100.0 * r, 0.0]);
-    for j in 0..=n {
-        for i in 0..=n {
-            if i == 0 || j == 0 || i == n || j == n {
-                m.supports.push(Support::clamp(ids[j * (n + 1) + i]));
-            }
+    common::meshes::each_node(n, |i, j, edge| {
+        if edge {
+            m.supports.push(Support::clamp(ids[j * (n + 1) + i]));
         }
-    }
+    });
     m.load_cases
         .push(LoadCase::new("c").force(144, [0.0, 0.0, -100.0, 0.0, 0.0, 0.0]));
     let direct = -fem::solve_static(&m).unwrap().load_cases[0].displacements[144][2];
@@ -320,7 +315,7 @@ fn gmsh_unknown_group_is_a_case_error() {
     let text = std::fs::read_to_string(root.join("cases/gmsh_plate_quads.json"))
         .unwrap()
         .replace("\"edge\"", "\"edges\"");
-    let err = flexfem::case::parse_in(&text, Some(&root.join("cases"))).unwrap_err();
+    let err = flexfem::analysis::parse_in(&text, Some(&root.join("cases"))).unwrap_err();
     assert!(err.to_string().contains("gmsh.groups.edges"), "{err}");
 }
 

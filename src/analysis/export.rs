@@ -1,8 +1,9 @@
 //! `flexfem run --export-matrices`: the reduced stiffness and mass of a case's model and its DOF
 //! map (`K.mtx`, `M.mtx`, `dofs.csv`; see [`crate::fem::matrices`]).
 
+use super::Case;
 use super::RunError;
-use crate::case::{Case, CaseError};
+use crate::case::CaseError;
 use crate::fem::matrices::reduced_matrices;
 
 /// The error of `--export-matrices` on a case of another kind.

@@ -1,115 +1,260 @@
-//! The `frf` analysis: frequency response of a mesh model from nodal loads (inputs) to nodal
-//! DOFs (outputs) by modal superposition with static correction ([`crate::fem::frf`]), checked
-//! by the direct solve of (K − ω²M + iωC), and the state-space model of the same inputs and
-//! outputs ([`crate::fem::state_space`]). Files: `frf.csv`, `bode_magnitude.svg`,
-//! `bode_phase.svg`, `state_space.json` and `A.mtx`, `B.mtx`, `C.mtx`, `D.mtx`.
-//!
-//! Units: inputs in N (N·mm for moments); outputs in mm and degrees, so H is in mm/N, °/N,
-//! mm/(N·mm) or °/(N·mm); the state-space model's time unit is the second.
+//! `"analysis": "frf"`: frequency response of a mesh model (as for `modal`) from nodal loads to
+//! nodal DOFs, by modal superposition with static correction, checked by a direct solve, with a
+//! state-space model of the same inputs and outputs — the case shape, its parser and the
+//! [`Analysis`] implementation and the run; the result and report are in
+//! [`super::frf_result`], the files in [`super::frf_files`].
 
+use super::frf_result::{self, rows, DirectCheck, FrfMode, FrfResult, OutputInfo, Pair, StateSpaceOut};
 use super::kind::{Analysis, Ctx, UsedMaterial};
 use super::{AnalysisError, Report, RunError};
-use crate::case::frf::FrfCase;
-use crate::case::CaseError;
+use crate::case::error::{check, CaseError};
+use crate::case::fem_case::{read_model, split, MODEL_FIELDS};
+use crate::case::from_value;
+use crate::case::mesh::load_shapes::DofName;
+use crate::case::mesh::requests::check_node_frame;
+use crate::case::mesh::MeshSpec;
 use crate::fem::frf::{modal_frf, relative_difference, Damping, DirectFrf, ModalFrf, Ports, C64};
 use crate::fem::state_space::{state_space, StateSpace};
 use crate::fem::Model;
-use crate::report::markdown::Table;
 use nalgebra::DMatrix;
-use serde::Serialize;
+use serde::Deserialize;
+use serde_json::Value;
+use std::path::Path;
 
-/// `frf`: frequency response and state-space model of a mesh model.
-pub struct FrfKind;
-
-/// One output of the result.
-#[derive(Debug, Clone, Serialize)]
-pub struct OutputInfo {
-    /// Name (`"NAME DOF"`).
-    pub name: String,
-    /// Unit of the output (`mm` or `deg`).
-    pub unit: &'static str,
+/// `"analysis": "frf"`.
+#[derive(Debug, Clone, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FrfCase {
+    /// Free text saying what the model is (not used by the analysis).
+    pub description: Option<String>,
+    /// Mesh file, as for `static` (a JSON mesh file; the inline fields add to it).
+    pub mesh: Option<String>,
+    /// Number of retained modes (the lowest), 1 … 1000.
+    #[schemars(range(min = 1, max = 1000))]
+    pub modes: usize,
+    /// Viscous damping (default none).
+    #[serde(default)]
+    pub damping: DampingSpec,
+    /// The frequencies of the response.
+    pub frequencies: FrequencySpec,
+    /// Inputs: nodal loads per unit input.
+    pub inputs: Vec<InputSpec>,
+    /// Outputs: nodal DOFs.
+    pub outputs: Vec<OutputSpec>,
+    /// Also solve (K − ω²M + iωC) directly at every frequency and report the largest
+    /// difference to the modal result (default true; Rayleigh damping only).
+    #[serde(default = "yes")]
+    pub direct: bool,
+    /// The model.
+    #[serde(flatten)]
+    pub model: MeshSpec,
 }
 
-/// One retained mode.
-#[derive(Debug, Clone, Serialize)]
-pub struct FrfMode {
-    /// 1-based mode number.
-    pub mode: usize,
-    /// Natural frequency, Hz.
-    pub frequency_hz: f64,
-    /// Damping ratio ζ + α/(2ω) + βω/2.
-    pub damping_ratio: f64,
+fn yes() -> bool {
+    true
 }
 
-/// The response of one output to one input.
-#[derive(Debug, Clone, Serialize)]
-pub struct Pair {
-    /// Input name.
-    pub input: String,
-    /// Output name.
-    pub output: String,
-    /// |H| at each frequency (output unit per N or per N·mm).
-    pub magnitude: Vec<f64>,
-    /// arg H at each frequency, degrees in (−180, 180].
-    pub phase_deg: Vec<f64>,
+/// Viscous damping: Rayleigh C = αM + βK and/or a constant modal damping ratio ζ (each mode's
+/// ratio is ζ + α/(2ω) + βω/2).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct DampingSpec {
+    /// Mass-proportional coefficient α ≥ 0, 1/s.
+    #[serde(default)]
+    pub alpha: f64,
+    /// Stiffness-proportional coefficient β ≥ 0, s.
+    #[serde(default)]
+    pub beta: f64,
+    /// Constant modal damping ratio 0 ≤ ζ < 1 (modal superposition only: no direct check).
+    #[serde(default)]
+    pub zeta: f64,
 }
 
-/// The direct solve's check of the modal result.
-#[derive(Debug, Clone, Serialize)]
-pub struct DirectCheck {
-    /// Largest ‖H_modal − H_direct‖ / ‖H_direct‖ (Frobenius over all pairs) at the
-    /// frequencies up to twice the highest retained mode (`null` if there are none).
-    pub max_relative_difference_to_2x_highest_mode: Option<f64>,
-    /// The same over all frequencies.
-    pub max_relative_difference: f64,
-    /// Where the largest difference is, Hz.
-    pub at_hz: f64,
+/// Frequencies: `points` values from `from_hz` to `to_hz`, log or linear spacing.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FrequencySpec {
+    /// Lowest frequency, Hz (> 0 with log spacing, ≥ 0 with linear).
+    pub from_hz: f64,
+    /// Highest frequency, Hz.
+    pub to_hz: f64,
+    /// Number of frequencies, 2 … 100000.
+    #[schemars(range(min = 2, max = 100000))]
+    pub points: usize,
+    /// `"log"` (default) or `"linear"`.
+    #[serde(default)]
+    pub spacing: Spacing,
 }
 
-/// The state-space model (x = [η; η̇], modal coordinates and rates; t in s).
-#[derive(Debug, Clone, Serialize)]
-pub struct StateSpaceOut {
-    /// Number of states (twice the retained modes).
-    pub states: usize,
-    /// A (states × states), rows.
-    pub a: Vec<Vec<f64>>,
-    /// B (states × inputs).
-    pub b: Vec<Vec<f64>>,
-    /// C (outputs × states).
-    pub c: Vec<Vec<f64>>,
-    /// D (outputs × inputs): the static correction.
-    pub d: Vec<Vec<f64>>,
-    /// Poles (eigenvalues of A) as [re, im], 1/s.
-    pub poles: Vec<[f64; 2]>,
-    /// max |(D − C A⁻¹ B) − static gain| / max |static gain|.
-    pub dc_gain_relative_error: f64,
+/// Spacing of the frequencies.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, schemars::JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Spacing {
+    /// Logarithmic.
+    #[default]
+    Log,
+    /// Linear.
+    Linear,
 }
 
-/// Result of the `frf` analysis.
-#[derive(Debug, Clone, Serialize)]
-pub struct FrfResult {
-    /// Input names.
-    pub inputs: Vec<String>,
-    /// Outputs.
-    pub outputs: Vec<OutputInfo>,
-    /// Retained modes.
-    pub modes: Vec<FrfMode>,
-    /// Static gain (compliance) K⁻¹ per output (rows) and input (columns).
-    pub static_gain: Vec<Vec<f64>>,
-    /// Frequencies, Hz.
-    pub frequencies_hz: Vec<f64>,
-    /// Modal-superposition response per (input, output) pair.
-    pub response: Vec<Pair>,
-    /// Direct-solve check (`null` with a modal damping ratio or `"direct": false`).
-    pub direct: Option<DirectCheck>,
-    /// State-space model.
-    pub state_space: StateSpaceOut,
-    /// Model notes.
-    pub model: Vec<String>,
+impl FrequencySpec {
+    /// The frequencies, Hz.
+    pub fn values(&self) -> Vec<f64> {
+        let n = self.points;
+        (0..n)
+            .map(|i| {
+                let t = i as f64 / (n - 1) as f64;
+                match self.spacing {
+                    Spacing::Log => self.from_hz * (self.to_hz / self.from_hz).powf(t),
+                    Spacing::Linear => self.from_hz + (self.to_hz - self.from_hz) * t,
+                }
+            })
+            .collect()
+    }
 }
 
-fn rows(m: &DMatrix<f64>) -> Vec<Vec<f64>> {
-    (0..m.nrows()).map(|i| m.row(i).iter().copied().collect()).collect()
+/// One input: a load at a node per unit input, in the input's frame.
+#[derive(Debug, Clone, PartialEq, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct InputSpec {
+    /// Name in results and plots (default `node N`).
+    pub name: Option<String>,
+    /// The node loaded.
+    pub node: usize,
+    /// Force per unit input, N, in the frame (default zero).
+    #[serde(default)]
+    pub force: [f64; 3],
+    /// Moment per unit input, N·mm, in the frame (default zero).
+    #[serde(default)]
+    pub moment: [f64; 3],
+    /// Axes of `force` and `moment`: three orthonormal right-handed rows (local x, y, z in
+    /// global coordinates); default the global axes.
+    pub frame: Option<[[f64; 3]; 3]>,
+}
+
+/// One output entry: DOFs of a node, in the entry's frame (one output per DOF).
+#[derive(Debug, Clone, PartialEq, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct OutputSpec {
+    /// Name prefix in results and plots (default `node N`).
+    pub name: Option<String>,
+    /// The node.
+    pub node: usize,
+    /// The DOFs (`ux` … `rz`): displacements in mm, rotations in degrees.
+    pub dofs: Vec<DofName>,
+    /// Axes of the DOFs: three orthonormal right-handed rows; default the global axes.
+    pub frame: Option<[[f64; 3]; 3]>,
+}
+
+/// The case fields of an `frf` case besides its model.
+const OWN: [&str; 9] = [
+    "analysis",
+    "description",
+    "mesh",
+    "modes",
+    "damping",
+    "frequencies",
+    "inputs",
+    "outputs",
+    "direct",
+];
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Options {
+    #[serde(default)]
+    description: Option<String>,
+    #[serde(default)]
+    mesh: Option<String>,
+    modes: usize,
+    #[serde(default)]
+    damping: DampingSpec,
+    frequencies: FrequencySpec,
+    inputs: Vec<InputSpec>,
+    outputs: Vec<OutputSpec>,
+    #[serde(default = "yes")]
+    direct: bool,
+}
+
+/// Parses an `frf` case; a mesh file it names resolves against `base` first.
+pub fn parse_frf(value: Value, base: Option<&Path>) -> Result<FrfCase, CaseError> {
+    if let Some(key) = value
+        .as_object()
+        .and_then(|m| m.keys().find(|k| !OWN.contains(&k.as_str()) && !MODEL_FIELDS.contains(&k.as_str())))
+    {
+        return Err(CaseError::new(
+            key.clone(),
+            format!("unknown field `{key}` in an `frf` case, expected one of the model's fields or {OWN:?}"),
+        ));
+    }
+    let (options, model) = split(value, &OWN);
+    let o: Options = from_value(options, "")?;
+    let model = read_model(model, o.mesh.as_deref(), None, base)?;
+    let case = FrfCase {
+        description: o.description,
+        mesh: o.mesh,
+        modes: o.modes,
+        damping: o.damping,
+        frequencies: o.frequencies,
+        inputs: o.inputs,
+        outputs: o.outputs,
+        direct: o.direct,
+        model,
+    };
+    case.check_options()?;
+    Ok(case)
+}
+
+impl FrfCase {
+    /// Validates everything but the model (which [`MeshSpec::build_model`] checks).
+    pub fn check_options(&self) -> Result<(), CaseError> {
+        if !(1..=1000).contains(&self.modes) {
+            return Err(CaseError::value("modes", self.modes, "must be an integer from 1 to 1000"));
+        }
+        let d = &self.damping;
+        check::non_negative("damping.alpha", d.alpha, "1/s")?;
+        check::non_negative("damping.beta", d.beta, "s")?;
+        if !(d.zeta.is_finite() && (0.0..1.0).contains(&d.zeta)) {
+            return Err(CaseError::value("damping.zeta", d.zeta, "must be a ratio from 0 up to (not including) 1"));
+        }
+        let f = &self.frequencies;
+        let lo = if f.spacing == Spacing::Log { "> 0" } else { "≥ 0" };
+        if !(f.from_hz.is_finite() && (f.from_hz > 0.0 || (f.spacing == Spacing::Linear && f.from_hz == 0.0))) {
+            return Err(CaseError::value("frequencies.from_hz", f.from_hz, format!("must be a frequency {lo}, Hz")));
+        }
+        if !(f.to_hz.is_finite() && f.to_hz > f.from_hz) {
+            return Err(CaseError::value("frequencies.to_hz", f.to_hz, "must be a frequency above `from_hz`, Hz"));
+        }
+        if !(2..=100_000).contains(&f.points) {
+            return Err(CaseError::value("frequencies.points", f.points, "must be an integer from 2 to 100000"));
+        }
+        if self.inputs.is_empty() {
+            return Err(CaseError::new("inputs", "give at least one input"));
+        }
+        if self.outputs.is_empty() {
+            return Err(CaseError::new("outputs", "give at least one output"));
+        }
+        let n = self.model.nodes.len();
+        for (i, s) in self.inputs.iter().enumerate() {
+            let p = format!("inputs[{i}]");
+            check_node_frame(&p, s.node, s.frame, n)?;
+            for (k, v) in s.force.iter().chain(&s.moment).enumerate() {
+                let field = if k < 3 { "force" } else { "moment" };
+                check::finite(&format!("{p}.{field}[{}]", k % 3), *v)?;
+            }
+            if s.force.iter().chain(&s.moment).all(|v| *v == 0.0) {
+                return Err(CaseError::new(format!("{p}.force"), "the input loads nothing: give a nonzero `force` or `moment`"));
+            }
+        }
+        for (i, s) in self.outputs.iter().enumerate() {
+            let p = format!("outputs[{i}]");
+            check_node_frame(&p, s.node, s.frame, n)?;
+            if s.dofs.is_empty() {
+                return Err(CaseError::new(format!("{p}.dofs"), "give at least one DOF (ux, uy, uz, rx, ry, rz)"));
+            }
+        }
+        Ok(())
+    }
 }
 
 /// Global axes of a frame given by rows (x_local = R x_global): v_global = Rᵀ v_local.
@@ -120,8 +265,9 @@ fn to_global(frame: Option<[[f64; 3]; 3]>, v: [f64; 3]) -> [f64; 3] {
     }
 }
 
-/// The ports of a case, their names and the output units.
-pub fn ports(case: &FrfCase, model: &Model) -> (Ports, Vec<String>, Vec<OutputInfo>) {
+/// The ports of a case, the inputs' names and units (`N` for a force, `Nmm` for a moment,
+/// `input` for both) and the outputs.
+pub fn ports(case: &FrfCase, model: &Model) -> (Ports, Vec<(String, &'static str)>, Vec<OutputInfo>) {
     let n = model.n_dofs();
     let node_name = |name: &Option<String>, node: usize| name.clone().unwrap_or_else(|| format!("node {node}"));
     let mut inputs = Vec::new();
@@ -131,7 +277,12 @@ pub fn ports(case: &FrfCase, model: &Model) -> (Ports, Vec<String>, Vec<OutputIn
         f[6 * s.node..6 * s.node + 3].copy_from_slice(&to_global(s.frame, s.force));
         f[6 * s.node + 3..6 * s.node + 6].copy_from_slice(&to_global(s.frame, s.moment));
         inputs.push(f);
-        in_names.push(node_name(&s.name, s.node));
+        let unit = match (s.force.iter().any(|v| *v != 0.0), s.moment.iter().any(|v| *v != 0.0)) {
+            (true, false) => "N",
+            (false, true) => "Nmm",
+            _ => "input",
+        };
+        in_names.push((node_name(&s.name, s.node), unit));
     }
     let mut outputs = Vec::new();
     let mut out_info = Vec::new();
@@ -207,11 +358,12 @@ pub fn run(case: &FrfCase, model: &Model, cache: &mut crate::fem::SolverCache) -
         0.0
     };
     let mut response = Vec::new();
-    for (j, input) in in_names.iter().enumerate() {
+    for (j, (input, in_unit)) in in_names.iter().enumerate() {
         for (k, out) in out_info.iter().enumerate() {
             response.push(Pair {
                 input: input.clone(),
                 output: out.name.clone(),
+                unit: format!("{}_per_{in_unit}", out.unit),
                 magnitude: h.iter().map(|m| m[(k, j)].norm()).collect(),
                 phase_deg: h.iter().map(|m| m[(k, j)].arg().to_degrees()).collect(),
             });
@@ -232,7 +384,7 @@ pub fn run(case: &FrfCase, model: &Model, cache: &mut crate::fem::SolverCache) -
         notes.push("no direct check: a constant modal damping ratio has no sparse damping matrix".into());
     }
     let result = FrfResult {
-        inputs: in_names,
+        inputs: in_names.into_iter().map(|(n, _)| n).collect(),
         outputs: out_info,
         modes: modal
             .frequencies_hz()
@@ -263,6 +415,9 @@ pub fn run(case: &FrfCase, model: &Model, cache: &mut crate::fem::SolverCache) -
     Ok((result, ss))
 }
 
+/// `frf`: frequency response and state-space model of a mesh model.
+pub struct FrfKind;
+
 impl Analysis for FrfKind {
     const KIND: &'static str = "frf";
     type Case = FrfCase;
@@ -282,7 +437,7 @@ impl Analysis for FrfKind {
         Ok(r)
     }
     fn report(r: &Self::Result) -> Report {
-        report(r)
+        frf_result::report(r)
     }
     fn case_warnings(case: &Self::Case) -> Vec<String> {
         super::warn::density_warnings(&case.model)
@@ -294,68 +449,4 @@ impl Analysis for FrfKind {
             .filter_map(|(k, spec)| spec.resolve(k).ok().map(|m| (k.clone(), spec.clone(), m)))
             .collect()
     }
-}
-
-/// Markdown and CSV views: modes, static gain, direct check; the CSV is the response table.
-pub fn report(r: &FrfResult) -> Report {
-    let mut md = String::from("# Frequency response\n\n");
-    let mut t = Table::new(&["mode", "f (Hz)", "ζ"]);
-    for m in &r.modes {
-        t.row(vec![
-            m.mode.to_string(),
-            format!("{:.4}", m.frequency_hz),
-            format!("{:.4e}", m.damping_ratio),
-        ]);
-    }
-    md += "Retained modes:\n\n";
-    md += &t.render();
-    md += "\nStatic gain (output per unit input):\n\n";
-    let mut head = vec!["output".to_string()];
-    head.extend(r.inputs.iter().cloned());
-    let head_ref: Vec<&str> = head.iter().map(String::as_str).collect();
-    let mut g = Table::new(&head_ref);
-    for (o, row) in r.outputs.iter().zip(&r.static_gain) {
-        let mut cells = vec![format!("{} ({})", o.name, o.unit)];
-        cells.extend(row.iter().map(|v| format!("{v:.6e}")));
-        g.row(cells);
-    }
-    md += &g.render();
-    if let Some(d) = &r.direct {
-        md += &format!(
-            "\nDirect solve check: largest relative difference {:.3e} (at {:.4} Hz); up to twice the highest retained mode {}\n",
-            d.max_relative_difference,
-            d.at_hz,
-            d.max_relative_difference_to_2x_highest_mode
-                .map_or("—".to_string(), |v| format!("{v:.3e}"))
-        );
-    }
-    md += &format!(
-        "\nState-space model: {} states; DC gain equals the static gain to {:.2e} (relative).\n\n",
-        r.state_space.states, r.state_space.dc_gain_relative_error
-    );
-    for n in &r.model {
-        md += &format!("- {n}\n");
-    }
-    Report {
-        markdown: md,
-        csv: csv(r),
-    }
-}
-
-/// `frf.csv`: frequency, then magnitude and phase (degrees) of every (input, output) pair.
-pub fn csv(r: &FrfResult) -> String {
-    let mut s = String::from("frequency_hz");
-    for p in &r.response {
-        let tag = format!("{} -> {}", p.input, p.output).replace(',', ";");
-        s += &format!(",|H| {tag},phase_deg {tag}");
-    }
-    s.push('\n');
-    for (i, f) in r.frequencies_hz.iter().enumerate() {
-        s += &f.to_string();
-        for p in &r.response {
-            s += &format!(",{},{}", p.magnitude[i], p.phase_deg[i]);
-        }
-        s.push('\n');
-    }
-    s
 }

@@ -6,7 +6,7 @@
 use super::kind::{Analysis, Ctx};
 use super::{AnalysisError, Report, RunError};
 use crate::case::pantilt::{PanTiltCase, ValidPanTilt};
-use crate::case::{Case, CaseError};
+use crate::case::CaseError;
 use crate::kinematics::pantilt::{PanTilt, PanTiltError, PathState, JOINTS};
 use crate::report::markdown::{sig, Table};
 use crate::report::svg;
@@ -494,12 +494,6 @@ impl Analysis for PanTiltKind {
     type Case = PanTiltCase;
     type Result = PanTiltResult;
 
-    fn case(case: &Case) -> Option<&Self::Case> {
-        match case {
-            Case::PanTilt(c) => Some(c),
-            _ => None,
-        }
-    }
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.validate().map(|_| ())
     }

@@ -8,7 +8,7 @@
 use super::kind::{Analysis, Ctx};
 use super::{AnalysisError, Files, Report, RunError};
 use crate::case::prs_stiffness::{metric_unit, FrameSpec, MapSpec, PrsStiffnessCase, WorkspaceSpec};
-use crate::case::{Case, CaseError};
+use crate::case::CaseError;
 use crate::kinematics::prs_stiffness::{map, scaled_eigen, stiffness_limited, Grid, MapCell};
 use crate::report::markdown::{sig, Table};
 use nalgebra::{Vector3, Vector6};
@@ -459,12 +459,6 @@ impl Analysis for PrsStiffnessAnalysis {
     type Case = PrsStiffnessCase;
     type Result = PrsStiffnessResult;
 
-    fn case(case: &Case) -> Option<&Self::Case> {
-        match case {
-            Case::PrsStiffness(c) => Some(c),
-            _ => None,
-        }
-    }
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.validate().map(|_| ())
     }

@@ -103,3 +103,19 @@ pub fn parse_lines(text: &str) -> Vec<serde_json::Value> {
         .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("not a JSON line ({e}): {l}")))
         .collect()
 }
+
+/// Asserts that the run exited with `exit` and a stderr naming each of `needles`; stderr.
+pub fn exits(o: &Output, exit: i32, needles: &[&str]) -> String {
+    let err = stderr(o);
+    assert_eq!(code(o), Some(exit), "{err}");
+    for n in needles {
+        assert!(err.contains(n), "`{n}` missing in: {err}");
+    }
+    err
+}
+
+/// Asserts that the run was refused as a bad case or command line (exit 2) with a message
+/// naming each of `needles`; the message.
+pub fn exits_2(o: &Output, needles: &[&str]) -> String {
+    exits(o, 2, needles)
+}
