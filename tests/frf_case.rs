@@ -101,7 +101,8 @@ fn modal_damping_ratio_has_no_direct_check() {
 /// Bad input names its JSON path, the value and what is allowed; `flexfem run` exits 2.
 #[test]
 fn case_errors_name_their_paths() {
-    let cases: Vec<(&str, Box<dyn Fn(&mut Value)>)> = vec![
+    type Edit = Box<dyn Fn(&mut Value)>;
+    let cases: Vec<(&str, Edit)> = vec![
         ("inputs[0].node", Box::new(|v| v["inputs"][0]["node"] = json!(5))),
         ("outputs[0].node", Box::new(|v| v["outputs"][0]["node"] = json!(1))),
         ("frequencies.to_hz", Box::new(|v| v["frequencies"]["to_hz"] = json!(5))),

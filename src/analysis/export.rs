@@ -8,9 +8,8 @@ use crate::fem::matrices::reduced_matrices;
 
 /// The error of `--export-matrices` on a case of another kind.
 fn not_exportable(case: &Case) -> CaseError {
-    CaseError::value(
-        "analysis",
-        format!("\"{}\"", case.analysis()),
+    super::kind_refused(
+        case,
         "--export-matrices takes a static, modal or frf case (for the stage: its stage_mesh.json, a static case)",
     )
 }

@@ -443,10 +443,6 @@ impl Analysis for FrfKind {
         super::warn::density_warnings(&case.model)
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
-        case.model
-            .materials
-            .iter()
-            .filter_map(|(k, spec)| spec.resolve(k).ok().map(|m| (k.clone(), spec.clone(), m)))
-            .collect()
+        super::kinds::named_materials(&case.model.materials)
     }
 }

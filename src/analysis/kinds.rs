@@ -11,7 +11,8 @@ fn one_material(spec: &MaterialSpec) -> Vec<UsedMaterial> {
         .unwrap_or_default()
 }
 
-fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>) -> Vec<UsedMaterial> {
+/// The resolved materials of a mesh model's named `materials`.
+pub(crate) fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>) -> Vec<UsedMaterial> {
     specs
         .iter()
         .filter_map(|(k, spec)| spec.resolve(k).ok().map(|m| (k.clone(), spec.clone(), m)))
