@@ -370,17 +370,21 @@ fn mutate(doc: &mut Value, rng: &mut Rng) -> String {
     said
 }
 
+/// The longest prefix of `s` of at most `n` bytes that ends on a character boundary.
+fn prefix(s: &str, n: usize) -> &str {
+    let end = s
+        .char_indices()
+        .map(|(i, _)| i)
+        .take_while(|&i| i < n)
+        .last()
+        .unwrap_or(0);
+    &s[..end]
+}
+
 fn short(v: &Value) -> String {
     let s = v.to_string();
     if s.len() > 80 {
-        format!(
-            "{}…",
-            &s[..s
-                .char_indices()
-                .take_while(|(i, _)| *i < 80)
-                .last()
-                .map_or(0, |(i, _)| i)]
-        )
+        format!("{}…", prefix(&s, 80))
     } else {
         s
     }
@@ -833,15 +837,7 @@ fn report(f: &Findings, label: &str) {
 
 fn short_case(s: &str) -> String {
     if s.len() > 600 {
-        format!(
-            "{}… ({} bytes)",
-            &s[..s
-                .char_indices()
-                .take_while(|(i, _)| *i < 600)
-                .last()
-                .map_or(0, |(i, _)| i)],
-            s.len()
-        )
+        format!("{}… ({} bytes)", prefix(s, 600), s.len())
     } else {
         s.to_string()
     }

@@ -251,20 +251,8 @@ fn unknown_static_or_modal_field_lists_every_accepted_field() {
     let static_case = serde_json::json!({"analysis": "static", "nodes": [[0, 0, 0]], "nonlinar": true});
     let e = flexfem::analysis::parse(&static_case.to_string()).unwrap_err();
     assert_eq!(e.path, "nonlinar");
-    for f in [
-        "analysis",
-        "mesh",
-        "gmsh",
-        "nonlinear",
-        "steps",
-        "materials",
-        "sections",
-        "nodes",
-        "elements",
-        "rigid_links",
-        "supports",
-        "load_cases",
-    ] {
+    let fields = "analysis mesh gmsh nonlinear steps materials sections nodes elements rigid_links supports load_cases";
+    for f in fields.split(' ') {
         assert!(
             e.message.contains(&format!("`{f}`")),
             "`{f}` missing from: {}",

@@ -19,6 +19,27 @@ fn strip(l: f64, b: f64, nx: usize, ny: usize) -> (Vec<[f64; 3]>, Vec<Value>) {
     })
 }
 
+/// A `static` case of shells (section `s` of thickness `t`, material `m`) with one load case,
+/// `name`, of edge loads.
+fn shell_case(
+    material: Value,
+    t: f64,
+    (nodes, elements): (Vec<[f64; 3]>, Vec<Value>),
+    supports: Vec<Value>,
+    edges: Vec<Value>,
+    name: &str,
+) -> Value {
+    json!({
+        "analysis": "static",
+        "materials": {"m": material},
+        "sections": {"s": {"shape": "shell", "t": t}},
+        "nodes": nodes,
+        "elements": elements,
+        "supports": supports,
+        "load_cases": [{"name": name, "edge_loads": edges}]
+    })
+}
+
 /// The statically determinate strip in pure bending: `strip(l, b, nx, ny)` of thickness `t`
 /// and `material`, end moment `mm` (about +y at x = l, −`mm` at x = 0) as edge moments
 /// `mm`/b per length, held against rigid motion only.
@@ -29,17 +50,12 @@ fn bending_strip(l: f64, b: f64, t: f64, mm: f64, (nx, ny): (usize, usize), mate
         edges.push(json!({"nodes": [j * (nx + 1) + nx, (j + 1) * (nx + 1) + nx], "m": [0.0, mm / b, 0.0]}));
         edges.push(json!({"nodes": [j * (nx + 1), (j + 1) * (nx + 1)], "m": [0.0, -mm / b, 0.0]}));
     }
-    json!({
-        "analysis": "static",
-        "materials": {"m": material},
-        "sections": {"s": {"shape": "shell", "t": t}},
-        "nodes": nodes,
-        "elements": elements,
-        "supports": [{"node": 0, "fix": ["ux", "uy", "uz"]},
-                     {"node": nx, "fix": ["uy", "uz"]},
-                     {"node": ny * (nx + 1), "fix": ["uz"]}],
-        "load_cases": [{"name": "M", "edge_loads": edges}]
-    })
+    let supports = vec![
+        json!({"node": 0, "fix": ["ux", "uy", "uz"]}),
+        json!({"node": nx, "fix": ["uy", "uz"]}),
+        json!({"node": ny * (nx + 1), "fix": ["uz"]}),
+    ];
+    shell_case(material, t, (nodes, elements), supports, edges, "M")
 }
 
 fn f(v: &Value) -> f64 {
@@ -93,26 +109,6 @@ fn strip_end_moment_gives_6m_over_bt2() {
     assert_eq!(lc["shell_forces"].as_array().unwrap().len(), nx * ny);
 }
 
-/// A `static` case of shells (section `s` of thickness `t`, material `m`) with one load case of
-/// edge loads.
-fn shell_case(
-    material: Value,
-    t: f64,
-    (nodes, elements): (Vec<[f64; 3]>, Vec<Value>),
-    supports: Vec<Value>,
-    edges: Vec<Value>,
-) -> Value {
-    json!({
-        "analysis": "static",
-        "materials": {"m": material},
-        "sections": {"s": {"shape": "shell", "t": t}},
-        "nodes": nodes,
-        "elements": elements,
-        "supports": supports,
-        "load_cases": [{"name": "edge loads", "edge_loads": edges}]
-    })
-}
-
 /// NAFEMS LE5 Z-section cantilever: L = 10 m, flanges 1 m wide, web 2 m deep (mid-surfaces),
 /// t = 0.1 m, E = 210 GPa, ν = 0.3, clamped at x = 0; a torque of 1.2 MN·m at x = L applied as
 /// two uniform edge shears of 0.6 MN on the flanges' end edges. Target: axial stress σxx at
@@ -163,7 +159,7 @@ fn z_section(nf: usize, nw: usize, nx: usize) -> (f64, f64) {
         edges.push(json!({"nodes": [id(nx, kb), id(nx, kb + 1)], "q": [0.0, -q, 0.0]}));
     }
     let steel = json!({"E": 210000.0, "nu": 0.3, "density": 7.85e-9, "yield": 1e9, "allowable": 1e9});
-    let r = run(shell_case(steel, t, (nodes, elements), supports, edges));
+    let r = run(shell_case(steel, t, (nodes, elements), supports, edges, "torque"));
     let lc = &r["load_cases"][0];
     assert!(nx.is_multiple_of(4));
     let a_top = id(nx / 4, 0);
@@ -201,7 +197,7 @@ fn strip_free_body(nx: usize, ny: usize) -> Vec<[f64; 4]> {
     let edges: Vec<Value> = (0..ny)
         .map(|j| json!({"nodes": [j * (nx + 1) + nx, (j + 1) * (nx + 1) + nx], "q": [p[0] / b, p[1] / b, p[2] / b]}))
         .collect();
-    let r = run(shell_case(json!("steel"), t, (nodes, elements), supports, edges));
+    let r = run(shell_case(json!("steel"), t, (nodes, elements), supports, edges, "P"));
     let forces = r["load_cases"][0]["shell_forces"].as_array().unwrap().clone();
     let w = b / ny as f64;
     let mut err = Vec::new();

@@ -62,6 +62,13 @@ fn fix(m: &mut Model, node: usize, dofs: &[Dof]) {
 
 use Dof::*;
 
+/// Asserts `got` within `tol` (relative) of `reference`, printing the error.
+fn within(what: &str, got: f64, reference: f64, tol: f64) {
+    let err = got / reference - 1.0;
+    eprintln!("{what} = {got:.6e}, error {:.2} %", 100.0 * err);
+    assert!(err.abs() < tol, "{what} = {got} vs {reference}");
+}
+
 fn clamped_plate(n: usize) -> f64 {
     let (a, t, e, nu, q) = (100.0, 0.1, 1.0e5, 0.3, 1e-3);
     let mut m = Model::new();
@@ -84,10 +91,7 @@ fn clamped_plate(n: usize) -> f64 {
 /// Full plate, 16×16 mesh, a/t = 1000: 0.001271 (+0.91 %); 8×8 0.001289, 32×32 0.001267.
 #[test]
 fn clamped_square_plate_timoshenko() {
-    let c = clamped_plate(16);
-    let err = (c - 0.00126) / 0.00126;
-    eprintln!("clamped plate 16x16: w = {c:.6} q a^4/D, error {:.2} %", 100.0 * err);
-    assert!(err.abs() < 0.02, "w coefficient {c}");
+    within("clamped plate 16x16: w / (q a^4/D)", clamped_plate(16), 0.00126, 0.02);
 }
 
 /// Scordelis–Lo roof: R = 25, L = 50, 2×40° arc, t = 0.25, E = 4.32e8, ν = 0, gravity 90 per
@@ -117,10 +121,7 @@ fn scordelis_lo(n: usize) -> f64 {
 fn scordelis_lo_roof() {
     // 16×16 elements on the full roof (an 8×8 quarter): 0.30586 (+1.14 %); 8×8 0.32100,
     // 32×32 0.30253 (+0.04 %).
-    let w = scordelis_lo(16);
-    let err = (w - 0.3024) / 0.3024;
-    eprintln!("Scordelis-Lo 16x16: w = {w:.5}, error {:.2} %", 100.0 * err);
-    assert!(err.abs() < 0.02, "w = {w}");
+    within("Scordelis-Lo 16x16: w", scordelis_lo(16), 0.3024, 0.02);
 }
 
 /// Pinched cylinder with rigid end diaphragms: R = 300, L = 600, t = 3, E = 3e6, ν = 0.3,
@@ -152,10 +153,12 @@ fn pinched_cylinder(n: usize) -> f64 {
 #[test]
 fn pinched_cylinder_with_diaphragms() {
     // Octant 32×32: 1.8325e-5 (+0.42 %); 16×16 gives 1.7799e-5 (−2.5 %), so 32×32 is needed.
-    let w = pinched_cylinder(32);
-    let err = (w - 1.8248e-5) / 1.8248e-5;
-    eprintln!("pinched cylinder octant 32x32: w = {w:.5e}, error {:.2} %", 100.0 * err);
-    assert!(err.abs() < 0.02, "w = {w}");
+    within(
+        "pinched cylinder octant 32x32: w",
+        pinched_cylinder(32),
+        1.8248e-5,
+        0.02,
+    );
 }
 
 /// Pinched hemisphere with an 18° hole: R = 10, t = 0.04, E = 6.825e7, ν = 0.3, alternating

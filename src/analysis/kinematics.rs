@@ -181,6 +181,11 @@ pub fn solve(
     })
 }
 
+/// A CSV row of the kinematics table: `kind`, strokes (mm), then z (mm), ψ, θ (°), x, y (mm), φ (°).
+fn csv_row(kind: &str, s: [f64; 3], [z, psi, theta, x, y, phi]: [f64; 6]) -> String {
+    format!("{kind},{},{},{},{z},{psi},{theta},{x},{y},{phi}\n", s[0], s[1], s[2])
+}
+
 /// Markdown and CSV views of the result.
 pub fn report(r: &KinematicsResult) -> Report {
     let mut md = String::from("# 3-PRS rigid-body kinematics\n\n");
@@ -193,17 +198,8 @@ pub fn report(r: &KinematicsResult) -> Report {
     let mut csv = String::from("kind,s1_mm,s2_mm,s3_mm,z_mm,psi_deg,theta_deg,x_mm,y_mm,phi_deg\n");
     if !r.fkp.is_empty() {
         md += "## Forward kinematics\n\n";
-        let mut t = Table::new(&[
-            "Δs₁ (µm)",
-            "Δs₂ (µm)",
-            "Δs₃ (µm)",
-            "Δz (µm)",
-            "ψ (DMS)",
-            "θ (DMS)",
-            "x (µm)",
-            "y (µm)",
-            "φ (DMS)",
-        ]);
+        let mut t =
+            Table::columns("Δs₁ (µm) | Δs₂ (µm) | Δs₃ (µm) | Δz (µm) | ψ (DMS) | θ (DMS) | x (µm) | y (µm) | φ (DMS)");
         for f in &r.fkp {
             let um = |v: f64| format!("{:.0}", v * 1000.0);
             t.row(vec![
@@ -217,43 +213,24 @@ pub fn report(r: &KinematicsResult) -> Report {
                 format!("{:.2}", f.y * 1000.0),
                 dms(f.phi_deg),
             ]);
-            csv += &format!(
-                "fkp,{},{},{},{},{},{},{},{},{}\n",
-                f.s[0], f.s[1], f.s[2], f.z, f.psi_deg, f.theta_deg, f.x, f.y, f.phi_deg
-            );
+            csv += &csv_row("fkp", f.s, [f.z, f.psi_deg, f.theta_deg, f.x, f.y, f.phi_deg]);
         }
         md += &t.render();
         md += "\n";
     }
     if !r.ikp.is_empty() {
         md += "## Inverse kinematics\n\n";
-        let mut t = Table::new(&[
-            "z (mm)",
-            "ψ (°)",
-            "θ (°)",
-            "s₁ (mm)",
-            "s₂ (mm)",
-            "s₃ (mm)",
-            "x (µm)",
-            "y (µm)",
-            "φ (DMS)",
-        ]);
+        let mut t = Table::columns("z (mm) | ψ (°) | θ (°) | s₁ (mm) | s₂ (mm) | s₃ (mm) | x (µm) | y (µm) | φ (DMS)");
         for q in &r.ikp {
-            t.row(vec![
-                format!("{:.4}", q.z),
-                format!("{:.4}", q.psi_deg),
-                format!("{:.4}", q.theta_deg),
-                format!("{:.4}", q.s[0]),
-                format!("{:.4}", q.s[1]),
-                format!("{:.4}", q.s[2]),
+            let pose = [q.z, q.psi_deg, q.theta_deg, q.s[0], q.s[1], q.s[2]];
+            let mut row: Vec<String> = pose.iter().map(|v| format!("{v:.4}")).collect();
+            row.extend([
                 format!("{:.2}", q.x * 1000.0),
                 format!("{:.2}", q.y * 1000.0),
                 dms(q.phi_deg),
             ]);
-            csv += &format!(
-                "ikp,{},{},{},{},{},{},{},{},{}\n",
-                q.s[0], q.s[1], q.s[2], q.z, q.psi_deg, q.theta_deg, q.x, q.y, q.phi_deg
-            );
+            t.row(row);
+            csv += &csv_row("ikp", q.s, [q.z, q.psi_deg, q.theta_deg, q.x, q.y, q.phi_deg]);
         }
         md += &t.render();
         md += "\n";

@@ -401,12 +401,7 @@ pub fn report(r: &PanTiltResult) -> Report {
         }
         md += &t.render();
         md += "\n";
-        let mut t = Table::new(&[
-            "Actuator",
-            "largest |τ| undamped (N·mm)",
-            "largest |τ| damped (N·mm)",
-            "largest damper share (N·mm)",
-        ]);
+        let mut t = Table::columns("Actuator | largest |τ| undamped (N·mm) | largest |τ| damped (N·mm) | largest damper share (N·mm)");
         for a in 0..2 {
             t.row(vec![
                 format!("limb {} (J{})", g.actuated[a], g.actuated[a]),

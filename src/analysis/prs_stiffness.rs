@@ -321,20 +321,7 @@ pub fn report(r: &PrsStiffnessResult) -> Report {
     let mut md = String::from("# 3-PRS stiffness\n\n");
     md += &format!("Conventions: {}.\n\n", r.conventions);
     if !r.poses.is_empty() {
-        let mut t = Table::new(&[
-            "p_z (mm)",
-            "ψ (°)",
-            "θ (°)",
-            "φ (°)",
-            "pₓ (mm)",
-            "p_y (mm)",
-            "1/C_xx (N/mm)",
-            "1/C_yy",
-            "1/C_zz",
-            "λ_min,3 (N/mm)",
-            "λ_max,3 (N/mm)",
-            "|δp| (mm)",
-        ]);
+        let mut t = Table::columns("p_z (mm) | ψ (°) | θ (°) | φ (°) | pₓ (mm) | p_y (mm) | 1/C_xx (N/mm) | 1/C_yy | 1/C_zz | λ_min,3 (N/mm) | λ_max,3 (N/mm) | |δp| (mm)");
         for p in &r.poses {
             t.row(vec![
                 sig(p.pz, 6),

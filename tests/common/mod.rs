@@ -32,6 +32,13 @@ pub fn run_in(dir: &Path, args: &[&str]) -> Output {
     Command::new(bin()).args(args).current_dir(dir).output().unwrap()
 }
 
+/// Runs `flexfem ARGS` in `dir` and asserts exit 0.
+pub fn run_ok_in(dir: &Path, args: &[&str]) -> Output {
+    let o = run_in(dir, args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    o
+}
+
 /// Runs `flexfem ARGS` in the crate root.
 pub fn run(args: &[&str]) -> Output {
     run_in(&root(), args)
