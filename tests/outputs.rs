@@ -494,6 +494,10 @@ fn has_unit(col: &str) -> bool {
         "_s",
         "_deg_per_s",
         "_Nmm",
+        "_mm_per_N",
+        "_deg_per_N",
+        "_mm_per_input",
+        "_deg_per_input",
     ];
     const PLAIN: &[&str] = &[
         "kind",

@@ -67,6 +67,9 @@ macro_rules! analyses {
             /// Exact-constraint check of a mesh model: redundant constraints and free motions of its
             /// bodies taken rigid (Grübler–Kutzbach by rank; Blanding, Exact Constraint, 1999).
             Constraints = "constraints" #13, mod constraints, analysis constraints::ConstraintsAnalysis, parse constraints::parse;
+            /// Frequency response from nodal loads to nodal DOFs (modal superposition with static
+            /// correction, checked by a direct solve) and its state-space model.
+            Frf = "frf" #14, mod frf, analysis frf::FrfKind, parse frf::parse_frf;
         }
     };
 }

@@ -3,9 +3,12 @@
 pub mod case_file;
 pub mod compliance;
 pub mod design;
+pub mod export;
 pub mod fem_static;
 pub mod fem_vs_fkp;
 pub mod finite;
+pub mod frf_files;
+pub mod frf_result;
 pub mod hinge;
 pub mod kind;
 pub mod kinds;
@@ -144,11 +147,15 @@ pub fn warnings_markdown(warnings: &[String]) -> String {
 
 /// Refuses a case whose kind has no registered analysis (a build error caught by the tests).
 fn unregistered(case: &Case) -> CaseError {
-    CaseError::value(
-        "analysis",
-        format!("\"{}\"", case.analysis()),
+    kind_refused(
+        case,
         "no analysis of this kind is registered in this build (please report)",
     )
+}
+
+/// An error at `analysis` naming the case's kind and why it is refused.
+pub(crate) fn kind_refused(case: &Case, rule: &str) -> CaseError {
+    CaseError::value("analysis", format!("\"{}\"", case.analysis()), rule)
 }
 
 /// Validates a case (everything checked before solving).

@@ -47,6 +47,11 @@ enum Command {
         /// names are replaced). The case file itself is never overwritten.
         #[arg(long)]
         force: bool,
+        /// Also write the reduced stiffness and mass (`K.mtx`, `M.mtx`, Matrix Market) and the
+        /// node and DOF of each equation (`dofs.csv`) into --out DIR (static, modal and frf
+        /// cases).
+        #[arg(long, requires = "out")]
+        export_matrices: bool,
     },
     /// Validate a case file without solving.
     Check {
@@ -196,6 +201,7 @@ pub fn run(cli: Cli) -> ExitCode {
             out,
             format,
             force,
+            export_matrices,
         } => {
             if let Some(dir) = &out {
                 if let Err(msg) = check_out_dir(dir, &case, force) {
@@ -207,15 +213,26 @@ pub fn run(cli: Cli) -> ExitCode {
                 Ok(c) => c,
                 Err(e) => return fail(&RunError::Case(e)),
             };
+            if export_matrices {
+                if let Err(e) = analysis::export::check_exportable(&parsed) {
+                    return fail(&RunError::Case(e));
+                }
+            }
             let run = if out.is_some() {
                 analysis::run_with_files
             } else {
                 analysis::run
             };
-            let outcome = match run(&parsed) {
+            let mut outcome = match run(&parsed) {
                 Ok(o) => o,
                 Err(e) => return fail(&e),
             };
+            if export_matrices {
+                match analysis::export::matrix_files(&parsed) {
+                    Ok(files) => outcome.files.extend(files),
+                    Err(e) => return fail(&e),
+                }
+            }
             if let Some(dir) = &out {
                 for (name, _) in &outcome.files {
                     if let Err(msg) = refuse_case_file(&dir.join(name), &case) {

@@ -212,6 +212,26 @@ impl SparseMatrix {
         out
     }
 
+    /// The stored lower-triangle entries as (row, column, value), column by column.
+    pub fn lower_triplets(&self) -> Vec<(usize, usize, f64)> {
+        let mut out = Vec::with_capacity(self.nnz());
+        self.for_each(|i, j, v| out.push((i, j, v)));
+        out
+    }
+
+    /// Both triangles as a [`sprs::CsMat`] (compressed rows), the type flexfem hands sparse
+    /// matrices to other Rust code in.
+    pub fn to_csmat(&self) -> sprs::CsMat<f64> {
+        let mut tri = sprs::TriMat::with_capacity((self.n(), self.n()), 2 * self.nnz());
+        self.for_each(|i, j, v| {
+            tri.add_triplet(i, j, v);
+            if i != j {
+                tri.add_triplet(j, i, v);
+            }
+        });
+        tri.to_csr()
+    }
+
     /// Writes the lower triangle in Matrix Market coordinate format (`real symmetric`,
     /// 1-based), e.g. to compare against CHOLMOD.
     pub fn write_matrix_market(&self, w: &mut impl Write) -> std::io::Result<()> {

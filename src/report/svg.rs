@@ -143,7 +143,7 @@ pub fn lines(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f
 
 fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])], markers: bool) -> String {
     let all: Vec<(f64, f64)> = series.iter().flat_map(|(_, p)| p.iter().copied()).collect();
-    let f = Frame::new(640.0, 420.0, 20.0, &all, &[], true);
+    let f = Frame::new(640.0, 420.0, 20.0, &all, &[], markers); // scatter plots start y at zero; line plots take the data range
     let mut out = f.open(title, xlabel, ylabel);
     let colours = [
         "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf",

@@ -82,20 +82,26 @@ pub fn check_track(track: Option<&TrackRequest>, nonlinear: bool, n_nodes: usize
 
 fn check_compliance_at(path: &str, reqs: &[ComplianceRequest], n_nodes: usize) -> Result<(), CaseError> {
     for (i, r) in reqs.iter().enumerate() {
-        let p = format!("{path}[{i}]");
-        if r.node >= n_nodes {
-            return Err(CaseError::value(
-                format!("{p}.node"),
-                r.node,
-                format!("the model has nodes 0 … {}", n_nodes.saturating_sub(1)),
-            ));
-        }
-        if let Some(f) = r.frame {
-            for (k, v) in f.iter().flatten().enumerate() {
-                crate::case::error::check::finite(&format!("{p}.frame[{}][{}]", k / 3, k % 3), *v)?;
-            }
-        }
-        frames::local(&p, r.frame, None)?;
+        check_node_frame(&format!("{path}[{i}]"), r.node, r.frame, n_nodes)?;
     }
+    Ok(())
+}
+
+/// Validates the `node` and optional `frame` (orthonormal right-handed rows) of an entry at
+/// JSON path `p` against a model of `n_nodes` nodes.
+pub fn check_node_frame(p: &str, node: usize, frame: Option<[[f64; 3]; 3]>, n_nodes: usize) -> Result<(), CaseError> {
+    if node >= n_nodes {
+        return Err(CaseError::value(
+            format!("{p}.node"),
+            node,
+            format!("the model has nodes 0 … {}", n_nodes.saturating_sub(1)),
+        ));
+    }
+    if let Some(f) = frame {
+        for (k, v) in f.iter().flatten().enumerate() {
+            crate::case::error::check::finite(&format!("{p}.frame[{}][{}]", k / 3, k % 3), *v)?;
+        }
+    }
+    frames::local(p, frame, None)?;
     Ok(())
 }

@@ -1,0 +1,448 @@
+//! `"analysis": "frf"`: frequency response of a mesh model (as for `modal`) from nodal loads to
+//! nodal DOFs, by modal superposition with static correction, checked by a direct solve, with a
+//! state-space model of the same inputs and outputs — the case shape, its parser and the
+//! [`Analysis`] implementation and the run; the result and report are in
+//! [`super::frf_result`], the files in [`super::frf_files`].
+
+use super::frf_result::{self, rows, DirectCheck, FrfMode, FrfResult, OutputInfo, Pair, StateSpaceOut};
+use super::kind::{Analysis, Ctx, UsedMaterial};
+use super::{AnalysisError, Report, RunError};
+use crate::case::error::{check, CaseError};
+use crate::case::fem_case::{read_model, split, MODEL_FIELDS};
+use crate::case::from_value;
+use crate::case::mesh::load_shapes::DofName;
+use crate::case::mesh::requests::check_node_frame;
+use crate::case::mesh::MeshSpec;
+use crate::fem::frf::{modal_frf, relative_difference, Damping, DirectFrf, ModalFrf, Ports, C64};
+use crate::fem::state_space::{state_space, StateSpace};
+use crate::fem::Model;
+use nalgebra::DMatrix;
+use serde::Deserialize;
+use serde_json::Value;
+use std::path::Path;
+
+/// `"analysis": "frf"`.
+#[derive(Debug, Clone, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FrfCase {
+    /// Free text saying what the model is (not used by the analysis).
+    pub description: Option<String>,
+    /// Mesh file, as for `static` (a JSON mesh file; the inline fields add to it).
+    pub mesh: Option<String>,
+    /// Number of retained modes (the lowest), 1 … 1000.
+    #[schemars(range(min = 1, max = 1000))]
+    pub modes: usize,
+    /// Viscous damping (default none).
+    #[serde(default)]
+    pub damping: DampingSpec,
+    /// The frequencies of the response.
+    pub frequencies: FrequencySpec,
+    /// Inputs: nodal loads per unit input.
+    pub inputs: Vec<InputSpec>,
+    /// Outputs: nodal DOFs.
+    pub outputs: Vec<OutputSpec>,
+    /// Also solve (K − ω²M + iωC) directly at every frequency and report the largest
+    /// difference to the modal result (default true; Rayleigh damping only).
+    #[serde(default = "yes")]
+    pub direct: bool,
+    /// The model.
+    #[serde(flatten)]
+    pub model: MeshSpec,
+}
+
+fn yes() -> bool {
+    true
+}
+
+/// Viscous damping: Rayleigh C = αM + βK and/or a constant modal damping ratio ζ (each mode's
+/// ratio is ζ + α/(2ω) + βω/2).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct DampingSpec {
+    /// Mass-proportional coefficient α ≥ 0, 1/s.
+    #[serde(default)]
+    pub alpha: f64,
+    /// Stiffness-proportional coefficient β ≥ 0, s.
+    #[serde(default)]
+    pub beta: f64,
+    /// Constant modal damping ratio 0 ≤ ζ < 1 (modal superposition only: no direct check).
+    #[serde(default)]
+    pub zeta: f64,
+}
+
+/// Frequencies: `points` values from `from_hz` to `to_hz`, log or linear spacing.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FrequencySpec {
+    /// Lowest frequency, Hz (> 0 with log spacing, ≥ 0 with linear).
+    pub from_hz: f64,
+    /// Highest frequency, Hz.
+    pub to_hz: f64,
+    /// Number of frequencies, 2 … 100000.
+    #[schemars(range(min = 2, max = 100000))]
+    pub points: usize,
+    /// `"log"` (default) or `"linear"`.
+    #[serde(default)]
+    pub spacing: Spacing,
+}
+
+/// Spacing of the frequencies.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, schemars::JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Spacing {
+    /// Logarithmic.
+    #[default]
+    Log,
+    /// Linear.
+    Linear,
+}
+
+impl FrequencySpec {
+    /// The frequencies, Hz.
+    pub fn values(&self) -> Vec<f64> {
+        let n = self.points;
+        (0..n)
+            .map(|i| {
+                let t = i as f64 / (n - 1) as f64;
+                match self.spacing {
+                    Spacing::Log => self.from_hz * (self.to_hz / self.from_hz).powf(t),
+                    Spacing::Linear => self.from_hz + (self.to_hz - self.from_hz) * t,
+                }
+            })
+            .collect()
+    }
+}
+
+/// One input: a load at a node per unit input, in the input's frame.
+#[derive(Debug, Clone, PartialEq, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct InputSpec {
+    /// Name in results and plots (default `node N`).
+    pub name: Option<String>,
+    /// The node loaded.
+    pub node: usize,
+    /// Force per unit input, N, in the frame (default zero).
+    #[serde(default)]
+    pub force: [f64; 3],
+    /// Moment per unit input, N·mm, in the frame (default zero).
+    #[serde(default)]
+    pub moment: [f64; 3],
+    /// Axes of `force` and `moment`: three orthonormal right-handed rows (local x, y, z in
+    /// global coordinates); default the global axes.
+    pub frame: Option<[[f64; 3]; 3]>,
+}
+
+/// One output entry: DOFs of a node, in the entry's frame (one output per DOF).
+#[derive(Debug, Clone, PartialEq, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct OutputSpec {
+    /// Name prefix in results and plots (default `node N`).
+    pub name: Option<String>,
+    /// The node.
+    pub node: usize,
+    /// The DOFs (`ux` … `rz`): displacements in mm, rotations in degrees.
+    pub dofs: Vec<DofName>,
+    /// Axes of the DOFs: three orthonormal right-handed rows; default the global axes.
+    pub frame: Option<[[f64; 3]; 3]>,
+}
+
+/// The case fields of an `frf` case besides its model.
+const OWN: [&str; 9] = [
+    "analysis",
+    "description",
+    "mesh",
+    "modes",
+    "damping",
+    "frequencies",
+    "inputs",
+    "outputs",
+    "direct",
+];
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Options {
+    #[serde(default)]
+    description: Option<String>,
+    #[serde(default)]
+    mesh: Option<String>,
+    modes: usize,
+    #[serde(default)]
+    damping: DampingSpec,
+    frequencies: FrequencySpec,
+    inputs: Vec<InputSpec>,
+    outputs: Vec<OutputSpec>,
+    #[serde(default = "yes")]
+    direct: bool,
+}
+
+/// Parses an `frf` case; a mesh file it names resolves against `base` first.
+pub fn parse_frf(value: Value, base: Option<&Path>) -> Result<FrfCase, CaseError> {
+    if let Some(key) = value
+        .as_object()
+        .and_then(|m| m.keys().find(|k| !OWN.contains(&k.as_str()) && !MODEL_FIELDS.contains(&k.as_str())))
+    {
+        return Err(CaseError::new(
+            key.clone(),
+            format!("unknown field `{key}` in an `frf` case, expected one of the model's fields or {OWN:?}"),
+        ));
+    }
+    let (options, model) = split(value, &OWN);
+    let o: Options = from_value(options, "")?;
+    let model = read_model(model, o.mesh.as_deref(), None, base)?;
+    let case = FrfCase {
+        description: o.description,
+        mesh: o.mesh,
+        modes: o.modes,
+        damping: o.damping,
+        frequencies: o.frequencies,
+        inputs: o.inputs,
+        outputs: o.outputs,
+        direct: o.direct,
+        model,
+    };
+    case.check_options()?;
+    Ok(case)
+}
+
+impl FrfCase {
+    /// Validates everything but the model (which [`MeshSpec::build_model`] checks).
+    pub fn check_options(&self) -> Result<(), CaseError> {
+        if !(1..=1000).contains(&self.modes) {
+            return Err(CaseError::value("modes", self.modes, "must be an integer from 1 to 1000"));
+        }
+        let d = &self.damping;
+        check::non_negative("damping.alpha", d.alpha, "1/s")?;
+        check::non_negative("damping.beta", d.beta, "s")?;
+        if !(d.zeta.is_finite() && (0.0..1.0).contains(&d.zeta)) {
+            return Err(CaseError::value("damping.zeta", d.zeta, "must be a ratio from 0 up to (not including) 1"));
+        }
+        let f = &self.frequencies;
+        let lo = if f.spacing == Spacing::Log { "> 0" } else { "≥ 0" };
+        if !(f.from_hz.is_finite() && (f.from_hz > 0.0 || (f.spacing == Spacing::Linear && f.from_hz == 0.0))) {
+            return Err(CaseError::value("frequencies.from_hz", f.from_hz, format!("must be a frequency {lo}, Hz")));
+        }
+        if !(f.to_hz.is_finite() && f.to_hz > f.from_hz) {
+            return Err(CaseError::value("frequencies.to_hz", f.to_hz, "must be a frequency above `from_hz`, Hz"));
+        }
+        if !(2..=100_000).contains(&f.points) {
+            return Err(CaseError::value("frequencies.points", f.points, "must be an integer from 2 to 100000"));
+        }
+        if self.inputs.is_empty() {
+            return Err(CaseError::new("inputs", "give at least one input"));
+        }
+        if self.outputs.is_empty() {
+            return Err(CaseError::new("outputs", "give at least one output"));
+        }
+        let n = self.model.nodes.len();
+        for (i, s) in self.inputs.iter().enumerate() {
+            let p = format!("inputs[{i}]");
+            check_node_frame(&p, s.node, s.frame, n)?;
+            for (k, v) in s.force.iter().chain(&s.moment).enumerate() {
+                let field = if k < 3 { "force" } else { "moment" };
+                check::finite(&format!("{p}.{field}[{}]", k % 3), *v)?;
+            }
+            if s.force.iter().chain(&s.moment).all(|v| *v == 0.0) {
+                return Err(CaseError::new(format!("{p}.force"), "the input loads nothing: give a nonzero `force` or `moment`"));
+            }
+        }
+        for (i, s) in self.outputs.iter().enumerate() {
+            let p = format!("outputs[{i}]");
+            check_node_frame(&p, s.node, s.frame, n)?;
+            if s.dofs.is_empty() {
+                return Err(CaseError::new(format!("{p}.dofs"), "give at least one DOF (ux, uy, uz, rx, ry, rz)"));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Global axes of a frame given by rows (x_local = R x_global): v_global = Rᵀ v_local.
+fn to_global(frame: Option<[[f64; 3]; 3]>, v: [f64; 3]) -> [f64; 3] {
+    match frame {
+        None => v,
+        Some(r) => std::array::from_fn(|j| (0..3).map(|i| r[i][j] * v[i]).sum()),
+    }
+}
+
+/// The ports of a case, the inputs' names and units (`N` for a force, `Nmm` for a moment,
+/// `input` for both) and the outputs.
+pub fn ports(case: &FrfCase, model: &Model) -> (Ports, Vec<(String, &'static str)>, Vec<OutputInfo>) {
+    let n = model.n_dofs();
+    let node_name = |name: &Option<String>, node: usize| name.clone().unwrap_or_else(|| format!("node {node}"));
+    let mut inputs = Vec::new();
+    let mut in_names = Vec::new();
+    for s in &case.inputs {
+        let mut f = vec![0.0; n];
+        f[6 * s.node..6 * s.node + 3].copy_from_slice(&to_global(s.frame, s.force));
+        f[6 * s.node + 3..6 * s.node + 6].copy_from_slice(&to_global(s.frame, s.moment));
+        inputs.push(f);
+        let unit = match (s.force.iter().any(|v| *v != 0.0), s.moment.iter().any(|v| *v != 0.0)) {
+            (true, false) => "N",
+            (false, true) => "Nmm",
+            _ => "input",
+        };
+        in_names.push((node_name(&s.name, s.node), unit));
+    }
+    let mut outputs = Vec::new();
+    let mut out_info = Vec::new();
+    for s in &case.outputs {
+        for d in &s.dofs {
+            let k = d.dof().index();
+            let mut axis = [0.0; 3];
+            axis[k % 3] = 1.0;
+            let (off, scale, unit) = if k < 3 {
+                (0, 1.0, "mm")
+            } else {
+                (3, 180.0 / std::f64::consts::PI, "deg")
+            };
+            let mut c = vec![0.0; n];
+            for (j, v) in to_global(s.frame, axis).iter().enumerate() {
+                c[6 * s.node + off + j] = v * scale;
+            }
+            outputs.push(c);
+            out_info.push(OutputInfo {
+                name: format!("{} {}", node_name(&s.name, s.node), d.dof().name()),
+                unit,
+            });
+        }
+    }
+    (Ports { inputs, outputs }, in_names, out_info)
+}
+
+fn fem_err(e: crate::fem::FemError) -> RunError {
+    RunError::from(AnalysisError::new("model", e.to_string()))
+}
+
+/// Runs an `frf` case.
+pub fn run(case: &FrfCase, model: &Model, cache: &mut crate::fem::SolverCache) -> Result<(FrfResult, StateSpace), RunError> {
+    let (ports, in_names, out_info) = ports(case, model);
+    let d = case.damping;
+    let damping = Damping {
+        alpha: d.alpha,
+        beta: d.beta,
+        zeta: d.zeta,
+    };
+    let modal: ModalFrf = modal_frf(model, &ports, case.modes, cache).map_err(fem_err)?;
+    let freqs = case.frequencies.values();
+    let h: Vec<DMatrix<C64>> = freqs.iter().map(|&f| modal.response(f, &damping)).collect();
+    let f_top = modal.frequencies_hz().last().copied().unwrap_or(0.0);
+    let direct = if case.direct && d.zeta == 0.0 {
+        let solver = DirectFrf::new(model, &ports, damping).map_err(fem_err)?;
+        let (mut worst, mut at, mut worst_2x) = (0.0f64, freqs[0], None::<f64>);
+        for (&f, hm) in freqs.iter().zip(&h) {
+            let e = relative_difference(hm, &solver.response(f).map_err(fem_err)?);
+            if e > worst {
+                (worst, at) = (e, f);
+            }
+            if f <= 2.0 * f_top {
+                worst_2x = Some(worst_2x.map_or(e, |w| w.max(e)));
+            }
+        }
+        Some(DirectCheck {
+            max_relative_difference_to_2x_highest_mode: worst_2x,
+            max_relative_difference: worst,
+            at_hz: at,
+        })
+    } else {
+        None
+    };
+    let ss = state_space(&modal, &damping);
+    let dc = ss
+        .dc_gain()
+        .ok_or_else(|| RunError::from(AnalysisError::new("state_space", "A is singular")))?;
+    let scale = modal.static_gain.amax();
+    let dc_err = if scale > 0.0 {
+        (&dc - &modal.static_gain).amax() / scale
+    } else {
+        0.0
+    };
+    let mut response = Vec::new();
+    for (j, (input, in_unit)) in in_names.iter().enumerate() {
+        for (k, out) in out_info.iter().enumerate() {
+            response.push(Pair {
+                input: input.clone(),
+                output: out.name.clone(),
+                unit: format!("{}_per_{in_unit}", out.unit),
+                magnitude: h.iter().map(|m| m[(k, j)].norm()).collect(),
+                phase_deg: h.iter().map(|m| m[(k, j)].arg().to_degrees()).collect(),
+            });
+        }
+    }
+    let mut notes = vec![
+        format!(
+            "modal superposition of {} modes with static correction (residual flexibility of the truncated modes) on {} equations",
+            modal.omega.len(),
+            modal.n_eq
+        ),
+        format!(
+            "damping: Rayleigh α = {} 1/s, β = {} s, modal ratio ζ = {}",
+            d.alpha, d.beta, d.zeta
+        ),
+    ];
+    if case.direct && d.zeta != 0.0 {
+        notes.push("no direct check: a constant modal damping ratio has no sparse damping matrix".into());
+    }
+    let result = FrfResult {
+        inputs: in_names.into_iter().map(|(n, _)| n).collect(),
+        outputs: out_info,
+        modes: modal
+            .frequencies_hz()
+            .iter()
+            .zip(&ss.zeta)
+            .enumerate()
+            .map(|(i, (&f, &z))| FrfMode {
+                mode: i + 1,
+                frequency_hz: f,
+                damping_ratio: z,
+            })
+            .collect(),
+        static_gain: rows(&modal.static_gain),
+        frequencies_hz: freqs,
+        response,
+        direct,
+        state_space: StateSpaceOut {
+            states: ss.n_states(),
+            a: rows(&ss.a),
+            b: rows(&ss.b),
+            c: rows(&ss.c),
+            d: rows(&ss.d),
+            poles: ss.poles().iter().map(|p| [p.re, p.im]).collect(),
+            dc_gain_relative_error: dc_err,
+        },
+        model: notes,
+    };
+    Ok((result, ss))
+}
+
+/// `frf`: frequency response and state-space model of a mesh model.
+pub struct FrfKind;
+
+impl Analysis for FrfKind {
+    const KIND: &'static str = "frf";
+    type Case = FrfCase;
+    type Result = FrfResult;
+
+    fn check(case: &Self::Case) -> Result<(), CaseError> {
+        case.check_options()?;
+        case.model.build_model(false).map(|_| ())
+    }
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        case.check_options()?;
+        let model = case.model.build_model(false)?;
+        let (r, ss) = run(case, &model, ctx.cache)?;
+        if ctx.with_files {
+            ctx.files = super::frf_files::files(&r, &ss)?;
+        }
+        Ok(r)
+    }
+    fn report(r: &Self::Result) -> Report {
+        frf_result::report(r)
+    }
+    fn case_warnings(case: &Self::Case) -> Vec<String> {
+        super::warn::density_warnings(&case.model)
+    }
+    fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
+        super::kind::named_materials(&case.model.materials)
+    }
+}
