@@ -2,7 +2,9 @@
 //! pattern and symbolic factorisation), the path control, and the recovery of every converged
 //! point.
 
-use super::path::{arc_length, load_control, Stability};
+use super::arc::arc_length;
+use super::critical::locate;
+use super::path::{load_control, Stability};
 use super::recover::finish;
 use super::residual::for_each_pair_in;
 use super::state::{CaseCtx, ElemData, State};
@@ -130,5 +132,12 @@ pub(super) fn solve_case(
     let mut out = finish(&ctx, &st, &case.name, lambda, path, iterations, steps, cuts)?;
     out.stable = stab.bracket.is_none();
     out.critical_load_factor = stab.bracket;
+    if opts.locate_critical {
+        out.critical_points = stab
+            .changes
+            .iter()
+            .filter_map(|c| locate(&ctx, c, opts, &opts.track))
+            .collect();
+    }
     Ok(out)
 }

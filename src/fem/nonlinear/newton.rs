@@ -30,13 +30,6 @@ pub(super) struct NewtonOk {
     pub(super) internal: f64,
 }
 
-/// Acceptance bound of a Newton iteration: `tol` relative to the step's force scale (the
-/// applied load at the step's λ and the internal forces — reactions — of the last converged
-/// state), plus the model's round-off floor [`CaseCtx::round`].
-pub(super) fn bound(ctx: &CaseCtx, tol: f64, scale: f64) -> f64 {
-    tol * scale + ctx.round
-}
-
 /// Newton iterations at fixed λ from the current state.
 /// `converged_internal`: ‖f_int‖ (reactions included) of the last converged state.
 pub(super) fn newton(
