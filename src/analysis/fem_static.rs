@@ -33,6 +33,12 @@ pub struct StaticCaseRow {
     /// Nonlinear and not stable: load factors [lo, hi] bracketing the first loss of stability.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub critical_load_factor: Option<[f64; 2]>,
+    /// Nonlinear: the located changes of stability along the path (omitted when none).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub critical_points: Vec<super::fem_path::CriticalPointRow>,
+    /// Nonlinear with `trace`: the load–displacement curve of the traced DOF.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub trace: Option<super::fem_path::TraceRow>,
     /// Shells only: nodal surface stresses (omitted for models without shells).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub shell_stress: Option<ShellStressRow>,
@@ -230,7 +236,20 @@ pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<(StaticResult, fem
         steps,
         ..Default::default()
     };
-    let res = fem::solve_nonlinear(model, &opts).map_err(|e| AnalysisError::new("model", e.to_string()))?;
+    solve_nonlinear_each(model, &vec![opts; model.load_cases.len()]).map(|(r, raw, _)| (r, raw))
+}
+
+/// The path and critical points of each load case of a nonlinear solve.
+pub type Paths = Vec<(Vec<fem::PathPoint>, Vec<fem::CriticalPoint>)>;
+
+/// [`solve_nonlinear`] with options per load case; also returns each case's path and critical
+/// points.
+pub fn solve_nonlinear_each(
+    model: &Model,
+    opts: &[fem::NonlinearOptions],
+) -> Result<(StaticResult, fem::StaticResults, Paths), AnalysisError> {
+    let steps = opts.first().map_or(0, |o| o.steps);
+    let res = fem::solve_nonlinear_each(model, opts).map_err(|e| AnalysisError::new("model", e.to_string()))?;
     let rows = res
         .load_cases
         .iter()
@@ -240,8 +259,16 @@ pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<(StaticResult, fem
             ..row(&c.fe)
         })
         .collect();
+    let mut paths = Paths::new();
     let raw = fem::StaticResults {
-        load_cases: res.load_cases.into_iter().map(|c| c.fe).collect(),
+        load_cases: res
+            .load_cases
+            .into_iter()
+            .map(|c| {
+                paths.push((c.path, c.critical_points));
+                c.fe
+            })
+            .collect(),
     };
     let result = StaticResult {
         load_cases: rows,
@@ -256,7 +283,7 @@ pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<(StaticResult, fem
         ],
         compliance: Vec::new(),
     };
-    Ok((result, raw))
+    Ok((result, raw, paths))
 }
 
 /// A warning when shells sharing an edge have opposite normals (their top/bottom stresses mix
@@ -321,6 +348,8 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
         equilibrium_residual: c.statics.residual(),
         stable: None,
         critical_load_factor: None,
+        critical_points: Vec::new(),
+        trace: None,
         shell_stress: None,
         shell_forces: Vec::new(),
         hinges: Vec::new(),
@@ -508,6 +537,7 @@ pub fn report(r: &StaticResult) -> Report {
         }
         md += "\n";
         md += &hinge_table(c);
+        md += &super::fem_path::markdown(c);
     }
     md += &compliance_section(&r.compliance);
     Report { markdown: md, csv }

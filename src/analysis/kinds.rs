@@ -216,9 +216,9 @@ impl Analysis for Static {
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         let (model, hinges) = case.model.build_with_hinges(true)?;
-        let (mut r, raw) = match case.steps.filter(|_| case.nonlinear) {
-            Some(steps) => fem_static::solve_nonlinear(&model, steps)?,
-            None => fem_static::solve_with(&model, ctx.cache)?,
+        let (mut r, raw, path_files) = match case.steps.filter(|_| case.nonlinear) {
+            Some(steps) => super::fem_path::solve(&model, case, steps, ctx.with_files)?,
+            None => fem_static::solve_with(&model, ctx.cache).map(|(r, raw)| (r, raw, Vec::new()))?,
         };
         fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
         if case.output.section_forces {
@@ -227,6 +227,7 @@ impl Analysis for Static {
         r.compliance = fem_static::node_compliances(&model, &case.compliance)?;
         if ctx.with_files {
             ctx.files = fem_static::vtu_files(&model, &raw)?;
+            ctx.files.extend(path_files);
         }
         ctx.warnings = if case.nonlinear {
             let mut w = warn::stretch_warnings(&model, &r);

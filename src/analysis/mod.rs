@@ -1,6 +1,7 @@
 //! Analyses: validated case → typed result → JSON/Markdown/CSV views.
 
 pub mod design;
+pub mod fem_path;
 pub mod fem_static;
 pub mod fem_vs_fkp;
 pub mod finite;

@@ -229,6 +229,16 @@ pub fn static_vtu_with_shells(
 /// node, mm and rad, global axes) → point vectors `mode_K_translation_mm` and
 /// `mode_K_rotation_deg` (K from 1) and the field array `frequency_hz`.
 pub fn modes_vtu(model: &Model, modes: &[(f64, &[[f64; 6]])], drawn: &Drawn) -> Result<Vec<u8>, AnalysisError> {
+    modes_vtu_labelled(model, modes, drawn, "frequency_hz")
+}
+
+/// [`modes_vtu`] with the modes' values under the field name `label` (e.g. `load_factor`).
+pub fn modes_vtu_labelled(
+    model: &Model,
+    modes: &[(f64, &[[f64; 6]])],
+    drawn: &Drawn,
+    label: &str,
+) -> Result<Vec<u8>, AnalysisError> {
     let n = model.nodes.len();
     let (points, c) = cells_with_bodies(model, drawn);
     let mut names = Vec::with_capacity(2 * modes.len());
@@ -256,7 +266,7 @@ pub fn modes_vtu(model: &Model, modes: &[(f64, &[[f64; 6]])], drawn: &Drawn) -> 
             .zip(data.iter().map(Vec::as_slice))
             .collect(),
         cell_scalars: vec![("element", &c.element), ("part", &c.part)],
-        field_scalars: vec![("frequency_hz", &freq)],
+        field_scalars: vec![(label, &freq)],
         ..Default::default()
     })
     .map(String::into_bytes)

@@ -187,6 +187,9 @@ pub fn parse_static(value: Value, base: Option<&Path>) -> Result<StaticCase, Cas
     let steps = stage::check_steps("steps", o.steps, nonlinear)?;
     let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
     super::mesh::requests::check_compliance(&o.compliance, model.nodes.len())?;
+    for (i, c) in model.load_cases.iter().enumerate() {
+        super::mesh::path_control::check(&format!("load_cases[{i}]"), c, nonlinear, model.nodes.len())?;
+    }
     Ok(StaticCase {
         description: o.description,
         mesh: o.mesh,

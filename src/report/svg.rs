@@ -133,6 +133,17 @@ impl Frame {
 
 /// A scatter plot with connecting lines per series, axes with ticks, title and labels.
 pub fn scatter(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])]) -> String {
+    lines(title, xlabel, ylabel, series, true)
+}
+
+/// Curves through each series' points in their given order (a path that may turn back in x),
+/// axes with ticks, title and labels.
+pub fn curve(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])]) -> String {
+    lines(title, xlabel, ylabel, series, false)
+}
+
+/// [`scatter`] (`sort`: points ordered by x) or [`curve`].
+fn lines(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])], sort: bool) -> String {
     let all: Vec<(f64, f64)> = series.iter().flat_map(|(_, p)| p.iter().copied()).collect();
     let f = Frame::new(640.0, 420.0, 20.0, &all, &[], true);
     let mut out = f.open(title, xlabel, ylabel);
@@ -144,7 +155,9 @@ pub fn scatter(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64,
             .copied()
             .filter(|(x, y)| x.is_finite() && y.is_finite())
             .collect();
-        sorted.sort_by(|a, b| a.0.total_cmp(&b.0));
+        if sort {
+            sorted.sort_by(|a, b| a.0.total_cmp(&b.0));
+        }
         let path: Vec<String> = sorted
             .iter()
             .map(|&(x, y)| format!("{:.1},{:.1}", f.sx(x), f.sy(y)))

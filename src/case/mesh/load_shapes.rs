@@ -105,6 +105,18 @@ pub struct LoadCaseSpec {
     /// Total forces (and moments about the group's centroid) spread over a node group.
     #[serde(default)]
     pub group_forces: Vec<GroupForceSpec>,
+    /// Nonlinear only: `load` (default: load steps to λ = 1) or `arc_length` (Crisfield's
+    /// continuation through limit points until λ first reaches 1; loads only).
+    #[serde(default)]
+    pub control: Option<super::path_control::Control>,
+    /// Nonlinear with `"control": "arc_length"`: the arc-length parameters.
+    #[serde(default)]
+    pub arc_length: Option<super::path_control::ArcLengthSpec>,
+    /// Nonlinear only: the DOF `{"node": n, "dof": "uz"}` whose value along the path is the
+    /// load–displacement curve (result `trace`; `NAME_path.csv` and `NAME_path.svg` with
+    /// `--out`).
+    #[serde(default)]
+    pub trace: Option<super::path_control::TraceSpec>,
 }
 
 /// Axes of a line load.

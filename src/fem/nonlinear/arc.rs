@@ -105,7 +105,7 @@ pub(super) fn arc_length(
                     Some(p) => p,
                     None => ctx.positive_definite(st, lambda + s.dlam),
                 };
-                stab.record(&saved, lambda, lambda + s.dlam, stable, s.sense, Some((&*st, &s.dq)));
+                stab.record(&saved, st, lambda, lambda + s.dlam, stable, s.sense, Some(&s.dq));
                 lambda += s.dlam;
                 iterations += s.iterations;
                 steps += 1;

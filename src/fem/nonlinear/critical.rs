@@ -5,7 +5,8 @@
 //! From the converged state before the change, load-controlled probes step λ in the sense the
 //! path was taking there: a probe that converges continuously ([`super::path::load_step`]: no
 //! jump over a limit point) to a state of the same stability becomes the new base; one that
-//! fails, jumps or changes stability bounds the bracket. Past a limit point no equilibrium is
+//! fails, jumps (lands farther from the start than twice the state on the other side of the
+//! change) or changes stability bounds the bracket. Past a limit point no equilibrium is
 //! near, so the probes fail; past a bifurcation they converge on the primary branch with the
 //! other stability. The bracket [lo, hi] is halved until hi − lo ≤ [`CRITICAL_TOL`]·|λ|.
 //!
@@ -78,14 +79,19 @@ pub(super) fn locate(ctx: &CaseCtx, c: &Change, opts: &NonlinearOptions, track: 
     let (mut base, mut lb, sense) = if c.stable {
         (c.state.clone(), c.lambda, if c.sense < 0.0 { -1.0 } else { 1.0 })
     } else {
-        let (after, dq) = c.after.as_ref()?;
-        let ev = ctx.evaluate(after, c.lambda_after, ctx.newton_tangent())?;
-        let t = ctx.solve(&ev.values, &[ctx.reduced_load(after)]).ok()?.x.remove(0);
-        (
-            after.clone(),
-            c.lambda_after,
-            if dot(dq, &t) < 0.0 { 1.0 } else { -1.0 },
-        )
+        let dq = c.dq.as_ref()?;
+        let ev = ctx.evaluate(&c.after, c.lambda_after, ctx.newton_tangent())?;
+        let t = ctx.solve(&ev.values, &[ctx.reduced_load(&c.after)]).ok()?.x.remove(0);
+        (c.after.clone(), c.lambda_after, if dot(dq, &t) < 0.0 { 1.0 } else { -1.0 })
+    };
+    // A probe that lands farther from the start than twice the other state of the change has
+    // jumped (over a limit point onto a remote branch), whatever its stability.
+    let other = if c.stable { &c.after } else { &c.state };
+    let start = base.clone();
+    let reach = distance(&start, other);
+    let continuous = |s: &State| {
+        let d = distance(&start, s);
+        d.0 <= 2.0 * reach.0 + 1e-9 && d.1 <= 2.0 * reach.1 + 1e-9
     };
     if !ctx.positive_definite(&base, lb) {
         return None;
@@ -108,7 +114,7 @@ pub(super) fn locate(ctx: &CaseCtx, c: &Change, opts: &NonlinearOptions, track: 
         let mut trial = base.clone();
         let res = load_step(ctx, &mut trial, lb, lb + sense * t, opts, internal, true);
         let same = match res {
-            Ok((nk, Judged::Fine(true))) => Some(nk.internal),
+            Ok((nk, Judged::Fine(true))) if continuous(&trial) => Some(nk.internal),
             _ => None,
         };
         match same {
@@ -153,6 +159,12 @@ pub(super) fn locate(ctx: &CaseCtx, c: &Change, opts: &NonlinearOptions, track: 
             .collect(),
         mode: per_node(ctx, &base, &mode_eq),
     })
+}
+
+/// Largest translation (mm) and rotation (rad) between two states' nodes.
+fn distance(a: &State, b: &State) -> (f64, f64) {
+    let t = a.u.iter().zip(&b.u).map(|(x, y)| (x - y).norm()).fold(0.0, f64::max);
+    (t, super::path::max_rotation_change(a, b))
 }
 
 /// The eigenvector of the Newton tangent at `st` whose eigenvalue is nearest zero (inverse

@@ -37,8 +37,10 @@ pub(super) struct Change {
     pub(super) stable: bool,
     /// Load factor of the point after the change.
     pub(super) lambda_after: f64,
-    /// Arc length only: the state after the change and the step's increment (equations).
-    pub(super) after: Option<(State, Vec<f64>)>,
+    /// The state after the change.
+    pub(super) after: State,
+    /// Arc length only: the step's increment (equations).
+    pub(super) dq: Option<Vec<f64>>,
     /// Sense in which λ grew along the path at `state` (+1 or −1).
     pub(super) sense: f64,
 }
@@ -49,15 +51,17 @@ pub(super) const MAX_CHANGES: usize = 4;
 impl Stability {
     /// Records the step from `before` (at `lambda_prev`, of the stability of the last point)
     /// to a point at `lambda` of stability `stable`; `sense`: the sign of dλ along the path at
-    /// `before`; `after`: the state reached and the step's increment, when known.
+    /// `before`; `after`: the state reached; `dq`: the step's increment, when known.
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn record(
         &mut self,
         before: &State,
+        after: &State,
         lambda_prev: f64,
         lambda: f64,
         stable: bool,
         sense: f64,
-        after: Option<(&State, &[f64])>,
+        dq: Option<&[f64]>,
     ) {
         if !stable && self.bracket.is_none() {
             self.bracket = Some([lambda_prev.min(lambda), lambda_prev.max(lambda)]);
@@ -69,7 +73,8 @@ impl Stability {
                 lambda: lambda_prev,
                 stable: was,
                 lambda_after: lambda,
-                after: after.map(|(s, d)| (s.clone(), d.to_vec())),
+                after: after.clone(),
+                dq: dq.map(<[f64]>::to_vec),
                 sense,
             });
         }
@@ -176,7 +181,7 @@ pub(super) fn load_control(
                 iterations += nk.iterations;
                 steps += 1;
                 internal = nk.internal;
-                stab.record(&saved, lambda, target, stable, 1.0, None);
+                stab.record(&saved, st, lambda, target, stable, 1.0, None);
                 lambda = target;
                 cut_run = 0;
                 prev_stable = stable;
