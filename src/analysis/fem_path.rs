@@ -69,10 +69,7 @@ pub fn solve(
     let mut files = Files::new();
     for ((row, spec), (path, critical)) in r.load_cases.iter_mut().zip(&case.model.load_cases).zip(&paths) {
         let trace = spec.trace.as_ref().map(|t| trace_row(t, path));
-        row.critical_points = critical
-            .iter()
-            .map(|c| critical_row(c, trace.is_some()))
-            .collect();
+        row.critical_points = critical.iter().map(|c| critical_row(c, trace.is_some())).collect();
         if with_files {
             let stem = file_stem(&row.name);
             if let Some(t) = &trace {
@@ -80,7 +77,8 @@ pub fn solve(
                 files.push((format!("{stem}_path.svg"), path_svg(&row.name, t).into_bytes()));
             }
             if !critical.is_empty() {
-                let modes: Vec<(f64, &[[f64; 6]])> = critical.iter().map(|c| (c.load_factor, c.mode.as_slice())).collect();
+                let modes: Vec<(f64, &[[f64; 6]])> =
+                    critical.iter().map(|c| (c.load_factor, c.mode.as_slice())).collect();
                 let vtu = super::vtu::modes_vtu_labelled(model, &modes, &Default::default(), "load_factor")?;
                 files.push((format!("{stem}_critical.vtu"), vtu));
             }
@@ -115,7 +113,16 @@ fn trace_row(t: &path_control::TraceSpec, path: &[PathPoint]) -> TraceRow {
 }
 
 fn critical_row(c: &CriticalPoint, traced: bool) -> CriticalPointRow {
-    let deg = |m: &[f64; 6]| [m[0], m[1], m[2], m[3].to_degrees(), m[4].to_degrees(), m[5].to_degrees()];
+    let deg = |m: &[f64; 6]| {
+        [
+            m[0],
+            m[1],
+            m[2],
+            m[3].to_degrees(),
+            m[4].to_degrees(),
+            m[5].to_degrees(),
+        ]
+    };
     // The traced value: the one tracked DOF, in the trace's unit (a rotation's unit follows the
     // trace row: convert here as it does).
     CriticalPointRow {

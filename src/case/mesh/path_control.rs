@@ -106,19 +106,35 @@ pub fn check(p: &str, c: &LoadCaseSpec, nonlinear: bool, nodes: usize) -> Result
         }
         if let (Some(min), Some(i)) = (a.min, a.initial) {
             if min > i {
-                return Err(CaseError::value(at("min"), min, format!("must not exceed `initial` ({i})")));
+                return Err(CaseError::value(
+                    at("min"),
+                    min,
+                    format!("must not exceed `initial` ({i})"),
+                ));
             }
         }
         if let (Some(max), Some(i)) = (a.max, a.initial) {
             if max < i {
-                return Err(CaseError::value(at("max"), max, format!("must be at least `initial` ({i})")));
+                return Err(CaseError::value(
+                    at("max"),
+                    max,
+                    format!("must be at least `initial` ({i})"),
+                ));
             }
         }
         if let Some(t) = a.target_iterations.filter(|t| !(1..=50).contains(t)) {
-            return Err(CaseError::value(at("target_iterations"), t, "must be an integer from 1 to 50"));
+            return Err(CaseError::value(
+                at("target_iterations"),
+                t,
+                "must be an integer from 1 to 50",
+            ));
         }
         if let Some(s) = a.max_steps.filter(|s| !(1..=100_000).contains(s)) {
-            return Err(CaseError::value(at("max_steps"), s, "must be an integer from 1 to 100000"));
+            return Err(CaseError::value(
+                at("max_steps"),
+                s,
+                "must be an integer from 1 to 100000",
+            ));
         }
     }
     if let Some(t) = &c.trace {

@@ -82,7 +82,11 @@ pub(super) fn locate(ctx: &CaseCtx, c: &Change, opts: &NonlinearOptions, track: 
         let dq = c.dq.as_ref()?;
         let ev = ctx.evaluate(&c.after, c.lambda_after, ctx.newton_tangent())?;
         let t = ctx.solve(&ev.values, &[ctx.reduced_load(&c.after)]).ok()?.x.remove(0);
-        (c.after.clone(), c.lambda_after, if dot(dq, &t) < 0.0 { 1.0 } else { -1.0 })
+        (
+            c.after.clone(),
+            c.lambda_after,
+            if dot(dq, &t) < 0.0 { 1.0 } else { -1.0 },
+        )
     };
     // A probe that lands farther from the start than twice the other state of the change has
     // jumped (over a limit point onto a remote branch), whatever its stability.
