@@ -66,7 +66,7 @@ impl Stability {
         if !stable && self.bracket.is_none() {
             self.bracket = Some([lambda_prev.min(lambda), lambda_prev.max(lambda)]);
         }
-        let was = self.changes.len() % 2 == 0;
+        let was = self.changes.len().is_multiple_of(2);
         if stable != was && self.changes.len() < MAX_CHANGES {
             self.changes.push(Change {
                 state: before.clone(),
