@@ -2,51 +2,11 @@
 //! (result `trace`, `NAME_path.csv`, `NAME_path.svg`) and the located critical points (result
 //! `critical_points`, `NAME_critical.vtu`).
 
-use super::fem_static::{self, file_stem, StaticCaseRow, StaticResult};
+use super::fem_static::{self, file_stem, StaticResult};
+pub use super::path_rows::{CriticalPointRow, TraceRow};
 use super::{AnalysisError, Files};
 use crate::case::mesh::{path_control, StaticCase};
 use crate::fem::{self, CriticalKind, CriticalPoint, Model, PathPoint};
-use crate::report::markdown::Table;
-use serde::Serialize;
-
-/// The traced DOF along the path of one load case.
-#[derive(Debug, Clone, Serialize)]
-pub struct TraceRow {
-    /// The node.
-    pub node: usize,
-    /// The DOF (`ux` … `rz`, global; rotations: rotation-vector component).
-    pub dof: String,
-    /// Unit of `value`: `mm` or `deg`.
-    pub unit: &'static str,
-    /// Load factor λ of each converged point, from 0 (loads = λ × the case's loads).
-    pub load_factor: Vec<f64>,
-    /// The DOF's value at each point.
-    pub value: Vec<f64>,
-    /// Whether each point is stable (positive definite tangent stiffness).
-    pub stable: Vec<bool>,
-}
-
-/// A located change of stability along the path.
-#[derive(Debug, Clone, Serialize)]
-pub struct CriticalPointRow {
-    /// Middle of `bracket`.
-    pub load_factor: f64,
-    /// Load factors [lo, hi] bracketing the critical point, hi − lo ≤ 1e-4·|λ|.
-    pub bracket: [f64; 2],
-    /// `limit` (the load has an extremum: snap-through under load control) or `bifurcation`
-    /// (another branch crosses the path: buckling).
-    pub kind: &'static str,
-    /// `lost` or `regained` along the path.
-    pub stability: &'static str,
-    /// |φ·f|/(‖φ‖‖f‖): work of the critical mode φ on the load f (≈ 0 at a bifurcation).
-    pub load_work: f64,
-    /// The traced DOF at the critical point (`trace` units), when the load case traces one.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub trace_value: Option<f64>,
-    /// Critical mode per node [ux, uy, uz, rx, ry, rz], global, largest translation 1
-    /// (rotations in degrees per unit translation).
-    pub mode: Vec<[f64; 6]>,
-}
 
 /// The solver options of each load case of `case` with `steps` nominal steps.
 pub fn options(case: &StaticCase, steps: usize) -> Vec<fem::NonlinearOptions> {
@@ -69,7 +29,10 @@ pub fn solve(
     let mut files = Files::new();
     for ((row, spec), (path, critical)) in r.load_cases.iter_mut().zip(&case.model.load_cases).zip(&paths) {
         let trace = spec.trace.as_ref().map(|t| trace_row(t, path));
-        row.critical_points = critical.iter().map(|c| critical_row(c, trace.is_some())).collect();
+        row.critical_points = critical
+            .iter()
+            .map(|c| critical_row(c, spec.trace.as_ref().map(|t| is_rotation(t.dof.dof()))))
+            .collect();
         if with_files {
             let stem = file_stem(&row.name);
             if let Some(t) = &trace {
@@ -112,19 +75,9 @@ fn trace_row(t: &path_control::TraceSpec, path: &[PathPoint]) -> TraceRow {
     }
 }
 
-fn critical_row(c: &CriticalPoint, traced: bool) -> CriticalPointRow {
-    let deg = |m: &[f64; 6]| {
-        [
-            m[0],
-            m[1],
-            m[2],
-            m[3].to_degrees(),
-            m[4].to_degrees(),
-            m[5].to_degrees(),
-        ]
-    };
-    // The traced value: the one tracked DOF, in the trace's unit (a rotation's unit follows the
-    // trace row: convert here as it does).
+/// The row of critical point `c`; `traced_rotation`: whether the traced DOF (if any) is a
+/// rotation (its value then in degrees, as in the trace).
+fn critical_row(c: &CriticalPoint, traced_rotation: Option<bool>) -> CriticalPointRow {
     CriticalPointRow {
         load_factor: c.load_factor,
         bracket: c.bracket,
@@ -134,8 +87,11 @@ fn critical_row(c: &CriticalPoint, traced: bool) -> CriticalPointRow {
         },
         stability: if c.lost { "lost" } else { "regained" },
         load_work: c.load_work,
-        trace_value: if traced { c.values.first().copied() } else { None },
-        mode: c.mode.iter().map(deg).collect(),
+        trace_value: traced_rotation.and_then(|rot| {
+            let v = c.values.first().copied()?;
+            Some(if rot { v.to_degrees() } else { v })
+        }),
+        mode: c.mode.iter().map(crate::report::numbers::mm_deg).collect(),
     }
 }
 
@@ -157,40 +113,4 @@ fn path_svg(name: &str, t: &TraceRow) -> String {
         "load factor λ",
         &[("path", &pts)],
     )
-}
-
-/// The Markdown section of a load case's critical points and traced path (empty without).
-pub fn markdown(c: &StaticCaseRow) -> String {
-    let mut md = String::new();
-    if !c.critical_points.is_empty() {
-        md += "Critical points along the path (load factor bracketed to 1e-4):\n\n";
-        let mut t = Table::new(&["load factor", "bracket", "kind", "stability", "mode work on load"]);
-        for p in &c.critical_points {
-            t.row(vec![
-                format!("{:.6}", p.load_factor),
-                format!("[{:.6}, {:.6}]", p.bracket[0], p.bracket[1]),
-                p.kind.to_string(),
-                p.stability.to_string(),
-                format!("{:.2e}", p.load_work),
-            ]);
-        }
-        md += &t.render();
-        md += "\n";
-    }
-    if let Some(t) = &c.trace {
-        let lo = t.load_factor.iter().copied().fold(f64::INFINITY, f64::min);
-        let hi = t.load_factor.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        md += &format!(
-            "Traced path: {} points, {} of node {} from {:.6} to {:.6} {}, load factor between {lo:.6} and {hi:.6} (`{}_path.csv`, `{}_path.svg` with `--out`).\n\n",
-            t.value.len(),
-            t.dof,
-            t.node,
-            t.value.first().copied().unwrap_or(0.0),
-            t.value.last().copied().unwrap_or(0.0),
-            t.unit,
-            file_stem(&c.name),
-            file_stem(&c.name)
-        );
-    }
-    md
 }

@@ -35,10 +35,10 @@ pub struct StaticCaseRow {
     pub critical_load_factor: Option<[f64; 2]>,
     /// Nonlinear: the located changes of stability along the path (omitted when none).
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub critical_points: Vec<super::fem_path::CriticalPointRow>,
+    pub critical_points: Vec<super::path_rows::CriticalPointRow>,
     /// Nonlinear with `trace`: the load–displacement curve of the traced DOF.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub trace: Option<super::fem_path::TraceRow>,
+    pub trace: Option<super::path_rows::TraceRow>,
     /// Shells only: nodal surface stresses (omitted for models without shells).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub shell_stress: Option<ShellStressRow>,
@@ -537,7 +537,7 @@ pub fn report(r: &StaticResult) -> Report {
         }
         md += "\n";
         md += &hinge_table(c);
-        md += &super::fem_path::markdown(c);
+        md += &super::path_rows::markdown(&c.name, &c.critical_points, c.trace.as_ref());
     }
     md += &compliance_section(&r.compliance);
     Report { markdown: md, csv }

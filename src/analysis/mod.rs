@@ -12,6 +12,7 @@ pub mod kinds;
 pub mod kinds_list;
 pub mod kinematics;
 pub mod modal;
+pub mod path_rows;
 pub mod registry;
 pub mod stage;
 pub mod stage_report;

@@ -15,7 +15,7 @@
 //! norms); Δs adapts to the iterations taken (×√(target/iterations), between ×½ and ×2,
 //! within [min, max]). The path ends where λ first reaches 1: the last piece is load controlled.
 
-use super::convergence::{Convergence, Correction, Iterate, Verdict};
+use super::convergence::{Convergence, Iterate, Verdict};
 use super::path::{load_control, max_rotation_change, one_step, Stability, MAX_STEP_ROTATION};
 use super::residual::{dot, norm};
 use super::state::{fail, CaseCtx, State};
@@ -200,16 +200,7 @@ fn arc_step(
             .ok_or("degenerate element")?;
         let rn = norm(&ev.r);
         residuals.push(rn);
-        let iterate = Iterate {
-            residual: rn,
-            load: ev.load,
-            internal: ev.internal,
-            correction: last.as_ref().map(|c| Correction {
-                energy: dot(c, &ev.r).abs(),
-                norm: norm(c),
-                total: norm(&dq),
-            }),
-        };
+        let iterate = Iterate::after(&ev.r, ev.load, ev.internal, last.as_deref(), &dq);
         match test.check(&iterate) {
             Verdict::Converged => {
                 return Ok(ArcStep {

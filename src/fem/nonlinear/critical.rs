@@ -77,20 +77,28 @@ pub(super) fn locate(ctx: &CaseCtx, c: &Change, opts: &NonlinearOptions, track: 
     // Probes start from the stable side: from the state before a loss, from the one after a
     // regain (towards the critical point, against the sense λ takes there along the path).
     let (mut base, mut lb, sense) = if c.stable {
-        (c.state.clone(), c.lambda, if c.sense < 0.0 { -1.0 } else { 1.0 })
+        (
+            c.states[0].clone(),
+            c.lambdas[0],
+            if c.sense < 0.0 { -1.0 } else { 1.0 },
+        )
     } else {
         let dq = c.dq.as_ref()?;
-        let ev = ctx.evaluate(&c.after, c.lambda_after, ctx.newton_tangent())?;
-        let t = ctx.solve(&ev.values, &[ctx.reduced_load(&c.after)]).ok()?.x.remove(0);
+        let ev = ctx.evaluate(&c.states[1], c.lambdas[1], ctx.newton_tangent())?;
+        let t = ctx
+            .solve(&ev.values, &[ctx.reduced_load(&c.states[1])])
+            .ok()?
+            .x
+            .remove(0);
         (
-            c.after.clone(),
-            c.lambda_after,
+            c.states[1].clone(),
+            c.lambdas[1],
             if dot(dq, &t) < 0.0 { 1.0 } else { -1.0 },
         )
     };
     // A probe that lands farther from the start than twice the other state of the change has
     // jumped (over a limit point onto a remote branch), whatever its stability.
-    let other = if c.stable { &c.after } else { &c.state };
+    let other = if c.stable { &c.states[1] } else { &c.states[0] };
     let start = base.clone();
     let reach = distance(&start, other);
     let continuous = |s: &State| {
@@ -106,7 +114,7 @@ pub(super) fn locate(ctx: &CaseCtx, c: &Change, opts: &NonlinearOptions, track: 
         max_iterations: opts.max_iterations.max(PROBE_ITERATIONS),
         ..opts.clone()
     };
-    let mut t = (c.lambda_after - c.lambda).abs().max(1e-3 * lb.abs()).max(1e-9);
+    let mut t = (c.lambdas[1] - c.lambdas[0]).abs().max(1e-3 * lb.abs()).max(1e-9);
     let mut hi: Option<f64> = None;
     for _ in 0..MAX_PROBES {
         if let Some(h) = hi {

@@ -1,7 +1,7 @@
 //! Newton–Raphson iterations of one load step; the convergence test is
 //! [`super::convergence::Convergence`].
 
-use super::convergence::{Convergence, Correction, Iterate, Verdict};
+use super::convergence::{Convergence, Iterate, Verdict};
 use super::residual::{dot, norm};
 use super::state::{CaseCtx, State};
 use super::NonlinearOptions;
@@ -65,16 +65,7 @@ pub(super) fn newton(
         })?;
         let rn = norm(&ev.r);
         out.residuals.push(rn);
-        let iterate = Iterate {
-            residual: rn,
-            load: ev.load,
-            internal: ev.internal,
-            correction: last_dq.as_ref().map(|dq| Correction {
-                energy: dot(dq, &ev.r).abs(),
-                norm: norm(dq),
-                total: norm(&acc),
-            }),
-        };
+        let iterate = Iterate::after(&ev.r, ev.load, ev.internal, last_dq.as_deref(), &acc);
         match test.check(&iterate) {
             Verdict::Converged => {
                 return Ok(NewtonOk {

@@ -22,27 +22,21 @@ pub(super) const JUMP_CUTS: u32 = 6;
 
 /// Stability along the path: the first loss, bracketed by load factors, and the converged
 /// states just before each change of stability (the seeds of [`super::critical`]).
-#[derive(Debug, Default)]
+#[derive(Default)]
 pub(super) struct Stability {
     pub(super) bracket: Option<[f64; 2]>,
     pub(super) changes: Vec<Change>,
 }
 
-/// A change of stability between two converged points of the path.
-#[derive(Debug, Clone)]
+/// A change of stability between two converged points of the path: their states and load
+/// factors (before, after), the stability before, the sense in which λ grew along the path at
+/// the point before (+1 or −1), and (arc length only) the step's increment (equations).
 pub(super) struct Change {
-    /// The converged state before the change, its load factor and stability.
-    pub(super) state: State,
-    pub(super) lambda: f64,
+    pub(super) states: [State; 2],
+    pub(super) lambdas: [f64; 2],
     pub(super) stable: bool,
-    /// Load factor of the point after the change.
-    pub(super) lambda_after: f64,
-    /// The state after the change.
-    pub(super) after: State,
-    /// Arc length only: the step's increment (equations).
-    pub(super) dq: Option<Vec<f64>>,
-    /// Sense in which λ grew along the path at `state` (+1 or −1).
     pub(super) sense: f64,
+    pub(super) dq: Option<Vec<f64>>,
 }
 
 /// Changes of stability whose states are kept for locating the critical points.
@@ -69,13 +63,11 @@ impl Stability {
         let was = self.changes.len().is_multiple_of(2);
         if stable != was && self.changes.len() < MAX_CHANGES {
             self.changes.push(Change {
-                state: before.clone(),
-                lambda: lambda_prev,
+                states: [before.clone(), after.clone()],
+                lambdas: [lambda_prev, lambda],
                 stable: was,
-                lambda_after: lambda,
-                after: after.clone(),
-                dq: dq.map(<[f64]>::to_vec),
                 sense,
+                dq: dq.map(<[f64]>::to_vec),
             });
         }
     }
