@@ -26,6 +26,20 @@ pub fn solve(
     with_files: bool,
 ) -> Result<(StaticResult, fem::StaticResults, Files), AnalysisError> {
     let (mut r, raw, paths) = fem_static::solve_nonlinear_each(model, &options(case, steps))?;
+    if case
+        .model
+        .load_cases
+        .iter()
+        .any(|c| c.control == Some(path_control::Control::ArcLength))
+    {
+        r.model.push("load cases with \"control\": \"arc_length\": Crisfield's arc-length continuation (Crisfield 1981, Riks 1979) through limit points until the load factor first reaches 1, every step accepted by the same equilibrium test".to_string());
+    }
+    if paths.iter().any(|(_, c)| !c.is_empty()) {
+        r.model.push(format!(
+        "changes of stability along the path located by bisection in the load factor to {:e} (relative), with the critical mode",
+            fem::nonlinear::CRITICAL_TOL
+        ));
+    }
     let mut files = Files::new();
     for ((row, spec), (path, critical)) in r.load_cases.iter_mut().zip(&case.model.load_cases).zip(&paths) {
         let trace = spec.trace.as_ref().map(|t| trace_row(t, path));
