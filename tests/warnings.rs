@@ -55,6 +55,14 @@ fn every_bundled_result_has_an_empty_warnings_list() {
             continue;
         }
         let out = analysis::run(&c).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+        // The snap-through case exists to lose stability (at its upper limit point): its one
+        // warning says so.
+        if p.ends_with("shallow_arch_arc_length.json") {
+            let w = warnings(&out.json);
+            assert!(w.len() == 1 && w[0].contains("lost stability"), "{w:?}");
+            n += 1;
+            continue;
+        }
         assert_eq!(
             out.json["warnings"],
             serde_json::json!([]),

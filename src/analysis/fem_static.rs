@@ -35,6 +35,12 @@ pub struct StaticCaseRow {
     /// Nonlinear and not stable: load factors [lo, hi] bracketing the first loss of stability.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub critical_load_factor: Option<[f64; 2]>,
+    /// Nonlinear: the located changes of stability along the path (omitted when none).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub critical_points: Vec<super::path_rows::CriticalPointRow>,
+    /// Nonlinear with `trace`: the load–displacement curve of the traced DOF.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub trace: Option<super::path_rows::TraceRow>,
     /// Shells only: nodal surface stresses (omitted for models without shells).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub shell_stress: Option<ShellStressRow>,
@@ -230,20 +236,44 @@ pub fn solve_nonlinear_tracked(
         step_track,
         ..Default::default()
     };
-    let res = fem::solve_nonlinear(model, &opts).map_err(|e| AnalysisError::new("model", e.to_string()))?;
+    solve_nonlinear_each(model, &vec![opts; model.load_cases.len()], track).map(|(r, raw, _)| (r, raw))
+}
+
+/// The path and critical points of each load case of a nonlinear solve.
+pub type Paths = Vec<(Vec<fem::PathPoint>, Vec<fem::CriticalPoint>)>;
+
+/// [`solve_nonlinear`] with options per load case (their `step_track` and `track` as
+/// [`super::track::options`] gives them when `track` is asked for; the stroke DOFs may follow
+/// other tracked DOFs); also returns each case's path and critical points.
+pub fn solve_nonlinear_each(
+    model: &Model,
+    opts: &[fem::NonlinearOptions],
+    track: Option<&crate::case::mesh::TrackRequest>,
+) -> Result<(StaticResult, fem::StaticResults, Paths), AnalysisError> {
+    let steps = opts.first().map_or(0, |o| o.steps);
+    let res = fem::solve_nonlinear_each(model, opts).map_err(|e| AnalysisError::new("model", e.to_string()))?;
     let rows = res
         .load_cases
         .iter()
         .zip(&model.load_cases)
-        .map(|(c, lc)| StaticCaseRow {
+        .zip(opts)
+        .map(|((c, lc), o)| StaticCaseRow {
             stable: Some(c.stable),
             critical_load_factor: c.critical_load_factor,
-            track: track.map(|t| super::track::row(t, lc, c, &strokes)),
+            track: track.map(|t| super::track::row(t, lc, c, &o.track)),
             ..row(&c.fe)
         })
         .collect();
+    let mut paths = Paths::new();
     let raw = fem::StaticResults {
-        load_cases: res.load_cases.into_iter().map(|c| c.fe).collect(),
+        load_cases: res
+            .load_cases
+            .into_iter()
+            .map(|c| {
+                paths.push((c.path, c.critical_points));
+                c.fe
+            })
+            .collect(),
     };
     let result = StaticResult {
         load_cases: rows,
@@ -258,7 +288,7 @@ pub fn solve_nonlinear_tracked(
         ],
         compliance: Vec::new(),
     };
-    Ok((result, raw))
+    Ok((result, raw, paths))
 }
 
 /// A warning when shells sharing an edge have opposite normals (their top/bottom stresses mix
@@ -323,6 +353,8 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
         equilibrium_residual: c.statics.residual(),
         stable: None,
         critical_load_factor: None,
+        critical_points: Vec::new(),
+        trace: None,
         shell_stress: None,
         shell_forces: Vec::new(),
         hinges: Vec::new(),
@@ -495,6 +527,7 @@ pub fn report(r: &StaticResult) -> Report {
         if let Some(t) = &c.track {
             md += &super::track::markdown(t);
         }
+        md += &super::path_rows::markdown(&c.name, &c.critical_points, c.trace.as_ref());
     }
     md += &compliance_section(&r.compliance);
     Report { markdown: md, csv }

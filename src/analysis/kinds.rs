@@ -216,9 +216,9 @@ impl Analysis for Static {
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         let (model, hinges) = case.model.build_with_hinges(true)?;
-        let (mut r, raw) = match case.steps.filter(|_| case.nonlinear) {
-            Some(steps) => fem_static::solve_nonlinear_tracked(&model, steps, case.track.as_ref()),
-            None => fem_static::solve_with(&model, ctx.cache),
+        let (mut r, raw, path_files) = match case.steps.filter(|_| case.nonlinear) {
+            Some(steps) => super::fem_path::solve(&model, case, steps, ctx.with_files),
+            None => fem_static::solve_with(&model, ctx.cache).map(|(r, raw)| (r, raw, Vec::new())),
         }
         .map_err(|e| super::constraints::singular_hint(e, &case.model))?;
         fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
@@ -233,6 +233,7 @@ impl Analysis for Static {
                 .iter()
                 .filter_map(|c| Some((c.name.as_str(), c.track.as_ref()?)));
             ctx.files.extend(super::track::files(tracked));
+            ctx.files.extend(path_files);
         }
         ctx.warnings = if case.nonlinear {
             let mut w = warn::stretch_warnings(&model, &r);

@@ -52,7 +52,8 @@ pub use model::{
     SpringAxes, Support, Tie,
 };
 pub use nonlinear::{
-    solve_nonlinear, NonlinearCase, NonlinearOptions, NonlinearResults, PathPoint, StepQuantities, StepTrack, Tangent,
+    solve_nonlinear, solve_nonlinear_each, ArcLength, CriticalKind, CriticalPoint, NonlinearCase, NonlinearOptions,
+    NonlinearResults, PathPoint, StepQuantities, StepTrack, Tangent,
 };
 pub use section::{Section, SectionProps};
 

@@ -133,17 +133,32 @@ impl Frame {
 
 /// A scatter plot with connecting lines per series, axes with ticks, title and labels.
 pub fn scatter(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])]) -> String {
-    plot(title, xlabel, ylabel, series, true)
+    plot(title, xlabel, ylabel, series, true, true)
 }
 
 /// Like [`scatter`] without point markers (long time histories).
 pub fn lines(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])]) -> String {
-    plot(title, xlabel, ylabel, series, false)
+    plot(title, xlabel, ylabel, series, false, true)
 }
 
-fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])], markers: bool) -> String {
+/// Curves through each series' points in their given order (a path that may turn back in x),
+/// axes with ticks, title and labels.
+pub fn curve(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])]) -> String {
+    plot(title, xlabel, ylabel, series, true, false)
+}
+
+/// The plot of [`scatter`], [`lines`] and [`curve`]: point `markers` (then y starts at zero),
+/// points `sort`ed by x.
+fn plot(
+    title: &str,
+    xlabel: &str,
+    ylabel: &str,
+    series: &[(&str, &[(f64, f64)])],
+    markers: bool,
+    sort: bool,
+) -> String {
     let all: Vec<(f64, f64)> = series.iter().flat_map(|(_, p)| p.iter().copied()).collect();
-    let f = Frame::new(640.0, 420.0, 20.0, &all, &[], markers); // scatter plots start y at zero; line plots take the data range
+    let f = Frame::new(640.0, 420.0, 20.0, &all, &[], markers);
     let mut out = f.open(title, xlabel, ylabel);
     let colours = [
         "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf",
@@ -155,7 +170,9 @@ fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])
             .copied()
             .filter(|(x, y)| x.is_finite() && y.is_finite())
             .collect();
-        sorted.sort_by(|a, b| a.0.total_cmp(&b.0));
+        if sort {
+            sorted.sort_by(|a, b| a.0.total_cmp(&b.0));
+        }
         let path: Vec<String> = sorted
             .iter()
             .map(|&(x, y)| format!("{:.1},{:.1}", f.sx(x), f.sy(y)))

@@ -105,6 +105,18 @@ pub struct LoadCaseSpec {
     /// Total forces (and moments about the group's centroid) spread over a node group.
     #[serde(default)]
     pub group_forces: Vec<GroupForceSpec>,
+    /// Nonlinear only: `load` (default: load steps to λ = 1) or `arc_length` (Crisfield's
+    /// continuation through limit points until λ first reaches 1; loads only).
+    #[serde(default)]
+    pub control: Option<Control>,
+    /// Nonlinear with `"control": "arc_length"`: the arc-length parameters.
+    #[serde(default)]
+    pub arc_length: Option<ArcLengthSpec>,
+    /// Nonlinear only: the DOF `{"node": n, "dof": "uz"}` whose value along the path is the
+    /// load–displacement curve (result `trace`; `NAME_path.csv` and `NAME_path.svg` with
+    /// `--out`).
+    #[serde(default)]
+    pub trace: Option<TraceSpec>,
 }
 
 /// Axes of a line load.
@@ -182,4 +194,65 @@ pub struct EdgeLoadSpec {
     /// Moment per length [mx, my, mz], N·mm/mm, global axes.
     #[serde(default)]
     pub m: [f64; 3],
+}
+
+/// How a nonlinear load case follows its path.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, schemars::JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Control {
+    /// Load steps λ = 0 → 1 (adaptive), the default.
+    #[default]
+    Load,
+    /// Crisfield's arc-length continuation through limit points until λ first reaches 1 (loads
+    /// only: no prescribed displacements).
+    ArcLength,
+}
+
+/// The arc-length constraint's shape.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, schemars::JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Constraint {
+    /// ‖Δq‖ only (ψ = 0), the default.
+    #[default]
+    Cylindrical,
+    /// ‖Δq‖ and the load increment (ψ = 1).
+    Spherical,
+}
+
+/// Parameters of `"control": "arc_length"`. Arc lengths are dimensionless, in units of the
+/// linear response to the full load (0.05 = 5 % of the displacement vector the undeformed
+/// structure takes under the load case's loads).
+#[derive(Debug, Clone, Default, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ArcLengthSpec {
+    /// First arc length, > 0 (default 1/steps).
+    #[schemars(range(min = 0))]
+    pub initial: Option<f64>,
+    /// Smallest arc length, > 0, at most `initial`: steps are halved down to it before the
+    /// solve fails (default 10⁻⁴ × initial).
+    #[schemars(range(min = 0))]
+    pub min: Option<f64>,
+    /// Largest arc length, at least `initial` (default 20 × initial; raised to `initial` when
+    /// smaller).
+    #[schemars(range(min = 0))]
+    pub max: Option<f64>,
+    /// Newton iterations per step the arc length adapts to, 1 … 50 (default 5).
+    #[schemars(range(min = 1, max = 50))]
+    pub target_iterations: Option<usize>,
+    /// Constraint: `cylindrical` (default) or `spherical`.
+    #[serde(default)]
+    pub constraint: Constraint,
+    /// Steps before the solve fails without reaching λ = 1, 1 … 100000 (default 500).
+    #[schemars(range(min = 1, max = 100000))]
+    pub max_steps: Option<usize>,
+}
+
+/// The DOF whose value along the path is written as the load–displacement curve.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TraceSpec {
+    /// Node index.
+    pub node: usize,
+    /// `ux`, `uy`, `uz` (mm) or `rx`, `ry`, `rz` (rotation-vector component, degrees), global.
+    pub dof: DofName,
 }

@@ -13,6 +13,7 @@ pub mod hinge;
 mod joint;
 pub mod load_shapes;
 mod lookup;
+pub mod path_control;
 pub mod requests;
 pub mod shapes;
 

@@ -15,6 +15,24 @@ pub(super) struct Iterate {
     pub(super) correction: Option<Correction>,
 }
 
+impl Iterate {
+    /// The iterate of residual `r` (equations) after the correction `last` (`None` before the
+    /// first) of a step whose corrections sum to `total`.
+    pub(super) fn after(r: &[f64], load: f64, internal: f64, last: Option<&[f64]>, total: &[f64]) -> Iterate {
+        use super::residual::{dot, norm};
+        Iterate {
+            residual: norm(r),
+            load,
+            internal,
+            correction: last.map(|c| Correction {
+                energy: dot(c, r).abs(),
+                norm: norm(c),
+                total: norm(total),
+            }),
+        }
+    }
+}
+
 /// The last Newton correction as the convergence test sees it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Correction {

@@ -2,7 +2,9 @@
 //! pattern and symbolic factorisation), the path control, and the recovery of every converged
 //! point.
 
-use super::path::{arc_length, load_control, Stability};
+use super::arc::arc_length;
+use super::critical::locate;
+use super::path::{load_control, Stability};
 use super::recover::finish;
 use super::residual::for_each_pair_in;
 use super::state::{CaseCtx, ElemData, State};
@@ -135,6 +137,13 @@ pub(super) fn solve_case(
     out.critical_load_factor = stab.bracket;
     if let Some(t) = &ctx.tracker {
         out.step_quantities = t.steps.take();
+    }
+    if opts.locate_critical {
+        out.critical_points = stab
+            .changes
+            .iter()
+            .filter_map(|c| locate(&ctx, c, opts, &opts.track))
+            .collect();
     }
     Ok(out)
 }

@@ -1,8 +1,10 @@
 //! Geometrically nonlinear statics (large displacements and rotations, small strains):
 //! co-rotational beams and flexibility elements ([`super::corot`]), Newton–Raphson with load
 //! (and prescribed-displacement) stepping, automatic step cutting, and Crisfield's arc-length
-//! method for limit points (M. A. Crisfield, "A fast incremental/iterative solution procedure
-//! that handles snap-through", Computers & Structures 13 (1981) 55–62; cylindrical form).
+//! method through limit points ([`arc`]: M. A. Crisfield, "A fast incremental/iterative
+//! solution procedure that handles snap-through", Computers & Structures 13 (1981) 55–62;
+//! E. Riks, IJSS 15 (1979) 529–551; cylindrical or spherical), and the location of critical
+//! points along the path ([`critical`]).
 //!
 //! Kinematics of the nodes: translations are additive, rotations are rotation matrices updated
 //! multiplicatively, Rᵢ ← exp([δwᵢ×])Rᵢ, with the spatial spin δwᵢ (global components) as the
@@ -53,7 +55,9 @@ use crate::fem::model::Model;
 use crate::fem::results::CaseResult;
 use crate::fem::solve::Parallelism;
 
+mod arc;
 mod convergence;
+mod critical;
 mod load_case;
 mod newton;
 mod path;
@@ -64,6 +68,8 @@ mod track;
 
 use load_case::solve_case;
 use state::element_data;
+
+pub use critical::{CriticalKind, CriticalPoint, CRITICAL_TOL};
 
 /// Options of the nonlinear solver.
 #[derive(Debug, Clone, PartialEq)]
@@ -86,9 +92,14 @@ pub struct NonlinearOptions {
     pub max_total_cuts: usize,
     /// Which tangent the Newton iterations factorise.
     pub tangent: Tangent,
-    /// Crisfield's (cylindrical) arc-length control instead of load control. Only for cases
-    /// without non-zero prescribed displacements.
+    /// Crisfield's arc-length control instead of load control ([`ArcLength`] sets it up). Only
+    /// for cases without non-zero prescribed displacements.
     pub arc_length: bool,
+    /// Parameters of the arc-length control.
+    pub arc: ArcLength,
+    /// Locate each change of stability along the path (bisection to [`CRITICAL_TOL`] in λ) and
+    /// its critical mode ([`NonlinearCase::critical_points`]).
+    pub locate_critical: bool,
     /// DOFs whose values are recorded along the path (translations in mm; rotations: the
     /// rotation-vector component, rad; global axes).
     pub track: Vec<NodeDof>,
@@ -110,6 +121,8 @@ impl Default for NonlinearOptions {
             max_total_cuts: 60,
             tangent: Tangent::Auto,
             arc_length: false,
+            arc: ArcLength::default(),
+            locate_critical: true,
             track: Vec::new(),
             step_track: StepTrack::default(),
             parallelism: Parallelism::Sequential,
@@ -155,6 +168,38 @@ impl StepQuantities {
             .iter()
             .map(|l| l.signum() * l.abs().sqrt() / (2.0 * std::f64::consts::PI))
             .collect()
+    }
+}
+
+/// Parameters of the arc-length control ([`NonlinearOptions::arc_length`]). Arc lengths are
+/// dimensionless: Δs² = ‖Δq‖²/q_ref² + ψ²Δλ² with q_ref = ‖K₀⁻¹f‖ the linear response to the
+/// full load (Δs = 0.05: 5 % of it).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ArcLength {
+    /// First arc length; `None`: 1/steps.
+    pub initial: Option<f64>,
+    /// Smallest arc length before the solve fails; `None`: 10⁻⁴ of the initial one.
+    pub min: Option<f64>,
+    /// Largest arc length; `None`: 20 times the initial one.
+    pub max: Option<f64>,
+    /// Newton iterations per step the arc length adapts to (×√(target/iterations)).
+    pub target_iterations: usize,
+    /// Spherical (ψ = 1) instead of cylindrical (ψ = 0) constraint.
+    pub spherical: bool,
+    /// Steps before the solve fails without reaching λ = 1.
+    pub max_steps: usize,
+}
+
+impl Default for ArcLength {
+    fn default() -> Self {
+        ArcLength {
+            initial: None,
+            min: None,
+            max: None,
+            target_iterations: 5,
+            spherical: false,
+            max_steps: 500,
+        }
     }
 }
 
@@ -218,6 +263,10 @@ pub struct NonlinearCase {
     /// When not stable: the load factors [lo, hi] between which stability was first lost (lo
     /// the last stable converged point, hi the first unstable one or the end of a jump).
     pub critical_load_factor: Option<[f64; 2]>,
+    /// The changes of stability along the path (the first four), each located to
+    /// [`CRITICAL_TOL`] with its mode (with [`NonlinearOptions::locate_critical`]; a change the
+    /// bisection cannot bracket, e.g. the end of a jump under load control, is left out).
+    pub critical_points: Vec<CriticalPoint>,
     /// Co-rotated frame of each beam/flexibility element at the end (rows: local x, y, z in
     /// global coordinates; identity for springs).
     pub element_frames: Vec<[[f64; 3]; 3]>,
@@ -235,8 +284,21 @@ pub struct NonlinearResults {
 /// Solves every load case of the model with geometric nonlinearity. Each case starts from the
 /// undeformed configuration.
 pub fn solve_nonlinear(model: &Model, opts: &NonlinearOptions) -> Result<NonlinearResults, FemError> {
+    solve_nonlinear_each(model, &vec![opts.clone(); model.load_cases.len()])
+}
+
+/// [`solve_nonlinear`] with options per load case (`opts[i]` for load case i; as many as the
+/// model has load cases).
+pub fn solve_nonlinear_each(model: &Model, opts: &[NonlinearOptions]) -> Result<NonlinearResults, FemError> {
     model.validate()?;
-    if opts.steps == 0 || opts.max_iterations == 0 {
+    if opts.len() != model.load_cases.len() {
+        return Err(FemError::BadInput(format!(
+            "nonlinear options: {} option sets for {} load cases",
+            opts.len(),
+            model.load_cases.len()
+        )));
+    }
+    if opts.iter().any(|o| o.steps == 0 || o.max_iterations == 0) {
         return Err(FemError::BadInput(
             "nonlinear options: steps and max_iterations must be at least 1".into(),
         ));
@@ -245,7 +307,8 @@ pub fn solve_nonlinear(model: &Model, opts: &NonlinearOptions) -> Result<Nonline
     let load_cases = model
         .load_cases
         .iter()
-        .map(|case| solve_case(model, &elems, case, opts))
+        .zip(opts)
+        .map(|(case, o)| solve_case(model, &elems, case, o))
         .collect::<Result<Vec<_>, _>>()?;
     Ok(NonlinearResults { load_cases })
 }

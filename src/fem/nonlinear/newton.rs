@@ -1,7 +1,7 @@
 //! Newton–Raphson iterations of one load step; the convergence test is
 //! [`super::convergence::Convergence`].
 
-use super::convergence::{Convergence, Correction, Iterate, Verdict};
+use super::convergence::{Convergence, Iterate, Verdict};
 use super::residual::{dot, norm};
 use super::state::{CaseCtx, State};
 use super::NonlinearOptions;
@@ -28,13 +28,6 @@ pub(super) struct NewtonOk {
     pub(super) residuals: Vec<f64>,
     /// ‖f_int‖ at the converged state.
     pub(super) internal: f64,
-}
-
-/// Acceptance bound of a Newton iteration: `tol` relative to the step's force scale (the
-/// applied load at the step's λ and the internal forces — reactions — of the last converged
-/// state), plus the model's round-off floor [`CaseCtx::round`].
-pub(super) fn bound(ctx: &CaseCtx, tol: f64, scale: f64) -> f64 {
-    tol * scale + ctx.round
 }
 
 /// Newton iterations at fixed λ from the current state.
@@ -72,16 +65,7 @@ pub(super) fn newton(
         })?;
         let rn = norm(&ev.r);
         out.residuals.push(rn);
-        let iterate = Iterate {
-            residual: rn,
-            load: ev.load,
-            internal: ev.internal,
-            correction: last_dq.as_ref().map(|dq| Correction {
-                energy: dot(dq, &ev.r).abs(),
-                norm: norm(dq),
-                total: norm(&acc),
-            }),
-        };
+        let iterate = Iterate::after(&ev.r, ev.load, ev.internal, last_dq.as_deref(), &acc);
         match test.check(&iterate) {
             Verdict::Converged => {
                 return Ok(NewtonOk {

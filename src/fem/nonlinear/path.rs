@@ -1,8 +1,7 @@
-//! Path control: load (and prescribed-displacement) stepping with adaptive step size, Crisfield's
-//! cylindrical arc-length method, and the stability of the converged points.
+//! Path control: load (and prescribed-displacement) stepping with adaptive step size, and the
+//! stability of the converged points (arc length: [`super::arc`]).
 
-use super::newton::{bound, newton, StepFail};
-use super::residual::{dot, norm};
+use super::newton::{newton, NewtonOk, StepFail};
 use super::state::{fail, Assemble, CaseCtx, State};
 use super::{NonlinearOptions, PathPoint};
 use crate::fem::corot;
@@ -21,18 +20,104 @@ pub(super) const MAX_JUMP: f64 = 4.0;
 /// discontinuity of the path (snap-through) and flagged unstable.
 pub(super) const JUMP_CUTS: u32 = 6;
 
-/// Stability along the path: the first loss, bracketed by load factors.
-#[derive(Debug, Default)]
+/// Stability along the path: the first loss, bracketed by load factors, and the converged
+/// states just before each change of stability (the seeds of [`super::critical`]).
+#[derive(Default)]
 pub(super) struct Stability {
     pub(super) bracket: Option<[f64; 2]>,
+    pub(super) changes: Vec<Change>,
 }
 
+/// A change of stability between two converged points of the path: their states and load
+/// factors (before, after), the stability before, the sense in which λ grew along the path at
+/// the point before (+1 or −1), and (arc length only) the step's increment (equations).
+pub(super) struct Change {
+    pub(super) states: [State; 2],
+    pub(super) lambdas: [f64; 2],
+    pub(super) stable: bool,
+    pub(super) sense: f64,
+    pub(super) dq: Option<Vec<f64>>,
+}
+
+/// Changes of stability whose states are kept for locating the critical points.
+pub(super) const MAX_CHANGES: usize = 4;
+
 impl Stability {
-    pub(super) fn record(&mut self, lambda_prev: f64, lambda: f64, stable: bool) {
+    /// Records the step from `before` (at `lambda_prev`, of the stability of the last point)
+    /// to a point at `lambda` of stability `stable`; `sense`: the sign of dλ along the path at
+    /// `before`; `after`: the state reached; `dq`: the step's increment, when known.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn record(
+        &mut self,
+        before: &State,
+        after: &State,
+        lambda_prev: f64,
+        lambda: f64,
+        stable: bool,
+        sense: f64,
+        dq: Option<&[f64]>,
+    ) {
         if !stable && self.bracket.is_none() {
             self.bracket = Some([lambda_prev.min(lambda), lambda_prev.max(lambda)]);
         }
+        let was = self.changes.len().is_multiple_of(2);
+        if stable != was && self.changes.len() < MAX_CHANGES {
+            self.changes.push(Change {
+                states: [before.clone(), after.clone()],
+                lambdas: [lambda_prev, lambda],
+                stable: was,
+                sense,
+                dq: dq.map(<[f64]>::to_vec),
+            });
+        }
     }
+}
+
+/// Verdict on a converged load step.
+pub(super) enum Judged {
+    /// A continuous step; whether the end point is stable.
+    Fine(bool),
+    /// The step may have jumped (over a limit point, onto another branch): why.
+    Suspicious(String),
+}
+
+/// One load-controlled step from the converged state `st` at `lambda` to `target` (prescribed
+/// values scaled alike), judged: suspicious when a node rotates more than
+/// [`MAX_STEP_ROTATION`], the increment exceeds [`MAX_JUMP`] times its tangent predictor, or
+/// the iterations met an indefinite tangent between two stable states (`prev_stable`).
+pub(super) fn load_step(
+    ctx: &CaseCtx,
+    st: &mut State,
+    lambda: f64,
+    target: f64,
+    opts: &NonlinearOptions,
+    internal: f64,
+    prev_stable: bool,
+) -> Result<(NewtonOk, Judged), StepFail> {
+    let saved = st.clone();
+    let dc: Vec<f64> = ctx.u_c.iter().map(|v| v * (target - lambda)).collect();
+    ctx.apply(st, &vec![0.0; ctx.n_eq()], Some(&dc));
+    let nk = newton(ctx, st, target, opts, internal)?;
+    let pd = match nk.positive_definite {
+        Some(p) => p,
+        None => ctx.positive_definite(st, target),
+    };
+    let rot = max_rotation_change(&saved, st);
+    let jump = nk.first > 0.0 && nk.total > MAX_JUMP * nk.first;
+    let crossed = prev_stable && pd && nk.met_indefinite;
+    let judged = if rot > MAX_STEP_ROTATION {
+        Judged::Suspicious(format!("a node rotates {rot:.3} rad in one step"))
+    } else if jump {
+        Judged::Suspicious(format!(
+            "the increment is {:.1}× its tangent predictor",
+            nk.total / nk.first
+        ))
+    } else if crossed {
+        Judged::Suspicious("the iterations crossed an indefinite tangent".to_string())
+    } else {
+        Judged::Fine(pd)
+    };
+    Ok((nk, judged))
 }
 
 /// Largest rotation between two states' nodal rotations, rad.
@@ -74,38 +159,21 @@ pub(super) fn load_control(
     while lambda < 1.0 - 1e-12 {
         let target = if lambda + dl > 1.0 - 1e-9 { 1.0 } else { lambda + dl };
         let saved = st.clone();
-        let dc: Vec<f64> = ctx.u_c.iter().map(|v| v * (target - lambda)).collect();
-        ctx.apply(st, &vec![0.0; ctx.n_eq()], Some(&dc));
-        let outcome = newton(ctx, st, target, opts, internal).and_then(|nk| {
-            let pd = match nk.positive_definite {
-                Some(p) => p,
-                None => ctx.positive_definite(st, target),
-            };
-            let rot = max_rotation_change(&saved, st);
-            let jump = nk.first > 0.0 && nk.total > MAX_JUMP * nk.first;
-            let crossed = prev_stable && pd && nk.met_indefinite;
-            let suspicious = rot > MAX_STEP_ROTATION || jump || crossed;
-            if suspicious && dl > dl_jump * (1.0 + 1e-9) {
-                let why = if rot > MAX_STEP_ROTATION {
-                    format!("a node rotates {rot:.3} rad in one step")
-                } else if jump {
-                    format!("the increment is {:.1}× its tangent predictor", nk.total / nk.first)
-                } else {
-                    "the iterations crossed an indefinite tangent".to_string()
-                };
-                return Err(StepFail {
+        let outcome =
+            load_step(ctx, st, lambda, target, opts, internal, prev_stable).and_then(|(nk, judged)| match judged {
+                Judged::Suspicious(why) if dl > dl_jump * (1.0 + 1e-9) => Err(StepFail {
                     residual: nk.residuals.last().copied().unwrap_or(f64::NAN),
                     reason: format!("step too large: {why}"),
-                });
-            }
-            Ok((nk, pd && !suspicious))
-        });
+                }),
+                Judged::Suspicious(_) => Ok((nk, false)),
+                Judged::Fine(pd) => Ok((nk, pd)),
+            });
         match outcome {
             Ok((nk, stable)) => {
                 iterations += nk.iterations;
                 steps += 1;
                 internal = nk.internal;
-                stab.record(lambda, target, stable);
+                stab.record(&saved, st, lambda, target, stable, 1.0, None);
                 lambda = target;
                 cut_run = 0;
                 prev_stable = stable;
@@ -165,147 +233,6 @@ pub(super) fn load_control(
         }
     }
     Ok((iterations, steps, cuts, lambda))
-}
-
-/// Crisfield's cylindrical arc length (ψ = 0) until λ reaches 1; the last piece is load
-/// controlled so the path ends at λ = 1 exactly.
-pub(super) fn arc_length(
-    ctx: &CaseCtx,
-    st: &mut State,
-    opts: &NonlinearOptions,
-    name: &str,
-    path: &mut Vec<PathPoint>,
-    stab: &mut Stability,
-) -> Result<(usize, usize, usize, f64), FemError> {
-    let arms = ctx.arms(st);
-    let f_red_full = ctx.to_independent(&arms, &ctx.f_ext);
-    let f_red: Vec<f64> = ctx.map.eq_dof.iter().map(|&g| f_red_full[g]).collect();
-    let mut lambda = 0.0;
-    let (mut iterations, mut steps, mut cuts) = (0usize, 0usize, 0usize);
-    let mut prev: Option<Vec<f64>> = None;
-    let mut dl_arc = 0.0;
-    let mut cut_run = 0;
-    let max_steps = 50 * opts.steps.max(10);
-    while steps < max_steps {
-        let saved = st.clone();
-        let ev = ctx
-            .evaluate(st, lambda, ctx.newton_tangent())
-            .ok_or_else(|| fail(name, steps + 1, lambda, f64::NAN, "degenerate configuration"))?;
-        let scale = ev.internal.max(ev.load);
-        let dt = ctx
-            .solve(&ev.values, std::slice::from_ref(&f_red))
-            .map_err(|r| fail(name, steps + 1, lambda, norm(&ev.r), r))?
-            .x
-            .remove(0);
-        let dtn = norm(&dt);
-        if !(dtn > 0.0 && dtn.is_finite()) {
-            return Err(fail(name, steps + 1, lambda, norm(&ev.r), "no load to follow"));
-        }
-        if dl_arc == 0.0 {
-            dl_arc = dtn / opts.steps as f64;
-        }
-        let sign = match &prev {
-            Some(p) if dot(p, &dt) < 0.0 => -1.0,
-            _ => 1.0,
-        };
-        let dlam = sign * dl_arc / dtn;
-        if lambda + dlam >= 1.0 - 1e-12 {
-            let (it, s, c, l) = load_control(ctx, st, lambda, &one_step(opts), name, path, steps, stab)?;
-            return Ok((iterations + it, steps + s, cuts + c, l));
-        }
-        // Predictor.
-        let mut dq: Vec<f64> = dt.iter().map(|v| v * dlam).collect();
-        ctx.apply(st, &dq, None);
-        let mut lam = lambda + dlam;
-        let mut ok = None;
-        let mut last_res = f64::NAN;
-        let mut residuals = Vec::new();
-        let mut pd = None;
-        for it in 1..=opts.max_iterations {
-            let Some(ev) = ctx.evaluate(st, lam, ctx.newton_tangent()) else {
-                break;
-            };
-            let rn = norm(&ev.r);
-            last_res = rn;
-            residuals.push(rn);
-            let scale = scale.max(ev.load);
-            if rn <= bound(ctx, opts.tol_residual, scale) || scale == 0.0 && ev.internal == 0.0 {
-                ok = Some(it);
-                break;
-            }
-            let neg: Vec<f64> = ev.r.iter().map(|v| -v).collect();
-            let Ok(sol) = ctx.solve(&ev.values, &[neg, f_red.clone()]) else {
-                break;
-            };
-            pd = sol.positive_definite;
-            let sol = sol.x;
-            let (dr, dtt) = (&sol[0], &sol[1]);
-            let s: Vec<f64> = dq.iter().zip(dr).map(|(a, b)| a + b).collect();
-            let a = dot(dtt, dtt);
-            let b = 2.0 * dot(dtt, &s);
-            let c = dot(&s, &s) - dl_arc * dl_arc;
-            let disc = b * b - 4.0 * a * c;
-            if !(disc >= 0.0 && a > 0.0) {
-                break;
-            }
-            let roots = [(-b + disc.sqrt()) / (2.0 * a), (-b - disc.sqrt()) / (2.0 * a)];
-            let score = |x: f64| {
-                dq.iter()
-                    .zip(&s)
-                    .zip(dtt)
-                    .map(|((p, si), ti)| p * (si + x * ti))
-                    .sum::<f64>()
-            };
-            let dlm = if score(roots[0]) >= score(roots[1]) {
-                roots[0]
-            } else {
-                roots[1]
-            };
-            let corr: Vec<f64> = dr.iter().zip(dtt).map(|(r, t)| r + dlm * t).collect();
-            ctx.apply(st, &corr, None);
-            lam += dlm;
-            for (d, c) in dq.iter_mut().zip(&corr) {
-                *d += c;
-            }
-        }
-        match ok {
-            Some(it) => {
-                iterations += it;
-                steps += 1;
-                let stable = match pd {
-                    Some(p) => p,
-                    None => ctx.positive_definite(st, lam),
-                };
-                stab.record(lambda, lam, stable);
-                lambda = lam;
-                cut_run = 0;
-                prev = Some(dq);
-                path.push(PathPoint {
-                    lambda,
-                    values: ctx.tracked(st, &opts.track),
-                    stable,
-                    residuals,
-                });
-                ctx.record_step(st, lambda, path.len() - 1)?;
-            }
-            None => {
-                *st = saved;
-                cuts += 1;
-                cut_run += 1;
-                dl_arc *= 0.5;
-                if cut_run > opts.max_cuts || cuts > opts.max_total_cuts {
-                    return Err(fail(
-                        name,
-                        steps + 1,
-                        lambda,
-                        last_res,
-                        format!("arc length did not converge after {} cuts", opts.max_cuts),
-                    ));
-                }
-            }
-        }
-    }
-    Err(fail(name, steps, lambda, f64::NAN, "arc length: too many steps"))
 }
 
 pub(super) fn one_step(opts: &NonlinearOptions) -> NonlinearOptions {

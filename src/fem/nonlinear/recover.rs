@@ -93,6 +93,7 @@ pub(super) fn finish(
         cuts,
         stable: true,
         critical_load_factor: None,
+        critical_points: Vec::new(),
         element_frames: frames,
         step_quantities: Vec::new(),
     })

@@ -197,6 +197,12 @@ impl CaseCtx<'_> {
         out
     }
 
+    /// The applied load f (at λ = 1) on the equations, carried with the current arms.
+    pub(super) fn reduced_load(&self, st: &State) -> Vec<f64> {
+        let full = self.to_independent(&self.arms(st), &self.f_ext);
+        self.map.eq_dof.iter().map(|&g| full[g]).collect()
+    }
+
     /// Slaves follow their masters exactly.
     pub(super) fn update_slaves(&self, st: &mut State) {
         for n in 0..self.model.nodes.len() {
