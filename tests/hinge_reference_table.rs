@@ -35,22 +35,18 @@ fn table_path() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/hinge_reference_table.json")
 }
 
-/// SplitMix64 (Steele, Lea & Flood, *Fast splittable pseudorandom number generators*, OOPSLA
-/// 2014): deterministic on every platform, no dependency.
-struct Rng(u64);
+#[path = "common/rng.rs"]
+mod rng;
+use rng::Rng;
 
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-    /// Uniform in [0, 1).
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
+/// Random parameters, rounded so the JSON of the table stays short and exact in decimal.
+trait Draw {
+    fn uniform(&mut self, lo: f64, hi: f64) -> f64;
+    fn log(&mut self, lo: f64, hi: f64) -> f64;
+    fn chance(&mut self, p: f64) -> bool;
+}
+
+impl Draw for Rng {
     /// Uniform in [lo, hi], rounded to 4 decimals (short, exact-in-decimal JSON).
     fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
         round4(lo + (hi - lo) * self.unit())
@@ -146,7 +142,7 @@ fn design(rng: &mut Rng, fam: usize) -> (HingeSpec, Material) {
 /// The designs of the table: `PER_FAMILY` valid designs per family, in family order (designs
 /// the hinge model refuses are drawn again).
 fn designs() -> Vec<(HingeSpec, Material)> {
-    let mut rng = Rng(0x5eed_2026_1124_0021);
+    let mut rng = Rng::new(0x5eed_2026_1124_0021);
     let mut out = Vec::with_capacity(5 * PER_FAMILY);
     for fam in 0..5 {
         let mut n = 0;
