@@ -156,9 +156,8 @@ fn stiffness_of(profile: &Profile, material: &Material, kt: f64) -> Stiffness {
 /// The stiffness of `profile` from its Timoshenko compliance `c` (Saint-Venant torsion), with
 /// the torsion replaced by the warping-restrained one for rectangular sections.
 fn stiffness_from(profile: &Profile, material: &Material, kt: f64, c: Matrix6<f64>) -> Stiffness {
-    let k_sv = 1.0 / c[(3, 3)];
     let k_torsion = match profile.contour {
-        Contour::SphericalNeck { .. } => k_sv,
+        Contour::SphericalNeck { .. } => 1.0 / c[(3, 3)],
         _ => torsion::vlasov_torsion_stiffness(
             profile,
             material.e,
@@ -166,6 +165,13 @@ fn stiffness_from(profile: &Profile, material: &Material, kt: f64, c: Matrix6<f6
             torsion::TorsionMesh::default(),
         ),
     };
+    with_torsion(profile, material, kt, c, k_torsion)
+}
+
+/// The stiffness of `profile` from its Timoshenko compliance `c` (Saint-Venant torsion) and its
+/// torsional stiffness `k_torsion`.
+fn with_torsion(profile: &Profile, material: &Material, kt: f64, c: Matrix6<f64>, k_torsion: f64) -> Stiffness {
+    let k_sv = 1.0 / c[(3, 3)];
     let mut cm = c;
     cm[(3, 3)] = 1.0 / k_torsion;
     let k_bend = 1.0 / cm[(4, 4)];
@@ -194,9 +200,20 @@ fn stiffness_from(profile: &Profile, material: &Material, kt: f64, c: Matrix6<f6
 /// ([`integrate::flex_integrals_with_notch`]).
 fn stiffness_pair(profile: &Profile, notch: &Profile, material: &Material, kt: f64) -> (Stiffness, Stiffness) {
     let (whole, alone) = flex_integrals_with_notch(profile, &moduli(profile, material), Quadrature::default());
+    let (c, cn) = (whole.compliance(), alone.compliance());
+    let (kt_whole, kt_notch) = match profile.contour {
+        Contour::SphericalNeck { .. } => (1.0 / c[(3, 3)], 1.0 / cn[(3, 3)]),
+        _ => torsion::vlasov_torsion_pair(
+            profile,
+            notch,
+            material.e,
+            material.shear_modulus(),
+            torsion::TorsionMesh::default(),
+        ),
+    };
     (
-        stiffness_from(profile, material, kt, whole.compliance()),
-        stiffness_from(notch, material, kt, alone.compliance()),
+        with_torsion(profile, material, kt, c, kt_whole),
+        with_torsion(notch, material, kt, cn, kt_notch),
     )
 }
 

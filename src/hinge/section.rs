@@ -120,22 +120,31 @@ fn long_short(b: f64, c: f64) -> (f64, f64) {
     }
 }
 
-/// J from the sides (long ≥ short) and the series (see [`rect_torsion_constant`]).
+/// 64/π⁵.
+const C_J: f64 = 64.0 / (PI * PI * PI * PI * PI);
+/// 32/π⁶.
+const C_GAMMA: f64 = 32.0 / (PI * PI * PI * PI * PI * PI);
+/// 3/π.
+const C_K: f64 = 3.0 / PI;
+
+/// J from the sides (long ≥ short) and the series (see [`rect_torsion_constant`]):
+/// (1/3) B T³ − (64/π⁵) T⁴ Σ tanh/n⁵, the series' prefactor (192/π⁵)(T/B) multiplied out.
 fn torsion_from(long: f64, short: f64, s: &RectSeries) -> f64 {
-    let r = long / short;
-    long * (short * short * short) / 3.0 * (1.0 - 192.0 / PI.powi(5) / r * (LAMBDA5 - s.e5))
+    let s3 = short * short * short;
+    long * s3 / 3.0 - C_J * (s3 * short) * (LAMBDA5 - s.e5)
 }
 
-/// Γ from the sides (long ≥ short) and the series (see [`rect_warping_constant`]).
+/// Γ from the sides (long ≥ short) and the series (see [`rect_warping_constant`]): with
+/// a = T/2, d = B/2, k₁ = π/T, 16/(a k₁⁶) = 32 T⁵/π⁶ and 1/k₁ = T/π multiplied out.
 fn warping_from(long: f64, short: f64, s: &RectSeries) -> f64 {
-    let a = short / 2.0;
     let d = long / 2.0;
-    let k1 = PI / (2.0 * a);
+    let s2 = short * short;
+    let s5 = s2 * s2 * short;
     // Σ_{n odd} [d (2 + sech²) − 3 tanh/k_n]/n⁶ with tanh = 1 − (1 − tanh).
-    let sum = d * (2.0 * LAMBDA6 + s.s6) - 3.0 / k1 * (LAMBDA7 - s.e7);
-    let k3 = k1 * k1 * k1;
-    let corr = 16.0 / (a * (k3 * k3)) * sum;
-    (4.0 * (a * a * a) * (d * d * d) / 9.0 - corr).max(0.0)
+    let sum = d * (2.0 * LAMBDA6 + s.s6) - C_K * short * (LAMBDA7 - s.e7);
+    let corr = C_GAMMA * s5 * sum;
+    let l3 = long * long * long;
+    ((s2 * short) * l3 / 144.0 - corr).max(0.0)
 }
 
 /// Saint-Venant torsion constant of a solid rectangle `b × c` (any order), mm⁴.

@@ -201,35 +201,81 @@ fn half_nodes(profile: &Profile, mesh: TorsionMesh, e: f64, g: f64, out: &mut [f
 /// Torsional stiffness T/θ (N·mm/rad) of a rectangular-section hinge between its two blank end
 /// faces, warping restrained at both faces. `e`, `g` in MPa.
 pub fn vlasov_torsion_stiffness(profile: &Profile, e: f64, g: f64, mesh: TorsionMesh) -> f64 {
-    let mut half = [0.0; MAX_NODES / 2];
-    let nh = half_nodes(profile, mesh, e, g, &mut half);
-    // Full mesh: mirror.
-    let mut xs = [0.0; MAX_NODES];
-    let mut n = 0;
-    for i in (1..nh).rev() {
-        xs[n] = -half[i];
-        n += 1;
-    }
-    for &x in &half[..nh] {
-        xs[n] = x;
-        n += 1;
-    }
-    let w = profile.w;
-    // The last thickness and its (GJ, EΓ): the blanks are one section each.
-    let mut last = (f64::NAN, (0.0, 0.0));
-    let props = |x: f64| -> (f64, f64) {
-        let t = if x.abs() > profile.half_notch {
-            profile.effective_thickness(x)
-        } else {
-            profile.thickness(x)
-        };
-        if t != last.0 {
-            let (j, warping) = rect_torsion_warping(w, t);
-            last = (t, (g * j, e * warping));
-        }
-        last.1
+    let half = HalfMesh::new(profile, mesh, e, g);
+    half.solve(half.n)
+}
+
+/// [`vlasov_torsion_stiffness`] of a hinge in its blank and of its notch alone (`notch`: the
+/// same profile with no blank). The notch's mesh is the hinge's mesh inside the notch (the same
+/// pieces give the same nodes), so its section properties are the hinge's, sampled once.
+pub fn vlasov_torsion_pair(profile: &Profile, notch: &Profile, e: f64, g: f64, mesh: TorsionMesh) -> (f64, f64) {
+    let whole = HalfMesh::new(profile, mesh, e, g);
+    let mut own = [0.0; MAX_NODES / 2];
+    let nn = half_nodes(notch, mesh, e, g, &mut own);
+    let k_notch = if nn <= whole.n && own[..nn] == whole.x[..nn] {
+        whole.solve(nn)
+    } else {
+        vlasov_torsion_stiffness(notch, e, g, mesh)
     };
-    torsion_fe(&xs[..n], props)
+    (whole.solve(whole.n), k_notch)
+}
+
+/// The nodes of the half mesh x ≥ 0 and (GJ, EΓ) at the 4 Gauss points of each of its
+/// intervals: the profile is symmetric, so the mirrored half of the mesh takes the same values
+/// (at the mirrored points, which agree with the directly computed ones to rounding).
+struct HalfMesh {
+    x: [f64; MAX_NODES / 2],
+    n: usize,
+    gp: [[(f64, f64); 4]; MAX_NODES / 2],
+}
+
+impl HalfMesh {
+    fn new(profile: &Profile, mesh: TorsionMesh, e: f64, g: f64) -> Self {
+        let mut x = [0.0; MAX_NODES / 2];
+        let n = half_nodes(profile, mesh, e, g, &mut x);
+        let w = profile.w;
+        // The last thickness and its (GJ, EΓ): the blanks are one section each.
+        let mut last = (f64::NAN, (0.0, 0.0));
+        let mut gp = [[(0.0, 0.0); 4]; MAX_NODES / 2];
+        for i in 0..n - 1 {
+            for q in 0..4 {
+                let xq = x[i] + GL4_X[q] * (x[i + 1] - x[i]);
+                let t = if xq.abs() > profile.half_notch {
+                    profile.effective_thickness(xq)
+                } else {
+                    profile.thickness(xq)
+                };
+                if t != last.0 {
+                    let (j, warping) = rect_torsion_warping(w, t);
+                    last = (t, (g * j, e * warping));
+                }
+                gp[i][q] = last.1;
+            }
+        }
+        HalfMesh { x, n, gp }
+    }
+
+    /// T/θ of the mirrored mesh of the first `nh` half nodes (warping restrained at ±x[nh − 1]).
+    fn solve(&self, nh: usize) -> f64 {
+        let mut xs = [0.0; MAX_NODES];
+        let mut gp = [[(0.0, 0.0); 4]; MAX_NODES];
+        let mut n = 0;
+        for i in (1..nh).rev() {
+            xs[n] = -self.x[i];
+            // Interval [−x[i], −x[i−1]] mirrors [x[i−1], x[i]]: Gauss points in reverse order.
+            let h = self.gp[i - 1];
+            gp[n] = [h[3], h[2], h[1], h[0]];
+            n += 1;
+        }
+        for i in 0..nh {
+            xs[n] = self.x[i];
+            if i + 1 < nh {
+                gp[n] = self.gp[i];
+            }
+            n += 1;
+        }
+        torsion_fe_sampled(&xs[..n], &gp)
+    }
 }
 
 /// Shortest FE element relative to the local warping boundary-layer length √(EΓ/GJ).
@@ -258,16 +304,23 @@ pub fn torsion_fe(xs: &[f64], mut props: impl FnMut(f64) -> (f64, f64)) -> f64 {
             gp[i][q] = props(xs[i] + GL4_X[q] * (xs[i + 1] - xs[i]));
         }
     }
+    torsion_fe_sampled(xs, &gp)
+}
+
+/// [`torsion_fe`] with the properties (GJ, EΓ) at the 4 Gauss points of interval i of `xs`
+/// given in `gp[i]`.
+fn torsion_fe_sampled(xs: &[f64], gp: &[[(f64, f64); 4]; MAX_NODES]) -> f64 {
     // Element nodes: indices into xs, each element at least MIN_ELEMENT_PER_LAYER × the largest
     // warping layer √(EΓ/GJ) of the intervals it covers.
     let layer_of = |i: usize| -> f64 {
-        gp[i].iter().fold(0.0f64, |m, &(gj, eg)| {
-            if gj > 0.0 && eg > 0.0 {
-                m.max((eg / gj).sqrt())
-            } else {
-                m
-            }
-        })
+        // √ is monotone: the root of the largest ratio.
+        gp[i]
+            .iter()
+            .fold(
+                0.0f64,
+                |m, &(gj, eg)| if gj > 0.0 && eg > 0.0 { m.max(eg / gj) } else { m },
+            )
+            .sqrt()
     };
     let mut keep = [0usize; MAX_NODES];
     let mut nk = 1;
