@@ -211,9 +211,11 @@ pub fn rectangle(width: f64, thickness: f64, nu: f64) -> Section {
     }
 }
 
-/// J of a square of side h divided by Saint-Venant's estimate A⁴/(4π² I_p) = 6h⁴/(4π²).
+/// J of a square of side h divided by Saint-Venant's estimate A⁴/(4π² I_p) = 6h⁴/(4π²)
+/// (computed once).
 fn square_j_ratio() -> f64 {
-    rect_torsion_constant(1.0, 1.0) / (6.0 / (4.0 * PI * PI))
+    static RATIO: std::sync::OnceLock<f64> = std::sync::OnceLock::new();
+    *RATIO.get_or_init(|| rect_torsion_constant(1.0, 1.0) / (6.0 / (4.0 * PI * PI)))
 }
 
 /// Disk of radius `r` intersected with the centred square of side `h` (turned neck in its

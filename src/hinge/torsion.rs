@@ -348,14 +348,14 @@ fn torsion_fe_sampled(xs: &[f64], gp: &[[(f64, f64); 4]; MAX_NODES]) -> f64 {
     let mut load = [0.0f64; 2 * MAX_NODES];
     for el in 0..nn - 1 {
         let (xa, xb) = (xs[keep[el]], xs[keep[el + 1]]);
-        let le = xb - xa;
+        let inv_le = 1.0 / (xb - xa);
         let mut ke = [[0.0f64; 3]; 3];
         let mut fe = [0.0f64; 3];
         for sub in keep[el]..keep[el + 1] {
             let (s0, s1) = (xs[sub], xs[sub + 1]);
             for q in 0..4 {
                 let x = s0 + GL4_X[q] * (s1 - s0);
-                let xi = (x - xa) / le;
+                let xi = (x - xa) * inv_le;
                 let (gj, eg) = gp[sub][q];
                 let wq = GL4_W[q] * (s1 - s0);
                 // Quadratic Lagrange shape functions for φ (start, middle, end) and their
@@ -365,7 +365,11 @@ fn torsion_fe_sampled(xs: &[f64], gp: &[[(f64, f64); 4]; MAX_NODES]) -> f64 {
                     4.0 * xi * (1.0 - xi),
                     xi * (2.0 * xi - 1.0),
                 ];
-                let d1 = [(4.0 * xi - 3.0) / le, (4.0 - 8.0 * xi) / le, (4.0 * xi - 1.0) / le];
+                let d1 = [
+                    (4.0 * xi - 3.0) * inv_le,
+                    (4.0 - 8.0 * xi) * inv_le,
+                    (4.0 * xi - 1.0) * inv_le,
+                ];
                 for a in 0..3 {
                     fe[a] += wq * n[a];
                     for b in a..3 {
@@ -394,8 +398,8 @@ fn torsion_fe_sampled(xs: &[f64], gp: &[[(f64, f64); 4]; MAX_NODES]) -> f64 {
         k[dof][0] = 1.0;
         load[dof] = 0.0;
     }
-    let mut f = load;
-    // Banded Cholesky K = L Lᵀ, L stored in place (l[i][d] = L(i + d, i)).
+    // Banded Cholesky K = L Lᵀ, L stored in place (l[i][d] = L(i + d, i), d ≥ 1) with the
+    // reciprocal of the diagonal in l[i][0] (one division per row on the serial chain).
     for i in 0..ndof {
         let mut diag = k[i][0];
         for d in 1..4 {
@@ -403,8 +407,8 @@ fn torsion_fe_sampled(xs: &[f64], gp: &[[(f64, f64); 4]; MAX_NODES]) -> f64 {
                 diag -= k[i - d][d] * k[i - d][d];
             }
         }
-        let lii = diag.sqrt();
-        k[i][0] = lii;
+        let inv = 1.0 / diag.sqrt();
+        k[i][0] = inv;
         for d in 1..4 {
             let r = i + d;
             if r >= ndof {
@@ -417,10 +421,13 @@ fn torsion_fe_sampled(xs: &[f64], gp: &[[(f64, f64); 4]; MAX_NODES]) -> f64 {
                     s -= k[i - e][d + e] * k[i - e][e];
                 }
             }
-            k[i][d] = s / lii;
+            k[i][d] = s * inv;
         }
     }
-    // Forward L y = f.
+    // θ(end) = ∫φ dx = loadᵀ φ = loadᵀ K⁻¹ load = |y|², y = L⁻¹ load (the compliance, > 0 for
+    // an SPD system): forward substitution only.
+    let f = &mut load;
+    let mut theta = 0.0;
     for i in 0..ndof {
         let mut s = f[i];
         for d in 1..4 {
@@ -428,19 +435,8 @@ fn torsion_fe_sampled(xs: &[f64], gp: &[[(f64, f64); 4]; MAX_NODES]) -> f64 {
                 s -= k[i - d][d] * f[i - d];
             }
         }
-        f[i] = s / k[i][0];
+        f[i] = s * k[i][0];
+        theta += f[i] * f[i];
     }
-    // Backward Lᵀ x = y.
-    for i in (0..ndof).rev() {
-        let mut s = f[i];
-        for d in 1..4 {
-            if i + d < ndof {
-                s -= k[i][d] * f[i + d];
-            }
-        }
-        f[i] = s / k[i][0];
-    }
-    // θ(end) = ∫φ dx = loadᵀ φ (the compliance, > 0 for an SPD system).
-    let theta: f64 = load[..ndof].iter().zip(&f[..ndof]).map(|(a, b)| a * b).sum();
     1.0 / theta
 }
