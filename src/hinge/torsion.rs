@@ -105,8 +105,9 @@ fn graded(x0: f64, x1: f64, ne: usize, h0: f64, h1: f64, out: &mut [f64], n: &mu
             if !(f > 0.0 && df > 0.0) {
                 break;
             }
+            // Never NaN: f64::max returns 1 for a NaN step.
             let next = (g - f / df).max(1.0);
-            if !(next < g) {
+            if next >= g {
                 break;
             }
             g = next;
