@@ -2,7 +2,7 @@
 //! Brief target: ≥ 5,000 characterisations per second on 2 cores.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use flexfem::hinge::{characterise, profile_stiffness, Contour, HingeSpec};
+use flexfem::hinge::{characterise, profile_stiffness, HingeSpec};
 use flexfem::material::Material;
 use rayon::prelude::*;
 use std::hint::black_box;
@@ -49,17 +49,8 @@ fn bench(c: &mut Criterion) {
     g.bench_function("characterise_spherical_neck", |b| {
         b.iter(|| characterise(black_box(&neck), &al).unwrap())
     });
-    // The other families (comparable geometry in the same 10 × 10 blank, 20 mm each side).
-    for c in [
-        Contour::Elliptical {
-            ax: 6.0,
-            ay: 3.0,
-            t: 1.2,
-        },
-        Contour::CornerFilleted { l: 8.0, r: 2.0, t: 1.0 },
-        Contour::Leaf { l: 6.0, t: 0.8 },
-    ] {
-        let spec = HingeSpec::in_blank(c, 10.0, 10.0, 20.0);
+    // The other families (comparable geometry in the same blank).
+    for spec in fixtures::hinge_families()[1..4].iter().copied() {
         let name = format!(
             "characterise_{}",
             serde_json::to_value(spec).unwrap()["type"].as_str().unwrap()

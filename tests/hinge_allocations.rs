@@ -14,7 +14,7 @@
 //! Source of the expectations: the code itself (a regression bound, not a published value).
 
 use flexfem::design::sweep::{load, run_design};
-use flexfem::hinge::{characterise, profile_stiffness, Contour, HingeSpec};
+use flexfem::hinge::{characterise, profile_stiffness};
 use flexfem::material::Material;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
@@ -58,22 +58,8 @@ fn allocations_per_call(n: usize, mut f: impl FnMut()) -> f64 {
     (ALLOCATIONS.with(Cell::get) - before) as f64 / n as f64
 }
 
-/// One hinge per family in a 10 × 10 blank, 20 mm each side (the Ruiz et al. (2019) revolute
-/// notch R 8, t 2 and spherical neck l 5, t 3, R 4; comparable geometry for the others).
-fn families() -> [HingeSpec; 5] {
-    [
-        Contour::Circular { r: 8.0, t: 2.0 },
-        Contour::Elliptical {
-            ax: 6.0,
-            ay: 3.0,
-            t: 1.2,
-        },
-        Contour::CornerFilleted { l: 8.0, r: 2.0, t: 1.0 },
-        Contour::Leaf { l: 6.0, t: 0.8 },
-        Contour::SphericalNeck { l: 5.0, t: 3.0, r: 4.0 },
-    ]
-    .map(|c| HingeSpec::in_blank(c, 10.0, 10.0, 20.0))
-}
+mod common;
+use common::fixtures::hinge_families as families;
 
 #[test]
 fn hinge_stiffness_allocates_nothing() {
