@@ -217,7 +217,7 @@ impl Analysis for Static {
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         let (model, hinges) = case.model.build_with_hinges(true)?;
         let (mut r, raw) = match case.steps.filter(|_| case.nonlinear) {
-            Some(steps) => fem_static::solve_nonlinear(&model, steps)?,
+            Some(steps) => fem_static::solve_nonlinear_tracked(&model, steps, case.track.as_ref())?,
             None => fem_static::solve_with(&model, ctx.cache)?,
         };
         fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
@@ -227,6 +227,11 @@ impl Analysis for Static {
         r.compliance = fem_static::node_compliances(&model, &case.compliance)?;
         if ctx.with_files {
             ctx.files = fem_static::vtu_files(&model, &raw)?;
+            let tracked = r
+                .load_cases
+                .iter()
+                .filter_map(|c| Some((c.name.as_str(), c.track.as_ref()?)));
+            ctx.files.extend(super::track::files(tracked));
         }
         ctx.warnings = if case.nonlinear {
             let mut w = warn::stretch_warnings(&model, &r);

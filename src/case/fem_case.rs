@@ -73,6 +73,11 @@ pub struct StaticCase {
     /// `[{"node": n, "frame": [[..], [..], [..]]}]` (frame optional, default global axes).
     #[serde(default)]
     pub compliance: Vec<super::mesh::ComplianceRequest>,
+    /// Nonlinear only: natural frequencies and node compliances at every accepted load step,
+    /// with the tangent stiffness of the deformed state: `{"modes": N, "compliance": [{"node":
+    /// n}]}`.
+    #[serde(default)]
+    pub track: Option<super::mesh::TrackRequest>,
 }
 
 /// Schema rules of a `static` (`need_loads`) or `modal` case that relate fields: the model is
@@ -99,6 +104,10 @@ fn model_rules(need_loads: bool) -> serde_json::Value {
         {
             "if": steps_given(),
             "then": nonlinear_true()
+        },
+        {
+            "if": {"required": ["track"], "properties": {"track": {"type": "object"}}},
+            "then": nonlinear_true()
         }
     ])
 }
@@ -121,6 +130,8 @@ struct StaticOptions {
     output: super::mesh::StaticOutput,
     #[serde(default)]
     compliance: Vec<super::mesh::ComplianceRequest>,
+    #[serde(default)]
+    track: Option<super::mesh::TrackRequest>,
 }
 
 /// The options of a `modal` case besides its model, as in the case file.
@@ -151,7 +162,7 @@ const MODEL_FIELDS: [&str; 7] = [
     "load_cases",
 ];
 
-const STATIC_OWN: [&str; 8] = [
+const STATIC_OWN: [&str; 9] = [
     "analysis",
     "description",
     "mesh",
@@ -160,6 +171,7 @@ const STATIC_OWN: [&str; 8] = [
     "steps",
     "output",
     "compliance",
+    "track",
 ];
 const MODAL_OWN: [&str; 6] = ["analysis", "mesh", "gmsh", "modes", "shift_hz", "shapes"];
 
@@ -187,6 +199,7 @@ pub fn parse_static(value: Value, base: Option<&Path>) -> Result<StaticCase, Cas
     let steps = stage::check_steps("steps", o.steps, nonlinear)?;
     let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
     super::mesh::requests::check_compliance(&o.compliance, model.nodes.len())?;
+    super::mesh::requests::check_track(o.track.as_ref(), nonlinear, model.nodes.len())?;
     Ok(StaticCase {
         description: o.description,
         mesh: o.mesh,
@@ -196,6 +209,7 @@ pub fn parse_static(value: Value, base: Option<&Path>) -> Result<StaticCase, Cas
         steps,
         output: o.output,
         compliance: o.compliance,
+        track: o.track,
     })
 }
 

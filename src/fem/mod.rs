@@ -44,7 +44,9 @@ pub use model::{
     Beam, Element, FlexElement, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink, Shell4, Spring,
     SpringAxes, Support, Tie,
 };
-pub use nonlinear::{solve_nonlinear, NonlinearCase, NonlinearOptions, NonlinearResults, PathPoint, Tangent};
+pub use nonlinear::{
+    solve_nonlinear, NonlinearCase, NonlinearOptions, NonlinearResults, PathPoint, StepQuantities, StepTrack, Tangent,
+};
 pub use section::{Section, SectionProps};
 
 /// Result alias for the FEM core.
