@@ -2,7 +2,7 @@
 //! Brief target: ≥ 5,000 characterisations per second on 2 cores.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use flexfem::hinge::{characterise, HingeSpec};
+use flexfem::hinge::{characterise, profile_stiffness, HingeSpec};
 use flexfem::material::Material;
 use rayon::prelude::*;
 use std::hint::black_box;
@@ -48,6 +48,21 @@ fn bench(c: &mut Criterion) {
     });
     g.bench_function("characterise_spherical_neck", |b| {
         b.iter(|| characterise(black_box(&neck), &al).unwrap())
+    });
+    // The other families (comparable geometry in the same blank).
+    for spec in fixtures::hinge_families()[1..4].iter().copied() {
+        let name = format!(
+            "characterise_{}",
+            serde_json::to_value(spec).unwrap()["type"].as_str().unwrap()
+        );
+        g.bench_function(name.as_str(), |b| {
+            b.iter(|| characterise(black_box(&spec), &al).unwrap())
+        });
+    }
+    // Only the hinge in its blank (no notch-alone configuration, no text).
+    let circ_profile = circ.profile().unwrap();
+    g.bench_function("stiffness_circular_notch", |b| {
+        b.iter(|| profile_stiffness(black_box(&circ_profile), &al).unwrap())
     });
     let ds = designs();
     g.throughput(Throughput::Elements(ds.len() as u64));

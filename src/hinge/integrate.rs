@@ -21,7 +21,7 @@
 use nalgebra::Matrix6;
 
 use super::pieces::Map;
-use super::profile::Profile;
+use super::profile::{Profile, SectionMemo};
 
 /// 8-point Gauss–Legendre abscissae on [−1, 1] (positive half).
 const GL8_X: [f64; 4] = [
@@ -187,36 +187,67 @@ pub(crate) fn quadrature_points(a: f64, b: f64, map: Map, panels: usize, mut f: 
 /// Arc pieces switch from the tan map to plain φ at φ = PEAK · c.
 pub(crate) const PEAK: f64 = 6.0;
 
+impl FlexIntegrals {
+    /// Adds one quadrature point: `f` = weight × (1/EA, 1/(G A_sy), 1/(G A_sz), 1/GJ, 1/(E I_y),
+    /// 1/(E I_z)) at the point, `a` = x1 − x its lever arm to the loaded end.
+    #[inline]
+    fn add(&mut self, f: &[f64; 6], a: f64, shear: bool) {
+        self.axial += f[0];
+        if shear {
+            self.shear_y += f[1];
+            self.shear_z += f[2];
+        }
+        self.torsion += f[3];
+        let (fb, fo) = (f[4], f[5]);
+        self.bend[0] += fb;
+        self.bend[1] += fb * a;
+        self.bend[2] += fb * a * a;
+        self.bend_off[0] += fo;
+        self.bend_off[1] += fo * a;
+        self.bend_off[2] += fo * a * a;
+    }
+}
+
 /// Flexibility integrals of the segment [x0, x1] (any order; x may be negative — the profile
 /// is symmetric) loaded at x1.
 pub fn flex_integrals(profile: &Profile, m: &Moduli, x0: f64, x1: f64, q: Quadrature) -> FlexIntegrals {
+    integrate(profile, m, x0, x1, q, None)
+}
+
+/// The flexibility integrals of the whole profile (between its two end faces, loaded at
+/// +half-length) and, from the same quadrature points, those of the notch alone (the same
+/// profile with no blank, between ±`half_notch`, loaded at +`half_notch`): the notch's pieces
+/// are the first pieces of the profile in the same order with the same points, so both come from
+/// one evaluation of each section and equal [`flex_integrals`] of each profile bit for bit.
+pub fn flex_integrals_with_notch(profile: &Profile, m: &Moduli, q: Quadrature) -> (FlexIntegrals, FlexIntegrals) {
+    let half = profile.half_length();
+    let mut notch = FlexIntegrals::default();
+    let whole = integrate(profile, m, -half, half, q, Some(&mut notch));
+    (whole, notch)
+}
+
+/// [`flex_integrals`], also accumulating the notch alone into `notch` when given
+/// ([`flex_integrals_with_notch`]).
+fn integrate(
+    profile: &Profile,
+    m: &Moduli,
+    x0: f64,
+    x1: f64,
+    q: Quadrature,
+    mut notch: Option<&mut FlexIntegrals>,
+) -> FlexIntegrals {
     let mut acc = FlexIntegrals::default();
     let (lo, hi) = if x0 <= x1 { (x0, x1) } else { (x1, x0) };
     let pieces = profile.pieces();
-    let mut add = |x: f64, wgt: f64| {
-        let s = profile.section(x, m.nu);
-        let a = x1 - x;
-        acc.axial += wgt / (m.e * s.area);
-        if m.shear {
-            acc.shear_y += wgt / (m.g * s.shear_area_bend_off);
-            acc.shear_z += wgt / (m.g * s.shear_area_bend);
-        }
-        acc.torsion += wgt / (m.g * s.j);
-        let e_bend = if x.abs() < m.notch_half { m.e_bend } else { m.e };
-        let fb = wgt / (e_bend * s.i_bend);
-        let fo = wgt / (m.e * s.i_bend_off);
-        acc.bend[0] += fb;
-        acc.bend[1] += fb * a;
-        acc.bend[2] += fb * a * a;
-        acc.bend_off[0] += fo;
-        acc.bend_off[1] += fo * a;
-        acc.bend_off[2] += fo * a * a;
-    };
+    let hn = profile.half_notch;
+    // Blanks and prismatic parts are one section each: evaluated once.
+    let mut memo = SectionMemo::new(profile, m.nu);
     for piece in pieces.as_slice() {
         let panels = match piece.map {
             Map::Linear => q.linear_panels,
             Map::Arc { .. } | Map::Taper { .. } => q.arc_panels,
         };
+        let in_notch = piece.x1 <= hn;
         // Right half [piece.x0, piece.x1] and its mirror [−piece.x1, −piece.x0].
         for sign in [1.0, -1.0] {
             let (pa, pb) = if sign > 0.0 {
@@ -240,7 +271,24 @@ pub fn flex_integrals(profile: &Profile, m: &Moduli, x0: f64, x1: f64, q: Quadra
                         slope: sign * slope,
                     },
                 };
-                quadrature_points(a, b, map, panels, &mut add);
+                quadrature_points(a, b, map, panels, |x: f64, wgt: f64| {
+                    let s = memo.at(x);
+                    let e_bend = if x.abs() < m.notch_half { m.e_bend } else { m.e };
+                    let f = [
+                        wgt / (m.e * s.area),
+                        wgt / (m.g * s.shear_area_bend_off),
+                        wgt / (m.g * s.shear_area_bend),
+                        wgt / (m.g * s.j),
+                        wgt / (e_bend * s.i_bend),
+                        wgt / (m.e * s.i_bend_off),
+                    ];
+                    acc.add(&f, x1 - x, m.shear);
+                    if in_notch {
+                        if let Some(n) = notch.as_deref_mut() {
+                            n.add(&f, hn - x, m.shear);
+                        }
+                    }
+                });
             }
         }
     }

@@ -54,7 +54,7 @@ use crate::material::Material;
 pub use chain::split_flex;
 pub use element::{flex_chain, flex_region, hinge_element, hinge_peak_stress, spreading_region, HingeRegion};
 pub use error::HingeError;
-use integrate::{flex_integrals, Moduli, Quadrature};
+use integrate::{flex_integrals, flex_integrals_with_notch, Moduli, Quadrature};
 pub use profile::{Contour, Profile};
 pub use section::Section;
 pub use spec::HingeSpec;
@@ -146,10 +146,19 @@ pub fn segment_compliance(profile: &Profile, material: &Material, x0: f64, x1: f
 
 fn stiffness_of(profile: &Profile, material: &Material, kt: f64) -> Stiffness {
     let half = profile.half_length();
-    let c = segment_compliance(profile, material, -half, half);
-    let k_sv = 1.0 / c[(3, 3)];
+    stiffness_from(
+        profile,
+        material,
+        kt,
+        segment_compliance(profile, material, -half, half),
+    )
+}
+
+/// The stiffness of `profile` from its Timoshenko compliance `c` (Saint-Venant torsion), with
+/// the torsion replaced by the warping-restrained one for rectangular sections.
+fn stiffness_from(profile: &Profile, material: &Material, kt: f64, c: Matrix6<f64>) -> Stiffness {
     let k_torsion = match profile.contour {
-        Contour::SphericalNeck { .. } => k_sv,
+        Contour::SphericalNeck { .. } => 1.0 / c[(3, 3)],
         _ => torsion::vlasov_torsion_stiffness(
             profile,
             material.e,
@@ -157,6 +166,13 @@ fn stiffness_of(profile: &Profile, material: &Material, kt: f64) -> Stiffness {
             torsion::TorsionMesh::default(),
         ),
     };
+    with_torsion(profile, material, kt, c, k_torsion)
+}
+
+/// The stiffness of `profile` from its Timoshenko compliance `c` (Saint-Venant torsion) and its
+/// torsional stiffness `k_torsion`.
+fn with_torsion(profile: &Profile, material: &Material, kt: f64, c: Matrix6<f64>, k_torsion: f64) -> Stiffness {
+    let k_sv = 1.0 / c[(3, 3)];
     let mut cm = c;
     cm[(3, 3)] = 1.0 / k_torsion;
     let k_bend = 1.0 / cm[(4, 4)];
@@ -180,15 +196,40 @@ fn stiffness_of(profile: &Profile, material: &Material, kt: f64) -> Stiffness {
     }
 }
 
+/// Stiffness of a hinge in its blank and of its notch alone (`notch`: the same profile with no
+/// blank), the bending, shear and axial flexibilities of both from one pass over the sections
+/// ([`integrate::flex_integrals_with_notch`]).
+fn stiffness_pair(profile: &Profile, notch: &Profile, material: &Material, kt: f64) -> (Stiffness, Stiffness) {
+    let (whole, alone) = flex_integrals_with_notch(profile, &moduli(profile, material), Quadrature::default());
+    let (c, cn) = (whole.compliance(), alone.compliance());
+    let (kt_whole, kt_notch) = match profile.contour {
+        Contour::SphericalNeck { .. } => (1.0 / c[(3, 3)], 1.0 / cn[(3, 3)]),
+        _ => torsion::vlasov_torsion_pair(
+            profile,
+            notch,
+            material.e,
+            material.shear_modulus(),
+            torsion::TorsionMesh::default(),
+        ),
+    };
+    (
+        with_torsion(profile, material, kt, c, kt_whole),
+        with_torsion(notch, material, kt, cn, kt_notch),
+    )
+}
+
 /// Characterises a hinge: stiffness, compliance, stress, closed forms, for the hinge in its
 /// blank and for the notch alone.
+///
+/// Cost: the flexibility integrals of both configurations share one pass over the quadrature
+/// points; each needs its own warping-torsion solve. A caller that needs only the hinge in its
+/// blank calls [`profile_stiffness`] (half the work, no text).
 pub fn characterise(spec: &HingeSpec, material: &Material) -> Result<HingeResult, HingeError> {
     check_material(material)?;
     let profile = spec.profile()?;
     let notch = spec.profile_with_blank(Some(0.0))?;
     let kt = stress::stress_factor(&profile, material.nu);
-    let hinge = stiffness_of(&profile, material, kt);
-    let notch_only = stiffness_of(&notch, material, kt);
+    let (hinge, notch_only) = stiffness_pair(&profile, &notch, material, kt);
     let closed = closed_forms(spec, material.e);
     let model = model_notes(&profile, material, kt);
     Ok(HingeResult {

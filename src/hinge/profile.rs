@@ -314,9 +314,24 @@ impl Profile {
     /// Effective cross-section at x (Poisson's ratio for the shear coefficients): the geometric
     /// section, reduced where load spreading limits it ([`Profile::spread`]).
     pub fn section(&self, x: f64, nu: f64) -> Section {
+        self.section_of_size(self.section_size(x), nu)
+    }
+
+    /// The one number that fixes the effective section at x: the effective neck radius, or
+    /// the effective thickness of a rectangular family ([`Profile::section_of_size`]). Equal
+    /// sizes give identical sections, so callers evaluate a section once per distinct size.
+    pub fn section_size(&self, x: f64) -> f64 {
         match self.contour {
-            Contour::SphericalNeck { .. } => clipped_disk(self.effective_half_size(x), self.h, nu),
-            _ => rectangle(self.w, self.effective_thickness(x), nu),
+            Contour::SphericalNeck { .. } => self.effective_half_size(x),
+            _ => self.effective_thickness(x),
+        }
+    }
+
+    /// The effective section of the given [`Profile::section_size`].
+    pub fn section_of_size(&self, size: f64, nu: f64) -> Section {
+        match self.contour {
+            Contour::SphericalNeck { .. } => clipped_disk(size, self.h, nu),
+            _ => rectangle(self.w, size, nu),
         }
     }
 
@@ -329,5 +344,52 @@ impl Profile {
             | Contour::Leaf { t, .. }
             | Contour::SphericalNeck { t, .. } => t,
         }
+    }
+}
+
+/// The section of a profile along x, evaluated once per distinct [`Profile::section_size`]:
+/// consecutive points of a blank or a prismatic part reuse the last section (identical values,
+/// no series evaluated again).
+#[derive(Debug, Clone, Copy)]
+pub struct SectionMemo<'a> {
+    profile: &'a Profile,
+    nu: f64,
+    size: f64,
+    section: Section,
+}
+
+impl<'a> SectionMemo<'a> {
+    /// An empty memo for `profile` with Poisson's ratio `nu` (shear coefficients).
+    pub fn new(profile: &'a Profile, nu: f64) -> Self {
+        SectionMemo {
+            profile,
+            nu,
+            size: f64::NAN,
+            section: Section {
+                area: 0.0,
+                i_bend: 0.0,
+                i_bend_off: 0.0,
+                j: 0.0,
+                warping: 0.0,
+                shear_area_bend: 0.0,
+                shear_area_bend_off: 0.0,
+            },
+        }
+    }
+
+    /// The effective section at x ([`Profile::section`]).
+    #[inline]
+    pub fn at(&mut self, x: f64) -> Section {
+        self.of_size(self.profile.section_size(x))
+    }
+
+    /// The section of the given size ([`Profile::section_of_size`]).
+    #[inline]
+    pub fn of_size(&mut self, size: f64) -> Section {
+        if size != self.size {
+            self.size = size;
+            self.section = self.profile.section_of_size(size, self.nu);
+        }
+        self.section
     }
 }

@@ -34,29 +34,127 @@ const LAMBDA6: f64 = 1.001_447_077_927_100_8;
 /// Σ_{n odd} n^{-7} = (1 − 2⁻⁷) ζ(7).
 const LAMBDA7: f64 = 1.000_471_548_559_921_2;
 
-/// Number of odd harmonics summed explicitly in the rectangle series (n = 1, 3, …, 2·N−1);
-/// the rest is added in closed form with tanh = 1, sech = 0, which is exact to < 1e-12 there
-/// because n π (long/short)/2 ≥ 20 for n ≥ 13.
-const N_TERMS: usize = 7;
+/// 1/n⁵, 1/n⁶, 1/n⁷ for n = 1, 3, …, 13.
+const INV_N5: [f64; 7] = inv_odd_powers(5);
+const INV_N6: [f64; 7] = inv_odd_powers(6);
+const INV_N7: [f64; 7] = inv_odd_powers(7);
+
+const fn inv_odd_powers(p: u32) -> [f64; 7] {
+    let mut out = [0.0; 7];
+    let mut k = 0;
+    while k < 7 {
+        let n = (2 * k + 1) as f64;
+        let mut np = 1.0;
+        let mut i = 0;
+        while i < p {
+            np *= n;
+            i += 1;
+        }
+        out[k] = 1.0 / np;
+        k += 1;
+    }
+    out
+}
+
+/// The Saint-Venant series of a solid rectangle in closed form but for exponentially small
+/// corrections, both from one `exp`.
+///
+/// Both series of the rectangle (torsion constant and warping constant) need tanh(n x) and
+/// sech²(n x) for odd n, x = π r/2, r = long/short ≥ 1. With q = e^{−2x} = e^{−π r} ≤ e^{−π}
+/// = 0.0432 they are 1 − tanh(n x) = 2qⁿ/(1 + qⁿ) and sech²(n x) = 4qⁿ/(1 + qⁿ)², so every
+/// term comes from powers of one exponential instead of a `tanh`/`cosh` per term, and the sums
+/// split into their all-tanh-equal-1 limits (the constants λ₅, λ₆, λ₇) plus
+///
+/// e = Σ_{n odd} (1 − tanh n x)/n⁵,  s₆ = Σ sech²(n x)/n⁶,  e₇ = Σ (1 − tanh n x)/n⁷.
+///
+/// Truncation bound: the terms stop once qⁿ < 1e−18; everything left is below
+/// Σ_{m ≥ n} 4qᵐ ≤ 4qⁿ/(1 − q²) < 4.1e−18, under a twentieth of an ulp of the sums' leading
+/// terms (≥ 1, resp. the λ's), so the series are exact to double rounding. For r ≥ 12.8
+/// (π r > 40) already q < 1e−17 and no `exp` is taken at all.
+#[derive(Debug, Clone, Copy)]
+struct RectSeries {
+    /// Σ (1 − tanh n x)/n⁵.
+    e5: f64,
+    /// Σ sech²(n x)/n⁶.
+    s6: f64,
+    /// Σ (1 − tanh n x)/n⁷.
+    e7: f64,
+}
+
+impl RectSeries {
+    fn new(r: f64) -> Self {
+        let mut out = RectSeries {
+            e5: 0.0,
+            s6: 0.0,
+            e7: 0.0,
+        };
+        let arg = PI * r;
+        if arg > 40.0 {
+            return out;
+        }
+        let q = (-arg).exp();
+        let q2 = q * q;
+        let mut qn = q;
+        // qⁿ ≤ e^{−π n} < 1e−18 for n ≥ 15: at most the 7 terms n = 1, 3, …, 13.
+        for k in 0..7 {
+            if qn < 1e-18 {
+                break;
+            }
+            let inv = 1.0 / (1.0 + qn);
+            let e = 2.0 * qn * inv;
+            out.e5 += e * INV_N5[k];
+            out.s6 += 2.0 * e * inv * INV_N6[k];
+            out.e7 += e * INV_N7[k];
+            qn *= q2;
+        }
+        out
+    }
+}
+
+/// Long and short side of a `b × c` rectangle.
+fn long_short(b: f64, c: f64) -> (f64, f64) {
+    if b >= c {
+        (b, c)
+    } else {
+        (c, b)
+    }
+}
+
+/// 64/π⁵.
+const C_J: f64 = 64.0 / (PI * PI * PI * PI * PI);
+/// 32/π⁶.
+const C_GAMMA: f64 = 32.0 / (PI * PI * PI * PI * PI * PI);
+/// 3/π.
+const C_K: f64 = 3.0 / PI;
+
+/// J from the sides (long ≥ short) and the series (see [`rect_torsion_constant`]):
+/// (1/3) B T³ − (64/π⁵) T⁴ Σ tanh/n⁵, the series' prefactor (192/π⁵)(T/B) multiplied out.
+fn torsion_from(long: f64, short: f64, s: &RectSeries) -> f64 {
+    let s3 = short * short * short;
+    long * s3 / 3.0 - C_J * (s3 * short) * (LAMBDA5 - s.e5)
+}
+
+/// Γ from the sides (long ≥ short) and the series (see [`rect_warping_constant`]): with
+/// a = T/2, d = B/2, k₁ = π/T, 16/(a k₁⁶) = 32 T⁵/π⁶ and 1/k₁ = T/π multiplied out.
+fn warping_from(long: f64, short: f64, s: &RectSeries) -> f64 {
+    let d = long / 2.0;
+    let s2 = short * short;
+    let s5 = s2 * s2 * short;
+    // Σ_{n odd} [d (2 + sech²) − 3 tanh/k_n]/n⁶ with tanh = 1 − (1 − tanh).
+    let sum = d * (2.0 * LAMBDA6 + s.s6) - C_K * short * (LAMBDA7 - s.e7);
+    let corr = C_GAMMA * s5 * sum;
+    let l3 = long * long * long;
+    ((s2 * short) * l3 / 144.0 - corr).max(0.0)
+}
 
 /// Saint-Venant torsion constant of a solid rectangle `b × c` (any order), mm⁴.
 ///
 /// Timoshenko & Goodier, *Theory of Elasticity* (3rd ed., 1970) §109, eq. (167):
-/// J = (1/3) B T³ [1 − (192/π⁵)(T/B) Σ_{n odd} tanh(nπB/(2T))/n⁵], B ≥ T.
+/// J = (1/3) B T³ [1 − (192/π⁵)(T/B) Σ_{n odd} tanh(nπB/(2T))/n⁵], B ≥ T; the series is summed
+/// as λ₅ − Σ (1 − tanh)/n⁵ from one exponential, exact to double rounding (`RectSeries`).
 pub fn rect_torsion_constant(b: f64, c: f64) -> f64 {
-    let (long, short) = if b >= c { (b, c) } else { (c, b) };
-    let r = long / short;
-    let mut sum = 0.0;
-    let mut partial = 0.0;
-    for k in 0..N_TERMS {
-        let n = (2 * k + 1) as f64;
-        let n5 = n.powi(5);
-        let arg = n * PI * r / 2.0;
-        sum += if arg > 20.0 { 1.0 } else { arg.tanh() } / n5;
-        partial += 1.0 / n5;
-    }
-    sum += LAMBDA5 - partial;
-    long * short.powi(3) / 3.0 * (1.0 - 192.0 / PI.powi(5) / r * sum)
+    let (long, short) = long_short(b, c);
+    torsion_from(long, short, &RectSeries::new(long / short))
 }
 
 /// Warping constant Γ = ∫ω² dA of a solid rectangle `b × c`, mm⁶, from the exact Saint-Venant
@@ -72,32 +170,19 @@ pub fn rect_torsion_constant(b: f64, c: f64) -> f64 {
 ///
 /// Thin limit (a ≪ d): Γ → 4a³d³/9 = B³T³/144, the narrow-rectangle value of Timoshenko & Gere,
 /// *Theory of Elastic Stability* (2nd ed., 1961) §5.3. The series runs along the short side so
-/// that k_n d ≥ π/2 and the terms fall as n⁻⁶.
+/// that k_n d ≥ π/2 and the terms fall as n⁻⁶; it is summed as λ₆, λ₇ plus exponentially small
+/// corrections from one exponential, exact to double rounding (`RectSeries`).
 pub fn rect_warping_constant(b: f64, c: f64) -> f64 {
-    let (long, short) = if b >= c { (b, c) } else { (c, b) };
-    let a = short / 2.0;
-    let d = long / 2.0;
-    let mut corr = 0.0;
-    let mut p6 = 0.0;
-    let mut p7 = 0.0;
-    for k in 0..N_TERMS {
-        let n = (2 * k + 1) as f64;
-        let kn = n * PI / (2.0 * a);
-        let arg = kn * d;
-        let (th, sech2) = if arg > 20.0 {
-            (1.0, 0.0)
-        } else {
-            let ch = arg.cosh();
-            (arg.tanh(), 1.0 / (ch * ch))
-        };
-        corr += 16.0 / (a * kn.powi(6)) * (d * (2.0 + sech2) - 3.0 * th / kn);
-        p6 += 1.0 / n.powi(6);
-        p7 += 1.0 / n.powi(7);
-    }
-    // Tail n ≥ 2N+1 with tanh = 1, sech = 0: Σ 16/(a k⁶)(2d − 3/k).
-    let k1 = PI / (2.0 * a);
-    corr += 16.0 / (a * k1.powi(6)) * (2.0 * d * (LAMBDA6 - p6) - 3.0 / k1 * (LAMBDA7 - p7));
-    (4.0 * a.powi(3) * d.powi(3) / 9.0 - corr).max(0.0)
+    let (long, short) = long_short(b, c);
+    warping_from(long, short, &RectSeries::new(long / short))
+}
+
+/// Torsion and warping constants (J mm⁴, Γ mm⁶) of a solid rectangle `b × c` together: one
+/// exponential for both ([`rect_torsion_constant`], [`rect_warping_constant`]).
+pub fn rect_torsion_warping(b: f64, c: f64) -> (f64, f64) {
+    let (long, short) = long_short(b, c);
+    let s = RectSeries::new(long / short);
+    (torsion_from(long, short, &s), warping_from(long, short, &s))
 }
 
 /// Cowper's (1966) shear coefficient of a solid rectangle, κ = 10(1+ν)/(12+11ν).
@@ -114,20 +199,23 @@ pub fn cowper_circle(nu: f64) -> f64 {
 pub fn rectangle(width: f64, thickness: f64, nu: f64) -> Section {
     let area = width * thickness;
     let kappa = cowper_rect(nu);
+    let (j, warping) = rect_torsion_warping(width, thickness);
     Section {
         area,
-        i_bend: width * thickness.powi(3) / 12.0,
-        i_bend_off: thickness * width.powi(3) / 12.0,
-        j: rect_torsion_constant(width, thickness),
-        warping: rect_warping_constant(width, thickness),
+        i_bend: width * (thickness * thickness * thickness) / 12.0,
+        i_bend_off: thickness * (width * width * width) / 12.0,
+        j,
+        warping,
         shear_area_bend: kappa * area,
         shear_area_bend_off: kappa * area,
     }
 }
 
-/// J of a square of side h divided by Saint-Venant's estimate A⁴/(4π² I_p) = 6h⁴/(4π²).
+/// J of a square of side h divided by Saint-Venant's estimate A⁴/(4π² I_p) = 6h⁴/(4π²)
+/// (computed once).
 fn square_j_ratio() -> f64 {
-    rect_torsion_constant(1.0, 1.0) / (6.0 / (4.0 * PI * PI))
+    static RATIO: std::sync::OnceLock<f64> = std::sync::OnceLock::new();
+    *RATIO.get_or_init(|| rect_torsion_constant(1.0, 1.0) / (6.0 / (4.0 * PI * PI)))
 }
 
 /// Disk of radius `r` intersected with the centred square of side `h` (turned neck in its

@@ -34,7 +34,7 @@
 use super::integrate::PEAK;
 use super::pieces::Map;
 use super::profile::Profile;
-use super::section::{rect_torsion_constant, rect_warping_constant};
+use super::section::rect_torsion_warping;
 
 /// 4-point Gauss–Legendre on [0, 1].
 const GL4_X: [f64; 4] = [
@@ -77,29 +77,42 @@ fn graded(x0: f64, x1: f64, ne: usize, h0: f64, h1: f64, out: &mut [f64], n: &mu
     let len = x1 - x0;
     let ne = ne.max(2);
     let (nl, nr) = (ne / 2, ne - ne / 2);
-    // Sizes of one side: h, h g, h g², … summing to `part`; g ≥ 1 by bisection.
+    // Sizes of one side: h, h g, h g², … summing to `part`; g ≥ 1 by Newton's method on
+    // f(g) = h (1 + g + … + g^{m−1}) − part, which is increasing and convex for g ≥ 1 with
+    // f(1) ≤ 0: from a start above the root the iterates fall monotonically onto it (to
+    // rounding, within a few ulps), where bisection took 50 evaluations. One element per side
+    // (m = 1) needs no ratio.
     let ratio = |h: f64, m: usize, part: f64| -> f64 {
+        if m <= 1 {
+            return 1.0;
+        }
         let h = h.min(part / m as f64);
-        let f = |g: f64| {
-            if (g - 1.0).abs() < 1e-12 {
-                h * m as f64 - part
-            } else {
-                h * (g.powi(m as i32) - 1.0) / (g - 1.0) - part
+        let f_df = |g: f64| {
+            // Horner: s = Σ_{k<m} g^k and its derivative.
+            let (mut s, mut ds) = (0.0f64, 0.0f64);
+            for _ in 0..m {
+                ds = ds * g + s;
+                s = s * g + 1.0;
             }
+            (h * s - part, h * ds)
         };
-        let (mut lo, mut hi) = (1.0, 2.0);
-        while f(hi) < 0.0 {
-            hi *= 2.0;
+        let mut g = 2.0;
+        while f_df(g).0 < 0.0 {
+            g *= 2.0;
         }
-        for _ in 0..50 {
-            let mid = 0.5 * (lo + hi);
-            if f(mid) < 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
+        for _ in 0..200 {
+            let (f, df) = f_df(g);
+            if !(f > 0.0 && df > 0.0) {
+                break;
             }
+            // Never NaN: f64::max returns 1 for a NaN step.
+            let next = (g - f / df).max(1.0);
+            if next >= g {
+                break;
+            }
+            g = next;
         }
-        0.5 * (lo + hi)
+        g
     };
     let xm = x0 + len * nl as f64 / ne as f64;
     let gl = ratio(h0, nl, xm - x0);
@@ -131,7 +144,8 @@ fn graded(x0: f64, x1: f64, ne: usize, h0: f64, h1: f64, out: &mut [f64], n: &mu
 
 /// Warping boundary-layer length √(EΓ/GJ) of the rectangle w × t.
 fn layer(w: f64, t: f64, e: f64, g: f64) -> f64 {
-    (e * rect_warping_constant(w, t) / (g * rect_torsion_constant(w, t))).sqrt()
+    let (j, warping) = rect_torsion_warping(w, t);
+    (e * warping / (g * j)).sqrt()
 }
 
 /// Node coordinates of the half mesh x ≥ 0 (0 first); returns the count.
@@ -188,29 +202,81 @@ fn half_nodes(profile: &Profile, mesh: TorsionMesh, e: f64, g: f64, out: &mut [f
 /// Torsional stiffness T/θ (N·mm/rad) of a rectangular-section hinge between its two blank end
 /// faces, warping restrained at both faces. `e`, `g` in MPa.
 pub fn vlasov_torsion_stiffness(profile: &Profile, e: f64, g: f64, mesh: TorsionMesh) -> f64 {
-    let mut half = [0.0; MAX_NODES / 2];
-    let nh = half_nodes(profile, mesh, e, g, &mut half);
-    // Full mesh: mirror.
-    let mut xs = [0.0; MAX_NODES];
-    let mut n = 0;
-    for i in (1..nh).rev() {
-        xs[n] = -half[i];
-        n += 1;
-    }
-    for &x in &half[..nh] {
-        xs[n] = x;
-        n += 1;
-    }
-    let w = profile.w;
-    let props = |x: f64| -> (f64, f64) {
-        let t = if x.abs() > profile.half_notch {
-            profile.effective_thickness(x)
-        } else {
-            profile.thickness(x)
-        };
-        (g * rect_torsion_constant(w, t), e * rect_warping_constant(w, t))
+    let half = HalfMesh::new(profile, mesh, e, g);
+    half.solve(half.n)
+}
+
+/// [`vlasov_torsion_stiffness`] of a hinge in its blank and of its notch alone (`notch`: the
+/// same profile with no blank). The notch's mesh is the hinge's mesh inside the notch (the same
+/// pieces give the same nodes), so its section properties are the hinge's, sampled once.
+pub fn vlasov_torsion_pair(profile: &Profile, notch: &Profile, e: f64, g: f64, mesh: TorsionMesh) -> (f64, f64) {
+    let whole = HalfMesh::new(profile, mesh, e, g);
+    let mut own = [0.0; MAX_NODES / 2];
+    let nn = half_nodes(notch, mesh, e, g, &mut own);
+    let k_notch = if nn <= whole.n && own[..nn] == whole.x[..nn] {
+        whole.solve(nn)
+    } else {
+        vlasov_torsion_stiffness(notch, e, g, mesh)
     };
-    torsion_fe(&xs[..n], props)
+    (whole.solve(whole.n), k_notch)
+}
+
+/// The nodes of the half mesh x ≥ 0 and (GJ, EΓ) at the 4 Gauss points of each of its
+/// intervals: the profile is symmetric, so the mirrored half of the mesh takes the same values
+/// (at the mirrored points, which agree with the directly computed ones to rounding).
+struct HalfMesh {
+    x: [f64; MAX_NODES / 2],
+    n: usize,
+    gp: [[(f64, f64); 4]; MAX_NODES / 2],
+}
+
+impl HalfMesh {
+    fn new(profile: &Profile, mesh: TorsionMesh, e: f64, g: f64) -> Self {
+        let mut x = [0.0; MAX_NODES / 2];
+        let n = half_nodes(profile, mesh, e, g, &mut x);
+        let w = profile.w;
+        // The last thickness and its (GJ, EΓ): the blanks are one section each.
+        let mut last = (f64::NAN, (0.0, 0.0));
+        let mut gp = [[(0.0, 0.0); 4]; MAX_NODES / 2];
+        for i in 0..n - 1 {
+            for q in 0..4 {
+                let xq = x[i] + GL4_X[q] * (x[i + 1] - x[i]);
+                let t = if xq.abs() > profile.half_notch {
+                    profile.effective_thickness(xq)
+                } else {
+                    profile.thickness(xq)
+                };
+                if t != last.0 {
+                    let (j, warping) = rect_torsion_warping(w, t);
+                    last = (t, (g * j, e * warping));
+                }
+                gp[i][q] = last.1;
+            }
+        }
+        HalfMesh { x, n, gp }
+    }
+
+    /// T/θ of the mirrored mesh of the first `nh` half nodes (warping restrained at ±x[nh − 1]).
+    fn solve(&self, nh: usize) -> f64 {
+        let mut xs = [0.0; MAX_NODES];
+        let mut gp = [[(0.0, 0.0); 4]; MAX_NODES];
+        let mut n = 0;
+        for i in (1..nh).rev() {
+            xs[n] = -self.x[i];
+            // Interval [−x[i], −x[i−1]] mirrors [x[i−1], x[i]]: Gauss points in reverse order.
+            let h = self.gp[i - 1];
+            gp[n] = [h[3], h[2], h[1], h[0]];
+            n += 1;
+        }
+        for i in 0..nh {
+            xs[n] = self.x[i];
+            if i + 1 < nh {
+                gp[n] = self.gp[i];
+            }
+            n += 1;
+        }
+        torsion_fe_sampled(&xs[..n], &gp)
+    }
 }
 
 /// Shortest FE element relative to the local warping boundary-layer length √(EΓ/GJ).
@@ -231,7 +297,7 @@ pub const MIN_ELEMENT_PER_LAYER: f64 = 1e-3;
 ///
 /// Every interval of `xs` is integrated with 4 Gauss points; intervals much shorter than the
 /// local warping layer are merged into their neighbours' elements ([`MIN_ELEMENT_PER_LAYER`]).
-pub fn torsion_fe(xs: &[f64], props: impl Fn(f64) -> (f64, f64)) -> f64 {
+pub fn torsion_fe(xs: &[f64], mut props: impl FnMut(f64) -> (f64, f64)) -> f64 {
     // Properties at the 4 Gauss points of every interval of xs (sampled once).
     let mut gp = [[(0.0f64, 0.0f64); 4]; MAX_NODES];
     for i in 0..xs.len() - 1 {
@@ -239,16 +305,23 @@ pub fn torsion_fe(xs: &[f64], props: impl Fn(f64) -> (f64, f64)) -> f64 {
             gp[i][q] = props(xs[i] + GL4_X[q] * (xs[i + 1] - xs[i]));
         }
     }
+    torsion_fe_sampled(xs, &gp)
+}
+
+/// [`torsion_fe`] with the properties (GJ, EΓ) at the 4 Gauss points of interval i of `xs`
+/// given in `gp[i]`.
+fn torsion_fe_sampled(xs: &[f64], gp: &[[(f64, f64); 4]; MAX_NODES]) -> f64 {
     // Element nodes: indices into xs, each element at least MIN_ELEMENT_PER_LAYER × the largest
     // warping layer √(EΓ/GJ) of the intervals it covers.
     let layer_of = |i: usize| -> f64 {
-        gp[i].iter().fold(0.0f64, |m, &(gj, eg)| {
-            if gj > 0.0 && eg > 0.0 {
-                m.max((eg / gj).sqrt())
-            } else {
-                m
-            }
-        })
+        // √ is monotone: the root of the largest ratio.
+        gp[i]
+            .iter()
+            .fold(
+                0.0f64,
+                |m, &(gj, eg)| if gj > 0.0 && eg > 0.0 { m.max(eg / gj) } else { m },
+            )
+            .sqrt()
     };
     let mut keep = [0usize; MAX_NODES];
     let mut nk = 1;
@@ -276,14 +349,14 @@ pub fn torsion_fe(xs: &[f64], props: impl Fn(f64) -> (f64, f64)) -> f64 {
     let mut load = [0.0f64; 2 * MAX_NODES];
     for el in 0..nn - 1 {
         let (xa, xb) = (xs[keep[el]], xs[keep[el + 1]]);
-        let le = xb - xa;
+        let inv_le = 1.0 / (xb - xa);
         let mut ke = [[0.0f64; 3]; 3];
         let mut fe = [0.0f64; 3];
         for sub in keep[el]..keep[el + 1] {
             let (s0, s1) = (xs[sub], xs[sub + 1]);
             for q in 0..4 {
                 let x = s0 + GL4_X[q] * (s1 - s0);
-                let xi = (x - xa) / le;
+                let xi = (x - xa) * inv_le;
                 let (gj, eg) = gp[sub][q];
                 let wq = GL4_W[q] * (s1 - s0);
                 // Quadratic Lagrange shape functions for φ (start, middle, end) and their
@@ -293,7 +366,11 @@ pub fn torsion_fe(xs: &[f64], props: impl Fn(f64) -> (f64, f64)) -> f64 {
                     4.0 * xi * (1.0 - xi),
                     xi * (2.0 * xi - 1.0),
                 ];
-                let d1 = [(4.0 * xi - 3.0) / le, (4.0 - 8.0 * xi) / le, (4.0 * xi - 1.0) / le];
+                let d1 = [
+                    (4.0 * xi - 3.0) * inv_le,
+                    (4.0 - 8.0 * xi) * inv_le,
+                    (4.0 * xi - 1.0) * inv_le,
+                ];
                 for a in 0..3 {
                     fe[a] += wq * n[a];
                     for b in a..3 {
@@ -322,8 +399,8 @@ pub fn torsion_fe(xs: &[f64], props: impl Fn(f64) -> (f64, f64)) -> f64 {
         k[dof][0] = 1.0;
         load[dof] = 0.0;
     }
-    let mut f = load;
-    // Banded Cholesky K = L Lᵀ, L stored in place (l[i][d] = L(i + d, i)).
+    // Banded Cholesky K = L Lᵀ, L stored in place (l[i][d] = L(i + d, i), d ≥ 1) with the
+    // reciprocal of the diagonal in l[i][0] (one division per row on the serial chain).
     for i in 0..ndof {
         let mut diag = k[i][0];
         for d in 1..4 {
@@ -331,8 +408,8 @@ pub fn torsion_fe(xs: &[f64], props: impl Fn(f64) -> (f64, f64)) -> f64 {
                 diag -= k[i - d][d] * k[i - d][d];
             }
         }
-        let lii = diag.sqrt();
-        k[i][0] = lii;
+        let inv = 1.0 / diag.sqrt();
+        k[i][0] = inv;
         for d in 1..4 {
             let r = i + d;
             if r >= ndof {
@@ -345,10 +422,13 @@ pub fn torsion_fe(xs: &[f64], props: impl Fn(f64) -> (f64, f64)) -> f64 {
                     s -= k[i - e][d + e] * k[i - e][e];
                 }
             }
-            k[i][d] = s / lii;
+            k[i][d] = s * inv;
         }
     }
-    // Forward L y = f.
+    // θ(end) = ∫φ dx = loadᵀ φ = loadᵀ K⁻¹ load = |y|², y = L⁻¹ load (the compliance, > 0 for
+    // an SPD system): forward substitution only.
+    let f = &mut load;
+    let mut theta = 0.0;
     for i in 0..ndof {
         let mut s = f[i];
         for d in 1..4 {
@@ -356,19 +436,8 @@ pub fn torsion_fe(xs: &[f64], props: impl Fn(f64) -> (f64, f64)) -> f64 {
                 s -= k[i - d][d] * f[i - d];
             }
         }
-        f[i] = s / k[i][0];
+        f[i] = s * k[i][0];
+        theta += f[i] * f[i];
     }
-    // Backward Lᵀ x = y.
-    for i in (0..ndof).rev() {
-        let mut s = f[i];
-        for d in 1..4 {
-            if i + d < ndof {
-                s -= k[i][d] * f[i + d];
-            }
-        }
-        f[i] = s / k[i][0];
-    }
-    // θ(end) = ∫φ dx = loadᵀ φ (the compliance, > 0 for an SPD system).
-    let theta: f64 = load[..ndof].iter().zip(&f[..ndof]).map(|(a, b)| a * b).sum();
     1.0 / theta
 }

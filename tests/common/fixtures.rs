@@ -94,3 +94,22 @@ pub fn ruiz2019_prs(gamma_deg: f64) -> Prs {
 pub fn pantilt_corner_filleted_hinge() -> HingeSpec {
     hinge_of(include_str!("../../cases/pantilt_hinge_corner_filleted.json"))
 }
+
+/// One hinge of every family in the stage's 10 × 10 leg blank, 20 mm each side: the Ruiz et al.
+/// (2019) revolute notch (R 8, t 2) and spherical neck (l 5, t 3, R 4), and comparable
+/// elliptical (ax 6, ay 3, t 1.2), corner-filleted (l 8, R 2, t 1) and leaf (l 6, t 0.8) notches.
+pub fn hinge_families() -> [HingeSpec; 5] {
+    use flexfem::hinge::Contour;
+    [
+        Contour::Circular { r: 8.0, t: 2.0 },
+        Contour::Elliptical {
+            ax: 6.0,
+            ay: 3.0,
+            t: 1.2,
+        },
+        Contour::CornerFilleted { l: 8.0, r: 2.0, t: 1.0 },
+        Contour::Leaf { l: 6.0, t: 0.8 },
+        Contour::SphericalNeck { l: 5.0, t: 3.0, r: 4.0 },
+    ]
+    .map(|c| HingeSpec::in_blank(c, 10.0, 10.0, 20.0))
+}
