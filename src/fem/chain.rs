@@ -1,0 +1,416 @@
+//! Exact condensation of serial chains for linear analyses.
+//!
+//! A chain is a path of two-node beam or flexibility elements whose inner nodes join exactly two
+//! elements and carry nothing else: no load or prescribed displacement in any load case, no
+//! support, rigid link, tie, mass or node frame, and no request (`keep`). With its inner nodes
+//! unloaded, a chain is statically determinate between its end nodes a and b: a force f_b at b
+//! (global axes) reaches every element unchanged but for the rigid transfer to the element's
+//! far node q, f_q = R(x_b − x_q)ᵀ f_b, and the motion of b relative to a carried rigidly,
+//! δ = u_b − R(x_b − x_a)·u_a, is the sum of the elements' relative motions carried to b:
+//!
+//! ```text
+//! C_b = Σₑ R(x_b − x_q) C_q R(x_b − x_q)ᵀ,   δ = C_b f_b,
+//! ```
+//!
+//! with C_q the element's cantilever tip compliance at its far node in global axes
+//! (beams: [`cantilever_compliance`]; flexibility elements: their compliance; an element
+//! pointing back towards a has C_q = R(x_s − x_t) C_t R(x_s − x_t)ᵀ, s and t its nodes 1 and
+//! 2). The chain is therefore exactly one [`FlexElement`] from a to b with compliance C_b: its
+//! 12×12 stiffness Bᵀ C_b⁻¹ B is the static condensation of the chain's stiffness onto the
+//! end nodes (J. S. Przemieniecki, Theory of Matrix Structural Analysis, 1968, §6.5 and §9.6,
+//! flexibility of a statically determinate structure and the condensed stiffness).
+//!
+//! Inner-node results are recovered from the end displacements: f_b = C_b⁻¹ δ, then walking
+//! from a, u_q = R(x_q − x_p)·u_p + C_q f_q for each element from p to q; the elements'
+//! results then come from their own recovery on the full displacement vector.
+
+use super::element::cantilever_compliance;
+use super::error::FemError;
+use super::model::{Element, FlexElement, LoadCase, Model};
+use super::recovery;
+use super::results::CaseResult;
+use super::transform::{rigid_arm, t6};
+use nalgebra::{Matrix6, Vector3, Vector6};
+
+/// One serial chain: its nodes from end a to end b and its elements in order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Chain {
+    /// Nodes a, inner…, b (original numbering).
+    pub nodes: Vec<usize>,
+    /// Elements from a to b (original numbering).
+    pub elements: Vec<usize>,
+    /// Per element, its compliance at its far node (towards b), global axes.
+    flex: Vec<Matrix6<f64>>,
+    /// C_b: compliance of b relative to clamped a, global axes.
+    c_b: Matrix6<f64>,
+    /// C_b⁻¹.
+    k_b: Matrix6<f64>,
+}
+
+/// A model with its serial chains condensed, and the maps back to the original.
+#[derive(Debug, Clone)]
+pub struct Condensed {
+    /// The reduced model: kept nodes, the elements outside chains, one flexibility element per
+    /// chain (after them), supports, links, ties, masses and frames renumbered. No load cases.
+    pub model: Model,
+    /// The chains condensed (original numbering).
+    pub chains: Vec<Chain>,
+    /// Original node of each reduced node.
+    pub original_node: Vec<usize>,
+    /// Reduced node of each original node (`None` for inner chain nodes).
+    pub reduced_node: Vec<Option<usize>>,
+    /// Reduced element of each original element outside chains.
+    reduced_element: Vec<Option<usize>>,
+}
+
+/// Nodes that must stay: anything attached to them besides two chain elements.
+fn pinned(model: &Model, cases: &[&LoadCase], keep: &[usize]) -> Vec<bool> {
+    let mut pin = vec![false; model.nodes.len()];
+    let mut set = |n: usize| {
+        if let Some(p) = pin.get_mut(n) {
+            *p = true;
+        }
+    };
+    keep.iter().for_each(|&n| set(n));
+    model.supports.iter().for_each(|s| set(s.node));
+    model.masses.iter().for_each(|m| set(m.node));
+    model.frames.keys().for_each(|&n| set(n));
+    for l in &model.rigid_links {
+        set(l.master);
+        l.slaves.iter().for_each(|&s| set(s));
+    }
+    for t in &model.ties {
+        set(t.a);
+        set(t.b);
+    }
+    for c in cases.iter().copied().chain(model.load_cases.iter()) {
+        c.forces
+            .iter()
+            .filter(|f| f.f.iter().any(|&v| v != 0.0))
+            .for_each(|f| set(f.node));
+        c.displacements.iter().for_each(|p| set(p.node));
+    }
+    pin
+}
+
+/// Serial chains of `model` (see the module docs); `cases` are the load cases to be solved and
+/// `keep` nodes whose results are wanted directly.
+pub fn find_chains(model: &Model, cases: &[&LoadCase], keep: &[usize]) -> Vec<(Vec<usize>, Vec<usize>)> {
+    let nn = model.nodes.len();
+    let pin = pinned(model, cases, keep);
+    // Incident elements per node (at most 3 recorded: more means "not inner").
+    let mut inc: Vec<[usize; 3]> = vec![[usize::MAX; 3]; nn];
+    let mut deg = vec![0usize; nn];
+    for (ie, e) in model.elements.iter().enumerate() {
+        let mut nodes = e.nodes();
+        nodes.sort_unstable();
+        nodes.dedup();
+        for n in nodes {
+            if n < nn {
+                if deg[n] < 3 {
+                    inc[n][deg[n]] = ie;
+                }
+                deg[n] += 1;
+            }
+        }
+    }
+    let serial = |ie: usize| matches!(model.elements[ie], Element::Beam(_) | Element::Flex(_));
+    let inner = |n: usize| deg[n] == 2 && !pin[n] && serial(inc[n][0]) && serial(inc[n][1]);
+    let other = |ie: usize, n: usize| {
+        let [p, q] = model.elements[ie].end_nodes();
+        if p == n {
+            q
+        } else {
+            p
+        }
+    };
+    let mut seen = vec![false; nn];
+    let mut chains = Vec::new();
+    for start in 0..nn {
+        if !inner(start) || seen[start] {
+            continue;
+        }
+        // Walk both ways from an inner node to the chain's ends.
+        let walk = |first: usize, seen: &mut Vec<bool>| {
+            let (mut nodes, mut elems) = (Vec::new(), vec![first]);
+            let (mut n, mut e) = (other(first, start), first);
+            while inner(n) && n != start {
+                seen[n] = true;
+                nodes.push(n);
+                e = if inc[n][0] == e { inc[n][1] } else { inc[n][0] };
+                elems.push(e);
+                n = other(e, n);
+            }
+            nodes.push(n);
+            (nodes, elems)
+        };
+        seen[start] = true;
+        let (left, le) = walk(inc[start][0], &mut seen);
+        let (right, re) = walk(inc[start][1], &mut seen);
+        let (a, b) = (*left.last().expect("end"), *right.last().expect("end"));
+        if a == b || left.contains(&start) {
+            continue; // a closed ring: nothing to condense onto two ends
+        }
+        let nodes: Vec<usize> = left.into_iter().rev().chain([start]).chain(right).collect();
+        let elems: Vec<usize> = le.into_iter().rev().chain(re).collect();
+        chains.push((nodes, elems));
+    }
+    chains
+}
+
+/// Element `ie`'s cantilever tip compliance at node 2 relative to node 1, global axes.
+fn element_compliance(model: &Model, ie: usize) -> Result<Matrix6<f64>, FemError> {
+    let (lam, l) = model.element_frame(ie)?;
+    let local = match &model.elements[ie] {
+        Element::Beam(b) => {
+            let (p, e, g) = b.props(ie)?;
+            cantilever_compliance(e, g, &p, l, b.shear)
+        }
+        Element::Flex(f) => {
+            f.tip_stiffness(ie)?; // the element's own check: symmetric positive definite
+            Matrix6::from_fn(|i, j| f.compliance[i][j])
+        }
+        _ => return Err(FemError::BadInput(format!("element {ie} is not a beam"))),
+    };
+    let t = t6(&lam);
+    Ok(t.transpose() * local * t)
+}
+
+fn x(model: &Model, n: usize) -> Vector3<f64> {
+    Vector3::from(model.nodes[n])
+}
+
+impl Chain {
+    fn new(model: &Model, nodes: Vec<usize>, elements: Vec<usize>) -> Result<Chain, FemError> {
+        let b = x(model, *nodes.last().expect("chain end"));
+        let mut c_b = Matrix6::zeros();
+        let mut flex = Vec::with_capacity(elements.len());
+        for (k, &ie) in elements.iter().enumerate() {
+            let c_t = element_compliance(model, ie)?;
+            let [s, t] = model.elements[ie].end_nodes();
+            let q = nodes[k + 1];
+            let c_q = if q == t {
+                c_t
+            } else {
+                let r = rigid_arm(&(x(model, s) - x(model, t)));
+                r * c_t * r.transpose()
+            };
+            let r = rigid_arm(&(b - x(model, q)));
+            c_b += r * c_q * r.transpose();
+            flex.push(c_q);
+        }
+        let c_b = (c_b + c_b.transpose()) * 0.5;
+        let k_b = c_b
+            .cholesky()
+            .map(|ch| ch.inverse())
+            .ok_or_else(|| FemError::BadElement {
+                element: elements[0],
+                reason: "the serial chain starting here has no positive definite compliance".into(),
+            })?;
+        Ok(Chain {
+            nodes,
+            elements,
+            flex,
+            c_b,
+            k_b,
+        })
+    }
+
+    /// Writes the displacements of the inner nodes into `u` (6 per original node) from those of
+    /// the two ends.
+    pub fn recover(&self, model: &Model, u: &mut [f64]) {
+        let get = |u: &[f64], n: usize| Vector6::from_column_slice(&u[6 * n..6 * n + 6]);
+        let (a, b) = (self.nodes[0], *self.nodes.last().expect("chain end"));
+        let xb = x(model, b);
+        let delta = get(u, b) - rigid_arm(&(xb - x(model, a))) * get(u, a);
+        let f_b = self.k_b * delta;
+        for k in 1..self.nodes.len() - 1 {
+            let (p, q) = (self.nodes[k - 1], self.nodes[k]);
+            let xq = x(model, q);
+            let f_q = rigid_arm(&(xb - xq)).transpose() * f_b;
+            let uq = rigid_arm(&(xq - x(model, p))) * get(u, p) + self.flex[k - 1] * f_q;
+            u[6 * q..6 * q + 6].copy_from_slice(uq.as_slice());
+        }
+    }
+}
+
+/// A global axis far from the direction `d`, as the condensed element's `up`.
+fn up_for(d: Vector3<f64>) -> [f64; 3] {
+    let i = (0..3).min_by(|&i, &j| d[i].abs().total_cmp(&d[j].abs())).unwrap_or(2);
+    let mut up = [0.0; 3];
+    up[i] = 1.0;
+    up
+}
+
+impl Condensed {
+    /// Condenses every serial chain of `model` for the load cases `cases`, keeping the nodes
+    /// `keep` (see the module docs). A model without chains comes back unchanged.
+    pub fn new(model: &Model, cases: &[&LoadCase], keep: &[usize]) -> Result<Condensed, FemError> {
+        let chains = find_chains(model, cases, keep)
+            .into_iter()
+            .map(|(n, e)| Chain::new(model, n, e))
+            .collect::<Result<Vec<_>, _>>()?;
+        let mut reduced_node = vec![Some(0); model.nodes.len()];
+        let mut in_chain = vec![false; model.elements.len()];
+        for c in &chains {
+            c.nodes[1..c.nodes.len() - 1]
+                .iter()
+                .for_each(|&n| reduced_node[n] = None);
+            c.elements.iter().for_each(|&e| in_chain[e] = true);
+        }
+        let mut out = Model::new();
+        let mut original_node = Vec::new();
+        for (n, r) in reduced_node.iter_mut().enumerate() {
+            if r.is_some() {
+                *r = Some(out.add_node(model.nodes[n]));
+                original_node.push(n);
+            }
+        }
+        let map = |n: usize| reduced_node[n].expect("kept node");
+        let mut reduced_element = vec![None; model.elements.len()];
+        for (ie, e) in model.elements.iter().enumerate() {
+            if !in_chain[ie] {
+                reduced_element[ie] = Some(out.add_element(renumber_element(e, &map)));
+            }
+        }
+        for c in &chains {
+            let (a, b) = (c.nodes[0], *c.nodes.last().expect("chain end"));
+            let up = up_for(x(model, b) - x(model, a));
+            let (lam, _) = super::transform::beam_frame(model.nodes[a], model.nodes[b], up).ok_or_else(|| {
+                FemError::BadElement {
+                    element: c.elements[0],
+                    reason: "the serial chain starting here has coincident end nodes".into(),
+                }
+            })?;
+            let t = t6(&lam);
+            let local = t * c.c_b * t.transpose();
+            let local = (local + local.transpose()) * 0.5;
+            out.add_element(Element::Flex(FlexElement {
+                nodes: [map(a), map(b)],
+                compliance: std::array::from_fn(|i| std::array::from_fn(|j| local[(i, j)])),
+                up,
+            }));
+        }
+        out.supports = model
+            .supports
+            .iter()
+            .map(|s| super::Support {
+                node: map(s.node),
+                ..*s
+            })
+            .collect();
+        out.rigid_links = model
+            .rigid_links
+            .iter()
+            .map(|l| super::RigidLink {
+                master: map(l.master),
+                slaves: l.slaves.iter().map(|&s| map(s)).collect(),
+            })
+            .collect();
+        out.masses = model
+            .masses
+            .iter()
+            .map(|m| super::PointMass {
+                node: map(m.node),
+                ..*m
+            })
+            .collect();
+        out.frames = model.frames.iter().map(|(&n, f)| (map(n), *f)).collect();
+        out.ties = model
+            .ties
+            .iter()
+            .map(|t| super::Tie {
+                a: map(t.a),
+                b: map(t.b),
+                ..*t
+            })
+            .collect();
+        out.load_cases = model
+            .load_cases
+            .iter()
+            .map(|c| Self::map_case(&reduced_node, c))
+            .collect();
+        Ok(Condensed {
+            model: out,
+            chains,
+            original_node,
+            reduced_node,
+            reduced_element,
+        })
+    }
+
+    fn map_case(reduced_node: &[Option<usize>], c: &LoadCase) -> LoadCase {
+        let map = |n: usize| reduced_node.get(n).copied().flatten().unwrap_or(usize::MAX);
+        LoadCase {
+            name: c.name.clone(),
+            forces: c
+                .forces
+                .iter()
+                .filter(|f| f.f.iter().any(|&v| v != 0.0) || reduced_node.get(f.node).is_some_and(|r| r.is_some()))
+                .map(|f| super::NodalLoad {
+                    node: map(f.node),
+                    ..*f
+                })
+                .collect(),
+            displacements: c
+                .displacements
+                .iter()
+                .map(|p| super::Prescribed {
+                    node: map(p.node),
+                    ..*p
+                })
+                .collect(),
+        }
+    }
+
+    /// A load case of the original model in the reduced numbering (loads only on kept nodes:
+    /// the chains were found for these cases).
+    pub fn case(&self, c: &LoadCase) -> LoadCase {
+        Self::map_case(&self.reduced_node, c)
+    }
+
+    /// The reduced node of an original node (`None` for an inner chain node).
+    pub fn node(&self, n: usize) -> Option<usize> {
+        self.reduced_node.get(n).copied().flatten()
+    }
+
+    /// The original model's result from the reduced model's result `r`: inner-node
+    /// displacements recovered, chain elements' results from their own recovery, the rest
+    /// (reactions, statics, other elements) renumbered.
+    pub fn expand(&self, original: &Model, r: CaseResult) -> Result<CaseResult, FemError> {
+        let mut u = vec![0.0; original.n_dofs()];
+        for (red, &n) in self.original_node.iter().enumerate() {
+            u[6 * n..6 * n + 6].copy_from_slice(&r.displacements[red]);
+        }
+        for c in &self.chains {
+            c.recover(original, &mut u);
+        }
+        let mut reduced = r.elements.into_iter().map(Some).collect::<Vec<_>>();
+        let elements = (0..original.elements.len())
+            .map(|ie| match self.reduced_element[ie] {
+                Some(k) => reduced[k]
+                    .take()
+                    .ok_or_else(|| FemError::BadInput("element result reused".into())),
+                None => recovery::element_result(original, ie, &u),
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let reactions = r.reactions.iter().map(|&(n, f)| (self.original_node[n], f)).collect();
+        let displacements = u.chunks_exact(6).map(|c| std::array::from_fn(|i| c[i])).collect();
+        Ok(CaseResult::new(&r.name, displacements, reactions, elements, r.statics))
+    }
+}
+
+/// `e` with its nodes renumbered by `map`.
+fn renumber_element(e: &Element, map: &impl Fn(usize) -> usize) -> Element {
+    let mut e = e.clone();
+    match &mut e {
+        Element::Beam(b) => b.nodes = b.nodes.map(map),
+        Element::Flex(f) => f.nodes = f.nodes.map(map),
+        Element::Spring(s) => {
+            s.a = map(s.a);
+            s.b = s.b.map(map);
+        }
+        Element::Shell4(s) => s.nodes = s.nodes.map(map),
+    }
+    e
+}
