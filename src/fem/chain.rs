@@ -28,7 +28,8 @@ use super::element::cantilever_compliance;
 use super::error::FemError;
 use super::model::{Element, FlexElement, LoadCase, Model};
 use super::recovery;
-use super::results::CaseResult;
+use super::results::{CaseResult, ElementResult};
+use super::section::SectionProps;
 use super::transform::{rigid_arm, t6};
 use nalgebra::{Matrix6, Vector3, Vector6};
 
@@ -41,6 +42,8 @@ pub struct Chain {
     pub elements: Vec<usize>,
     /// Per element, its compliance at its far node (towards b), global axes.
     flex: Vec<Matrix6<f64>>,
+    /// Per element, a beam's section properties (for its stresses).
+    props: Vec<Option<SectionProps>>,
     /// C_b: compliance of b relative to clamped a, global axes.
     c_b: Matrix6<f64>,
     /// C_b⁻¹.
@@ -59,8 +62,8 @@ pub struct Condensed {
     pub original_node: Vec<usize>,
     /// Reduced node of each original node (`None` for inner chain nodes).
     pub reduced_node: Vec<Option<usize>>,
-    /// Reduced element of each original element outside chains.
-    reduced_element: Vec<Option<usize>>,
+    /// Original element of each reduced element (`None` for the chains' elements).
+    original_element: Vec<Option<usize>>,
 }
 
 /// Nodes that must stay: anything attached to them besides two chain elements.
@@ -158,22 +161,41 @@ pub fn find_chains(model: &Model, cases: &[&LoadCase], keep: &[usize]) -> Vec<(V
     chains
 }
 
-/// Element `ie`'s cantilever tip compliance at node 2 relative to node 1, global axes.
-fn element_compliance(model: &Model, ie: usize) -> Result<Matrix6<f64>, FemError> {
+/// Element `ie`'s cantilever tip compliance at node 2 relative to node 1, global axes, and a
+/// beam's section properties, E and G (`prev`: those of the previous beam, reused when the
+/// section and material are the same).
+fn element_compliance(
+    model: &Model,
+    ie: usize,
+    prev: Option<(&Element, &(SectionProps, f64, f64))>,
+) -> Result<(Matrix6<f64>, Option<(SectionProps, f64, f64)>), FemError> {
     let (lam, l) = model.element_frame(ie)?;
-    let local = match &model.elements[ie] {
+    let (local, props) = match &model.elements[ie] {
         Element::Beam(b) => {
-            let (p, e, g) = b.props(ie)?;
-            cantilever_compliance(e, g, &p, l, b.shear)
+            let props = match prev {
+                Some((Element::Beam(q), p)) if q.section == b.section && q.material == b.material => *p,
+                _ => b.props(ie)?,
+            };
+            let (p, e, g) = &props;
+            (cantilever_compliance(*e, *g, p, l, b.shear), Some(props))
         }
         Element::Flex(f) => {
-            f.tip_stiffness(ie)?; // the element's own check: symmetric positive definite
-            Matrix6::from_fn(|i, j| f.compliance[i][j])
+            let c = Matrix6::from_fn(|i, j| f.compliance[i][j]);
+            // The element's own check (flex_tip_stiffness): finite, symmetric, positive definite.
+            let scale = c.amax();
+            if !(scale > 0.0
+                && scale.is_finite()
+                && (c - c.transpose()).amax() <= 1e-9 * scale
+                && c.cholesky().is_some())
+            {
+                f.tip_stiffness(ie)?;
+            }
+            (c, None)
         }
         _ => return Err(FemError::BadInput(format!("element {ie} is not a beam"))),
     };
     let t = t6(&lam);
-    Ok(t.transpose() * local * t)
+    Ok((t.transpose() * local * t, props))
 }
 
 fn x(model: &Model, n: usize) -> Vector3<f64> {
@@ -185,8 +207,13 @@ impl Chain {
         let b = x(model, *nodes.last().expect("chain end"));
         let mut c_b = Matrix6::zeros();
         let mut flex = Vec::with_capacity(elements.len());
+        let mut props: Vec<Option<(SectionProps, f64, f64)>> = Vec::with_capacity(elements.len());
         for (k, &ie) in elements.iter().enumerate() {
-            let c_t = element_compliance(model, ie)?;
+            let prev = k
+                .checked_sub(1)
+                .and_then(|j| props[j].as_ref().map(|p| (&model.elements[elements[j]], p)));
+            let (c_t, p) = element_compliance(model, ie, prev)?;
+            props.push(p);
             let [s, t] = model.elements[ie].end_nodes();
             let q = nodes[k + 1];
             let c_q = if q == t {
@@ -211,14 +238,15 @@ impl Chain {
             nodes,
             elements,
             flex,
+            props: props.into_iter().map(|p| p.map(|p| p.0)).collect(),
             c_b,
             k_b,
         })
     }
 
     /// Writes the displacements of the inner nodes into `u` (6 per original node) from those of
-    /// the two ends.
-    pub fn recover(&self, model: &Model, u: &mut [f64]) {
+    /// the two ends; returns the chain's end force at b, f_b = C_b⁻¹ δ (global axes).
+    pub fn recover(&self, model: &Model, u: &mut [f64]) -> Vector6<f64> {
         let get = |u: &[f64], n: usize| Vector6::from_column_slice(&u[6 * n..6 * n + 6]);
         let (a, b) = (self.nodes[0], *self.nodes.last().expect("chain end"));
         let xb = x(model, b);
@@ -231,6 +259,38 @@ impl Chain {
             let uq = rigid_arm(&(xq - x(model, p))) * get(u, p) + self.flex[k - 1] * f_q;
             u[6 * q..6 * q + 6].copy_from_slice(uq.as_slice());
         }
+        f_b
+    }
+
+    /// The results of the chain's elements (in chain order) for the end force `f_b` of
+    /// [`Chain::recover`]: element from p to q carries f_q = R(x_b − x_q)ᵀ f_b at q and
+    /// f_p = −R(x_q − x_p)ᵀ f_q at p, strain energy ½ f_qᵀ C_q f_q.
+    pub fn element_results(&self, model: &Model, f_b: &Vector6<f64>) -> Result<Vec<ElementResult>, FemError> {
+        let xb = x(model, *self.nodes.last().expect("chain end"));
+        let mut out = Vec::with_capacity(self.elements.len());
+        for (k, &ie) in self.elements.iter().enumerate() {
+            let (p, q) = (self.nodes[k], self.nodes[k + 1]);
+            let xq = x(model, q);
+            let f_q = rigid_arm(&(xb - xq)).transpose() * f_b;
+            let f_p = -(rigid_arm(&(xq - x(model, p))).transpose() * f_q);
+            let (lam, _) = model.element_frame(ie)?;
+            let t = t6(&lam);
+            let (l_p, l_q) = (t * f_p, t * f_q);
+            let (f1, f2) = if model.elements[ie].end_nodes()[1] == q {
+                (l_p, l_q)
+            } else {
+                (l_q, l_p)
+            };
+            let f: [f64; 12] = std::array::from_fn(|i| if i < 6 { f1[i] } else { f2[i - 6] });
+            let energy = 0.5 * f_q.dot(&(self.flex[k] * f_q));
+            out.push(recovery::from_local_end_forces_with(
+                &model.elements[ie],
+                &f,
+                energy,
+                self.props[k].as_ref(),
+            ));
+        }
+        Ok(out)
     }
 }
 
@@ -267,10 +327,11 @@ impl Condensed {
             }
         }
         let map = |n: usize| reduced_node[n].expect("kept node");
-        let mut reduced_element = vec![None; model.elements.len()];
+        let mut original_element = Vec::new();
         for (ie, e) in model.elements.iter().enumerate() {
             if !in_chain[ie] {
-                reduced_element[ie] = Some(out.add_element(renumber_element(e, &map)));
+                out.add_element(renumber_element(e, &map));
+                original_element.push(Some(ie));
             }
         }
         for c in &chains {
@@ -335,7 +396,7 @@ impl Condensed {
             chains,
             original_node,
             reduced_node,
-            reduced_element,
+            original_element,
         })
     }
 
@@ -382,18 +443,22 @@ impl Condensed {
         for (red, &n) in self.original_node.iter().enumerate() {
             u[6 * n..6 * n + 6].copy_from_slice(&r.displacements[red]);
         }
+        let mut elements: Vec<Option<ElementResult>> = vec![None; original.elements.len()];
         for c in &self.chains {
-            c.recover(original, &mut u);
+            let f_b = c.recover(original, &mut u);
+            for (&ie, res) in c.elements.iter().zip(c.element_results(original, &f_b)?) {
+                elements[ie] = Some(res);
+            }
         }
-        let mut reduced = r.elements.into_iter().map(Some).collect::<Vec<_>>();
-        let elements = (0..original.elements.len())
-            .map(|ie| match self.reduced_element[ie] {
-                Some(k) => reduced[k]
-                    .take()
-                    .ok_or_else(|| FemError::BadInput("element result reused".into())),
-                None => recovery::element_result(original, ie, &u),
-            })
-            .collect::<Result<Vec<_>, _>>()?;
+        for (ie, res) in r.elements.into_iter().enumerate() {
+            if let Some(orig) = self.original_element.get(ie).copied().flatten() {
+                elements[orig] = Some(res);
+            }
+        }
+        let elements = elements
+            .into_iter()
+            .collect::<Option<Vec<_>>>()
+            .ok_or_else(|| FemError::BadInput("an element of the condensed model has no result".into()))?;
         let reactions = r.reactions.iter().map(|&(n, f)| (self.original_node[n], f)).collect();
         let displacements = u.chunks_exact(6).map(|c| std::array::from_fn(|i| c[i])).collect();
         Ok(CaseResult::new(&r.name, displacements, reactions, elements, r.statics))
