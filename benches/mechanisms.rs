@@ -26,7 +26,7 @@ fn inline(mesh: &Value, case: Value) -> Value {
 }
 
 fn run_text(text: &str) -> Value {
-    let parsed = flexfem::case::parse_in(text, Some(&root().join("cases"))).expect("case loads");
+    let parsed = flexfem::analysis::parse_in(text, Some(&root().join("cases"))).expect("case loads");
     flexfem::analysis::run(&parsed).expect("analysis runs").json
 }
 

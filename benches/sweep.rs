@@ -3,7 +3,7 @@
 //! second on 2 cores, end to end (parse, analyse, format the JSON line).
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use flexfem::case::{self, Case};
+use flexfem::analysis::{self, Case};
 use flexfem::design::sweep::{run_design, run_sweep, Shard};
 use std::collections::HashSet;
 use std::hint::black_box;
@@ -14,7 +14,7 @@ const SWEEP: &str = r#"{"analysis": "sweep",
  "vary": {"hinge.t": {"from": 1, "to": 3, "steps": 20}, "hinge.R": {"from": 3, "to": 12, "steps": 50}}}"#;
 
 fn bench(c: &mut Criterion) {
-    let Ok(Case::Sweep(s)) = case::parse(SWEEP) else {
+    let Ok(Case::Sweep(s)) = analysis::parse(SWEEP) else {
         panic!("bench sweep does not parse");
     };
     let sweep = s.build().expect("bench sweep builds");

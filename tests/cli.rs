@@ -109,8 +109,7 @@ fn markdown_format_prints_dms_table() {
 fn out_dir_gets_result_report_and_csv() {
     let d = tempdir("outdir");
     let case = root().join("cases/ruiz2019_kinematics.json");
-    let out = run_in(&d, &["run", case.to_str().unwrap(), "--out", "res"]);
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    run_ok_in(&d, &["run", case.to_str().unwrap(), "--out", "res"]);
     let v: serde_json::Value = serde_json::from_slice(&std::fs::read(d.join("res/result.json")).unwrap()).unwrap();
     assert_eq!(v["fkp"].as_array().unwrap().len(), 4);
     assert!(std::fs::read_to_string(d.join("res/report.md"))

@@ -119,8 +119,7 @@ fn stage_sweep_writes_lines_csv_and_plot() {
     // Issue 7: stage sweeps through `flexfem sweep`, `--out` gives CSV plus an SVG plot.
     let d = tempdir("stage_sweep");
     let case = root().join("cases/ruiz2019_stage_sweep.json");
-    let out = run_in(&d, &["sweep", case.to_str().unwrap(), "--out", "s.jsonl"]);
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    run_ok_in(&d, &["sweep", case.to_str().unwrap(), "--out", "s.jsonl"]);
     let lines = std::fs::read_to_string(d.join("s.jsonl")).unwrap();
     assert_eq!(lines.lines().count(), 256);
     // The design with the paper's hinges (t_rev 2, R_rev 8, t_sph 3, l_sph 5) equals a direct

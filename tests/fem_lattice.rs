@@ -110,9 +110,9 @@ fn lattice_200k_timing_and_matrix_market() {
 fn bundled_lattice_mesh_is_the_generator_model() {
     // meshes/lattice_3x3x3.json is `cubic_lattice(3, 20 mm, Ø2 mm struts, Al 7075, 100 N)`
     // written out in the case format: running it through `static` gives the generator's answer.
-    use flexfem::case::{self, Case};
+    use flexfem::analysis::{self, Case};
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let Case::Static(sc) = case::load(&root.join("cases/static_lattice.json")).unwrap() else {
+    let Case::Static(sc) = analysis::load(&root.join("cases/static_lattice.json")).unwrap() else {
         panic!()
     };
     let from_file = sc.model.build().unwrap();

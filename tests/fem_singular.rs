@@ -23,6 +23,14 @@ fn beam_line(n: usize) -> Model {
     m
 }
 
+/// A one-element bar clamped at node 0, plus two unconnected nodes at `a` and `b`; their indices.
+fn clamped_bar_with(a: [f64; 3], b: [f64; 3]) -> (Model, usize, usize) {
+    let mut m = beam_line(1);
+    m.supports.push(Support::clamp(0));
+    let (a, b) = (m.add_node(a), m.add_node(b));
+    (m, a, b)
+}
+
 fn err(m: &Model) -> FemError {
     System::new(m, &[], Parallelism::Sequential).unwrap_err()
 }
@@ -58,10 +66,7 @@ fn isolated_node_has_all_six_dofs_unconstrained() {
 
 #[test]
 fn unsupported_part_is_a_free_body() {
-    let mut m = beam_line(1);
-    m.supports.push(Support::clamp(0));
-    let a = m.add_node([0.0, 10.0, 0.0]);
-    let b = m.add_node([20.0, 10.0, 0.0]);
+    let (mut m, a, b) = clamped_bar_with([0.0, 10.0, 0.0], [20.0, 10.0, 0.0]);
     m.add_beam(Beam::new(a, b, Section::Circle { d: 2.0 }, STEEL, [0.0, 0.0, 1.0]));
     match err(&m) {
         FemError::FreeBody { nodes } => assert_eq!(nodes, vec![a, b]),
@@ -106,10 +111,7 @@ fn missing_translation_support_is_a_mechanism_in_that_direction() {
 fn pin_inside_a_chain_is_a_mechanism_naming_the_swinging_part() {
     // Clamp – beam – pin (spring with kry = 0 between coincident nodes) – beam – free end:
     // the outer beam swings about y: node 2 ry, node 3 uz and ry take part.
-    let mut m = beam_line(1);
-    m.supports.push(Support::clamp(0));
-    let a = m.add_node([20.0, 0.0, 0.0]);
-    let b = m.add_node([40.0, 0.0, 0.0]);
+    let (mut m, a, b) = clamped_bar_with([20.0, 0.0, 0.0], [40.0, 0.0, 0.0]);
     m.add_element(Element::Spring(Spring::global(
         1,
         Some(a),

@@ -283,13 +283,11 @@ fn shell_plate_without_in_plane_support_is_a_mechanism_in_plane() {
     let id = common::meshes::shell_grid(&mut m, (n, n), 1.0, STEEL, |i, j| {
         [a * i as f64 / n as f64, a * j as f64 / n as f64, 0.0]
     });
-    for j in 0..=n {
-        for i in 0..=n {
-            if i == 0 || j == 0 || i == n || j == n {
-                m.supports.push(Support::dofs(id(i, j), &[Dof::Uz]));
-            }
+    common::meshes::each_node(n, |i, j, edge| {
+        if edge {
+            m.supports.push(Support::dofs(id(i, j), &[Dof::Uz]));
         }
-    }
+    });
     match System::new(&m, &[], Parallelism::Sequential).unwrap_err() {
         FemError::Mechanism { dofs } => {
             assert!(!dofs.is_empty());

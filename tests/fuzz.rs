@@ -23,8 +23,8 @@
 //! changes the seed and `FLEXFEM_FUZZ_SCALE` multiplies the number of mutations (e.g. 10 for
 //! a longer local run). Failures are also written to `$CARGO_TARGET_TMPDIR/fuzz-failures/`.
 
+use flexfem::analysis::Case;
 use flexfem::analysis::{self, RunError};
-use flexfem::case::{self, Case};
 use serde_json::{Map, Value};
 use std::collections::BTreeMap;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -370,17 +370,21 @@ fn mutate(doc: &mut Value, rng: &mut Rng) -> String {
     said
 }
 
+/// The longest prefix of `s` of at most `n` bytes that ends on a character boundary.
+fn prefix(s: &str, n: usize) -> &str {
+    let end = s
+        .char_indices()
+        .map(|(i, _)| i)
+        .take_while(|&i| i < n)
+        .last()
+        .unwrap_or(0);
+    &s[..end]
+}
+
 fn short(v: &Value) -> String {
     let s = v.to_string();
     if s.len() > 80 {
-        format!(
-            "{}…",
-            &s[..s
-                .char_indices()
-                .take_while(|(i, _)| *i < 80)
-                .last()
-                .map_or(0, |(i, _)| i)]
-        )
+        format!("{}…", prefix(&s, 80))
     } else {
         s
     }
@@ -604,11 +608,26 @@ fn quietly<T>(f: impl FnOnce() -> T) -> std::thread::Result<T> {
     r
 }
 
+/// Runs `run` quietly; a panic is recorded as a finding of class `stage` for `analysis` on
+/// (`doc`, `what`), and gives `None`.
+fn unless_panics<T>(
+    f: &mut Findings,
+    (stage, analysis, doc, what): (&str, &str, &Value, &str),
+    run: impl FnOnce() -> T,
+) -> Option<T> {
+    quietly(run)
+        .map_err(|p| {
+            let m = panic_text(p);
+            f.add(class_of(stage, analysis, &m), doc, what, m);
+        })
+        .ok()
+}
+
 /// Parses, checks and runs one case in-process; records every broken rule.
 fn exercise(doc: &Value, what: &str, f: &mut Findings) {
     let analysis = doc.get("analysis").and_then(Value::as_str).unwrap_or("?").to_string();
     let base = cases_dir();
-    let parsed = match quietly(|| case::parse_value(doc.clone(), Some(&base))) {
+    let parsed = match quietly(|| analysis::parse_value(doc.clone(), Some(&base))) {
         Err(p) => {
             let m = panic_text(p);
             f.add(class_of("panic in parse", &analysis, &m), doc, what, m);
@@ -649,22 +668,14 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
         }
         return;
     }
-    let checked = match quietly(|| analysis::check(&parsed)) {
-        Err(p) => {
-            let m = panic_text(p);
-            f.add(class_of("panic in check", &analysis, &m), doc, what, m);
-            return;
-        }
-        Ok(r) => r,
+    let Some(checked) = unless_panics(f, ("panic in check", &analysis, doc, what), || analysis::check(&parsed)) else {
+        return;
     };
     f.runs += 1;
-    let outcome = match quietly(|| analysis::run_with_files(&parsed)) {
-        Err(p) => {
-            let m = panic_text(p);
-            f.add(class_of("panic in run", &analysis, &m), doc, what, m);
-            return;
-        }
-        Ok(r) => r,
+    let Some(outcome) = unless_panics(f, ("panic in run", &analysis, doc, what), || {
+        analysis::run_with_files(&parsed)
+    }) else {
+        return;
     };
     match outcome {
         Err(RunError::Case(e)) => {
@@ -826,15 +837,7 @@ fn report(f: &Findings, label: &str) {
 
 fn short_case(s: &str) -> String {
     if s.len() > 600 {
-        format!(
-            "{}… ({} bytes)",
-            &s[..s
-                .char_indices()
-                .take_while(|(i, _)| *i < 600)
-                .last()
-                .map_or(0, |(i, _)| i)],
-            s.len()
-        )
+        format!("{}… ({} bytes)", prefix(s, 600), s.len())
     } else {
         s.to_string()
     }
@@ -917,7 +920,7 @@ fn fuzz_binary_exit_codes_and_files() {
             cmd.current_dir(cases_dir());
             if is_sweep {
                 // Only small sweeps: the in-process fuzzer covers the designs.
-                let small = case::parse_value(doc.clone(), Some(&cases_dir()))
+                let small = analysis::parse_value(doc.clone(), Some(&cases_dir()))
                     .ok()
                     .and_then(|c| match c {
                         Case::Sweep(s) => s.build().ok().map(|s| s.len() <= 64),

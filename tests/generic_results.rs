@@ -1,7 +1,7 @@
 //! Results for generic `static` models: per-hinge results against the `hinge` analysis.
 
 use flexfem::analysis;
-use flexfem::case::{self, Case};
+use flexfem::analysis::Case;
 use flexfem::hinge::{self, HingeSpec};
 use serde_json::Value;
 
@@ -23,7 +23,7 @@ fn hinge_case_along(b: [f64; 3], load: [f64; 6], nonlinear: bool) -> Case {
             "supports": [{{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}}],
             "load_cases": [{{"name": "m", "forces": [{{"node": 1, "F": {load:?}}}]}}]}}"#
     );
-    case::parse(&text).unwrap_or_else(|e| panic!("{e}"))
+    analysis::parse(&text).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// The element's hinge as the `hinge` analysis sees it: blank per side = (D − notch)/2.
@@ -94,7 +94,7 @@ fn cantilever(f: [f64; 6], extra: &str) -> analysis::Outcome {
             "supports": [{{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}}],
             "load_cases": [{{"name": "tip", "forces": [{{"node": 4, "F": {f:?}}}]}}]{extra}}}"#
     );
-    analysis::run(&case::parse(&text).unwrap_or_else(|e| panic!("{e}"))).unwrap_or_else(|e| panic!("{e}"))
+    analysis::run(&analysis::parse(&text).unwrap_or_else(|e| panic!("{e}"))).unwrap_or_else(|e| panic!("{e}"))
 }
 
 fn result(out: &analysis::Outcome) -> &Value {
@@ -183,9 +183,9 @@ fn compliance_request_errors_name_the_path() {
         "supports": [{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}],
         "load_cases": [{"name": "tip", "forces": [{"node": 1, "F": [0, 0, 1, 0, 0, 0]}]}],
         "compliance": "#;
-    let e = case::parse(&format!("{base}[{{\"node\": 1}}, {{\"node\": 7}}]}}")).unwrap_err();
+    let e = analysis::parse(&format!("{base}[{{\"node\": 1}}, {{\"node\": 7}}]}}")).unwrap_err();
     assert!(e.to_string().contains("compliance[1].node"), "{e}");
-    let e = case::parse(&format!(
+    let e = analysis::parse(&format!(
         "{base}[{{\"node\": 1, \"frame\": [[1, 0, 0], [1, 0, 0], [0, 0, 1]]}}]}}"
     ))
     .unwrap_err();

@@ -59,29 +59,32 @@ fn check(name: &str, msh: &[u8], case_text: &str) -> (Option<i32>, String) {
     (o.status.code(), String::from_utf8_lossy(&o.stderr).into_owned())
 }
 
+/// `check` of a one-quadrangle mesh with `case` exits 2 naming `gmsh.groups.plate.section`; the
+/// message.
+fn refused(name: &str, case: &str) -> String {
+    let (code, err) = check(name, one_element_msh(3, 4).as_bytes(), case);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("`gmsh.groups.plate.section`"), "{err}");
+    err
+}
+
 /// An unknown section in the mapping: the error is at `gmsh.groups.plate.section`.
 #[test]
 fn unknown_section_names_the_group() {
-    let (code, err) = check(
+    let err = refused(
         "gmsh_unknown_section",
-        one_element_msh(3, 4).as_bytes(),
         &case("nope", r#"{"s": {"shape": "shell", "t": 1}}"#),
     );
-    assert_eq!(code, Some(2), "{err}");
-    assert!(err.contains("`gmsh.groups.plate.section`"), "{err}");
     assert!(!err.contains("elements[0]"), "{err}");
 }
 
 /// A beam section given to a group of quadrangles: also at `gmsh.groups.plate.section`.
 #[test]
 fn wrong_section_kind_names_the_group() {
-    let (code, err) = check(
+    refused(
         "gmsh_beam_section",
-        one_element_msh(3, 4).as_bytes(),
         &case("bar", r#"{"bar": {"shape": "rect", "w": 1, "h": 1}}"#),
     );
-    assert_eq!(code, Some(2), "{err}");
-    assert!(err.contains("`gmsh.groups.plate.section`"), "{err}");
 }
 
 /// Second-order elements (6-node triangles, 8- and 9-node quadrangles, 3-node lines) are

@@ -25,7 +25,8 @@ fn root() -> PathBuf {
 /// The same text `flexfem run CASE` writes to stdout (and `--out DIR` to `DIR/result.json`):
 /// serde_json's pretty layout with rows of numbers kept on one line (`report::json::pretty`).
 fn result_text(case: &Path) -> String {
-    let parsed = flexfem::case::load(case).unwrap_or_else(|e| panic!("{}: case does not load: {e}", case.display()));
+    let parsed =
+        flexfem::analysis::load(case).unwrap_or_else(|e| panic!("{}: case does not load: {e}", case.display()));
     let outcome = flexfem::analysis::run(&parsed).unwrap_or_else(|e| panic!("{}: analysis fails: {e}", case.display()));
     format!("{}\n", flexfem::report::json::pretty(&outcome.json))
 }

@@ -7,6 +7,12 @@ use flexfem::material::Material;
 mod common;
 use common::fixtures;
 
+/// A quadrature three times finer than the default, for convergence checks.
+const FINE: Quadrature = Quadrature {
+    arc_panels: 24,
+    linear_panels: 8,
+};
+
 fn specs() -> Vec<HingeSpec> {
     vec![
         fixtures::ruiz2019_revolute_hinge(),
@@ -61,11 +67,7 @@ fn quadrature_converged_to_1e_6() {
         let p = spec.profile().unwrap();
         let half = p.half_length();
         let c0 = flex_integrals(&p, &mo, -half, half, Quadrature::default()).compliance();
-        let fine = Quadrature {
-            arc_panels: 24,
-            linear_panels: 8,
-        };
-        let c1 = flex_integrals(&p, &mo, -half, half, fine).compliance();
+        let c1 = flex_integrals(&p, &mo, -half, half, FINE).compliance();
         for i in 0..6 {
             for j in 0..6 {
                 let scale = (c1[(i, i)] * c1[(j, j)]).sqrt();

@@ -3,8 +3,8 @@
 //! as in Ruiz et al. (2019), Experimental validation of the kinematic design of 3PRS compliant
 //! parallel mechanisms: E 72000 MPa, ν 0.33, ρ 2.81e-9 t/mm³, yield 503, allowable 400 MPa.
 
+use flexfem::analysis::parse;
 use flexfem::analysis::run;
-use flexfem::case::parse;
 use serde_json::Value;
 use std::path::PathBuf;
 
@@ -13,7 +13,7 @@ fn root() -> PathBuf {
 }
 
 fn run_file(name: &str) -> (Value, String) {
-    let c = flexfem::case::load(&root().join(name)).unwrap();
+    let c = flexfem::analysis::load(&root().join(name)).unwrap();
     let out = run(&c).unwrap();
     (out.json, out.report.markdown)
 }
@@ -67,7 +67,7 @@ fn stage_report_without_allowable_or_load_has_no_nan_text() {
     let mut v: Value = serde_json::from_str(&text).unwrap();
     v["material"] = serde_json::json!({"E": 72000, "nu": 0.33});
     v["load_cases"] = serde_json::json!([{"name": "zero", "actuator_forces": [0, 0, 0]}]);
-    let c = flexfem::case::parse_value(v, Some(&root().join("cases"))).unwrap();
+    let c = flexfem::analysis::parse_value(v, Some(&root().join("cases"))).unwrap();
     let out = run(&c).unwrap();
     for text in [&out.report.markdown, &out.report.csv] {
         for bad in ["NaN", "inf"] {

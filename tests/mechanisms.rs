@@ -21,7 +21,7 @@ fn root() -> PathBuf {
 /// Runs a case given as a JSON value (relative `mesh` paths resolve against `cases/`).
 fn run_value(case: &Value) -> Value {
     let text = serde_json::to_string(case).unwrap();
-    let parsed = flexfem::case::parse_in(&text, Some(&root().join("cases")))
+    let parsed = flexfem::analysis::parse_in(&text, Some(&root().join("cases")))
         .unwrap_or_else(|e| panic!("case does not load: {e}"));
     flexfem::analysis::run(&parsed)
         .unwrap_or_else(|e| panic!("analysis fails: {e}"))

@@ -1,7 +1,8 @@
 //! Local frames (`"frame"`, `"axis"`) of supports, prescribed displacements and forces in mesh
 //! cases.
 
-use flexfem::case::{self, Case};
+use flexfem::analysis::{self, Case};
+use flexfem::case;
 use flexfem::fem;
 
 /// Node 1 on a spring to ground (kx = 1, ky = 2, kz = 3 N/mm, rotations 1 N·mm/rad) and a
@@ -16,7 +17,7 @@ fn slider(support: &str, load: &str) -> String {
 }
 
 fn build(text: &str) -> Result<fem::Model, case::CaseError> {
-    match case::parse(text)? {
+    match analysis::parse(text)? {
         Case::Static(s) => s.model.build(),
         _ => panic!("not static"),
     }

@@ -1,6 +1,6 @@
 //! The `hinge` element of mesh cases against the `hinge` analysis.
 
-use flexfem::case::{self, Case};
+use flexfem::analysis::{self, Case};
 use flexfem::fem;
 use flexfem::hinge::{self, HingeSpec};
 
@@ -40,7 +40,7 @@ fn case_text(hinge: &str, d: f64) -> String {
 }
 
 fn model_of(text: &str) -> fem::Model {
-    match case::parse(text).unwrap_or_else(|e| panic!("{e}")) {
+    match analysis::parse(text).unwrap_or_else(|e| panic!("{e}")) {
         Case::Static(s) => s.model.build().unwrap_or_else(|e| panic!("{e}")),
         _ => panic!("not static"),
     }
@@ -85,7 +85,7 @@ fn hinge_element_reproduces_the_hinge_analysis_compliance() {
 #[test]
 fn short_hinge_and_blank_length_refused() {
     let text = case_text(FAMILIES[3].0, 3.0);
-    let e = match case::parse(&text).unwrap() {
+    let e = match analysis::parse(&text).unwrap() {
         Case::Static(s) => s.model.build().unwrap_err(),
         _ => panic!(),
     };
@@ -96,13 +96,13 @@ fn short_hinge_and_blank_length_refused() {
         r#"{"type": "leaf", "l": 5, "t": 1, "w": 4, "h": 4, "blank_length": 1}"#,
         9.0,
     );
-    let e = match case::parse(&text).unwrap() {
+    let e = match analysis::parse(&text).unwrap() {
         Case::Static(s) => s.model.build().unwrap_err(),
         _ => panic!(),
     };
     assert_eq!(e.path, "elements[0].hinge.blank_length", "{e}");
     let text = case_text(r#"{"type": "leaf", "l": 5, "t": 9, "w": 4, "h": 4}"#, 9.0);
-    let e = match case::parse(&text).unwrap() {
+    let e = match analysis::parse(&text).unwrap() {
         Case::Static(s) => s.model.build().unwrap_err(),
         _ => panic!(),
     };

@@ -1,7 +1,8 @@
 //! The `joint` element of mesh cases: ideal joints by elimination, against closed-form
 //! kinematics.
 
-use flexfem::case::{self, Case};
+use flexfem::analysis::{self, Case};
+use flexfem::case;
 use flexfem::fem;
 
 /// Crank-rocker four-bar: ground pivots O2 = (0, 0) and O4 = (d, 0), crank a, coupler b,
@@ -68,7 +69,7 @@ fn four_bar(drive: Option<f64>) -> String {
 }
 
 fn model_of(text: &str) -> Result<fem::Model, case::CaseError> {
-    match case::parse(text)? {
+    match analysis::parse(text)? {
         Case::Static(s) => s.model.build(),
         _ => panic!("not static"),
     }

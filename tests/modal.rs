@@ -179,7 +179,7 @@ fn free_free_mixed_model_has_six_zero_modes() {
 #[test]
 fn stage_modes_are_positive_and_sorted() {
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let c = flexfem::case::load(&root.join("cases/ruiz2019_stage_modal.json")).unwrap();
+    let c = flexfem::analysis::load(&root.join("cases/ruiz2019_stage_modal.json")).unwrap();
     let out = flexfem::analysis::run(&c).unwrap();
     let modes = out.json["modes"].as_array().unwrap();
     assert_eq!(modes.len(), 6);
@@ -197,16 +197,16 @@ fn modal_case_paths() {
         "elements": [{"type": "beam", "nodes": [0,1], "section": "r", "material": "s", "up": [0,0,1], "shear": false},
                      {"type": "beam", "nodes": [1,2], "section": "r", "material": "s", "up": [0,0,1], "shear": false}],
         "supports": [{"node": 0, "fix": ["ux","uy","uz","rx","ry","rz"]}]}"#;
-    let c = flexfem::case::parse(ok).unwrap();
+    let c = flexfem::analysis::parse(ok).unwrap();
     let out = flexfem::analysis::run_with_files(&c).unwrap();
     let f = out.json["modes"][0]["frequency_hz"].as_f64().unwrap();
     assert!((f - 8.3551).abs() / 8.3551 < 0.01, "{f}");
     assert!(out.files.iter().any(|(n, _)| n == "modes.vtu"));
     let bad = ok.replace("\"modes\": 2", "\"modes\": 0");
-    let e = flexfem::case::parse(&bad).unwrap_err();
+    let e = flexfem::analysis::parse(&bad).unwrap_err();
     assert!(e.to_string().contains("modes"), "{e}");
     let bad = ok.replace("\"material\": \"s\", \"up\"", "\"material\": \"x\", \"up\"");
-    let c = flexfem::case::parse(&bad).unwrap();
+    let c = flexfem::analysis::parse(&bad).unwrap();
     let e = flexfem::analysis::check(&c).unwrap_err();
     assert!(e.to_string().contains("elements[0].material"), "{e}");
 }
@@ -218,7 +218,7 @@ fn modal_case_paths() {
 #[test]
 fn fact_wire_mechanism_first_modes_are_the_two_rotations() {
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let c = flexfem::case::load(&root.join("cases/fact_wire_pantilt_modal.json")).unwrap();
+    let c = flexfem::analysis::load(&root.join("cases/fact_wire_pantilt_modal.json")).unwrap();
     let out = flexfem::analysis::run(&c).unwrap();
     let m = &out.json["modes"];
     let f: Vec<f64> = (0..6).map(|i| m[i]["frequency_hz"].as_f64().unwrap()).collect();

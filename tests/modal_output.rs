@@ -30,7 +30,7 @@ fn free_plate(density: Value, shapes: Option<bool>, modes: usize) -> Value {
 }
 
 fn run(case: Value) -> flexfem::analysis::Outcome {
-    let c = flexfem::case::parse_value(case, None).expect("valid case");
+    let c = flexfem::analysis::parse_value(case, None).expect("valid case");
     flexfem::analysis::run_with_files(&c).expect("analysis runs")
 }
 
@@ -69,7 +69,7 @@ fn free_plate_rigid_modes_and_shapes_false() {
     // Anything but a boolean is a case error.
     let mut bad = free_plate(json!(7.85e-9), None, 7);
     bad["shapes"] = json!("no");
-    let err = flexfem::case::parse_value(bad, None).unwrap_err();
+    let err = flexfem::analysis::parse_value(bad, None).unwrap_err();
     assert!(err.to_string().contains("shapes"), "{err}");
 }
 

@@ -66,13 +66,7 @@ fn elliptic(k: f64, phi: f64) -> (f64, f64) {
     let (mut f, mut e) = (0.0, 0.0);
     for i in 0..=n {
         let t = i as f64 * h;
-        let w = if i == 0 || i == n {
-            1.0
-        } else if i % 2 == 1 {
-            4.0
-        } else {
-            2.0
-        };
+        let w = if i == 0 || i == n { 1.0 } else { [2.0, 4.0][i % 2] };
         let s = (1.0 - k * k * t.sin().powi(2)).sqrt();
         f += w / s;
         e += w * s;

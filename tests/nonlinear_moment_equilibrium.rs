@@ -3,7 +3,6 @@
 //! zero applied force.
 
 use flexfem::analysis;
-use flexfem::case;
 use flexfem::hinge::{self, HingeSpec};
 use serde_json::Value;
 
@@ -29,7 +28,7 @@ fn nonlinear_hinge_under_a_pure_tip_moment() {
             "supports": [{{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}}],
             "load_cases": [{{"name": "m", "forces": [{{"node": 1, "F": [0, 0, 0, 0, {m}, 0]}}]}}]}}"#
     );
-    let case = case::parse(&text).unwrap();
+    let case = analysis::parse(&text).unwrap();
     let out = analysis::run(&case).unwrap_or_else(|e| panic!("{e}"));
     let al = flexfem::material::Material::builtin("Al7075").unwrap();
     let mut v: Value = serde_json::from_str(CIRCULAR).unwrap();

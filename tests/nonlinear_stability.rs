@@ -138,7 +138,7 @@ fn stage_at_54_mm_strokes_takes_the_right_branch_or_fails() {
     use flexfem::stage::Drive;
     let text =
         std::fs::read_to_string(common::root().join("cases/ruiz2019_stage.json")).unwrap_or_else(|e| panic!("{e}"));
-    let flexfem::case::Case::Stage(c) = flexfem::case::parse(&text).unwrap_or_else(|e| panic!("{e}")) else {
+    let flexfem::analysis::Case::Stage(c) = flexfem::analysis::parse(&text).unwrap_or_else(|e| panic!("{e}")) else {
         panic!("not a stage case")
     };
     let stage = c

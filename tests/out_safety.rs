@@ -116,8 +116,7 @@ fn the_case_file_is_never_overwritten() {
         let mut args = vec!["run", s(&inside), "--out", s(&res)];
         args.extend(extra);
         let o = run_in(&d, &args);
-        assert_eq!(code(&o), Some(2), "{}", stderr(&o));
-        assert!(stderr(&o).contains("is the case file"), "{}", stderr(&o));
+        exits_2(&o, &["is the case file"]);
         assert_eq!(fs::read_to_string(&inside).unwrap(), text);
     }
     cleanup(&d);
@@ -132,12 +131,11 @@ fn unrelated_files_are_replaced_only_with_force() {
     let case = write(&d, "s.json", SWEEP);
     let notes = write(&d, "notes.jsonl", PRECIOUS);
     let o = run_in(&d, &["sweep", s(&case), "--out", s(&notes)]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("not a flexfem sweep line") && stderr(&o).contains("--force"));
+    exits_2(&o, &["not a flexfem sweep line", "--force"]);
     assert_eq!(fs::read_to_string(&notes).unwrap(), PRECIOUS);
     let table = write(&d, "table.csv", "a,b\n1,2\n");
     let o = run_in(&d, &["sweep", s(&case), "--csv", s(&table)]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
+    exits_2(&o, &[]);
     assert_eq!(fs::read_to_string(&table).unwrap(), "a,b\n1,2\n");
     assert!(stdout(&o).is_empty(), "refused before running");
 
@@ -153,19 +151,14 @@ fn unrelated_files_are_replaced_only_with_force() {
     fs::create_dir_all(&docs).unwrap();
     let readme = write(&docs, "report.md", PRECIOUS);
     let o = run_in(&d, &["run", s(&hinge), "--out", s(&docs)]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
-    assert!(
-        stderr(&o).contains("neither empty nor a flexfem output folder"),
-        "{}",
-        stderr(&o)
-    );
+    exits_2(&o, &["neither empty nor a flexfem output folder"]);
     assert_eq!(fs::read_to_string(&readme).unwrap(), PRECIOUS);
     let o = run_in(&d, &["run", s(&hinge), "--out", s(&docs), "--force"]);
     assert_eq!(code(&o), Some(0), "{}", stderr(&o));
     assert!(docs.join("result.json").is_file());
     // `--out` naming an existing file: refused, file kept.
     let o = run_in(&d, &["run", s(&hinge), "--out", s(&notes)]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
+    exits_2(&o, &[]);
     assert_eq!(line_count(&notes), 3);
     cleanup(&d);
 }
@@ -176,16 +169,11 @@ fn identical_output_paths_are_refused() {
     let d = tempdir("identical");
     let case = write(&d, "s.json", SWEEP);
     let o = run_in(&d, &["sweep", s(&case), "--out", "x.csv", "--csv", "x.csv"]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
-    assert!(
-        stderr(&o).contains("--out and --csv are the same file"),
-        "{}",
-        stderr(&o)
-    );
+    exits_2(&o, &["--out and --csv are the same file"]);
     assert!(!d.join("x.csv").exists());
     // Spelled differently, same file.
     let o = run_in(&d, &["sweep", s(&case), "--out", "x.jsonl", "--csv", "./x.jsonl"]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
+    exits_2(&o, &[]);
     cleanup(&d);
 }
 

@@ -18,7 +18,7 @@ fn root() -> PathBuf {
 
 /// FE pitch and phase of the bundled case, degrees.
 fn fe_pose() -> (f64, f64) {
-    let parsed = flexfem::case::load(&root().join("cases/pantilt_8r.json")).unwrap();
+    let parsed = flexfem::analysis::load(&root().join("cases/pantilt_8r.json")).unwrap();
     let res = flexfem::analysis::run(&parsed).unwrap().json;
     let node = pantilt_mesh(&PanTiltMesh::standard()).platform;
     let row = &res["load_cases"][0]["displacements"][node];

@@ -99,7 +99,7 @@ fn frame_case(m: &PrsStiffness, beta: f64) -> Value {
 /// Platform-centre displacement [mm; rad] under the load case and the node compliance of P
 /// (the case's `"compliance"` field: mm/N, rad/N, rad/(N·mm) blocks, global axes).
 fn run_frame(case: Value) -> (Vector6<f64>, Matrix6<f64>) {
-    let parsed = flexfem::case::parse_value(case, None).unwrap();
+    let parsed = flexfem::analysis::parse_value(case, None).unwrap();
     let out = flexfem::analysis::run(&parsed).unwrap();
     let d: Vec<f64> = out.json["load_cases"][0]["displacements"][0]
         .as_array()
@@ -109,17 +109,7 @@ fn run_frame(case: Value) -> (Vector6<f64>, Matrix6<f64>) {
         .collect();
     let c = &out.json["compliance"][0]["matrix"];
     let c = Matrix6::from_fn(|i, j| c[i][j].as_f64().unwrap());
-    (
-        Vector6::new(
-            d[0],
-            d[1],
-            d[2],
-            d[3].to_radians(),
-            d[4].to_radians(),
-            d[5].to_radians(),
-        ),
-        c,
-    )
+    (Vector6::from_fn(|i, _| if i < 3 { d[i] } else { d[i].to_radians() }), c)
 }
 
 /// (compliance rel. diff, deformation rel. diff) of the frame case against `prs_stiffness`.

@@ -15,7 +15,7 @@
 //! lateral and cross couplings of the legs, which the model takes as rigid/absent. The rigid-body
 //! model is bundled as cases/prs_stiffness_ruiz2019_stage.json (home pose, a tilted pose, a ±5° map).
 
-use flexfem::case::{self, Case};
+use flexfem::analysis::{self, Case};
 use flexfem::kinematics::prs_stiffness::{Branch, LegModel, PrsLayout, PrsStiffness};
 use flexfem::stage::Drive;
 use nalgebra::{Matrix3, Matrix6, Vector3};
@@ -71,7 +71,7 @@ fn cross_check(release: f64) -> Cross {
 
 fn cross_check_at(release: f64, at_neck_top: bool) -> Cross {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/cases/ruiz2019_stage.json");
-    let Case::Stage(sc) = case::load(std::path::Path::new(path)).unwrap() else {
+    let Case::Stage(sc) = analysis::load(std::path::Path::new(path)).unwrap() else {
         panic!("not a stage case")
     };
     let (vs, _) = sc.validated().unwrap();
@@ -194,6 +194,17 @@ fn stage_prs_stiffness_against_stage_fe() {
     }
 }
 
+/// Asserts each ratio `r[i]` (model/FE, per direction) within 2 % of its measured value.
+fn within_2_percent(r: &[f64], measured: [(usize, f64); 5]) {
+    for (i, want) in measured {
+        assert!(
+            (r[i] / want - 1.0).abs() < 0.02,
+            "direction {i}: model/FE = {} (measured {want})",
+            r[i]
+        );
+    }
+}
+
 /// With the hinges' compliant rotations released in the FE (0.1 rad/(N·mm) added: revolute about
 /// mᵢ, neck about all three axes — nearly ideal joints), z agrees to 1e-5 (the remaining
 /// difference in z was the hinges' rotational stiffness). The other directions flip: the FE is
@@ -208,13 +219,7 @@ fn stage_with_released_hinges_matches_in_z() {
     let r = ratios(&x, &y.c_fe);
     eprintln!("released: model/FE = {r:.5?}");
     assert!((r[2] - 1.0).abs() < 1e-5, "z: model/FE = {}", r[2]);
-    for (i, want) in [(0, 0.3505), (1, 0.3505), (3, 0.3514), (4, 0.3514), (5, 0.3504)] {
-        assert!(
-            (r[i] / want - 1.0).abs() < 0.02,
-            "direction {i}: model/FE = {} (measured {want})",
-            r[i]
-        );
-    }
+    within_2_percent(&r, [(0, 0.3505), (1, 0.3505), (3, 0.3514), (4, 0.3514), (5, 0.3504)]);
 }
 
 /// The bundled case cases/prs_stiffness_ruiz2019_stage.json is this cross-check's rigid-body
@@ -264,11 +269,5 @@ fn neck_top_model_matches_released_fe_in_all_directions() {
         assert!((r - 1.0).abs() < 2e-3, "direction {i}: model/released FE = {r}");
     }
     assert!((real[2] - 1.0).abs() < 1e-3, "z: {}", real[2]);
-    for (i, want) in [(0, 6.4365), (1, 6.4365), (3, 6.4375), (4, 6.4375), (5, 4.0245)] {
-        assert!(
-            (real[i] / want - 1.0).abs() < 0.02,
-            "direction {i}: model/FE = {} (measured {want})",
-            real[i]
-        );
-    }
+    within_2_percent(&real, [(0, 6.4365), (1, 6.4365), (3, 6.4375), (4, 6.4375), (5, 4.0245)]);
 }

@@ -69,7 +69,7 @@ fn frame_case(m: &PrsStiffness, beta: f64, loads: &[Vector6<f64>], p: f64) -> Va
 
 /// Platform-centre displacement [mm; rad] of each load case.
 fn run_frame(case: Value) -> Vec<Vector6<f64>> {
-    let parsed = flexfem::case::parse_value(case, None).unwrap();
+    let parsed = flexfem::analysis::parse_value(case, None).unwrap();
     let out = flexfem::analysis::run(&parsed).unwrap();
     out.json["load_cases"]
         .as_array()
@@ -82,14 +82,7 @@ fn run_frame(case: Value) -> Vec<Vector6<f64>> {
                 .iter()
                 .map(|x| x.as_f64().unwrap())
                 .collect();
-            Vector6::new(
-                d[0],
-                d[1],
-                d[2],
-                d[3].to_radians(),
-                d[4].to_radians(),
-                d[5].to_radians(),
-            )
+            Vector6::from_fn(|i, _| if i < 3 { d[i] } else { d[i].to_radians() })
         })
         .collect()
 }

@@ -228,13 +228,13 @@ fn material_names_are_enumerated() {
     for ok in ["Al7075", "nylon66", "steel", "AL7075", "Steel"] {
         assert!(v.is_valid(&hinge(ok.into())), "{ok} refused");
         assert!(
-            flexfem::case::parse(&hinge(ok.into()).to_string()).is_ok(),
+            flexfem::analysis::parse(&hinge(ok.into()).to_string()).is_ok(),
             "{ok} refused by flexfem"
         );
     }
     for bad in ["Al 7075", "titanium", ""] {
         assert!(!v.is_valid(&hinge(bad.into())), "{bad:?} accepted by the schema");
-        let c = flexfem::case::parse(&hinge(bad.into()).to_string()).unwrap();
+        let c = flexfem::analysis::parse(&hinge(bad.into()).to_string()).unwrap();
         assert!(flexfem::analysis::check(&c).is_err(), "{bad:?} accepted by flexfem");
     }
     let s = schema().to_string();
@@ -249,22 +249,10 @@ fn material_names_are_enumerated() {
 #[test]
 fn unknown_static_or_modal_field_lists_every_accepted_field() {
     let static_case = serde_json::json!({"analysis": "static", "nodes": [[0, 0, 0]], "nonlinar": true});
-    let e = flexfem::case::parse(&static_case.to_string()).unwrap_err();
+    let e = flexfem::analysis::parse(&static_case.to_string()).unwrap_err();
     assert_eq!(e.path, "nonlinar");
-    for f in [
-        "analysis",
-        "mesh",
-        "gmsh",
-        "nonlinear",
-        "steps",
-        "materials",
-        "sections",
-        "nodes",
-        "elements",
-        "rigid_links",
-        "supports",
-        "load_cases",
-    ] {
+    let fields = "analysis mesh gmsh nonlinear steps materials sections nodes elements rigid_links supports load_cases";
+    for f in fields.split(' ') {
         assert!(
             e.message.contains(&format!("`{f}`")),
             "`{f}` missing from: {}",
@@ -272,7 +260,7 @@ fn unknown_static_or_modal_field_lists_every_accepted_field() {
         );
     }
     let modal_case = serde_json::json!({"analysis": "modal", "modes": 2, "nodes": [[0, 0, 0]], "steps": 3});
-    let e = flexfem::case::parse(&modal_case.to_string()).unwrap_err();
+    let e = flexfem::analysis::parse(&modal_case.to_string()).unwrap_err();
     assert_eq!(e.path, "steps");
     for f in ["modes", "shift_hz", "mesh", "gmsh", "nodes", "load_cases"] {
         assert!(
@@ -301,20 +289,20 @@ fn positional_arrays_for_objects_are_refused_like_the_schema_does() {
     };
     let named = stage(serde_json::json!({"w": 10, "h": 10}));
     assert!(v.is_valid(&named));
-    assert!(flexfem::case::parse(&named.to_string()).is_ok());
+    assert!(flexfem::analysis::parse(&named.to_string()).is_ok());
     let positional = stage(serde_json::json!([10, 10]));
     assert!(!v.is_valid(&positional));
-    let e = flexfem::case::parse(&positional.to_string()).unwrap_err();
+    let e = flexfem::analysis::parse(&positional.to_string()).unwrap_err();
     assert_eq!(e.path, "stage.leg", "{e}");
     let hinge = serde_json::json!({"analysis": "hinge", "hinge": ["corner_filleted", 5, 15, 0.6, 10, 15, 15]});
     assert!(!v.is_valid(&hinge));
-    let e = flexfem::case::parse(&hinge.to_string()).unwrap_err();
+    let e = flexfem::analysis::parse(&hinge.to_string()).unwrap_err();
     assert_eq!(e.path, "hinge", "{e}");
     let section = serde_json::json!({
         "analysis": "static", "sections": {"leg": ["rect", 10, 10]}, "nodes": [[0, 0, 0]],
         "load_cases": [{"name": "x"}]
     });
     assert!(!v.is_valid(&section));
-    let e = flexfem::case::parse(&section.to_string()).unwrap_err();
+    let e = flexfem::analysis::parse(&section.to_string()).unwrap_err();
     assert_eq!(e.path, "sections.leg", "{e}");
 }

@@ -25,15 +25,13 @@ fn rhombus(n: usize, a: f64, t: f64, in_plane_held: bool) -> Model {
         let (u, v) = (a * i as f64 / n as f64, a * j as f64 / n as f64);
         [u + v * c, v * s, 0.0]
     });
-    for j in 0..=n {
-        for i in 0..=n {
-            if i == 0 || j == 0 || i == n || j == n {
-                m.supports.push(Support::clamp(id(i, j)));
-            } else if in_plane_held {
-                m.supports.push(Support::dofs(id(i, j), &[Dof::Ux, Dof::Uy, Dof::Rz]));
-            }
+    common::meshes::each_node(n, |i, j, edge| {
+        if edge {
+            m.supports.push(Support::clamp(id(i, j)));
+        } else if in_plane_held {
+            m.supports.push(Support::dofs(id(i, j), &[Dof::Ux, Dof::Uy, Dof::Rz]));
         }
-    }
+    });
     m
 }
 

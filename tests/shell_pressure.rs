@@ -7,7 +7,7 @@ use serde_json::{json, Value};
 mod common;
 
 fn run(case: Value) -> Value {
-    let c = flexfem::case::parse_value(case, None).expect("valid case");
+    let c = flexfem::analysis::parse_value(case, None).expect("valid case");
     flexfem::analysis::run(&c).expect("analysis runs").json
 }
 
@@ -118,7 +118,7 @@ fn pressure_by_gmsh_group_equals_element_list() {
         {"name": "group", "pressures": [{"p": p, "group": "plate"}]},
         {"name": "list", "pressures": [{"p": p, "elements": all}]}
     ]);
-    let c = flexfem::case::parse_value(v.clone(), Some(&root)).unwrap();
+    let c = flexfem::analysis::parse_value(v.clone(), Some(&root)).unwrap();
     let r = flexfem::analysis::run(&c).unwrap().json;
     let a = &r["load_cases"][0];
     let b = &r["load_cases"][1];
@@ -127,7 +127,7 @@ fn pressure_by_gmsh_group_equals_element_list() {
     assert!((fz + p * 100.0 * 100.0).abs() < 1e-9 * 200.0, "ΣFz = {fz}");
     // An unknown group is a case error naming its path.
     v["load_cases"] = json!([{"name": "g", "pressures": [{"p": p, "group": "edgee"}]}]);
-    let err = flexfem::case::parse_value(v, Some(&root))
+    let err = flexfem::analysis::parse_value(v, Some(&root))
         .and_then(|c| flexfem::analysis::check(&c))
         .unwrap_err();
     assert!(err.to_string().contains("load_cases[0].pressures[0].group"), "{err}");
@@ -148,7 +148,7 @@ fn shell_load_errors_name_the_path() {
     let check = |lc: Value, path: &str| {
         let mut v = base.clone();
         v["load_cases"] = json!([lc]);
-        let err = flexfem::case::parse_value(v, None)
+        let err = flexfem::analysis::parse_value(v, None)
             .and_then(|c| flexfem::analysis::check(&c))
             .unwrap_err();
         assert!(err.to_string().contains(path), "{err}");

@@ -8,7 +8,7 @@ mod common;
 
 /// Runs a case given as JSON; the JSON result.
 fn run(case: Value) -> Value {
-    let c = flexfem::case::parse_value(case, None).expect("valid case");
+    let c = flexfem::analysis::parse_value(case, None).expect("valid case");
     flexfem::analysis::run(&c).expect("analysis runs").json
 }
 
@@ -16,6 +16,27 @@ fn run(case: Value) -> Value {
 fn strip(l: f64, b: f64, nx: usize, ny: usize) -> (Vec<[f64; 3]>, Vec<Value>) {
     common::meshes::shell_grid_json((nx, ny), "s", "m", |i, j| {
         [l * i as f64 / nx as f64, b * j as f64 / ny as f64, 0.0]
+    })
+}
+
+/// A `static` case of shells (section `s` of thickness `t`, material `m`) with one load case,
+/// `name`, of edge loads.
+fn shell_case(
+    material: Value,
+    t: f64,
+    (nodes, elements): (Vec<[f64; 3]>, Vec<Value>),
+    supports: Vec<Value>,
+    edges: Vec<Value>,
+    name: &str,
+) -> Value {
+    json!({
+        "analysis": "static",
+        "materials": {"m": material},
+        "sections": {"s": {"shape": "shell", "t": t}},
+        "nodes": nodes,
+        "elements": elements,
+        "supports": supports,
+        "load_cases": [{"name": name, "edge_loads": edges}]
     })
 }
 
@@ -29,17 +50,12 @@ fn bending_strip(l: f64, b: f64, t: f64, mm: f64, (nx, ny): (usize, usize), mate
         edges.push(json!({"nodes": [j * (nx + 1) + nx, (j + 1) * (nx + 1) + nx], "m": [0.0, mm / b, 0.0]}));
         edges.push(json!({"nodes": [j * (nx + 1), (j + 1) * (nx + 1)], "m": [0.0, -mm / b, 0.0]}));
     }
-    json!({
-        "analysis": "static",
-        "materials": {"m": material},
-        "sections": {"s": {"shape": "shell", "t": t}},
-        "nodes": nodes,
-        "elements": elements,
-        "supports": [{"node": 0, "fix": ["ux", "uy", "uz"]},
-                     {"node": nx, "fix": ["uy", "uz"]},
-                     {"node": ny * (nx + 1), "fix": ["uz"]}],
-        "load_cases": [{"name": "M", "edge_loads": edges}]
-    })
+    let supports = vec![
+        json!({"node": 0, "fix": ["ux", "uy", "uz"]}),
+        json!({"node": nx, "fix": ["uy", "uz"]}),
+        json!({"node": ny * (nx + 1), "fix": ["uz"]}),
+    ];
+    shell_case(material, t, (nodes, elements), supports, edges, "M")
 }
 
 fn f(v: &Value) -> f64 {
@@ -142,16 +158,8 @@ fn z_section(nf: usize, nw: usize, nx: usize) -> (f64, f64) {
         let kb = nf + nw + k;
         edges.push(json!({"nodes": [id(nx, kb), id(nx, kb + 1)], "q": [0.0, -q, 0.0]}));
     }
-    let case = json!({
-        "analysis": "static",
-        "materials": {"m": {"E": 210000.0, "nu": 0.3, "density": 7.85e-9, "yield": 1e9, "allowable": 1e9}},
-        "sections": {"s": {"shape": "shell", "t": t}},
-        "nodes": nodes,
-        "elements": elements,
-        "supports": supports,
-        "load_cases": [{"name": "torque", "edge_loads": edges}]
-    });
-    let r = run(case);
+    let steel = json!({"E": 210000.0, "nu": 0.3, "density": 7.85e-9, "yield": 1e9, "allowable": 1e9});
+    let r = run(shell_case(steel, t, (nodes, elements), supports, edges, "torque"));
     let lc = &r["load_cases"][0];
     assert!(nx.is_multiple_of(4));
     let a_top = id(nx / 4, 0);
@@ -189,16 +197,7 @@ fn strip_free_body(nx: usize, ny: usize) -> Vec<[f64; 4]> {
     let edges: Vec<Value> = (0..ny)
         .map(|j| json!({"nodes": [j * (nx + 1) + nx, (j + 1) * (nx + 1) + nx], "q": [p[0] / b, p[1] / b, p[2] / b]}))
         .collect();
-    let case = json!({
-        "analysis": "static",
-        "materials": {"m": "steel"},
-        "sections": {"s": {"shape": "shell", "t": t}},
-        "nodes": nodes,
-        "elements": elements,
-        "supports": supports,
-        "load_cases": [{"name": "P", "edge_loads": edges}]
-    });
-    let r = run(case);
+    let r = run(shell_case(json!("steel"), t, (nodes, elements), supports, edges, "P"));
     let forces = r["load_cases"][0]["shell_forces"].as_array().unwrap().clone();
     let w = b / ny as f64;
     let mut err = Vec::new();
@@ -255,7 +254,7 @@ fn vtu_and_report_carry_shell_stresses() {
     let (l, b, t, mm) = (100.0, 20.0, 2.0, 1500.0);
     let (nx, ny) = (4, 2);
     let case = bending_strip(l, b, t, mm, (nx, ny), json!("Al7075"));
-    let c = flexfem::case::parse_value(case, None).unwrap();
+    let c = flexfem::analysis::parse_value(case, None).unwrap();
     let out = flexfem::analysis::run_with_files(&c).unwrap();
     let (_, vtu) = out.files.iter().find(|(n, _)| n == "M.vtu").expect("M.vtu");
     let vtu = String::from_utf8_lossy(vtu);

@@ -62,17 +62,22 @@ fn fix(m: &mut Model, node: usize, dofs: &[Dof]) {
 
 use Dof::*;
 
+/// Asserts `got` within `tol` (relative) of `reference`, printing the error.
+fn within(what: &str, got: f64, reference: f64, tol: f64) {
+    let err = got / reference - 1.0;
+    eprintln!("{what} = {got:.6e}, error {:.2} %", 100.0 * err);
+    assert!(err.abs() < tol, "{what} = {got} vs {reference}");
+}
+
 fn clamped_plate(n: usize) -> f64 {
     let (a, t, e, nu, q) = (100.0, 0.1, 1.0e5, 0.3, 1e-3);
     let mut m = Model::new();
     let ids = grid(&mut m, n, n, t, mat(e, nu), |s, r| [a * s, a * r, 0.0]);
-    for j in 0..=n {
-        for i in 0..=n {
-            if i == 0 || j == 0 || i == n || j == n {
-                m.supports.push(Support::clamp(ids[j * (n + 1) + i]));
-            }
+    common::meshes::each_node(n, |i, j, edge| {
+        if edge {
+            m.supports.push(Support::clamp(ids[j * (n + 1) + i]));
         }
-    }
+    });
     let f = area_load(&m, [0.0, 0.0, -q]);
     let m = with_loads(m, &f);
     let r = fem::solve_static(&m).unwrap();
@@ -87,9 +92,7 @@ fn clamped_plate(n: usize) -> f64 {
 #[test]
 fn clamped_square_plate_timoshenko() {
     let c = clamped_plate(16);
-    let err = (c - 0.00126) / 0.00126;
-    eprintln!("clamped plate 16x16: w = {c:.6} q a^4/D, error {:.2} %", 100.0 * err);
-    assert!(err.abs() < 0.02, "w coefficient {c}");
+    within("clamped plate 16x16: w / (q a^4/D)", c, 0.00126, 0.02);
 }
 
 /// Scordelis–Lo roof: R = 25, L = 50, 2×40° arc, t = 0.25, E = 4.32e8, ν = 0, gravity 90 per
@@ -120,9 +123,7 @@ fn scordelis_lo_roof() {
     // 16×16 elements on the full roof (an 8×8 quarter): 0.30586 (+1.14 %); 8×8 0.32100,
     // 32×32 0.30253 (+0.04 %).
     let w = scordelis_lo(16);
-    let err = (w - 0.3024) / 0.3024;
-    eprintln!("Scordelis-Lo 16x16: w = {w:.5}, error {:.2} %", 100.0 * err);
-    assert!(err.abs() < 0.02, "w = {w}");
+    within("Scordelis-Lo 16x16: w", w, 0.3024, 0.02);
 }
 
 /// Pinched cylinder with rigid end diaphragms: R = 300, L = 600, t = 3, E = 3e6, ν = 0.3,
@@ -155,9 +156,7 @@ fn pinched_cylinder(n: usize) -> f64 {
 fn pinched_cylinder_with_diaphragms() {
     // Octant 32×32: 1.8325e-5 (+0.42 %); 16×16 gives 1.7799e-5 (−2.5 %), so 32×32 is needed.
     let w = pinched_cylinder(32);
-    let err = (w - 1.8248e-5) / 1.8248e-5;
-    eprintln!("pinched cylinder octant 32x32: w = {w:.5e}, error {:.2} %", 100.0 * err);
-    assert!(err.abs() < 0.02, "w = {w}");
+    within("pinched cylinder octant 32x32: w", w, 1.8248e-5, 0.02);
 }
 
 /// Pinched hemisphere with an 18° hole: R = 10, t = 0.04, E = 6.825e7, ν = 0.3, alternating
@@ -278,14 +277,13 @@ fn convergence_report() {
 #[test]
 fn gmsh_import_clamped_plate() {
     use flexfem::analysis;
-    use flexfem::case;
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let al = Material::AL7075;
     let d = al.e / (12.0 * (1.0 - al.nu * al.nu));
     let w_ref = 0.00560 * 100.0 * 100.0f64.powi(2) / d;
     let mut w = Vec::new();
     for name in ["gmsh_plate_quads", "gmsh_plate_tris"] {
-        let c = case::load(&root.join(format!("cases/{name}.json"))).unwrap();
+        let c = analysis::load(&root.join(format!("cases/{name}.json"))).unwrap();
         let out = analysis::run(&c).unwrap();
         let wc = -out.json["load_cases"][0]["displacements"][144][2].as_f64().unwrap();
         eprintln!(
@@ -298,13 +296,11 @@ fn gmsh_import_clamped_plate() {
     let n = 16;
     let mut m = Model::new();
     let ids = grid(&mut m, n, n, 1.0, al, |s, r| [100.0 * s, 100.0 * r, 0.0]);
-    for j in 0..=n {
-        for i in 0..=n {
-            if i == 0 || j == 0 || i == n || j == n {
-                m.supports.push(Support::clamp(ids[j * (n + 1) + i]));
-            }
+    common::meshes::each_node(n, |i, j, edge| {
+        if edge {
+            m.supports.push(Support::clamp(ids[j * (n + 1) + i]));
         }
-    }
+    });
     m.load_cases
         .push(LoadCase::new("c").force(144, [0.0, 0.0, -100.0, 0.0, 0.0, 0.0]));
     let direct = -fem::solve_static(&m).unwrap().load_cases[0].displacements[144][2];
@@ -320,7 +316,7 @@ fn gmsh_unknown_group_is_a_case_error() {
     let text = std::fs::read_to_string(root.join("cases/gmsh_plate_quads.json"))
         .unwrap()
         .replace("\"edge\"", "\"edges\"");
-    let err = flexfem::case::parse_in(&text, Some(&root.join("cases"))).unwrap_err();
+    let err = flexfem::analysis::parse_in(&text, Some(&root.join("cases"))).unwrap_err();
     assert!(err.to_string().contains("gmsh.groups.edges"), "{err}");
 }
 

@@ -8,7 +8,8 @@
 
 mod common;
 use common::*;
-use flexfem::case::{self, Case};
+use flexfem::analysis::{self, Case};
+use flexfem::case;
 use flexfem::fem;
 use flexfem::hinge::{self, HingeSpec};
 use flexfem::stage::{StageModel, NONLINEAR_HINGE_SEGMENTS};
@@ -36,7 +37,7 @@ fn run_out(case: &Path, name: &str) -> PathBuf {
 
 /// The stage model of a bundled stage case (node and element indices, slider directions).
 fn stage_model(case_file: &str) -> StageModel {
-    let Case::Stage(c) = case::load(&root().join(case_file)).unwrap() else {
+    let Case::Stage(c) = analysis::load(&root().join(case_file)).unwrap() else {
         panic!("{case_file} is not a stage case")
     };
     c.validated().unwrap().0.build()
@@ -47,7 +48,7 @@ fn stage_model(case_file: &str) -> StageModel {
 /// distance, stress model [`hinge::HingeRegion::peak_stress`] on the end section forces (of the
 /// first and last segment of a chain: its inner elements come after the case's own, in order).
 fn mesh_hinge_stresses(mesh_file: &Path) -> Vec<Vec<(usize, f64)>> {
-    let Case::Static(sc) = case::load(mesh_file).unwrap() else {
+    let Case::Static(sc) = analysis::load(mesh_file).unwrap() else {
         panic!("stage_mesh.json is not a static case")
     };
     let model = sc.model.build().unwrap();
@@ -192,12 +193,12 @@ fn compare(case_file: &str, name: &str) -> [f64; 3] {
             let el = el.unwrap();
             stresses[ic].iter().find(|(e, _)| *e == el).unwrap().1
         };
-        let got_h: Vec<f64> = s
-            .legs
-            .iter()
-            .map(|leg| by_el(leg.rev_element))
-            .chain(s.legs.iter().map(|leg| by_el(leg.sph_element)))
-            .collect();
+        // Revolute hinges of the three legs, then spherical ones.
+        let per_hinge = |of: &dyn Fn(Option<usize>) -> f64| -> Vec<f64> {
+            let rev = s.legs.iter().map(|leg| of(leg.rev_element));
+            rev.chain(s.legs.iter().map(|leg| of(leg.sph_element))).collect()
+        };
+        let got_h = per_hinge(&by_el);
         let hs = &sr["hinge_stress"];
         let want_h: Vec<f64> = (0..3)
             .map(|i| f(&hs["revolute"][i]))
@@ -210,12 +211,7 @@ fn compare(case_file: &str, name: &str) -> [f64; 3] {
             let h = mr["hinges"].as_array().unwrap();
             f(&h.iter().find(|h| h["element"] == el).unwrap()["peak_von_mises"])
         };
-        let got_r: Vec<f64> = s
-            .legs
-            .iter()
-            .map(|leg| from_result(leg.rev_element))
-            .chain(s.legs.iter().map(|leg| from_result(leg.sph_element)))
-            .collect();
+        let got_r = per_hinge(&from_result);
         let stress = worst(&got_h, &want_h, amax(&want_h)).max(worst(&got_r, &want_h, amax(&want_h)));
         eprintln!(
             "{case_file} `{}`: pose {pose:.2e}, strokes {stroke:.2e}, hinge stresses {stress:.2e}",
@@ -247,7 +243,7 @@ fn stage_mesh_reproduces_the_nonlinear_stage() {
 /// rotated constraint rows separates the two solves).
 #[test]
 fn ideal_joint_stage_mesh_has_joint_elements_and_the_same_pose() {
-    let Case::Stage(mut c) = case::load(&root().join("cases/ruiz2019_stage.json")).unwrap() else {
+    let Case::Stage(mut c) = analysis::load(&root().join("cases/ruiz2019_stage.json")).unwrap() else {
         panic!()
     };
     c.stage.ideal_joints = true;
@@ -264,7 +260,7 @@ fn ideal_joint_stage_mesh_has_joint_elements_and_the_same_pose() {
         .collect();
     assert_eq!(joints.len(), 6);
     assert_eq!(joints.iter().filter(|j| j["kind"] == "revolute").count(), 3);
-    let Case::Static(sc) = case::parse_value(mesh, None).unwrap() else {
+    let Case::Static(sc) = analysis::parse_value(mesh, None).unwrap() else {
         panic!()
     };
     let got = &fem::solve_static(&sc.model.build().unwrap()).unwrap().load_cases[0];
@@ -333,7 +329,7 @@ fn segments_and_joint_frame_are_checked() {
     // The joint about local x = global y, the moment about y: the hinge is free to turn (the
     // revolute joint releases it), so node 1 turns by M·c_yy of the hinge.
     let rot = |extra: &str| {
-        let Case::Static(sc) = case::parse(&hinge_case(extra, x_frame)).unwrap() else {
+        let Case::Static(sc) = analysis::parse(&hinge_case(extra, x_frame)).unwrap() else {
             panic!()
         };
         let m = sc.model.build().unwrap();

@@ -128,29 +128,24 @@ fn failed_designs_exit_1_and_error_rows_are_retried_on_resume() {
         r#"{"hinge.t": {"from": 2, "to": 12, "steps": 6}, "hinge.R": [4, 8]}"#,
     );
     let o = sweep_to(&d, &case, &out);
-    assert_eq!(code(&o), Some(1), "{}", stderr(&o));
+    exits(&o, 1, &["error: 4 of 12 designs failed"]);
     assert_eq!(summary(&o), [12, 0, 12, 4]);
-    assert!(stderr(&o).contains("error: 4 of 12 designs failed"), "{}", stderr(&o));
 
     let o = sweep_to(&d, &case, &out);
-    assert_eq!(code(&o), Some(1));
+    exits(&o, 1, &["retried 4 earlier error rows"]);
     assert_eq!(summary(&o), [12, 8, 4, 4]);
-    assert!(stderr(&o).contains("retried 4 earlier error rows"), "{}", stderr(&o));
     assert_eq!(lines(&out).len(), 12);
 
-    let o = sweep(
-        &d,
-        &[case.to_str().unwrap(), "--out", out.to_str().unwrap(), "--keep-errors"],
-    );
-    assert_eq!(code(&o), Some(1), "the output still holds failed designs");
+    // The output still holds failed designs: exit 1.
+    let args = [case.to_str().unwrap(), "--out", out.to_str().unwrap(), "--keep-errors"];
+    let o = sweep(&d, &args);
+    exits(&o, 1, &["kept 4 earlier error rows", "4 of 12 designs failed"]);
     assert_eq!(summary(&o), [12, 12, 0, 0]);
-    assert!(stderr(&o).contains("kept 4 earlier error rows"), "{}", stderr(&o));
-    assert!(stderr(&o).contains("4 of 12 designs failed"));
 
     // Every design failing on stdout: exit 1 as well.
     let all_bad = write(&d, "bad.json", &sweep_case("Al7075", HINGE, r#"{"hinge.t": [10, 11]}"#));
     let o = sweep(&d, &[all_bad.to_str().unwrap()]);
-    assert_eq!(code(&o), Some(1), "{}", stderr(&o));
+    exits(&o, 1, &[]);
     assert_eq!(summary(&o), [2, 0, 2, 2]);
     cleanup(&d);
 }
@@ -359,8 +354,7 @@ fn check_validates_the_base_case_and_each_varied_path() {
     let bad_base = HINGE.replace("\"w\": 10", "\"w\": -10");
     let case = write(&d, "a.json", &sweep_case("Al7075", &bad_base, r#"{"hinge.t": [1, 2]}"#));
     let o = run_in(&d, &["check", case.to_str().unwrap()]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("`base.hinge.w`"), "{}", stderr(&o));
+    exits_2(&o, &["`base.hinge.w`"]);
 
     // t = 12 ≥ h = 10 only at the range's last value.
     let case = write(
@@ -373,7 +367,7 @@ fn check_validates_the_base_case_and_each_varied_path() {
         ),
     );
     let o = run_in(&d, &["check", case.to_str().unwrap()]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
+    exits_2(&o, &[]);
     let err = stderr(&o);
     assert!(err.contains("`vary.hinge.t`") && err.contains("hinge.t = 12"), "{err}");
 
@@ -383,8 +377,7 @@ fn check_validates_the_base_case_and_each_varied_path() {
         &sweep_case("unobtainium", HINGE, r#"{"hinge.t": [1, 2]}"#),
     );
     let o = run_in(&d, &["check", case.to_str().unwrap()]);
-    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("`base.material`"), "{}", stderr(&o));
+    exits_2(&o, &["`base.material`"]);
 
     // A good sweep passes and says how many designs were resolved.
     let case = write(

@@ -8,14 +8,13 @@ mod common;
 
 use common::{root, run, run_case_text, tempdir};
 use flexfem::analysis;
-use flexfem::case;
 
 /// Runs the bundled `cases/FILE` (in-process) after `edit` changes its JSON.
 fn run_bundled_with(file: &str, edit: impl FnOnce(&mut serde_json::Value)) -> analysis::Outcome {
     let base = std::fs::read_to_string(root().join("cases").join(file)).unwrap();
     let mut c: serde_json::Value = serde_json::from_str(&base).unwrap();
     edit(&mut c);
-    analysis::run(&case::parse(&c.to_string()).unwrap()).unwrap()
+    analysis::run(&analysis::parse(&c.to_string()).unwrap()).unwrap()
 }
 
 /// `out` has a warning starting with `prefix`, and its JSON lists every warning.
@@ -51,8 +50,8 @@ fn every_bundled_result_has_an_empty_warnings_list() {
     let mut n = 0;
     for entry in std::fs::read_dir(root().join("cases")).unwrap() {
         let p = entry.unwrap().path();
-        let c = case::load(&p).unwrap();
-        if matches!(c, case::Case::Sweep(_)) {
+        let c = analysis::load(&p).unwrap();
+        if matches!(c, analysis::Case::Sweep(_)) {
             continue;
         }
         let out = analysis::run(&c).unwrap_or_else(|e| panic!("{}: {e}", p.display()));

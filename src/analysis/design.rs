@@ -57,13 +57,7 @@ pub fn sensitivity_report(r: &SensitivityResult) -> Report {
         sig(r.base.t_ratio, 4),
         r.increment * 100.0
     );
-    let mut t = Table::new(&[
-        "positive increase",
-        "η_{i+1}/η_i",
-        "d_{i+1}/d_i",
-        "T_{i+1}/T_i",
-        "elasticities (η, d, T)",
-    ]);
+    let mut t = Table::columns("positive increase | η_{i+1}/η_i | d_{i+1}/d_i | T_{i+1}/T_i | elasticities (η, d, T)");
     let mut csv =
         String::from("parameter,base_mm,increased_mm,stiffness_ratio,displacement_ratio,stress_ratio_ratio\n");
     for row in &r.rows {

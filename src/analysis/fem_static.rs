@@ -548,15 +548,7 @@ fn hinge_table(c: &StaticCaseRow) -> String {
     if c.hinges.is_empty() {
         return String::new();
     }
-    let mut t = Table::new(&[
-        "element",
-        "rotation (°)",
-        "peak von Mises (MPa)",
-        "utilisation",
-        "remaining rotation (°)",
-        "My a (N·mm)",
-        "My b (N·mm)",
-    ]);
+    let mut t = Table::columns("element | rotation (°) | peak von Mises (MPa) | utilisation | remaining rotation (°) | My a (N·mm) | My b (N·mm)");
     for h in &c.hinges {
         let rem = if h.remaining_rotation_deg.is_finite() {
             format!("{:.4}", h.remaining_rotation_deg)

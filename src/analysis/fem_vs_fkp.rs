@@ -103,31 +103,8 @@ pub fn fem_vs_fkp_report(r: &FemVsFkpResult) -> (Report, super::Files) {
     let mut md = String::from(
         "# FEM versus rigid-body forward kinematics (Ruiz et al. (2019) Tables 4–6 layout)\n\n## Predictions\n\n",
     );
-    let mut t = Table::new(&[
-        "Δs₁ (µm)",
-        "Δs₂ (µm)",
-        "Δs₃ (µm)",
-        "Δz linear FEM (µm)",
-        "Δz nonlinear FEM (µm)",
-        "Δz FKP (µm)",
-        "ψ linear FEM",
-        "ψ nonlinear FEM",
-        "ψ FKP",
-        "θ linear FEM",
-        "θ nonlinear FEM",
-        "θ FKP",
-    ]);
-    let mut d = Table::new(&[
-        "Δs₁ (µm)",
-        "Δs₂ (µm)",
-        "Δs₃ (µm)",
-        "|Δz lin − FKP| (µm)",
-        "|Δz nl − FKP| (µm)",
-        "|ψ lin − FKP|",
-        "|ψ nl − FKP|",
-        "|θ lin − FKP|",
-        "|θ nl − FKP|",
-    ]);
+    let mut t = Table::columns("Δs₁ (µm) | Δs₂ (µm) | Δs₃ (µm) | Δz linear FEM (µm) | Δz nonlinear FEM (µm) | Δz FKP (µm) | ψ linear FEM | ψ nonlinear FEM | ψ FKP | θ linear FEM | θ nonlinear FEM | θ FKP");
+    let mut d = Table::columns("Δs₁ (µm) | Δs₂ (µm) | Δs₃ (µm) | |Δz lin − FKP| (µm) | |Δz nl − FKP| (µm) | |ψ lin − FKP| | |ψ nl − FKP| | |θ lin − FKP| | |θ nl − FKP|");
     let mut csv = String::from(
         "s1_um,s2_um,s3_um,z_fem_um,z_fem_nl_um,z_fkp_um,psi_fem_deg,psi_fem_nl_deg,psi_fkp_deg,theta_fem_deg,theta_fem_nl_deg,theta_fkp_deg\n",
     );

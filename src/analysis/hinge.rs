@@ -232,13 +232,7 @@ pub fn report(r: &HingeResult) -> Report {
 /// Markdown section of the large-rotation curve.
 pub fn large_rotation_report(lr: &LargeRotation) -> String {
     let mut md = format!("\n## Large rotation\n\nLoad: {}.\n\n", lr.load);
-    let mut t = Table::new(&[
-        "F (N)",
-        "M centre (N·mm)",
-        "θ nonlinear (°)",
-        "θ linear (°)",
-        "σ_max (MPa)",
-    ]);
+    let mut t = Table::columns("F (N) | M centre (N·mm) | θ nonlinear (°) | θ linear (°) | σ_max (MPa)");
     for p in &lr.points {
         t.row(vec![
             sig(p.force, 5),

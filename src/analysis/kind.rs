@@ -3,10 +3,12 @@
 //! [`super::registry::REGISTRY`]. Drivers (`flexfem run`, `flexfem check`, sweeps) reach every
 //! kind through the object-safe [`DynAnalysis`] view of the registry and never name a kind.
 //!
-//! Adding an analysis kind: a module implementing [`Analysis`] and one line in the registry.
+//! Adding an analysis kind: one module implementing [`Analysis`] and one line in the list of
+//! kinds, [`super::kinds_list`].
 
+use super::case_file::{Case, CaseOf};
 use super::{Files, Report, RunError};
-use crate::case::{Case, CaseError, MaterialSpec, OfCase};
+use crate::case::{CaseError, MaterialSpec};
 use crate::fem::SolverCache;
 use crate::material::Material;
 use serde::Serialize;
@@ -43,15 +45,11 @@ pub type UsedMaterial = (String, MaterialSpec, Material);
 pub trait Analysis: 'static {
     /// The `analysis` name in case files.
     const KIND: &'static str;
-    /// The parsed case (a serde shape of [`crate::case`], one variant of [`Case`]).
-    type Case: OfCase;
+    /// The parsed case (a serde shape, one variant of [`Case`]).
+    type Case;
     /// The typed result; its JSON is the `result.json` of a run and the `result` of a sweep line.
     type Result: Serialize;
 
-    /// The case of this kind inside a parsed case file, if it is one.
-    fn case(case: &Case) -> Option<&Self::Case> {
-        Self::Case::of_case(case)
-    }
     /// Validates the case (everything checked before solving).
     fn check(case: &Self::Case) -> Result<(), CaseError>;
     /// Validates and runs the case; extra files and run warnings go into `ctx`.
@@ -152,15 +150,15 @@ impl<A> Default for Entry<A> {
     }
 }
 
-impl<A: Analysis> DynAnalysis for Entry<A> {
+impl<A: CaseOf> DynAnalysis for Entry<A> {
     fn kind(&self) -> &'static str {
         A::KIND
     }
     fn check(&self, case: &Case) -> Option<Result<(), CaseError>> {
-        A::case(case).map(A::check)
+        A::case_of(case).map(A::check)
     }
     fn run(&self, case: &Case, ctx: &mut Ctx) -> Option<Result<super::Outcome, RunError>> {
-        let c = A::case(case)?;
+        let c = A::case_of(case)?;
         Some(run_typed::<A>(c, ctx).and_then(|t| {
             Ok(super::Outcome {
                 json: super::to_checked_json(&t.result)?,
@@ -171,7 +169,7 @@ impl<A: Analysis> DynAnalysis for Entry<A> {
         }))
     }
     fn materials(&self, case: &Case) -> Vec<UsedMaterial> {
-        A::case(case).map(A::materials).unwrap_or_default()
+        A::case_of(case).map(A::materials).unwrap_or_default()
     }
     fn sweep_files(&self) -> &'static [SweepFile] {
         A::sweep_files()

@@ -193,17 +193,8 @@ pub fn report(r: &KinematicsResult) -> Report {
     let mut csv = String::from("kind,s1_mm,s2_mm,s3_mm,z_mm,psi_deg,theta_deg,x_mm,y_mm,phi_deg\n");
     if !r.fkp.is_empty() {
         md += "## Forward kinematics\n\n";
-        let mut t = Table::new(&[
-            "Δs₁ (µm)",
-            "Δs₂ (µm)",
-            "Δs₃ (µm)",
-            "Δz (µm)",
-            "ψ (DMS)",
-            "θ (DMS)",
-            "x (µm)",
-            "y (µm)",
-            "φ (DMS)",
-        ]);
+        let mut t =
+            Table::columns("Δs₁ (µm) | Δs₂ (µm) | Δs₃ (µm) | Δz (µm) | ψ (DMS) | θ (DMS) | x (µm) | y (µm) | φ (DMS)");
         for f in &r.fkp {
             let um = |v: f64| format!("{:.0}", v * 1000.0);
             t.row(vec![
@@ -227,17 +218,7 @@ pub fn report(r: &KinematicsResult) -> Report {
     }
     if !r.ikp.is_empty() {
         md += "## Inverse kinematics\n\n";
-        let mut t = Table::new(&[
-            "z (mm)",
-            "ψ (°)",
-            "θ (°)",
-            "s₁ (mm)",
-            "s₂ (mm)",
-            "s₃ (mm)",
-            "x (µm)",
-            "y (µm)",
-            "φ (DMS)",
-        ]);
+        let mut t = Table::columns("z (mm) | ψ (°) | θ (°) | s₁ (mm) | s₂ (mm) | s₃ (mm) | x (µm) | y (µm) | φ (DMS)");
         for q in &r.ikp {
             t.row(vec![
                 format!("{:.4}", q.z),

@@ -1,5 +1,6 @@
 //! Analyses: validated case → typed result → JSON/Markdown/CSV views.
 
+pub mod case_file;
 pub mod design;
 pub mod fem_static;
 pub mod fem_vs_fkp;
@@ -7,6 +8,7 @@ pub mod finite;
 pub mod hinge;
 pub mod kind;
 pub mod kinds;
+pub mod kinds_list;
 pub mod kinematics;
 pub mod modal;
 pub mod registry;
@@ -17,12 +19,13 @@ pub mod vtu;
 pub mod warn;
 
 use registry::analysis_modules;
-crate::case::kinds::analyses!(analysis_modules);
+kinds_list::analyses!(analysis_modules);
 
+pub use case_file::{load, parse, parse_in, parse_value, schema, Case, ANALYSES};
 pub use kind::{Analysis, Ctx, DynAnalysis};
 pub use warn::{hinge_warnings, SMALL_STRAIN};
 
-use crate::case::{Case, CaseError, MaterialSpec};
+use crate::case::{CaseError, MaterialSpec};
 use crate::fem::SolverCache;
 use crate::material::Material;
 use std::fmt;

@@ -6,7 +6,7 @@
 use super::kind::{Analysis, Ctx};
 use super::{AnalysisError, Report, RunError};
 use crate::case::pantilt::{PanTiltCase, ValidPanTilt};
-use crate::case::{Case, CaseError};
+use crate::case::CaseError;
 use crate::kinematics::pantilt::{PanTilt, PanTiltError, PathState, JOINTS};
 use crate::report::markdown::{sig, Table};
 use crate::report::svg;
@@ -401,12 +401,7 @@ pub fn report(r: &PanTiltResult) -> Report {
         }
         md += &t.render();
         md += "\n";
-        let mut t = Table::new(&[
-            "Actuator",
-            "largest |τ| undamped (N·mm)",
-            "largest |τ| damped (N·mm)",
-            "largest damper share (N·mm)",
-        ]);
+        let mut t = Table::columns("Actuator | largest |τ| undamped (N·mm) | largest |τ| damped (N·mm) | largest damper share (N·mm)");
         for a in 0..2 {
             t.row(vec![
                 format!("limb {} (J{})", g.actuated[a], g.actuated[a]),
@@ -494,12 +489,6 @@ impl Analysis for PanTiltKind {
     type Case = PanTiltCase;
     type Result = PanTiltResult;
 
-    fn case(case: &Case) -> Option<&Self::Case> {
-        match case {
-            Case::PanTilt(c) => Some(c),
-            _ => None,
-        }
-    }
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.validate().map(|_| ())
     }

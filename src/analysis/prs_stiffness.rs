@@ -8,7 +8,7 @@
 use super::kind::{Analysis, Ctx};
 use super::{AnalysisError, Files, Report, RunError};
 use crate::case::prs_stiffness::{metric_unit, FrameSpec, MapSpec, PrsStiffnessCase, WorkspaceSpec};
-use crate::case::{Case, CaseError};
+use crate::case::CaseError;
 use crate::kinematics::prs_stiffness::{map, scaled_eigen, stiffness_limited, Grid, MapCell};
 use crate::report::markdown::{sig, Table};
 use nalgebra::{Vector3, Vector6};
@@ -321,20 +321,7 @@ pub fn report(r: &PrsStiffnessResult) -> Report {
     let mut md = String::from("# 3-PRS stiffness\n\n");
     md += &format!("Conventions: {}.\n\n", r.conventions);
     if !r.poses.is_empty() {
-        let mut t = Table::new(&[
-            "p_z (mm)",
-            "ψ (°)",
-            "θ (°)",
-            "φ (°)",
-            "pₓ (mm)",
-            "p_y (mm)",
-            "1/C_xx (N/mm)",
-            "1/C_yy",
-            "1/C_zz",
-            "λ_min,3 (N/mm)",
-            "λ_max,3 (N/mm)",
-            "|δp| (mm)",
-        ]);
+        let mut t = Table::columns("p_z (mm) | ψ (°) | θ (°) | φ (°) | pₓ (mm) | p_y (mm) | 1/C_xx (N/mm) | 1/C_yy | 1/C_zz | λ_min,3 (N/mm) | λ_max,3 (N/mm) | |δp| (mm)");
         for p in &r.poses {
             t.row(vec![
                 sig(p.pz, 6),
@@ -459,12 +446,6 @@ impl Analysis for PrsStiffnessAnalysis {
     type Case = PrsStiffnessCase;
     type Result = PrsStiffnessResult;
 
-    fn case(case: &Case) -> Option<&Self::Case> {
-        match case {
-            Case::PrsStiffness(c) => Some(c),
-            _ => None,
-        }
-    }
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.validate().map(|_| ())
     }

@@ -19,18 +19,9 @@ pub fn stage_report(r: &StageResult) -> Report {
             md += &w;
         }
     }
-    let mut t = Table::new(&[
-        "load case",
-        "F₁, F₂, F₃ (N)",
-        "s₁, s₂, s₃ (mm)",
-        "Δz (µm)",
-        "ψ",
-        "θ",
-        "σ_rev (MPa)",
-        "σ_sph (MPa)",
-        "σ_max (MPa)",
-        "T",
-    ]);
+    let mut t = Table::columns(
+        "load case | F₁, F₂, F₃ (N) | s₁, s₂, s₃ (mm) | Δz (µm) | ψ | θ | σ_rev (MPa) | σ_sph (MPa) | σ_max (MPa) | T",
+    );
     // Platform translations in µm in the CSV as in the Markdown table; `kind` = load_case or
     // mode (natural frequencies, when the case asks for `modes`).
     let mut csv = String::from(

@@ -218,13 +218,16 @@ impl SweepCase {
     }
 }
 
+/// The name under `$defs` of the schema of the kinds a sweep's `base` may be (any but `sweep`):
+/// the list of kinds lives with the analyses, whose case-file schema defines it.
+pub const BASE_KIND_DEF: &str = "SweepBaseAnalysis";
+
 /// Schema of `base`: an object whose `analysis` is any but `sweep` (the rest is checked per
 /// design, since varied values may complete it).
 fn base_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
-    let names: Vec<&str> = super::ANALYSES.iter().copied().filter(|a| *a != "sweep").collect();
     schemars::json_schema!({
         "type": "object",
         "required": ["analysis"],
-        "properties": {"analysis": {"type": "string", "enum": names}}
+        "properties": {"analysis": {"$ref": format!("#/$defs/{BASE_KIND_DEF}")}}
     })
 }

@@ -5,7 +5,7 @@ pub mod sweep;
 mod targets;
 
 use crate::analysis::{self, RunError};
-use crate::case::{self, CaseError};
+use crate::case::CaseError;
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -71,8 +71,8 @@ shards one after another (their lines accumulate in FILE) or give each its own -
 
 pub use crate::output::{EXIT_BAD_CASE, EXIT_FAILED};
 
-fn read_case(path: &Path) -> Result<case::Case, CaseError> {
-    case::load(path)
+fn read_case(path: &Path) -> Result<analysis::Case, CaseError> {
+    analysis::load(path)
 }
 
 fn fail(e: &RunError) -> ExitCode {
@@ -171,11 +171,11 @@ pub fn run(cli: Cli) -> ExitCode {
         Command::Sweep(args) => sweep::run_cli(args),
         Command::Schema => emit(&format!(
             "{}\n",
-            serde_json::to_string_pretty(&case::schema()).unwrap_or_default()
+            serde_json::to_string_pretty(&analysis::schema()).unwrap_or_default()
         )),
         Command::Check { case } => {
             let checked = read_case(&case).and_then(|c| match &c {
-                case::Case::Sweep(s) => {
+                analysis::Case::Sweep(s) => {
                     let sweep = s.build()?;
                     let n = crate::design::sweep::check(&sweep, case.parent())?;
                     Ok(format!(

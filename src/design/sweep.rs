@@ -14,9 +14,10 @@
 //! same set of lines as one unsharded run. The command-line half (output files, resume, locking,
 //! progress, exit codes) is [`crate::cli::sweep`]'s.
 
+use crate::analysis::Case;
 use crate::analysis::{self, Ctx, RunError};
 use crate::case::sweep::Sweep;
-use crate::case::{self, Case, CaseError};
+use crate::case::{self, CaseError};
 use crate::fem::SolverCache;
 use rayon::prelude::*;
 use serde_json::{Map, Value};
@@ -295,7 +296,7 @@ pub fn design_hash(sweep: &Sweep, base_dir: Option<&Path>, index: usize) -> Opti
 /// references, then analysed.
 fn evaluate(sweep: &Sweep, base_dir: Option<&Path>, index: usize, cache: &mut SolverCache) -> Result<Value, String> {
     let design = sweep.design(index).map_err(|e| case_text(&e))?;
-    let case = case::parse_value(design, base_dir).map_err(|e| case_text(&e))?;
+    let case = analysis::parse_value(design, base_dir).map_err(|e| case_text(&e))?;
     if let Case::Sweep(_) = case {
         return Err("analysis: a sweep cannot vary another sweep".into());
     }
@@ -424,7 +425,7 @@ pub use crate::output::with_suffix;
 
 /// Loads and builds the sweep of a case file (errors are bad-case errors, exit 2).
 pub fn load(path: &Path) -> Result<Sweep, CaseError> {
-    match case::load(path)? {
+    match analysis::load(path)? {
         Case::Sweep(s) => s.build(),
         other => Err(CaseError::value(
             "analysis",
@@ -471,7 +472,7 @@ pub fn check(sweep: &Sweep, base_dir: Option<&Path>) -> Result<usize, CaseError>
             CaseError::new(path, format!("design {i} ({params}): {}", e.message))
         };
         let design = sweep.design(i)?;
-        let case = case::parse_value(design, base_dir).map_err(located)?;
+        let case = analysis::parse_value(design, base_dir).map_err(located)?;
         if let Case::Sweep(_) = case {
             return Err(CaseError::value(
                 "base.analysis",

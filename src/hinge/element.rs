@@ -235,13 +235,7 @@ pub fn profile_volume(p: &Profile) -> f64 {
     let (x0, dx) = (-p.half_notch, 2.0 * p.half_notch / n as f64);
     let mut s = 0.0;
     for i in 0..=n {
-        let wgt = if i == 0 || i == n {
-            1.0
-        } else if i % 2 == 1 {
-            4.0
-        } else {
-            2.0
-        };
+        let wgt = if i == 0 || i == n { 1.0 } else { [2.0, 4.0][i % 2] };
         // The notch's end values from inside (a leaf's thickness jumps to h at its ends).
         s += wgt * area((x0 + i as f64 * dx) * (1.0 - 1e-12));
     }

@@ -16,6 +16,12 @@ impl Table {
         }
     }
 
+    /// A table with the column headings of `header`, separated by ` | `
+    /// (`"z (mm) | ψ (°) | x (µm)"`).
+    pub fn columns(header: &str) -> Self {
+        Table::new(&header.split(" | ").collect::<Vec<_>>())
+    }
+
     /// Appends a row (cells beyond the header are ignored, missing ones left blank).
     pub fn row(&mut self, cells: Vec<String>) {
         self.rows.push(cells);

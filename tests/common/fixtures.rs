@@ -7,7 +7,7 @@
 //! of pasting the numbers.
 #![allow(dead_code)]
 
-use flexfem::case::{self, Case};
+use flexfem::analysis::{self, Case};
 use flexfem::hinge::HingeSpec;
 use flexfem::kinematics::Prs;
 use flexfem::stage::{Drive, StageDesign};
@@ -35,7 +35,7 @@ pub fn ruiz2019_stage_loaded(load_cases: Value) -> String {
 
 /// The validated design and drives of a stage case file's text.
 pub fn stage_case(text: &str) -> (StageDesign, Vec<(String, Drive)>) {
-    let Case::Stage(c) = case::parse(text).unwrap_or_else(|e| panic!("{e}")) else {
+    let Case::Stage(c) = analysis::parse(text).unwrap_or_else(|e| panic!("{e}")) else {
         panic!("not a stage case")
     };
     c.validate().unwrap_or_else(|e| panic!("{e}"))

@@ -70,3 +70,13 @@ pub fn shell_grid_json(
     }
     (nodes, elements)
 }
+
+/// Visits the nodes (i, j) of an `n`×`n` grid, row by row, telling whether each is on the
+/// boundary (i or j is 0 or `n`).
+pub fn each_node(n: usize, mut visit: impl FnMut(usize, usize, bool)) {
+    for j in 0..=n {
+        for i in 0..=n {
+            visit(i, j, i == 0 || j == 0 || i == n || j == n);
+        }
+    }
+}

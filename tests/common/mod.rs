@@ -32,6 +32,13 @@ pub fn run_in(dir: &Path, args: &[&str]) -> Output {
     Command::new(bin()).args(args).current_dir(dir).output().unwrap()
 }
 
+/// Runs `flexfem ARGS` in `dir` and asserts exit 0.
+pub fn run_ok_in(dir: &Path, args: &[&str]) -> Output {
+    let o = run_in(dir, args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    o
+}
+
 /// Runs `flexfem ARGS` in the crate root.
 pub fn run(args: &[&str]) -> Output {
     run_in(&root(), args)
@@ -102,4 +109,20 @@ pub fn parse_lines(text: &str) -> Vec<serde_json::Value> {
     text.lines()
         .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("not a JSON line ({e}): {l}")))
         .collect()
+}
+
+/// Asserts that the run exited with `exit` and a stderr naming each of `needles`; stderr.
+pub fn exits(o: &Output, exit: i32, needles: &[&str]) -> String {
+    let err = stderr(o);
+    assert_eq!(code(o), Some(exit), "{err}");
+    for n in needles {
+        assert!(err.contains(n), "`{n}` missing in: {err}");
+    }
+    err
+}
+
+/// Asserts that the run was refused as a bad case or command line (exit 2) with a message
+/// naming each of `needles`; the message.
+pub fn exits_2(o: &Output, needles: &[&str]) -> String {
+    exits(o, 2, needles)
 }

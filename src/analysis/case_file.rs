@@ -1,0 +1,286 @@
+//! Reading a case file: the text becomes a JSON value, `analysis` picks the kind from the list
+//! of kinds ([`super::kinds_list`]), and the rest is deserialised into that kind's case shape
+//! with every error under its JSON path.
+
+use super::kinds_list::analyses;
+#[allow(unused_imports)]
+use super::*; // the modules the list's paths start from
+use crate::case::{from_value, limits, short, CaseError};
+use serde_json::Value;
+use std::path::Path;
+
+/// The analysis `Self` of one line of the list of kinds: its case inside a parsed [`Case`].
+pub trait CaseOf: super::Analysis {
+    /// The case of this kind inside a parsed case file, if it is one.
+    fn case_of(case: &Case) -> Option<&Self::Case>;
+}
+
+/// The parser of a plain case shape: serde with unknown fields refused, errors under their
+/// JSON path.
+pub fn shape<T: serde::de::DeserializeOwned>(value: Value, _base: Option<&Path>) -> Result<T, CaseError> {
+    from_value(value, "")
+}
+
+/// The parser of a line of the list: its `parse PATH`, else [`shape`].
+macro_rules! parser {
+    () => {
+        shape
+    };
+    ($parse:path) => {
+        $parse
+    };
+}
+
+/// Expands [`analyses!`] into the [`Case`] enum and its dispatch.
+macro_rules! case_side {
+    ($($(#[$attr:meta])* $variant:ident = $name:literal #$rank:literal, $(mod $module:ident,)? analysis $analysis:path $(, parse $parse:path)?;)*) => {
+        /// A parsed case file (not yet validated).
+        #[derive(Debug, Clone, schemars::JsonSchema)]
+        #[serde(tag = "analysis", rename_all = "snake_case")]
+        pub enum Case {
+            $(
+                $(#[$attr])*
+                $variant(<$analysis as Analysis>::Case),
+            )*
+        }
+
+        /// The `analysis` names this build understands.
+        pub const ANALYSES: &[&str] = &{
+            let mut names = [""; [$($name),*].len()];
+            $(names[$rank] = $name;)*
+            names
+        };
+
+        impl Case {
+            /// The `analysis` name.
+            pub fn analysis(&self) -> &'static str {
+                match self {
+                    $(Case::$variant(_) => $name,)*
+                }
+            }
+        }
+
+        $(
+            impl CaseOf for $analysis {
+                fn case_of(case: &Case) -> Option<&Self::Case> {
+                    match case {
+                        Case::$variant(c) => Some(c),
+                        #[allow(unreachable_patterns)]
+                        _ => None,
+                    }
+                }
+            }
+        )*
+
+        /// The case of kind `analysis` from the rest of its JSON object (`None`: no such kind).
+        fn parse_kind(analysis: &str, value: Value, base: Option<&Path>) -> Option<Result<Case, CaseError>> {
+            match analysis {
+                $($name => Some(parser!($($parse)?)(value, base).map(Case::$variant)),)*
+                _ => None,
+            }
+        }
+    };
+}
+
+analyses!(case_side);
+
+/// Reads and parses a case file; files it refers to (`mesh`) are looked up beside it.
+pub fn load(path: &Path) -> Result<Case, CaseError> {
+    let shown = format!("\"{}\"", path.display());
+    let bytes = limits::read_file(".", "case file", &shown, path)?;
+    let text = String::from_utf8(bytes).map_err(|e| {
+        CaseError::new(
+            ".",
+            format!("cannot read case file {}: not UTF-8 text ({e})", path.display()),
+        )
+    })?;
+    parse_in(&text, path.parent())
+}
+
+/// Parses case-file text (relative file references resolve against the working folder).
+pub fn parse(text: &str) -> Result<Case, CaseError> {
+    parse_in(text, None)
+}
+
+/// Parses case-file text; relative file references resolve against `base` first.
+pub fn parse_in(text: &str, base: Option<&Path>) -> Result<Case, CaseError> {
+    let value: Value = serde_json::from_str(text).map_err(|e| CaseError::new(".", format!("not valid JSON: {e}")))?;
+    parse_value(value, base)
+}
+
+/// Parses a case already read as JSON.
+pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseError> {
+    if !value.is_object() {
+        return Err(CaseError::value(
+            ".",
+            short(&value),
+            "a case file must be a JSON object",
+        ));
+    }
+    refuse_positional(&value)?;
+    let Value::Object(map) = &mut value else {
+        unreachable!("checked above");
+    };
+    let analysis = match map.remove("analysis") {
+        Some(Value::String(s)) => s,
+        Some(other) => {
+            return Err(CaseError::value(
+                "analysis",
+                short(&other),
+                format!("must be one of {}", ANALYSES.join(", ")),
+            ))
+        }
+        None => {
+            return Err(CaseError::new(
+                "analysis",
+                format!("missing field `analysis`; one of {}", ANALYSES.join(", ")),
+            ))
+        }
+    };
+    parse_kind(&analysis, value, base).unwrap_or_else(|| {
+        Err(CaseError::value(
+            "analysis",
+            format!("\"{analysis}\""),
+            format!("must be one of {}", ANALYSES.join(", ")),
+        ))
+    })
+}
+
+/// Refuses an array where the case schema allows only an object.
+///
+/// serde also reads a struct from the array of its field values in declaration order
+/// (`"leg": [10, 10]`, `"hinge": ["leaf", 5, 1, …]`). Case files do not take that form: the schema
+/// refuses it, and the errors about such a value would name fields (`hinge.t`) that the file
+/// does not have.
+fn refuse_positional(value: &Value) -> Result<(), CaseError> {
+    static SCHEMA: std::sync::OnceLock<Value> = std::sync::OnceLock::new();
+    let schema = SCHEMA.get_or_init(schema);
+    let defs = schema.get("$defs").and_then(Value::as_object);
+    let mut roots = Vec::new();
+    expand(schema, defs, &mut roots, 0);
+    positional(value, &roots, defs, String::new())
+}
+
+/// The schema nodes that `node` stands for: itself if it says something about types, and what
+/// its `$ref`, `anyOf`, `oneOf` and `allOf` lead to (`if`/`then`/`else` and `not` are skipped:
+/// they only add constraints).
+fn expand<'a>(
+    node: &'a Value,
+    defs: Option<&'a serde_json::Map<String, Value>>,
+    out: &mut Vec<&'a Value>,
+    depth: usize,
+) {
+    let Some(m) = node.as_object() else {
+        return;
+    };
+    if depth > 32 {
+        return;
+    }
+    let typed = [
+        "type",
+        "properties",
+        "additionalProperties",
+        "items",
+        "prefixItems",
+        "enum",
+        "const",
+    ];
+    if typed.iter().any(|k| m.contains_key(*k)) {
+        out.push(node);
+    }
+    if let Some(r) = m.get("$ref").and_then(Value::as_str) {
+        if let Some(d) = r.strip_prefix("#/$defs/").and_then(|n| defs.and_then(|d| d.get(n))) {
+            expand(d, defs, out, depth + 1);
+        }
+    }
+    for k in ["anyOf", "oneOf", "allOf"] {
+        for b in m.get(k).and_then(Value::as_array).into_iter().flatten() {
+            expand(b, defs, out, depth + 1);
+        }
+    }
+}
+
+fn allows_array(node: &Value) -> bool {
+    match node.get("type") {
+        Some(Value::String(t)) => t == "array",
+        Some(Value::Array(ts)) => ts.iter().any(|t| t == "array"),
+        _ => {
+            !(node.get("properties").is_some()
+                || node.get("additionalProperties").is_some_and(Value::is_object)
+                || node.get("enum").is_some()
+                || node.get("const").is_some())
+        }
+    }
+}
+
+fn positional(
+    value: &Value,
+    candidates: &[&Value],
+    defs: Option<&serde_json::Map<String, Value>>,
+    path: String,
+) -> Result<(), CaseError> {
+    if candidates.is_empty() {
+        return Ok(());
+    }
+    let mut children: Vec<&Value> = Vec::new();
+    match value {
+        Value::Array(items) => {
+            if !candidates.iter().any(|c| allows_array(c)) {
+                return Err(CaseError::value(
+                    if path.is_empty() { "." } else { &path },
+                    short(value),
+                    "an object is expected here: give its fields by name, {\"field\": value, …}",
+                ));
+            }
+            for (i, item) in items.iter().enumerate() {
+                children.clear();
+                for c in candidates {
+                    let node = c
+                        .get("prefixItems")
+                        .and_then(|p| p.get(i))
+                        .or_else(|| c.get("items").filter(|x| x.is_object()));
+                    if let Some(n) = node {
+                        expand(n, defs, &mut children, 0);
+                    }
+                }
+                positional(item, &children, defs, format!("{path}[{i}]"))?;
+            }
+        }
+        Value::Object(map) => {
+            for (k, item) in map {
+                children.clear();
+                for c in candidates {
+                    let node = c
+                        .get("properties")
+                        .and_then(|p| p.get(k))
+                        .or_else(|| c.get("additionalProperties").filter(|x| x.is_object()));
+                    if let Some(n) = node {
+                        expand(n, defs, &mut children, 0);
+                    }
+                }
+                let p = if path.is_empty() {
+                    k.clone()
+                } else {
+                    format!("{path}.{k}")
+                };
+                positional(item, &children, defs, p)?;
+            }
+        }
+        _ => {}
+    }
+    Ok(())
+}
+
+/// The JSON Schema of case files.
+pub fn schema() -> Value {
+    let mut schema = serde_json::to_value(schemars::schema_for!(Case)).unwrap_or(Value::Null);
+    // The sweep's `base` names any kind but `sweep` (see `crate::case::sweep`).
+    let names: Vec<&str> = ANALYSES.iter().copied().filter(|a| *a != "sweep").collect();
+    if let Some(defs) = schema.get_mut("$defs").and_then(Value::as_object_mut) {
+        defs.insert(
+            crate::case::sweep::BASE_KIND_DEF.into(),
+            serde_json::json!({"type": "string", "enum": names}),
+        );
+    }
+    schema
+}
