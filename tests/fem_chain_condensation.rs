@@ -14,23 +14,31 @@ use flexfem::material::Material;
 /// (splits a chain), an element pointing backwards, a flexibility element inside a chain, a
 /// rigid link, a framed support with a prescribed displacement, inclined elements.
 fn frame() -> (Model, Vec<LoadCase>) {
-    let mut m = Model::new();
-    let al = Material::AL7075;
-    let rect = Section::Rect { w: 6.0, h: 4.0 };
-    // Leg 1: 0 → 1 → 2 → 3 → 4 (node 2 loaded in case "mid").
-    let pts = [
+    // Leg 1: 0 → 1 → 2 → 3 → 4 (node 2 loaded in case "mid"); leg 2: 4 → 5 → 6 → 7 → 8 down
+    // to a framed slider; a branch at node 4: 4 → 9 → 10, node 10 a rigid-link master of node
+    // 11, tied by the chain 11 → 12 → 13 to the ground node 13.
+    const NODES: [[f64; 3]; 14] = [
         [0.0, 0.0, 0.0],
         [10.0, 1.0, 2.0],
         [20.0, 3.0, 3.0],
         [31.0, 4.0, 5.0],
         [40.0, 4.0, 10.0],
+        [50.0, -5.0, 8.0],
+        [60.0, -10.0, 5.0],
+        [70.0, -12.0, 2.0],
+        [80.0, -15.0, 0.0],
+        [40.0, 14.0, 12.0],
+        [40.0, 24.0, 14.0],
+        [45.0, 24.0, 14.0],
+        [45.0, 34.0, 8.0],
+        [45.0, 44.0, 0.0],
     ];
-    for p in pts {
+    let mut m = Model::new();
+    NODES.iter().for_each(|&p| {
         m.add_node(p);
-    }
-    m.add_beam(Beam::new(0, 1, rect, al, [0.0, 0.0, 1.0]));
-    m.add_beam(Beam::new(2, 1, rect, al, [0.0, 1.0, 1.0])); // backwards
-    m.add_beam(Beam::new(2, 3, Section::Circle { d: 5.0 }, al, [0.0, 0.0, 1.0]));
+    });
+    let al = Material::AL7075;
+    let rect = Section::Rect { w: 6.0, h: 4.0 };
     let c = [
         [1e-3, 0.0, 0.0, 0.0, 0.0, 0.0],
         [0.0, 2e-2, 0.0, 0.0, 0.0, 1e-3],
@@ -39,47 +47,46 @@ fn frame() -> (Model, Vec<LoadCase>) {
         [0.0, 0.0, -2e-3, 0.0, 4e-4, 0.0],
         [0.0, 1e-3, 0.0, 0.0, 0.0, 3e-4],
     ];
-    m.add_element(Element::Flex(FlexElement {
-        nodes: [3, 4],
-        compliance: c,
-        up: [0.0, 1.0, 0.0],
-    }));
-    // Leg 2 from node 4 down to a framed slider 8: 4 → 5 → 6 → 7 → 8 (Euler–Bernoulli middle).
-    for p in [
-        [50.0, -5.0, 8.0],
-        [60.0, -10.0, 5.0],
-        [70.0, -12.0, 2.0],
-        [80.0, -15.0, 0.0],
-    ] {
-        m.add_node(p);
+    let flex = |nodes: [usize; 2], up: [f64; 3]| {
+        Element::Flex(FlexElement {
+            nodes,
+            compliance: c,
+            up,
+        })
+    };
+    // (element, kind): beams with their `up`, one backwards (2 → 1), one Euler–Bernoulli (5 → 6),
+    // a circular one (2 → 3) and two flexibility elements.
+    let (x, y, z) = ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
+    let beams: [(usize, usize, [f64; 3]); 7] = [
+        (0, 1, z),
+        (2, 1, [0.0, 1.0, 1.0]),
+        (4, 5, z),
+        (6, 7, z),
+        (4, 9, x),
+        (9, 10, x),
+        (11, 12, x),
+    ];
+    for (k, &(a, b, up)) in beams.iter().enumerate() {
+        m.add_beam(Beam::new(a, b, rect, al, up));
+        match k {
+            1 => {
+                m.add_beam(Beam::new(2, 3, Section::Circle { d: 5.0 }, al, z));
+                m.add_element(flex([3, 4], y));
+            }
+            2 => {
+                m.add_beam(Beam::new(5, 6, rect, al, [1.0, 0.0, 1.0]).euler_bernoulli());
+            }
+            3 => {
+                m.add_element(flex([7, 8], z));
+            }
+            _ => {}
+        }
     }
-    m.add_beam(Beam::new(4, 5, rect, al, [0.0, 0.0, 1.0]));
-    m.add_beam(Beam::new(5, 6, rect, al, [1.0, 0.0, 1.0]).euler_bernoulli());
-    m.add_beam(Beam::new(6, 7, rect, al, [0.0, 0.0, 1.0]));
-    m.add_element(Element::Flex(FlexElement {
-        nodes: [7, 8],
-        compliance: c,
-        up: [0.0, 0.0, 1.0],
-    }));
-    // Branch at node 4: a short arm 4 → 9 → 10, node 10 a rigid-link master of node 11 which
-    // is tied by a beam chain 11 → 12 → 13 to the ground node 13.
-    for p in [
-        [40.0, 14.0, 12.0],
-        [40.0, 24.0, 14.0],
-        [45.0, 24.0, 14.0],
-        [45.0, 34.0, 8.0],
-        [45.0, 44.0, 0.0],
-    ] {
-        m.add_node(p);
-    }
-    m.add_beam(Beam::new(4, 9, rect, al, [1.0, 0.0, 0.0]));
-    m.add_beam(Beam::new(9, 10, rect, al, [1.0, 0.0, 0.0]));
+    m.add_beam(Beam::new(12, 13, rect, al, x));
     m.rigid_links.push(RigidLink {
         master: 10,
         slaves: vec![11],
     });
-    m.add_beam(Beam::new(11, 12, rect, al, [1.0, 0.0, 0.0]));
-    m.add_beam(Beam::new(12, 13, rect, al, [1.0, 0.0, 0.0]));
     m.supports.push(Support::clamp(0));
     m.supports.push(Support::clamp(13));
     let s = 0.5f64.sqrt();

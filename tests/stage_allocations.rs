@@ -3,7 +3,7 @@
 //! `--nocapture`; the assertion is a ceiling against regressions (measured 2026-11-24, see
 //! the test), not a target.
 
-use flexfem::case::{self, Case};
+use flexfem::analysis::{self as case, Case};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 

@@ -11,31 +11,15 @@
 //! numbers then the numbers; JSON `null` as NaN) is rewritten only with
 //! `FLEXFEM_BLESS_STAGE_REFERENCE=1`, which must never be run after a change it is to check.
 
-use flexfem::case::{self, Case};
+use flexfem::analysis::{self as case, Case};
 use serde_json::{json, Value};
 
 const DESIGNS: usize = 1000;
 const TABLE: &str = "tests/data/stage_reference.f64";
 
-/// SplitMix64 (Steele, Lea & Flood 2014): a fixed, dependency-free generator.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform in [a, b).
-    fn uniform(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * ((self.next() >> 11) as f64 / (1u64 << 53) as f64)
-    }
-    fn pick(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
-    }
-}
+#[path = "common/splitmix.rs"]
+mod splitmix;
+use splitmix::Rng;
 
 /// A random stage case: every revolute family, spherical neck, several materials, legs of 1…8
 /// elements, forces and strokes (ideal joints are checked against the kinematics elsewhere).
@@ -43,7 +27,7 @@ fn random_case(r: &mut Rng) -> Value {
     let w = r.uniform(5.0, 14.0);
     let h = r.uniform(5.0, 14.0);
     let t = r.uniform(0.1, 0.45) * h;
-    let revolute = match r.pick(4) {
+    let revolute = match r.below(4) {
         0 => json!({"type": "circular_notch", "R": r.uniform(2.0, 12.0), "t": t}),
         1 => json!({"type": "elliptical_notch", "ax": r.uniform(2.0, 12.0), "ay": r.uniform(2.0, 10.0), "t": t}),
         2 => {
@@ -54,11 +38,11 @@ fn random_case(r: &mut Rng) -> Value {
     };
     let d = w.min(h);
     let spherical = json!({"type": "spherical_neck", "l": r.uniform(1.0, 9.0), "t": r.uniform(0.2, 0.6) * d, "R": r.uniform(1.0, 6.0)});
-    let material = ["Al7075", "steel", "nylon66"][r.pick(3)];
+    let material = ["Al7075", "steel", "nylon66"][r.below(3)];
     let mut load_cases = Vec::new();
-    for k in 0..1 + r.pick(3) {
+    for k in 0..1 + r.below(3) {
         let v = [r.uniform(-30.0, 60.0), r.uniform(-30.0, 60.0), r.uniform(-30.0, 60.0)];
-        if r.pick(2) == 0 {
+        if r.below(2) == 0 {
             load_cases.push(json!({"name": format!("F{k}"), "actuator_forces": v}));
         } else {
             load_cases.push(json!({"name": format!("S{k}"), "actuator_strokes": v.map(|x| x / 30.0)}));
@@ -73,7 +57,7 @@ fn random_case(r: &mut Rng) -> Value {
             "leg": {"w": w, "h": h},
             "revolute": revolute,
             "spherical": spherical,
-            "leg_elements": 1 + r.pick(8)
+            "leg_elements": 1 + r.below(8)
         },
         "load_cases": load_cases
     })
@@ -101,7 +85,7 @@ fn numbers(v: &Value, group: usize, groups: &mut usize, out: &mut Vec<(f64, usiz
 /// The numbers of the stage result of each random design (skipping designs the case validation
 /// refuses: the draw sequence is the same for every implementation; none if the analysis fails).
 fn results() -> Vec<Vec<(f64, usize)>> {
-    let mut r = Rng(0x5EED_0021);
+    let mut r = Rng::new(0x5EED_0021);
     let mut out = Vec::with_capacity(DESIGNS);
     while out.len() < DESIGNS {
         let text = random_case(&mut r).to_string();

@@ -161,14 +161,17 @@ pub fn find_chains(model: &Model, cases: &[&LoadCase], keep: &[usize]) -> Vec<(V
     chains
 }
 
+/// A beam's section properties, E and G ([`super::Beam::props`]).
+type BeamProps = (SectionProps, f64, f64);
+
 /// Element `ie`'s cantilever tip compliance at node 2 relative to node 1, global axes, and a
 /// beam's section properties, E and G (`prev`: those of the previous beam, reused when the
 /// section and material are the same).
 fn element_compliance(
     model: &Model,
     ie: usize,
-    prev: Option<(&Element, &(SectionProps, f64, f64))>,
-) -> Result<(Matrix6<f64>, Option<(SectionProps, f64, f64)>), FemError> {
+    prev: Option<(&Element, &BeamProps)>,
+) -> Result<(Matrix6<f64>, Option<BeamProps>), FemError> {
     let (lam, l) = model.element_frame(ie)?;
     let (local, props) = match &model.elements[ie] {
         Element::Beam(b) => {
@@ -207,7 +210,7 @@ impl Chain {
         let b = x(model, *nodes.last().expect("chain end"));
         let mut c_b = Matrix6::zeros();
         let mut flex = Vec::with_capacity(elements.len());
-        let mut props: Vec<Option<(SectionProps, f64, f64)>> = Vec::with_capacity(elements.len());
+        let mut props: Vec<Option<BeamProps>> = Vec::with_capacity(elements.len());
         for (k, &ie) in elements.iter().enumerate() {
             let prev = k
                 .checked_sub(1)
@@ -352,40 +355,19 @@ impl Condensed {
                 up,
             }));
         }
-        out.supports = model
-            .supports
-            .iter()
-            .map(|s| super::Support {
-                node: map(s.node),
-                ..*s
-            })
-            .collect();
-        out.rigid_links = model
-            .rigid_links
-            .iter()
-            .map(|l| super::RigidLink {
-                master: map(l.master),
-                slaves: l.slaves.iter().map(|&s| map(s)).collect(),
-            })
-            .collect();
-        out.masses = model
-            .masses
-            .iter()
-            .map(|m| super::PointMass {
-                node: map(m.node),
-                ..*m
-            })
-            .collect();
+        // Everything else keeps its data with its nodes renumbered.
+        out.supports = model.supports.clone();
+        out.supports.iter_mut().for_each(|s| s.node = map(s.node));
+        out.masses = model.masses.clone();
+        out.masses.iter_mut().for_each(|m| m.node = map(m.node));
+        out.rigid_links = model.rigid_links.clone();
+        for l in &mut out.rigid_links {
+            l.master = map(l.master);
+            l.slaves.iter_mut().for_each(|s| *s = map(*s));
+        }
+        out.ties = model.ties.clone();
+        out.ties.iter_mut().for_each(|t| (t.a, t.b) = (map(t.a), map(t.b)));
         out.frames = model.frames.iter().map(|(&n, f)| (map(n), *f)).collect();
-        out.ties = model
-            .ties
-            .iter()
-            .map(|t| super::Tie {
-                a: map(t.a),
-                b: map(t.b),
-                ..*t
-            })
-            .collect();
         out.load_cases = model
             .load_cases
             .iter()
