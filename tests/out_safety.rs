@@ -37,8 +37,7 @@ fn symlinked_temporary_paths_do_not_redirect_writes() {
     let csv = d.join("s.csv");
     symlink(&victim, d.join("s.jsonl.tmp")).unwrap();
     symlink(&victim, d.join("s.csv.tmp")).unwrap();
-    let o = run_in(&d, &["sweep", s(&case), "--out", s(&out), "--csv", s(&csv)]);
-    assert_eq!(code(&o), Some(0), "{}", stderr(&o));
+    run_ok_in(&d, &["sweep", s(&case), "--out", s(&out), "--csv", s(&csv)]);
     assert_eq!(fs::read_to_string(&victim).unwrap(), PRECIOUS);
     assert!(fs::symlink_metadata(&out).unwrap().is_file());
     assert_eq!(line_count(&out), 3);
@@ -47,11 +46,9 @@ fn symlinked_temporary_paths_do_not_redirect_writes() {
     // `run --out DIR` into an earlier output folder with a link planted at `result.tmp~`.
     let hinge = root().join("cases/ruiz2019_hinge_revolute.json");
     let res = d.join("res");
-    let o = run_in(&d, &["run", s(&hinge), "--out", s(&res)]);
-    assert_eq!(code(&o), Some(0), "{}", stderr(&o));
+    run_ok_in(&d, &["run", s(&hinge), "--out", s(&res)]);
     symlink(&victim, res.join("result.tmp~")).unwrap();
-    let o = run_in(&d, &["run", s(&hinge), "--out", s(&res)]);
-    assert_eq!(code(&o), Some(0), "{}", stderr(&o));
+    run_ok_in(&d, &["run", s(&hinge), "--out", s(&res)]);
     assert_eq!(fs::read_to_string(&victim).unwrap(), PRECIOUS);
     assert!(fs::symlink_metadata(res.join("result.json")).unwrap().is_file());
     // No temporary file is left behind (only the planted link, untouched).
@@ -139,12 +136,10 @@ fn unrelated_files_are_replaced_only_with_force() {
     assert_eq!(fs::read_to_string(&table).unwrap(), "a,b\n1,2\n");
     assert!(stdout(&o).is_empty(), "refused before running");
 
-    let o = run_in(&d, &["sweep", s(&case), "--out", s(&notes), "--force"]);
-    assert_eq!(code(&o), Some(0), "{}", stderr(&o));
+    run_ok_in(&d, &["sweep", s(&case), "--out", s(&notes), "--force"]);
     assert_eq!(line_count(&notes), 3);
     // Now it is flexfem's own output: a re-run needs no --force.
-    let o = run_in(&d, &["sweep", s(&case), "--out", s(&notes)]);
-    assert_eq!(code(&o), Some(0), "{}", stderr(&o));
+    run_ok_in(&d, &["sweep", s(&case), "--out", s(&notes)]);
 
     let hinge = root().join("cases/ruiz2019_hinge_revolute.json");
     let docs = d.join("docs");
@@ -153,8 +148,7 @@ fn unrelated_files_are_replaced_only_with_force() {
     let o = run_in(&d, &["run", s(&hinge), "--out", s(&docs)]);
     exits_2(&o, &["neither empty nor a flexfem output folder"]);
     assert_eq!(fs::read_to_string(&readme).unwrap(), PRECIOUS);
-    let o = run_in(&d, &["run", s(&hinge), "--out", s(&docs), "--force"]);
-    assert_eq!(code(&o), Some(0), "{}", stderr(&o));
+    run_ok_in(&d, &["run", s(&hinge), "--out", s(&docs), "--force"]);
     assert!(docs.join("result.json").is_file());
     // `--out` naming an existing file: refused, file kept.
     let o = run_in(&d, &["run", s(&hinge), "--out", s(&notes)]);

@@ -16,6 +16,7 @@
 #[path = "common/references.rs"]
 mod references;
 
+use flexfem::kinematics::prs::revolute_axis;
 use flexfem::kinematics::prs_stiffness::PrsStiffness;
 use nalgebra::{Matrix6, Vector3, Vector6};
 use serde_json::{json, Value};
@@ -53,7 +54,7 @@ fn frame_case(m: &PrsStiffness, beta: f64) -> Value {
         nodes.push(round(st.c_pts[i])); // slider: 10..12
     }
     for i in 0..3 {
-        let mv = m.layout.m(i);
+        let mv = revolute_axis(i);
         let mi: [f64; 3] = mv.into();
         elements.push(json!({"type": "joint", "nodes": [4 + i, 1 + i], "kind": "spherical"}));
         elements.push(json!({"type": "beam", "nodes": [4 + i, 7 + i], "section": "link", "material": "steel", "up": mi, "shear": false}));
@@ -73,7 +74,7 @@ fn frame_case(m: &PrsStiffness, beta: f64) -> Value {
     // rail since mᵢ is horizontal, z = x × y); its support acts in that frame: free along the rail.
     let supports: Vec<Value> = (0..3)
         .map(|i| {
-            let mv = m.layout.m(i);
+            let mv = revolute_axis(i);
             assert!(mv[0].abs() < 0.9 && mv[2] == 0.0 && mv[1].abs() > 0.1);
             let y = mv.cross(&Vector3::x()).normalize();
             let rows: [[f64; 3]; 3] = [mv.into(), y.into(), mv.cross(&y).into()];

@@ -13,7 +13,7 @@
 #[path = "common/references.rs"]
 mod references;
 
-use flexfem::kinematics::prs::orientation;
+use flexfem::kinematics::prs::{orientation, radial, revolute_axis};
 use flexfem::kinematics::prs_stiffness::{
     map, parasitic_rate_coupling, scaled_eigen, stiffness_limited, Branch, Grid, LegModel, MapMetric, MomentSign,
     PrsLayout, PrsStiffness,
@@ -193,10 +193,10 @@ fn fkp6(layout: &PrsLayout, s: [f64; 3], start: [f64; 6]) -> [f64; 6] {
         let p = Vector3::new(x[0], x[1], x[2]);
         let mut f = Vector6::zeros();
         for i in 0..3 {
-            let b = p + r * (layout.b * layout.d(i));
-            let c = layout.a * layout.d(i) + s[i] * layout.e(i);
+            let b = p + r * (layout.b * radial(i));
+            let c = layout.a * radial(i) + s[i] * layout.e(i);
             f[i] = ((b - c).norm_squared() - layout.l * layout.l) / (2.0 * layout.l);
-            f[i + 3] = layout.m(i).dot(&b);
+            f[i + 3] = revolute_axis(i).dot(&b);
         }
         f
     };
@@ -363,10 +363,10 @@ fn energy_compliance(m: &PrsStiffness, pz: f64, psi: f64, theta: f64, cl: &[f64;
         let p = st.p() + Vector3::new(x[0], x[1], x[2]);
         let mut q = Vector6::zeros();
         for i in 0..3 {
-            let b = p + rot * (lay.b * lay.d(i));
-            let mi = lay.m(i);
+            let b = p + rot * (lay.b * radial(i));
+            let mi = revolute_axis(i);
             let bp = b - mi * mi.dot(&b);
-            let dv = bp - lay.a * lay.d(i);
+            let dv = bp - lay.a * radial(i);
             let e = lay.e(i);
             let ed = e.dot(&dv);
             let s = ed - (ed * ed - dv.norm_squared() + lay.l * lay.l).sqrt();

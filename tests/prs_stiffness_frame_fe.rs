@@ -13,6 +13,7 @@
 #[path = "common/references.rs"]
 mod references;
 
+use flexfem::kinematics::prs::revolute_axis;
 use flexfem::kinematics::prs_stiffness::PrsStiffness;
 use nalgebra::{Matrix6, Vector3, Vector6};
 use serde_json::{json, Value};
@@ -35,10 +36,10 @@ fn frame_case(m: &PrsStiffness, beta: f64, loads: &[Vector6<f64>], p: f64) -> Va
         nodes.push(st.c_pts[i].into()); // link end at the revolute joint: 7..9
     }
     for i in 0..3 {
-        nodes.push((st.c_pts[i] + stub * m.layout.m(i)).into()); // slider: 10..12
+        nodes.push((st.c_pts[i] + stub * revolute_axis(i)).into()); // slider: 10..12
     }
     for i in 0..3 {
-        let mi: [f64; 3] = m.layout.m(i).into();
+        let mi: [f64; 3] = revolute_axis(i).into();
         let li: [f64; 3] = st.legs[i].into();
         elements.push(json!({"type": "spring", "nodes": [1 + i, 4 + i], "k": [big, big, big, 0, 0, 0]}));
         elements.push(json!({"type": "beam", "nodes": [4 + i, 7 + i], "section": "link", "material": "steel", "up": mi, "shear": false}));

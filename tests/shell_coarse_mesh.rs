@@ -34,10 +34,7 @@ fn clamped_plate(n: usize, skew_deg: f64) -> Vec<f64> {
     let mat = Material::AL7075;
     let (sn, cs) = (skew_deg.to_radians().sin(), skew_deg.to_radians().cos());
     let mut m = Model::new();
-    let id = common::meshes::shell_grid(&mut m, (n, n), T, mat, |i, j| {
-        let (u, v) = (A * i as f64 / n as f64, A * j as f64 / n as f64);
-        [u + v * sn, v * cs, 0.0]
-    });
+    let id = common::meshes::skew_grid(&mut m, n, A, (sn, cs), T, mat);
     common::meshes::each_node(n, |i, j, edge| {
         if edge {
             m.supports.push(Support::clamp(id(i, j)));

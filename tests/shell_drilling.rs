@@ -21,10 +21,7 @@ use common::materials::STEEL;
 fn rhombus(n: usize, a: f64, t: f64, in_plane_held: bool) -> Model {
     let (c, s) = (std::f64::consts::FRAC_1_SQRT_2, std::f64::consts::FRAC_1_SQRT_2);
     let mut m = Model::new();
-    let id = common::meshes::shell_grid(&mut m, (n, n), t, STEEL, |i, j| {
-        let (u, v) = (a * i as f64 / n as f64, a * j as f64 / n as f64);
-        [u + v * c, v * s, 0.0]
-    });
+    let id = common::meshes::skew_grid(&mut m, n, a, (c, s), t, STEEL);
     common::meshes::each_node(n, |i, j, edge| {
         if edge {
             m.supports.push(Support::clamp(id(i, j)));

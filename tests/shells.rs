@@ -91,8 +91,7 @@ fn clamped_plate(n: usize) -> f64 {
 /// Full plate, 16×16 mesh, a/t = 1000: 0.001271 (+0.91 %); 8×8 0.001289, 32×32 0.001267.
 #[test]
 fn clamped_square_plate_timoshenko() {
-    let c = clamped_plate(16);
-    within("clamped plate 16x16: w / (q a^4/D)", c, 0.00126, 0.02);
+    within("clamped plate 16x16: w / (q a^4/D)", clamped_plate(16), 0.00126, 0.02);
 }
 
 /// Scordelis–Lo roof: R = 25, L = 50, 2×40° arc, t = 0.25, E = 4.32e8, ν = 0, gravity 90 per
@@ -122,8 +121,7 @@ fn scordelis_lo(n: usize) -> f64 {
 fn scordelis_lo_roof() {
     // 16×16 elements on the full roof (an 8×8 quarter): 0.30586 (+1.14 %); 8×8 0.32100,
     // 32×32 0.30253 (+0.04 %).
-    let w = scordelis_lo(16);
-    within("Scordelis-Lo 16x16: w", w, 0.3024, 0.02);
+    within("Scordelis-Lo 16x16: w", scordelis_lo(16), 0.3024, 0.02);
 }
 
 /// Pinched cylinder with rigid end diaphragms: R = 300, L = 600, t = 3, E = 3e6, ν = 0.3,
@@ -155,8 +153,12 @@ fn pinched_cylinder(n: usize) -> f64 {
 #[test]
 fn pinched_cylinder_with_diaphragms() {
     // Octant 32×32: 1.8325e-5 (+0.42 %); 16×16 gives 1.7799e-5 (−2.5 %), so 32×32 is needed.
-    let w = pinched_cylinder(32);
-    within("pinched cylinder octant 32x32: w", w, 1.8248e-5, 0.02);
+    within(
+        "pinched cylinder octant 32x32: w",
+        pinched_cylinder(32),
+        1.8248e-5,
+        0.02,
+    );
 }
 
 /// Pinched hemisphere with an 18° hole: R = 10, t = 0.04, E = 6.825e7, ν = 0.3, alternating

@@ -5,6 +5,7 @@ mod common;
 use common::*;
 use serde_json::Value;
 use std::collections::BTreeSet;
+use std::path::Path;
 use std::process::Output;
 
 const BUNDLED: &str = "cases/ruiz2019_hinge_sweep.json";
@@ -13,6 +14,13 @@ const T: [f64; 5] = [1.0, 1.5, 2.0, 2.5, 3.0];
 
 fn bundled() -> String {
     root().join(BUNDLED).to_str().unwrap().to_string()
+}
+
+/// `flexfem sweep ARGS` in `dir`, asserted to succeed.
+fn sweep_ok(dir: &Path, args: &[&str]) -> Output {
+    let o = sweep(dir, args);
+    ok(&o);
+    o
 }
 
 fn ok(o: &Output) {
@@ -39,8 +47,7 @@ fn rel(a: f64, b: f64) -> f64 {
 fn bundled_hinge_sweep_writes_55_sorted_lines_with_params() {
     let d = tempdir("bundled");
     let out = d.join("s.jsonl");
-    let o = sweep(&d, &[&bundled(), "--out", out.to_str().unwrap()]);
-    ok(&o);
+    let o = sweep_ok(&d, &[&bundled(), "--out", out.to_str().unwrap()]);
     assert_eq!(summary(&o), [55, 0, 55, 0]);
     assert!(!d.join("s.jsonl.partial").exists());
     let text = std::fs::read_to_string(&out).unwrap();
@@ -78,8 +85,7 @@ fn bundled_hinge_sweep_writes_55_sorted_lines_with_params() {
 #[test]
 fn stdout_streaming_gives_valid_json_lines() {
     let d = tempdir("stdout");
-    let o = sweep(&d, &[&bundled()]);
-    ok(&o);
+    let o = sweep_ok(&d, &[&bundled()]);
     let text = stdout(&o);
     assert!(text.ends_with('\n'));
     let lines = parse_lines(&text);
@@ -99,12 +105,10 @@ fn stdout_streaming_gives_valid_json_lines() {
 #[test]
 fn shards_concatenated_equal_the_unsharded_run() {
     let d = tempdir("shards");
-    let all = sweep(&d, &[&bundled()]);
-    ok(&all);
+    let all = sweep_ok(&d, &[&bundled()]);
     let mut joined = String::new();
     for (k, count) in [(1, 19), (2, 18), (3, 18)] {
-        let o = sweep(&d, &[&bundled(), "--shard", &format!("{k}/3")]);
-        ok(&o);
+        let o = sweep_ok(&d, &[&bundled(), "--shard", &format!("{k}/3")]);
         assert_eq!(summary(&o), [count, 0, count, 0]);
         let text = stdout(&o);
         let lines = parse_lines(&text);
@@ -159,24 +163,21 @@ fn resume_after_interruption_runs_only_missing_designs() {
     let torn = &lines[41][..lines[41].len() / 2];
     std::fs::write(&partial, part.join("\n") + "\n" + torn).unwrap();
 
-    let o = sweep(&d, &[&bundled(), "--out", out.to_str().unwrap()]);
-    ok(&o);
+    let o = sweep_ok(&d, &[&bundled(), "--out", out.to_str().unwrap()]);
     assert_eq!(summary(&o), [55, 30, 25, 0]);
     assert!(stderr(&o).contains("ignored 1 earlier lines of other designs and 1 unreadable"));
     assert!(!partial.exists());
     assert_eq!(std::fs::read_to_string(&out).unwrap(), fresh_text);
 
     // Running again finds everything done and leaves the file as it is.
-    let again = sweep(&d, &[&bundled(), "--out", out.to_str().unwrap()]);
-    ok(&again);
+    let again = sweep_ok(&d, &[&bundled(), "--out", out.to_str().unwrap()]);
     assert_eq!(summary(&again), [55, 55, 0, 0]);
     assert_eq!(std::fs::read_to_string(&out).unwrap(), fresh_text);
 
     // Only a partial file (killed before the first finish): resumes from it alone.
     std::fs::remove_file(&out).unwrap();
     std::fs::write(&partial, lines[50..].join("\n") + "\n").unwrap();
-    let o = sweep(&d, &[&bundled(), "--out", out.to_str().unwrap()]);
-    ok(&o);
+    let o = sweep_ok(&d, &[&bundled(), "--out", out.to_str().unwrap()]);
     assert_eq!(summary(&o), [55, 5, 50, 0]);
     assert_eq!(std::fs::read_to_string(&out).unwrap(), fresh_text);
     cleanup(&d);
@@ -353,8 +354,7 @@ fn mesh_paths_resolve_beside_the_sweep_file() {
           "load_cases": [{"name": "tip", "forces": [{"node": 10, "F": [0, 0, -10, 0, 0, 0]}]}]},
  "vary": {"load_cases.0.forces.0.F.2": [-10, -20, -30]}}"#,
     );
-    let o = sweep(&d.join("elsewhere"), &[case.to_str().unwrap()]);
-    ok(&o);
+    let o = sweep_ok(&d.join("elsewhere"), &[case.to_str().unwrap()]);
     let mut lines = parse_lines(&stdout(&o));
     lines.sort_by_key(index);
     assert_eq!(lines.len(), 3);
@@ -422,8 +422,7 @@ fn killed_sweep_resumes_from_its_partial_file() {
         .count();
     assert!(complete >= 200, "{complete}");
 
-    let o = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
-    ok(&o);
+    let o = sweep_ok(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
     assert_eq!(summary(&o), [5000, complete, 5000 - complete, 0]);
     let lines = parse_lines(&std::fs::read_to_string(&out).unwrap());
     assert_eq!(

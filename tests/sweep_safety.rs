@@ -33,6 +33,14 @@ fn sweep_to(dir: &Path, case: &Path, out: &Path) -> Output {
     sweep(dir, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()])
 }
 
+/// `flexfem sweep CASE --out OUT --shard SHARD` in `dir`.
+fn shard_to(dir: &Path, case: &Path, out: &Path, shard: &str) -> Output {
+    sweep(
+        dir,
+        &[case.to_str().unwrap(), "--out", out.to_str().unwrap(), "--shard", shard],
+    )
+}
+
 fn lines(path: &Path) -> Vec<Value> {
     parse_lines(&std::fs::read_to_string(path).unwrap())
 }
@@ -119,6 +127,12 @@ fn resume_after_a_mesh_file_change_reruns_stale_lines() {
     cleanup(&d);
 }
 
+/// Asserts a sweep's exit code, its summary numbers and phrases of its stderr.
+fn expect(o: &Output, exit: i32, summary_is: [usize; 4], needles: &[&str]) {
+    exits(o, exit, needles);
+    assert_eq!(summary(o), summary_is);
+}
+
 /// t ≥ h fails (4 of 12 designs): exit 1 with the count; a resume retries the error rows
 /// (they fail again: still exit 1), `--keep-errors` keeps them.
 #[test]
@@ -127,26 +141,33 @@ fn failed_designs_exit_1_and_error_rows_are_retried_on_resume() {
         "retry",
         r#"{"hinge.t": {"from": 2, "to": 12, "steps": 6}, "hinge.R": [4, 8]}"#,
     );
-    let o = sweep_to(&d, &case, &out);
-    exits(&o, 1, &["error: 4 of 12 designs failed"]);
-    assert_eq!(summary(&o), [12, 0, 12, 4]);
+    expect(
+        &sweep_to(&d, &case, &out),
+        1,
+        [12, 0, 12, 4],
+        &["error: 4 of 12 designs failed"],
+    );
 
-    let o = sweep_to(&d, &case, &out);
-    exits(&o, 1, &["retried 4 earlier error rows"]);
-    assert_eq!(summary(&o), [12, 8, 4, 4]);
+    expect(
+        &sweep_to(&d, &case, &out),
+        1,
+        [12, 8, 4, 4],
+        &["retried 4 earlier error rows"],
+    );
     assert_eq!(lines(&out).len(), 12);
 
     // The output still holds failed designs: exit 1.
     let args = [case.to_str().unwrap(), "--out", out.to_str().unwrap(), "--keep-errors"];
-    let o = sweep(&d, &args);
-    exits(&o, 1, &["kept 4 earlier error rows", "4 of 12 designs failed"]);
-    assert_eq!(summary(&o), [12, 12, 0, 0]);
+    expect(
+        &sweep(&d, &args),
+        1,
+        [12, 12, 0, 0],
+        &["kept 4 earlier error rows", "4 of 12 designs failed"],
+    );
 
     // Every design failing on stdout: exit 1 as well.
     let all_bad = write(&d, "bad.json", &sweep_case("Al7075", HINGE, r#"{"hinge.t": [10, 11]}"#));
-    let o = sweep(&d, &[all_bad.to_str().unwrap()]);
-    exits(&o, 1, &[]);
-    assert_eq!(summary(&o), [2, 0, 2, 2]);
+    expect(&sweep(&d, &[all_bad.to_str().unwrap()]), 1, [2, 0, 2, 2], &[]);
     cleanup(&d);
 }
 
@@ -188,16 +209,7 @@ fn concurrent_shards_to_one_out_lose_no_designs() {
                     k + 1
                 );
                 assert!(err.contains("s.jsonl.lock"), "{err}");
-                let again = sweep(
-                    &d,
-                    &[
-                        case.to_str().unwrap(),
-                        "--out",
-                        out.to_str().unwrap(),
-                        "--shard",
-                        &format!("{}/2", k + 1),
-                    ],
-                );
+                let again = shard_to(&d, &case, &out, &format!("{}/2", k + 1));
                 assert_eq!(code(&again), Some(0), "{}", stderr(&again));
             }
             other => panic!("shard {}: exit {other:?}: {}", k + 1, stderr(o)),
@@ -224,16 +236,7 @@ fn concurrent_shards_to_one_out_lose_no_designs() {
 fn sequential_shards_to_one_out_accumulate() {
     let (d, case, out) = al7075_sweep("seqshards", r#"{"hinge.t": [1, 2, 3], "hinge.R": [4, 8, 12]}"#);
     for k in 1..=3 {
-        let o = sweep(
-            &d,
-            &[
-                case.to_str().unwrap(),
-                "--out",
-                out.to_str().unwrap(),
-                "--shard",
-                &format!("{k}/3"),
-            ],
-        );
+        let o = shard_to(&d, &case, &out, &format!("{k}/3"));
         assert_eq!(code(&o), Some(0), "{}", stderr(&o));
         assert_eq!(summary(&o), [3, 0, 3, 0]);
     }

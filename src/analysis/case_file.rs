@@ -213,16 +213,23 @@ fn allows_array(node: &Value) -> bool {
     }
 }
 
-fn positional(
+fn positional<'a>(
     value: &Value,
-    candidates: &[&Value],
-    defs: Option<&serde_json::Map<String, Value>>,
+    candidates: &[&'a Value],
+    defs: Option<&'a serde_json::Map<String, Value>>,
     path: String,
 ) -> Result<(), CaseError> {
     if candidates.is_empty() {
         return Ok(());
     }
-    let mut children: Vec<&Value> = Vec::new();
+    // The schema nodes of a child: what `pick` gives of each candidate, expanded.
+    let children = |pick: &dyn Fn(&'a Value) -> Option<&'a Value>| {
+        let mut out = Vec::new();
+        for n in candidates.iter().filter_map(|c| pick(c)) {
+            expand(n, defs, &mut out, 0);
+        }
+        out
+    };
     match value {
         Value::Array(items) => {
             if !candidates.iter().any(|c| allows_array(c)) {
@@ -233,37 +240,25 @@ fn positional(
                 ));
             }
             for (i, item) in items.iter().enumerate() {
-                children.clear();
-                for c in candidates {
-                    let node = c
-                        .get("prefixItems")
-                        .and_then(|p| p.get(i))
-                        .or_else(|| c.get("items").filter(|x| x.is_object()));
-                    if let Some(n) = node {
-                        expand(n, defs, &mut children, 0);
-                    }
-                }
-                positional(item, &children, defs, format!("{path}[{i}]"))?;
+                let of_item = children(&|c| {
+                    let prefix = c.get("prefixItems").and_then(|p| p.get(i));
+                    prefix.or_else(|| c.get("items").filter(|x| x.is_object()))
+                });
+                positional(item, &of_item, defs, format!("{path}[{i}]"))?;
             }
         }
         Value::Object(map) => {
             for (k, item) in map {
-                children.clear();
-                for c in candidates {
-                    let node = c
-                        .get("properties")
-                        .and_then(|p| p.get(k))
-                        .or_else(|| c.get("additionalProperties").filter(|x| x.is_object()));
-                    if let Some(n) = node {
-                        expand(n, defs, &mut children, 0);
-                    }
-                }
+                let of_field = children(&|c| {
+                    let named = c.get("properties").and_then(|p| p.get(k));
+                    named.or_else(|| c.get("additionalProperties").filter(|x| x.is_object()))
+                });
                 let p = if path.is_empty() {
                     k.clone()
                 } else {
                     format!("{path}.{k}")
                 };
-                positional(item, &children, defs, p)?;
+                positional(item, &of_field, defs, p)?;
             }
         }
         _ => {}

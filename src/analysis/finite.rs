@@ -109,13 +109,7 @@ impl ser::Serializer for Check {
     fn serialize_tuple_struct(self, _n: &'static str, _len: usize) -> Result<Check, NonFinite> {
         Ok(Check)
     }
-    fn serialize_tuple_variant(
-        self,
-        _n: &'static str,
-        _i: u32,
-        _v: &'static str,
-        _len: usize,
-    ) -> Result<Check, NonFinite> {
+    fn serialize_tuple_variant(self, _n: &'static str, _i: u32, _v: &str, _len: usize) -> Result<Check, NonFinite> {
         Ok(Check)
     }
     fn serialize_map(self, _len: Option<usize>) -> Result<Check, NonFinite> {
@@ -124,13 +118,7 @@ impl ser::Serializer for Check {
     fn serialize_struct(self, _n: &'static str, _len: usize) -> Result<Check, NonFinite> {
         Ok(Check)
     }
-    fn serialize_struct_variant(
-        self,
-        _n: &'static str,
-        _i: u32,
-        _v: &'static str,
-        _len: usize,
-    ) -> Result<Check, NonFinite> {
+    fn serialize_struct_variant(self, _n: &'static str, _i: u32, _v: &str, _len: usize) -> Result<Check, NonFinite> {
         Ok(Check)
     }
 }

@@ -181,6 +181,11 @@ pub fn solve(
     })
 }
 
+/// A CSV row of the kinematics table: `kind`, strokes (mm), then z (mm), ψ, θ (°), x, y (mm), φ (°).
+fn csv_row(kind: &str, s: [f64; 3], [z, psi, theta, x, y, phi]: [f64; 6]) -> String {
+    format!("{kind},{},{},{},{z},{psi},{theta},{x},{y},{phi}\n", s[0], s[1], s[2])
+}
+
 /// Markdown and CSV views of the result.
 pub fn report(r: &KinematicsResult) -> Report {
     let mut md = String::from("# 3-PRS rigid-body kinematics\n\n");
@@ -208,10 +213,7 @@ pub fn report(r: &KinematicsResult) -> Report {
                 format!("{:.2}", f.y * 1000.0),
                 dms(f.phi_deg),
             ]);
-            csv += &format!(
-                "fkp,{},{},{},{},{},{},{},{},{}\n",
-                f.s[0], f.s[1], f.s[2], f.z, f.psi_deg, f.theta_deg, f.x, f.y, f.phi_deg
-            );
+            csv += &csv_row("fkp", f.s, [f.z, f.psi_deg, f.theta_deg, f.x, f.y, f.phi_deg]);
         }
         md += &t.render();
         md += "\n";
@@ -220,21 +222,15 @@ pub fn report(r: &KinematicsResult) -> Report {
         md += "## Inverse kinematics\n\n";
         let mut t = Table::columns("z (mm) | ψ (°) | θ (°) | s₁ (mm) | s₂ (mm) | s₃ (mm) | x (µm) | y (µm) | φ (DMS)");
         for q in &r.ikp {
-            t.row(vec![
-                format!("{:.4}", q.z),
-                format!("{:.4}", q.psi_deg),
-                format!("{:.4}", q.theta_deg),
-                format!("{:.4}", q.s[0]),
-                format!("{:.4}", q.s[1]),
-                format!("{:.4}", q.s[2]),
+            let pose = [q.z, q.psi_deg, q.theta_deg, q.s[0], q.s[1], q.s[2]];
+            let mut row: Vec<String> = pose.iter().map(|v| format!("{v:.4}")).collect();
+            row.extend([
                 format!("{:.2}", q.x * 1000.0),
                 format!("{:.2}", q.y * 1000.0),
                 dms(q.phi_deg),
             ]);
-            csv += &format!(
-                "ikp,{},{},{},{},{},{},{},{},{}\n",
-                q.s[0], q.s[1], q.s[2], q.z, q.psi_deg, q.theta_deg, q.x, q.y, q.phi_deg
-            );
+            t.row(row);
+            csv += &csv_row("ikp", q.s, [q.z, q.psi_deg, q.theta_deg, q.x, q.y, q.phi_deg]);
         }
         md += &t.render();
         md += "\n";

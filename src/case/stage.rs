@@ -293,14 +293,8 @@ impl StageCase {
                 }
                 (None, Some(s)) => {
                     for (k, v) in s.iter().enumerate() {
-                        check::finite(&format!("{p}.actuator_strokes[{k}]"), *v)?;
-                        if v.abs() > 0.5 * d.prs.l {
-                            return Err(CaseError::value(
-                                format!("{p}.actuator_strokes[{k}]"),
-                                v,
-                                "a linear stage analysis takes strokes well below the leg length",
-                            ));
-                        }
+                        let why = "a linear stage analysis takes strokes well below the leg length";
+                        check_stroke(format!("{p}.actuator_strokes[{k}]"), *v, d.prs.l, why)?;
                     }
                     Drive::Strokes(s)
                 }
@@ -316,6 +310,15 @@ impl StageCase {
         }
         Ok((d, drives))
     }
+}
+
+/// A stroke at `path` (mm): finite and at most half the leg length `l` (else refused with `why`).
+fn check_stroke(path: String, v: f64, l: f64, why: &str) -> Result<(), CaseError> {
+    check::finite(&path, v)?;
+    if v.abs() > 0.5 * l {
+        return Err(CaseError::value(path, v, why));
+    }
+    Ok(())
 }
 
 impl StageCase {
@@ -345,14 +348,12 @@ impl FemVsFkpCase {
         }
         for (i, s) in self.strokes.iter().enumerate() {
             for (k, v) in s.iter().enumerate() {
-                check::finite(&format!("strokes[{i}][{k}]"), *v)?;
-                if v.abs() > 0.5 * d.prs.l {
-                    return Err(CaseError::value(
-                        format!("strokes[{i}][{k}]"),
-                        v,
-                        "strokes must be well below the leg length",
-                    ));
-                }
+                check_stroke(
+                    format!("strokes[{i}][{k}]"),
+                    *v,
+                    d.prs.l,
+                    "strokes must be well below the leg length",
+                )?;
             }
         }
         Ok(d)

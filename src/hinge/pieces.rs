@@ -88,40 +88,13 @@ impl Profile {
         let mut p = Pieces::new();
         let hn = self.half_notch;
         match self.contour {
-            Contour::Circular { r, t } => {
-                p.push(
-                    0.0,
-                    hn,
-                    Map::Arc {
-                        origin: 0.0,
-                        radius: r,
-                        c: (t / r).sqrt(),
-                    },
-                );
-            }
-            Contour::Elliptical { ax, ay, t } => {
-                p.push(
-                    0.0,
-                    hn,
-                    Map::Arc {
-                        origin: 0.0,
-                        radius: ax,
-                        c: (t / ay).sqrt(),
-                    },
-                );
-            }
+            // A notch arc about the centre over the whole half, c² = t/depth.
+            Contour::Circular { r, t } => p.push(0.0, hn, arc(0.0, r, t / r)),
+            Contour::Elliptical { ax, ay, t } => p.push(0.0, hn, arc(0.0, ax, t / ay)),
             Contour::CornerFilleted { l, r, t } => {
                 let s = l / 2.0 - r;
                 p.push(0.0, s, Map::Linear);
-                p.push(
-                    s,
-                    hn,
-                    Map::Arc {
-                        origin: s,
-                        radius: r,
-                        c: (t / r).sqrt(),
-                    },
-                );
+                p.push(s, hn, arc(s, r, t / r));
             }
             Contour::Leaf { .. } => p.push(0.0, hn, Map::Linear),
             Contour::SphericalNeck { l, t, r } => {
@@ -129,11 +102,7 @@ impl Profile {
                 p.push(0.0, s, Map::Linear);
                 // Kinks of the section functions where the disk meets the square faces
                 // (r = h/2) and corners (r = h/√2).
-                let map = Map::Arc {
-                    origin: s,
-                    radius: r,
-                    c: (t / r).sqrt(),
-                };
+                let map = arc(s, r, t / r);
                 let mut x0 = s;
                 for rk in [self.h / 2.0, self.h / std::f64::consts::SQRT_2] {
                     // r(u) = t/2 + R − √(R² − u²) = rk  ⇒  u = √(R² − (t/2 + R − rk)²)
@@ -188,5 +157,14 @@ impl Profile {
         }
         p.push(x0, end, Map::Linear);
         p
+    }
+}
+
+/// The arc map with its waist at `origin`, x-extent `radius` and c² = `c2`.
+fn arc(origin: f64, radius: f64, c2: f64) -> Map {
+    Map::Arc {
+        origin,
+        radius,
+        c: c2.sqrt(),
     }
 }

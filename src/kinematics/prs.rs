@@ -23,7 +23,7 @@ pub(crate) const XI: [f64; 3] = [
 ];
 
 /// Unit radial direction dᵢ = Rz(ξᵢ)·[1, 0, 0] of leg `i` (0-based).
-pub(crate) fn radial(i: usize) -> Vector3<f64> {
+pub fn radial(i: usize) -> Vector3<f64> {
     Vector3::new(XI[i].cos(), XI[i].sin(), 0.0)
 }
 
@@ -33,7 +33,7 @@ pub(crate) fn slider_dir(gamma: f64, i: usize) -> Vector3<f64> {
 }
 
 /// Revolute axis mᵢ = Rz(ξᵢ)·[0, 1, 0] of leg `i` (normal of the leg plane).
-pub(crate) fn revolute_axis(i: usize) -> Vector3<f64> {
+pub fn revolute_axis(i: usize) -> Vector3<f64> {
     Vector3::new(-XI[i].sin(), XI[i].cos(), 0.0)
 }
 

@@ -170,19 +170,11 @@ impl PrsLayout {
         Ok(PrsLayout { a, b, l, gamma, branch })
     }
 
-    /// Unit radial direction dᵢ (0-based leg).
-    pub fn d(&self, i: usize) -> Vector3<f64> {
-        radial(i)
-    }
-
-    /// Unit slider direction eᵢ = −cos γ·dᵢ + sin γ·z.
+    /// Unit slider direction eᵢ = −cos γ·dᵢ + sin γ·z (0-based leg; the radial direction dᵢ and
+    /// the revolute axis mᵢ, the normal of the leg plane, do not depend on the layout:
+    /// [`radial`], [`revolute_axis`]).
     pub fn e(&self, i: usize) -> Vector3<f64> {
         slider_dir(self.gamma, i)
-    }
-
-    /// Revolute axis mᵢ = Rz(ξᵢ)·[0, 1, 0] (normal of the leg plane).
-    pub fn m(&self, i: usize) -> Vector3<f64> {
-        revolute_axis(i)
     }
 
     /// Inverse kinematics at absolute height `pz` (mm) and tilts `psi`, `theta` (rad).
@@ -203,8 +195,8 @@ impl PrsLayout {
         let mut legs = [Vector3::zeros(); 3];
         for i in 0..3 {
             let e = self.e(i);
-            let bi = p + r * (self.b * self.d(i));
-            let dv = bi - self.a * self.d(i);
+            let bi = p + r * (self.b * radial(i));
+            let dv = bi - self.a * radial(i);
             let ed = e.dot(&dv);
             let disc = ed * ed - dv.norm_squared() + self.l * self.l;
             if disc < 0.0 {
@@ -221,7 +213,7 @@ impl PrsLayout {
                 Branch::Minus => ed - disc.sqrt(),
                 Branch::Plus => ed + disc.sqrt(),
             };
-            let ci = self.a * self.d(i) + s[i] * e;
+            let ci = self.a * radial(i) + s[i] * e;
             b_pts[i] = bi;
             c_pts[i] = ci;
             legs[i] = (bi - ci) / self.l;
@@ -292,7 +284,7 @@ impl PrsLayout {
                 ));
             }
             let r = st.b_pts[i] - q;
-            let m = self.m(i);
+            let m = revolute_axis(i);
             let fa = l / le;
             let ma = r.cross(&fa);
             let mc = r.cross(&m);
@@ -347,7 +339,7 @@ pub fn parasitic_rate_coupling(
     let mut c1 = Matrix3::zeros();
     let mut c2 = Matrix3x2::zeros();
     for i in 0..3 {
-        let m = layout.m(i);
+        let m = revolute_axis(i);
         let r = st.b_pts[i] - p;
         let mom = match sign {
             MomentSign::Consistent => r.cross(&m),

@@ -80,3 +80,20 @@ pub fn each_node(n: usize, mut visit: impl FnMut(usize, usize, bool)) {
         }
     }
 }
+
+/// [`shell_grid`] of an `n`×`n` skew plate of side `a` (mm) with skew angle φ given as
+/// `(sin φ, cos φ)` (φ = 0: square): node (i, j) at x = u + v·sin φ, y = v·cos φ with u = a·i/n,
+/// v = a·j/n.
+pub fn skew_grid(
+    m: &mut Model,
+    n: usize,
+    a: f64,
+    (sin, cos): (f64, f64),
+    t: f64,
+    material: Material,
+) -> impl Fn(usize, usize) -> usize + Copy {
+    shell_grid(m, (n, n), t, material, move |i, j| {
+        let (u, v) = (a * i as f64 / n as f64, a * j as f64 / n as f64);
+        [u + v * sin, v * cos, 0.0]
+    })
+}

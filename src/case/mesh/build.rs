@@ -180,11 +180,7 @@ fn element(cx: &mut Ctx, p: &str, e: &ElementSpec) -> Result<(), CaseError> {
         } => {
             let (a, b) = cx.two_nodes(p, *nodes, "beam")?;
             let BuiltSection::Beam(sec) = *cx.sections.get(&format!("{p}.section"), section)? else {
-                return Err(CaseError::value(
-                    format!("{p}.section"),
-                    format!("\"{section}\""),
-                    "a shell section cannot be used by a beam",
-                ));
+                return Err(wrong_section(p, section, "a shell section cannot be used by a beam"));
             };
             let mat = *cx.materials.get(&format!("{p}.material"), material)?;
             cx.axis_and_up(p, (a, b), *up, "beam")?;
@@ -276,9 +272,9 @@ fn shell4(cx: &mut Ctx, p: &str, nodes: [usize; 4], section: &str, material: &st
         }
     }
     let BuiltSection::Shell(t) = *cx.sections.get(&format!("{p}.section"), section)? else {
-        return Err(CaseError::value(
-            format!("{p}.section"),
-            format!("\"{section}\""),
+        return Err(wrong_section(
+            p,
+            section,
             "a shell4 needs a section with \"shape\": \"shell\"",
         ));
     };
@@ -369,4 +365,9 @@ fn section(s: &SectionSpec, p: &str) -> Result<BuiltSection, CaseError> {
             return Ok(BuiltSection::Shell(t));
         }
     }))
+}
+
+/// The error of element `p` naming a section of the wrong kind.
+fn wrong_section(p: &str, section: &str, allowed: &str) -> CaseError {
+    CaseError::value(format!("{p}.section"), format!("\"{section}\""), allowed)
 }
