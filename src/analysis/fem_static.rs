@@ -5,6 +5,8 @@ use crate::fem::{self, Model};
 use crate::report::markdown::Table;
 use serde::Serialize;
 
+pub use super::compliance::{compliance_row, ComplianceRow};
+
 /// One load case of a `static` result.
 #[derive(Debug, Clone, Serialize)]
 pub struct StaticCaseRow {
@@ -48,6 +50,10 @@ pub struct StaticCaseRow {
     /// (omitted otherwise).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub beam_forces: Vec<BeamForcesRow>,
+    /// Nonlinear with `"track"`: frequencies and node compliances at every accepted load step
+    /// (omitted otherwise).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub track: Option<super::track::TrackRow>,
 }
 
 /// Section forces of one beam element in one load case.
@@ -59,24 +65,6 @@ pub struct BeamForcesRow {
     /// (deformed element axes in nonlinear runs); positive-face convention: N > 0 in tension,
     /// the forces the part beyond the section exerts on the part before it.
     pub section_forces: [[f64; 6]; 2],
-}
-
-/// The 6×6 compliance of one node (result field `compliance`).
-#[derive(Debug, Clone, Serialize)]
-pub struct ComplianceRow {
-    /// The node.
-    pub node: usize,
-    /// Axes of the matrix: rows are the local x, y, z in global coordinates.
-    pub frame: [[f64; 3]; 3],
-    /// C[i][j] = displacement i per unit load j at the node, order [ux, uy, uz, rx, ry, rz] ×
-    /// [Fx, Fy, Fz, Mx, My, Mz] in `frame`: mm/N (translation/force), mm/(N·mm)
-    /// (translation/moment), rad/N (rotation/force), rad/(N·mm) (rotation/moment). Symmetric;
-    /// rows and columns of supported DOFs are zero.
-    pub matrix: [[f64; 6]; 6],
-    /// Smallest and largest eigenvalue of the translational 3×3 block, mm/N.
-    pub translational_eigen: [f64; 2],
-    /// Smallest and largest eigenvalue of the rotational 3×3 block, rad/(N·mm).
-    pub rotational_eigen: [f64; 2],
 }
 
 /// Results of one `hinge` element in one load case.
@@ -226,17 +214,31 @@ pub fn solve_with(
 /// output are the components of each node's rotation vector (degrees). Also returns the final
 /// state of each load case in the linear result's shape (for the `.vtu` files).
 pub fn solve_nonlinear(model: &Model, steps: usize) -> Result<(StaticResult, fem::StaticResults), AnalysisError> {
+    solve_nonlinear_tracked(model, steps, None)
+}
+
+/// [`solve_nonlinear`] with the quantities `track` asks for at every accepted load step.
+pub fn solve_nonlinear_tracked(
+    model: &Model,
+    steps: usize,
+    track: Option<&crate::case::mesh::TrackRequest>,
+) -> Result<(StaticResult, fem::StaticResults), AnalysisError> {
+    let (step_track, strokes) = track.map(|t| super::track::options(model, t)).unwrap_or_default();
     let opts = fem::NonlinearOptions {
         steps,
+        track: strokes.clone(),
+        step_track,
         ..Default::default()
     };
     let res = fem::solve_nonlinear(model, &opts).map_err(|e| AnalysisError::new("model", e.to_string()))?;
     let rows = res
         .load_cases
         .iter()
-        .map(|c| StaticCaseRow {
+        .zip(&model.load_cases)
+        .map(|(c, lc)| StaticCaseRow {
             stable: Some(c.stable),
             critical_load_factor: c.critical_load_factor,
+            track: track.map(|t| super::track::row(t, lc, c, &strokes)),
             ..row(&c.fe)
         })
         .collect();
@@ -325,6 +327,7 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
         shell_forces: Vec::new(),
         hinges: Vec::new(),
         beam_forces: Vec::new(),
+        track: None,
     }
 }
 
@@ -350,7 +353,6 @@ pub fn node_compliances(
     model: &Model,
     reqs: &[crate::case::mesh::ComplianceRequest],
 ) -> Result<Vec<ComplianceRow>, AnalysisError> {
-    use nalgebra::{Matrix3, Matrix6};
     if reqs.is_empty() {
         return Ok(Vec::new());
     }
@@ -362,25 +364,7 @@ pub fn node_compliances(
             let c = sys
                 .node_compliance(model, q.node)
                 .map_err(|e| AnalysisError::new(format!("compliance[{i}]"), e.to_string()))?;
-            let frame = q.frame.unwrap_or([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]);
-            let f = Matrix3::from_fn(|a, b| frame[a][b]);
-            let mut t = Matrix6::zeros();
-            t.fixed_view_mut::<3, 3>(0, 0).copy_from(&f);
-            t.fixed_view_mut::<3, 3>(3, 3).copy_from(&f);
-            let cl = t * c * t.transpose();
-            let cl = (cl + cl.transpose()) * 0.5;
-            let extremes = |k: usize| {
-                let b: Matrix3<f64> = cl.fixed_view::<3, 3>(k, k).into_owned();
-                let ev = b.symmetric_eigenvalues();
-                [ev.min(), ev.max()]
-            };
-            Ok(ComplianceRow {
-                node: q.node,
-                frame,
-                matrix: std::array::from_fn(|a| std::array::from_fn(|b| cl[(a, b)])),
-                translational_eigen: extremes(0),
-                rotational_eigen: extremes(3),
-            })
+            Ok(compliance_row(q.node, q.frame, &c))
         })
         .collect()
 }
@@ -508,6 +492,9 @@ pub fn report(r: &StaticResult) -> Report {
         }
         md += "\n";
         md += &hinge_table(c);
+        if let Some(t) = &c.track {
+            md += &super::track::markdown(t);
+        }
     }
     md += &compliance_section(&r.compliance);
     Report { markdown: md, csv }

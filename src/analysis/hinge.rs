@@ -18,6 +18,37 @@ pub struct HingeOut {
     /// Large-rotation response (`"nonlinear": true` only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub large_rotation: Option<LargeRotation>,
+    /// Identified joint damping (`"damping"` only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub damping: Option<DampingOut>,
+}
+
+/// The joint damping identified from a simulated step response (Yu, Lu and Hao (2016), §4.1).
+#[derive(Debug, Clone, Serialize)]
+pub struct DampingOut {
+    /// How it was found.
+    pub method: String,
+    /// Rotational stiffness K about the compliant axis (statics), N·mm/rad.
+    pub k_nmm_per_rad: f64,
+    /// The same, N·mm/°.
+    pub k_nmm_per_deg: f64,
+    /// Identified joint damping D, N·mm·s/rad.
+    pub d_nmm_s_per_rad: f64,
+    /// The same, N·mm·s/°.
+    pub d_nmm_s_per_deg: f64,
+    /// D/K, s (equals the stiffness-proportional material damping when the response is
+    /// dominated by the compliant-axis rotation).
+    pub d_over_k_s: f64,
+    /// Identified rotary inertia J, tonne·mm² (0: first-order fit).
+    pub j_t_mm2: f64,
+    /// RMS of simulated − fitted rotation, relative to the static rotation.
+    pub fit_residual: f64,
+    /// Time step, s, and number of steps.
+    pub dt_s: f64,
+    pub steps: usize,
+    /// (time s, simulated rotation °, fitted rotation °) for the files of `--out`.
+    #[serde(skip)]
+    pub history: Vec<[f64; 3]>,
 }
 
 /// One point of the large-rotation curve.
@@ -59,7 +90,74 @@ pub fn solve(case: &HingeCase) -> Result<HingeOut, super::RunError> {
         (true, steps) => Some(large_rotation(case, &m, &result, steps.unwrap_or(20))?),
         _ => None,
     };
-    Ok(HingeOut { result, large_rotation })
+    let damping = match &case.damping {
+        Some(spec) => {
+            let run = spec.run()?;
+            let profile = case
+                .hinge
+                .profile()
+                .map_err(|e| super::RunError::Case(hinge_error(&e, "hinge", "material")))?;
+            let jd = crate::hinge::damping::identify_damping(&profile, &m, &run)
+                .map_err(|e| super::RunError::Analysis(super::AnalysisError::new("hinge damping", e.to_string())))?;
+            let deg = std::f64::consts::PI / 180.0;
+            Some(DampingOut {
+                method: "step moment about the compliant axis on the hinge in its blank (16-segment flexibility chain, lumped mass), Newmark average acceleration, Rayleigh material damping; least-squares fit of J θ(t) + D ∫θ + K ∬θ = M t²/2 with K from statics".into(),
+                k_nmm_per_rad: jd.k,
+                k_nmm_per_deg: jd.k * deg,
+                d_nmm_s_per_rad: jd.d,
+                d_nmm_s_per_deg: jd.d * deg,
+                d_over_k_s: jd.d / jd.k,
+                j_t_mm2: jd.j,
+                fit_residual: jd.residual,
+                dt_s: jd.dt,
+                steps: run.steps,
+                history: (0..jd.time.len())
+                    .map(|i| [jd.time[i], jd.rotation[i] / deg, jd.fitted[i] / deg])
+                    .collect(),
+            })
+        }
+        None => None,
+    };
+    Ok(HingeOut {
+        result,
+        large_rotation,
+        damping,
+    })
+}
+
+/// `hinge_step_response.csv` and `.svg` of an identified damping.
+pub fn damping_files(d: &DampingOut) -> super::Files {
+    let mut csv = String::from("time_s,rotation_deg,fitted_deg\n");
+    for h in &d.history {
+        csv += &format!("{},{},{}\n", h[0], h[1], h[2]);
+    }
+    let sim: Vec<(f64, f64)> = d.history.iter().map(|h| (h[0], h[1])).collect();
+    let fit: Vec<(f64, f64)> = d.history.iter().map(|h| (h[0], h[2])).collect();
+    let svg = crate::report::svg::lines(
+        &format!("Hinge step response: D = {} N·mm·s/°", sig(d.d_nmm_s_per_deg, 4)),
+        "time (s)",
+        "rotation (°)",
+        &[("FE (transient)", &sim), ("fitted second-order model", &fit)],
+    );
+    vec![
+        ("hinge_step_response.csv".into(), csv.into_bytes()),
+        ("hinge_step_response.svg".into(), svg.into_bytes()),
+    ]
+}
+
+/// Markdown section of an identified damping.
+pub fn damping_report(d: &DampingOut) -> String {
+    let mut t = Table::new(&["quantity", "value", "unit"]);
+    for (name, v, unit) in [
+        ("K (statics)", d.k_nmm_per_deg, "N·mm/°"),
+        ("D (fitted)", d.d_nmm_s_per_deg, "N·mm·s/°"),
+        ("D/K", d.d_over_k_s, "s"),
+        ("J (fitted)", d.j_t_mm2, "t·mm²"),
+        ("fit residual (RMS / static rotation)", d.fit_residual, "-"),
+    ] {
+        t.row(vec![name.into(), sig(v, 5), unit.into()]);
+    }
+    format!("\n## Joint damping\n\nMethod: {}.\n\n{}", d.method, t.render())
 }
 
 /// The hinge in its blank as a chain of co-rotational flexibility elements along x (blank,

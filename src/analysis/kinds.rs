@@ -11,7 +11,7 @@ fn one_material(spec: &MaterialSpec) -> Vec<UsedMaterial> {
         .unwrap_or_default()
 }
 
-fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>) -> Vec<UsedMaterial> {
+pub(super) fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>) -> Vec<UsedMaterial> {
     specs
         .iter()
         .filter_map(|(k, spec)| spec.resolve(k).ok().map(|m| (k.clone(), spec.clone(), m)))
@@ -56,13 +56,20 @@ impl Analysis for Hinge {
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.validate().map(|_| ())
     }
-    fn run(case: &Self::Case, _ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        hinge::solve(case)
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        let out = hinge::solve(case)?;
+        if let (true, Some(d)) = (ctx.with_files, &out.damping) {
+            ctx.files.extend(hinge::damping_files(d));
+        }
+        Ok(out)
     }
     fn report(r: &Self::Result) -> Report {
         let mut report = hinge::report(&r.result);
         if let Some(lr) = &r.large_rotation {
             report.markdown += &hinge::large_rotation_report(lr);
+        }
+        if let Some(d) = &r.damping {
+            report.markdown += &hinge::damping_report(d);
         }
         report
     }
@@ -217,7 +224,7 @@ impl Analysis for Static {
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         let (model, hinges) = case.model.build_with_hinges(true)?;
         let (mut r, raw) = match case.steps.filter(|_| case.nonlinear) {
-            Some(steps) => fem_static::solve_nonlinear(&model, steps)?,
+            Some(steps) => fem_static::solve_nonlinear_tracked(&model, steps, case.track.as_ref())?,
             None => fem_static::solve_with(&model, ctx.cache)?,
         };
         fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
@@ -227,6 +234,11 @@ impl Analysis for Static {
         r.compliance = fem_static::node_compliances(&model, &case.compliance)?;
         if ctx.with_files {
             ctx.files = fem_static::vtu_files(&model, &raw)?;
+            let tracked = r
+                .load_cases
+                .iter()
+                .filter_map(|c| Some((c.name.as_str(), c.track.as_ref()?)));
+            ctx.files.extend(super::track::files(tracked));
         }
         ctx.warnings = if case.nonlinear {
             let mut w = warn::stretch_warnings(&model, &r);

@@ -60,6 +60,8 @@ macro_rules! analyses {
             PanTilt = "pantilt" #9, mod pantilt, analysis pantilt::PanTiltKind;
             /// Jacobian stiffness of a 3-PRS with compliant legs.
             PrsStiffness = "prs_stiffness" #10, mod prs_stiffness, analysis prs_stiffness::PrsStiffnessAnalysis;
+            /// Linear transient response of a beam/shell model to load and motion histories.
+            Transient = "transient" #11, mod transient, analysis transient::TransientKind, parse transient::parse_transient;
         }
     };
 }

@@ -1,6 +1,7 @@
 //! Analyses: validated case → typed result → JSON/Markdown/CSV views.
 
 pub mod case_file;
+pub mod compliance;
 pub mod design;
 pub mod fem_static;
 pub mod fem_vs_fkp;
@@ -15,6 +16,7 @@ pub mod registry;
 pub mod stage;
 pub mod stage_report;
 pub mod sweep_plot;
+pub mod track;
 pub mod vtu;
 pub mod warn;
 

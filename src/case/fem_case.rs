@@ -73,13 +73,18 @@ pub struct StaticCase {
     /// `[{"node": n, "frame": [[..], [..], [..]]}]` (frame optional, default global axes).
     #[serde(default)]
     pub compliance: Vec<super::mesh::ComplianceRequest>,
+    /// Nonlinear only: natural frequencies and node compliances at every accepted load step,
+    /// with the tangent stiffness of the deformed state: `{"modes": N, "compliance": [{"node":
+    /// n}]}`.
+    #[serde(default)]
+    pub track: Option<super::mesh::TrackRequest>,
 }
 
 /// Schema rules of a `static` (`need_loads`) or `modal` case that relate fields: the model is
 /// inline (at least one node; static: at least one load case) or comes from `mesh` (then no
 /// inline nodes, elements, supports or rigid links); a `.msh` mesh needs `gmsh` and `gmsh` needs
 /// a `.msh` mesh; `steps` only with `"nonlinear": true`.
-fn model_rules(need_loads: bool) -> serde_json::Value {
+pub fn model_rules(need_loads: bool) -> serde_json::Value {
     let mut inline = serde_json::json!({"required": ["nodes"], "properties": {"nodes": {"minItems": 1}}});
     if need_loads {
         inline = serde_json::json!({"allOf": [inline, {"required": ["load_cases"], "properties": {"load_cases": {"minItems": 1}}}]});
@@ -98,6 +103,10 @@ fn model_rules(need_loads: bool) -> serde_json::Value {
         },
         {
             "if": steps_given(),
+            "then": nonlinear_true()
+        },
+        {
+            "if": {"required": ["track"], "properties": {"track": {"type": "object"}}},
             "then": nonlinear_true()
         }
     ])
@@ -121,6 +130,8 @@ struct StaticOptions {
     output: super::mesh::StaticOutput,
     #[serde(default)]
     compliance: Vec<super::mesh::ComplianceRequest>,
+    #[serde(default)]
+    track: Option<super::mesh::TrackRequest>,
 }
 
 /// The options of a `modal` case besides its model, as in the case file.
@@ -141,7 +152,7 @@ struct ModalOptions {
 
 /// The top-level fields of a `static` or `modal` case that are the model's (those of
 /// [`MeshSpec`]).
-const MODEL_FIELDS: [&str; 7] = [
+pub const MODEL_FIELDS: [&str; 7] = [
     "materials",
     "sections",
     "nodes",
@@ -151,7 +162,7 @@ const MODEL_FIELDS: [&str; 7] = [
     "load_cases",
 ];
 
-const STATIC_OWN: [&str; 8] = [
+const STATIC_OWN: [&str; 9] = [
     "analysis",
     "description",
     "mesh",
@@ -160,11 +171,12 @@ const STATIC_OWN: [&str; 8] = [
     "steps",
     "output",
     "compliance",
+    "track",
 ];
 const MODAL_OWN: [&str; 6] = ["analysis", "mesh", "gmsh", "modes", "shift_hz", "shapes"];
 
 /// Splits a case object into its options (the fields in `own`) and its model (the rest).
-fn split(mut value: Value, own: &[&str]) -> (Value, Value) {
+pub fn split(mut value: Value, own: &[&str]) -> (Value, Value) {
     let mut options = Map::new();
     if let Value::Object(map) = &mut value {
         map.remove("analysis");
@@ -187,6 +199,7 @@ pub fn parse_static(value: Value, base: Option<&Path>) -> Result<StaticCase, Cas
     let steps = stage::check_steps("steps", o.steps, nonlinear)?;
     let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
     super::mesh::requests::check_compliance(&o.compliance, model.nodes.len())?;
+    super::mesh::requests::check_track(o.track.as_ref(), nonlinear, model.nodes.len())?;
     Ok(StaticCase {
         description: o.description,
         mesh: o.mesh,
@@ -196,6 +209,7 @@ pub fn parse_static(value: Value, base: Option<&Path>) -> Result<StaticCase, Cas
         steps,
         output: o.output,
         compliance: o.compliance,
+        track: o.track,
     })
 }
 
@@ -232,7 +246,7 @@ pub fn parse_modal(value: Value, base: Option<&Path>) -> Result<ModalCase, CaseE
 
 /// The model of a case: the inline fields `value`, merged into the `mesh` file's model if one
 /// is named (a JSON mesh file, or a Gmsh `.msh` file read through the `gmsh` mapping).
-fn read_model(
+pub fn read_model(
     value: Value,
     mesh_name: Option<&str>,
     gmsh_map: Option<&GmshMapping>,

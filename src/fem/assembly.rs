@@ -146,6 +146,16 @@ impl Pattern {
         &self.sparse
     }
 
+    /// Range of element `ie`'s values in the triplet list (empty for an element index past the
+    /// last element).
+    pub fn element_values(&self, ie: usize) -> std::ops::Range<usize> {
+        if ie < self.topology.len() {
+            self.offsets[ie]..self.offsets[ie + 1]
+        } else {
+            0..0
+        }
+    }
+
     /// Does this pattern fit `model` (same element node lists and equation count)?
     pub fn matches(&self, model: &Model, map: &DofMap) -> bool {
         map.n_eq() == self.n_eq

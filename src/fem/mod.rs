@@ -21,6 +21,7 @@ pub mod dof;
 pub mod element;
 pub mod elements;
 pub mod error;
+pub mod history;
 pub mod lattice;
 pub mod loads;
 pub mod mass;
@@ -35,6 +36,7 @@ pub mod shell_loads;
 pub mod shell_recovery;
 pub mod solve;
 pub mod transform;
+pub mod transient;
 
 pub use analysis::{CaseResult, StaticResults, System};
 pub use cache::SolverCache;
@@ -45,7 +47,9 @@ pub use model::{
     Beam, Element, FlexElement, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink, Shell4, Spring,
     SpringAxes, Support, Tie,
 };
-pub use nonlinear::{solve_nonlinear, NonlinearCase, NonlinearOptions, NonlinearResults, PathPoint, Tangent};
+pub use nonlinear::{
+    solve_nonlinear, NonlinearCase, NonlinearOptions, NonlinearResults, PathPoint, StepQuantities, StepTrack, Tangent,
+};
 pub use section::{Section, SectionProps};
 
 /// Result alias for the FEM core.

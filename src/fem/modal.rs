@@ -190,18 +190,8 @@ pub fn solve_modal_cached(
             "the model has no mass (give materials a density or add point masses)".into(),
         ));
     }
-    let negative_shift = || {
-        let mut ratios: Vec<f64> = kd
-            .iter()
-            .zip(&md)
-            .filter(|(k, m)| **k > 0.0 && **m > 0.0)
-            .map(|(k, m)| k / m)
-            .collect();
-        ratios.sort_by(f64::total_cmp);
-        let med = ratios.get(ratios.len() / 2).copied().unwrap_or(1.0);
-        -1e-6 * med
-    };
-    let mut shifts = match opts.shift {
+    let negative_shift = || -1e-6 * median_ratio(&kd, &md);
+    let shifts = match opts.shift {
         Some(s) if s.is_finite() => vec![s],
         Some(s) => return Err(FemError::BadInput(format!("modal shift must be finite, got {s}"))),
         // Supported: σ = 0, and if K turns out singular (a mechanism with mass, which has a
@@ -209,29 +199,9 @@ pub fn solve_modal_cached(
         None if check_free_bodies(model, &map).is_ok() => vec![0.0, negative_shift()],
         None => vec![negative_shift()],
     };
-    shifts.reverse();
     let symbolic = cache.modal_symbolic(&pattern)?;
-    let (shift, factor) = loop {
-        let Some(shift) = shifts.pop() else {
-            return Err(singular(&map, &k));
-        };
-        let a = k
-            .lin_comb(1.0, &m, -shift)
-            .ok_or_else(|| FemError::PatternMismatch("K and M patterns differ".into()))?;
-        match Factor::new(&symbolic, &a, opts.par) {
-            Ok(f) => {
-                let tiny = f
-                    .pivots()
-                    .iter()
-                    .zip(a.diagonal())
-                    .any(|(p, d)| p.is_nan() || *p <= super::diagnose::PIVOT_TOL * d);
-                if !tiny {
-                    break (shift, f);
-                }
-            }
-            Err(FactorError::NotPositiveDefinite) => {}
-            Err(FactorError::Other(s)) => return Err(FemError::Solver(s)),
-        }
+    let Some((shift, factor)) = factor_shifted(&k, &m, &symbolic, &shifts, opts.par)? else {
+        return Err(singular(&map, &k));
     };
     let (theta, x, steps) = lanczos(&factor, &m.full(), n, opts.n_modes.min(n), opts.tol)?;
     let rigid = rigid_vectors(model, &map);
@@ -282,6 +252,51 @@ pub fn solve_modal_cached(
         lanczos_steps: steps,
         n_eq: n,
     })
+}
+
+/// Median of Kᵢᵢ/Mᵢᵢ over the DOFs where both are positive (1 without any): the scale of the
+/// eigenvalues, for choosing shifts.
+pub(crate) fn median_ratio(kd: &[f64], md: &[f64]) -> f64 {
+    let mut ratios: Vec<f64> = kd
+        .iter()
+        .zip(md)
+        .filter(|(k, m)| **k > 0.0 && **m > 0.0)
+        .map(|(k, m)| k / m)
+        .collect();
+    ratios.sort_by(f64::total_cmp);
+    ratios.get(ratios.len() / 2).copied().unwrap_or(1.0)
+}
+
+/// K − σM factorised (sparse Cholesky) for the first shift σ of `shifts` that makes it positive
+/// definite with every pivot above [`super::diagnose::PIVOT_TOL`] of its diagonal; `None` when
+/// none does. K and M share one pattern.
+pub(crate) fn factor_shifted(
+    k: &SparseMatrix,
+    m: &SparseMatrix,
+    symbolic: &super::solve::SymbolicFactor,
+    shifts: &[f64],
+    par: Parallelism,
+) -> Result<Option<(f64, Factor)>, FemError> {
+    for &shift in shifts {
+        let a = k
+            .lin_comb(1.0, m, -shift)
+            .ok_or_else(|| FemError::PatternMismatch("K and M patterns differ".into()))?;
+        match Factor::new(symbolic, &a, par) {
+            Ok(f) => {
+                let tiny = f
+                    .pivots()
+                    .iter()
+                    .zip(a.diagonal())
+                    .any(|(p, d)| p.is_nan() || *p <= super::diagnose::PIVOT_TOL * d);
+                if !tiny {
+                    return Ok(Some((shift, f)));
+                }
+            }
+            Err(FactorError::NotPositiveDefinite) => {}
+            Err(FactorError::Other(s)) => return Err(FemError::Solver(s)),
+        }
+    }
+    Ok(None)
 }
 
 fn singular(map: &DofMap, k: &SparseMatrix) -> FemError {
@@ -378,9 +393,9 @@ const BLOCK: usize = 6;
 /// returns the `nev` largest θ of S = A⁻¹M (descending), their M-orthonormal Ritz vectors,
 /// and the number of linear solves.
 /// Ritz values θ (descending), Ritz vectors and the number of solves.
-type RitzPairs = (Vec<f64>, Vec<Vec<f64>>, usize);
+pub(crate) type RitzPairs = (Vec<f64>, Vec<Vec<f64>>, usize);
 
-fn lanczos(a: &Factor, m: &FullSymmetric, n: usize, nev: usize, tol: f64) -> Result<RitzPairs, FemError> {
+pub(crate) fn lanczos(a: &Factor, m: &FullSymmetric, n: usize, nev: usize, tol: f64) -> Result<RitzPairs, FemError> {
     let p = BLOCK.min(n);
     // S·v = A⁻¹(M v); callers pass M v (stored with the basis) or M·random.
     let apply = |mvs: &[Vec<f64>]| -> Result<Vec<Vec<f64>>, FemError> {

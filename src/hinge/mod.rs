@@ -33,6 +33,7 @@ pub mod calibration;
 pub mod chain;
 pub mod closed_form;
 pub mod contour;
+pub mod damping;
 pub mod element;
 pub mod error;
 pub mod integrate;

@@ -133,10 +133,21 @@ impl Frame {
 
 /// A scatter plot with connecting lines per series, axes with ticks, title and labels.
 pub fn scatter(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])]) -> String {
+    plot(title, xlabel, ylabel, series, true)
+}
+
+/// Like [`scatter`] without point markers (long time histories).
+pub fn lines(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])]) -> String {
+    plot(title, xlabel, ylabel, series, false)
+}
+
+fn plot(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])], markers: bool) -> String {
     let all: Vec<(f64, f64)> = series.iter().flat_map(|(_, p)| p.iter().copied()).collect();
     let f = Frame::new(640.0, 420.0, 20.0, &all, &[], true);
     let mut out = f.open(title, xlabel, ylabel);
-    let colours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd"];
+    let colours = [
+        "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf",
+    ];
     for (si, (name, p)) in series.iter().enumerate() {
         let c = colours[si % colours.len()];
         let mut sorted: Vec<(f64, f64)> = p
@@ -153,7 +164,7 @@ pub fn scatter(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64,
             "<polyline fill=\"none\" stroke=\"{c}\" points=\"{}\"/>\n",
             path.join(" ")
         );
-        for &(x, y) in &sorted {
+        for &(x, y) in sorted.iter().filter(|_| markers) {
             out += &format!(
                 "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"4\" fill=\"{c}\"/>\n",
                 f.sx(x),
@@ -166,6 +177,26 @@ pub fn scatter(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64,
             f.t + 16.0 + 16.0 * si as f64,
             esc(name)
         );
+    }
+    out += "</svg>\n";
+    out
+}
+
+/// Plots (each a whole `<svg>` document from this module) stacked vertically into one SVG.
+pub fn stack(panels: &[String]) -> String {
+    let size = |p: &str, attr: &str| -> f64 {
+        p.split_once(&format!("{attr}=\""))
+            .and_then(|(_, rest)| rest.split_once('"'))
+            .and_then(|(v, _)| v.parse().ok())
+            .unwrap_or(0.0)
+    };
+    let w = panels.iter().map(|p| size(p, "width")).fold(0.0, f64::max);
+    let h: f64 = panels.iter().map(|p| size(p, "height")).sum();
+    let mut out = format!("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\">\n");
+    let mut y = 0.0;
+    for p in panels {
+        out += &p.replacen("<svg ", &format!("<svg y=\"{y}\" "), 1);
+        y += size(p, "height");
     }
     out += "</svg>\n";
     out

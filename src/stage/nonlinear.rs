@@ -56,22 +56,7 @@ impl StageModel {
         opts: &fem::NonlinearOptions,
         segments: usize,
     ) -> Result<Vec<StageCaseResult>, StageError> {
-        let mut model = self.model.clone();
-        let mut chains: Vec<(usize, usize)> = Vec::new();
-        if segments > 1 {
-            for leg in &self.legs {
-                for (el, profile, single) in [
-                    (leg.rev_element, &self.revolute.profile, &self.revolute.stiffness),
-                    (leg.sph_element, &self.spherical.profile, &self.spherical.stiffness),
-                ] {
-                    if let Some(el) = el {
-                        let last = self.split_hinge(&mut model, el, profile, single, segments)?;
-                        chains.push((el, last));
-                    }
-                }
-            }
-        }
-        model.load_cases = cases.iter().map(|(n, d)| self.load_case(n, *d)).collect();
+        let (model, chains) = self.nonlinear_model(cases, segments)?;
         let res = fem::solve_nonlinear(&model, opts)?;
         Ok(res
             .load_cases
@@ -94,6 +79,33 @@ impl StageModel {
                 out
             })
             .collect())
+    }
+
+    /// The model of [`StageModel::solve_nonlinear_segments`]: each hinge split into `segments`
+    /// co-rotational flexibility elements, the load cases of `cases`; with the first and last
+    /// element of each hinge chain.
+    pub fn nonlinear_model(
+        &self,
+        cases: &[(String, Drive)],
+        segments: usize,
+    ) -> Result<(Model, Vec<(usize, usize)>), StageError> {
+        let mut model = self.model.clone();
+        let mut chains: Vec<(usize, usize)> = Vec::new();
+        if segments > 1 {
+            for leg in &self.legs {
+                for (el, profile, single) in [
+                    (leg.rev_element, &self.revolute.profile, &self.revolute.stiffness),
+                    (leg.sph_element, &self.spherical.profile, &self.spherical.stiffness),
+                ] {
+                    if let Some(el) = el {
+                        let last = self.split_hinge(&mut model, el, profile, single, segments)?;
+                        chains.push((el, last));
+                    }
+                }
+            }
+        }
+        model.load_cases = cases.iter().map(|(n, d)| self.load_case(n, *d)).collect();
+        Ok((model, chains))
     }
 
     /// Replaces hinge element `el` by a chain of `n` flexibility elements; returns the index of

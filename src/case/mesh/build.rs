@@ -47,6 +47,16 @@ impl MeshSpec {
     /// As [`MeshSpec::build_model`], also returning the model's hinge elements (their element
     /// index, hinge region and allowable stress) for the per-hinge results.
     pub fn build_with_hinges(&self, need_loads: bool) -> Result<(fem::Model, Vec<BuiltHinge>), CaseError> {
+        self.build_indexed(need_loads).map(|(m, h, _)| (m, h))
+    }
+
+    /// As [`MeshSpec::build_with_hinges`], also returning the model element index of each case
+    /// element (`None` for rigid links and point masses).
+    #[allow(clippy::type_complexity)]
+    pub fn build_indexed(
+        &self,
+        need_loads: bool,
+    ) -> Result<(fem::Model, Vec<BuiltHinge>, Vec<Option<usize>>), CaseError> {
         let materials = Named::validate("material", "materials", &self.materials, |m, p| m.resolve(p))?;
         let sections = Named::validate("section", "sections", &self.sections, section)?;
         if self.nodes.is_empty() {
@@ -164,7 +174,7 @@ impl MeshSpec {
             let lc = super::build_loads::load_case(&mut cx, &format!("load_cases[{ic}]"), c)?;
             cx.model.load_cases.push(lc);
         }
-        Ok((cx.model, cx.hinges))
+        Ok((cx.model, cx.hinges, cx.model_index))
     }
 }
 

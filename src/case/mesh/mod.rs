@@ -23,5 +23,5 @@ pub use load_shapes::{
     DisplacementSpec, DofName, EdgeLoadSpec, ForceSpec, GroupForceSpec, LineAxes, LineLoadSpec, LoadCaseSpec,
     PressureSpec,
 };
-pub use requests::{ComplianceRequest, StaticOutput};
+pub use requests::{ComplianceRequest, StaticOutput, TrackRequest};
 pub use shapes::{ElementSpec, GmshMapping, GroupSpec, JointKind, MeshSpec, RigidSpec, SectionSpec, SupportSpec};

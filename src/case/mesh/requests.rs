@@ -30,8 +30,59 @@ pub struct ComplianceRequest {
 /// Validates the compliance requests against a model of `n_nodes` nodes (paths
 /// `compliance[i].node`, `compliance[i].frame`).
 pub fn check_compliance(reqs: &[ComplianceRequest], n_nodes: usize) -> Result<(), CaseError> {
+    check_compliance_at("compliance", reqs, n_nodes)
+}
+
+/// Most natural frequencies `"track"` may ask for per step.
+pub const MAX_TRACK_MODES: usize = 100;
+
+/// `"track"` of a nonlinear `static` case: quantities evaluated at every accepted load step
+/// with the tangent stiffness of the deformed state.
+#[derive(Debug, Clone, Default, PartialEq, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TrackRequest {
+    /// Number of natural frequencies (the lowest) per step, with the current tangent
+    /// stiffness (geometric stiffness included) and the mass; 0 … 100 (default 0).
+    #[serde(default)]
+    #[schemars(range(max = 100))]
+    pub modes: usize,
+    /// Nodes whose 6×6 compliance (and support stiffness, its inverse diagonal) per step the
+    /// result lists, as the top-level `compliance`: `[{"node": n, "frame": [[..], [..], [..]]}]`.
+    #[serde(default)]
+    pub compliance: Vec<ComplianceRequest>,
+}
+
+/// Validates `"track"` (paths `track.modes`, `track.compliance[i]…`): only with
+/// `"nonlinear": true`, and asking for something.
+pub fn check_track(track: Option<&TrackRequest>, nonlinear: bool, n_nodes: usize) -> Result<(), CaseError> {
+    let Some(t) = track else {
+        return Ok(());
+    };
+    if !nonlinear {
+        return Err(CaseError::new(
+            "track",
+            "tracking along the load path applies to a nonlinear analysis only: add \"nonlinear\": true or remove \"track\"",
+        ));
+    }
+    if t.modes > MAX_TRACK_MODES {
+        return Err(CaseError::value(
+            "track.modes",
+            t.modes,
+            format!("must be at most {MAX_TRACK_MODES}"),
+        ));
+    }
+    if t.modes == 0 && t.compliance.is_empty() {
+        return Err(CaseError::new(
+            "track",
+            "asks for nothing: give \"modes\" ≥ 1 and/or \"compliance\": [{\"node\": n}]",
+        ));
+    }
+    check_compliance_at("track.compliance", &t.compliance, n_nodes)
+}
+
+fn check_compliance_at(path: &str, reqs: &[ComplianceRequest], n_nodes: usize) -> Result<(), CaseError> {
     for (i, r) in reqs.iter().enumerate() {
-        let p = format!("compliance[{i}]");
+        let p = format!("{path}[{i}]");
         if r.node >= n_nodes {
             return Err(CaseError::value(
                 format!("{p}.node"),

@@ -78,6 +78,7 @@ pub(super) fn solve_case(
     } else {
         None
     };
+    let tracker = super::state::Tracker::new(model, elems, &map, &pairs, &opts.step_track)?;
     let ctx = CaseCtx {
         model,
         elems,
@@ -103,6 +104,7 @@ pub(super) fn solve_case(
         full,
         masters,
         par: opts.parallelism,
+        tracker,
     };
     let mut st = State {
         u: vec![Vector3::zeros(); nn],
@@ -114,6 +116,7 @@ pub(super) fn solve_case(
         stable: true,
         residuals: Vec::new(),
     }];
+    ctx.record_step(&st, 0.0, 0)?;
     let has_prescribed = ctx.u_c.iter().any(|&v| v != 0.0);
     let mut stab = Stability::default();
     let (iterations, steps, cuts, lambda) = if opts.arc_length {
@@ -130,5 +133,8 @@ pub(super) fn solve_case(
     let mut out = finish(&ctx, &st, &case.name, lambda, path, iterations, steps, cuts)?;
     out.stable = stab.bracket.is_none();
     out.critical_load_factor = stab.bracket;
+    if let Some(t) = &ctx.tracker {
+        out.step_quantities = t.steps.take();
+    }
     Ok(out)
 }

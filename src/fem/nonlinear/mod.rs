@@ -60,6 +60,7 @@ mod path;
 mod recover;
 mod residual;
 mod state;
+mod track;
 
 use load_case::solve_case;
 use state::element_data;
@@ -91,6 +92,9 @@ pub struct NonlinearOptions {
     /// DOFs whose values are recorded along the path (translations in mm; rotations: the
     /// rotation-vector component, rad; global axes).
     pub track: Vec<NodeDof>,
+    /// Natural frequencies and node compliances evaluated at every accepted point of the path
+    /// with the current tangent stiffness ([`NonlinearCase::step_quantities`]); none by default.
+    pub step_track: StepTrack,
     /// Threading of the sparse factorisation.
     pub parallelism: Parallelism,
 }
@@ -107,8 +111,50 @@ impl Default for NonlinearOptions {
             tangent: Tangent::Auto,
             arc_length: false,
             track: Vec::new(),
+            step_track: StepTrack::default(),
             parallelism: Parallelism::Sequential,
         }
+    }
+}
+
+/// What to evaluate at every accepted point of a nonlinear path (nothing by default).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct StepTrack {
+    /// Number of natural frequencies (the lowest) with the current tangent stiffness; 0: none.
+    pub modes: usize,
+    /// Nodes whose 6×6 compliance with the current tangent stiffness is evaluated.
+    pub compliance: Vec<usize>,
+}
+
+impl StepTrack {
+    pub(super) fn is_empty(&self) -> bool {
+        self.modes == 0 && self.compliance.is_empty()
+    }
+}
+
+/// The tracked quantities at one accepted point of the path.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StepQuantities {
+    /// Index of the point in [`NonlinearCase::path`].
+    pub point: usize,
+    /// Load factor λ of the point.
+    pub lambda: f64,
+    /// The lowest [`StepTrack::modes`] eigenvalues ω² of K_T φ = ω² M φ, ascending, (rad/s)²;
+    /// negative where the state is unstable.
+    pub eigenvalues: Vec<f64>,
+    /// Per node of [`StepTrack::compliance`]: C[i][j] = displacement i of the node per unit
+    /// load j at it, [ux, uy, uz, rx, ry, rz] × [Fx, Fy, Fz, Mx, My, Mz], global axes (mm/N,
+    /// rad/N, rad/(N·mm)); rows and columns of held DOFs are zero. Symmetric.
+    pub compliance: Vec<[[f64; 6]; 6]>,
+}
+
+impl StepQuantities {
+    /// Natural frequencies, Hz: √ω²/2π, with a minus sign where ω² < 0 (unstable state).
+    pub fn frequencies_hz(&self) -> Vec<f64> {
+        self.eigenvalues
+            .iter()
+            .map(|l| l.signum() * l.abs().sqrt() / (2.0 * std::f64::consts::PI))
+            .collect()
     }
 }
 
@@ -175,6 +221,9 @@ pub struct NonlinearCase {
     /// Co-rotated frame of each beam/flexibility element at the end (rows: local x, y, z in
     /// global coordinates; identity for springs).
     pub element_frames: Vec<[[f64; 3]; 3]>,
+    /// With [`NonlinearOptions::step_track`]: the tracked quantities at every accepted point of
+    /// the path, in path order (empty otherwise).
+    pub step_quantities: Vec<StepQuantities>,
 }
 
 /// Results of all load cases, in model order.

@@ -115,6 +115,7 @@ pub(super) fn load_control(
                     stable,
                     residuals: nk.residuals,
                 });
+                ctx.record_step(st, lambda, path.len() - 1)?;
                 if dl < dl0 && nk.iterations <= 4 {
                     dl = (dl * 2.0).min(dl0);
                 } else if nk.iterations >= 12 && dl * 0.5 >= dl_min {
@@ -285,6 +286,7 @@ pub(super) fn arc_length(
                     stable,
                     residuals,
                 });
+                ctx.record_step(st, lambda, path.len() - 1)?;
             }
             None => {
                 *st = saved;

@@ -94,6 +94,7 @@ pub(super) fn finish(
         stable: true,
         critical_load_factor: None,
         element_frames: frames,
+        step_quantities: Vec::new(),
     })
 }
 

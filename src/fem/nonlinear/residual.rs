@@ -170,6 +170,15 @@ impl CaseCtx<'_> {
                 positive_definite: None,
             });
         }
+        self.solve_symmetric(values, rhs)
+    }
+
+    /// Solves with the symmetric tangent (lower values in pattern order): sparse Cholesky, or
+    /// sparse LU when it is not positive definite.
+    pub(super) fn solve_symmetric(&self, values: &[f64], rhs: &[Vec<f64>]) -> Result<Solution, String> {
+        let n = self.n_eq();
+        let mut buf: Vec<f64> = rhs.iter().flatten().copied().collect();
+        let split = |buf: Vec<f64>| buf.chunks(n.max(1)).map(|c| c.to_vec()).collect::<Vec<_>>();
         if let Some(f) = self.cholesky(values)? {
             f.solve_in_place(&mut buf, rhs.len()).map_err(|e| e.to_string())?;
             return Ok(Solution {

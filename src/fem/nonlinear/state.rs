@@ -94,6 +94,20 @@ pub(super) struct CaseCtx<'a> {
     /// Master nodes of rigid links (their 6×6 blocks carry the link geometric stiffness).
     pub(super) masters: Vec<usize>,
     pub(super) par: Parallelism,
+    /// Quantities evaluated at every accepted point ([`super::StepTrack`]), when asked.
+    pub(super) tracker: Option<Tracker>,
+}
+
+/// The fixed data of the tracking of one load case, and what it recorded.
+pub(super) struct Tracker {
+    pub(super) req: super::StepTrack,
+    /// Beams (element index) with their undeformed global mass.
+    pub(super) beams: Vec<(usize, Box<Mat12>)>,
+    /// Tangent pairs then mass pairs (lower triangle): K and M on one pattern.
+    pub(super) pattern: SparsePattern,
+    pub(super) symbolic: SymbolicFactor,
+    pub(super) n_k: usize,
+    pub(super) steps: std::cell::RefCell<Vec<super::StepQuantities>>,
 }
 
 /// Residual, tangent values and force norms at one configuration.

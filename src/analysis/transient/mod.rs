@@ -1,0 +1,430 @@
+//! `"analysis": "transient"`: linear transient response of a beam/shell/hinge/joint model (as
+//! for `static`) to load and prescribed-motion histories, by HHT-α or Newmark average
+//! acceleration ([`crate::fem::transient`]), with Rayleigh and per-element damping.
+
+mod output;
+
+use super::kind::{Analysis, Ctx, UsedMaterial};
+use super::kinds::named_materials;
+use super::{Report, RunError};
+use crate::case::fem_case::{model_rules, read_model, split, MODEL_FIELDS};
+use crate::case::mesh::{DofName, GmshMapping, MeshSpec};
+use crate::case::{from_value, CaseError};
+use crate::fem::transient::{Damping, History, PrescribedMotion, Scheme, TransientLoad, TransientOptions};
+use crate::fem::{Dof, NodeDof};
+pub use output::{RecordOut, TransientResult};
+use serde::Deserialize;
+use serde_json::Value;
+use std::path::Path;
+
+/// A time history g(t) by `type` (times in s).
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum HistorySpec {
+    /// 0 before `start` (default 0), 1 from `start` on.
+    Step {
+        #[serde(default)]
+        start: f64,
+    },
+    /// 0 before `start` (default 0), linear to 1 at `end`, 1 after.
+    Ramp {
+        #[serde(default)]
+        start: f64,
+        end: f64,
+    },
+    /// sin(2π f (t − start) + phase) from `start` (default 0) on; `phase_deg` default 0.
+    Sine {
+        frequency_hz: f64,
+        #[serde(default)]
+        phase_deg: f64,
+        #[serde(default)]
+        start: f64,
+    },
+    /// Piecewise linear through `[time, value]` points (times strictly increasing).
+    Table { points: Vec<[f64; 2]> },
+}
+
+impl HistorySpec {
+    fn history(&self, path: &str) -> Result<History, CaseError> {
+        let h = match self {
+            HistorySpec::Step { start } => History::Step { start: *start },
+            HistorySpec::Ramp { start, end } => History::Ramp { start: *start, end: *end },
+            HistorySpec::Sine {
+                frequency_hz,
+                phase_deg,
+                start,
+            } => History::Sine {
+                frequency_hz: *frequency_hz,
+                phase_rad: phase_deg.to_radians(),
+                start: *start,
+            },
+            HistorySpec::Table { points } => History::Table {
+                points: points.iter().map(|p| (p[0], p[1])).collect(),
+            },
+        };
+        h.validate().map_err(|e| CaseError::new(path, e.to_string()))?;
+        Ok(h)
+    }
+}
+
+/// A nodal load history.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct LoadSpec {
+    /// Node index.
+    pub node: usize,
+    /// [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)], global axes, times the history.
+    pub force: [f64; 6],
+    pub history: HistorySpec,
+}
+
+/// A prescribed-motion history of one DOF (node axes at framed nodes).
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MotionSpec {
+    /// Node index.
+    pub node: usize,
+    pub dof: DofName,
+    /// Amplitude: mm for translations, degrees for rotations; times the history, which must
+    /// be 0 at t = 0.
+    pub value: f64,
+    pub history: HistorySpec,
+}
+
+/// Extra stiffness-proportional damping of one case element.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ElementDampingSpec {
+    /// Index in `elements` (every segment of a hinge element).
+    pub element: usize,
+    /// Coefficient, s (C gets beta × the element's stiffness).
+    pub beta: f64,
+}
+
+/// Damping C = alpha M + beta K + Σ elements.
+#[derive(Debug, Clone, Default, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct DampingSpec {
+    /// Mass-proportional Rayleigh coefficient, 1/s (default 0).
+    #[serde(default)]
+    pub alpha: f64,
+    /// Stiffness-proportional Rayleigh coefficient, s (default 0).
+    #[serde(default)]
+    pub beta: f64,
+    /// Per-element stiffness-proportional damping.
+    #[serde(default)]
+    pub elements: Vec<ElementDampingSpec>,
+}
+
+/// Time-integration scheme.
+#[derive(Debug, Clone, Copy, Default, Deserialize, schemars::JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum SchemeName {
+    /// Newmark average acceleration: no numerical damping.
+    #[default]
+    Newmark,
+    /// HHT-α (Hilber, Hughes & Taylor 1977) with `hht_alpha`: damps the high modes.
+    Hht,
+}
+
+/// A recorded DOF (all six of the node when `dof` is left out).
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RecordSpec {
+    pub node: usize,
+    #[serde(default)]
+    pub dof: Option<DofName>,
+}
+
+/// The model rules of `static`/`modal` cases without the last one (`steps` only when
+/// nonlinear): here `steps` is the number of time steps.
+fn rules() -> Value {
+    let mut v = model_rules(false);
+    if let Some(a) = v.as_array_mut() {
+        a.pop();
+    }
+    v
+}
+
+/// `"analysis": "transient"`.
+#[derive(Debug, Clone, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+#[schemars(extend("allOf" = rules()))]
+pub struct TransientCase {
+    /// Time step, s (> 0).
+    pub dt: f64,
+    /// Number of steps, 1 … 1000000.
+    #[schemars(range(min = 1, max = 1000000))]
+    pub steps: usize,
+    /// The model's JSON mesh file or Gmsh `.msh` file, as for `static` (its load cases are
+    /// ignored), or the model inline.
+    pub mesh: Option<String>,
+    /// Physical-group mapping of a Gmsh `.msh` mesh.
+    pub gmsh: Option<GmshMapping>,
+    /// Free text (not used).
+    pub description: Option<String>,
+    /// `"newmark"` (default) or `"hht"`.
+    #[serde(default)]
+    pub scheme: SchemeName,
+    /// α of HHT, −1/3 … 0 (default −0.05; only with `"scheme": "hht"`).
+    pub hht_alpha: Option<f64>,
+    #[serde(default)]
+    pub damping: DampingSpec,
+    /// Load histories.
+    #[serde(default)]
+    pub loads: Vec<LoadSpec>,
+    /// Prescribed-motion histories.
+    #[serde(default)]
+    pub motions: Vec<MotionSpec>,
+    /// DOFs whose histories are recorded (CSV, SVG; peaks in the JSON result).
+    #[serde(default)]
+    pub record: Vec<RecordSpec>,
+    /// Frames of the VTK time series written with `--out` (default 50, at most `steps` + 1).
+    pub frames: Option<usize>,
+    /// Full recorded series in the JSON result (default false: peaks and final values only).
+    #[serde(default)]
+    pub histories: bool,
+    /// The model.
+    #[serde(flatten)]
+    pub model: MeshSpec,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Options {
+    dt: f64,
+    steps: usize,
+    #[serde(default)]
+    mesh: Option<String>,
+    #[serde(default)]
+    gmsh: Option<GmshMapping>,
+    #[serde(default)]
+    description: Option<String>,
+    #[serde(default)]
+    scheme: SchemeName,
+    #[serde(default)]
+    hht_alpha: Option<f64>,
+    #[serde(default)]
+    damping: DampingSpec,
+    #[serde(default)]
+    loads: Vec<LoadSpec>,
+    #[serde(default)]
+    motions: Vec<MotionSpec>,
+    #[serde(default)]
+    record: Vec<RecordSpec>,
+    #[serde(default)]
+    frames: Option<usize>,
+    #[serde(default)]
+    histories: bool,
+}
+
+const OWN: [&str; 15] = [
+    "analysis",
+    "description",
+    "mesh",
+    "gmsh",
+    "dt",
+    "steps",
+    "scheme",
+    "hht_alpha",
+    "damping",
+    "loads",
+    "motions",
+    "record",
+    "frames",
+    "histories",
+    "load_cases",
+];
+
+/// Parses a `transient` case; files it names resolve against `base` first.
+pub fn parse_transient(value: Value, base: Option<&Path>) -> Result<TransientCase, CaseError> {
+    if let Some(key) = value
+        .as_object()
+        .and_then(|m| m.keys().find(|k| !OWN.contains(&k.as_str()) && !MODEL_FIELDS.contains(&k.as_str())))
+    {
+        return Err(CaseError::new(key.clone(), format!("unknown field `{key}` in a `transient` case")));
+    }
+    let (mut options, model) = split(value, &OWN);
+    if let Value::Object(m) = &mut options {
+        m.remove("load_cases");
+    }
+    let o: Options = from_value(options, "")?;
+    let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
+    let case = TransientCase {
+        description: o.description,
+        mesh: o.mesh,
+        gmsh: o.gmsh,
+        dt: o.dt,
+        steps: o.steps,
+        scheme: o.scheme,
+        hht_alpha: o.hht_alpha,
+        damping: o.damping,
+        loads: o.loads,
+        motions: o.motions,
+        record: o.record,
+        frames: o.frames,
+        histories: o.histories,
+        model,
+    };
+    case.options(case.model.nodes.len())?;
+    Ok(case)
+}
+
+/// What the solver needs from a case, checked.
+struct Inputs {
+    loads: Vec<TransientLoad>,
+    motions: Vec<PrescribedMotion>,
+    opts: TransientOptions,
+}
+
+impl TransientCase {
+    fn scheme(&self) -> Result<Scheme, CaseError> {
+        match (self.scheme, self.hht_alpha) {
+            (SchemeName::Newmark, None) => Ok(Scheme::AverageAcceleration),
+            (SchemeName::Newmark, Some(_)) => Err(CaseError::new("hht_alpha", "only with \"scheme\": \"hht\"")),
+            (SchemeName::Hht, a) => {
+                let a = a.unwrap_or(-0.05);
+                if !(-1.0 / 3.0..=0.0).contains(&a) {
+                    return Err(CaseError::value("hht_alpha", a, "must be from -1/3 to 0"));
+                }
+                Ok(Scheme::Hht { alpha: a })
+            }
+        }
+    }
+
+    fn options(&self, n_nodes: usize) -> Result<(TransientOptions, Vec<TransientLoad>, Vec<PrescribedMotion>), CaseError> {
+        let node = |p: String, n: usize| {
+            if n < n_nodes {
+                Ok(n)
+            } else {
+                Err(CaseError::value(p, n, format!("must be a node index below {n_nodes}")))
+            }
+        };
+        if !(self.dt.is_finite() && self.dt > 0.0) {
+            return Err(CaseError::value("dt", self.dt, "must be a time step > 0, s"));
+        }
+        if !(1..=1_000_000).contains(&self.steps) {
+            return Err(CaseError::value("steps", self.steps, "must be an integer from 1 to 1000000"));
+        }
+        let mut opts = TransientOptions::new(self.dt, self.steps);
+        opts.scheme = self.scheme()?;
+        for (name, v) in [("damping.alpha", self.damping.alpha), ("damping.beta", self.damping.beta)] {
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(CaseError::value(name, v, "must be ≥ 0"));
+            }
+        }
+        for (i, e) in self.damping.elements.iter().enumerate() {
+            if e.element >= self.model.elements.len() {
+                let allowed = format!("must be an index into `elements` (below {})", self.model.elements.len());
+                return Err(CaseError::value(format!("damping.elements[{i}].element"), e.element, allowed));
+            }
+            if !(e.beta.is_finite() && e.beta >= 0.0) {
+                return Err(CaseError::value(format!("damping.elements[{i}].beta"), e.beta, "must be ≥ 0, s"));
+            }
+        }
+        let mut loads = Vec::with_capacity(self.loads.len());
+        for (i, l) in self.loads.iter().enumerate() {
+            let p = format!("loads[{i}]");
+            if let Some(v) = l.force.iter().find(|v| !v.is_finite()) {
+                return Err(CaseError::value(format!("{p}.force"), v, "must be finite"));
+            }
+            loads.push(TransientLoad {
+                node: node(format!("{p}.node"), l.node)?,
+                f: l.force,
+                history: l.history.history(&format!("{p}.history"))?,
+            });
+        }
+        let mut motions = Vec::with_capacity(self.motions.len());
+        for (i, m) in self.motions.iter().enumerate() {
+            let p = format!("motions[{i}]");
+            let history = m.history.history(&format!("{p}.history"))?;
+            if history.value(0.0) != 0.0 {
+                return Err(CaseError::new(
+                    format!("{p}.history"),
+                    "a prescribed motion must be 0 at t = 0 (the model starts at rest): start a step after 0 or use a ramp",
+                ));
+            }
+            let dof = m.dof.dof();
+            let value = if dof.index() >= 3 { m.value.to_radians() } else { m.value };
+            if !value.is_finite() {
+                return Err(CaseError::value(format!("{p}.value"), m.value, "must be finite"));
+            }
+            motions.push(PrescribedMotion {
+                node: node(format!("{p}.node"), m.node)?,
+                dof,
+                value,
+                history,
+            });
+        }
+        for (i, r) in self.record.iter().enumerate() {
+            let n = node(format!("record[{i}].node"), r.node)?;
+            match r.dof {
+                Some(d) => opts.record.push(NodeDof { node: n, dof: d.dof() }),
+                None => opts.record.extend(Dof::ALL.map(|dof| NodeDof { node: n, dof })),
+            }
+        }
+        if let Some(f) = self.frames {
+            if f > 10_000 {
+                return Err(CaseError::value("frames", f, "must be at most 10000"));
+            }
+        }
+        Ok((opts, loads, motions))
+    }
+
+    fn inputs(&self, model: &crate::fem::Model, index: &[Option<usize>], hinges: &[crate::case::mesh::BuiltHinge]) -> Result<Inputs, CaseError> {
+        let (mut opts, loads, motions) = self.options(model.nodes.len())?;
+        let mut element_beta = Vec::new();
+        for e in &self.damping.elements {
+            if let Some(ie) = index.get(e.element).copied().flatten() {
+                element_beta.push((ie, e.beta));
+                // Inner segments of a split hinge are appended after the case's elements.
+                if let Some(h) = hinges.iter().find(|h| h.case_element == e.element && h.segments > 1) {
+                    let first_inner = h.last + 2 - h.segments;
+                    element_beta.extend((first_inner..=h.last).map(|s| (s, e.beta)));
+                }
+            }
+        }
+        opts.damping = Damping {
+            alpha: self.damping.alpha,
+            beta: self.damping.beta,
+            element_beta,
+        };
+        let frames = self.frames.unwrap_or(50).min(self.steps + 1);
+        opts.snapshot_every = if frames == 0 { 0 } else { (self.steps / frames.max(1)).max(1) };
+        Ok(Inputs { loads, motions, opts })
+    }
+}
+
+/// `transient`: the analysis kind.
+pub struct TransientKind;
+
+impl Analysis for TransientKind {
+    const KIND: &'static str = "transient";
+    type Case = TransientCase;
+    type Result = TransientResult;
+
+    fn check(case: &Self::Case) -> Result<(), CaseError> {
+        let (model, hinges, index) = case.model.build_indexed(false)?;
+        case.inputs(&model, &index, &hinges).map(|_| ())
+    }
+    fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        let (model, hinges, index) = case.model.build_indexed(false)?;
+        let mut inputs = case.inputs(&model, &index, &hinges)?;
+        if !ctx.with_files {
+            inputs.opts.snapshot_every = 0;
+        }
+        let raw = crate::fem::transient::solve_transient(&model, &inputs.loads, &inputs.motions, &inputs.opts)
+            .map_err(|e| RunError::Analysis(super::AnalysisError::new("transient", e.to_string())))?;
+        ctx.warnings.extend(raw.warnings.iter().cloned());
+        if ctx.with_files {
+            ctx.files.extend(output::files(&model, &inputs.opts, &raw)?);
+        }
+        Ok(output::result(case, &inputs.opts, &raw))
+    }
+    fn report(r: &Self::Result) -> Report {
+        output::report(r)
+    }
+    fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
+        named_materials(&case.model.materials)
+    }
+}
