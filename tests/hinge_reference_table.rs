@@ -41,14 +41,14 @@ use rng::Rng;
 
 /// Random parameters, rounded so the JSON of the table stays short and exact in decimal.
 trait Draw {
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64;
+    fn uniform4(&mut self, lo: f64, hi: f64) -> f64;
     fn log(&mut self, lo: f64, hi: f64) -> f64;
     fn chance(&mut self, p: f64) -> bool;
 }
 
 impl Draw for Rng {
     /// Uniform in [lo, hi], rounded to 4 decimals (short, exact-in-decimal JSON).
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+    fn uniform4(&mut self, lo: f64, hi: f64) -> f64 {
         round4(lo + (hi - lo) * self.unit())
     }
     /// Log-uniform in [lo, hi], rounded to 4 significant digits.
@@ -131,7 +131,7 @@ fn design(rng: &mut Rng, fam: usize) -> (HingeSpec, Material) {
     };
     let material = Material {
         e: rng.log(1e3, 3e5),
-        nu: rng.uniform(0.0, 0.45),
+        nu: rng.uniform4(0.0, 0.45),
         density: 0.0,
         yield_strength: f64::INFINITY,
         allowable: rng.log(10.0, 1000.0),

@@ -68,7 +68,7 @@ pub fn solve(
             if !critical.is_empty() {
                 let modes: Vec<(f64, &[[f64; 6]])> =
                     critical.iter().map(|c| (c.load_factor, c.mode.as_slice())).collect();
-                let vtu = super::vtu::modes_vtu_labelled(model, &modes, &Default::default(), "load_factor")?;
+                let vtu = super::vtu::modes_vtu_named(model, &modes, &Default::default(), "load_factor")?;
                 files.push((format!("{stem}_critical.vtu"), vtu));
             }
         }

@@ -15,7 +15,7 @@ use super::resume::{Accept, Finished};
 use super::targets::{check_replaceable, io_context, Kind, Stop, Targets};
 use crate::case::sweep::Sweep;
 use crate::case::CaseError;
-use crate::design::sweep::{load, run_sweep, Row, Shard};
+use crate::design::sweep::{load, run_sweep_formatted, LineFormat, Row, Shard};
 use crate::design::table;
 use crate::output::write_atomic;
 use serde_json::Value;
@@ -50,6 +50,33 @@ pub struct SweepArgs {
     /// On resume, keep earlier error rows instead of running those designs again.
     #[arg(long)]
     pub keep_errors: bool,
+    /// Keep only these result fields in each line: comma-separated dotted paths, e.g.
+    /// `stiffness_z,at_allowable.force,load_cases.0.platform`.
+    #[arg(long, value_name = "a,b.c")]
+    pub fields: Option<String>,
+}
+
+/// The sidecar of `--out FILE.jsonl` holding the model notes once: `FILE.jsonl.notes.json`,
+/// an object from each `model_notes` reference in the lines to the notes.
+pub fn notes_path(out: &Path) -> PathBuf {
+    crate::output::with_suffix(out, ".notes.json")
+}
+
+/// The notes already in the sidecar `path` (none if it does not exist); a file that is not a
+/// notes object is refused unless `force`.
+fn read_notes(path: &Path, force: bool) -> Result<serde_json::Map<String, Value>, Stop> {
+    match fs::read(path) {
+        Ok(bytes) => match serde_json::from_slice::<Value>(&bytes) {
+            Ok(Value::Object(m)) if m.values().all(Value::is_array) => Ok(m),
+            _ if force => Ok(serde_json::Map::new()),
+            _ => Err(Stop::Usage(format!(
+                "{} exists and is not a flexfem notes file; remove it or give --force",
+                path.display()
+            ))),
+        },
+        Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(serde_json::Map::new()),
+        Err(e) => Err(Stop::Io(io_context("read", path)(e))),
+    }
 }
 
 /// Opens the partial file for appending; if it ends in a torn line, starts a new line so the
@@ -76,6 +103,8 @@ enum Stream {
 
 struct SinkState {
     stream: Stream,
+    /// With `--out`: the notes sidecar's path and contents (rewritten when a new reference appears).
+    notes: Option<(PathBuf, serde_json::Map<String, Value>)>,
     /// Rows kept for the CSV when they are not in a file (the values they were written from).
     kept: Option<Vec<(usize, Value)>>,
     buf: Vec<u8>,
@@ -185,16 +214,43 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
     let skip: HashSet<usize> = done.lines.keys().copied().filter(|&i| shard.contains(i)).collect();
     let to_run = in_shard - skip.len();
     let keep_for_csv = args.csv.is_some() && args.out.is_none();
+    let fields = match args.fields.as_deref().map(LineFormat::parse_fields) {
+        None => None,
+        Some(Ok(f)) => Some(f),
+        Some(Err(msg)) => return Err(Stop::Usage(format!("invalid --fields: {msg}"))),
+    };
+    // Model notes go once into the sidecar of a --out file; on stdout they stay in the lines.
+    let notes = match &targets.out {
+        Some(out) => Some((notes_path(out), read_notes(&notes_path(out), args.force)?)),
+        None => None,
+    };
+    let format = LineFormat {
+        fields,
+        notes_by_ref: notes.is_some(),
+    };
     let state = Mutex::new(SinkState {
+        notes,
         stream,
         kept: keep_for_csv.then(Vec::new),
         buf: Vec::with_capacity(4096),
     });
     let pb = progress_bar(to_run);
     let stdout_tty = args.out.is_none() && io::stdout().is_terminal();
-    let tally = run_sweep(sweep, base_dir, shard, &skip, |row: Row| {
+    let tally = run_sweep_formatted(sweep, base_dir, shard, &skip, &format, |row: Row| {
         let mut st = state.lock().unwrap_or_else(|p| p.into_inner());
-        let SinkState { stream, kept, buf } = &mut *st;
+        let SinkState {
+            stream,
+            kept,
+            buf,
+            notes,
+        } = &mut *st;
+        if let (Some((path, map)), Some((r, n))) = (notes.as_mut(), &row.notes) {
+            if !map.contains_key(r) {
+                map.insert(r.clone(), n.clone());
+                let text = serde_json::to_string_pretty(map).map_err(io::Error::other)?;
+                write_atomic(path, text.as_bytes()).map_err(io_context("write", path))?;
+            }
+        }
         buf.clear();
         buf.extend_from_slice(row.line.as_bytes());
         buf.push(b'\n');

@@ -107,6 +107,86 @@ pub struct Row {
     pub line: String,
     /// The JSON value `line` was written from (the CSV table reads its cells from it).
     pub value: Value,
+    /// With [`LineFormat::notes_by_ref`]: the model notes taken out of the line, as
+    /// (`model_notes` reference, notes).
+    pub notes: Option<(String, Value)>,
+}
+
+/// How a design's result goes into its line.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct LineFormat {
+    /// Result fields kept, as dotted paths (`stiffness_z`, `at_allowable.force`,
+    /// `load_cases.0.platform`); `None` keeps every field.
+    pub fields: Option<Vec<String>>,
+    /// Take the model notes (`result.model`, text that is the same for every design of a
+    /// sweep) out of the line: the line's result holds `model_notes`, the notes' 8-digit
+    /// FNV hash, and the notes go once into a sidecar file ([`Row::notes`]).
+    pub notes_by_ref: bool,
+}
+
+impl LineFormat {
+    /// Parses `--fields a,b.c` (empty names are refused).
+    pub fn parse_fields(text: &str) -> Result<Vec<String>, String> {
+        let fields: Vec<String> = text.split(',').map(|f| f.trim().to_string()).collect();
+        if fields.iter().any(|f| f.is_empty() || f.split('.').any(str::is_empty)) {
+            return Err(
+                "give comma-separated result fields as dotted paths, e.g. stiffness_z,at_allowable.force".into(),
+            );
+        }
+        Ok(fields)
+    }
+
+    /// The reference of model notes in a line (see [`Self::notes_by_ref`]).
+    pub fn notes_ref(notes: &Value) -> String {
+        let mut h = Fnv128::new();
+        canonical(notes, &mut h);
+        format!("{:08x}", (h.0 >> 96) as u32)
+    }
+
+    /// Applies the format to a design's result; returns the notes taken out.
+    fn apply(&self, result: &mut Value) -> Option<(String, Value)> {
+        let notes = match (self.notes_by_ref, result.as_object_mut()) {
+            (true, Some(m)) => m.remove("model").map(|notes| {
+                let r = Self::notes_ref(&notes);
+                m.insert("model_notes".into(), Value::String(r.clone()));
+                (r, notes)
+            }),
+            _ => None,
+        };
+        if let Some(fields) = &self.fields {
+            let mut kept = Value::Object(Map::new());
+            for f in fields {
+                let path: Vec<&str> = f.split('.').collect();
+                if let Some(v) = pointer(result, &path) {
+                    insert_path(&mut kept, &path, v.clone());
+                }
+            }
+            *result = kept;
+        }
+        notes
+    }
+}
+
+/// The value at a dotted path (object keys, array indices).
+fn pointer<'a>(v: &'a Value, path: &[&str]) -> Option<&'a Value> {
+    path.iter().try_fold(v, |v, key| match v {
+        Value::Object(m) => m.get(*key),
+        Value::Array(a) => key.parse::<usize>().ok().and_then(|i| a.get(i)),
+        _ => None,
+    })
+}
+
+/// Sets `path` in `out` (objects created as needed; array indices become object keys).
+fn insert_path(out: &mut Value, path: &[&str], v: Value) {
+    let Some((last, head)) = path.split_last() else { return };
+    let mut cur = out;
+    for key in head {
+        let Value::Object(m) = cur else { return };
+        cur = m.entry(key.to_string()).or_insert_with(|| Value::Object(Map::new()));
+    }
+    if let Value::Object(m) = cur {
+        m.insert(last.to_string(), v);
+    }
 }
 
 /// What [`run_sweep`] did.
@@ -233,6 +313,17 @@ pub fn run_design(sweep: &Sweep, base_dir: Option<&Path>, index: usize) -> Row {
 
 /// [`run_design`] with the worker's solver cache.
 pub fn run_design_with(sweep: &Sweep, base_dir: Option<&Path>, index: usize, cache: &mut SolverCache) -> Row {
+    run_design_formatted(sweep, base_dir, index, cache, &LineFormat::default())
+}
+
+/// [`run_design_with`] writing the line in `format`.
+pub fn run_design_formatted(
+    sweep: &Sweep,
+    base_dir: Option<&Path>,
+    index: usize,
+    cache: &mut SolverCache,
+    format: &LineFormat,
+) -> Row {
     let outcome =
         panic::catch_unwind(AssertUnwindSafe(|| evaluate(sweep, base_dir, index, cache))).unwrap_or_else(|p| {
             // A panic may have left the cache half-updated: start the worker afresh.
@@ -246,8 +337,12 @@ pub fn run_design_with(sweep: &Sweep, base_dir: Option<&Path>, index: usize, cac
         m.insert("design_hash".into(), Value::String(h));
     }
     let failed = outcome.is_err();
+    let mut notes = None;
     match outcome {
-        Ok(result) => m.insert("result".into(), result),
+        Ok(mut result) => {
+            notes = format.apply(&mut result);
+            m.insert("result".into(), result)
+        }
         Err(msg) => m.insert("error".into(), Value::String(msg)),
     };
     let value = Value::Object(m);
@@ -256,6 +351,7 @@ pub fn run_design_with(sweep: &Sweep, base_dir: Option<&Path>, index: usize, cac
         failed,
         line: value.to_string(),
         value,
+        notes,
     }
 }
 
@@ -273,6 +369,21 @@ pub fn run_sweep<S>(
 where
     S: Fn(Row) -> io::Result<()> + Sync,
 {
+    run_sweep_formatted(sweep, base_dir, shard, skip, &LineFormat::default(), sink)
+}
+
+/// [`run_sweep`] writing the lines in `format`.
+pub fn run_sweep_formatted<S>(
+    sweep: &Sweep,
+    base_dir: Option<&Path>,
+    shard: Shard,
+    skip: &HashSet<usize>,
+    format: &LineFormat,
+    sink: S,
+) -> io::Result<Tally>
+where
+    S: Fn(Row) -> io::Result<()> + Sync,
+{
     let run = AtomicUsize::new(0);
     let failed = AtomicUsize::new(0);
     let stop = AtomicBool::new(false);
@@ -285,7 +396,7 @@ where
             if stop.load(Ordering::Relaxed) {
                 return;
             }
-            let row = run_design_with(sweep, base_dir, i, cache);
+            let row = run_design_formatted(sweep, base_dir, i, cache, format);
             let row_failed = row.failed;
             match sink(row) {
                 Ok(()) => {

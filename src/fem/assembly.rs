@@ -186,53 +186,57 @@ impl Pattern {
             chunks.push(c);
             rest = r;
         }
-        chunks
-            .into_par_iter()
-            .enumerate()
-            .try_for_each(|(ie, chunk)| -> Result<(), FemError> {
-                if ie >= ne {
-                    if kind == MatrixKind::Mass {
-                        let node = self.mass_nodes[ie - ne];
-                        let (rep, m) = map.node_on_independent(node, &point_mass(model, ie - ne));
-                        let eqs = map.nodes_eqs(&[rep]);
-                        let mut p = 0;
-                        for_each_pair(&eqs, 6, |a, b, _, _| {
-                            chunk[p] = m[(a, b)];
-                            p += 1;
-                        });
-                    }
-                    return Ok(());
-                }
-                if let Element::Shell4(_) = model.elements[ie] {
-                    let em = match kind {
-                        MatrixKind::Stiffness => model.shell_matrix(ie)?,
-                        MatrixKind::Mass => shell_mass_matrix(model, ie)?,
-                    };
-                    let (reps, k) = map.shell_on_independent(&em);
-                    let eqs = map.nodes_eqs(&reps);
+        let fill = |(ie, chunk): (usize, &mut [f64])| -> Result<(), FemError> {
+            if ie >= ne {
+                if kind == MatrixKind::Mass {
+                    let node = self.mass_nodes[ie - ne];
+                    let (rep, m) = map.node_on_independent(node, &point_mass(model, ie - ne));
+                    let eqs = map.nodes_eqs(&[rep]);
                     let mut p = 0;
-                    for_each_pair(&eqs, 24, |a, b, _, _| {
-                        chunk[p] = k[(a, b)];
+                    for_each_pair(&eqs, 6, |a, b, _, _| {
+                        chunk[p] = m[(a, b)];
                         p += 1;
                     });
-                    return Ok(());
                 }
+                return Ok(());
+            }
+            if let Element::Shell4(_) = model.elements[ie] {
                 let em = match kind {
-                    MatrixKind::Stiffness => model.element_matrix(ie)?,
-                    MatrixKind::Mass => match element_mass(model, ie)? {
-                        Some(m) => m,
-                        None => return Ok(()),
-                    },
+                    MatrixKind::Stiffness => model.shell_matrix(ie)?,
+                    MatrixKind::Mass => shell_mass_matrix(model, ie)?,
                 };
-                let (reps, k) = map.element_on_independent(&em);
-                let eqs = map.element_eqs(reps, em.n_nodes);
+                let (reps, k) = map.shell_on_independent(&em);
+                let eqs = map.nodes_eqs(&reps);
                 let mut p = 0;
-                for_each_pair(&eqs, 6 * em.n_nodes, |a, b, _, _| {
+                for_each_pair(&eqs, 24, |a, b, _, _| {
                     chunk[p] = k[(a, b)];
                     p += 1;
                 });
-                Ok(())
-            })?;
+                return Ok(());
+            }
+            let em = match kind {
+                MatrixKind::Stiffness => model.element_matrix(ie)?,
+                MatrixKind::Mass => match element_mass(model, ie)? {
+                    Some(m) => m,
+                    None => return Ok(()),
+                },
+            };
+            let (reps, k) = map.element_on_independent(&em);
+            let eqs = map.element_eqs(reps, em.n_nodes);
+            let mut p = 0;
+            for_each_pair(&eqs, 6 * em.n_nodes, |a, b, _, _| {
+                chunk[p] = k[(a, b)];
+                p += 1;
+            });
+            Ok(())
+        };
+        // Small models stay on the calling thread (handing a few elements to the pool costs more
+        // than computing them).
+        if ne + nm < super::recovery::PARALLEL_MIN {
+            chunks.into_iter().enumerate().try_for_each(fill)?;
+        } else {
+            chunks.into_par_iter().enumerate().try_for_each(fill)?;
+        }
         Ok(vals)
     }
 

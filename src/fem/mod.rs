@@ -14,6 +14,7 @@ pub mod analysis;
 pub mod assembly;
 pub mod buckling;
 pub mod cache;
+pub mod chain;
 pub mod constraints;
 pub mod corot;
 pub mod diagnose;

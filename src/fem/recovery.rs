@@ -10,6 +10,9 @@ use super::shell::{shell_stress, Vec24};
 use nalgebra::{SVector, Vector3};
 use rayon::prelude::*;
 
+/// Element count below which assembly and recovery run on the calling thread.
+pub const PARALLEL_MIN: usize = 64;
+
 /// Von Mises stress at one stress point for section forces s = [N, Vy, Vz, T, My, Mz]:
 /// σ = N/A + My·z/Iy − Mz·y/Iz, τxy = T·t_xy + Vy·vy_xy, τxz = T·t_xz + Vz·vz_xz,
 /// σ_vM = √(σ² + 3(τxy² + τxz²)), MPa.
@@ -152,15 +155,29 @@ pub fn spring_result(k: &[f64; 6], delta: &SVector<f64, 6>, n_nodes: usize) -> E
 /// local axes (12 values, node 1 then node 2) and its strain energy (N·mm). Shared by the linear
 /// recovery and the co-rotational solver (which passes the forces of the deformed local frame).
 pub fn from_local_end_forces(e: &Element, f: &[f64], strain_energy: f64) -> ElementResult {
+    let props = match e {
+        Element::Beam(b) => Some(b.section.properties(b.material.nu)),
+        _ => None,
+    };
+    from_local_end_forces_with(e, f, strain_energy, props.as_ref())
+}
+
+/// [`from_local_end_forces`] with a beam's section properties `props` given (computed once for
+/// many elements or load cases).
+pub fn from_local_end_forces_with(
+    e: &Element,
+    f: &[f64],
+    strain_energy: f64,
+    props: Option<&SectionProps>,
+) -> ElementResult {
     let f1: [f64; 6] = std::array::from_fn(|i| f[i]);
     let f2: [f64; 6] = std::array::from_fn(|i| f[6 + i]);
     let s1 = f1.map(|v| -v);
-    let von_mises = match e {
-        Element::Beam(b) => {
-            let p = b.section.properties(b.material.nu);
+    let von_mises = match (e, props) {
+        (Element::Beam(b), Some(p)) => {
             match (
-                section_von_mises(&b.section, &p, &s1),
-                section_von_mises(&b.section, &p, &f2),
+                section_von_mises(&b.section, p, &s1),
+                section_von_mises(&b.section, p, &f2),
             ) {
                 (Some(a), Some(c)) => Some([a, c]),
                 _ => None,
@@ -238,10 +255,17 @@ pub fn case_result(model: &Model, map: &DofMap, name: &str, u: &[f64], f: &[f64]
         statics.loads,
         statics.reactions
     );
-    let elements: Vec<ElementResult> = (0..model.elements.len())
-        .into_par_iter()
-        .map(|ie| element_result(model, ie, u))
-        .collect::<Result<_, _>>()?;
+    let ne = model.elements.len();
+    let elements: Vec<ElementResult> = if ne < PARALLEL_MIN {
+        (0..ne)
+            .map(|ie| element_result(model, ie, u))
+            .collect::<Result<_, _>>()?
+    } else {
+        (0..ne)
+            .into_par_iter()
+            .map(|ie| element_result(model, ie, u))
+            .collect::<Result<_, _>>()?
+    };
     let displacements = (0..model.nodes.len())
         .map(|n| std::array::from_fn(|i| u[6 * n + i]))
         .collect();

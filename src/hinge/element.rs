@@ -65,6 +65,11 @@ impl HingeRegion {
     pub fn peak_stress(&self, sf: &[[f64; 6]; 2]) -> f64 {
         hinge_peak_stress(&self.profile, self.nu, self.kt, sf, self.is_neck())
     }
+
+    /// The region's [`PeakStressTable`]: [`Self::peak_stress`] for many load cases.
+    pub fn peak_stress_table(&self) -> PeakStressTable {
+        PeakStressTable::new(&self.profile, self.nu, self.kt, self.is_neck())
+    }
 }
 
 /// The flexibility and stress model of a validated profile as it stands (its own blank).
@@ -147,29 +152,70 @@ pub fn flex_chain(profile: &Profile, material: &Material, n: usize) -> (Vec<f64>
 /// sections, conservative for thick ones); σ_vm = √(σ² + 3τ²) combining both peaks
 /// (conservative). `neck`: circular waist (bending about y and z combined).
 pub fn hinge_peak_stress(profile: &Profile, nu: f64, kt: f64, sf: &[[f64; 6]; 2], neck: bool) -> f64 {
-    let half = profile.half_length();
-    const N: usize = 41;
-    let mut peak: f64 = 0.0;
-    for k in 0..N {
-        let s = k as f64 / (N - 1) as f64;
-        let x = -half + 2.0 * half * s;
-        let f: [f64; 6] = std::array::from_fn(|j| sf[0][j] * (1.0 - s) + sf[1][j] * s);
-        let sec = profile.section(x, nu);
-        let (sigma, tau) = if neck {
-            let r = profile.effective_half_size(x);
-            let c = r.min(0.5 * profile.h);
-            let m = (f[4] * f[4] + f[5] * f[5]).sqrt();
-            (f[0].abs() / sec.area + kt * m * c / sec.i_bend, f[3].abs() * c / sec.j)
-        } else {
-            let t = profile.effective_thickness(x);
-            let w = profile.w;
-            let sig =
-                f[0].abs() / sec.area + kt * f[4].abs() * 0.5 * t / sec.i_bend + f[5].abs() * 0.5 * w / sec.i_bend_off;
-            (sig, f[3].abs() * t.min(w) / sec.j)
-        };
-        peak = peak.max((sigma * sigma + 3.0 * tau * tau).sqrt());
+    PeakStressTable::new(profile, nu, kt, neck).peak(sf)
+}
+
+/// Stations along a hinge at which [`hinge_peak_stress`] evaluates the stress.
+const PEAK_STATIONS: usize = 41;
+
+/// The section quantities [`hinge_peak_stress`] reads at its stations, evaluated once per
+/// hinge so that the peak stress of many load cases costs a few flops each (same expressions,
+/// same result to the last bit).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PeakStressTable {
+    kt: f64,
+    /// Flat notch: the constant width w; `None` for a turned neck.
+    width: Option<f64>,
+    /// Per station: area, I_bend, I_bend_off, J, and the fibre distance (neck: c; flat: t).
+    stations: [[f64; 5]; PEAK_STATIONS],
+}
+
+impl PeakStressTable {
+    /// The table of `profile` for Poisson's ratio `nu`, notch factor `kt`; `neck`: circular waist.
+    pub fn new(profile: &Profile, nu: f64, kt: f64, neck: bool) -> PeakStressTable {
+        let half = profile.half_length();
+        let stations = std::array::from_fn(|k| {
+            let s = k as f64 / (PEAK_STATIONS - 1) as f64;
+            let x = -half + 2.0 * half * s;
+            let sec = profile.section(x, nu);
+            let len = if neck {
+                profile.effective_half_size(x).min(0.5 * profile.h)
+            } else {
+                profile.effective_thickness(x)
+            };
+            [sec.area, sec.i_bend, sec.i_bend_off, sec.j, len]
+        });
+        PeakStressTable {
+            kt,
+            width: (!neck).then_some(profile.w),
+            stations,
+        }
     }
-    peak
+
+    /// Peak von Mises stress from the end section forces (see [`hinge_peak_stress`]), MPa.
+    pub fn peak(&self, sf: &[[f64; 6]; 2]) -> f64 {
+        let kt = self.kt;
+        let mut peak: f64 = 0.0;
+        for (k, &[area, i_bend, i_bend_off, j, len]) in self.stations.iter().enumerate() {
+            let s = k as f64 / (PEAK_STATIONS - 1) as f64;
+            let f: [f64; 6] = std::array::from_fn(|j| sf[0][j] * (1.0 - s) + sf[1][j] * s);
+            let (sigma, tau) = match self.width {
+                None => {
+                    let c = len;
+                    let m = (f[4] * f[4] + f[5] * f[5]).sqrt();
+                    (f[0].abs() / area + kt * m * c / i_bend, f[3].abs() * c / j)
+                }
+                Some(w) => {
+                    let t = len;
+                    let sig =
+                        f[0].abs() / area + kt * f[4].abs() * 0.5 * t / i_bend + f[5].abs() * 0.5 * w / i_bend_off;
+                    (sig, f[3].abs() * t.min(w) / j)
+                }
+            };
+            peak = peak.max((sigma * sigma + 3.0 * tau * tau).sqrt());
+        }
+        peak
+    }
 }
 
 /// Geometric volume of a hinge profile (notch and blanks), mm³: Simpson's rule on 2000

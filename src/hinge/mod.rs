@@ -52,7 +52,9 @@ use serde::Serialize;
 
 use crate::material::Material;
 pub use chain::split_flex;
-pub use element::{flex_chain, flex_region, hinge_element, hinge_peak_stress, spreading_region, HingeRegion};
+pub use element::{
+    flex_chain, flex_region, hinge_element, hinge_peak_stress, spreading_region, HingeRegion, PeakStressTable,
+};
 pub use error::HingeError;
 use integrate::{flex_integrals, flex_integrals_with_notch, Moduli, Quadrature};
 pub use profile::{Contour, Profile};

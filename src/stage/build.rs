@@ -221,6 +221,7 @@ impl ValidStage {
             legs,
             revolute: self.revolute.clone(),
             spherical: self.spherical.clone(),
+            stress_tables: [self.revolute.peak_stress_table(), self.spherical.peak_stress_table()],
         }
     }
 }

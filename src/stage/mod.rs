@@ -199,6 +199,8 @@ pub struct StageModel {
     pub revolute: HingeRegion,
     /// The spherical hinge region.
     pub spherical: HingeRegion,
+    /// Peak-stress tables of the (revolute, spherical) regions, for reading results.
+    stress_tables: [hinge::PeakStressTable; 2],
 }
 
 /// How one load case drives the actuators.

@@ -27,11 +27,11 @@ impl StageModel {
             };
             if let Some(el) = leg.rev_element {
                 let sf = &fe.elements[el].section_forces;
-                rev[i] = self.revolute.peak_stress(sf);
+                rev[i] = self.stress_tables[0].peak(sf);
             }
             if let Some(el) = leg.sph_element {
                 let sf = &fe.elements[el].section_forces;
-                sph[i] = self.spherical.peak_stress(sf);
+                sph[i] = self.stress_tables[1].peak(sf);
             }
         }
         let up = fe.displacements[self.platform];

@@ -66,10 +66,33 @@ impl StageModel {
         cases: &[(String, Drive)],
         compliance: bool,
     ) -> Result<StageAnalysis, StageError> {
-        let model = &self.model;
-        let mut out: Vec<Option<StageCaseResult>> = vec![None; cases.len()];
+        // The legs are serial chains: solved condensed (exact, fem::chain), with the model as
+        // meshed only to report a failure in its own node numbers.
         let lcs: Vec<fem::LoadCase> = cases.iter().map(|(n, d)| self.load_case(n, *d)).collect();
+        let refs: Vec<&fem::LoadCase> = lcs.iter().collect();
+        let condensed = fem::chain::Condensed::new(&self.model, &refs, &[self.platform]);
+        match condensed.map(|c| self.analyse_on(cache, Some(&c), cases, &lcs, compliance)) {
+            Ok(Ok(a)) => Ok(a),
+            _ => self.analyse_on(cache, None, cases, &lcs, compliance),
+        }
+    }
+
+    /// [`Self::analyse_with`] on the condensed model `c`, or without one on the model as meshed.
+    fn analyse_on(
+        &self,
+        cache: &mut fem::SolverCache,
+        c: Option<&fem::chain::Condensed>,
+        cases: &[(String, Drive)],
+        lcs: &[fem::LoadCase],
+        compliance: bool,
+    ) -> Result<StageAnalysis, StageError> {
+        let model = c.map_or(&self.model, |c| &c.model);
+        let mut out: Vec<Option<StageCaseResult>> = vec![None; cases.len()];
         let mut platform_compliance = None;
+        let kept = |n: usize| {
+            c.map_or(Some(n), |c| c.node(n))
+                .ok_or_else(|| FemError::BadInput(format!("stage node {n} condensed away")))
+        };
         for strokes in [false, true] {
             let idx: Vec<usize> = (0..cases.len())
                 .filter(|&i| matches!(cases[i].1, Drive::Strokes(_)) == strokes)
@@ -78,14 +101,31 @@ impl StageModel {
                 continue;
             }
             let prescribed = if strokes { self.stroke_dofs() } else { Vec::new() };
+            let prescribed = prescribed
+                .iter()
+                .map(|p| {
+                    Ok(fem::NodeDof {
+                        node: kept(p.node)?,
+                        dof: p.dof,
+                    })
+                })
+                .collect::<Result<Vec<_>, FemError>>()?;
             let sys = cache.system(model, &prescribed, fem::solve::Parallelism::Sequential)?;
-            let refs: Vec<&fem::LoadCase> = idx.iter().map(|&i| &lcs[i]).collect();
+            let reduced: Vec<fem::LoadCase> = match c {
+                Some(c) => idx.iter().map(|&i| c.case(&lcs[i])).collect(),
+                None => idx.iter().map(|&i| lcs[i].clone()).collect(),
+            };
+            let refs: Vec<&fem::LoadCase> = reduced.iter().collect();
             let res = sys.solve_cases(model, &refs)?;
             for (&i, r) in idx.iter().zip(res) {
+                let r = match c {
+                    Some(c) => c.expand(&self.model, r)?,
+                    None => r,
+                };
                 out[i] = Some(self.read(r, cases[i].1));
             }
             if strokes && compliance {
-                platform_compliance = Some(sys.node_compliance(model, self.platform)?);
+                platform_compliance = Some(sys.node_compliance(model, kept(self.platform)?)?);
             }
         }
         Ok(StageAnalysis {

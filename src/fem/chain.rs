@@ -1,0 +1,463 @@
+//! Exact condensation of serial chains for linear analyses.
+//!
+//! A chain is a path of two-node beam or flexibility elements whose inner nodes join exactly two
+//! elements and carry nothing else: no load or prescribed displacement in any load case, no
+//! support, rigid link, tie, mass or node frame, and no request (`keep`). With its inner nodes
+//! unloaded, a chain is statically determinate between its end nodes a and b: a force f_b at b
+//! (global axes) reaches every element unchanged but for the rigid transfer to the element's
+//! far node q, f_q = R(x_b − x_q)ᵀ f_b, and the motion of b relative to a carried rigidly,
+//! δ = u_b − R(x_b − x_a)·u_a, is the sum of the elements' relative motions carried to b:
+//!
+//! ```text
+//! C_b = Σₑ R(x_b − x_q) C_q R(x_b − x_q)ᵀ,   δ = C_b f_b,
+//! ```
+//!
+//! with C_q the element's cantilever tip compliance at its far node in global axes
+//! (beams: [`cantilever_compliance`]; flexibility elements: their compliance; an element
+//! pointing back towards a has C_q = R(x_s − x_t) C_t R(x_s − x_t)ᵀ, s and t its nodes 1 and
+//! 2). The chain is therefore exactly one [`FlexElement`] from a to b with compliance C_b: its
+//! 12×12 stiffness Bᵀ C_b⁻¹ B is the static condensation of the chain's stiffness onto the
+//! end nodes (J. S. Przemieniecki, Theory of Matrix Structural Analysis, 1968, §6.5 and §9.6,
+//! flexibility of a statically determinate structure and the condensed stiffness).
+//!
+//! Inner-node results are recovered from the end displacements: f_b = C_b⁻¹ δ, then walking
+//! from a, u_q = R(x_q − x_p)·u_p + C_q f_q for each element from p to q; the elements'
+//! results then come from their own recovery on the full displacement vector.
+
+use super::element::cantilever_compliance;
+use super::error::FemError;
+use super::model::{Element, FlexElement, LoadCase, Model};
+use super::recovery;
+use super::results::{CaseResult, ElementResult};
+use super::section::SectionProps;
+use super::transform::{rigid_arm, t6};
+use nalgebra::{Matrix6, Vector3, Vector6};
+
+/// One serial chain: its nodes from end a to end b and its elements in order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Chain {
+    /// Nodes a, inner…, b (original numbering).
+    pub nodes: Vec<usize>,
+    /// Elements from a to b (original numbering).
+    pub elements: Vec<usize>,
+    /// Per element, its compliance at its far node (towards b), global axes.
+    flex: Vec<Matrix6<f64>>,
+    /// Per element, a beam's section properties (for its stresses).
+    props: Vec<Option<SectionProps>>,
+    /// C_b: compliance of b relative to clamped a, global axes.
+    c_b: Matrix6<f64>,
+    /// C_b⁻¹.
+    k_b: Matrix6<f64>,
+}
+
+/// A model with its serial chains condensed, and the maps back to the original.
+#[derive(Debug, Clone)]
+pub struct Condensed {
+    /// The reduced model: kept nodes, the elements outside chains, one flexibility element per
+    /// chain (after them), supports, links, ties, masses and frames renumbered. No load cases.
+    pub model: Model,
+    /// The chains condensed (original numbering).
+    pub chains: Vec<Chain>,
+    /// Original node of each reduced node.
+    pub original_node: Vec<usize>,
+    /// Reduced node of each original node (`None` for inner chain nodes).
+    pub reduced_node: Vec<Option<usize>>,
+    /// Original element of each reduced element (`None` for the chains' elements).
+    original_element: Vec<Option<usize>>,
+}
+
+/// Nodes that must stay: anything attached to them besides two chain elements.
+fn pinned(model: &Model, cases: &[&LoadCase], keep: &[usize]) -> Vec<bool> {
+    let mut pin = vec![false; model.nodes.len()];
+    let mut set = |n: usize| {
+        if let Some(p) = pin.get_mut(n) {
+            *p = true;
+        }
+    };
+    keep.iter().for_each(|&n| set(n));
+    model.supports.iter().for_each(|s| set(s.node));
+    model.masses.iter().for_each(|m| set(m.node));
+    model.frames.keys().for_each(|&n| set(n));
+    for l in &model.rigid_links {
+        set(l.master);
+        l.slaves.iter().for_each(|&s| set(s));
+    }
+    for t in &model.ties {
+        set(t.a);
+        set(t.b);
+    }
+    for c in cases.iter().copied().chain(model.load_cases.iter()) {
+        c.forces
+            .iter()
+            .filter(|f| f.f.iter().any(|&v| v != 0.0))
+            .for_each(|f| set(f.node));
+        c.displacements.iter().for_each(|p| set(p.node));
+    }
+    pin
+}
+
+/// Serial chains of `model` (see the module docs); `cases` are the load cases to be solved and
+/// `keep` nodes whose results are wanted directly.
+pub fn find_chains(model: &Model, cases: &[&LoadCase], keep: &[usize]) -> Vec<(Vec<usize>, Vec<usize>)> {
+    let nn = model.nodes.len();
+    let pin = pinned(model, cases, keep);
+    // Incident elements per node (at most 3 recorded: more means "not inner").
+    let mut inc: Vec<[usize; 3]> = vec![[usize::MAX; 3]; nn];
+    let mut deg = vec![0usize; nn];
+    for (ie, e) in model.elements.iter().enumerate() {
+        let mut nodes = e.nodes();
+        nodes.sort_unstable();
+        nodes.dedup();
+        for n in nodes {
+            if n < nn {
+                if deg[n] < 3 {
+                    inc[n][deg[n]] = ie;
+                }
+                deg[n] += 1;
+            }
+        }
+    }
+    let serial = |ie: usize| matches!(model.elements[ie], Element::Beam(_) | Element::Flex(_));
+    let inner = |n: usize| deg[n] == 2 && !pin[n] && serial(inc[n][0]) && serial(inc[n][1]);
+    let other = |ie: usize, n: usize| {
+        let [p, q] = model.elements[ie].end_nodes();
+        if p == n {
+            q
+        } else {
+            p
+        }
+    };
+    let mut seen = vec![false; nn];
+    let mut chains = Vec::new();
+    for start in 0..nn {
+        if !inner(start) || seen[start] {
+            continue;
+        }
+        // Walk both ways from an inner node to the chain's ends.
+        let walk = |first: usize, seen: &mut Vec<bool>| {
+            let (mut nodes, mut elems) = (Vec::new(), vec![first]);
+            let (mut n, mut e) = (other(first, start), first);
+            while inner(n) && n != start {
+                seen[n] = true;
+                nodes.push(n);
+                e = if inc[n][0] == e { inc[n][1] } else { inc[n][0] };
+                elems.push(e);
+                n = other(e, n);
+            }
+            nodes.push(n);
+            (nodes, elems)
+        };
+        seen[start] = true;
+        let (left, le) = walk(inc[start][0], &mut seen);
+        let (right, re) = walk(inc[start][1], &mut seen);
+        let (a, b) = (*left.last().expect("end"), *right.last().expect("end"));
+        if a == b || left.contains(&start) {
+            continue; // a closed ring: nothing to condense onto two ends
+        }
+        let nodes: Vec<usize> = left.into_iter().rev().chain([start]).chain(right).collect();
+        let elems: Vec<usize> = le.into_iter().rev().chain(re).collect();
+        chains.push((nodes, elems));
+    }
+    chains
+}
+
+/// A beam's section properties, E and G ([`super::Beam::props`]).
+type BeamProps = (SectionProps, f64, f64);
+
+/// Element `ie`'s cantilever tip compliance at node 2 relative to node 1, global axes, and a
+/// beam's section properties, E and G (`prev`: those of the previous beam, reused when the
+/// section and material are the same).
+fn element_compliance(
+    model: &Model,
+    ie: usize,
+    prev: Option<(&Element, &BeamProps)>,
+) -> Result<(Matrix6<f64>, Option<BeamProps>), FemError> {
+    let (lam, l) = model.element_frame(ie)?;
+    let (local, props) = match &model.elements[ie] {
+        Element::Beam(b) => {
+            let props = match prev {
+                Some((Element::Beam(q), p)) if q.section == b.section && q.material == b.material => *p,
+                _ => b.props(ie)?,
+            };
+            let (p, e, g) = &props;
+            (cantilever_compliance(*e, *g, p, l, b.shear), Some(props))
+        }
+        Element::Flex(f) => {
+            let c = Matrix6::from_fn(|i, j| f.compliance[i][j]);
+            // The element's own check (flex_tip_stiffness): finite, symmetric, positive definite.
+            let scale = c.amax();
+            if !(scale > 0.0
+                && scale.is_finite()
+                && (c - c.transpose()).amax() <= 1e-9 * scale
+                && c.cholesky().is_some())
+            {
+                f.tip_stiffness(ie)?;
+            }
+            (c, None)
+        }
+        _ => return Err(FemError::BadInput(format!("element {ie} is not a beam"))),
+    };
+    let t = t6(&lam);
+    Ok((t.transpose() * local * t, props))
+}
+
+fn x(model: &Model, n: usize) -> Vector3<f64> {
+    Vector3::from(model.nodes[n])
+}
+
+impl Chain {
+    fn new(model: &Model, nodes: Vec<usize>, elements: Vec<usize>) -> Result<Chain, FemError> {
+        let b = x(model, *nodes.last().expect("chain end"));
+        let mut c_b = Matrix6::zeros();
+        let mut flex = Vec::with_capacity(elements.len());
+        let mut props: Vec<Option<BeamProps>> = Vec::with_capacity(elements.len());
+        for (k, &ie) in elements.iter().enumerate() {
+            let prev = k
+                .checked_sub(1)
+                .and_then(|j| props[j].as_ref().map(|p| (&model.elements[elements[j]], p)));
+            let (c_t, p) = element_compliance(model, ie, prev)?;
+            props.push(p);
+            let [s, t] = model.elements[ie].end_nodes();
+            let q = nodes[k + 1];
+            let c_q = if q == t {
+                c_t
+            } else {
+                let r = rigid_arm(&(x(model, s) - x(model, t)));
+                r * c_t * r.transpose()
+            };
+            let r = rigid_arm(&(b - x(model, q)));
+            c_b += r * c_q * r.transpose();
+            flex.push(c_q);
+        }
+        let c_b = (c_b + c_b.transpose()) * 0.5;
+        let k_b = c_b
+            .cholesky()
+            .map(|ch| ch.inverse())
+            .ok_or_else(|| FemError::BadElement {
+                element: elements[0],
+                reason: "the serial chain starting here has no positive definite compliance".into(),
+            })?;
+        Ok(Chain {
+            nodes,
+            elements,
+            flex,
+            props: props.into_iter().map(|p| p.map(|p| p.0)).collect(),
+            c_b,
+            k_b,
+        })
+    }
+
+    /// Writes the displacements of the inner nodes into `u` (6 per original node) from those of
+    /// the two ends; returns the chain's end force at b, f_b = C_b⁻¹ δ (global axes).
+    pub fn recover(&self, model: &Model, u: &mut [f64]) -> Vector6<f64> {
+        let get = |u: &[f64], n: usize| Vector6::from_column_slice(&u[6 * n..6 * n + 6]);
+        let (a, b) = (self.nodes[0], *self.nodes.last().expect("chain end"));
+        let xb = x(model, b);
+        let delta = get(u, b) - rigid_arm(&(xb - x(model, a))) * get(u, a);
+        let f_b = self.k_b * delta;
+        for k in 1..self.nodes.len() - 1 {
+            let (p, q) = (self.nodes[k - 1], self.nodes[k]);
+            let xq = x(model, q);
+            let f_q = rigid_arm(&(xb - xq)).transpose() * f_b;
+            let uq = rigid_arm(&(xq - x(model, p))) * get(u, p) + self.flex[k - 1] * f_q;
+            u[6 * q..6 * q + 6].copy_from_slice(uq.as_slice());
+        }
+        f_b
+    }
+
+    /// The results of the chain's elements (in chain order) for the end force `f_b` of
+    /// [`Chain::recover`]: element from p to q carries f_q = R(x_b − x_q)ᵀ f_b at q and
+    /// f_p = −R(x_q − x_p)ᵀ f_q at p, strain energy ½ f_qᵀ C_q f_q.
+    pub fn element_results(&self, model: &Model, f_b: &Vector6<f64>) -> Result<Vec<ElementResult>, FemError> {
+        let xb = x(model, *self.nodes.last().expect("chain end"));
+        let mut out = Vec::with_capacity(self.elements.len());
+        for (k, &ie) in self.elements.iter().enumerate() {
+            let (p, q) = (self.nodes[k], self.nodes[k + 1]);
+            let xq = x(model, q);
+            let f_q = rigid_arm(&(xb - xq)).transpose() * f_b;
+            let f_p = -(rigid_arm(&(xq - x(model, p))).transpose() * f_q);
+            let (lam, _) = model.element_frame(ie)?;
+            let t = t6(&lam);
+            let (l_p, l_q) = (t * f_p, t * f_q);
+            let (f1, f2) = if model.elements[ie].end_nodes()[1] == q {
+                (l_p, l_q)
+            } else {
+                (l_q, l_p)
+            };
+            let f: [f64; 12] = std::array::from_fn(|i| if i < 6 { f1[i] } else { f2[i - 6] });
+            let energy = 0.5 * f_q.dot(&(self.flex[k] * f_q));
+            out.push(recovery::from_local_end_forces_with(
+                &model.elements[ie],
+                &f,
+                energy,
+                self.props[k].as_ref(),
+            ));
+        }
+        Ok(out)
+    }
+}
+
+/// A global axis far from the direction `d`, as the condensed element's `up`.
+fn up_for(d: Vector3<f64>) -> [f64; 3] {
+    let i = (0..3).min_by(|&i, &j| d[i].abs().total_cmp(&d[j].abs())).unwrap_or(2);
+    let mut up = [0.0; 3];
+    up[i] = 1.0;
+    up
+}
+
+impl Condensed {
+    /// Condenses every serial chain of `model` for the load cases `cases`, keeping the nodes
+    /// `keep` (see the module docs). A model without chains comes back unchanged.
+    pub fn new(model: &Model, cases: &[&LoadCase], keep: &[usize]) -> Result<Condensed, FemError> {
+        let chains = find_chains(model, cases, keep)
+            .into_iter()
+            .map(|(n, e)| Chain::new(model, n, e))
+            .collect::<Result<Vec<_>, _>>()?;
+        let mut reduced_node = vec![Some(0); model.nodes.len()];
+        let mut in_chain = vec![false; model.elements.len()];
+        for c in &chains {
+            c.nodes[1..c.nodes.len() - 1]
+                .iter()
+                .for_each(|&n| reduced_node[n] = None);
+            c.elements.iter().for_each(|&e| in_chain[e] = true);
+        }
+        let mut out = Model::new();
+        let mut original_node = Vec::new();
+        for (n, r) in reduced_node.iter_mut().enumerate() {
+            if r.is_some() {
+                *r = Some(out.add_node(model.nodes[n]));
+                original_node.push(n);
+            }
+        }
+        let map = |n: usize| reduced_node[n].expect("kept node");
+        let mut original_element = Vec::new();
+        for (ie, e) in model.elements.iter().enumerate() {
+            if !in_chain[ie] {
+                out.add_element(renumber_element(e, &map));
+                original_element.push(Some(ie));
+            }
+        }
+        for c in &chains {
+            let (a, b) = (c.nodes[0], *c.nodes.last().expect("chain end"));
+            let up = up_for(x(model, b) - x(model, a));
+            let (lam, _) = super::transform::beam_frame(model.nodes[a], model.nodes[b], up).ok_or_else(|| {
+                FemError::BadElement {
+                    element: c.elements[0],
+                    reason: "the serial chain starting here has coincident end nodes".into(),
+                }
+            })?;
+            let t = t6(&lam);
+            let local = t * c.c_b * t.transpose();
+            let local = (local + local.transpose()) * 0.5;
+            out.add_element(Element::Flex(FlexElement {
+                nodes: [map(a), map(b)],
+                compliance: std::array::from_fn(|i| std::array::from_fn(|j| local[(i, j)])),
+                up,
+            }));
+        }
+        // Everything else keeps its data with its nodes renumbered.
+        out.supports = model.supports.clone();
+        out.supports.iter_mut().for_each(|s| s.node = map(s.node));
+        out.masses = model.masses.clone();
+        out.masses.iter_mut().for_each(|m| m.node = map(m.node));
+        out.rigid_links = model.rigid_links.clone();
+        for l in &mut out.rigid_links {
+            l.master = map(l.master);
+            l.slaves.iter_mut().for_each(|s| *s = map(*s));
+        }
+        out.ties = model.ties.clone();
+        out.ties.iter_mut().for_each(|t| (t.a, t.b) = (map(t.a), map(t.b)));
+        out.frames = model.frames.iter().map(|(&n, f)| (map(n), *f)).collect();
+        out.load_cases = model
+            .load_cases
+            .iter()
+            .map(|c| Self::map_case(&reduced_node, c))
+            .collect();
+        Ok(Condensed {
+            model: out,
+            chains,
+            original_node,
+            reduced_node,
+            original_element,
+        })
+    }
+
+    fn map_case(reduced_node: &[Option<usize>], c: &LoadCase) -> LoadCase {
+        let map = |n: usize| reduced_node.get(n).copied().flatten().unwrap_or(usize::MAX);
+        LoadCase {
+            name: c.name.clone(),
+            forces: c
+                .forces
+                .iter()
+                .filter(|f| f.f.iter().any(|&v| v != 0.0) || reduced_node.get(f.node).is_some_and(|r| r.is_some()))
+                .map(|f| super::NodalLoad {
+                    node: map(f.node),
+                    ..*f
+                })
+                .collect(),
+            displacements: c
+                .displacements
+                .iter()
+                .map(|p| super::Prescribed {
+                    node: map(p.node),
+                    ..*p
+                })
+                .collect(),
+        }
+    }
+
+    /// A load case of the original model in the reduced numbering (loads only on kept nodes:
+    /// the chains were found for these cases).
+    pub fn case(&self, c: &LoadCase) -> LoadCase {
+        Self::map_case(&self.reduced_node, c)
+    }
+
+    /// The reduced node of an original node (`None` for an inner chain node).
+    pub fn node(&self, n: usize) -> Option<usize> {
+        self.reduced_node.get(n).copied().flatten()
+    }
+
+    /// The original model's result from the reduced model's result `r`: inner-node
+    /// displacements recovered, chain elements' results from their own recovery, the rest
+    /// (reactions, statics, other elements) renumbered.
+    pub fn expand(&self, original: &Model, r: CaseResult) -> Result<CaseResult, FemError> {
+        let mut u = vec![0.0; original.n_dofs()];
+        for (red, &n) in self.original_node.iter().enumerate() {
+            u[6 * n..6 * n + 6].copy_from_slice(&r.displacements[red]);
+        }
+        let mut elements: Vec<Option<ElementResult>> = vec![None; original.elements.len()];
+        for c in &self.chains {
+            let f_b = c.recover(original, &mut u);
+            for (&ie, res) in c.elements.iter().zip(c.element_results(original, &f_b)?) {
+                elements[ie] = Some(res);
+            }
+        }
+        for (ie, res) in r.elements.into_iter().enumerate() {
+            if let Some(orig) = self.original_element.get(ie).copied().flatten() {
+                elements[orig] = Some(res);
+            }
+        }
+        let elements = elements
+            .into_iter()
+            .collect::<Option<Vec<_>>>()
+            .ok_or_else(|| FemError::BadInput("an element of the condensed model has no result".into()))?;
+        let reactions = r.reactions.iter().map(|&(n, f)| (self.original_node[n], f)).collect();
+        let displacements = u.chunks_exact(6).map(|c| std::array::from_fn(|i| c[i])).collect();
+        Ok(CaseResult::new(&r.name, displacements, reactions, elements, r.statics))
+    }
+}
+
+/// `e` with its nodes renumbered by `map`.
+fn renumber_element(e: &Element, map: &impl Fn(usize) -> usize) -> Element {
+    let mut e = e.clone();
+    match &mut e {
+        Element::Beam(b) => b.nodes = b.nodes.map(map),
+        Element::Flex(f) => f.nodes = f.nodes.map(map),
+        Element::Spring(s) => {
+            s.a = map(s.a);
+            s.b = s.b.map(map);
+        }
+        Element::Shell4(s) => s.nodes = s.nodes.map(map),
+    }
+    e
+}
