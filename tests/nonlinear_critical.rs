@@ -204,6 +204,19 @@ fn leaf_guide_bifurcation_located() {
     );
     assert!(!c.stable && cp.lost);
     assert!((pc / pcr - 1.0).abs() < 0.01, "{pc} vs {pcr}");
+    // And within 1 % of the linear buckling load of the same model (`"analysis": "buckling"`,
+    // reference load 1 N): issue 16's "bifurcation located by the path check within 1 % of the
+    // linear buckling load".
+    let (unit, _) = leaf_guide(1.0);
+    let linear = flexfem::fem::buckling::solve_buckling(&unit, 0, &flexfem::fem::buckling::BucklingOptions::new(1))
+        .unwrap_or_else(|e| panic!("{e}"))
+        .modes[0]
+        .load_factor;
+    println!(
+        "leaf guide: linear buckling {linear:.5} N, path check {pc:.5} N ({:+.3e})",
+        pc / linear - 1.0
+    );
+    assert!((pc / linear - 1.0).abs() < 0.01, "{pc} vs linear buckling {linear}");
     assert!(cp.bracket[1] - cp.bracket[0] <= 1e-4 * cp.load_factor + 1e-15);
     assert_eq!(cp.kind, CriticalKind::Bifurcation);
     // Sway: the bar translates along x (normalised to 1), hardly along z.
