@@ -83,8 +83,23 @@ pub struct StaticCase {
 /// Schema rules of a `static` (`need_loads`) or `modal` case that relate fields: the model is
 /// inline (at least one node; static: at least one load case) or comes from `mesh` (then no
 /// inline nodes, elements, supports or rigid links); a `.msh` mesh needs `gmsh` and `gmsh` needs
-/// a `.msh` mesh; `steps` only with `"nonlinear": true`.
+/// a `.msh` mesh; `steps` and `track` only with `"nonlinear": true`.
 pub fn model_rules(need_loads: bool) -> serde_json::Value {
+    let mut rules = mesh_rules(need_loads);
+    if let Some(a) = rules.as_array_mut() {
+        a.push(serde_json::json!({"if": steps_given(), "then": nonlinear_true()}));
+        a.push(serde_json::json!({
+            "if": {"required": ["track"], "properties": {"track": {"type": "object"}}},
+            "then": nonlinear_true()
+        }));
+    }
+    rules
+}
+
+/// The rules on how the model is given (a mesh file, a Gmsh file with its mapping, or inline
+/// nodes), without the nonlinear-path rules of `static` cases: for kinds whose `steps` means
+/// something else (time steps of `transient`).
+pub fn mesh_rules(need_loads: bool) -> serde_json::Value {
     let mut inline = serde_json::json!({"required": ["nodes"], "properties": {"nodes": {"minItems": 1}}});
     if need_loads {
         inline = serde_json::json!({"allOf": [inline, {"required": ["load_cases"], "properties": {"load_cases": {"minItems": 1}}}]});
@@ -100,14 +115,6 @@ pub fn model_rules(need_loads: bool) -> serde_json::Value {
             "if": {"required": ["mesh"], "properties": {"mesh": {"type": "string", "pattern": "\\.msh$"}}},
             "then": {"required": ["gmsh"], "properties": {"gmsh": {"type": "object"}}},
             "else": {"properties": {"gmsh": {"type": "null"}}}
-        },
-        {
-            "if": steps_given(),
-            "then": nonlinear_true()
-        },
-        {
-            "if": {"required": ["track"], "properties": {"track": {"type": "object"}}},
-            "then": nonlinear_true()
         }
     ])
 }

@@ -7,7 +7,7 @@ mod output;
 use super::kind::{Analysis, Ctx, UsedMaterial};
 use super::kind::named_materials;
 use super::{Report, RunError};
-use crate::case::fem_case::{model_rules, read_model, split, MODEL_FIELDS};
+use crate::case::fem_case::{mesh_rules, read_model, split, MODEL_FIELDS};
 use crate::case::mesh::{DofName, GmshMapping, MeshSpec};
 use crate::case::{from_value, CaseError};
 use crate::fem::transient::{Damping, History, PrescribedMotion, Scheme, TransientLoad, TransientOptions};
@@ -136,20 +136,10 @@ pub struct RecordSpec {
     pub dof: Option<DofName>,
 }
 
-/// The model rules of `static`/`modal` cases without the last one (`steps` only when
-/// nonlinear): here `steps` is the number of time steps.
-fn rules() -> Value {
-    let mut v = model_rules(false);
-    if let Some(a) = v.as_array_mut() {
-        a.pop();
-    }
-    v
-}
-
 /// `"analysis": "transient"`.
 #[derive(Debug, Clone, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
-#[schemars(extend("allOf" = rules()))]
+#[schemars(extend("allOf" = mesh_rules(false)))]
 pub struct TransientCase {
     /// Time step, s (> 0).
     pub dt: f64,
