@@ -23,6 +23,8 @@ pub struct Ctx<'a> {
     pub files: Files,
     /// Warnings found while running (before [`Analysis::case_warnings`]).
     pub warnings: Vec<String>,
+    /// Render the Markdown/CSV report (a sweep, which writes only the JSON, turns it off).
+    pub with_report: bool,
 }
 
 impl<'a> Ctx<'a> {
@@ -33,6 +35,7 @@ impl<'a> Ctx<'a> {
             with_files,
             files: Vec::new(),
             warnings: Vec::new(),
+            with_report: true,
         }
     }
 }
@@ -119,7 +122,11 @@ pub fn run_typed<A: Analysis>(case: &A::Case, ctx: &mut Ctx) -> Result<Typed<A::
     warnings.extend(A::case_warnings(case));
     warnings.extend(A::result_warnings(case, &result));
     Ok(Typed {
-        report: A::report(&result),
+        report: if ctx.with_report {
+            A::report(&result)
+        } else {
+            super::Report::default()
+        },
         warnings,
         files: std::mem::take(&mut ctx.files),
         result,

@@ -2,6 +2,7 @@
 
 pub mod resume;
 pub mod sweep;
+mod sweep_notes;
 mod targets;
 
 use crate::analysis::{self, RunError};

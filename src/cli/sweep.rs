@@ -54,30 +54,15 @@ pub struct SweepArgs {
     /// `stiffness_z,at_allowable.force,load_cases.0.platform`.
     #[arg(long, value_name = "a,b.c")]
     pub fields: Option<String>,
+    /// Keep every result field in each line. By default a stage sweep's lines leave out the
+    /// 6×6 platform compliance, the material echo and the per-hinge stresses (their maximum
+    /// stays): see `flexfem::design::sweep::omitted_fields`.
+    #[arg(long, conflicts_with = "fields")]
+    pub full: bool,
 }
 
-/// The sidecar of `--out FILE.jsonl` holding the model notes once: `FILE.jsonl.notes.json`,
-/// an object from each `model_notes` reference in the lines to the notes.
-pub fn notes_path(out: &Path) -> PathBuf {
-    crate::output::with_suffix(out, ".notes.json")
-}
-
-/// The notes already in the sidecar `path` (none if it does not exist); a file that is not a
-/// notes object is refused unless `force`.
-fn read_notes(path: &Path, force: bool) -> Result<serde_json::Map<String, Value>, Stop> {
-    match fs::read(path) {
-        Ok(bytes) => match serde_json::from_slice::<Value>(&bytes) {
-            Ok(Value::Object(m)) if m.values().all(Value::is_array) => Ok(m),
-            _ if force => Ok(serde_json::Map::new()),
-            _ => Err(Stop::Usage(format!(
-                "{} exists and is not a flexfem notes file; remove it or give --force",
-                path.display()
-            ))),
-        },
-        Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(serde_json::Map::new()),
-        Err(e) => Err(Stop::Io(io_context("read", path)(e))),
-    }
-}
+pub use super::sweep_notes::notes_path;
+use super::sweep_notes::NotesFile;
 
 /// Opens the partial file for appending; if it ends in a torn line, starts a new line so the
 /// next row is not glued to the fragment (the fragment stays unreadable and is ignored).
@@ -103,8 +88,8 @@ enum Stream {
 
 struct SinkState {
     stream: Stream,
-    /// With `--out`: the notes sidecar's path and contents (rewritten when a new reference appears).
-    notes: Option<(PathBuf, serde_json::Map<String, Value>)>,
+    /// With `--out`: the notes sidecar (a new reference is added in place).
+    notes: Option<NotesFile>,
     /// Rows kept for the CSV when they are not in a file (the values they were written from).
     kept: Option<Vec<(usize, Value)>>,
     buf: Vec<u8>,
@@ -203,6 +188,11 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         base_dir,
         keep_errors: args.keep_errors,
     };
+    // Model notes go once into the sidecar of a --out file; on stdout they stay in the lines.
+    let notes = match &targets.out {
+        Some(out) => Some(NotesFile::open(notes_path(out), args.force)?),
+        None => None,
+    };
     let (done, stream) = match partial {
         Some(partial) => {
             let done = Finished::read(sweep, accept, &sources)?;
@@ -219,14 +209,14 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         Some(Ok(f)) => Some(f),
         Some(Err(msg)) => return Err(Stop::Usage(format!("invalid --fields: {msg}"))),
     };
-    // Model notes go once into the sidecar of a --out file; on stdout they stay in the lines.
-    let notes = match &targets.out {
-        Some(out) => Some((notes_path(out), read_notes(&notes_path(out), args.force)?)),
-        None => None,
+    let omit = match (&fields, args.full, sweep.base.get("analysis").and_then(Value::as_str)) {
+        (None, false, Some(kind)) => crate::design::sweep::omitted_fields(kind),
+        _ => &[],
     };
     let format = LineFormat {
         fields,
         notes_by_ref: notes.is_some(),
+        omit: omit.iter().map(|p| p.to_string()).collect(),
     };
     let state = Mutex::new(SinkState {
         notes,
@@ -244,12 +234,8 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
             buf,
             notes,
         } = &mut *st;
-        if let (Some((path, map)), Some((r, n))) = (notes.as_mut(), &row.notes) {
-            if !map.contains_key(r) {
-                map.insert(r.clone(), n.clone());
-                let text = serde_json::to_string_pretty(map).map_err(io::Error::other)?;
-                write_atomic(path, text.as_bytes()).map_err(io_context("write", path))?;
-            }
+        if let (Some(file), Some((r, n))) = (notes.as_mut(), &row.notes) {
+            file.add(r, n)?;
         }
         buf.clear();
         buf.extend_from_slice(row.line.as_bytes());
