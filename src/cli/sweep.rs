@@ -276,13 +276,14 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
             // Oldest first, so the lines just written replace retried or stale ones.
             sources.retain(|p| *p != partial);
             sources.push(partial);
-            let all = Finished::read(
+            let all = Finished::read_trusting(
                 sweep,
                 Accept {
                     keep_errors: true,
                     ..accept
                 },
                 &sources,
+                &|i| shard.contains(i),
             )?;
             failed_total = all.failed.iter().filter(|&&i| shard.contains(i)).count();
             write_atomic(out, &all.to_jsonl()).map_err(io_context("write", out))?;
