@@ -1,6 +1,8 @@
-//! Command line: `run`, `check`, `schema`, `sweep`.
+//! Command line: `run`, `check`, `schema`, `sweep`, `merge`.
 
+pub mod merge;
 pub mod resume;
+pub mod shard_env;
 pub mod sweep;
 mod targets;
 
@@ -72,6 +74,18 @@ reruns stale ones, and retries error rows unless --keep-errors. While it runs, F
 stops a second sweep (e.g. another shard) from writing the same FILE at the same time: run \
 shards one after another (their lines accumulate in FILE) or give each its own --out.")]
     Sweep(sweep::SweepArgs),
+    /// Combine the shard files of a sweep (e.g. a Slurm job array's) into one, checked against
+    /// the case.
+    #[command(
+        after_help = "Exit status: 0 when every design of the case is there exactly once (identical \
+duplicate lines are dropped and counted) and none is an error row; 1 when designs are missing \
+(listed; nothing is written unless --allow-missing) or any design's line is an error row (the file \
+is written), or OUT could not be written; 2 for bad arguments, an unreadable shard file, or a line \
+that is not this sweep's as the case now is (another sweep, another base case or mesh file, an \
+older line format: stale), or two different lines for one design — the file and line are named \
+and nothing is written."
+    )]
+    Merge(merge::MergeArgs),
 }
 
 pub use crate::output::{EXIT_BAD_CASE, EXIT_FAILED};
@@ -174,6 +188,7 @@ fn emit(text: &str) -> ExitCode {
 pub fn run(cli: Cli) -> ExitCode {
     match cli.command {
         Command::Sweep(args) => sweep::run_cli(args),
+        Command::Merge(args) => merge::run_cli(args),
         Command::Schema => emit(&format!(
             "{}\n",
             serde_json::to_string_pretty(&analysis::schema()).unwrap_or_default()
