@@ -163,6 +163,28 @@ fn missing_designs_are_reported() {
     assert!(lines
         .windows(2)
         .all(|w| w[0]["index"].as_u64() < w[1]["index"].as_u64()));
+
+    // An unfinished shard's .partial file (lines in completion order, not by index) is refused
+    // naming the line, rather than held in memory: its shard is rerun instead.
+    let partial = d.join("shard_3.jsonl.partial");
+    let o = flexfem(
+        &d,
+        &["sweep", &case(), "--shard", "3/4", "--out", s(&d.join("s3.jsonl"))],
+        &[],
+    );
+    assert_eq!(code(&o), Some(0), "{}", stderr(&o));
+    let mut text: Vec<String> = read(&d.join("s3.jsonl")).lines().map(str::to_string).collect();
+    text.swap(0, 1);
+    std::fs::write(&partial, text.join("\n") + "\n").unwrap();
+    let out2 = d.join("merged2.jsonl");
+    let o = merge(&d, &out2, &[three[0], three[1], &partial, three[2]], &[]);
+    assert_eq!(code(&o), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(
+        err.contains("shard_3.jsonl.partial line 2 (index 2) follows index 6"),
+        "{err}"
+    );
+    assert!(!out2.exists());
     cleanup(&d);
 }
 

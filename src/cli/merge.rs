@@ -9,6 +9,12 @@
 //! two lines is a duplicate: identical lines (same text, or the same JSON values to 1e-12
 //! relative) are counted and one is kept; different lines are refused, naming both (exit 2).
 //!
+//! The shard files are read as they come, one line of each at a time (a k-way merge by index),
+//! so memory stays small for sweeps of any size: each file must be sorted by index, as every
+//! finished `flexfem sweep --out` file is. An unfinished shard's `.partial` file is not (its
+//! lines are in completion order): it is refused, naming the line — rerun that shard, which
+//! resumes from it, and merge the finished file.
+//!
 //! The merged file holds one line per design, sorted by index, exactly as one unsharded
 //! `flexfem sweep CASE --out OUT` writes it; the model notes the lines refer to go into
 //! `OUT.notes.json`, gathered from the shards' notes files. When designs are missing, they are
@@ -16,16 +22,20 @@
 //! that are there (still exit 1). A complete merge with error rows is written and exits 1,
 //! like the sweep itself. Exit 0 only for a complete, consistent merge without error rows.
 
+mod gather;
+
 use super::resume::same_value;
 use super::sweep::notes_path;
 use super::targets::{check_replaceable, io_context, Kind, Stop};
 use crate::case::sweep::Sweep;
-use crate::design::sweep::{design_hash, load, Shard};
+use crate::design::sweep::{design_hash, load};
 use crate::output::{write_atomic, EXIT_BAD_CASE, EXIT_FAILED};
-use serde_json::{Map, Value};
-use std::collections::BTreeMap;
-use std::fs;
-use std::io;
+use gather::{Missing, Notes};
+use serde_json::Value;
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
+use std::fs::{self, File};
+use std::io::{self, BufRead, BufReader, BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -61,160 +71,169 @@ impl std::fmt::Display for Origin {
     }
 }
 
-/// One kept line.
-struct Kept {
+/// One checked line of a shard file.
+struct Line {
+    index: usize,
     text: String,
     value: Value,
     origin: Origin,
 }
 
-/// The lines of the shard files, checked against the sweep.
-#[derive(Default)]
-struct Merged {
-    lines: BTreeMap<usize, Kept>,
-    /// Identical duplicate lines (not kept).
-    duplicates: usize,
-    /// Model notes from the shards' notes files, by reference.
-    notes: Map<String, Value>,
+/// Checks `raw` (line `origin` of a shard file) against `sweep`: index in range, the params
+/// of that design, and its design hash as the case now is.
+fn check_line(sweep: &Sweep, base_dir: Option<&Path>, raw: String, origin: Origin) -> Result<Line, String> {
+    let value: Value = serde_json::from_str(&raw).map_err(|e| {
+        format!("{origin} is not a sweep line ({e}); a torn line of a killed task? rerun that shard (flexfem sweep … --out FILE resumes it)")
+    })?;
+    let index = value
+        .get("index")
+        .and_then(Value::as_u64)
+        .ok_or_else(|| format!("{origin} has no \"index\"; it is not a flexfem sweep line"))? as usize;
+    let params = value.get("params").cloned().unwrap_or(Value::Null);
+    if index >= sweep.len() || !same_value(&params, &Value::Object(sweep.params(index))) {
+        return Err(format!(
+            "{origin} (index {index}, params {params}) is not a design of this sweep ({} designs): \
+             a line of another sweep case",
+            sweep.len()
+        ));
+    }
+    let want = design_hash(sweep, base_dir, index);
+    let got = value.get("design_hash").and_then(Value::as_str);
+    if got != want.as_deref() {
+        return Err(format!(
+            "{origin} (index {index}) has design_hash {} but this case's design {index} hashes to {}: \
+             the line was written from another base case or mesh file, or by an older flexfem \
+             (stale); rerun that shard",
+            got.unwrap_or("(none)"),
+            want.as_deref().unwrap_or("(none: the design cannot be built)")
+        ));
+    }
+    Ok(Line {
+        index,
+        text: raw,
+        value,
+        origin,
+    })
 }
 
-impl Merged {
-    /// Adds the lines of `text` (the content of `file`); the first line that does not belong
-    /// to `sweep` or conflicts with an earlier one is the error.
-    fn add(&mut self, sweep: &Sweep, base_dir: Option<&Path>, file: &Path, text: &str) -> Result<(), String> {
-        for (k, raw) in text.lines().enumerate() {
+/// A shard file read line by line, checked, in index order.
+struct Reader<'a> {
+    file: &'a Path,
+    lines: io::Lines<BufReader<File>>,
+    number: usize,
+    last: Option<usize>,
+}
+
+impl<'a> Reader<'a> {
+    fn open(file: &'a Path) -> Result<Self, String> {
+        let f = File::open(file).map_err(|e| format!("cannot read {}: {e}", file.display()))?;
+        Ok(Reader {
+            file,
+            lines: BufReader::new(f).lines(),
+            number: 0,
+            last: None,
+        })
+    }
+
+    /// The next non-blank line, checked; refuses a line whose index is below the previous one.
+    fn next(&mut self, sweep: &Sweep, base_dir: Option<&Path>) -> Result<Option<Line>, String> {
+        for raw in self.lines.by_ref() {
+            self.number += 1;
+            let origin = Origin {
+                file: self.file.to_path_buf(),
+                line: self.number,
+            };
+            let raw = raw.map_err(|e| format!("cannot read {origin}: {e}"))?;
             if raw.trim().is_empty() {
                 continue;
             }
-            let origin = Origin {
-                file: file.to_path_buf(),
-                line: k + 1,
-            };
-            let value: Value = serde_json::from_str(raw).map_err(|e| {
-                format!("{origin} is not a sweep line ({e}); a torn line of a killed task? rerun that shard (flexfem sweep … --out FILE resumes it)")
-            })?;
-            let index = value
-                .get("index")
-                .and_then(Value::as_u64)
-                .ok_or_else(|| format!("{origin} has no \"index\"; it is not a flexfem sweep line"))?
-                as usize;
-            let params = value.get("params").cloned().unwrap_or(Value::Null);
-            if index >= sweep.len() || !same_value(&params, &Value::Object(sweep.params(index))) {
+            let line = check_line(sweep, base_dir, raw, origin)?;
+            if let Some(last) = self.last.filter(|&l| l > line.index) {
                 return Err(format!(
-                    "{origin} (index {index}, params {params}) is not a design of this sweep ({} designs): \
-                     a line of another sweep case",
-                    sweep.len()
+                    "{} (index {}) follows index {last}: the file is not sorted by index, as a finished \
+                     sweep file is (an unfinished shard's .partial file?) — rerun that shard (it resumes) \
+                     and merge its finished file",
+                    line.origin, line.index
                 ));
             }
-            let want = design_hash(sweep, base_dir, index);
-            let got = value.get("design_hash").and_then(Value::as_str);
-            if got != want.as_deref() {
-                return Err(format!(
-                    "{origin} (index {index}) has design_hash {} but this case's design {index} hashes to {}: \
-                     the line was written from another base case or mesh file, or by an older flexfem \
-                     (stale); rerun that shard",
-                    got.unwrap_or("(none)"),
-                    want.as_deref().unwrap_or("(none: the design cannot be built)")
-                ));
-            }
-            match self.lines.get(&index) {
-                Some(first) if first.text == raw || same_value(&first.value, &value) => self.duplicates += 1,
-                Some(first) => {
-                    return Err(format!(
-                        "design {index} has two different lines: {} and {origin}; remove the wrong file \
-                         (or rerun its shard) and merge again",
-                        first.origin
-                    ))
-                }
-                None => {
-                    self.lines.insert(
-                        index,
-                        Kept {
-                            text: raw.to_string(),
-                            value,
-                            origin,
-                        },
-                    );
-                }
-            }
+            self.last = Some(line.index);
+            return Ok(Some(line));
         }
-        Ok(())
-    }
-
-    /// Adds the notes file of shard `file`, if there is one.
-    fn add_notes(&mut self, file: &Path) -> Result<(), String> {
-        let path = notes_path(file);
-        let bytes = match fs::read(&path) {
-            Ok(b) => b,
-            Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(()),
-            Err(e) => return Err(format!("cannot read {}: {e}", path.display())),
-        };
-        let Ok(Value::Object(map)) = serde_json::from_slice::<Value>(&bytes) else {
-            return Err(format!(
-                "{} is not a flexfem notes file (a JSON object)",
-                path.display()
-            ));
-        };
-        for (r, notes) in map {
-            match self.notes.get(&r) {
-                Some(old) if *old != notes => {
-                    return Err(format!(
-                        "{} holds other model notes under reference {r} than an earlier shard's notes file",
-                        path.display()
-                    ))
-                }
-                Some(_) => {}
-                None => {
-                    self.notes.insert(r, notes);
-                }
-            }
-        }
-        Ok(())
-    }
-
-    /// The notes the kept lines refer to, in order of first reference by index; a reference
-    /// no notes file holds is an error.
-    fn referenced_notes(&self) -> Result<Map<String, Value>, String> {
-        let mut out = Map::new();
-        for kept in self.lines.values() {
-            let Some(r) = kept.value.pointer("/result/model_notes").and_then(Value::as_str) else {
-                continue;
-            };
-            match self.notes.get(r) {
-                Some(n) => {
-                    out.entry(r.to_string()).or_insert_with(|| n.clone());
-                }
-                None => {
-                    return Err(format!(
-                        "{} refers to model notes {r}, which no shard's notes file holds (copy \
-                         SHARD.jsonl.notes.json beside each shard file)",
-                        kept.origin
-                    ))
-                }
-            }
-        }
-        Ok(out)
+        Ok(None)
     }
 }
 
-/// The missing indices, compactly: the first few, and the shard `K/N` they make up when they
-/// are exactly one whole shard (N ≤ 64) — a task that never ran or did not finish.
-fn describe_missing(missing: &[usize], len: usize) -> String {
-    let mut text: Vec<String> = missing.iter().take(12).map(usize::to_string).collect();
-    if missing.len() > 12 {
-        text.push("…".into());
+/// What the merge found.
+struct Tally {
+    lines: usize,
+    duplicates: usize,
+    errors: usize,
+    missing: Missing,
+}
+
+/// Merges the shard files into `sink` by index; every line checked (see the module notes).
+fn merge_into(
+    sweep: &Sweep,
+    base_dir: Option<&Path>,
+    files: &[PathBuf],
+    notes: &mut Notes,
+    sink: &mut impl Write,
+) -> Result<Tally, Stop> {
+    let usage = Stop::Usage;
+    let mut readers = files
+        .iter()
+        .map(|f| Reader::open(f))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(usage)?;
+    let mut heads: Vec<Option<Line>> = Vec::with_capacity(readers.len());
+    let mut heap = BinaryHeap::new();
+    for (k, r) in readers.iter_mut().enumerate() {
+        let head = r.next(sweep, base_dir).map_err(usage)?;
+        if let Some(l) = &head {
+            heap.push(Reverse((l.index, k)));
+        }
+        heads.push(head);
     }
-    let mut s = text.join(", ");
-    let whole = (2..=64.min(len)).find_map(|n| {
-        let shard = Shard::new(missing[0] % n + 1, n).ok()?;
-        (shard.count(len) == missing.len() && missing.iter().all(|&i| shard.contains(i))).then_some(shard)
-    });
-    if let Some(shard) = whole {
-        s += &format!(
-            " (all of shard {shard}: rerun it, e.g. flexfem sweep CASE --shard {shard} --out FILE, and merge again)"
-        );
+    let mut tally = Tally {
+        lines: 0,
+        duplicates: 0,
+        errors: 0,
+        missing: Missing::new(),
+    };
+    let mut prev: Option<Line> = None;
+    let mut expect = 0;
+    while let Some(Reverse((index, k))) = heap.pop() {
+        let Some(line) = heads[k].take() else { continue };
+        heads[k] = readers[k].next(sweep, base_dir).map_err(usage)?;
+        if let Some(l) = &heads[k] {
+            heap.push(Reverse((l.index, k)));
+        }
+        if let Some(p) = prev.as_ref().filter(|p| p.index == index) {
+            if p.text == line.text || same_value(&p.value, &line.value) {
+                tally.duplicates += 1;
+                continue;
+            }
+            return Err(usage(format!(
+                "design {index} has two different lines: {} and {}; remove the wrong file (or rerun \
+                 its shard) and merge again",
+                p.origin, line.origin
+            )));
+        }
+        for m in expect..index {
+            tally.missing.add(m, sweep.len());
+        }
+        expect = index + 1;
+        notes.use_in(&line.value, &line.origin).map_err(usage)?;
+        tally.lines += 1;
+        tally.errors += usize::from(line.value.get("error").is_some());
+        sink.write_all(line.text.as_bytes())?;
+        sink.write_all(b"\n")?;
+        prev = Some(line);
     }
-    s
+    for m in expect..sweep.len() {
+        tally.missing.add(m, sweep.len());
+    }
+    Ok(tally)
 }
 
 /// Runs `flexfem merge`; returns the exit code.
@@ -237,10 +256,10 @@ fn merge(args: &MergeArgs) -> Result<u8, Stop> {
     let base_dir = args.case.parent();
     let out = &args.out;
     let out_notes = notes_path(out);
-    for (label, p) in [("the case file", &args.case)]
+    let inputs = [("the case file", &args.case)]
         .into_iter()
-        .chain(args.shards.iter().map(|s| ("a shard file", s)))
-    {
+        .chain(args.shards.iter().map(|s| ("a shard file", s)));
+    for (label, p) in inputs {
         if crate::output::same_file(out, p) || crate::output::same_file(&out_notes, p) {
             return Err(Stop::Usage(format!(
                 "{} is {label}; merge writes a new file — choose another OUT",
@@ -251,58 +270,71 @@ fn merge(args: &MergeArgs) -> Result<u8, Stop> {
     check_replaceable("OUT", out, Kind::Jsonl, args.force)?;
     let _lock = crate::output::Lock::acquire(out).map_err(|e| io::Error::other(e.to_string()))?;
 
-    let mut merged = Merged::default();
+    let mut notes = Notes::default();
     for file in &args.shards {
-        let text = fs::read_to_string(file).map_err(|e| Stop::Usage(format!("cannot read {}: {e}", file.display())))?;
-        merged.add(&sweep, base_dir, file, &text).map_err(Stop::Usage)?;
-        merged.add_notes(file).map_err(Stop::Usage)?;
+        notes.add(file).map_err(Stop::Usage)?;
     }
-    let notes = merged.referenced_notes().map_err(Stop::Usage)?;
-    let missing: Vec<usize> = (0..sweep.len()).filter(|i| !merged.lines.contains_key(i)).collect();
-    let errors = merged.lines.values().filter(|k| k.value.get("error").is_some()).count();
+    // Into a temporary file beside OUT, renamed over it at the end: OUT is untouched unless
+    // the merge is written.
+    let (tmp_file, tmp) = crate::output::create_temp(out).map_err(io_context("create a file beside", out))?;
+    let mut sink = BufWriter::new(tmp_file);
+    let merged = merge_into(&sweep, base_dir, &args.shards, &mut notes, &mut sink);
+    let finish = |tally: &Tally| -> Result<bool, Stop> {
+        if tally.missing.count > 0 && !args.allow_missing {
+            return Ok(false);
+        }
+        let f = sink.into_inner().map_err(|e| e.into_error())?;
+        f.sync_all()?;
+        drop(f);
+        if !notes.used.is_empty() {
+            let body = serde_json::to_string_pretty(&notes.used).map_err(io::Error::other)?;
+            write_atomic(&out_notes, body.as_bytes()).map_err(io_context("write", &out_notes))?;
+        }
+        fs::rename(&tmp, out).map_err(io_context("write", out))?;
+        Ok(true)
+    };
+    let written = merged.and_then(|t| finish(&t).map(|w| (t, w)));
+    let (tally, written) = match written {
+        Ok(x) => x,
+        Err(e) => {
+            let _ = fs::remove_file(&tmp);
+            return Err(e);
+        }
+    };
+    if !written {
+        let _ = fs::remove_file(&tmp);
+    }
     let summary = format!(
-        "merge: {} of {} designs from {} files, {} identical duplicate lines dropped, {errors} error rows",
-        merged.lines.len(),
+        "merge: {} of {} designs from {} files, {} identical duplicate lines dropped, {} error rows",
+        tally.lines,
         sweep.len(),
         args.shards.len(),
-        merged.duplicates
+        tally.duplicates,
+        tally.errors
     );
-    if !missing.is_empty() {
-        eprintln!("{summary}");
-        eprintln!(
-            "error: {} of {} designs missing: {}",
-            missing.len(),
-            sweep.len(),
-            describe_missing(&missing, sweep.len())
-        );
-        if !args.allow_missing {
-            eprintln!("error: nothing written (--allow-missing writes the designs that are there)");
-            return Ok(EXIT_FAILED);
-        }
-    }
-    let mut text = String::with_capacity(merged.lines.values().map(|k| k.text.len() + 1).sum());
-    for kept in merged.lines.values() {
-        text.push_str(&kept.text);
-        text.push('\n');
-    }
-    if !notes.is_empty() {
-        let body = serde_json::to_string_pretty(&notes).map_err(io::Error::other)?;
-        write_atomic(&out_notes, body.as_bytes()).map_err(io_context("write", &out_notes))?;
-    }
-    write_atomic(out, text.as_bytes()).map_err(io_context("write", out))?;
-    if missing.is_empty() {
+    let missing = tally.missing.count;
+    if missing == 0 {
         eprintln!("{summary} → {}", out.display());
     } else {
+        eprintln!("{summary}");
         eprintln!(
-            "wrote the {} designs that are there to {}",
-            merged.lines.len(),
-            out.display()
+            "error: {missing} of {} designs missing: {}",
+            sweep.len(),
+            tally.missing.describe(sweep.len())
+        );
+        if written {
+            eprintln!("wrote the {} designs that are there to {}", tally.lines, out.display());
+        } else {
+            eprintln!("error: nothing written (--allow-missing writes the designs that are there)");
+        }
+    }
+    if tally.errors > 0 {
+        eprintln!(
+            "error: {} designs failed (their lines hold an \"error\"; exit code 1)",
+            tally.errors
         );
     }
-    if errors > 0 {
-        eprintln!("error: {errors} designs failed (their lines hold an \"error\"; exit code 1)");
-    }
-    Ok(if missing.is_empty() && errors == 0 {
+    Ok(if missing == 0 && tally.errors == 0 {
         0
     } else {
         EXIT_FAILED
