@@ -43,6 +43,7 @@ use std::process::ExitCode;
 #[derive(Debug, Clone, clap::Args)]
 pub struct MergeArgs {
     /// The merged file to write (one line per design, sorted by index).
+    #[arg(value_name = "OUT.jsonl")]
     pub out: PathBuf,
     /// The shard files, e.g. shard_1.jsonl … shard_N.jsonl (each `flexfem sweep --out` output).
     #[arg(required = true, value_name = "SHARD.jsonl")]
