@@ -103,7 +103,7 @@ fn sweep_to(d: &std::path::Path, case: &std::path::Path, out: &std::path::Path, 
 #[test]
 fn stage_lines_are_compact_by_default_and_full_on_request() {
     let d = tempdir("compact");
-    let case = write(&d, "sweep.json", STAGE_SWEEP);
+    let case = write(&d, "sweep.json", &stage_sweep());
     let out = d.join("s.jsonl");
     sweep_to(&d, &case, &out, &[]);
     let text = std::fs::read_to_string(&out).unwrap();
