@@ -128,7 +128,10 @@ fn cli_export_matrices_of_a_transient_case() {
     let out = common::tempdir("export_transient").join("out");
     let o = common::run(&["run", case, "--out", out.to_str().unwrap(), "--export-matrices"]);
     assert!(o.status.success(), "{}", common::stderr(&o));
-    assert!(out.join("result.json").is_file(), "the transient run writes its result too");
+    assert!(
+        out.join("result.json").is_file(),
+        "the transient run writes its result too"
+    );
     let read = |name: &str| -> sprs::CsMat<f64> {
         let t: sprs::TriMat<f64> = sprs::io::read_matrix_market(out.join(name)).unwrap();
         t.to_csr()
