@@ -202,15 +202,7 @@ fn newton_failure_is_an_error_with_context() {
 /// prescribed motions (exit 2, naming the field).
 #[test]
 fn bundled_pendulum_case_and_refusals() {
-    let out = common::tempdir("pendulum_case").join("out");
-    let o = common::run(&[
-        "run",
-        "cases/pendulum_nonlinear_transient.json",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", common::stderr(&o));
-    let r: serde_json::Value = serde_json::from_slice(&std::fs::read(out.join("result.json")).unwrap()).unwrap();
+    let (_, r) = common::run_out("cases/pendulum_nonlinear_transient.json", "pendulum_case");
     let rec = &r["records"];
     let (ux, t) = (rec[0]["min"].as_f64().unwrap(), rec[0]["t_min_s"].as_f64().unwrap());
     let exact = -2.0 * L * 60f64.to_radians().sin();
