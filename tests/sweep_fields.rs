@@ -4,21 +4,19 @@ mod common;
 use common::*;
 use serde_json::Value;
 
-/// Two stage designs (revolute t = 1.5, 2), one load case.
-const STAGE_SWEEP: &str = r#"{"analysis": "sweep",
-  "base": {"analysis": "stage", "material": "Al7075",
-    "stage": {"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": 0, "leg": {"w": 10, "h": 10},
-      "revolute": {"type": "circular_notch", "R": 8, "t": 2},
-      "spherical": {"type": "spherical_neck", "l": 5, "t": 3, "R": 4}},
-    "load_cases": [{"name": "F20", "actuator_forces": [20, 20, 20]}]},
-  "vary": {"stage.revolute.t": [1.5, 2]}}"#;
+/// Two stage designs (revolute t = 1.5, 2) of the bundled stage case, one load case.
+fn stage_sweep() -> String {
+    let mut base = common::fixtures::ruiz2019_stage_json();
+    base["load_cases"] = serde_json::json!([{"name": "F20", "actuator_forces": [20, 20, 20]}]);
+    serde_json::json!({"analysis": "sweep", "base": base, "vary": {"stage.revolute.t": [1.5, 2]}}).to_string()
+}
 
 /// `--fields` keeps exactly the named result fields (values equal to the full line's);
 /// index, params and design_hash stay.
 #[test]
 fn fields_select_result_fields() {
     let d = tempdir("fields");
-    let case = write(&d, "sweep.json", STAGE_SWEEP);
+    let case = write(&d, "sweep.json", &stage_sweep());
     let full = parse_lines(&stdout(&sweep(&d, &[case.to_str().unwrap()])));
     let o = sweep(
         &d,
@@ -60,7 +58,7 @@ fn fields_select_result_fields() {
 #[test]
 fn out_moves_model_notes_to_the_sidecar() {
     let d = tempdir("notes");
-    let case = write(&d, "sweep.json", STAGE_SWEEP);
+    let case = write(&d, "sweep.json", &stage_sweep());
     let full = parse_lines(&stdout(&sweep(&d, &[case.to_str().unwrap()])));
     let out = d.join("s.jsonl");
     let o = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);

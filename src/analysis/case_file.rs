@@ -11,6 +11,8 @@ use std::path::Path;
 
 /// The analysis `Self` of one line of the list of kinds: its case inside a parsed [`Case`].
 pub trait CaseOf: super::Analysis {
+    /// The `analysis` name in case files (the line's `"name"`).
+    const KIND: &'static str;
     /// The case of this kind inside a parsed case file, if it is one.
     fn case_of(case: &Case) -> Option<&Self::Case>;
 }
@@ -62,6 +64,7 @@ macro_rules! case_side {
 
         $(
             impl CaseOf for $analysis {
+                const KIND: &'static str = $name;
                 fn case_of(case: &Case) -> Option<&Self::Case> {
                     match case {
                         Case::$variant(c) => Some(c),

@@ -201,7 +201,6 @@ fn report(r: &CraigBamptonResult) -> Report {
 pub struct CraigBamptonKind;
 
 impl Analysis for CraigBamptonKind {
-    const KIND: &'static str = "craig_bampton";
     type Case = CraigBamptonCase;
     type Result = CraigBamptonResult;
 

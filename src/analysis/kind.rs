@@ -50,9 +50,10 @@ pub fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>)
 }
 
 /// One analysis kind.
+///
+/// Its `analysis` name is given once, by its line in the list of kinds
+/// ([`CaseOf::KIND`](super::case_file::CaseOf::KIND)).
 pub trait Analysis: 'static {
-    /// The `analysis` name in case files.
-    const KIND: &'static str;
     /// The parsed case (a serde shape, one variant of [`Case`]).
     type Case;
     /// The typed result; its JSON is the `result.json` of a run and the `result` of a sweep line.
@@ -128,7 +129,7 @@ pub fn run_typed<A: Analysis>(case: &A::Case, ctx: &mut Ctx) -> Result<Typed<A::
 
 /// The object-safe view of an [`Analysis`], as the registry holds it.
 pub trait DynAnalysis: Sync {
-    /// [`Analysis::KIND`].
+    /// [`CaseOf::KIND`](super::case_file::CaseOf::KIND).
     fn kind(&self) -> &'static str;
     /// [`Analysis::check`] of a parsed case of this kind (`None` if the case is another kind).
     fn check(&self, case: &Case) -> Option<Result<(), CaseError>>;

@@ -58,7 +58,7 @@ pub struct Finished {
 
 /// Numbers compare to 1e-12 relative: a value read back from a file may differ from the
 /// sweep's own in the last bit (serde_json does not round-trip every float exactly).
-fn same_value(a: &Value, b: &Value) -> bool {
+pub(super) fn same_value(a: &Value, b: &Value) -> bool {
     match (a, b) {
         (Value::Number(x), Value::Number(y)) => match (x.as_f64(), y.as_f64()) {
             (Some(x), Some(y)) => x == y || (x - y).abs() <= 1e-12 * x.abs().max(y.abs()),

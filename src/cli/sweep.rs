@@ -36,6 +36,14 @@ pub struct SweepArgs {
     /// Run only the designs whose index ≡ K−1 (mod N).
     #[arg(long, value_name = "K/N")]
     pub shard: Option<String>,
+    /// Take the shard K/N from a Slurm job-array task's variables: K = SLURM_ARRAY_TASK_ID
+    /// (1-based ids; 0-based when SLURM_ARRAY_TASK_MIN is 0, K = id + 1), N =
+    /// SLURM_ARRAY_TASK_COUNT or --shard-count.
+    #[arg(long, conflicts_with = "shard")]
+    pub shard_from_env: bool,
+    /// With --shard-from-env: the number of shards N (e.g. when rerunning one task of an array).
+    #[arg(long, value_name = "N", requires = "shard_from_env")]
+    pub shard_count: Option<usize>,
     /// Write the JSON lines to FILE (resumable) instead of stdout. FILE must be new or
     /// flexfem sweep output; anything else is refused unless --force.
     #[arg(long, value_name = "FILE.jsonl")]
@@ -137,8 +145,18 @@ fn failed(msg: impl fmt::Display) -> ExitCode {
 /// Runs a sweep; returns the exit code: 0 when every design succeeded, 1 when any design
 /// failed (error rows) or the output could not be written, 2 for a bad case file or arguments.
 pub fn run_cli(args: SweepArgs) -> ExitCode {
+    let from_env = args
+        .shard_from_env
+        .then(|| super::shard_env::shard_from(|v| std::env::var(v).ok(), args.shard_count));
     let shard = match args.shard.as_deref().map(|s| (s, s.parse::<Shard>())) {
-        None => Shard::ALL,
+        None => match from_env {
+            None => Shard::ALL,
+            Some(Ok(s)) => s,
+            Some(Err(msg)) => {
+                eprintln!("error: {msg}");
+                return ExitCode::from(crate::output::EXIT_BAD_CASE);
+            }
+        },
         Some((_, Ok(s))) => s,
         Some((text, Err(msg))) => {
             eprintln!("error: invalid --shard `{text}`: {msg}");

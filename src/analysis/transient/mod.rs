@@ -360,7 +360,6 @@ impl TransientCase {
 pub struct TransientKind;
 
 impl Analysis for TransientKind {
-    const KIND: &'static str = "transient";
     type Case = TransientCase;
     type Result = TransientResult;
 
