@@ -117,6 +117,11 @@ fn report(spec: &str) {
         k.write_matrix_market(&mut f).expect("write mtx");
     }
     let (sym, t_order, c_order) = timed(|| SymbolicFactor::with_ordering(pat.sparse(), ordering).expect("symbolic"));
+    let exact = if std::env::var("FLEXFEM_ORDERING_EXACT").is_ok_and(|v| v == "1") {
+        sym.structural_nnz_l(pat.sparse()).expect("structural nnz")
+    } else {
+        0
+    };
     let (f, t_factor, c_factor) = timed(|| Factor::new(&sym, &k, Parallelism::Rayon).expect("factor"));
     let rhs = vec![1.0; map.n_eq()];
     let (x, t_solve, c_solve) = timed(|| {
@@ -133,7 +138,7 @@ fn report(spec: &str) {
         .sqrt()
         / (rhs.len() as f64).sqrt();
     println!(
-        "{{\"model\": \"{} {size}\", \"n\": {}, \"nnz_K_lower\": {}, \"ordering\": \"{}\", \"nnz_L\": {}, \
+        "{{\"model\": \"{} {size}\", \"n\": {}, \"nnz_K_lower\": {}, \"ordering\": \"{}\", \"nnz_L\": {}, \"nnz_L_structural\": {exact}, \
          \"threads\": {}, \"build_s\": [{t_build:.3}, {c_build:.2}], \"order_s\": [{t_order:.3}, {c_order:.2}], \
          \"factor_s\": [{t_factor:.3}, {c_factor:.2}], \"solve_s\": [{t_solve:.3}, {c_solve:.2}], \"residual\": {r:.2e}}}",
         w[0],

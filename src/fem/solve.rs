@@ -15,9 +15,11 @@ use faer::perm::PermRef;
 use faer::sparse::linalg::cholesky::simplicial::SimplicialLltRef;
 use faer::sparse::linalg::cholesky::supernodal::SupernodalLltRef;
 use faer::sparse::linalg::cholesky::{
-    factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymbolicCholeskyRaw, SymmetricOrdering,
+    factorize_symbolic_cholesky, CholeskySymbolicParams, LltRef, SymbolicCholesky, SymbolicCholeskyRaw,
+    SymmetricOrdering,
 };
 use faer::sparse::linalg::lu::{factorize_symbolic_lu, NumericLu, SymbolicLu};
+use faer::sparse::linalg::SupernodalThreshold;
 use faer::sparse::{Argsort, Pair, SparseColMat, SymbolicSparseColMat};
 use faer::{Conj, MatMut, Par, Side};
 use std::io::Write;
@@ -333,6 +335,23 @@ impl SymbolicFactor {
             inner: Arc::new(inner),
             ordering,
         })
+    }
+
+    /// Entries of L counted from the elimination tree (no explicit zeros of amalgamated
+    /// supernodes, which [`SymbolicFactor::nnz_l`] includes), to compare the fill of orderings
+    /// with other solvers. Runs a simplicial symbolic analysis of `pattern` with this ordering.
+    pub fn structural_nnz_l(&self, pattern: &SparsePattern) -> Result<usize, FemError> {
+        let params = CholeskySymbolicParams {
+            supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SIMPLICIAL,
+            ..Default::default()
+        };
+        let order = match self.inner.perm() {
+            Some(p) => SymmetricOrdering::Custom(p),
+            None => SymmetricOrdering::Identity,
+        };
+        factorize_symbolic_cholesky(pattern.symbolic.as_ref(), Side::Lower, order, params)
+            .map(|s| s.len_val())
+            .map_err(|e| FemError::Solver(format!("symbolic factorisation: {e:?}")))
     }
 
     /// The ordering used: [`FillOrdering::Amd`] or [`FillOrdering::Nd`] (never `Auto`).
