@@ -134,28 +134,8 @@ fn parallel_leaf_guide_under_axial_load() {
     let (l, t, b, sep): (f64, f64, f64, f64) = (50.0, 0.5, 10.0, 30.0);
     let ne = 16;
     let mut m = Model::new();
-    let mut tops = Vec::new();
-    for x in [0.0, sep] {
-        let base = m.nodes.len();
-        for i in 0..=ne {
-            m.add_node([x, 0.0, l * i as f64 / ne as f64]);
-        }
-        for i in 0..ne {
-            // Leaf along z; thickness t along global x (local z with up = x).
-            m.add_beam(
-                Beam::new(
-                    base + i,
-                    base + i + 1,
-                    Section::Rect { w: b, h: t },
-                    STEEL,
-                    [1.0, 0.0, 0.0],
-                )
-                .euler_bernoulli(),
-            );
-        }
-        m.supports.push(Support::clamp(base));
-        tops.push(base + ne);
-    }
+    // Leaves along z; thickness t along global x (local z with up = x).
+    let tops = common::meshes::clamped_leaves(&mut m, [0.0, sep], l, ne, (b, t), STEEL);
     m.rigid_links.push(RigidLink {
         master: tops[0],
         slaves: vec![tops[1]],

@@ -116,3 +116,37 @@ fn cli_export_matrices_of_the_stage_mesh() {
         common::stderr(&refused)
     );
 }
+
+/// `flexfem run --out DIR --export-matrices` on the bundled stage step-response case (a
+/// `transient` case: the stage mesh with hinge elements, slider frames and the platform mass;
+/// its prescribed slider motions stay equations): the run still writes its result, and K.mtx and
+/// M.mtx read back by sprs give the six lowest eigenvalues of the modal solver (shift-invert
+/// Lanczos) on the case's model to 1e-9 (relative).
+#[test]
+fn cli_export_matrices_of_a_transient_case() {
+    let case = "cases/ruiz2019_stage_step.json";
+    let out = common::tempdir("export_transient").join("out");
+    let o = common::run(&["run", case, "--out", out.to_str().unwrap(), "--export-matrices"]);
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    assert!(
+        out.join("result.json").is_file(),
+        "the transient run writes its result too"
+    );
+    let read = |name: &str| -> sprs::CsMat<f64> {
+        let t: sprs::TriMat<f64> = sprs::io::read_matrix_market(out.join(name)).unwrap();
+        t.to_csr()
+    };
+    let (k, m) = (read("K.mtx"), read("M.mtx"));
+    let flexfem::analysis::Case::Transient(t) = flexfem::analysis::load(std::path::Path::new(case)).unwrap() else {
+        panic!("{case} is a transient case")
+    };
+    let model = t.model.build_model(false).unwrap();
+    let modal = solve_modal(&model, &ModalOptions::new(6)).unwrap();
+    let lam = lowest_eigenvalues(&dense(&k), &dense(&m), 6);
+    let mut worst: f64 = 0.0;
+    for (l, mode) in lam.iter().zip(&modal.modes) {
+        worst = worst.max((l - mode.eigenvalue).abs() / mode.eigenvalue);
+    }
+    eprintln!("stage step case: lowest eigenvalues {lam:?}, worst relative difference {worst:.3e}");
+    assert!(worst < 1e-9, "{worst}");
+}

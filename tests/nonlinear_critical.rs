@@ -146,29 +146,11 @@ fn von_mises_truss_through_both_limit_points() {
 fn leaf_guide(p: f64) -> (Model, f64) {
     let (l, n, t, w, gap) = (50.0, 16usize, 0.5, 10.0, 20.0);
     let mut model = Model::new();
-    for x in [0.0, gap] {
-        let first = model.nodes.len();
-        for i in 0..=n {
-            model.add_node([x, 0.0, l * i as f64 / n as f64]);
-        }
-        for i in 0..n {
-            model.add_beam(
-                Beam::new(
-                    first + i,
-                    first + i + 1,
-                    Section::Rect { w, h: t },
-                    mat(E, 0.3),
-                    [1.0, 0.0, 0.0],
-                )
-                .euler_bernoulli(),
-            );
-        }
-        model.supports.push(Support::clamp(first));
-    }
+    let tops = common::meshes::clamped_leaves(&mut model, [0.0, gap], l, n, (w, t), mat(E, 0.3));
     let bar = model.add_node([0.5 * gap, 0.0, l]);
     model.rigid_links.push(RigidLink {
         master: bar,
-        slaves: vec![n, 2 * n + 1],
+        slaves: tops.to_vec(),
     });
     model
         .load_cases

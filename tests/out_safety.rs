@@ -7,7 +7,7 @@ mod common;
 use common::*;
 use std::fs;
 use std::os::unix::fs::symlink;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 const SWEEP: &str = r#"{"analysis": "sweep",
@@ -21,6 +21,13 @@ fn s(p: &Path) -> &str {
     p.to_str().unwrap()
 }
 
+/// A fresh temp dir `name` holding the sweep case `s.json`.
+fn sweep_dir(name: &str) -> (PathBuf, PathBuf) {
+    let d = tempdir(name);
+    let case = write(&d, "s.json", SWEEP);
+    (d, case)
+}
+
 fn line_count(p: &Path) -> usize {
     fs::read_to_string(p).unwrap().lines().count()
 }
@@ -30,9 +37,8 @@ fn line_count(p: &Path) -> usize {
 /// the outputs regular files. Temporary names are now unique and created exclusively.
 #[test]
 fn symlinked_temporary_paths_do_not_redirect_writes() {
-    let d = tempdir("symlink-tmp");
+    let (d, case) = sweep_dir("symlink-tmp");
     let victim = write(&d, "victim.txt", PRECIOUS);
-    let case = write(&d, "s.json", SWEEP);
     let out = d.join("s.jsonl");
     let csv = d.join("s.csv");
     symlink(&victim, d.join("s.jsonl.tmp")).unwrap();
@@ -65,9 +71,8 @@ fn symlinked_temporary_paths_do_not_redirect_writes() {
 /// refused (exit 1, naming it) and the victim is untouched.
 #[test]
 fn symlinked_partial_file_is_refused() {
-    let d = tempdir("symlink-partial");
+    let (d, case) = sweep_dir("symlink-partial");
     let victim = write(&d, "victim.txt", PRECIOUS);
-    let case = write(&d, "s.json", SWEEP);
     let out = d.join("s.jsonl");
     symlink(&victim, d.join("s.jsonl.partial")).unwrap();
     let o = run_in(&d, &["sweep", s(&case), "--out", s(&out)]);
@@ -92,8 +97,7 @@ fn symlinked_partial_file_is_refused() {
 /// and `run --out DIR` whose `result.json` is the case.
 #[test]
 fn the_case_file_is_never_overwritten() {
-    let d = tempdir("case-file");
-    let case = write(&d, "s.json", SWEEP);
+    let (d, case) = sweep_dir("case-file");
     for args in [
         vec!["sweep", s(&case), "--out", s(&case)],
         vec!["sweep", s(&case), "--out", s(&case), "--force"],
@@ -124,8 +128,7 @@ fn the_case_file_is_never_overwritten() {
 /// flexfem output folder.
 #[test]
 fn unrelated_files_are_replaced_only_with_force() {
-    let d = tempdir("unrelated");
-    let case = write(&d, "s.json", SWEEP);
+    let (d, case) = sweep_dir("unrelated");
     let notes = write(&d, "notes.jsonl", PRECIOUS);
     let o = run_in(&d, &["sweep", s(&case), "--out", s(&notes)]);
     exits_2(&o, &["not a flexfem sweep line", "--force"]);
@@ -160,8 +163,7 @@ fn unrelated_files_are_replaced_only_with_force() {
 /// `--out x --csv x` would put the CSV over the JSON lines: refused before running.
 #[test]
 fn identical_output_paths_are_refused() {
-    let d = tempdir("identical");
-    let case = write(&d, "s.json", SWEEP);
+    let (d, case) = sweep_dir("identical");
     let o = run_in(&d, &["sweep", s(&case), "--out", "x.csv", "--csv", "x.csv"]);
     exits_2(&o, &["--out and --csv are the same file"]);
     assert!(!d.join("x.csv").exists());

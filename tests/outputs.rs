@@ -523,7 +523,7 @@ fn bundled_cases() -> Vec<PathBuf> {
         .unwrap()
         .map(|e| e.unwrap().path())
         .filter(|p| p.extension().and_then(|e| e.to_str()) == Some("json"))
-        .filter(|p| !p.to_str().unwrap().contains("sweep")) // run with `flexfem sweep` (tests/sweep.rs)
+        .filter(|p| !p.file_name().unwrap().to_str().unwrap().contains("sweep")) // run with `flexfem sweep` (tests/sweep.rs)
         .collect();
     v.sort();
     v

@@ -54,7 +54,10 @@ fn allocations_per_stage_design() {
         flexfem::analysis::stage::run_stage_with(&c, false, &mut cache).expect("runs");
     });
     eprintln!("allocations: linear solve of one load case {solve}; full stage analysis (3 cases) {full}");
-    // Ceilings: twice the counts measured when this test was written (solve 176, full 527).
-    assert!(solve <= 2 * 176, "{solve}");
+    // Ceilings: the linear solve at its count measured 2026-11-24 (176: the condensed model,
+    // its load cases and the expanded result are built per design), so any new allocation on
+    // the library's hot path fails here; the full analysis (which also writes the case's
+    // output values) at twice its count then (527).
+    assert!(solve <= 176, "{solve}");
     assert!(full <= 2 * 527, "{full}");
 }

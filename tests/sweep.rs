@@ -188,15 +188,22 @@ const T_UP_TO_12: &str = r#"{"analysis": "sweep",
           "hinge": {"type": "circular_notch", "R": 8, "t": 2, "w": 10, "h": 10, "blank_length": 20}},
  "vary": {"hinge.t": {"from": 2, "to": 12, "steps": 6}, "hinge.R": [4, 8]}}"#;
 
+/// Runs [`T_UP_TO_12`] in a fresh temp dir `name` with `FLAG FILE` (`--out` or `--csv`), asserting
+/// exit 1 (four designs fail); the dir, the path of FILE and the run.
+fn sweep_t_up_to_12(name: &str, flag: &str, file: &str) -> (std::path::PathBuf, std::path::PathBuf, Output) {
+    let d = tempdir(name);
+    let case = write(&d, "sweep.json", T_UP_TO_12);
+    let path = d.join(file);
+    let o = sweep(&d, &[case.to_str().unwrap(), flag, path.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1), "stderr: {}", stderr(&o));
+    (d, path, o)
+}
+
 /// t ≥ h = 10 is an error row naming `hinge.t`; the other designs finish, and the exit code
 /// is 1 with the count of failed designs on stderr.
 #[test]
 fn design_with_t_not_below_h_is_an_error_row_and_the_rest_finish() {
-    let d = tempdir("errors");
-    let case = write(&d, "sweep.json", T_UP_TO_12);
-    let out = d.join("s.jsonl");
-    let o = sweep(&d, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()]);
-    assert_eq!(o.status.code(), Some(1), "stderr: {}", stderr(&o));
+    let (d, out, o) = sweep_t_up_to_12("errors", "--out", "s.jsonl");
     assert!(stderr(&o).contains("4 of 12 designs failed"), "{}", stderr(&o));
     // t = 2, 4, 6, 8, 10, 12 × R = 4, 8: the last two t values (4 designs) fail.
     assert_eq!(summary(&o), [12, 0, 12, 4]);
@@ -230,12 +237,8 @@ fn design_with_t_not_below_h_is_an_error_row_and_the_rest_finish() {
 /// CSV: header `index, varied paths, flattened result leaves…, error`, one row per design.
 #[test]
 fn csv_has_a_header_and_one_row_per_design() {
-    let d = tempdir("csv");
-    let case = write(&d, "sweep.json", T_UP_TO_12);
-    let csv = d.join("s.csv");
-    let o = sweep(&d, &[case.to_str().unwrap(), "--csv", csv.to_str().unwrap()]);
     // Four designs fail (t ≥ h): exit 1, the CSV is still written.
-    assert_eq!(o.status.code(), Some(1), "stderr: {}", stderr(&o));
+    let (d, csv, o) = sweep_t_up_to_12("csv", "--csv", "s.csv");
     let jsonl = parse_lines(&stdout(&o));
     let text = std::fs::read_to_string(&csv).unwrap();
     let rows: Vec<&str> = text.lines().collect();

@@ -33,6 +33,16 @@ fn sweep_to(dir: &Path, case: &Path, out: &Path) -> Output {
     sweep(dir, &[case.to_str().unwrap(), "--out", out.to_str().unwrap()])
 }
 
+/// Runs the sweep afresh into `fresh` (exit 0) and asserts that `out` holds the very same text.
+fn assert_same_as_fresh_run(dir: &Path, case: &Path, out: &Path, fresh: &Path) {
+    let f = sweep_to(dir, case, fresh);
+    assert_eq!(code(&f), Some(0));
+    assert_eq!(
+        std::fs::read_to_string(out).unwrap(),
+        std::fs::read_to_string(fresh).unwrap()
+    );
+}
+
 /// `flexfem sweep CASE --out OUT --shard SHARD` in `dir`.
 fn shard_to(dir: &Path, case: &Path, out: &Path, shard: &str) -> Output {
     sweep(
@@ -76,13 +86,7 @@ fn resume_after_a_base_case_change_reruns_stale_lines() {
     let steel = lines(&out);
     let fresh_dir = d.join("fresh");
     std::fs::create_dir_all(&fresh_dir).unwrap();
-    let fresh_out = fresh_dir.join("f.jsonl");
-    let f = sweep_to(&d, &case, &fresh_out);
-    assert_eq!(code(&f), Some(0));
-    assert_eq!(
-        std::fs::read_to_string(&out).unwrap(),
-        std::fs::read_to_string(&fresh_out).unwrap()
-    );
+    assert_same_as_fresh_run(&d, &case, &out, &fresh_dir.join("f.jsonl"));
     for (a, s) in al.iter().zip(&steel) {
         assert_eq!(a["params"], s["params"]);
         assert_ne!(a["design_hash"], s["design_hash"]);
@@ -220,13 +224,7 @@ fn concurrent_shards_to_one_out_lose_no_designs() {
     assert_eq!(idx, (0..2000).collect::<Vec<_>>());
     assert!(!d.join("s.jsonl.lock").exists());
     assert!(!d.join("s.jsonl.partial").exists());
-    let whole = d.join("whole.jsonl");
-    let o = sweep_to(&d, &case, &whole);
-    assert_eq!(code(&o), Some(0));
-    assert_eq!(
-        std::fs::read_to_string(&out).unwrap(),
-        std::fs::read_to_string(&whole).unwrap()
-    );
+    assert_same_as_fresh_run(&d, &case, &out, &d.join("whole.jsonl"));
     cleanup(&d);
 }
 

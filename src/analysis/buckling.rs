@@ -230,7 +230,6 @@ pub fn report(r: &BucklingResult) -> Report {
 }
 
 impl Analysis for Buckling {
-    const KIND: &'static str = "buckling";
     type Case = BucklingCase;
     type Result = BucklingResult;
 

@@ -11,6 +11,8 @@ use std::path::Path;
 
 /// The analysis `Self` of one line of the list of kinds: its case inside a parsed [`Case`].
 pub trait CaseOf: super::Analysis {
+    /// The `analysis` name in case files (the line's `"name"`).
+    const KIND: &'static str;
     /// The case of this kind inside a parsed case file, if it is one.
     fn case_of(case: &Case) -> Option<&Self::Case>;
 }
@@ -62,6 +64,7 @@ macro_rules! case_side {
 
         $(
             impl CaseOf for $analysis {
+                const KIND: &'static str = $name;
                 fn case_of(case: &Case) -> Option<&Self::Case> {
                     match case {
                         Case::$variant(c) => Some(c),
@@ -109,7 +112,23 @@ pub fn parse_in(text: &str, base: Option<&Path>) -> Result<Case, CaseError> {
 }
 
 /// Parses a case already read as JSON.
-pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseError> {
+pub fn parse_value(value: Value, base: Option<&Path>) -> Result<Case, CaseError> {
+    if value.is_object() {
+        check_shape(&value)?;
+    }
+    parse_value_shaped(value, base)
+}
+
+/// The check of [`parse_value`] that refuses an array given where the schema wants an object
+/// (see `refuse_positional`). It depends only on where the case has arrays, so a batch driver
+/// whose designs differ from one already checked only in scalar values may skip it
+/// ([`parse_value_shaped`]).
+pub fn check_shape(value: &Value) -> Result<(), CaseError> {
+    refuse_positional(value)
+}
+
+/// [`parse_value`] without [`check_shape`], for a value whose arrays were checked already.
+pub fn parse_value_shaped(mut value: Value, base: Option<&Path>) -> Result<Case, CaseError> {
     if !value.is_object() {
         return Err(CaseError::value(
             ".",
@@ -117,7 +136,6 @@ pub fn parse_value(mut value: Value, base: Option<&Path>) -> Result<Case, CaseEr
             "a case file must be a JSON object",
         ));
     }
-    refuse_positional(&value)?;
     let Value::Object(map) = &mut value else {
         unreachable!("checked above");
     };

@@ -182,7 +182,6 @@ pub struct ConstraintsResult {
 pub struct ConstraintsAnalysis;
 
 impl Analysis for ConstraintsAnalysis {
-    const KIND: &'static str = "constraints";
     type Case = ConstraintsCase;
     type Result = ConstraintsResult;
 

@@ -419,7 +419,6 @@ pub fn run(case: &FrfCase, model: &Model, cache: &mut crate::fem::SolverCache) -
 pub struct FrfKind;
 
 impl Analysis for FrfKind {
-    const KIND: &'static str = "frf";
     type Case = FrfCase;
     type Result = FrfResult;
 

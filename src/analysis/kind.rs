@@ -23,6 +23,8 @@ pub struct Ctx<'a> {
     pub files: Files,
     /// Warnings found while running (before [`Analysis::case_warnings`]).
     pub warnings: Vec<String>,
+    /// Render the Markdown/CSV report (a sweep, which writes only the JSON, turns it off).
+    pub with_report: bool,
 }
 
 impl<'a> Ctx<'a> {
@@ -33,6 +35,7 @@ impl<'a> Ctx<'a> {
             with_files,
             files: Vec::new(),
             warnings: Vec::new(),
+            with_report: true,
         }
     }
 }
@@ -50,9 +53,10 @@ pub fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>)
 }
 
 /// One analysis kind.
+///
+/// Its `analysis` name is given once, by its line in the list of kinds
+/// ([`CaseOf::KIND`](super::case_file::CaseOf::KIND)).
 pub trait Analysis: 'static {
-    /// The `analysis` name in case files.
-    const KIND: &'static str;
     /// The parsed case (a serde shape, one variant of [`Case`]).
     type Case;
     /// The typed result; its JSON is the `result.json` of a run and the `result` of a sweep line.
@@ -119,7 +123,11 @@ pub fn run_typed<A: Analysis>(case: &A::Case, ctx: &mut Ctx) -> Result<Typed<A::
     warnings.extend(A::case_warnings(case));
     warnings.extend(A::result_warnings(case, &result));
     Ok(Typed {
-        report: A::report(&result),
+        report: if ctx.with_report {
+            A::report(&result)
+        } else {
+            super::Report::default()
+        },
         warnings,
         files: std::mem::take(&mut ctx.files),
         result,
@@ -128,7 +136,7 @@ pub fn run_typed<A: Analysis>(case: &A::Case, ctx: &mut Ctx) -> Result<Typed<A::
 
 /// The object-safe view of an [`Analysis`], as the registry holds it.
 pub trait DynAnalysis: Sync {
-    /// [`Analysis::KIND`].
+    /// [`CaseOf::KIND`](super::case_file::CaseOf::KIND).
     fn kind(&self) -> &'static str;
     /// [`Analysis::check`] of a parsed case of this kind (`None` if the case is another kind).
     fn check(&self, case: &Case) -> Option<Result<(), CaseError>>;

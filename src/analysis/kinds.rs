@@ -22,7 +22,6 @@ fn stability<'a>(cases: impl Iterator<Item = (&'a str, Option<bool>, Option<[f64
 pub struct Kinematics;
 
 impl Analysis for Kinematics {
-    const KIND: &'static str = "kinematics";
     type Case = case::kinematics::KinematicsCase;
     type Result = kinematics::KinematicsResult;
 
@@ -42,7 +41,6 @@ impl Analysis for Kinematics {
 pub struct Hinge;
 
 impl Analysis for Hinge {
-    const KIND: &'static str = "hinge";
     type Case = case::hinge::HingeCase;
     type Result = hinge::HingeOut;
 
@@ -78,7 +76,6 @@ impl Analysis for Hinge {
 pub struct Stage;
 
 impl Analysis for Stage {
-    const KIND: &'static str = "stage";
     type Case = case::stage::StageCase;
     type Result = stage::StageResult;
 
@@ -131,7 +128,6 @@ const STAGE_SWEEP_FILES: [SweepFile; 2] = [
 pub struct FemVsFkp;
 
 impl Analysis for FemVsFkp {
-    const KIND: &'static str = "fem_vs_fkp";
     type Case = case::stage::FemVsFkpCase;
     type Result = fem_vs_fkp::FemVsFkpResult;
 
@@ -159,7 +155,6 @@ impl Analysis for FemVsFkp {
 pub struct Sensitivity;
 
 impl Analysis for Sensitivity {
-    const KIND: &'static str = "sensitivity";
     type Case = case::design::SensitivityCase;
     type Result = design::SensitivityResult;
 
@@ -183,7 +178,6 @@ impl Analysis for Sensitivity {
 pub struct Design;
 
 impl Analysis for Design {
-    const KIND: &'static str = "design";
     type Case = case::design::DesignCase;
     type Result = design::DesignResult;
 
@@ -207,7 +201,6 @@ impl Analysis for Design {
 pub struct Static;
 
 impl Analysis for Static {
-    const KIND: &'static str = "static";
     type Case = case::mesh::StaticCase;
     type Result = fem_static::StaticResult;
 
@@ -261,7 +254,6 @@ impl Analysis for Static {
 pub struct Modal;
 
 impl Analysis for Modal {
-    const KIND: &'static str = "modal";
     type Case = case::mesh::ModalCase;
     type Result = modal::ModalResult;
 
@@ -298,7 +290,6 @@ impl Analysis for Modal {
 pub struct SweepKind;
 
 impl Analysis for SweepKind {
-    const KIND: &'static str = "sweep";
     type Case = case::sweep::SweepCase;
     type Result = ();
 

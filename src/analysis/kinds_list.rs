@@ -70,6 +70,9 @@ macro_rules! analyses {
             /// Frequency response from nodal loads to nodal DOFs (modal superposition with static
             /// correction, checked by a direct solve) and its state-space model.
             Frf = "frf" #14, mod frf, analysis frf::FrfKind, parse frf::parse_frf;
+            /// Craig–Bampton reduction of a beam model to interface nodes: a superelement (K, M on
+            /// the interface DOFs plus fixed-interface modes).
+            CraigBampton = "craig_bampton" #15, mod craig_bampton, analysis craig_bampton::CraigBamptonKind, parse craig_bampton::parse;
         }
     };
 }

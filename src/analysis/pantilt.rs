@@ -485,7 +485,6 @@ pub fn plots(r: &PanTiltResult) -> Vec<(String, Vec<u8>)> {
 pub struct PanTiltKind;
 
 impl Analysis for PanTiltKind {
-    const KIND: &'static str = "pantilt";
     type Case = PanTiltCase;
     type Result = PanTiltResult;
 

@@ -442,7 +442,6 @@ pub fn files(r: &PrsStiffnessResult) -> Files {
 pub struct PrsStiffnessAnalysis;
 
 impl Analysis for PrsStiffnessAnalysis {
-    const KIND: &'static str = "prs_stiffness";
     type Case = PrsStiffnessCase;
     type Result = PrsStiffnessResult;
 

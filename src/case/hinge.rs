@@ -33,6 +33,19 @@ pub struct HingeCase {
     pub damping: Option<HingeDampingSpec>,
 }
 
+impl HingeCase {
+    /// Validates material and geometry (non-physical geometry is refused before solving).
+    pub fn validate(&self) -> Result<Material, CaseError> {
+        let m = self.material.resolve("material")?;
+        super::stage::check_steps("steps", self.steps, self.nonlinear)?;
+        self.hinge.profile().map_err(|e| hinge_error(&e, "hinge", "material"))?;
+        if let Some(d) = &self.damping {
+            d.run()?;
+        }
+        Ok(m)
+    }
+}
+
 /// `"damping"` of a `hinge` case.
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -123,18 +136,5 @@ pub fn hinge_error(e: &HingeError, hinge_path: &str, material_path: &str) -> Cas
         HingeError::InvalidMaterial { param, value, allowed } => {
             CaseError::value(format!("{material_path}.{param}"), number(*value), allowed)
         }
-    }
-}
-
-impl HingeCase {
-    /// Validates material and geometry (non-physical geometry is refused before solving).
-    pub fn validate(&self) -> Result<Material, CaseError> {
-        let m = self.material.resolve("material")?;
-        super::stage::check_steps("steps", self.steps, self.nonlinear)?;
-        self.hinge.profile().map_err(|e| hinge_error(&e, "hinge", "material"))?;
-        if let Some(d) = &self.damping {
-            d.run()?;
-        }
-        Ok(m)
     }
 }

@@ -1,7 +1,10 @@
-//! Command line: `run`, `check`, `schema`, `sweep`.
+//! Command line: `run`, `check`, `schema`, `sweep`, `merge`.
 
+pub mod merge;
 pub mod resume;
+pub mod shard_env;
 pub mod sweep;
+mod sweep_notes;
 mod targets;
 
 use crate::analysis::{self, RunError};
@@ -74,8 +77,27 @@ Resume: with --out FILE, a re-run keeps the lines already in FILE (and FILE.part
 design_hash still matches the design (base case with the varied values, and its mesh file), \
 reruns stale ones, and retries error rows unless --keep-errors. While it runs, FILE.lock \
 stops a second sweep (e.g. another shard) from writing the same FILE at the same time: run \
-shards one after another (their lines accumulate in FILE) or give each its own --out.")]
+shards one after another (their lines accumulate in FILE) or give each its own --out.\n\n\
+Slurm job arrays: `--shard-from-env` takes K/N from the array task (see scripts/slurm_sweep.sh); \
+`flexfem merge` combines the shard files.")]
     Sweep(sweep::SweepArgs),
+    /// Combine the shard files of a sweep (e.g. a Slurm job array's) into one, checked against
+    /// the case.
+    #[command(
+        after_help = "Exit status: 0 when every design of the case is there exactly once (identical \
+duplicate lines are dropped and counted) and none is an error row; 1 when designs are missing \
+(listed; nothing is written unless --allow-missing) or any design's line is an error row (the file \
+is written), or OUT could not be written; 2 for bad arguments, an unreadable shard file, or a line \
+that is not this sweep's as the case now is (another sweep, another base case or mesh file, an \
+older line format: stale), or two different lines for one design — the file and line are named \
+and nothing is written.\n\n\
+Each shard file must be sorted by index, as a finished `flexfem sweep --out` file is (the files \
+are read line by line, so memory does not grow with the sweep); an unfinished shard's .partial file \
+is refused — rerun that shard (it resumes) and merge its finished file. The model notes go into \
+OUT.notes.json. Afterwards `flexfem sweep CASE --out OUT` runs no design and writes the table and \
+plot of the base case's analysis beside OUT."
+    )]
+    Merge(merge::MergeArgs),
 }
 
 pub use crate::output::{EXIT_BAD_CASE, EXIT_FAILED};
@@ -185,6 +207,7 @@ pub fn run(cli: Cli) -> ExitCode {
     }
     match cli.command {
         Command::Sweep(args) => sweep::run_cli(args),
+        Command::Merge(args) => merge::run_cli(args),
         Command::Schema => emit(&format!(
             "{}\n",
             serde_json::to_string_pretty(&analysis::schema()).unwrap_or_default()

@@ -36,6 +36,14 @@ pub struct SweepArgs {
     /// Run only the designs whose index ≡ K−1 (mod N).
     #[arg(long, value_name = "K/N")]
     pub shard: Option<String>,
+    /// Take the shard K/N from a Slurm job-array task's variables: K = SLURM_ARRAY_TASK_ID
+    /// (1-based ids; 0-based when SLURM_ARRAY_TASK_MIN is 0, K = id + 1), N =
+    /// SLURM_ARRAY_TASK_COUNT or --shard-count.
+    #[arg(long, conflicts_with = "shard")]
+    pub shard_from_env: bool,
+    /// With --shard-from-env: the number of shards N (e.g. when rerunning one task of an array).
+    #[arg(long, value_name = "N", requires = "shard_from_env")]
+    pub shard_count: Option<usize>,
     /// Write the JSON lines to FILE (resumable) instead of stdout. FILE must be new or
     /// flexfem sweep output; anything else is refused unless --force.
     #[arg(long, value_name = "FILE.jsonl")]
@@ -54,30 +62,15 @@ pub struct SweepArgs {
     /// `stiffness_z,at_allowable.force,load_cases.0.platform`.
     #[arg(long, value_name = "a,b.c")]
     pub fields: Option<String>,
+    /// Keep every result field in each line. By default a stage sweep's lines leave out the
+    /// 6×6 platform compliance, the material echo and the per-hinge stresses (their maximum
+    /// stays): see `flexfem::design::sweep::omitted_fields`.
+    #[arg(long, conflicts_with = "fields")]
+    pub full: bool,
 }
 
-/// The sidecar of `--out FILE.jsonl` holding the model notes once: `FILE.jsonl.notes.json`,
-/// an object from each `model_notes` reference in the lines to the notes.
-pub fn notes_path(out: &Path) -> PathBuf {
-    crate::output::with_suffix(out, ".notes.json")
-}
-
-/// The notes already in the sidecar `path` (none if it does not exist); a file that is not a
-/// notes object is refused unless `force`.
-fn read_notes(path: &Path, force: bool) -> Result<serde_json::Map<String, Value>, Stop> {
-    match fs::read(path) {
-        Ok(bytes) => match serde_json::from_slice::<Value>(&bytes) {
-            Ok(Value::Object(m)) if m.values().all(Value::is_array) => Ok(m),
-            _ if force => Ok(serde_json::Map::new()),
-            _ => Err(Stop::Usage(format!(
-                "{} exists and is not a flexfem notes file; remove it or give --force",
-                path.display()
-            ))),
-        },
-        Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(serde_json::Map::new()),
-        Err(e) => Err(Stop::Io(io_context("read", path)(e))),
-    }
-}
+pub use super::sweep_notes::notes_path;
+use super::sweep_notes::NotesFile;
 
 /// Opens the partial file for appending; if it ends in a torn line, starts a new line so the
 /// next row is not glued to the fragment (the fragment stays unreadable and is ignored).
@@ -103,8 +96,8 @@ enum Stream {
 
 struct SinkState {
     stream: Stream,
-    /// With `--out`: the notes sidecar's path and contents (rewritten when a new reference appears).
-    notes: Option<(PathBuf, serde_json::Map<String, Value>)>,
+    /// With `--out`: the notes sidecar (a new reference is added in place).
+    notes: Option<NotesFile>,
     /// Rows kept for the CSV when they are not in a file (the values they were written from).
     kept: Option<Vec<(usize, Value)>>,
     buf: Vec<u8>,
@@ -137,8 +130,18 @@ fn failed(msg: impl fmt::Display) -> ExitCode {
 /// Runs a sweep; returns the exit code: 0 when every design succeeded, 1 when any design
 /// failed (error rows) or the output could not be written, 2 for a bad case file or arguments.
 pub fn run_cli(args: SweepArgs) -> ExitCode {
+    let from_env = args
+        .shard_from_env
+        .then(|| super::shard_env::shard_from(|v| std::env::var(v).ok(), args.shard_count));
     let shard = match args.shard.as_deref().map(|s| (s, s.parse::<Shard>())) {
-        None => Shard::ALL,
+        None => match from_env {
+            None => Shard::ALL,
+            Some(Ok(s)) => s,
+            Some(Err(msg)) => {
+                eprintln!("error: {msg}");
+                return ExitCode::from(crate::output::EXIT_BAD_CASE);
+            }
+        },
         Some((_, Ok(s))) => s,
         Some((text, Err(msg))) => {
             eprintln!("error: invalid --shard `{text}`: {msg}");
@@ -203,6 +206,11 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         base_dir,
         keep_errors: args.keep_errors,
     };
+    // Model notes go once into the sidecar of a --out file; on stdout they stay in the lines.
+    let notes = match &targets.out {
+        Some(out) => Some(NotesFile::open(notes_path(out), args.force)?),
+        None => None,
+    };
     let (done, stream) = match partial {
         Some(partial) => {
             let done = Finished::read(sweep, accept, &sources)?;
@@ -219,14 +227,14 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         Some(Ok(f)) => Some(f),
         Some(Err(msg)) => return Err(Stop::Usage(format!("invalid --fields: {msg}"))),
     };
-    // Model notes go once into the sidecar of a --out file; on stdout they stay in the lines.
-    let notes = match &targets.out {
-        Some(out) => Some((notes_path(out), read_notes(&notes_path(out), args.force)?)),
-        None => None,
+    let omit = match (&fields, args.full, sweep.base.get("analysis").and_then(Value::as_str)) {
+        (None, false, Some(kind)) => crate::design::sweep::omitted_fields(kind),
+        _ => &[],
     };
     let format = LineFormat {
         fields,
         notes_by_ref: notes.is_some(),
+        omit: omit.iter().map(|p| p.to_string()).collect(),
     };
     let state = Mutex::new(SinkState {
         notes,
@@ -244,12 +252,8 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
             buf,
             notes,
         } = &mut *st;
-        if let (Some((path, map)), Some((r, n))) = (notes.as_mut(), &row.notes) {
-            if !map.contains_key(r) {
-                map.insert(r.clone(), n.clone());
-                let text = serde_json::to_string_pretty(map).map_err(io::Error::other)?;
-                write_atomic(path, text.as_bytes()).map_err(io_context("write", path))?;
-            }
+        if let (Some(file), Some((r, n))) = (notes.as_mut(), &row.notes) {
+            file.add(r, n)?;
         }
         buf.clear();
         buf.extend_from_slice(row.line.as_bytes());
@@ -290,13 +294,14 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
             // Oldest first, so the lines just written replace retried or stale ones.
             sources.retain(|p| *p != partial);
             sources.push(partial);
-            let all = Finished::read(
+            let all = Finished::read_trusting(
                 sweep,
                 Accept {
                     keep_errors: true,
                     ..accept
                 },
                 &sources,
+                &|i| shard.contains(i),
             )?;
             failed_total = all.failed.iter().filter(|&&i| shard.contains(i)).count();
             write_atomic(out, &all.to_jsonl()).map_err(io_context("write", out))?;

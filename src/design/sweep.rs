@@ -122,6 +122,55 @@ pub struct LineFormat {
     /// sweep) out of the line: the line's result holds `model_notes`, the notes' 8-digit
     /// FNV hash, and the notes go once into a sidecar file ([`Row::notes`]).
     pub notes_by_ref: bool,
+    /// Result fields left out of the line when [`Self::fields`] is `None`, as dotted paths in
+    /// which `*` matches any key or array index (see [`omitted_fields`]).
+    pub omit: Vec<String>,
+}
+
+/// The result fields a sweep of analysis `kind` leaves out of its lines by default
+/// (`flexfem sweep --full` keeps them, `--fields` picks from the full result). A stage line
+/// keeps every scalar response; it leaves out the 6×6 platform compliance (its eigenvalues
+/// stay), the echo of the material and of the actuator forces (both in the case) and the
+/// per-hinge stresses (their maximum, `max_von_mises`, stays): ~2,100 → ~980 bytes a line.
+pub fn omitted_fields(kind: &str) -> &'static [&'static str] {
+    match kind {
+        "stage" => &[
+            "platform_stiffness.compliance",
+            "material",
+            "load_cases.*.forces",
+            "load_cases.*.hinge_stress",
+        ],
+        _ => &[],
+    }
+}
+
+/// Removes the values at a dotted path whose `*` parts match any key or index.
+fn remove_path(v: &mut Value, path: &[&str]) {
+    let Some((first, rest)) = path.split_first() else {
+        return;
+    };
+    match v {
+        Value::Object(m) if rest.is_empty() => {
+            if *first == "*" {
+                m.clear();
+            } else {
+                m.shift_remove(*first);
+            }
+        }
+        Value::Object(m) if *first == "*" => m.values_mut().for_each(|x| remove_path(x, rest)),
+        Value::Object(m) => {
+            if let Some(x) = m.get_mut(*first) {
+                remove_path(x, rest);
+            }
+        }
+        Value::Array(a) if *first == "*" && !rest.is_empty() => a.iter_mut().for_each(|x| remove_path(x, rest)),
+        Value::Array(a) if !rest.is_empty() => {
+            if let Some(x) = first.parse::<usize>().ok().and_then(|i| a.get_mut(i)) {
+                remove_path(x, rest);
+            }
+        }
+        _ => {}
+    }
 }
 
 impl LineFormat {
@@ -153,6 +202,11 @@ impl LineFormat {
             }),
             _ => None,
         };
+        if self.fields.is_none() {
+            for p in &self.omit {
+                remove_path(result, &p.split('.').collect::<Vec<_>>());
+            }
+        }
         if let Some(fields) = &self.fields {
             let mut kept = Value::Object(Map::new());
             for f in fields {
@@ -225,6 +279,17 @@ fn panic_text(p: &(dyn std::any::Any + Send)) -> String {
 #[derive(Clone, Copy)]
 struct Fnv128(u128);
 
+impl io::Write for Fnv128 {
+    fn write(&mut self, bytes: &[u8]) -> io::Result<usize> {
+        Fnv128::write(self, bytes);
+        Ok(bytes.len())
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+}
+
 impl Fnv128 {
     const OFFSET: u128 = 0x6c62_272e_07bb_0142_62b8_2175_6295_c58d;
     const PRIME: u128 = 0x0000_0000_0100_0000_0000_0000_0000_013b;
@@ -253,7 +318,8 @@ fn canonical(v: &Value, out: &mut Fnv128) {
                 if i > 0 {
                     out.write(b",");
                 }
-                out.write(Value::String(k.clone()).to_string().as_bytes());
+                // serde_json's string form of the key (escapes as in `Value::String`).
+                let _ = serde_json::to_writer(&mut *out, k);
                 out.write(b":");
                 canonical(&m[k], out);
             }
@@ -269,7 +335,9 @@ fn canonical(v: &Value, out: &mut Fnv128) {
             }
             out.write(b"]");
         }
-        scalar => out.write(scalar.to_string().as_bytes()),
+        scalar => {
+            let _ = serde_json::to_writer(&mut *out, scalar);
+        }
     }
 }
 
@@ -294,15 +362,55 @@ pub fn design_hash(sweep: &Sweep, base_dir: Option<&Path>, index: usize) -> Opti
 
 /// Runs one design: `base` with the varied paths set, parsed with `base_dir` for file
 /// references, then analysed.
-fn evaluate(sweep: &Sweep, base_dir: Option<&Path>, index: usize, cache: &mut SolverCache) -> Result<Value, String> {
+/// The design's hash goes into `hash` as soon as the design is built.
+fn evaluate(
+    sweep: &Sweep,
+    base_dir: Option<&Path>,
+    index: usize,
+    cache: &mut SolverCache,
+    shapes: &Shapes,
+    hash: &mut Option<String>,
+) -> Result<Value, String> {
     let design = sweep.design(index).map_err(|e| case_text(&e))?;
-    let case = analysis::parse_value(design, base_dir).map_err(|e| case_text(&e))?;
+    *hash = Some(hash_design(&design, base_dir));
+    let case = shapes.parse(design, base_dir).map_err(|e| case_text(&e))?;
     if let Case::Sweep(_) = case {
         return Err("analysis: a sweep cannot vary another sweep".into());
     }
-    analysis::run_with(&case, &mut Ctx::new(cache, false))
+    let mut ctx = Ctx::new(cache, false);
+    // Only the JSON goes into the line: no Markdown/CSV report.
+    ctx.with_report = false;
+    analysis::run_with(&case, &mut ctx)
         .map(|o| o.json)
         .map_err(|e| error_text(&e))
+}
+
+/// The array check of a sweep's designs ([`analysis::case_file::check_shape`]), done once per
+/// run when every varied value is a scalar: the designs then differ only in scalar values,
+/// which the check does not look at, so they all pass or fail it alike.
+struct Shapes {
+    scalar_axes: bool,
+    checked: AtomicBool,
+}
+
+impl Shapes {
+    fn new(sweep: &Sweep) -> Self {
+        let scalar = |v: &Value| !(v.is_array() || v.is_object());
+        Shapes {
+            scalar_axes: sweep.axes.iter().all(|(_, vals)| vals.iter().all(scalar)),
+            checked: AtomicBool::new(false),
+        }
+    }
+
+    /// [`analysis::parse_value`] of a design, skipping the array check once a design passed it.
+    fn parse(&self, design: Value, base_dir: Option<&Path>) -> Result<Case, CaseError> {
+        let skip = self.scalar_axes && self.checked.load(Ordering::Relaxed);
+        if !skip && design.is_object() {
+            analysis::case_file::check_shape(&design)?;
+            self.checked.store(true, Ordering::Relaxed);
+        }
+        analysis::case_file::parse_value_shaped(design, base_dir)
+    }
 }
 
 /// Runs design `index` of `sweep` into its JSON line. Never panics: a panic inside the
@@ -324,16 +432,30 @@ pub fn run_design_formatted(
     cache: &mut SolverCache,
     format: &LineFormat,
 ) -> Row {
-    let outcome =
-        panic::catch_unwind(AssertUnwindSafe(|| evaluate(sweep, base_dir, index, cache))).unwrap_or_else(|p| {
-            // A panic may have left the cache half-updated: start the worker afresh.
-            *cache = SolverCache::new();
-            Err(panic_text(p.as_ref()))
-        });
+    run_design_in(sweep, base_dir, index, cache, format, &Shapes::new(sweep))
+}
+
+fn run_design_in(
+    sweep: &Sweep,
+    base_dir: Option<&Path>,
+    index: usize,
+    cache: &mut SolverCache,
+    format: &LineFormat,
+    shapes: &Shapes,
+) -> Row {
+    let mut hash = None;
+    let outcome = panic::catch_unwind(AssertUnwindSafe(|| {
+        evaluate(sweep, base_dir, index, cache, shapes, &mut hash)
+    }))
+    .unwrap_or_else(|p| {
+        // A panic may have left the cache half-updated: start the worker afresh.
+        *cache = SolverCache::new();
+        Err(panic_text(p.as_ref()))
+    });
     let mut m = Map::with_capacity(4);
     m.insert("index".into(), index.into());
     m.insert("params".into(), Value::Object(sweep.params(index)));
-    if let Some(h) = design_hash(sweep, base_dir, index) {
+    if let Some(h) = hash.or_else(|| design_hash(sweep, base_dir, index)) {
         m.insert("design_hash".into(), Value::String(h));
     }
     let failed = outcome.is_err();
@@ -388,6 +510,7 @@ where
     let failed = AtomicUsize::new(0);
     let stop = AtomicBool::new(false);
     let first_error: Mutex<Option<io::Error>> = Mutex::new(None);
+    let shapes = Shapes::new(sweep);
     (0..shard.count(sweep.len()))
         .into_par_iter()
         .map(|j| shard.index(j))
@@ -396,7 +519,7 @@ where
             if stop.load(Ordering::Relaxed) {
                 return;
             }
-            let row = run_design_formatted(sweep, base_dir, i, cache, format);
+            let row = run_design_in(sweep, base_dir, i, cache, format, &shapes);
             let row_failed = row.failed;
             match sink(row) {
                 Ok(()) => {
@@ -506,5 +629,50 @@ mod tests {
         let c: Value = serde_json::from_str(r#"{"x": 1, "y": {"p": [1, 3], "q": "s"}}"#).unwrap();
         assert_eq!(hash_design(&a, None), hash_design(&b, None));
         assert_ne!(hash_design(&a, None), hash_design(&c, None));
+    }
+
+    /// The hash streams keys and scalars into the hasher; it must equal the hash of the
+    /// canonical text built as strings (`Value::to_string` of each key and scalar), which
+    /// earlier sweep outputs hold, so their lines stay resumable.
+    #[test]
+    fn streamed_canonical_equals_the_string_form() {
+        fn text(v: &Value, out: &mut String) {
+            match v {
+                Value::Object(m) => {
+                    let mut keys: Vec<&String> = m.keys().collect();
+                    keys.sort_unstable();
+                    out.push('{');
+                    for (i, k) in keys.into_iter().enumerate() {
+                        if i > 0 {
+                            out.push(',');
+                        }
+                        out.push_str(&Value::String(k.clone()).to_string());
+                        out.push(':');
+                        text(&m[k], out);
+                    }
+                    out.push('}');
+                }
+                Value::Array(a) => {
+                    out.push('[');
+                    for (i, x) in a.iter().enumerate() {
+                        if i > 0 {
+                            out.push(',');
+                        }
+                        text(x, out);
+                    }
+                    out.push(']');
+                }
+                scalar => out.push_str(&scalar.to_string()),
+            }
+        }
+        let v: Value = serde_json::from_str(
+            r#"{"z\"q": [1.5e-300, -0.0, 2, "a\u00e9\n"], "b": {"y": null, "x": true}, "é": 0.1}"#,
+        )
+        .unwrap();
+        let mut s = String::new();
+        text(&v, &mut s);
+        let mut h = Fnv128::new();
+        h.write(s.as_bytes());
+        assert_eq!(hash_design(&v, None), format!("{:032x}", h.0));
     }
 }

@@ -363,18 +363,12 @@ impl DofMap {
                 out[6 * node..6 * node + 6].copy_from_slice(fl.as_slice());
             }
         }
-        for (node, arm) in self.arm.iter().enumerate() {
-            let m = self.rep[node];
-            if m == node {
-                continue;
-            }
-            if let Some(r) = arm {
-                let fs = Vector6::from_column_slice(&f[6 * node..6 * node + 6]);
-                let fm = r.transpose() * fs;
-                for d in 0..6 {
-                    out[6 * m + d] += fm[d];
-                    out[6 * node + d] = 0.0;
-                }
+        for (node, m, r) in self.slaves() {
+            let fs = Vector6::from_column_slice(&f[6 * node..6 * node + 6]);
+            let fm = r.transpose() * fs;
+            for d in 0..6 {
+                out[6 * m + d] += fm[d];
+                out[6 * node + d] = 0.0;
             }
         }
         for &(g, root) in &self.alias {
@@ -382,6 +376,15 @@ impl DofMap {
             out[g] = 0.0;
         }
         out
+    }
+
+    /// The rigid-link slaves in node order: (slave, its master, the arm from the master's
+    /// DOFs to the slave's).
+    fn slaves(&self) -> impl Iterator<Item = (usize, usize, &Matrix6<f64>)> + '_ {
+        self.arm.iter().enumerate().filter_map(|(node, arm)| {
+            let m = self.rep[node];
+            arm.as_ref().filter(|_| m != node).map(|r| (node, m, r))
+        })
     }
 
     /// Reduced right-hand side: the equation entries of [`DofMap::to_independent`].
@@ -414,16 +417,10 @@ impl DofMap {
     pub fn expand(&self, q: &[f64], u_c: &[f64]) -> Vec<f64> {
         let mut u = self.scatter(q, Some(u_c));
         // Slaves from their masters' (possibly local) DOFs, then framed nodes to global.
-        for (node, arm) in self.arm.iter().enumerate() {
-            let m = self.rep[node];
-            if m == node {
-                continue;
-            }
-            if let Some(r) = arm {
-                let um = Vector6::from_column_slice(&u[6 * m..6 * m + 6]);
-                let us = r * um;
-                u[6 * node..6 * node + 6].copy_from_slice(us.as_slice());
-            }
+        for (node, m, r) in self.slaves() {
+            let um = Vector6::from_column_slice(&u[6 * m..6 * m + 6]);
+            let us = r * um;
+            u[6 * node..6 * node + 6].copy_from_slice(us.as_slice());
         }
         for &node in &self.framed {
             if let Some(r) = &self.arm[node] {

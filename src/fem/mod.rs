@@ -17,6 +17,7 @@ pub mod cache;
 pub mod chain;
 pub mod constraints;
 pub mod corot;
+pub mod craig_bampton;
 pub mod diagnose;
 pub mod dof;
 pub mod element;

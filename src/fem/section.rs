@@ -173,11 +173,9 @@ impl Section {
     /// Checks dimensions; the message says what is wrong.
     pub fn validate(&self) -> Result<(), String> {
         let pos = |name: &str, v: f64| {
-            if v.is_finite() && v > 0.0 {
-                Ok(())
-            } else {
-                Err(format!("section {name} must be positive and finite, got {v}"))
-            }
+            (v.is_finite() && v > 0.0)
+                .then_some(())
+                .ok_or_else(|| format!("section {name} must be positive and finite, got {v}"))
         };
         match *self {
             Section::Rect { w, h } => {

@@ -4,7 +4,7 @@
 //! joins (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1).
 #![allow(dead_code)]
 
-use flexfem::fem::{Element, Model, Shell4};
+use flexfem::fem::{Beam, Element, Model, Section, Shell4, Support};
 use flexfem::material::Material;
 use serde_json::{json, Value};
 
@@ -95,5 +95,30 @@ pub fn skew_grid(
     shell_grid(m, (n, n), t, material, move |i, j| {
         let (u, v) = (a * i as f64 / n as f64, a * j as f64 / n as f64);
         [u + v * sin, v * cos, 0.0]
+    })
+}
+
+/// Two vertical leaves of a parallel leaf-spring guide, at x = `xs[0]` and `xs[1]` (y = 0), each of
+/// `n` Euler–Bernoulli beams from z = 0 to z = `l` (node i at z = l·i/n), a `w` × `t` rectangle
+/// with its thickness t along global x, clamped at the base; the indices of the two top nodes.
+pub fn clamped_leaves(
+    m: &mut Model,
+    xs: [f64; 2],
+    l: f64,
+    n: usize,
+    (w, t): (f64, f64),
+    material: Material,
+) -> [usize; 2] {
+    xs.map(|x| {
+        let base = m.nodes.len();
+        for i in 0..=n {
+            m.add_node([x, 0.0, l * i as f64 / n as f64]);
+        }
+        for i in 0..n {
+            let section = Section::Rect { w, h: t };
+            m.add_beam(Beam::new(base + i, base + i + 1, section, material, [1.0, 0.0, 0.0]).euler_bernoulli());
+        }
+        m.supports.push(Support::clamp(base));
+        base + n
     })
 }

@@ -44,6 +44,16 @@ pub fn run(args: &[&str]) -> Output {
     run_in(&root(), args)
 }
 
+/// Runs `flexfem run CASE --out DIR` (DIR a fresh temp dir named `name`), asserts success and
+/// returns DIR with its parsed `result.json`.
+pub fn run_out(case: &str, name: &str) -> (PathBuf, serde_json::Value) {
+    let out = tempdir(name).join("out");
+    let o = run(&["run", case, "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let r = serde_json::from_slice(&std::fs::read(out.join("result.json")).unwrap()).unwrap();
+    (out, r)
+}
+
 /// Writes `text` as a case file in a temp dir and runs `flexfem run` on it.
 pub fn run_case_text(name: &str, text: &str) -> Output {
     let d = tempdir(name);

@@ -1,71 +1,25 @@
 //! `"analysis": "transient"`: linear transient response of a beam/shell/hinge/joint model (as
 //! for `static`) to load and prescribed-motion histories, by HHT-α or Newmark average
-//! acceleration ([`crate::fem::transient`]), with Rayleigh and per-element damping.
+//! acceleration ([`crate::fem::transient`]), with Rayleigh and per-element damping; with
+//! `"nonlinear": true`, geometrically nonlinear by Newmark average acceleration with Newton
+//! iterations per step ([`crate::fem::nonlinear::solve_transient_nonlinear`]).
 
+mod history;
 mod output;
 
 use super::kind::{Analysis, Ctx, UsedMaterial};
 use super::kind::named_materials;
 use super::{Report, RunError};
 use crate::case::fem_case::{mesh_rules, read_model, split, MODEL_FIELDS};
-use crate::case::mesh::{DofName, GmshMapping, MeshSpec};
+use crate::case::mesh::{DofName, ElementSpec, GmshMapping, MeshSpec};
 use crate::case::{from_value, CaseError};
-use crate::fem::transient::{Damping, History, PrescribedMotion, Scheme, TransientLoad, TransientOptions};
+use crate::fem::transient::{Damping, PrescribedMotion, Scheme, TransientLoad, TransientOptions};
 use crate::fem::{Dof, NodeDof};
+pub use history::{ElementDampingSpec, HistorySpec};
 pub use output::{RecordOut, TransientResult};
 use serde::Deserialize;
 use serde_json::Value;
 use std::path::Path;
-
-/// A time history g(t) by `type` (times in s).
-#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
-pub enum HistorySpec {
-    /// 0 before `start` (default 0), 1 from `start` on.
-    Step {
-        #[serde(default)]
-        start: f64,
-    },
-    /// 0 before `start` (default 0), linear to 1 at `end`, 1 after.
-    Ramp {
-        #[serde(default)]
-        start: f64,
-        end: f64,
-    },
-    /// sin(2π f (t − start) + phase) from `start` (default 0) on; `phase_deg` default 0.
-    Sine {
-        frequency_hz: f64,
-        #[serde(default)]
-        phase_deg: f64,
-        #[serde(default)]
-        start: f64,
-    },
-    /// Piecewise linear through `[time, value]` points (times strictly increasing).
-    Table { points: Vec<[f64; 2]> },
-}
-
-impl HistorySpec {
-    fn history(&self, path: &str) -> Result<History, CaseError> {
-        let h = match self {
-            HistorySpec::Step { start } => History::Step { start: *start },
-            HistorySpec::Ramp { start, end } => History::Ramp { start: *start, end: *end },
-            HistorySpec::Sine {
-                frequency_hz,
-                phase_deg,
-                start,
-            } => History::Sine {
-                frequency_hz: *frequency_hz,
-                phase_rad: phase_deg.to_radians(),
-                start: *start,
-            },
-            HistorySpec::Table { points } => History::Table {
-                points: points.iter().map(|p| (p[0], p[1])).collect(),
-            },
-        };
-        h.validate().map_err(|e| CaseError::new(path, e.to_string()))?;
-        Ok(h)
-    }
-}
 
 /// A nodal load history.
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
@@ -89,16 +43,6 @@ pub struct MotionSpec {
     /// be 0 at t = 0.
     pub value: f64,
     pub history: HistorySpec,
-}
-
-/// Extra stiffness-proportional damping of one case element.
-#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct ElementDampingSpec {
-    /// Index in `elements` (every segment of a hinge element).
-    pub element: usize,
-    /// Coefficient, s (C gets beta × the element's stiffness).
-    pub beta: f64,
 }
 
 /// Damping C = alpha M + beta K + Σ elements.
@@ -174,6 +118,11 @@ pub struct TransientCase {
     /// Full recorded series in the JSON result (default false: peaks and final values only).
     #[serde(default)]
     pub histories: bool,
+    /// Geometrically nonlinear (co-rotational beams and hinge elements, Newton iterations per
+    /// step; Newmark only, loads only, no shells; default false). Mass and damping are those of
+    /// the undeformed configuration (see the result's `model`).
+    #[serde(default)]
+    pub nonlinear: bool,
     /// The model.
     #[serde(flatten)]
     pub model: MeshSpec,
@@ -206,9 +155,11 @@ struct Options {
     frames: Option<usize>,
     #[serde(default)]
     histories: bool,
+    #[serde(default)]
+    nonlinear: bool,
 }
 
-const OWN: [&str; 15] = [
+const OWN: [&str; 16] = [
     "analysis",
     "description",
     "mesh",
@@ -223,6 +174,7 @@ const OWN: [&str; 15] = [
     "record",
     "frames",
     "histories",
+    "nonlinear",
     "load_cases",
 ];
 
@@ -254,6 +206,7 @@ pub fn parse_transient(value: Value, base: Option<&Path>) -> Result<TransientCas
         record: o.record,
         frames: o.frames,
         histories: o.histories,
+        nonlinear: o.nonlinear,
         model,
     };
     case.options(case.model.nodes.len())?;
@@ -268,6 +221,21 @@ struct Inputs {
 }
 
 impl TransientCase {
+    /// What the nonlinear solver does not take.
+    fn check_nonlinear(&self) -> Result<(), CaseError> {
+        let refuse = |p: &str, what: &str| Err(CaseError::new(p, format!("{what} is not available with \"nonlinear\": true")));
+        if matches!(self.scheme, SchemeName::Hht) {
+            return refuse("scheme", "HHT-alpha (the nonlinear solver uses Newmark average acceleration)");
+        }
+        if !self.motions.is_empty() {
+            return refuse("motions", "a prescribed motion");
+        }
+        if let Some(i) = self.model.elements.iter().position(|e| matches!(e, ElementSpec::Shell4 { .. })) {
+            return refuse(&format!("elements[{i}]"), "a shell element");
+        }
+        Ok(())
+    }
+
     fn scheme(&self) -> Result<Scheme, CaseError> {
         match (self.scheme, self.hht_alpha) {
             (SchemeName::Newmark, None) => Ok(Scheme::AverageAcceleration),
@@ -353,6 +321,9 @@ impl TransientCase {
                 None => opts.record.extend(Dof::ALL.map(|dof| NodeDof { node: n, dof })),
             }
         }
+        if self.nonlinear {
+            self.check_nonlinear()?;
+        }
         if let Some(f) = self.frames {
             if f > 10_000 {
                 return Err(CaseError::value("frames", f, "must be at most 10000"));
@@ -389,7 +360,6 @@ impl TransientCase {
 pub struct TransientKind;
 
 impl Analysis for TransientKind {
-    const KIND: &'static str = "transient";
     type Case = TransientCase;
     type Result = TransientResult;
 
@@ -403,8 +373,13 @@ impl Analysis for TransientKind {
         if !ctx.with_files {
             inputs.opts.snapshot_every = 0;
         }
-        let raw = crate::fem::transient::solve_transient(&model, &inputs.loads, &inputs.motions, &inputs.opts)
-            .map_err(|e| RunError::Analysis(super::AnalysisError::new("transient", e.to_string())))?;
+        let raw = if case.nonlinear {
+            let nl = crate::fem::nonlinear::NonlinearOptions::default();
+            crate::fem::nonlinear::solve_transient_nonlinear(&model, &inputs.loads, &inputs.opts, &nl)
+        } else {
+            crate::fem::transient::solve_transient(&model, &inputs.loads, &inputs.motions, &inputs.opts)
+        }
+        .map_err(|e| RunError::Analysis(super::AnalysisError::new("transient", e.to_string())))?;
         ctx.warnings.extend(raw.warnings.iter().cloned());
         if ctx.with_files {
             ctx.files.extend(output::files(&model, &inputs.opts, &raw)?);

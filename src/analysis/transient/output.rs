@@ -46,8 +46,10 @@ pub struct TransientResult {
     pub scheme: String,
     pub dt_s: f64,
     pub steps: usize,
-    /// Equations of the reduced system (one factorisation for the whole run).
+    /// Equations of the reduced system (one factorisation for the whole run when linear).
     pub n_eq: usize,
+    /// The mechanics: linear, or the geometrically nonlinear model and its approximations.
+    pub model: String,
     pub damping: DampingOut,
     pub records: Vec<RecordOut>,
     /// Times of the series, s (only with `"histories": true`).
@@ -99,6 +101,11 @@ pub fn result(case: &TransientCase, opts: &TransientOptions, raw: &TransientResu
         dt_s: opts.dt,
         steps: opts.steps,
         n_eq: raw.n_eq,
+        model: if case.nonlinear {
+            crate::fem::nonlinear::NONLINEAR_TRANSIENT_MODEL.into()
+        } else {
+            "linear (small displacements)".into()
+        },
         damping: DampingOut {
             alpha: opts.damping.alpha,
             beta: opts.damping.beta,

@@ -24,11 +24,7 @@ pub(super) fn solve_case(
 ) -> Result<NonlinearCase, FemError> {
     model.validate_case(case)?;
     let prescribed = prescribed_dofs(case);
-    let map = DofMap::new(model, &prescribed, Some(&case.name))?;
     let nn = model.nodes.len();
-    let arm0: Vec<Vector3<f64>> = (0..nn)
-        .map(|n| Vector3::from(model.nodes[n]) - Vector3::from(model.nodes[map.rep[n]]))
-        .collect();
     let mut f_ext = vec![0.0; 6 * nn];
     for l in &case.forces {
         for d in 0..6 {
@@ -39,75 +35,7 @@ pub(super) fn solve_case(
     for p in &case.displacements {
         u_c[6 * p.node + p.dof.index()] = p.value;
     }
-    let mut masters: Vec<usize> = model.rigid_links.iter().map(|l| l.master).collect();
-    masters.sort_unstable();
-    masters.dedup();
-    // Pattern: element pairs, master blocks, one diagonal slot per equation.
-    let n_eq = map.n_eq();
-    let pairs_of = |lower: bool| {
-        let mut pairs = Vec::new();
-        for e in elems {
-            let (nodes, nn_e) = match e {
-                ElemData::Corot { nodes, .. } => (*nodes, 2),
-                ElemData::Spring { nodes, n_nodes, .. } => (*nodes, *n_nodes),
-            };
-            let eqs = map.element_eqs([map.rep[nodes[0]], map.rep[nodes[1]]], nn_e);
-            for_each_pair_in(lower, &eqs, 6 * nn_e, |_, _, r, c| pairs.push((r, c)));
-        }
-        for &m in &masters {
-            let eqs = map.element_eqs([m, m], 1);
-            for_each_pair_in(lower, &eqs, 6, |_, _, r, c| pairs.push((r, c)));
-        }
-        pairs.extend((0..n_eq).map(|i| (i, i)));
-        pairs
-    };
-    let pairs = pairs_of(true);
-    let pattern = SparsePattern::new(n_eq, &pairs)?;
-    let symbolic = SymbolicFactor::new(&pattern)?;
-    // Moments applied at independent nodes, or forces on rigid-link slaves (a moment on the
-    // master): the tangent's skew part survives at equilibrium ([`Tangent`]).
-    let moments = (0..nn).any(|n| {
-        let f = &f_ext[6 * n..6 * n + 6];
-        f[3..].iter().any(|v| *v != 0.0) || (map.rep[n] != n && f[..3].iter().any(|v| *v != 0.0))
-    });
-    let full = match opts.tangent {
-        Tangent::Full => true,
-        Tangent::Symmetric => false,
-        Tangent::Auto => moments,
-    };
-    let full = if full {
-        Some(LuPattern::new(n_eq, &pairs_of(false))?)
-    } else {
-        None
-    };
-    let tracker = super::state::Tracker::new(model, elems, &map, &pairs, &opts.step_track)?;
-    let ctx = CaseCtx {
-        model,
-        elems,
-        map,
-        arm0,
-        f_ext,
-        u_c,
-        pattern,
-        symbolic,
-        lower_pairs: pairs,
-        mirror: std::cell::OnceCell::new(),
-        round: 1e-14
-            * elems
-                .iter()
-                .map(|e| match e {
-                    ElemData::Corot { geom, k_local, .. } => {
-                        let k = |i: usize| k_local[(i, i)].abs();
-                        (0..3).map(k).fold(0.0, f64::max) * geom.l0 + (3..6).map(k).fold(0.0, f64::max)
-                    }
-                    ElemData::Spring { k, .. } => k.iter().fold(0.0f64, |m, v| m.max(v.abs())),
-                })
-                .fold(0.0, f64::max),
-        full,
-        masters,
-        par: opts.parallelism,
-        tracker,
-    };
+    let ctx = case_ctx(model, elems, &prescribed, &case.name, f_ext, u_c, opts, &[])?;
     let mut st = State {
         u: vec![Vector3::zeros(); nn],
         r: vec![Matrix3::identity(); nn],
@@ -146,4 +74,101 @@ pub(super) fn solve_case(
             .collect();
     }
     Ok(out)
+}
+
+/// The fixed data of a solve on `model` with `prescribed` DOFs removed: DOF map, loads
+/// `f_ext` and prescribed values `u_c` (6 per node), sparsity pattern (element pairs, rigid-link
+/// master blocks, one diagonal slot per equation, then the lower-triangle pairs `extra`, whose
+/// values the caller appends to [`CaseCtx::evaluate`]'s) and symbolic factorisation.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn case_ctx<'a>(
+    model: &'a Model,
+    elems: &'a [ElemData],
+    prescribed: &[crate::fem::dof::NodeDof],
+    name: &str,
+    f_ext: Vec<f64>,
+    u_c: Vec<f64>,
+    opts: &NonlinearOptions,
+    extra: &[(usize, usize)],
+) -> Result<CaseCtx<'a>, FemError> {
+    let map = DofMap::new(model, prescribed, Some(name))?;
+    let nn = model.nodes.len();
+    let arm0: Vec<Vector3<f64>> = (0..nn)
+        .map(|n| Vector3::from(model.nodes[n]) - Vector3::from(model.nodes[map.rep[n]]))
+        .collect();
+    let mut masters: Vec<usize> = model.rigid_links.iter().map(|l| l.master).collect();
+    masters.sort_unstable();
+    masters.dedup();
+    // Pattern: element pairs, master blocks, one diagonal slot per equation.
+    let n_eq = map.n_eq();
+    let pairs_of = |lower: bool| {
+        let mut pairs = Vec::new();
+        for e in elems {
+            let (nodes, nn_e) = match e {
+                ElemData::Corot { nodes, .. } => (*nodes, 2),
+                ElemData::Spring { nodes, n_nodes, .. } => (*nodes, *n_nodes),
+            };
+            let eqs = map.element_eqs([map.rep[nodes[0]], map.rep[nodes[1]]], nn_e);
+            for_each_pair_in(lower, &eqs, 6 * nn_e, |_, _, r, c| pairs.push((r, c)));
+        }
+        for &m in &masters {
+            let eqs = map.element_eqs([m, m], 1);
+            for_each_pair_in(lower, &eqs, 6, |_, _, r, c| pairs.push((r, c)));
+        }
+        pairs.extend((0..n_eq).map(|i| (i, i)));
+        for &(r, c) in extra {
+            pairs.push((r, c));
+            if !lower && r != c {
+                pairs.push((c, r));
+            }
+        }
+        pairs
+    };
+    let pairs = pairs_of(true);
+    let pattern = SparsePattern::new(n_eq, &pairs)?;
+    let symbolic = SymbolicFactor::new(&pattern)?;
+    // Moments applied at independent nodes, or forces on rigid-link slaves (a moment on the
+    // master): the tangent's skew part survives at equilibrium ([`Tangent`]).
+    let moments = (0..nn).any(|n| {
+        let f = &f_ext[6 * n..6 * n + 6];
+        f[3..].iter().any(|v| *v != 0.0) || (map.rep[n] != n && f[..3].iter().any(|v| *v != 0.0))
+    });
+    let full = match opts.tangent {
+        Tangent::Full => true,
+        Tangent::Symmetric => false,
+        Tangent::Auto => moments,
+    };
+    let full = if full {
+        Some(LuPattern::new(n_eq, &pairs_of(false))?)
+    } else {
+        None
+    };
+    let tracker = super::state::Tracker::new(model, elems, &map, &pairs, &opts.step_track)?;
+    Ok(CaseCtx {
+        model,
+        elems,
+        map,
+        arm0,
+        f_ext,
+        u_c,
+        pattern,
+        symbolic,
+        lower_pairs: pairs,
+        mirror: std::cell::OnceCell::new(),
+        round: 1e-14
+            * elems
+                .iter()
+                .map(|e| match e {
+                    ElemData::Corot { geom, k_local, .. } => {
+                        let k = |i: usize| k_local[(i, i)].abs();
+                        (0..3).map(k).fold(0.0, f64::max) * geom.l0 + (3..6).map(k).fold(0.0, f64::max)
+                    }
+                    ElemData::Spring { k, .. } => k.iter().fold(0.0f64, |m, v| m.max(v.abs())),
+                })
+                .fold(0.0, f64::max),
+        full,
+        masters,
+        par: opts.parallelism,
+        tracker,
+    })
 }

@@ -58,6 +58,7 @@ use crate::fem::solve::Parallelism;
 mod arc;
 mod convergence;
 mod critical;
+mod dynamic;
 mod load_case;
 mod newton;
 mod path;
@@ -70,6 +71,7 @@ use load_case::solve_case;
 use state::element_data;
 
 pub use critical::{CriticalKind, CriticalPoint, CRITICAL_TOL};
+pub use dynamic::{solve_transient_nonlinear, NONLINEAR_TRANSIENT_MODEL};
 
 /// Options of the nonlinear solver.
 #[derive(Debug, Clone, PartialEq)]

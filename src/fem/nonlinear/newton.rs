@@ -3,7 +3,7 @@
 
 use super::convergence::{Convergence, Iterate, Verdict};
 use super::residual::{dot, norm};
-use super::state::{CaseCtx, State};
+use super::state::{Assemble, CaseCtx, State};
 use super::NonlinearOptions;
 
 /// Outcome of a failed step (for the error message).
@@ -58,11 +58,16 @@ pub(super) fn newton(
         internal: 0.0,
     };
     let mode = ctx.newton_tangent();
+    let degenerate = |residual: f64| StepFail {
+        residual,
+        reason: "degenerate element or non-finite internal force".into(),
+    };
     for it in 0..=opts.max_iterations {
-        let ev = ctx.evaluate(st, lambda, mode).ok_or_else(|| StepFail {
-            residual: f64::NAN,
-            reason: "degenerate element or non-finite internal force".into(),
-        })?;
+        // The residual first: the tangent (most of the cost, see fem::corot) only when the
+        // iteration goes on, so the converged state never assembles one.
+        let ev = ctx
+            .evaluate(st, lambda, Assemble::None)
+            .ok_or_else(|| degenerate(f64::NAN))?;
         let rn = norm(&ev.r);
         out.residuals.push(rn);
         let iterate = Iterate::after(&ev.r, ev.load, ev.internal, last_dq.as_deref(), &acc);
@@ -89,9 +94,10 @@ pub(super) fn newton(
             }
             Verdict::Continue => {}
         }
+        let values = ctx.evaluate(st, lambda, mode).ok_or_else(|| degenerate(rn))?.values;
         let neg: Vec<f64> = ev.r.iter().map(|v| -v).collect();
         let sol = ctx
-            .solve(&ev.values, &[neg])
+            .solve(&values, &[neg])
             .map_err(|reason| StepFail { residual: rn, reason })?;
         // The tangent of iteration 0 belongs to the previous converged state: it says nothing
         // about the new one.

@@ -13,8 +13,9 @@
 
 use super::residual::for_each_pair_in;
 use super::state::{CaseCtx, ElemData, State, Tracker};
-use super::{StepQuantities, StepTrack};
+use super::{PathPoint, StepQuantities, StepTrack};
 use crate::fem::constraints::DofMap;
+use crate::fem::dof::NodeDof;
 use crate::fem::error::FemError;
 use crate::fem::mass::{element_mass, point_mass};
 use crate::fem::modal::{factor_shifted, lanczos, median_ratio};
@@ -82,6 +83,27 @@ fn beam_eqs(elems: &[ElemData], map: &DofMap, ie: usize) -> [usize; 12] {
 }
 
 impl CaseCtx<'_> {
+    /// Appends the accepted state `st` at load factor `lambda` to `path` (the values of `track`,
+    /// its stability and the Newton iteration log `residuals` of the step that reached it) and
+    /// records the tracked quantities there ([`Self::record_step`]).
+    pub(super) fn accept_point(
+        &self,
+        path: &mut Vec<PathPoint>,
+        st: &State,
+        lambda: f64,
+        stable: bool,
+        residuals: Vec<f64>,
+        track: &[NodeDof],
+    ) -> Result<(), FemError> {
+        path.push(PathPoint {
+            lambda,
+            values: self.tracked(st, track),
+            stable,
+            residuals,
+        });
+        self.record_step(st, lambda, path.len() - 1)
+    }
+
     /// Evaluates and records the tracked quantities at the accepted state `st` (path point
     /// `point`, load factor `lambda`); nothing when no tracking was asked.
     pub(super) fn record_step(&self, st: &State, lambda: f64, point: usize) -> Result<(), FemError> {

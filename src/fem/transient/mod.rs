@@ -19,6 +19,7 @@
 //! impulse spread over one step) and load the free equations through the coupling columns of
 //! M, C and K.
 
+mod checks;
 mod record;
 
 use super::assembly::{MatrixKind, Pattern};
@@ -29,6 +30,7 @@ use super::error::FemError;
 pub use super::history::History;
 use super::model::Model;
 use super::solve::{Factor, FactorError, FullSymmetric, Parallelism, SparseMatrix, SymbolicFactor};
+pub(crate) use checks::check_inputs;
 
 /// A nodal force/moment [Fx Fy Fz Mx My Mz] (N, N·mm; node axes) times a history.
 #[derive(Debug, Clone, PartialEq)]
@@ -190,7 +192,7 @@ fn couplings(
 }
 
 /// K, M and the element damping (if any) on `pattern`.
-fn matrices(
+pub(crate) fn matrices(
     model: &Model,
     map: &DofMap,
     pattern: &Pattern,
@@ -212,43 +214,6 @@ fn matrices(
     Ok((pattern.matrix(&kv)?, pattern.matrix(&mv)?, ce))
 }
 
-fn check_options(model: &Model, opts: &TransientOptions) -> Result<(), FemError> {
-    let bad = |s: String| Err(FemError::BadInput(s));
-    if !(opts.dt.is_finite() && opts.dt > 0.0) || opts.steps == 0 {
-        return bad(format!(
-            "transient: time step {} s and {} steps: both must be > 0",
-            opts.dt, opts.steps
-        ));
-    }
-    let (a, _, _) = opts.scheme.parameters();
-    if !(-1.0 / 3.0..=0.0).contains(&a) {
-        return bad(format!("HHT alpha {a} must be in [-1/3, 0]"));
-    }
-    let d = &opts.damping;
-    let coeffs = [d.alpha, d.beta].into_iter().chain(d.element_beta.iter().map(|e| e.1));
-    if coeffs.clone().any(|c| !(c.is_finite() && c >= 0.0)) {
-        return bad("damping coefficients must be finite and ≥ 0".into());
-    }
-    if let Some(&(ie, _)) = d.element_beta.iter().find(|e| e.0 >= model.elements.len()) {
-        return bad(format!(
-            "element damping names element {ie}; the model has {}",
-            model.elements.len()
-        ));
-    }
-    if let Some(r) = opts.record.iter().find(|r| r.node >= model.nodes.len()) {
-        return bad(format!("recorded DOF {r}: no such node ({} nodes)", model.nodes.len()));
-    }
-    match &opts.initial {
-        Some((u, v)) if u.len() != model.n_dofs() || v.len() != model.n_dofs() => bad(format!(
-            "initial state: {} and {} values for {} DOFs",
-            u.len(),
-            v.len(),
-            model.n_dofs()
-        )),
-        _ => Ok(()),
-    }
-}
-
 /// Integrates the model from rest (or `opts.initial`) under `loads` and `motions`.
 pub fn solve_transient(
     model: &Model,
@@ -256,18 +221,8 @@ pub fn solve_transient(
     motions: &[PrescribedMotion],
     opts: &TransientOptions,
 ) -> Result<TransientResults, FemError> {
-    model.validate()?;
-    check_options(model, opts)?;
+    check_inputs(model, loads, opts)?;
     let n_nodes = model.nodes.len();
-    for l in loads {
-        l.history.validate()?;
-        if l.node >= n_nodes || l.f.iter().any(|v| !v.is_finite()) {
-            return Err(FemError::BadInput(format!(
-                "transient load at node {}: no such node or a non-finite value",
-                l.node
-            )));
-        }
-    }
     let mut prescribed = Vec::with_capacity(motions.len());
     for m in motions {
         m.history.validate()?;
