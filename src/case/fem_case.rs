@@ -162,7 +162,7 @@ pub(crate) struct ModalOptions {
 
 /// The top-level fields of a `static` or `modal` case that are the model's (those of
 /// [`MeshSpec`]).
-pub const MODEL_FIELDS: [&str; 7] = [
+pub const MODEL_FIELDS: [&str; 8] = [
     "materials",
     "sections",
     "nodes",
@@ -170,6 +170,7 @@ pub const MODEL_FIELDS: [&str; 7] = [
     "rigid_links",
     "supports",
     "load_cases",
+    "ordering",
 ];
 
 const STATIC_OWN: [&str; 9] = [

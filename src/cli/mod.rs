@@ -19,6 +19,10 @@ use std::process::ExitCode;
 pub struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// Worker threads (sparse factorisation and solves of big models, modal products, the
+    /// designs of a sweep — one thread per design). Default: RAYON_NUM_THREADS, else one per core.
+    #[arg(long, global = true, value_name = "N", value_parser = clap::value_parser!(u16).range(1..=4096))]
+    threads: Option<u16>,
 }
 
 /// Output format of `run` on stdout.
@@ -194,6 +198,13 @@ fn emit(text: &str) -> ExitCode {
 
 /// Runs the command line; returns the process exit code.
 pub fn run(cli: Cli) -> ExitCode {
+    if let Some(n) = cli.threads {
+        // Fails only if the global pool already exists (a second `run` in one process): then
+        // that pool is kept.
+        let _ = rayon::ThreadPoolBuilder::new()
+            .num_threads(usize::from(n))
+            .build_global();
+    }
     match cli.command {
         Command::Sweep(args) => sweep::run_cli(args),
         Command::Merge(args) => merge::run_cli(args),

@@ -49,7 +49,7 @@ impl System {
         model.validate()?;
         let map = DofMap::new(model, prescribed, None)?;
         let pattern = Pattern::new(model, &map)?;
-        let symbolic = SymbolicFactor::new(pattern.sparse())?;
+        let symbolic = SymbolicFactor::with_ordering(pattern.sparse(), model.ordering)?;
         Self::build(model, map, prescribed, pattern, &symbolic, par)
     }
 

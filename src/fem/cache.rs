@@ -18,7 +18,7 @@ use super::dof::NodeDof;
 use super::error::FemError;
 use super::model::{LoadCase, Model};
 use super::recovery::CaseResult;
-use super::solve::{Parallelism, SymbolicFactor};
+use super::solve::{FillOrdering, Parallelism, SymbolicFactor};
 
 /// Systems kept per cache (one per set of prescribed DOFs, most recent last): a stage uses
 /// two (force-driven and stroke-driven load cases), a static model one per constraint set.
@@ -83,15 +83,15 @@ impl SolverCache {
     }
 
     /// The symbolic factorisation of the pattern last returned by [`Self::modal_pattern`]:
-    /// cached after its first computation.
-    pub fn modal_symbolic(&mut self, pattern: &Pattern) -> Result<SymbolicFactor, FemError> {
+    /// cached after its first computation (with the fill-reducing `ordering` asked for then).
+    pub fn modal_symbolic(&mut self, pattern: &Pattern, ordering: FillOrdering) -> Result<SymbolicFactor, FemError> {
         if let Some((_, cached, Some(symbolic))) = &self.modal {
             if cached.sparse().nnz() == pattern.sparse().nnz() && cached.sparse().n() == pattern.sparse().n() {
                 self.reused += 1;
                 return Ok(symbolic.clone());
             }
         }
-        let symbolic = SymbolicFactor::new(pattern.sparse())?;
+        let symbolic = SymbolicFactor::with_ordering(pattern.sparse(), ordering)?;
         self.built += 1;
         if let Some((_, _, slot)) = &mut self.modal {
             *slot = Some(symbolic.clone());

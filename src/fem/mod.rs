@@ -32,6 +32,7 @@ pub mod mass;
 pub mod matrices;
 pub mod modal;
 pub mod model;
+pub mod nd;
 pub mod nonlinear;
 pub mod recovery;
 pub mod results;

@@ -148,7 +148,7 @@ pub fn solve_modal_cached(
         None if check_free_bodies(model, &map).is_ok() => vec![0.0, negative_shift()],
         None => vec![negative_shift()],
     };
-    let symbolic = cache.modal_symbolic(&pattern)?;
+    let symbolic = cache.modal_symbolic(&pattern, model.ordering)?;
     let Some((shift, factor)) = factor_shifted(&k, &m, &symbolic, &shifts, opts.par)? else {
         return Err(singular(&map, &k));
     };

@@ -124,6 +124,8 @@ pub struct Model {
     pub frames: std::collections::BTreeMap<usize, [[f64; 3]; 3]>,
     /// Ties (exact joint releases) between coincident nodes.
     pub ties: Vec<Tie>,
+    /// Fill-reducing ordering of the sparse Cholesky factor (default: chosen automatically).
+    pub ordering: super::nd::FillOrdering,
 }
 
 impl Model {

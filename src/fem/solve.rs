@@ -1,19 +1,25 @@
 //! Sparse symmetric positive definite solve — the only file that names faer types.
 //!
 //! Structure and values are kept apart (faer 0.24): [`SparsePattern`] holds the lower-triangle
-//! pattern and the argsort that sums duplicate triplets; [`SymbolicFactor`] holds the AMD
-//! ordering and elimination structure (cheap to clone, reusable for every model with the same
-//! pattern); [`Factor`] holds the numeric L of LLᵀ and can be refactorised in place.
+//! pattern and the argsort that sums duplicate triplets; [`SymbolicFactor`] holds the
+//! fill-reducing ordering (AMD or nested dissection) and elimination structure (cheap to clone,
+//! reusable for every model with the same pattern); [`Factor`] holds the numeric L of LLᵀ and
+//! can be refactorised in place.
 
 use super::error::FemError;
+pub use super::nd::FillOrdering;
+use super::nd::{nested_dissection, ND_MIN_N};
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::cholesky::llt::factor::{LltError, LltRegularization};
+use faer::perm::PermRef;
 use faer::sparse::linalg::cholesky::simplicial::SimplicialLltRef;
 use faer::sparse::linalg::cholesky::supernodal::SupernodalLltRef;
 use faer::sparse::linalg::cholesky::{
-    factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymbolicCholeskyRaw, SymmetricOrdering,
+    factorize_symbolic_cholesky, CholeskySymbolicParams, LltRef, SymbolicCholesky, SymbolicCholeskyRaw,
+    SymmetricOrdering,
 };
 use faer::sparse::linalg::lu::{factorize_symbolic_lu, NumericLu, SymbolicLu};
+use faer::sparse::linalg::SupernodalThreshold;
 use faer::sparse::{Argsort, Pair, SparseColMat, SymbolicSparseColMat};
 use faer::{Conj, MatMut, Par, Side};
 use std::io::Write;
@@ -274,24 +280,91 @@ impl FullSymmetric {
     }
 }
 
-/// Ordering and elimination structure of the sparse Cholesky factor (AMD fill-reducing
-/// ordering; faer picks simplicial or supernodal). Cheap to clone (reference-counted).
+/// Ordering and elimination structure of the sparse Cholesky factor (fill-reducing ordering
+/// AMD or nested dissection, see [`FillOrdering`]; faer picks simplicial or supernodal). Cheap
+/// to clone (reference-counted).
 #[derive(Debug, Clone)]
 pub struct SymbolicFactor {
     inner: Arc<SymbolicCholesky<usize>>,
+    ordering: FillOrdering,
 }
 
 impl SymbolicFactor {
-    /// Symbolic analysis of a pattern (once per topology).
+    /// Symbolic analysis of a pattern (once per topology), ordering chosen automatically
+    /// ([`FillOrdering::Auto`]).
     pub fn new(pattern: &SparsePattern) -> Result<SymbolicFactor, FemError> {
-        let inner = factorize_symbolic_cholesky(
-            pattern.symbolic.as_ref(),
-            Side::Lower,
-            SymmetricOrdering::Amd,
-            Default::default(),
-        )
-        .map_err(|e| FemError::Solver(format!("symbolic factorisation: {e:?}")))?;
-        Ok(SymbolicFactor { inner: Arc::new(inner) })
+        Self::with_ordering(pattern, FillOrdering::Auto)
+    }
+
+    /// Symbolic analysis with the given fill-reducing ordering.
+    pub fn with_ordering(pattern: &SparsePattern, ordering: FillOrdering) -> Result<SymbolicFactor, FemError> {
+        let n = pattern.n();
+        match ordering {
+            FillOrdering::Amd => Self::amd(pattern),
+            FillOrdering::Nd => Self::nd(pattern),
+            FillOrdering::Auto if n < ND_MIN_N => Self::amd(pattern),
+            FillOrdering::Auto => {
+                let amd = Self::amd(pattern)?;
+                match Self::nd(pattern) {
+                    Ok(nd) if nd.nnz_l() < amd.nnz_l() => Ok(nd),
+                    _ => Ok(amd),
+                }
+            }
+        }
+    }
+
+    fn amd(pattern: &SparsePattern) -> Result<SymbolicFactor, FemError> {
+        Self::analyse(pattern, SymmetricOrdering::Amd, FillOrdering::Amd)
+    }
+
+    fn nd(pattern: &SparsePattern) -> Result<SymbolicFactor, FemError> {
+        let sym = pattern.symbolic.as_ref();
+        let (perm, iperm) = nested_dissection(sym.col_ptr(), sym.row_idx())?;
+        let perm = PermRef::new_checked(&perm, &iperm, pattern.n());
+        Self::analyse(pattern, SymmetricOrdering::Custom(perm), FillOrdering::Nd)
+    }
+
+    fn analyse(
+        pattern: &SparsePattern,
+        order: SymmetricOrdering<'_, usize>,
+        ordering: FillOrdering,
+    ) -> Result<SymbolicFactor, FemError> {
+        let inner = factorize_symbolic_cholesky(pattern.symbolic.as_ref(), Side::Lower, order, Default::default())
+            .map_err(|e| FemError::Solver(format!("symbolic factorisation: {e:?}")))?;
+        Ok(SymbolicFactor {
+            inner: Arc::new(inner),
+            ordering,
+        })
+    }
+
+    /// Entries of L counted from the elimination tree (no explicit zeros of amalgamated
+    /// supernodes, which [`SymbolicFactor::nnz_l`] includes), to compare the fill of orderings
+    /// with other solvers. Runs a simplicial symbolic analysis of `pattern` with this ordering.
+    pub fn structural_nnz_l(&self, pattern: &SparsePattern) -> Result<usize, FemError> {
+        let params = CholeskySymbolicParams {
+            supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SIMPLICIAL,
+            ..Default::default()
+        };
+        let order = match self.inner.perm() {
+            Some(p) => SymmetricOrdering::Custom(p),
+            None => SymmetricOrdering::Identity,
+        };
+        factorize_symbolic_cholesky(pattern.symbolic.as_ref(), Side::Lower, order, params)
+            .map(|s| s.len_val())
+            .map_err(|e| FemError::Solver(format!("symbolic factorisation: {e:?}")))
+    }
+
+    /// The ordering used: [`FillOrdering::Amd`] or [`FillOrdering::Nd`] (never `Auto`).
+    pub fn ordering(&self) -> FillOrdering {
+        self.ordering
+    }
+
+    /// The fill-reducing permutation: new equation i is original equation `perm()[i]`.
+    pub fn perm(&self) -> Vec<usize> {
+        match self.inner.perm() {
+            Some(p) => p.arrays().0.to_vec(),
+            None => (0..self.n()).collect(),
+        }
     }
 
     /// Dimension.

@@ -31,6 +31,9 @@ impl MeshSpec {
         if !inline.load_cases.is_empty() {
             mesh.load_cases = inline.load_cases;
         }
+        if inline.ordering.is_some() {
+            mesh.ordering = inline.ordering;
+        }
         Ok(mesh)
     }
 
@@ -174,6 +177,7 @@ impl MeshSpec {
             let lc = super::build_loads::load_case(&mut cx, &format!("load_cases[{ic}]"), c)?;
             cx.model.load_cases.push(lc);
         }
+        cx.model.ordering = self.ordering.map(|o| o.fill_ordering()).unwrap_or_default();
         Ok((cx.model, cx.hinges, cx.model_index))
     }
 }

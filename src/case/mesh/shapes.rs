@@ -234,6 +234,11 @@ pub struct MeshSpec {
     /// Load cases (`static`: at least one, inline or in the mesh file; `modal` ignores them).
     #[serde(default)]
     pub load_cases: Vec<LoadCaseSpec>,
+    /// Fill-reducing ordering of the sparse Cholesky factor: `"auto"` (default: AMD for small
+    /// models, else the smaller factor of AMD and nested dissection), `"amd"` (approximate
+    /// minimum degree) or `"nd"` (nested dissection, METIS).
+    #[serde(default)]
+    pub ordering: Option<OrderingSpec>,
     /// Gmsh meshes: the mapped physical groups of each element (filled by the `.msh` reader;
     /// not a case-file field).
     #[serde(skip)]
@@ -245,6 +250,43 @@ pub struct MeshSpec {
     #[serde(skip)]
     #[schemars(skip)]
     pub group_cells: BTreeMap<String, Vec<Vec<usize>>>,
+}
+
+/// `"ordering"`: the fill-reducing ordering of the sparse Cholesky factor.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, schemars::JsonSchema)]
+#[serde(rename_all = "lowercase", try_from = "serde_json::Value")]
+#[schemars(extend("type" = "string", "enum" = ["auto", "amd", "nd"]))]
+pub enum OrderingSpec {
+    /// AMD for small models, else whichever of AMD and nested dissection fills less.
+    Auto,
+    /// Approximate minimum degree.
+    Amd,
+    /// Nested dissection (METIS).
+    Nd,
+}
+
+impl TryFrom<serde_json::Value> for OrderingSpec {
+    type Error = String;
+    fn try_from(v: serde_json::Value) -> Result<OrderingSpec, String> {
+        match v.as_str() {
+            Some("auto") => Ok(OrderingSpec::Auto),
+            Some("amd") => Ok(OrderingSpec::Amd),
+            Some("nd") => Ok(OrderingSpec::Nd),
+            _ => Err(format!("{v} is not an ordering: expected \"auto\", \"amd\" or \"nd\"")),
+        }
+    }
+}
+
+impl OrderingSpec {
+    /// The FE solver's ordering.
+    pub fn fill_ordering(self) -> crate::fem::solve::FillOrdering {
+        use crate::fem::solve::FillOrdering;
+        match self {
+            OrderingSpec::Auto => FillOrdering::Auto,
+            OrderingSpec::Amd => FillOrdering::Amd,
+            OrderingSpec::Nd => FillOrdering::Nd,
+        }
+    }
 }
 
 /// A rigid link.

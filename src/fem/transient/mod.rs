@@ -268,7 +268,7 @@ pub fn solve_transient(
             .lin_comb(1.0, ce, ap * c1)
             .ok_or_else(|| FemError::PatternMismatch("K and C patterns differ".into()))?;
     }
-    let symbolic = SymbolicFactor::new(pattern.sparse())?;
+    let symbolic = SymbolicFactor::with_ordering(pattern.sparse(), model.ordering)?;
     let factor = match Factor::new(&symbolic, &eff, opts.par) {
         Ok(f) => f,
         Err(FactorError::NotPositiveDefinite) => {
