@@ -8,19 +8,16 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use flexfem::fem::shell_loads::pressure_loads;
 use flexfem::fem::shell_recovery::shell_field;
-use flexfem::fem::{solve_static, Dof, Element, LoadCase, Model, Shell4, Support};
-use flexfem::material::Material;
+use flexfem::fem::{solve_static, LoadCase, Model};
 use std::hint::black_box;
 use std::time::Duration;
 
+#[path = "common/plate.rs"]
+mod common_plate;
+
+/// The shared plate (benches/common/plate.rs) under 0.01 MPa uniform pressure.
 fn plate(n: usize) -> Model {
-    let a = 1000.0;
-    let mut m = Model::new();
-    for j in 0..=n {
-        for i in 0..=n {
-            m.add_node([a * i as f64 / n as f64, a * j as f64 / n as f64, 0.0]);
-        }
-    }
+    let mut m = common_plate::plate(n);
     let id = |i: usize, j: usize| j * (n + 1) + i;
     let mut lc = LoadCase::new("p");
     for j in 0..n {
@@ -30,18 +27,6 @@ fn plate(n: usize) -> Model {
             let f = pressure_loads(&x, 0.01).expect("flat quad");
             for (k, &node) in nodes.iter().enumerate() {
                 lc = lc.force(node, f[k]);
-            }
-            m.add_element(Element::Shell4(Shell4 {
-                nodes,
-                t: 5.0,
-                material: Material::AL7075,
-            }));
-        }
-    }
-    for j in 0..=n {
-        for i in 0..=n {
-            if i == 0 || j == 0 || i == n || j == n {
-                m.supports.push(Support::dofs(id(i, j), &[Dof::Ux, Dof::Uy, Dof::Uz]));
             }
         }
     }
