@@ -92,8 +92,9 @@ struct Leg {
 pub struct LinearStage<'a> {
     stage: &'a ValidStage,
     legs: [Leg; 3],
-    /// The full 9×9 stiffness (u_P, s₁, s₂, s₃).
+    /// The full 9×9 stiffness (u_P, s₁, s₂, s₃) and its Cholesky factor.
     k: SMatrix<f64, 9, 9>,
+    k_all: nalgebra::Cholesky<f64, nalgebra::Const<9>>,
     /// Cholesky factor of the platform block (sliders held).
     k_pp: nalgebra::Cholesky<f64, nalgebra::Const<6>>,
     /// Leg beam section properties, E, G and stress points.
@@ -117,8 +118,8 @@ fn flex(c: [[f64; 6]; 6]) -> Option<Matrix6<f64>> {
 
 impl ValidStage {
     /// The stage condensed for linear load cases ([`LinearStage`], no heap allocation); `None`
-    /// with ideal joints, or when a hinge flexibility or a leg chain is not positive definite
-    /// (the FE model then reports the error in its own terms).
+    /// with ideal joints, or when a hinge flexibility, a leg chain or the stage stiffness is not
+    /// positive definite (the FE model then reports the error in its own terms).
     pub fn linear(&self) -> Option<LinearStage<'_>> {
         if self.ideal_joints {
             return None;
@@ -142,6 +143,7 @@ impl ValidStage {
                 g: Vector6::zeros(),
             }),
             k: SMatrix::zeros(),
+            k_all: SMatrix::<f64, 9, 9>::identity().cholesky()?,
             k_pp: Matrix6::identity().cholesky()?,
             props: section.properties(self.material.nu),
             young: self.material.e,
@@ -169,14 +171,14 @@ impl ValidStage {
                     None => ok = false,
                 }
             });
+            if !ok {
+                return None;
+            }
             let c_b = (c_b + c_b.transpose()) * 0.5;
             let k = c_b.cholesky()?.inverse();
             let e = self.prs.e(i);
             let mut ue = Vector6::zeros();
             ue.fixed_rows_mut::<3>(0).copy_from(&e);
-            if !ok {
-                return None;
-            }
             s.legs[i] = Leg {
                 i,
                 e,
@@ -198,6 +200,8 @@ impl ValidStage {
             s.k[(6 + leg.i, 6 + leg.i)] = leg.g.dot(&kg);
         }
         s.k_pp = s.k.fixed_view::<6, 6>(0, 0).into_owned().cholesky()?;
+        // Positive definite whenever the platform block and the chains are.
+        s.k_all = s.k.cholesky()?;
         Some(s)
     }
 }
@@ -259,12 +263,7 @@ impl LinearStage<'_> {
             Drive::Forces(f) => {
                 let mut rhs = SVector::<f64, 9>::zeros();
                 (0..3).for_each(|i| rhs[6 + i] = f[i]);
-                // The 9×9 system is positive definite whenever its platform block is and the
-                // chains are (checked when built).
-                let u = match self.k.cholesky() {
-                    Some(ch) => ch.solve(&rhs),
-                    None => SVector::repeat(f64::NAN),
-                };
+                let u = self.k_all.solve(&rhs);
                 (u.fixed_rows::<6>(0).into_owned(), [u[6], u[7], u[8]], Some(f))
             }
             Drive::Strokes(s) => {
