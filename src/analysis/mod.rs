@@ -19,6 +19,7 @@ pub mod modal;
 pub mod path_rows;
 pub mod registry;
 pub mod stage;
+mod stage_modes;
 pub mod stage_report;
 pub mod sweep_plot;
 pub mod track;
