@@ -29,13 +29,16 @@
 //! ```
 //! with η = q₁/q₂, ηᵢⱼ = qᵢⱼ/q₂ (components of q and qᵢ = RᵢR₀e₂ in the co-rotated frame).
 //! Internal force f = Bᵀ k₇ p (exact first variation of the strain energy ½ pᵀk₇p); tangent
-//! K = Bᵀ k₇ B + ∂(Bᵀ f₇)/∂d|_{f₇ fixed}: the material part is closed form, the geometric part
-//! (the derivative of B: the terms D, Q, a, K_h of Battini–Pacoste eqs. (40)–(48)) is
-//! evaluated by central differences of the closed-form B at fixed local forces (12 pairs of
-//! B evaluations, relative error ~1e-10), so K is the consistent tangent to that accuracy.
+//! K = Bᵀ k₇ B + ∂(Bᵀ f₇)/∂d|_{f₇ fixed}, both parts in closed form ([`tangent`]: the terms
+//! D, Q, K_h of Battini–Pacoste eqs. (40)–(48), with the variation of G derived in full, η and
+//! ηᵢⱼ included), so K is the exact consistent tangent. [`geometric_tangent_fd`] keeps the
+//! former evaluation of the geometric part by central differences of B as a check.
 
 use super::transform::{skew, Mat12};
+
+mod tangent;
 use nalgebra::{Matrix3, Rotation3, SMatrix, SVector, Vector3};
+pub use tangent::geometric_tangent;
 
 /// 7×12 matrix.
 pub type Mat7x12 = SMatrix<f64, 7, 12>;
@@ -151,6 +154,26 @@ pub struct Kinematics {
 /// Kinematics of the element (see the module docs). `None` for a degenerate configuration
 /// (zero length, r₁ parallel to q, non-finite input).
 pub fn kinematics(g: &CorotGeometry, n1: &NodeState, n2: &NodeState) -> Option<Kinematics> {
+    kinematics_aux(g, n1, n2).map(|(k, _)| k)
+}
+
+/// What the closed-form tangent needs besides [`Kinematics`] (local components, co-rotated
+/// frame): −Gᵀ, the nodal Ts⁻¹(θ̄ᵢ), and q, qᵢ (see the module docs).
+#[derive(Debug, Clone)]
+struct Aux {
+    mgt: SMatrix<f64, 3, 12>,
+    th: [Vector3<f64>; 2],
+    ts: [Matrix3<f64>; 2],
+    /// qᵢ in the co-rotated frame.
+    qil: [Vector3<f64>; 2],
+    /// Second local component of q (its third is zero).
+    q_y: f64,
+    eta: f64,
+    /// ηᵢⱼ = (qᵢ)ⱼ/q₂ (j = first, second local component).
+    eij: [[f64; 2]; 2],
+}
+
+fn kinematics_aux(g: &CorotGeometry, n1: &NodeState, n2: &NodeState) -> Option<(Kinematics, Aux)> {
     // (X₂ − X₁) + (u₂ − u₁): round-off relative to the element length, not to the coordinates.
     let x21 = (g.x2 - g.x1) + (n2.u - n1.u);
     let ln = x21.norm();
@@ -199,7 +222,8 @@ pub fn kinematics(g: &CorotGeometry, n1: &NodeState, n2: &NodeState) -> Option<K
         b[(0, j)] = -r1[j];
         b[(0, 6 + j)] = r1[j];
     }
-    for (i, th) in [(0usize, &th1), (1usize, &th2)] {
+    let ts = [ts_inv(&th1), ts_inv(&th2)];
+    for (i, tsi) in ts.iter().enumerate() {
         let mut pi = mgt;
         for k in 0..3 {
             pi[(k, 3 + 6 * i + k)] += 1.0;
@@ -210,7 +234,7 @@ pub fn kinematics(g: &CorotGeometry, n1: &NodeState, n2: &NodeState) -> Option<K
             let blk = pi.fixed_view::<3, 3>(0, 3 * c) * rrt;
             pe.fixed_view_mut::<3, 3>(0, 3 * c).copy_from(&blk);
         }
-        let rows = ts_inv(th) * pe;
+        let rows = tsi * pe;
         b.fixed_view_mut::<3, 12>(1 + 3 * i, 0).copy_from(&rows);
     }
     let mut p = Vec7::zeros();
@@ -220,7 +244,16 @@ pub fn kinematics(g: &CorotGeometry, n1: &NodeState, n2: &NodeState) -> Option<K
     p[0] = (2.0 * x0 + dx).dot(&dx) / (ln + g.l0);
     p.fixed_rows_mut::<3>(1).copy_from(&th1);
     p.fixed_rows_mut::<3>(4).copy_from(&th2);
-    Some(Kinematics { rr, p, b, ln })
+    let aux = Aux {
+        mgt,
+        th: [th1, th2],
+        ts,
+        qil: [q1l, q2l],
+        q_y: ql[1],
+        eta,
+        eij: [[e11, e12], [e21, e22]],
+    };
+    Some((Kinematics { rr, p, b, ln }, aux))
 }
 
 /// The 7×7 block of a 12×12 local stiffness on [`LOCAL_IDX`].
@@ -252,7 +285,9 @@ pub struct CorotResponse {
     pub rr: Matrix3<f64>,
 }
 
-fn perturbed(n: &NodeState, j: usize, h: f64) -> NodeState {
+/// `n` moved by `h` along DOF `j` (0–2: translation, mm; 3–5: spatial spin, rad,
+/// R ← exp([h eⱼ₋₃×])R): the variations the tangent is the derivative for.
+pub fn perturbed(n: &NodeState, j: usize, h: f64) -> NodeState {
     let mut m = *n;
     if j < 3 {
         m.u[j] += h;
@@ -264,10 +299,11 @@ fn perturbed(n: &NodeState, j: usize, h: f64) -> NodeState {
     m
 }
 
-/// Geometric part ∂(Bᵀ f₇)/∂d of the tangent at fixed local forces `f7` = [N, M₁, M₂]
-/// (central differences of the closed-form B, see the module docs), global, not symmetrised.
-/// `None` for a degenerate configuration.
-pub fn geometric_tangent(g: &CorotGeometry, n1: &NodeState, n2: &NodeState, f7: &Vec7) -> Option<Mat12> {
+/// Geometric part ∂(Bᵀ f₇)/∂d of the tangent at fixed local forces `f7` = [N, M₁, M₂] by
+/// central differences of the closed-form B (relative error ~1e-10; 24 evaluations of B),
+/// global, not symmetrised: the check of the closed form [`geometric_tangent`]. `None` for a
+/// degenerate configuration.
+pub fn geometric_tangent_fd(g: &CorotGeometry, n1: &NodeState, n2: &NodeState, f7: &Vec7) -> Option<Mat12> {
     let mut k = Mat12::zeros();
     let ht = 1e-6 * g.l0.max(1e-12);
     let hr = 1e-6;
@@ -299,7 +335,7 @@ pub fn response(
     n2: &NodeState,
     with_tangent: bool,
 ) -> Option<CorotResponse> {
-    let kin = kinematics(g, n1, n2)?;
+    let (kin, aux) = kinematics_aux(g, n1, n2)?;
     let k7 = k7_of(k_local);
     let f7 = k7 * kin.p;
     let f = kin.b.transpose() * f7;
@@ -307,7 +343,7 @@ pub fn response(
     let f_local = k_local * d_local;
     let mut k = Mat12::zeros();
     if with_tangent {
-        k = kin.b.transpose() * k7 * kin.b + geometric_tangent(g, n1, n2, &f7)?;
+        k = kin.b.transpose() * k7 * kin.b + tangent::to_global(&tangent::geometric_local(&aux, &kin, &f7), &kin.rr);
     }
     if f.iter().any(|v| !v.is_finite()) || k.iter().any(|v| !v.is_finite()) {
         return None;
