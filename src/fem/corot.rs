@@ -312,7 +312,7 @@ impl Linearisation {
     pub fn tangent(&self) -> Option<Mat12> {
         let kin = &self.kin;
         let ks = tangent::geometric_local(&self.aux, kin, &self.f7);
-        let k = kin.b.transpose() * self.k7 * kin.b + tangent::to_global(&ks, &kin.rr);
+        let k = kin.b.tr_mul(&(self.k7 * kin.b)) + tangent::to_global(&ks, &kin.rr);
         k.iter().all(|v| v.is_finite()).then_some(k)
     }
 }

@@ -103,24 +103,36 @@ pub(super) fn geometric_local(aux: &Aux, kin: &Kinematics, f7: &Vec7) -> Mat12 {
         k[(a + 1, b + 1)] += s;
         k[(a + 2, b + 2)] += s;
     }
-    // δE n = −Q Gᵀ d_l (mgt = −Gᵀ).
+    // The terms right-multiplied by −Gᵀ (= mgt) share one 12×3·3×12 product, x·mgt:
+    // δE n = −Q Gᵀ d_l gives the 3-blocks [nⱼ×] of x, and Σ Pᵢᵀ K_hᵢ Pᵢ (Pᵢ = Iᵢ + mgt, Iᵢ the
+    // spin block of node i) = (Σ Iᵢᵀ K_hᵢ + mgtᵀ Σ K_hᵢ)·mgt + Σ Pᵢᵀ K_hᵢ Iᵢ.
     let n = p[0].tr_mul(&m[0]) + p[1].tr_mul(&m[1]);
+    let mut x = SMatrix::<f64, 12, 3>::zeros();
     for j in 0..4 {
         let nj = Vector3::new(n[3 * j], n[3 * j + 1], n[3 * j + 2]);
-        let mut rows = k.fixed_view_mut::<3, 12>(3 * j, 0);
-        rows += skew(&nj) * aux.mgt;
+        x.fixed_view_mut::<3, 3>(3 * j, 0).copy_from(&skew(&nj));
     }
-    // −δG (m₁ + m₂).
+    let kh: [Matrix3<f64>; 2] = std::array::from_fn(|i| h_matrix(&aux.th[i], &mbar[i]) * aux.ts[i]);
+    x += aux.mgt.tr_mul(&(kh[0] + kh[1]));
+    for (i, khi) in kh.iter().enumerate() {
+        let mut blk = x.fixed_view_mut::<3, 3>(3 + 6 * i, 0);
+        blk += khi;
+        let mut cols = k.fixed_view_mut::<12, 3>(0, 3 + 6 * i);
+        cols += p[i].tr_mul(khi);
+    }
+    k += x * aux.mgt;
+    // −δG (m₁ + m₂): η, ηᵢⱼ (rows 0, 1 of δqᵢ = −[qᵢ×] Pᵢ d_l) and lₙ.
     let ms = m[0] + m[1];
-    let jq: [Mat3x12; 2] = std::array::from_fn(|i| -skew(&aux.qil[i]) * p[i]);
+    let jq: [SMatrix<f64, 2, 12>; 2] =
+        std::array::from_fn(|i| -skew(&aux.qil[i]).fixed_rows::<2>(0).into_owned() * p[i]);
     let jm = (jq[0] + jq[1]) * 0.5;
     let jy: Row12 = jm.row(1).into_owned();
     let qy = aux.q_y;
     let de = |i: usize, c: usize| (jq[i].row(c) - jy * aux.eij[i][c]) * (0.5 * ms[0] / qy);
-    let mut cl = Row12::zeros();
-    cl[0] = -1.0;
-    cl[6] = 1.0;
-    let deta = ((jm.row(0) - jy * aux.eta) / (qy * ln) - cl * (aux.eta / (ln * ln))) * ms[0];
+    let mut deta = (jm.row(0) - jy * aux.eta) * (ms[0] / (qy * ln));
+    let dl = aux.eta * ms[0] / (ln * ln);
+    deta[0] += dl;
+    deta[6] -= dl;
     for (row, s, d) in [
         (2, -1.0, deta),
         (8, 1.0, deta),
@@ -132,13 +144,11 @@ pub(super) fn geometric_local(aux: &Aux, kin: &Kinematics, f7: &Vec7) -> Mat12 {
         let mut r = k.row_mut(row);
         r += d * s;
     }
-    // g₁, g₂ (rows 1, 2 of Gᵀ) scale with 1/lₙ.
-    let g12 = -(aux.mgt.row(1) * ms[1] + aux.mgt.row(2) * ms[2]) / ln;
-    k += g12.transpose() * cl;
-    // δmᵢ = K_hᵢ Pᵢ d_l.
-    for i in 0..2 {
-        let kh = h_matrix(&aux.th[i], &mbar[i]) * aux.ts[i];
-        k += p[i].transpose() * (kh * p[i]);
+    // g₁, g₂ (rows 1, 2 of Gᵀ) scale with 1/lₙ; δlₙ = d₆ − d₀ (local components).
+    let g12 = (aux.mgt.row(1) * ms[1] + aux.mgt.row(2) * ms[2]) / ln;
+    for r in 0..12 {
+        k[(r, 0)] += g12[r];
+        k[(r, 6)] -= g12[r];
     }
     k
 }
