@@ -63,8 +63,9 @@ pub(super) fn newton(
         reason: "degenerate element or non-finite internal force".into(),
     };
     for it in 0..=opts.max_iterations {
-        // The residual first: the tangent (most of the cost, see fem::corot) only when the
-        // iteration goes on, so the converged state never assembles one.
+        // The residual first, keeping each element's linearisation: the tangent is formed
+        // from it only when the iteration goes on (the converged state never assembles one,
+        // and no iteration evaluates the element kinematics twice).
         let (ev, lins) = ctx.residual(st, lambda).ok_or_else(|| degenerate(f64::NAN))?;
         let rn = norm(&ev.r);
         out.residuals.push(rn);
