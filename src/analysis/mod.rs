@@ -199,8 +199,10 @@ pub fn run_with(case: &Case, ctx: &mut Ctx) -> Result<Outcome, RunError> {
         }
         m.insert("warnings".into(), serde_json::Value::from(out.warnings.clone()));
     }
-    out.report.markdown += &materials_markdown(&materials);
-    out.report.markdown += &warnings_markdown(&out.warnings);
+    if ctx.with_report {
+        out.report.markdown += &materials_markdown(&materials);
+        out.report.markdown += &warnings_markdown(&out.warnings);
+    }
     Ok(out)
 }
 

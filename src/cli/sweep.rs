@@ -12,6 +12,7 @@
 //! line a sweep line) unless `--force`. A sweep with any error row exits 1.
 
 use super::resume::{Accept, Finished};
+use super::sweep_finish::{finish, Output, Written};
 use super::targets::{check_replaceable, io_context, Kind, Stop, Targets};
 use crate::case::sweep::Sweep;
 use crate::case::CaseError;
@@ -100,6 +101,8 @@ struct SinkState {
     notes: Option<NotesFile>,
     /// Rows kept for the CSV when they are not in a file (the values they were written from).
     kept: Option<Vec<(usize, Value)>>,
+    /// With `--out` onto an output that held nothing: this run's lines ([`Written`]).
+    written: Option<Written>,
     buf: Vec<u8>,
 }
 
@@ -219,6 +222,7 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         }
         None => (Finished::default(), Stream::Stdout(io::stdout())),
     };
+    let fresh = partial.is_some() && done.is_nothing();
     let skip: HashSet<usize> = done.lines.keys().copied().filter(|&i| shard.contains(i)).collect();
     let to_run = in_shard - skip.len();
     let keep_for_csv = args.csv.is_some() && args.out.is_none();
@@ -240,6 +244,7 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         notes,
         stream,
         kept: keep_for_csv.then(Vec::new),
+        written: fresh.then(Vec::new),
         buf: Vec::with_capacity(4096),
     });
     let pb = progress_bar(to_run);
@@ -249,6 +254,7 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         let SinkState {
             stream,
             kept,
+            written,
             buf,
             notes,
         } = &mut *st;
@@ -279,6 +285,9 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         if let Some(k) = kept {
             k.push((row.index, row.value));
         }
+        if let Some(w) = written {
+            w.push((row.index, row.failed, row.line));
+        }
         pb.inc(1);
         Ok(())
     });
@@ -288,56 +297,23 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
     drop(state.stream);
 
     let mut failed_total = tally.failed + done.failed.iter().filter(|&&i| shard.contains(i)).count();
-    let axes: Vec<&str> = sweep.axes.iter().map(|(p, _)| p.as_str()).collect();
     let csv_text: Option<String> = match (&targets.out, partial) {
         (Some(out), Some(partial)) => {
-            // Oldest first, so the lines just written replace retried or stale ones.
-            sources.retain(|p| *p != partial);
-            sources.push(partial);
-            let all = Finished::read_trusting(
-                sweep,
-                Accept {
-                    keep_errors: true,
-                    ..accept
-                },
-                &sources,
-                &|i| shard.contains(i),
-            )?;
-            failed_total = all.failed.iter().filter(|&&i| shard.contains(i)).count();
-            write_atomic(out, &all.to_jsonl()).map_err(io_context("write", out))?;
-            fs::remove_file(partial).or_else(|e| match e.kind() {
-                io::ErrorKind::NotFound => Ok(()),
-                _ => Err(e),
-            })?;
-            if all.in_shard(shard) != in_shard {
-                eprintln!(
-                    "warning: {} holds {} of the {in_shard} designs",
-                    out.display(),
-                    all.in_shard(shard)
-                );
-            }
-            // Files of the base case's analysis beside the JSON lines (a stage sweep's plot
-            // and table).
-            let lines: Vec<String> = all.lines.values().cloned().collect();
-            for (file, p) in &targets.extras {
-                let text = if file.table {
-                    let refs: Vec<&str> = lines.iter().map(String::as_str).collect();
-                    Some(table::csv(&axes, &refs))
-                } else {
-                    sweep_kind(sweep).and_then(|a| a.render_sweep_file(file, &lines))
-                };
-                if let Some(text) = text {
-                    write_atomic(p, text.as_bytes()).map_err(io_context("write", p))?;
-                }
-            }
-            args.csv.as_ref().map(|_| {
-                let refs: Vec<&str> = lines.iter().map(String::as_str).collect();
-                table::csv(&axes, &refs)
-            })
+            let output = Output {
+                out,
+                partial,
+                sources,
+                accept,
+                written: state.written,
+            };
+            let (failed, csv) = finish(sweep, shard, output, &targets.extras, args.csv.is_some())?;
+            failed_total = failed;
+            csv
         }
         // Rows of this run only, in memory: the table reads the values the lines were written
         // from (no round trip through the text).
         _ => state.kept.map(|mut k| {
+            let axes: Vec<&str> = sweep.axes.iter().map(|(p, _)| p.as_str()).collect();
             k.sort_unstable_by_key(|(i, _)| *i);
             let rows: Vec<Value> = k.into_iter().map(|(_, v)| v).collect();
             table::csv_of_rows(&axes, &rows)
@@ -385,15 +361,6 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         eprintln!("error: {failed_total} of {in_shard} designs failed (their lines hold an \"error\"; exit code 1)");
     }
     Ok(failed_total)
-}
-
-/// The registered analysis of a sweep's base case.
-fn sweep_kind(sweep: &Sweep) -> Option<&'static dyn crate::analysis::DynAnalysis> {
-    sweep
-        .base
-        .get("analysis")
-        .and_then(Value::as_str)
-        .and_then(crate::analysis::registry::find)
 }
 
 fn rate(n: usize, d: Duration) -> f64 {

@@ -193,10 +193,13 @@ fn run_design_in(
         Err(msg) => m.insert("error".into(), Value::String(msg)),
     };
     let value = Value::Object(m);
+    // Straight into a byte buffer: `Value`'s `Display` (the same compact text) goes through
+    // `fmt::Formatter`, several times slower on number-heavy lines.
+    let line = serde_json::to_string(&value).unwrap_or_else(|_| value.to_string());
     Row {
         index,
         failed,
-        line: value.to_string(),
+        line,
         value,
         notes,
     }
