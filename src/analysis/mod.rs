@@ -22,6 +22,7 @@ pub mod stage;
 pub mod stage_report;
 pub mod sweep_plot;
 pub mod track;
+pub mod units;
 pub mod vtu;
 pub mod warn;
 

@@ -316,7 +316,7 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
             let axes: Vec<&str> = sweep.axes.iter().map(|(p, _)| p.as_str()).collect();
             k.sort_unstable_by_key(|(i, _)| *i);
             let rows: Vec<Value> = k.into_iter().map(|(_, v)| v).collect();
-            table::csv_of_rows(&axes, &rows)
+            table::csv_of_rows_with_units(&axes, &rows, super::sweep_finish::units_of(sweep))
         }),
     };
     if let (Some(csv), Some(text)) = (&args.csv, csv_text) {

@@ -5,6 +5,7 @@
 use super::resume::{Accept, Finished};
 use super::targets::{io_context, Stop};
 use crate::analysis::kind::SweepFile;
+use crate::analysis::units::UnitOf;
 use crate::case::sweep::Sweep;
 use crate::design::sweep::Shard;
 use crate::design::table;
@@ -83,7 +84,7 @@ pub(super) fn finish(
     let axes: Vec<&str> = sweep.axes.iter().map(|(p, _)| p.as_str()).collect();
     let table = (want_csv || extras.iter().any(|(f, _)| f.table)).then(|| {
         let refs: Vec<&str> = lines.iter().map(String::as_str).collect();
-        table::csv(&axes, &refs)
+        table::csv_with_units(&axes, &refs, units_of(sweep))
     });
     for (file, p) in extras {
         let text = if file.table {
@@ -96,6 +97,15 @@ pub(super) fn finish(
         }
     }
     Ok((failed, table.filter(|_| want_csv)))
+}
+
+/// The column units of the sweep's analysis kind ([`crate::analysis::units`]).
+pub(super) fn units_of(sweep: &Sweep) -> Option<(UnitOf, UnitOf)> {
+    sweep
+        .base
+        .get("analysis")
+        .and_then(Value::as_str)
+        .and_then(crate::analysis::units::of_kind)
 }
 
 /// The registered analysis of a sweep's base case.
