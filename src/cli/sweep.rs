@@ -95,15 +95,12 @@ enum Stream {
     File(File),
 }
 
+/// What the sink keeps under its lock (the lines themselves are written outside it).
 struct SinkState {
-    stream: Stream,
-    /// With `--out`: the notes sidecar (a new reference is added in place).
-    notes: Option<NotesFile>,
     /// Rows kept for the CSV when they are not in a file (the values they were written from).
     kept: Option<Vec<(usize, Value)>>,
     /// With `--out` onto an output that held nothing: this run's lines ([`Written`]).
     written: Option<Written>,
-    buf: Vec<u8>,
 }
 
 fn progress_bar(len: usize) -> indicatif::ProgressBar {
@@ -241,37 +238,30 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         omit: omit.iter().map(|p| p.to_string()).collect(),
     };
     let state = Mutex::new(SinkState {
-        notes,
-        stream,
         kept: keep_for_csv.then(Vec::new),
         written: fresh.then(Vec::new),
-        buf: Vec::with_capacity(4096),
     });
+    // With --out: the notes sidecar (a new reference is added in place, under its own lock).
+    let notes = notes.map(Mutex::new);
     let pb = progress_bar(to_run);
     let stdout_tty = args.out.is_none() && io::stdout().is_terminal();
     let tally = run_sweep_formatted(sweep, base_dir, shard, &skip, &format, |row: Row| {
-        let mut st = state.lock().unwrap_or_else(|p| p.into_inner());
-        let SinkState {
-            stream,
-            kept,
-            written,
-            buf,
-            notes,
-        } = &mut *st;
-        if let (Some(file), Some((r, n))) = (notes.as_mut(), &row.notes) {
-            file.add(r, n)?;
+        // The notes entry goes in before the first line that refers to it.
+        if let (Some(file), Some((r, n))) = (&notes, &row.notes) {
+            file.lock().unwrap_or_else(|p| p.into_inner()).add(r, n)?;
         }
-        buf.clear();
-        buf.extend_from_slice(row.line.as_bytes());
-        buf.push(b'\n');
-        match stream {
-            Stream::File(f) => f
-                .write_all(buf)
+        // One write per line, without a lock of ours: the partial file is opened for appending
+        // (each write lands whole at the end), stdout has its own lock.
+        let mut line = row.line;
+        line.push('\n');
+        match &stream {
+            Stream::File(f) => (&mut &*f)
+                .write_all(line.as_bytes())
                 .map_err(|e| io_context("append to", partial.unwrap_or(Path::new("")))(e))?,
             Stream::Stdout(s) => {
                 let write = || -> io::Result<()> {
                     let mut lock = s.lock();
-                    lock.write_all(buf)?;
+                    lock.write_all(line.as_bytes())?;
                     lock.flush()
                 };
                 let write = || write().map_err(|e| io::Error::new(e.kind(), format!("cannot write to stdout: {e}")));
@@ -282,19 +272,23 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
                 }
             }
         }
-        if let Some(k) = kept {
+        line.pop();
+        let mut st = state.lock().unwrap_or_else(|p| p.into_inner());
+        if let Some(k) = &mut st.kept {
             k.push((row.index, row.value));
         }
-        if let Some(w) = written {
-            w.push((row.index, row.failed, row.line));
+        if let Some(w) = &mut st.written {
+            w.push((row.index, row.failed, line));
         }
+        drop(st);
         pb.inc(1);
         Ok(())
     });
     pb.finish_and_clear();
     let tally = tally?;
     let state = state.into_inner().unwrap_or_else(|p| p.into_inner());
-    drop(state.stream);
+    drop(stream);
+    drop(notes);
 
     let mut failed_total = tally.failed + done.failed.iter().filter(|&&i| shard.contains(i)).count();
     let csv_text: Option<String> = match (&targets.out, partial) {

@@ -12,7 +12,9 @@ use super::targets::{io_context, Stop};
 use serde_json::{Map, Value};
 use std::collections::HashSet;
 use std::fs::{self, File, OpenOptions};
-use std::io::{self, Seek, SeekFrom, Write};
+use std::io;
+#[cfg(not(unix))]
+use std::io::{Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
 
 /// The sidecar of `--out FILE.jsonl`: `FILE.jsonl.notes.json`.
@@ -56,6 +58,19 @@ fn recover(text: &str) -> Option<Map<String, Value>> {
         }
     }
     Some(m)
+}
+
+/// Writes `text` at `offset` (one positioned write on Unix, seek and write elsewhere).
+fn write_at(file: &mut File, text: &[u8], offset: u64) -> io::Result<()> {
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::FileExt::write_all_at(file, text, offset)
+    }
+    #[cfg(not(unix))]
+    {
+        file.seek(SeekFrom::Start(offset))?;
+        file.write_all(text)
+    }
 }
 
 impl NotesFile {
@@ -123,9 +138,7 @@ impl NotesFile {
         let mut text = b",\n".to_vec();
         text.extend_from_slice(&entry(r, notes)?);
         text.extend_from_slice(b"\n}\n");
-        file.seek(SeekFrom::Start(*end))
-            .and_then(|_| file.write_all(&text))
-            .map_err(io_context("write", &self.path))?;
+        write_at(file, &text, *end).map_err(io_context("write", &self.path))?;
         *end += text.len() as u64 - 3;
         self.known.insert(r.to_string());
         Ok(())
