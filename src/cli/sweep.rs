@@ -248,7 +248,9 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
     let tally = run_sweep_formatted(sweep, base_dir, shard, &skip, &format, |row: Row| {
         // The notes entry goes in before the first line that refers to it.
         if let (Some(file), Some((r, n))) = (&notes, &row.notes) {
-            file.lock().unwrap_or_else(|p| p.into_inner()).add(r, n)?;
+            file.lock()
+                .unwrap_or_else(|p| p.into_inner())
+                .add(r, n, row.notes_json.as_deref())?;
         }
         // One write per line, without a lock of ours: the partial file is opened for appending
         // (each write lands whole at the end), stdout has its own lock.

@@ -32,12 +32,17 @@ pub(super) struct NotesFile {
     open: Option<(File, u64)>,
 }
 
-/// One entry's text: `"ref":[…]` (compact JSON).
-fn entry(r: &str, notes: &Value) -> io::Result<Vec<u8>> {
+/// One entry's text: `"ref":[…]`, from the notes' compact JSON.
+fn entry(r: &str, json: &[u8]) -> io::Result<Vec<u8>> {
     let mut out = serde_json::to_vec(r).map_err(io::Error::other)?;
     out.push(b':');
-    serde_json::to_writer(&mut out, notes).map_err(io::Error::other)?;
+    out.extend_from_slice(json);
     Ok(out)
+}
+
+/// The compact JSON of `notes`.
+fn json_of(notes: &Value) -> io::Result<Vec<u8>> {
+    serde_json::to_vec(notes).map_err(io::Error::other)
 }
 
 /// The entries of a sidecar whose text does not parse as a whole (a torn last entry): each
@@ -112,7 +117,7 @@ impl NotesFile {
         let mut text = vec![b'{'];
         for (k, (r, n)) in notes.iter().enumerate() {
             text.extend_from_slice(if k == 0 { b"\n" } else { b",\n" });
-            text.extend_from_slice(&entry(r, n)?);
+            text.extend_from_slice(&entry(r, &json_of(n)?)?);
         }
         text.extend_from_slice(b"\n}\n");
         crate::output::write_atomic(&self.path, &text).map_err(io_context("write", &self.path))?;
@@ -125,8 +130,9 @@ impl NotesFile {
         Ok(())
     }
 
-    /// Adds the notes of reference `r` unless the file has them already.
-    pub(super) fn add(&mut self, r: &str, notes: &Value) -> io::Result<()> {
+    /// Adds the notes of reference `r` unless the file has them already (`json`: the notes as
+    /// compact JSON, when the caller has it).
+    pub(super) fn add(&mut self, r: &str, notes: &Value, json: Option<&str>) -> io::Result<()> {
         if self.known.contains(r) {
             return Ok(());
         }
@@ -136,7 +142,10 @@ impl NotesFile {
             return self.rewrite(&m);
         };
         let mut text = b",\n".to_vec();
-        text.extend_from_slice(&entry(r, notes)?);
+        match json {
+            Some(json) => text.extend_from_slice(&entry(r, json.as_bytes())?),
+            None => text.extend_from_slice(&entry(r, &json_of(notes)?)?),
+        }
         text.extend_from_slice(b"\n}\n");
         write_at(file, &text, *end).map_err(io_context("write", &self.path))?;
         *end += text.len() as u64 - 3;

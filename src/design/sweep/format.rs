@@ -84,13 +84,34 @@ impl LineFormat {
         format!("{:08x}", (h.0 >> 96) as u32)
     }
 
-    /// Applies the format to a design's result; returns the notes taken out.
-    pub(super) fn apply(&self, result: &mut Value) -> Option<(String, Value)> {
+    /// [`Self::notes_ref`] of notes whose compact JSON is `json`: when they hold no object
+    /// (notes are an array of strings) the canonical text is that JSON, hashed as it stands.
+    fn notes_ref_of(notes: &Value, json: &str) -> String {
+        fn has_object(v: &Value) -> bool {
+            match v {
+                Value::Object(_) => true,
+                Value::Array(a) => a.iter().any(has_object),
+                _ => false,
+            }
+        }
+        if has_object(notes) {
+            return Self::notes_ref(notes);
+        }
+        let mut h = Fnv128::new();
+        h.write(json.as_bytes());
+        format!("{:08x}", (h.0 >> 96) as u32)
+    }
+
+    /// Applies the format to a design's result; returns the notes taken out, as (reference,
+    /// notes, their compact JSON).
+    pub(super) fn apply(&self, result: &mut Value) -> Option<(String, Value, String)> {
         let notes = match (self.notes_by_ref, result.as_object_mut()) {
             (true, Some(m)) => m.remove("model").map(|notes| {
-                let r = Self::notes_ref(&notes);
+                // Serialised once: hashed for the reference and written to the sidecar.
+                let json = serde_json::to_string(&notes).unwrap_or_else(|_| notes.to_string());
+                let r = Self::notes_ref_of(&notes, &json);
                 m.insert("model_notes".into(), Value::String(r.clone()));
-                (r, notes)
+                (r, notes, json)
             }),
             _ => None,
         };
@@ -132,5 +153,23 @@ fn insert_path(out: &mut Value, path: &[&str], v: Value) {
     }
     if let Value::Object(m) = cur {
         m.insert(last.to_string(), v);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The reference hashed from the notes' JSON equals the canonical one (escapes, non-ASCII
+    /// and numbers included), and notes holding an object still sort its keys.
+    #[test]
+    fn notes_reference_from_json_is_the_canonical_one() {
+        for notes in [
+            serde_json::json!(["a \"quoted\" note", "K_t = 1.2345", "é\n\t", 1.5e-300, -0.0]),
+            serde_json::json!([{"z": 1, "a": 2}, "x"]),
+        ] {
+            let json = serde_json::to_string(&notes).unwrap();
+            assert_eq!(LineFormat::notes_ref_of(&notes, &json), LineFormat::notes_ref(&notes));
+        }
     }
 }

@@ -52,6 +52,8 @@ pub struct Row {
     /// With [`LineFormat::notes_by_ref`]: the model notes taken out of the line, as
     /// (`model_notes` reference, notes).
     pub notes: Option<(String, Value)>,
+    /// The notes of [`Self::notes`] as compact JSON (what the sidecar holds).
+    pub notes_json: Option<String>,
 }
 
 /// What [`run_sweep`] did.
@@ -185,9 +187,13 @@ fn run_design_in(
     }
     let failed = outcome.is_err();
     let mut notes = None;
+    let mut notes_json = None;
     match outcome {
         Ok(mut result) => {
-            notes = format.apply(&mut result);
+            if let Some((r, n, json)) = format.apply(&mut result) {
+                notes = Some((r, n));
+                notes_json = Some(json);
+            }
             m.insert("result".into(), result)
         }
         Err(msg) => m.insert("error".into(), Value::String(msg)),
@@ -202,6 +208,7 @@ fn run_design_in(
         line,
         value,
         notes,
+        notes_json,
     }
 }
 
