@@ -21,6 +21,7 @@
 //! stiffer: the linear FE pose must then equal the linearised rigid-body kinematics.
 
 mod build;
+mod hinge_memo;
 mod linear;
 mod mesh_export;
 mod nonlinear;
