@@ -42,23 +42,23 @@ impl FillOrdering {
 /// it the factorisation takes milliseconds and AMD's ordering is the cheaper one to compute.
 pub const ND_MIN_N: usize = 10_000;
 
-/// METIS_NodeND settings tried by [`nested_dissection`], as (UFACTOR, seed). UFACTOR u lets the
-/// two sides of a separator differ in size by up to a factor 1 + u/1000 (METIS's default for
-/// orderings is 200); seed -1 is METIS's default. Looser balance often buys smaller separators,
-/// and the separators depend on METIS's random matchings, so the work of the factor varies by
-/// tens of percent between settings: on the 31³-cell beam lattice (190 464 equations) Σc_j² is
-/// 7.99·10¹¹ with the defaults and 5.81·10¹¹ with UFACTOR 400 (single seeds at UFACTOR 200 spread
-/// over 7.2–8.1·10¹¹). Each setting costs one METIS call (about 2 % of that factorisation).
-pub const ND_SETTINGS: [(i32, i32); 4] = [(200, -1), (300, -1), (400, -1), (500, -1)];
+/// METIS_NodeND balance factors (UFACTOR) tried by [`nested_dissection`]: UFACTOR u allows the
+/// parts split off by a separator a load imbalance of 1 + u/1000 (200 is METIS's default for
+/// orderings). Looser balance can buy much smaller separators: on the 31³-cell beam lattice
+/// (190 464 equations) the work Σc_j² of the factor is 7.99·10¹¹ with the default and 5.81·10¹¹
+/// with 400 (5.73–5.85·10¹¹ over four random seeds, against 7.2–8.1·10¹¹ at 200), on other
+/// meshes the default may stay the best. The four METIS calls with their column counts take
+/// about 2.6 s of CPU there, against 0.8 s for one call and 17–23 s for the factorisation.
+pub const ND_UFACTORS: [i32; 4] = [200, 300, 400, 500];
 
 /// METIS keeps its random number generator in a global: calls from several threads at once
 /// would draw from one sequence and make the orderings depend on timing.
 static METIS_LOCK: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
 /// Nested-dissection ordering (METIS_NodeND) of the symmetric matrix whose lower triangle has the
-/// compressed-column pattern `col_ptr`, `row_idx`: of the orderings for the settings
-/// [`ND_SETTINGS`], the one whose factor needs the least work (column counts from
-/// [`factor_counts`]; ties keep the earlier setting). Returns `(perm, iperm)`: new equation i is old equation
+/// compressed-column pattern `col_ptr`, `row_idx`: of the orderings for the balance factors
+/// [`ND_UFACTORS`] (other options METIS's defaults), the one whose factor needs the least work
+/// (column counts from [`factor_counts`]; ties keep the earlier one). Returns `(perm, iperm)`: new equation i is old equation
 /// `perm[i]`, and old equation j is new equation `iperm[j]`.
 pub fn nested_dissection(col_ptr: &[usize], row_idx: &[usize]) -> Result<(Vec<usize>, Vec<usize>), FemError> {
     let n = col_ptr.len().saturating_sub(1);
@@ -66,17 +66,16 @@ pub fn nested_dissection(col_ptr: &[usize], row_idx: &[usize]) -> Result<(Vec<us
         return Ok(((0..n).collect(), (0..n).collect()));
     }
     let (xadj, adjncy) = metis_graph(col_ptr, row_idx)?;
-    let mut best: Option<(f64, (Vec<usize>, Vec<usize>))> = None;
-    for (ufactor, seed) in ND_SETTINGS {
-        let order = metis_node_nd(&xadj, &adjncy, ufactor, seed)?;
+    let mut best = metis_node_nd(&xadj, &adjncy, ND_UFACTORS[0])?;
+    let mut best_work = factor_counts(col_ptr, row_idx, &best.1).work;
+    for ufactor in &ND_UFACTORS[1..] {
+        let order = metis_node_nd(&xadj, &adjncy, *ufactor)?;
         let work = factor_counts(col_ptr, row_idx, &order.1).work;
-        if best.as_ref().is_none_or(|(w, _)| work < *w) {
-            best = Some((work, order));
+        if work < best_work {
+            (best, best_work) = (order, work);
         }
     }
-    Ok(best
-        .map(|(_, o)| o)
-        .unwrap_or_else(|| ((0..n).collect(), (0..n).collect())))
+    Ok(best)
 }
 
 /// Adjacency graph of both triangles without the diagonal, in METIS's CSR format.
@@ -121,14 +120,9 @@ fn metis_graph(col_ptr: &[usize], row_idx: &[usize]) -> Result<(Vec<idx_t>, Vec<
     Ok((xadj, adjncy))
 }
 
-/// METIS_NodeND on a graph from [`metis_graph`] with the given UFACTOR and seed (see
-/// [`ND_SETTINGS`]), other options METIS's defaults.
-fn metis_node_nd(
-    xadj: &[idx_t],
-    adjncy: &[idx_t],
-    ufactor: i32,
-    seed: i32,
-) -> Result<(Vec<usize>, Vec<usize>), FemError> {
+/// METIS_NodeND on a graph from [`metis_graph`] with the given UFACTOR (see [`ND_UFACTORS`]),
+/// other options METIS's defaults.
+fn metis_node_nd(xadj: &[idx_t], adjncy: &[idx_t], ufactor: i32) -> Result<(Vec<usize>, Vec<usize>), FemError> {
     let n = xadj.len() - 1;
     let (mut xadj, mut adjncy) = (xadj.to_vec(), adjncy.to_vec());
     let mut options = [0 as idx_t; metis_sys::METIS_NOPTIONS as usize];
@@ -144,7 +138,6 @@ fn metis_node_nd(
             metis_sys::METIS_SetDefaultOptions(options.as_mut_ptr());
             options[metis_sys::moptions_et_METIS_OPTION_NUMBERING as usize] = 0;
             options[metis_sys::moptions_et_METIS_OPTION_UFACTOR as usize] = ufactor;
-            options[metis_sys::moptions_et_METIS_OPTION_SEED as usize] = seed;
             metis_sys::METIS_NodeND(
                 &mut nvtxs,
                 xadj.as_mut_ptr(),
