@@ -7,7 +7,11 @@
 //! `nd`) the bench builds that model, times DOF map + pattern + assembly, ordering + symbolic
 //! analysis, numeric factorisation and one solve (wall and process CPU seconds), prints one JSON
 //! line with nnz(L), and with `FLEXFEM_ORDERING_MTX=FILE` writes K as Matrix Market. Threads:
-//! `RAYON_NUM_THREADS`.
+//! `RAYON_NUM_THREADS`. `FLEXFEM_ORDERING_PERM=FILE` factorises with the permutation in FILE (one
+//! 0-based original equation per line, in elimination order, e.g. CHOLMOD's `L->Perm` for the
+//! Matrix Market file written above) instead of the ordering named, to time the numeric kernel
+//! on another solver's ordering; `FLEXFEM_ORDERING_EXACT=1` also reports nnz(L) without the
+//! explicit zeros of amalgamated supernodes.
 
 use criterion::Criterion;
 use flexfem::fem::assembly::Pattern;
@@ -86,6 +90,14 @@ fn timed<T>(f: impl FnOnce() -> T) -> (T, f64, f64) {
     (out, t.elapsed().as_secs_f64(), cpu_s() - c)
 }
 
+/// A permutation written one 0-based index per line (new equation i is old equation line i).
+fn read_perm(path: &str) -> Vec<usize> {
+    let text = std::fs::read_to_string(path).expect("permutation file");
+    text.lines()
+        .map(|l| l.trim().parse().expect("permutation index"))
+        .collect()
+}
+
 fn report(spec: &str) {
     let w: Vec<&str> = spec.split_whitespace().collect();
     let size: usize = w.get(1).and_then(|s| s.parse().ok()).expect("size");
@@ -116,7 +128,10 @@ fn report(spec: &str) {
         let mut f = std::fs::File::create(&path).expect("mtx file");
         k.write_matrix_market(&mut f).expect("write mtx");
     }
-    let (sym, t_order, c_order) = timed(|| SymbolicFactor::with_ordering(pat.sparse(), ordering).expect("symbolic"));
+    let (sym, t_order, c_order) = timed(|| match std::env::var("FLEXFEM_ORDERING_PERM") {
+        Ok(path) => SymbolicFactor::with_permutation(pat.sparse(), &read_perm(&path)).expect("symbolic"),
+        Err(_) => SymbolicFactor::with_ordering(pat.sparse(), ordering).expect("symbolic"),
+    });
     let exact = if std::env::var("FLEXFEM_ORDERING_EXACT").is_ok_and(|v| v == "1") {
         sym.structural_nnz_l(pat.sparse()).expect("structural nnz")
     } else {

@@ -72,7 +72,7 @@ fn nested_dissection_solves_as_amd() {
 
 #[test]
 fn nested_dissection_fills_less_than_amd_on_a_3d_lattice() {
-    // 12³-cell lattice, 12 168 equations. Measured: nnz(L) AMD 4 484 520, ND 4 143 168 (0.924;
+    // 12³-cell lattice, 12 168 equations. Measured: nnz(L) AMD 4 484 520, ND 3 595 068 (0.802;
     // on the 31³-cell, 196 608-equation lattice the gap is wider, see the ordering bench). Nested
     // dissection's fill on 3-D grids is O(n^{4/3}) (A. George, SIAM J. Numer. Anal. 10 (1973)
     // 345–363); the assertion: ND below 95 % of AMD.

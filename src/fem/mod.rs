@@ -34,6 +34,7 @@ pub mod modal;
 pub mod model;
 pub mod nd;
 pub mod nonlinear;
+pub mod ordering_counts;
 pub mod recovery;
 pub mod results;
 pub mod section;

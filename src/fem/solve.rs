@@ -313,6 +313,24 @@ impl SymbolicFactor {
         }
     }
 
+    /// Symbolic analysis with a given fill-reducing permutation (new equation i is original
+    /// equation `perm[i]`), e.g. another solver's ordering of the same matrix; reported as
+    /// [`FillOrdering::Nd`].
+    pub fn with_permutation(pattern: &SparsePattern, perm: &[usize]) -> Result<SymbolicFactor, FemError> {
+        let n = pattern.n();
+        let mut iperm = vec![usize::MAX; n];
+        for (i, &p) in perm.iter().enumerate() {
+            if p < n && iperm[p] == usize::MAX {
+                iperm[p] = i;
+            }
+        }
+        if perm.len() != n || iperm.contains(&usize::MAX) {
+            return Err(FemError::Solver(format!("not a permutation of 0..{n}")));
+        }
+        let perm = PermRef::new_checked(perm, &iperm, n);
+        Self::analyse(pattern, SymmetricOrdering::Custom(perm), FillOrdering::Nd)
+    }
+
     fn amd(pattern: &SparsePattern) -> Result<SymbolicFactor, FemError> {
         Self::analyse(pattern, SymmetricOrdering::Amd, FillOrdering::Amd)
     }
@@ -421,8 +439,12 @@ impl Factor {
                 sym.nrows()
             )));
         }
-        self.l_values.clear();
-        self.l_values.resize(sym.len_val(), 0.0);
+        if self.l_values.len() != sym.len_val() {
+            // A zeroed allocation, whose pages are mapped on first write: faer's numeric
+            // factorisation overwrites every value of L (the supernodal one zeroes them first),
+            // so writing zeros here too would cost a pass over the whole factor.
+            self.l_values = vec![0.0; sym.len_val()];
+        }
         let par = self.par.par();
         let req = sym.factorize_numeric_llt_scratch::<f64>(par, Default::default());
         let mut mem = MemBuffer::try_new(req).map_err(|_| FactorError::Other("out of memory".into()))?;
