@@ -115,11 +115,17 @@ pub fn parse(value: Value, base: Option<&Path>) -> Result<ConstraintsCase, CaseE
         drives: o.drives,
         model,
     };
-    case.check_compliant()?;
     Ok(case)
 }
 
 impl ConstraintsCase {
+    /// Validates the case once (the `compliant` list, then the model): the model seen by the
+    /// check, which [`diagnose`] takes.
+    pub fn validate(&self) -> Result<Kinematic, CaseError> {
+        self.check_compliant()?;
+        kinematic(&self.model, &self.compliant, self.hinges, self.drives)
+    }
+
     /// Each `compliant` entry names a beam, hinge or shell4 element.
     pub fn check_compliant(&self) -> Result<(), CaseError> {
         let n = self.model.elements.len();
@@ -186,12 +192,10 @@ impl Analysis for ConstraintsAnalysis {
     type Result = ConstraintsResult;
 
     fn check(case: &Self::Case) -> Result<(), CaseError> {
-        case.check_compliant()?;
-        case.model.build_model(false).map(|_| ())
+        case.validate().map(|_| ())
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        case.check_compliant()?;
-        let (r, warnings) = check(&case.model, &case.compliant, case.hinges, case.drives, true)?;
+        let (r, warnings) = diagnose(&case.model, case.validate()?, true)?;
         ctx.warnings = warnings;
         Ok(r)
     }
@@ -284,7 +288,12 @@ pub fn check(
     drives: bool,
     suggest: bool,
 ) -> Result<(ConstraintsResult, Vec<String>), RunError> {
-    let k = kinematic(spec, compliant, hinges, drives)?;
+    diagnose(spec, kinematic(spec, compliant, hinges, drives)?, suggest)
+}
+
+/// [`check`] of the model `k` seen by the check, built from `spec` (e.g. by
+/// [`ConstraintsCase::validate`]).
+pub fn diagnose(spec: &MeshSpec, k: Kinematic, suggest: bool) -> Result<(ConstraintsResult, Vec<String>), RunError> {
     let nodes = &spec.nodes;
     let d = exact::diagnose(nodes, &k.bodies, &k.constraints).map_err(|e| AnalysisError::new("model", e))?;
     let names = text::Names::new(spec, &k);

@@ -201,11 +201,26 @@ pub fn parse_frf(value: Value, base: Option<&Path>) -> Result<FrfCase, CaseError
         direct: o.direct,
         model,
     };
-    case.check_options()?;
     Ok(case)
 }
 
+/// An `frf` case with its options checked and its model built: what [`run`] takes, so a run
+/// validates the case once ([`FrfCase::validate`]).
+pub struct ValidFrf<'a> {
+    /// The case.
+    pub case: &'a FrfCase,
+    /// Its model.
+    pub model: Model,
+}
+
 impl FrfCase {
+    /// Validates the case once (options, then the model): the input of [`run`].
+    pub fn validate(&self) -> Result<ValidFrf<'_>, CaseError> {
+        self.check_options()?;
+        let model = self.model.build_model(false)?;
+        Ok(ValidFrf { case: self, model })
+    }
+
     /// Validates everything but the model (which [`MeshSpec::build_model`] checks).
     pub fn check_options(&self) -> Result<(), CaseError> {
         if !(1..=1000).contains(&self.modes) {
@@ -314,8 +329,9 @@ fn fem_err(e: crate::fem::FemError) -> RunError {
     RunError::from(AnalysisError::new("model", e.to_string()))
 }
 
-/// Runs an `frf` case.
-pub fn run(case: &FrfCase, model: &Model, cache: &mut crate::fem::SolverCache) -> Result<(FrfResult, StateSpace), RunError> {
+/// Runs a validated `frf` case.
+pub fn run(valid: &ValidFrf, cache: &mut crate::fem::SolverCache) -> Result<(FrfResult, StateSpace), RunError> {
+    let (case, model) = (valid.case, &valid.model);
     let (ports, in_names, out_info) = ports(case, model);
     let d = case.damping;
     let damping = Damping {
@@ -423,13 +439,10 @@ impl Analysis for FrfKind {
     type Result = FrfResult;
 
     fn check(case: &Self::Case) -> Result<(), CaseError> {
-        case.check_options()?;
-        case.model.build_model(false).map(|_| ())
+        case.validate().map(|_| ())
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        case.check_options()?;
-        let model = case.model.build_model(false)?;
-        let (r, ss) = run(case, &model, ctx.cache)?;
+        let (r, ss) = run(&case.validate()?, ctx.cache)?;
         if ctx.with_files {
             ctx.files = super::frf_files::files(&r, &ss)?;
         }
