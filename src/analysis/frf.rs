@@ -4,6 +4,7 @@
 //! [`Analysis`] implementation and the run; the result and report are in
 //! [`super::frf_result`], the files in [`super::frf_files`].
 
+use crate::case::fields::case_struct;
 use super::frf_result::{self, rows, DirectCheck, FrfMode, FrfResult, OutputInfo, Pair, StateSpaceOut};
 use super::kind::{Analysis, Ctx, UsedMaterial};
 use super::{AnalysisError, Report, RunError};
@@ -54,20 +55,17 @@ fn yes() -> bool {
     true
 }
 
-/// Viscous damping: Rayleigh C = αM + βK and/or a constant modal damping ratio ζ (each mode's
-/// ratio is ζ + α/(2ω) + βω/2).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Deserialize, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct DampingSpec {
-    /// Mass-proportional coefficient α ≥ 0, 1/s.
-    #[serde(default)]
-    pub alpha: f64,
-    /// Stiffness-proportional coefficient β ≥ 0, s.
-    #[serde(default)]
-    pub beta: f64,
-    /// Constant modal damping ratio 0 ≤ ζ < 1 (modal superposition only: no direct check).
-    #[serde(default)]
-    pub zeta: f64,
+case_struct! {
+    /// Viscous damping: Rayleigh C = αM + βK and/or a constant modal damping ratio ζ (each mode's
+    /// ratio is ζ + α/(2ω) + βω/2).
+    #[derive(Debug, Clone, Copy, Default, PartialEq, Deserialize, schemars::JsonSchema)]
+    #[serde(deny_unknown_fields)]
+    pub struct DampingSpec {
+        include rayleigh;
+        /// Constant modal damping ratio 0 ≤ ζ < 1 (modal superposition only: no direct check).
+        #[serde(default)]
+        pub zeta: f64,
+    }
 }
 
 /// Frequencies: `points` values from `from_hz` to `to_hz`, log or linear spacing.
@@ -439,7 +437,7 @@ impl Analysis for FrfKind {
     type Result = FrfResult;
 
     fn check(case: &Self::Case) -> Result<(), CaseError> {
-        case.validate().map(|_| ())
+        case.validate().map(drop)
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         let (r, ss) = run(&case.validate()?, ctx.cache)?;
