@@ -3,12 +3,11 @@
 //! case, the reference load, and the number of modes), load multipliers λ of the reference load
 //! and their mode shapes, reports, VTK file of the shapes.
 
+use crate::case::fields::case_struct;
 use super::kind::{Analysis, Ctx, UsedMaterial};
 use super::kind::named_materials;
 use super::{AnalysisError, Report, RunError};
 use crate::case::fem_case::{modes_of, read_model, shapes_default, split, ModalOptions};
-use crate::case::gmsh::GmshMapping;
-use crate::case::mesh::MeshSpec;
 use crate::case::{from_value, CaseError};
 use crate::fem::buckling::{solve_buckling, BucklingOptions, BucklingResults};
 use crate::fem::{Element, Model};
@@ -17,28 +16,31 @@ use serde::Serialize;
 use serde_json::Value;
 use std::path::Path;
 
-/// `"analysis": "buckling"`: the `modes` smallest load multipliers λ (by magnitude) of the
-/// reference load (the case's one `load_cases` entry) at which the linear structure bifurcates,
-/// (K + λ K_G) φ = 0, with their mode shapes. λ < 0: buckling under the reversed load.
-#[derive(Debug, Clone, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct BucklingCase {
-    /// Free text saying what the model is (not used by the analysis).
-    pub description: Option<String>,
-    /// Mesh file, as for `static`: a JSON mesh file or a Gmsh `.msh` file.
-    pub mesh: Option<String>,
-    /// Physical-group mapping of a Gmsh `.msh` mesh (only with a `.msh` mesh, which needs it).
-    pub gmsh: Option<GmshMapping>,
-    /// Number of buckling modes (smallest |λ|), 1 … 1000.
-    #[schemars(range(min = 1, max = 1000))]
-    pub modes: usize,
-    /// Mode shapes in the JSON result (default true); `buckling_modes.vtu` (with `--out`)
-    /// always holds them.
-    #[serde(default = "shapes_default")]
-    pub shapes: bool,
-    /// The model; its `load_cases` holds exactly one entry, the reference load.
-    #[serde(flatten)]
-    pub model: MeshSpec,
+case_struct! {
+    /// `"analysis": "buckling"`: the `modes` smallest load multipliers λ (by magnitude) of the
+    /// reference load (the case's one `load_cases` entry) at which the linear structure bifurcates,
+    /// (K + λ K_G) φ = 0, with their mode shapes. λ < 0: buckling under the reversed load.
+    #[derive(Debug, Clone, schemars::JsonSchema)]
+    #[serde(deny_unknown_fields)]
+    pub struct BucklingCase {
+        include model_source {
+            /// Free text saying what the model is (not used by the analysis).
+            description,
+            /// Mesh file, as for `static`: a JSON mesh file or a Gmsh `.msh` file.
+            mesh,
+            /// Physical-group mapping of a Gmsh `.msh` mesh (only with a `.msh` mesh, which needs it).
+            gmsh,
+            /// The model; its `load_cases` holds exactly one entry, the reference load.
+            model,
+        }
+        /// Number of buckling modes (smallest |λ|), 1 … 1000.
+        #[schemars(range(min = 1, max = 1000))]
+        pub modes: usize,
+        /// Mode shapes in the JSON result (default true); `buckling_modes.vtu` (with `--out`)
+        /// always holds them.
+        #[serde(default = "shapes_default")]
+        pub shapes: bool,
+    }
 }
 
 const OWN: [&str; 6] = ["analysis", "description", "mesh", "gmsh", "modes", "shapes"];

@@ -5,6 +5,7 @@
 mod report;
 mod text;
 
+use crate::case::fields::case_struct;
 use super::kind::{Analysis, Ctx, UsedMaterial};
 use super::{AnalysisError, Report, RunError};
 use crate::case::fem_case::{model_rules, read_model, split, MODEL_FIELDS};
@@ -16,37 +17,40 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::path::Path;
 
-/// `"analysis": "constraints"`: over- and under-constraint of a model whose bodies are taken
-/// rigid. A body is a set of nodes joined by beam, hinge, shell4 or rigid elements (and
-/// rigid links); `joint` elements, supports and prescribed displacements constrain the bodies;
-/// springs, masses and the elements listed in `compliant` join nothing.
-#[derive(Debug, Clone, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-#[schemars(extend("allOf" = model_rules(false)))]
-pub struct ConstraintsCase {
-    /// Indices into `elements` of beam, hinge or shell4 elements taken as compliant: they join
-    /// nothing, so their nodes may belong to different bodies (default none).
-    #[serde(default)]
-    pub compliant: Vec<usize>,
-    /// Hinge elements as `"rigid"` (default: they join their nodes into one body) or as
-    /// `"revolute"`: an ideal revolute joint about the hinge's compliant axis (local y) at its
-    /// midpoint, between the bodies of its two nodes (the pseudo-rigid-body view of a notch
-    /// flexure).
-    #[serde(default)]
-    pub hinges: HingeView,
-    /// Prescribed displacements of the load cases count as constraints (drives, default true);
-    /// a DOF prescribed in several load cases counts once.
-    #[serde(default = "yes")]
-    pub drives: bool,
-    /// Free text saying what the model is (not used by the analysis).
-    pub description: Option<String>,
-    /// Mesh file, as for `static`: a JSON mesh file or a Gmsh `.msh` file.
-    pub mesh: Option<String>,
-    /// Physical-group mapping of a Gmsh `.msh` mesh (only with a `.msh` mesh, which needs it).
-    pub gmsh: Option<GmshMapping>,
-    /// The model.
-    #[serde(flatten)]
-    pub model: MeshSpec,
+case_struct! {
+    /// `"analysis": "constraints"`: over- and under-constraint of a model whose bodies are taken
+    /// rigid. A body is a set of nodes joined by beam, hinge, shell4 or rigid elements (and
+    /// rigid links); `joint` elements, supports and prescribed displacements constrain the bodies;
+    /// springs, masses and the elements listed in `compliant` join nothing.
+    #[derive(Debug, Clone, schemars::JsonSchema)]
+    #[serde(deny_unknown_fields)]
+    #[schemars(extend("allOf" = model_rules(false)))]
+    pub struct ConstraintsCase {
+        /// Indices into `elements` of beam, hinge or shell4 elements taken as compliant: they join
+        /// nothing, so their nodes may belong to different bodies (default none).
+        #[serde(default)]
+        pub compliant: Vec<usize>,
+        /// Hinge elements as `"rigid"` (default: they join their nodes into one body) or as
+        /// `"revolute"`: an ideal revolute joint about the hinge's compliant axis (local y) at its
+        /// midpoint, between the bodies of its two nodes (the pseudo-rigid-body view of a notch
+        /// flexure).
+        #[serde(default)]
+        pub hinges: HingeView,
+        /// Prescribed displacements of the load cases count as constraints (drives, default true);
+        /// a DOF prescribed in several load cases counts once.
+        #[serde(default = "yes")]
+        pub drives: bool,
+        include model_source {
+            /// Free text saying what the model is (not used by the analysis).
+            description,
+            /// Mesh file, as for `static`: a JSON mesh file or a Gmsh `.msh` file.
+            mesh,
+            /// Physical-group mapping of a Gmsh `.msh` mesh (only with a `.msh` mesh, which needs it).
+            gmsh,
+            /// The model.
+            model,
+        }
+    }
 }
 
 /// How the check sees hinge elements.
@@ -115,11 +119,17 @@ pub fn parse(value: Value, base: Option<&Path>) -> Result<ConstraintsCase, CaseE
         drives: o.drives,
         model,
     };
-    case.check_compliant()?;
     Ok(case)
 }
 
 impl ConstraintsCase {
+    /// Validates the case once (the `compliant` list, then the model): the model seen by the
+    /// check, which [`diagnose`] takes.
+    pub fn validate(&self) -> Result<Kinematic, CaseError> {
+        self.check_compliant()?;
+        kinematic(&self.model, &self.compliant, self.hinges, self.drives)
+    }
+
     /// Each `compliant` entry names a beam, hinge or shell4 element.
     pub fn check_compliant(&self) -> Result<(), CaseError> {
         let n = self.model.elements.len();
@@ -186,12 +196,10 @@ impl Analysis for ConstraintsAnalysis {
     type Result = ConstraintsResult;
 
     fn check(case: &Self::Case) -> Result<(), CaseError> {
-        case.check_compliant()?;
-        case.model.build_model(false).map(|_| ())
+        case.validate().map(drop)
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        case.check_compliant()?;
-        let (r, warnings) = check(&case.model, &case.compliant, case.hinges, case.drives, true)?;
+        let (r, warnings) = diagnose(&case.model, case.validate()?, true)?;
         ctx.warnings = warnings;
         Ok(r)
     }
@@ -284,7 +292,12 @@ pub fn check(
     drives: bool,
     suggest: bool,
 ) -> Result<(ConstraintsResult, Vec<String>), RunError> {
-    let k = kinematic(spec, compliant, hinges, drives)?;
+    diagnose(spec, kinematic(spec, compliant, hinges, drives)?, suggest)
+}
+
+/// [`check`] of the model `k` seen by the check, built from `spec` (e.g. by
+/// [`ConstraintsCase::validate`]).
+pub fn diagnose(spec: &MeshSpec, k: Kinematic, suggest: bool) -> Result<(ConstraintsResult, Vec<String>), RunError> {
     let nodes = &spec.nodes;
     let d = exact::diagnose(nodes, &k.bodies, &k.constraints).map_err(|e| AnalysisError::new("model", e))?;
     let names = text::Names::new(spec, &k);

@@ -6,25 +6,37 @@
 //! spring, one triangle or quad per shell (a shell given as `[a, b, c, c]` is a triangle), and
 //! one line from the master to each slave of every rigid link. Cell data: `von_mises_MPa`,
 //! `element` (index in the model's element list; −1 for rigid links and drawn parts) and `part`
-//! ([`PART_BEAM`] …). Rigid bodies that are no elements (e.g. the stage's platform and sliders)
+//! ([`Part`]). Rigid bodies that are no elements (e.g. the stage's platform and sliders)
 //! may be drawn as extra cells ([`Drawn`]).
 
 use super::AnalysisError;
 use crate::fem::{Element, Model};
 use crate::report::vtk::{self, Cell, VtuMesh};
 
-/// `part` of a beam element.
-pub const PART_BEAM: f64 = 1.0;
-/// `part` of a flexure-hinge (flexibility) element.
-pub const PART_HINGE: f64 = 2.0;
-/// `part` of a two-node spring.
-pub const PART_SPRING: f64 = 3.0;
-/// `part` of a shell element.
-pub const PART_SHELL: f64 = 4.0;
-/// `part` of a rigid-link line (master → slave).
-pub const PART_RIGID: f64 = 5.0;
-/// `part` of a drawn rigid body that is no element of the model (e.g. a stage slider).
-pub const PART_BODY: f64 = 6.0;
+/// The `part` cell data of a `.vtu`: what a cell draws (its code, 1 … 6, is the variant's
+/// discriminant).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Part {
+    /// A beam element.
+    Beam = 1,
+    /// A flexure-hinge (flexibility) element.
+    Hinge,
+    /// A two-node spring.
+    Spring,
+    /// A shell element.
+    Shell,
+    /// A rigid-link line (master → slave).
+    Rigid,
+    /// A drawn rigid body that is no element of the model (e.g. a stage slider).
+    Body,
+}
+
+impl Part {
+    /// The code written as cell data.
+    pub fn code(self) -> f64 {
+        f64::from(self as u8)
+    }
+}
 
 /// A line drawn from a model node to an extra point that belongs to the same rigid body and
 /// has no rotational freedom relative to the ground (it translates with the node: e.g. a slider
@@ -37,7 +49,7 @@ pub struct BodyLine {
     pub point: [f64; 3],
 }
 
-/// Rigid bodies drawn in addition to the model's elements (`part` = [`PART_BODY`]).
+/// Rigid bodies drawn in addition to the model's elements (`part` = [`Part::Body`]).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Drawn {
     /// Lines from a node to an extra point moving with it.
@@ -58,10 +70,10 @@ pub struct ModelCells {
 }
 
 impl ModelCells {
-    fn push(&mut self, cell: Cell, element: f64, part: f64) {
+    fn push(&mut self, cell: Cell, element: f64, part: Part) {
         self.cells.push(cell);
         self.element.push(element);
-        self.part.push(part);
+        self.part.push(part.code());
     }
 }
 
@@ -71,11 +83,11 @@ pub fn model_cells(model: &Model) -> ModelCells {
     for (ie, e) in model.elements.iter().enumerate() {
         let ie = ie as f64;
         match e {
-            Element::Beam(b) => c.push(Cell::Line(b.nodes), ie, PART_BEAM),
-            Element::Flex(f) => c.push(Cell::Line(f.nodes), ie, PART_HINGE),
+            Element::Beam(b) => c.push(Cell::Line(b.nodes), ie, Part::Beam),
+            Element::Flex(f) => c.push(Cell::Line(f.nodes), ie, Part::Hinge),
             Element::Spring(s) => {
                 if let Some(b) = s.b {
-                    c.push(Cell::Line([s.a, b]), ie, PART_SPRING);
+                    c.push(Cell::Line([s.a, b]), ie, Part::Spring);
                 }
             }
             Element::Shell4(s) => {
@@ -85,13 +97,13 @@ pub fn model_cells(model: &Model) -> ModelCells {
                 } else {
                     Cell::Quad(n)
                 };
-                c.push(cell, ie, PART_SHELL);
+                c.push(cell, ie, Part::Shell);
             }
         }
     }
     for r in &model.rigid_links {
         for &s in &r.slaves {
-            c.push(Cell::Line([r.master, s]), -1.0, PART_RIGID);
+            c.push(Cell::Line([r.master, s]), -1.0, Part::Rigid);
         }
     }
     c
@@ -102,11 +114,11 @@ fn cells_with_bodies(model: &Model, drawn: &Drawn) -> (Vec<[f64; 3]>, ModelCells
     let mut points = model.nodes.clone();
     let mut c = model_cells(model);
     for cell in &drawn.cells {
-        c.push(*cell, -1.0, PART_BODY);
+        c.push(*cell, -1.0, Part::Body);
     }
     for b in &drawn.lines {
         points.push(b.point);
-        c.push(Cell::Line([b.node, points.len() - 1]), -1.0, PART_BODY);
+        c.push(Cell::Line([b.node, points.len() - 1]), -1.0, Part::Body);
     }
     (points, c)
 }

@@ -3,37 +3,43 @@
 //! parallel stage).
 
 use super::error::{check, CaseError};
-use super::material::MaterialSpec;
+use super::fields::case_struct;
 use super::stage::StageSpec;
 use crate::stage::sizing::{self as stage_design, Requirements, PARAMETERS};
 use crate::stage::{StageDesign, ValidStage};
 use serde::Deserialize;
 
-/// `"analysis": "sensitivity"`.
-#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct SensitivityCase {
-    /// Material (default Al7075).
-    #[serde(default)]
-    pub material: MaterialSpec,
-    /// The base design (circular-notch revolute, spherical-neck spherical hinges).
-    #[schemars(extend("properties" = {
+/// Schema of the `stage` of a sizing case: a circular-notch revolute and a spherical-neck
+/// spherical hinge (the families the sizing varies).
+fn notch_and_neck() -> serde_json::Value {
+    serde_json::json!({
         "revolute": {"properties": {"type": {"const": "circular_notch"}}},
         "spherical": {"properties": {"type": {"const": "spherical_neck"}}}
-    }))]
-    pub stage: StageSpec,
-    /// Relative increase of each parameter, in (0, 2] (0.5 = +50 %; default 0.1).
-    #[serde(default = "default_increment")]
-    #[schemars(extend("exclusiveMinimum" = 0, "maximum" = 2))]
-    pub increment: f64,
-    /// Kinematic requirement box for the hinge rotation demand: z travel ±, mm, > 0 (default 2).
-    #[serde(default = "default_z")]
-    #[schemars(extend("exclusiveMinimum" = 0))]
-    pub z_travel: f64,
-    /// Tilt ±, degrees, in [0, 10] (default 0.2).
-    #[serde(default = "default_tilt")]
-    #[schemars(range(min = 0, max = 10))]
-    pub tilt_deg: f64,
+    })
+}
+
+case_struct! {
+    /// `"analysis": "sensitivity"`.
+    #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+    #[serde(deny_unknown_fields)]
+    pub struct SensitivityCase {
+        include material;
+        /// The base design (circular-notch revolute, spherical-neck spherical hinges).
+        #[schemars(extend("properties" = notch_and_neck()))]
+        pub stage: StageSpec,
+        /// Relative increase of each parameter, in (0, 2] (0.5 = +50 %; default 0.1).
+        #[serde(default = "default_increment")]
+        #[schemars(extend("exclusiveMinimum" = 0, "maximum" = 2))]
+        pub increment: f64,
+        /// Kinematic requirement box for the hinge rotation demand: z travel ±, mm, > 0 (default 2).
+        #[serde(default = "default_z")]
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        pub z_travel: f64,
+        /// Tilt ±, degrees, in [0, 10] (default 0.2).
+        #[serde(default = "default_tilt")]
+        #[schemars(range(min = 0, max = 10))]
+        pub tilt_deg: f64,
+    }
 }
 
 fn default_increment() -> f64 {
@@ -94,28 +100,25 @@ pub struct BoundsSpec {
     pub l_sph: [f64; 2],
 }
 
-/// `"analysis": "design"`.
-#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct DesignCase {
-    /// Material (default Al7075).
-    #[serde(default)]
-    pub material: MaterialSpec,
-    /// The starting design (its geometry L, b, α₀, γ and leg are kept; circular-notch revolute,
-    /// spherical-neck spherical hinges).
-    #[schemars(extend("properties" = {
-        "revolute": {"properties": {"type": {"const": "circular_notch"}}},
-        "spherical": {"properties": {"type": {"const": "spherical_neck"}}}
-    }))]
-    pub stage: StageSpec,
-    /// Requirements.
-    pub requirements: RequirementsSpec,
-    /// Parameter bounds.
-    pub bounds: BoundsSpec,
-    /// Quasi-random designs sampled before the local search, 1 … 100000 (default 256).
-    #[serde(default = "default_samples")]
-    #[schemars(range(min = 1, max = 100000))]
-    pub samples: usize,
+case_struct! {
+    /// `"analysis": "design"`.
+    #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+    #[serde(deny_unknown_fields)]
+    pub struct DesignCase {
+        include material;
+        /// The starting design (its geometry L, b, α₀, γ and leg are kept; circular-notch revolute,
+        /// spherical-neck spherical hinges).
+        #[schemars(extend("properties" = notch_and_neck()))]
+        pub stage: StageSpec,
+        /// Requirements.
+        pub requirements: RequirementsSpec,
+        /// Parameter bounds.
+        pub bounds: BoundsSpec,
+        /// Quasi-random designs sampled before the local search, 1 … 100000 (default 256).
+        #[serde(default = "default_samples")]
+        #[schemars(range(min = 1, max = 100000))]
+        pub samples: usize,
+    }
 }
 
 fn default_samples() -> usize {

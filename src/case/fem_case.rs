@@ -2,6 +2,7 @@
 //! reading of a case's model from inline fields, a JSON mesh file or a Gmsh `.msh` file.
 
 use super::error::CaseError;
+use super::fields::case_struct;
 use super::gmsh::{self, GmshMapping};
 use super::mesh::MeshSpec;
 use super::stage::{self, nonlinear_true, steps_given};
@@ -42,42 +43,44 @@ pub(crate) fn shapes_default() -> bool {
     true
 }
 
-/// `"analysis": "static"`: a model inline or from a `mesh` file, plus load cases.
-#[derive(Debug, Clone, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-#[schemars(extend("allOf" = model_rules(true)))]
-pub struct StaticCase {
-    /// Free text saying what the model is (not used by the analysis).
-    pub description: Option<String>,
-    /// Path of a JSON mesh file (relative to the case file's folder, then to the working folder)
-    /// holding `materials`, `sections`, `nodes`, `elements`, `supports` and optionally `load_cases`.
-    pub mesh: Option<String>,
-    /// Physical-group mapping of a Gmsh `.msh` mesh (only with a `.msh` mesh, which needs it):
-    /// `{"groups": {"NAME": {"section", "material", "up"} or {"fix": [...]}}}`.
-    pub gmsh: Option<GmshMapping>,
-    /// The inline model (or additions to the mesh: materials, sections, load cases).
-    #[serde(flatten)]
-    pub model: MeshSpec,
-    /// Geometrically nonlinear statics (co-rotational beams, Newton–Raphson in load steps).
-    #[serde(default)]
-    pub nonlinear: bool,
-    /// Load steps of the nonlinear analysis, 1 … 10000 (default 20; only with
-    /// `"nonlinear": true`). After parsing: the steps to use when nonlinear, `None` when linear.
-    #[serde(default)]
-    #[schemars(range(min = 1, max = 10000))]
-    pub steps: Option<usize>,
-    /// Optional result fields: `{"section_forces": true}` adds the section forces of every beam.
-    #[serde(default)]
-    pub output: super::mesh::StaticOutput,
-    /// Nodes whose 6×6 compliance (with the model's supports, undeformed) the result lists:
-    /// `[{"node": n, "frame": [[..], [..], [..]]}]` (frame optional, default global axes).
-    #[serde(default)]
-    pub compliance: Vec<super::mesh::ComplianceRequest>,
-    /// Nonlinear only: natural frequencies and node compliances at every accepted load step,
-    /// with the tangent stiffness of the deformed state: `{"modes": N, "compliance": [{"node":
-    /// n}]}`.
-    #[serde(default)]
-    pub track: Option<super::mesh::TrackRequest>,
+case_struct! {
+    /// `"analysis": "static"`: a model inline or from a `mesh` file, plus load cases.
+    #[derive(Debug, Clone, schemars::JsonSchema)]
+    #[serde(deny_unknown_fields)]
+    #[schemars(extend("allOf" = model_rules(true)))]
+    pub struct StaticCase {
+        include model_source {
+            /// Free text saying what the model is (not used by the analysis).
+            description,
+            /// Path of a JSON mesh file (relative to the case file's folder, then to the working folder)
+            /// holding `materials`, `sections`, `nodes`, `elements`, `supports` and optionally `load_cases`.
+            mesh,
+            /// Physical-group mapping of a Gmsh `.msh` mesh (only with a `.msh` mesh, which needs it):
+            /// `{"groups": {"NAME": {"section", "material", "up"} or {"fix": [...]}}}`.
+            gmsh,
+            /// The inline model (or additions to the mesh: materials, sections, load cases).
+            model,
+        }
+        include nonlinear_steps {
+            /// Geometrically nonlinear statics (co-rotational beams, Newton–Raphson in load steps).
+            nonlinear,
+            /// Load steps of the nonlinear analysis, 1 … 10000 (default 20; only with
+            /// `"nonlinear": true`). After parsing: the steps to use when nonlinear, `None` when linear.
+            steps,
+        }
+        /// Optional result fields: `{"section_forces": true}` adds the section forces of every beam.
+        #[serde(default)]
+        pub output: super::mesh::StaticOutput,
+        /// Nodes whose 6×6 compliance (with the model's supports, undeformed) the result lists:
+        /// `[{"node": n, "frame": [[..], [..], [..]]}]` (frame optional, default global axes).
+        #[serde(default)]
+        pub compliance: Vec<super::mesh::ComplianceRequest>,
+        /// Nonlinear only: natural frequencies and node compliances at every accepted load step,
+        /// with the tangent stiffness of the deformed state: `{"modes": N, "compliance": [{"node":
+        /// n}]}`.
+        #[serde(default)]
+        pub track: Option<super::mesh::TrackRequest>,
+    }
 }
 
 /// Schema rules of a `static` (`need_loads`) or `modal` case that relate fields: the model is
@@ -146,17 +149,11 @@ struct StaticOptions {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct ModalOptions {
-    #[serde(default)]
     pub(crate) description: Option<String>,
-    #[serde(default)]
     pub(crate) mesh: Option<String>,
-    #[serde(default)]
     pub(crate) gmsh: Option<GmshMapping>,
-    #[serde(default)]
     pub(crate) modes: Option<usize>,
-    #[serde(default)]
     pub(crate) shift_hz: Option<f64>,
-    #[serde(default)]
     pub(crate) shapes: Option<bool>,
 }
 

@@ -1,36 +1,35 @@
 //! The `hinge` case: one flexure hinge in its blank.
 
 use super::error::CaseError;
-use super::material::MaterialSpec;
+use super::fields::case_struct;
 use crate::hinge::{HingeError, HingeSpec};
 use crate::material::Material;
 use serde::Deserialize;
 
-/// `"analysis": "hinge"`.
-#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-#[schemars(extend("if" = super::stage::steps_given(), "then" = super::stage::nonlinear_true()))]
-pub struct HingeCase {
-    /// Material (default Al7075).
-    #[serde(default)]
-    pub material: MaterialSpec,
-    /// The hinge, by `type`: lengths in mm.
-    pub hinge: HingeSpec,
-    /// Also trace the large-rotation response (geometrically nonlinear FE of the hinge in its
-    /// blank under a transverse end force) up to the allowable stress.
-    #[serde(default)]
-    pub nonlinear: bool,
-    /// Load steps per point of the nonlinear curve, 1 … 10000 (default 20; only with
-    /// `"nonlinear": true`).
-    #[serde(default)]
-    #[schemars(range(min = 1, max = 10000))]
-    pub steps: Option<usize>,
-    /// Identify the joint damping D of the hinge (Yu, Lu and Hao (2016), 8R compliant parallel
-    /// pan-tilt, §4.1): a transient FE run of the hinge in its blank under a step moment about
-    /// the compliant axis, with the material's Rayleigh damping, fitted by J θ̈ + D θ̇ + K θ = M
-    /// with K from statics.
-    #[serde(default)]
-    pub damping: Option<HingeDampingSpec>,
+case_struct! {
+    /// `"analysis": "hinge"`.
+    #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+    #[serde(deny_unknown_fields)]
+    #[schemars(extend("if" = super::stage::steps_given(), "then" = super::stage::nonlinear_true()))]
+    pub struct HingeCase {
+        include material;
+        /// The hinge, by `type`: lengths in mm.
+        pub hinge: HingeSpec,
+        include nonlinear_steps {
+            /// Also trace the large-rotation response (geometrically nonlinear FE of the hinge in its
+            /// blank under a transverse end force) up to the allowable stress.
+            nonlinear,
+            /// Load steps per point of the nonlinear curve, 1 … 10000 (default 20; only with
+            /// `"nonlinear": true`).
+            steps,
+        }
+        /// Identify the joint damping D of the hinge (Yu, Lu and Hao (2016), 8R compliant parallel
+        /// pan-tilt, §4.1): a transient FE run of the hinge in its blank under a step moment about
+        /// the compliant axis, with the material's Rayleigh damping, fitted by J θ̈ + D θ̇ + K θ = M
+        /// with K from statics.
+        #[serde(default)]
+        pub damping: Option<HingeDampingSpec>,
+    }
 }
 
 impl HingeCase {

@@ -1,34 +1,18 @@
 //! The `kinematics` case: rigid-body 3-PRS queries.
 
 use super::error::{check, CaseError};
+use super::fields::case_struct;
 use crate::kinematics::{PoseBox, Prs};
 use serde::Deserialize;
 
-/// 3-PRS geometry. Give either `alpha0_deg` or the base radius `a`.
-#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-#[schemars(extend("oneOf" = alpha0_or_a()))]
-pub struct MechanismSpec {
-    /// Leg length L between the revolute and spherical joint centres, mm.
-    #[serde(rename = "L")]
-    #[schemars(extend("exclusiveMinimum" = 0))]
-    pub l: f64,
-    /// Platform radius b (centre to spherical joints), mm.
-    #[schemars(extend("exclusiveMinimum" = 0))]
-    pub b: f64,
-    /// Leg angle to the horizontal at home α₀, degrees, in (0, 90) (then a = b + L·cos α₀).
-    #[serde(default)]
-    #[schemars(extend("exclusiveMinimum" = 0, "exclusiveMaximum" = 90))]
-    pub alpha0_deg: Option<f64>,
-    /// Base radius a (O to the zero-stroke slider points), mm; alternative to `alpha0_deg`.
-    #[serde(default)]
-    #[schemars(extend("exclusiveMinimum" = 0))]
-    pub a: Option<f64>,
-    /// Actuator inclination γ, degrees, in [−90, 90] (0 = horizontal radially inward, 90 =
-    /// vertical).
-    #[serde(default)]
-    #[schemars(range(min = -90, max = 90))]
-    pub gamma_deg: f64,
+case_struct! {
+    /// 3-PRS geometry. Give either `alpha0_deg` or the base radius `a`.
+    #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+    #[serde(deny_unknown_fields)]
+    #[schemars(extend("oneOf" = alpha0_or_a()))]
+    pub struct MechanismSpec {
+        include prs_geometry;
+    }
 }
 
 /// Schema of "exactly one of `alpha0_deg` and `a` is a number".

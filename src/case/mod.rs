@@ -7,6 +7,7 @@
 pub mod design;
 pub mod error;
 pub mod fem_case;
+pub(crate) mod fields;
 pub mod gmsh;
 pub mod hinge;
 pub mod kinematics;

@@ -1,6 +1,7 @@
 //! The `stage` and `fem_vs_fkp` cases: the monolithic 3-PRS compliant stage.
 
 use super::error::{check, CaseError};
+use super::fields::case_struct;
 use super::kinematics::MechanismSpec;
 use super::material::MaterialSpec;
 use crate::hinge::{Contour, HingeError, HingeSpec};
@@ -30,46 +31,30 @@ pub fn stage_hinge_spec(c: &StageHinge, leg: &LegSpec) -> HingeSpec {
     HingeSpec::in_blank(*c, leg.w, h, 0.0)
 }
 
-/// The `stage` object: 3-PRS geometry, leg section and hinges. Give either `alpha0_deg` or `a`.
-#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-#[schemars(extend("oneOf" = super::kinematics::alpha0_or_a()))]
-pub struct StageSpec {
-    /// Leg length between hinge centres, mm, > 0.
-    #[serde(rename = "L")]
-    #[schemars(extend("exclusiveMinimum" = 0))]
-    pub l: f64,
-    /// Platform radius, mm, > 0.
-    #[schemars(extend("exclusiveMinimum" = 0))]
-    pub b: f64,
-    /// Leg angle to the horizontal at home, degrees, in (0, 90) (or give `a`).
-    #[serde(default)]
-    #[schemars(extend("exclusiveMinimum" = 0, "exclusiveMaximum" = 90))]
-    pub alpha0_deg: Option<f64>,
-    /// Base radius, mm, > 0 (alternative to `alpha0_deg`).
-    #[serde(default)]
-    #[schemars(extend("exclusiveMinimum" = 0))]
-    pub a: Option<f64>,
-    /// Actuator inclination, degrees, in [−90, 90] (0 = horizontal, 90 = vertical).
-    #[serde(default)]
-    #[schemars(range(min = -90, max = 90))]
-    pub gamma_deg: f64,
-    /// Leg section, mm.
-    pub leg: LegSpec,
-    /// Revolute hinge at Cᵢ (compliant axis = revolute axis): any notch type but
-    /// `spherical_neck`.
-    #[schemars(extend("not" = {"properties": {"type": {"const": "spherical_neck"}}}))]
-    pub revolute: StageHinge,
-    /// Spherical hinge at Bᵢ: a `spherical_neck` (turned neck).
-    #[schemars(extend("properties" = {"type": {"const": "spherical_neck"}}))]
-    pub spherical: StageHinge,
-    /// Replace hinges by exact joints, legs and platform stiff (consistency check with FKP).
-    #[serde(default)]
-    pub ideal_joints: bool,
-    /// Beam elements per leg, 1 … 1000 (default 4).
-    #[serde(default = "default_leg_elements")]
-    #[schemars(range(min = 1, max = 1000))]
-    pub leg_elements: usize,
+case_struct! {
+    /// The `stage` object: 3-PRS geometry, leg section and hinges. Give either `alpha0_deg` or `a`.
+    #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+    #[serde(deny_unknown_fields)]
+    #[schemars(extend("oneOf" = super::kinematics::alpha0_or_a()))]
+    pub struct StageSpec {
+        include prs_geometry;
+        /// Leg section, mm.
+        pub leg: LegSpec,
+        /// Revolute hinge at Cᵢ (compliant axis = revolute axis): any notch type but
+        /// `spherical_neck`.
+        #[schemars(extend("not" = {"properties": {"type": {"const": "spherical_neck"}}}))]
+        pub revolute: StageHinge,
+        /// Spherical hinge at Bᵢ: a `spherical_neck` (turned neck).
+        #[schemars(extend("properties" = {"type": {"const": "spherical_neck"}}))]
+        pub spherical: StageHinge,
+        /// Replace hinges by exact joints, legs and platform stiff (consistency check with FKP).
+        #[serde(default)]
+        pub ideal_joints: bool,
+        /// Beam elements per leg, 1 … 1000 (default 4).
+        #[serde(default = "default_leg_elements")]
+        #[schemars(range(min = 1, max = 1000))]
+        pub leg_elements: usize,
+    }
 }
 
 fn default_leg_elements() -> usize {
@@ -96,43 +81,42 @@ pub struct StageLoadSpec {
     pub actuator_strokes: Option<[f64; 3]>,
 }
 
-/// `"analysis": "stage"`.
-#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-#[schemars(extend("if" = steps_given(), "then" = nonlinear_true()))]
-pub struct StageCase {
-    /// Material (default Al7075).
-    #[serde(default)]
-    pub material: MaterialSpec,
-    /// The stage.
-    pub stage: StageSpec,
-    /// Load cases (at least one).
-    #[schemars(length(min = 1))]
-    pub load_cases: Vec<StageLoadSpec>,
-    /// Geometrically nonlinear analysis (co-rotational FEM, Newton–Raphson with load steps).
-    #[serde(default)]
-    pub nonlinear: bool,
-    /// Load steps of the nonlinear analysis, 1 … 10000 (default 20; only with
-    /// `"nonlinear": true`).
-    #[serde(default)]
-    #[schemars(range(min = 1, max = 10000))]
-    pub steps: Option<usize>,
-    /// Also compute this many natural frequencies (actuators locked: sliders fixed on their
-    /// rails). Legs carry their consistent beam mass, hinges are massless, the platform is a
-    /// rigid body with its mass and inertia lumped at P. 1 … 1000.
-    #[serde(default)]
-    #[schemars(range(min = 1, max = 1000))]
-    pub modes: Option<usize>,
-    /// Platform mass, tonne, > 0 (default: a disc of radius `b` and `platform_thickness` of
-    /// the stage material).
-    #[serde(default)]
-    #[schemars(extend("exclusiveMinimum" = 0))]
-    pub platform_mass: Option<f64>,
-    /// Thickness of the disc platform, mm, > 0 (default 10), used when `platform_mass` is
-    /// absent.
-    #[serde(default)]
-    #[schemars(extend("exclusiveMinimum" = 0))]
-    pub platform_thickness: Option<f64>,
+case_struct! {
+    /// `"analysis": "stage"`.
+    #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+    #[serde(deny_unknown_fields)]
+    #[schemars(extend("if" = steps_given(), "then" = nonlinear_true()))]
+    pub struct StageCase {
+        include material;
+        /// The stage.
+        pub stage: StageSpec,
+        /// Load cases (at least one).
+        #[schemars(length(min = 1))]
+        pub load_cases: Vec<StageLoadSpec>,
+        include nonlinear_steps {
+            /// Geometrically nonlinear analysis (co-rotational FEM, Newton–Raphson with load steps).
+            nonlinear,
+            /// Load steps of the nonlinear analysis, 1 … 10000 (default 20; only with
+            /// `"nonlinear": true`).
+            steps,
+        }
+        /// Also compute this many natural frequencies (actuators locked: sliders fixed on their
+        /// rails). Legs carry their consistent beam mass, hinges are massless, the platform is a
+        /// rigid body with its mass and inertia lumped at P. 1 … 1000.
+        #[serde(default)]
+        #[schemars(range(min = 1, max = 1000))]
+        pub modes: Option<usize>,
+        /// Platform mass, tonne, > 0 (default: a disc of radius `b` and `platform_thickness` of
+        /// the stage material).
+        #[serde(default)]
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        pub platform_mass: Option<f64>,
+        /// Thickness of the disc platform, mm, > 0 (default 10), used when `platform_mass` is
+        /// absent.
+        #[serde(default)]
+        #[schemars(extend("exclusiveMinimum" = 0))]
+        pub platform_thickness: Option<f64>,
+    }
 }
 
 /// Schema: `steps` is given as a number.
@@ -165,22 +149,22 @@ pub fn check_steps(path: &str, steps: Option<usize>, nonlinear: bool) -> Result<
     }
 }
 
-/// `"analysis": "fem_vs_fkp"`.
-#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct FemVsFkpCase {
-    /// Material (default Al7075).
-    #[serde(default)]
-    pub material: MaterialSpec,
-    /// The stage.
-    pub stage: StageSpec,
-    /// Stroke sets, mm (at least one).
-    #[schemars(length(min = 1))]
-    pub strokes: Vec<[f64; 3]>,
-    /// Load steps of the nonlinear FEM column, 1 … 10000 (default 20).
-    #[serde(default)]
-    #[schemars(range(min = 1, max = 10000))]
-    pub steps: Option<usize>,
+case_struct! {
+    /// `"analysis": "fem_vs_fkp"`.
+    #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+    #[serde(deny_unknown_fields)]
+    pub struct FemVsFkpCase {
+        include material;
+        /// The stage.
+        pub stage: StageSpec,
+        /// Stroke sets, mm (at least one).
+        #[schemars(length(min = 1))]
+        pub strokes: Vec<[f64; 3]>,
+        /// Load steps of the nonlinear FEM column, 1 … 10000 (default 20).
+        #[serde(default)]
+        #[schemars(range(min = 1, max = 10000))]
+        pub steps: Option<usize>,
+    }
 }
 
 /// Maps a stage-builder error to a case error: design parameters under `stage`, hinge

@@ -7,11 +7,12 @@
 mod history;
 mod output;
 
+use crate::case::fields::case_struct;
 use super::kind::{Analysis, Ctx, UsedMaterial};
 use super::kind::named_materials;
 use super::{Report, RunError};
 use crate::case::fem_case::{mesh_rules, read_model, split, MODEL_FIELDS};
-use crate::case::mesh::{DofName, ElementSpec, GmshMapping, MeshSpec};
+use crate::case::mesh::{DofName, ElementSpec, GmshMapping};
 use crate::case::{from_value, CaseError};
 use crate::fem::transient::{Damping, PrescribedMotion, Scheme, TransientLoad, TransientOptions};
 use crate::fem::{Dof, NodeDof};
@@ -45,19 +46,16 @@ pub struct MotionSpec {
     pub history: HistorySpec,
 }
 
-/// Damping C = alpha M + beta K + Σ elements.
-#[derive(Debug, Clone, Default, Deserialize, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct DampingSpec {
-    /// Mass-proportional Rayleigh coefficient, 1/s (default 0).
-    #[serde(default)]
-    pub alpha: f64,
-    /// Stiffness-proportional Rayleigh coefficient, s (default 0).
-    #[serde(default)]
-    pub beta: f64,
-    /// Per-element stiffness-proportional damping.
-    #[serde(default)]
-    pub elements: Vec<ElementDampingSpec>,
+case_struct! {
+    /// Damping C = alpha M + beta K + Σ elements.
+    #[derive(Debug, Clone, Default, Deserialize, schemars::JsonSchema)]
+    #[serde(deny_unknown_fields)]
+    pub struct DampingSpec {
+        include rayleigh;
+        /// Per-element stiffness-proportional damping.
+        #[serde(default)]
+        pub elements: Vec<ElementDampingSpec>,
+    }
 }
 
 /// Time-integration scheme.
@@ -80,52 +78,55 @@ pub struct RecordSpec {
     pub dof: Option<DofName>,
 }
 
-/// `"analysis": "transient"`.
-#[derive(Debug, Clone, schemars::JsonSchema)]
-#[serde(deny_unknown_fields)]
-#[schemars(extend("allOf" = mesh_rules(false)))]
-pub struct TransientCase {
-    /// Time step, s (> 0).
-    pub dt: f64,
-    /// Number of steps, 1 … 1000000.
-    #[schemars(range(min = 1, max = 1000000))]
-    pub steps: usize,
-    /// The model's JSON mesh file or Gmsh `.msh` file, as for `static` (its load cases are
-    /// ignored), or the model inline.
-    pub mesh: Option<String>,
-    /// Physical-group mapping of a Gmsh `.msh` mesh.
-    pub gmsh: Option<GmshMapping>,
-    /// Free text (not used).
-    pub description: Option<String>,
-    /// `"newmark"` (default) or `"hht"`.
-    #[serde(default)]
-    pub scheme: SchemeName,
-    /// α of HHT, −1/3 … 0 (default −0.05; only with `"scheme": "hht"`).
-    pub hht_alpha: Option<f64>,
-    #[serde(default)]
-    pub damping: DampingSpec,
-    /// Load histories.
-    #[serde(default)]
-    pub loads: Vec<LoadSpec>,
-    /// Prescribed-motion histories.
-    #[serde(default)]
-    pub motions: Vec<MotionSpec>,
-    /// DOFs whose histories are recorded (CSV, SVG; peaks in the JSON result).
-    #[serde(default)]
-    pub record: Vec<RecordSpec>,
-    /// Frames of the VTK time series written with `--out` (default 50, at most `steps` + 1).
-    pub frames: Option<usize>,
-    /// Full recorded series in the JSON result (default false: peaks and final values only).
-    #[serde(default)]
-    pub histories: bool,
-    /// Geometrically nonlinear (co-rotational beams and hinge elements, Newton iterations per
-    /// step; Newmark only, loads only, no shells; default false). Mass and damping are those of
-    /// the undeformed configuration (see the result's `model`).
-    #[serde(default)]
-    pub nonlinear: bool,
-    /// The model.
-    #[serde(flatten)]
-    pub model: MeshSpec,
+case_struct! {
+    /// `"analysis": "transient"`.
+    #[derive(Debug, Clone, schemars::JsonSchema)]
+    #[serde(deny_unknown_fields)]
+    #[schemars(extend("allOf" = mesh_rules(false)))]
+    pub struct TransientCase {
+        /// Time step, s (> 0).
+        pub dt: f64,
+        /// Number of steps, 1 … 1000000.
+        #[schemars(range(min = 1, max = 1000000))]
+        pub steps: usize,
+        include model_source {
+            /// Free text (not used).
+            description,
+            /// The model's JSON mesh file or Gmsh `.msh` file, as for `static` (its load cases are
+            /// ignored), or the model inline.
+            mesh,
+            /// Physical-group mapping of a Gmsh `.msh` mesh.
+            gmsh,
+            /// The model.
+            model,
+        }
+        /// `"newmark"` (default) or `"hht"`.
+        #[serde(default)]
+        pub scheme: SchemeName,
+        /// α of HHT, −1/3 … 0 (default −0.05; only with `"scheme": "hht"`).
+        pub hht_alpha: Option<f64>,
+        #[serde(default)]
+        pub damping: DampingSpec,
+        /// Load histories.
+        #[serde(default)]
+        pub loads: Vec<LoadSpec>,
+        /// Prescribed-motion histories.
+        #[serde(default)]
+        pub motions: Vec<MotionSpec>,
+        /// DOFs whose histories are recorded (CSV, SVG; peaks in the JSON result).
+        #[serde(default)]
+        pub record: Vec<RecordSpec>,
+        /// Frames of the VTK time series written with `--out` (default 50, at most `steps` + 1).
+        pub frames: Option<usize>,
+        /// Full recorded series in the JSON result (default false: peaks and final values only).
+        #[serde(default)]
+        pub histories: bool,
+        /// Geometrically nonlinear (co-rotational beams and hinge elements, Newton iterations per
+        /// step; Newmark only, loads only, no shells; default false). Mass and damping are those of
+        /// the undeformed configuration (see the result's `model`).
+        #[serde(default)]
+        pub nonlinear: bool,
+    }
 }
 
 #[derive(Debug, Deserialize)]

@@ -1,0 +1,170 @@
+//! The typed result of a `static` run: one row per load case with its displacements,
+//! reactions, section forces, hinge and shell stresses.
+
+use super::ComplianceRow;
+use serde::Serialize;
+
+/// One load case of a `static` result.
+#[derive(Debug, Clone, Serialize)]
+pub struct StaticCaseRow {
+    /// Load-case name.
+    pub name: String,
+    /// Per node [ux, uy, uz (mm), rx, ry, rz (degrees)], global axes.
+    pub displacements: Vec<[f64; 6]>,
+    /// Per supported node [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)], in the order of `reaction_nodes`.
+    pub reactions: Vec<[f64; 6]>,
+    /// The supported nodes, ascending.
+    pub reaction_nodes: Vec<usize>,
+    /// Largest von Mises stress over all beams, MPa (`null` when no element has a stress).
+    pub max_von_mises: Option<f64>,
+    /// Largest von Mises stress per element, MPa (`null` for springs).
+    pub element_von_mises: Vec<Option<f64>>,
+    /// Shells only: von Mises at the element centre on the top, mid and bottom surfaces, MPa
+    /// (omitted for models without shells).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub shell_von_mises: Vec<ShellVonMises>,
+    /// Sum of loads plus reactions (should vanish): [N, N, N, N·mm, N·mm, N·mm].
+    pub equilibrium_residual: [f64; 6],
+    /// Nonlinear only: whether every converged point of the equilibrium path was stable
+    /// (positive definite tangent stiffness, no jump over a limit point).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stable: Option<bool>,
+    /// Nonlinear and not stable: load factors [lo, hi] bracketing the first loss of stability.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub critical_load_factor: Option<[f64; 2]>,
+    /// Nonlinear: the located changes of stability along the path (omitted when none).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub critical_points: Vec<crate::analysis::path_rows::CriticalPointRow>,
+    /// Nonlinear with `trace`: the load–displacement curve of the traced DOF.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub trace: Option<crate::analysis::path_rows::TraceRow>,
+    /// Shells only: nodal surface stresses (omitted for models without shells).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub shell_stress: Option<ShellStressRow>,
+    /// Shells only: stress resultants at each shell element's centre, element axes (omitted
+    /// for models without shells).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub shell_forces: Vec<ShellForcesRow>,
+    /// Per `hinge` element: rotation, end forces, peak stress and margin (omitted for models
+    /// without hinge elements).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub hinges: Vec<HingeRow>,
+    /// With `"output": {"section_forces": true}`: section forces of every beam element
+    /// (omitted otherwise).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub beam_forces: Vec<BeamForcesRow>,
+    /// Nonlinear with `"track"`: frequencies and node compliances at every accepted load step
+    /// (omitted otherwise).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub track: Option<crate::analysis::track::TrackRow>,
+}
+
+/// Section forces of one beam element in one load case.
+#[derive(Debug, Clone, Serialize)]
+pub struct BeamForcesRow {
+    /// Index of the element in the FE model (the order of `element_von_mises`).
+    pub element: usize,
+    /// [N, Vy, Vz (N), T, My, Mz (N·mm)] at end a (first node) and end b, element axes
+    /// (deformed element axes in nonlinear runs); positive-face convention: N > 0 in tension,
+    /// the forces the part beyond the section exerts on the part before it.
+    pub section_forces: [[f64; 6]; 2],
+}
+
+/// Results of one `hinge` element in one load case.
+#[derive(Debug, Clone, Serialize)]
+pub struct HingeRow {
+    /// Index of the element in the case's `elements`.
+    pub element: usize,
+    /// Index of the element in the FE model (the order of `element_von_mises`).
+    pub model_element: usize,
+    /// Rotation about the compliant axis (element local y), degrees: the relative rotation of
+    /// node b with respect to node a about the element's local y. Linear: (θ_b − θ_a)·e_y.
+    /// Nonlinear: the local-y component of the rotation vector of R_aᵀ·R_b (finite rotations,
+    /// in the undeformed element axes).
+    pub rotation_deg: f64,
+    /// Section forces [N, Vy, Vz (N), T, My, Mz (N·mm)] at end a and end b, element axes
+    /// (deformed element axes in nonlinear runs; N > 0 in tension).
+    pub end_forces: [[f64; 6]; 2],
+    /// Peak von Mises stress along the hinge with the notch factor, MPa (the stress model of the
+    /// `hinge` analysis and the `stage`).
+    pub peak_von_mises: f64,
+    /// peak_von_mises / allowable of the element's material (0 without an allowable).
+    pub utilisation: f64,
+    /// Rotation left until the peak stress reaches the allowable, degrees, by linear
+    /// extrapolation of the load case (stress proportional to rotation):
+    /// rotation_deg · (allowable/peak_von_mises − 1). Signed like rotation_deg (further rotation
+    /// in the same sense); of the opposite sign when the allowable is already exceeded; `null`
+    /// when unbounded (no allowable, or no stress).
+    #[serde(serialize_with = "crate::report::numbers::ratio_or_null")]
+    pub remaining_rotation_deg: f64,
+}
+
+/// Nodal stresses of the shells: per node [sxx, syy, szz, sxy, syz, szx] (MPa, global axes),
+/// integration-point values extrapolated to the nodes and averaged over the shells at the
+/// node; `null` for nodes without shells. Top and bottom follow each element's normal (right-hand
+/// rule over its node order): mesh every shell in the same sense (a warning names edges shared
+/// by oppositely oriented shells).
+#[derive(Debug, Clone, Serialize)]
+pub struct ShellStressRow {
+    /// Top surface (z = +t/2 along the element normal).
+    pub top: Vec<Option<[f64; 6]>>,
+    /// Mid-surface (membrane stress; transverse shear as the parabolic peak 1.5·Q/t).
+    pub mid: Vec<Option<[f64; 6]>>,
+    /// Bottom surface (z = −t/2).
+    pub bottom: Vec<Option<[f64; 6]>>,
+}
+
+/// Stress resultants at the centre of one shell element, in its axes.
+#[derive(Debug, Clone, Serialize)]
+pub struct ShellForcesRow {
+    /// Element index (model order).
+    pub element: usize,
+    /// Element axes: local x, y, z (normal) as unit vectors in global coordinates.
+    pub axes: [[f64; 3]; 3],
+    /// Membrane forces [Nxx, Nyy, Nxy], N/mm.
+    #[serde(rename = "N")]
+    pub n: [f64; 3],
+    /// Moments [Mxx, Myy, Mxy], N·mm/mm (Mxx > 0 stretches the top surface).
+    #[serde(rename = "M")]
+    pub m: [f64; 3],
+    /// Transverse shear forces [Qx, Qy], N/mm.
+    #[serde(rename = "Q")]
+    pub q: [f64; 2],
+}
+
+/// Surface stresses of one shell element.
+#[derive(Debug, Clone, Serialize)]
+pub struct ShellVonMises {
+    /// Element index (model order).
+    pub element: usize,
+    /// Von Mises at z = +t/2, MPa.
+    pub top: f64,
+    /// Von Mises at the mid-surface, MPa.
+    pub mid: f64,
+    /// Von Mises at z = −t/2, MPa.
+    pub bottom: f64,
+}
+
+/// Result of the `static` analysis.
+#[derive(Debug, Clone, Serialize)]
+pub struct StaticResult {
+    /// Load cases in input order.
+    pub load_cases: Vec<StaticCaseRow>,
+    /// Units of the output arrays.
+    pub units: Units,
+    /// Model notes.
+    pub model: Vec<String>,
+    /// Node compliances the case asked for (`"compliance"`), linear, with the model's supports
+    /// (DOFs prescribed in load cases are free here); omitted when none was asked.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub compliance: Vec<ComplianceRow>,
+}
+
+/// Units of the `static` result.
+#[derive(Debug, Clone, Serialize)]
+pub struct Units {
+    /// Units of each displacement entry.
+    pub displacements: &'static str,
+    /// Units of each reaction entry.
+    pub reactions: &'static str,
+}
