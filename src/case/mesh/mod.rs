@@ -16,6 +16,7 @@ mod lookup;
 pub mod path_control;
 pub mod requests;
 pub mod shapes;
+pub mod superelement;
 
 pub use super::fem_case::{ModalCase, StaticCase};
 pub use build::unique_load_case_names;
@@ -25,4 +26,6 @@ pub use load_shapes::{
     PressureSpec,
 };
 pub use requests::{ComplianceRequest, StaticOutput, TrackRequest};
-pub use shapes::{ElementSpec, GmshMapping, GroupSpec, JointKind, MeshSpec, RigidSpec, SectionSpec, SupportSpec};
+pub use shapes::{
+    ElementSpec, GmshMapping, GroupSpec, JointKind, MeshSpec, PlacementSpec, RigidSpec, SectionSpec, SupportSpec,
+};
