@@ -261,7 +261,8 @@ fn bundled_superelement_is_current() {
 
 /// Case errors name the JSON path and exit 2 (no panic): wrong node count, missing file, a file
 /// that is not a superelement, a matrix of the wrong size, host nodes that do not coincide
-/// with the interface nodes (also after a wrong placement).
+/// with the interface nodes (also after a wrong placement), a node named twice, and analyses
+/// that need more than linear matrices.
 #[test]
 fn bad_superelements_are_refused_with_their_path() {
     let d = common::tempdir("se-errors");
@@ -297,5 +298,20 @@ fn bad_superelements_are_refused_with_their_path() {
     common::exits_2(&o, &["elements[10].nodes[0]", "must coincide"]);
     let o = case("twice", &|h| h["elements"][10]["nodes"] = json!([11, 11]));
     common::exits_2(&o, &["elements[10].nodes[1]", "named twice"]);
+    // Linear matrices only: geometrically nonlinear statics and linear buckling are refused.
+    let o = case("nonlinear", &|h| {
+        h["nonlinear"] = json!(true);
+        h["steps"] = json!(2);
+    });
+    common::exits_2(
+        &o,
+        &["elements[10]", "not available in geometrically nonlinear statics"],
+    );
+    let o = case("buckling", &|h| {
+        h["analysis"] = json!("buckling");
+        h["modes"] = json!(1);
+        h["load_cases"].as_array_mut().unwrap().pop();
+    });
+    common::exits_2(&o, &["elements[10]", "not available in linear buckling"]);
     common::cleanup(&d);
 }

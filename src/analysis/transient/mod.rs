@@ -233,6 +233,7 @@ impl TransientCase {
         if let Some(i) = self.model.elements.iter().position(|e| matches!(e, ElementSpec::Shell4 { .. })) {
             return refuse(&format!("elements[{i}]"), "a shell element");
         }
+        crate::case::mesh::superelement::refuse_in(&self.model, "nonlinear transients")?;
         Ok(())
     }
 

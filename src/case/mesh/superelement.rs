@@ -239,3 +239,16 @@ fn rotation(p: &str, placement: Option<&PlacementSpec>) -> Result<(Matrix3<f64>,
     );
     Ok((*r.matrix(), Vector3::from(pl.translation)))
 }
+
+/// Refuses a `superelement` element of `spec` in an analysis it cannot take (`what`: e.g.
+/// "geometrically nonlinear analyses"): its matrices are linear and carry no geometric
+/// stiffness. The error names the element's JSON path.
+pub fn refuse_in(spec: &MeshSpec, what: &str) -> Result<(), CaseError> {
+    match spec.elements.iter().position(|e| matches!(e, ElementSpec::Superelement { .. })) {
+        Some(i) => Err(CaseError::new(
+            format!("elements[{i}]"),
+            format!("a superelement (reduced linear stiffness and mass, no geometric stiffness) is not available in {what}; use a linear static, modal, transient or frf analysis, or model the part with elements"),
+        )),
+        None => Ok(()),
+    }
+}
