@@ -41,9 +41,9 @@ pub struct Attached {
     pub elements: std::ops::Range<usize>,
 }
 
-/// Attaches a superelement with stiffness `k` and mass `m` (symmetric, order 6·`interface.len()`
-/// + modes, rows ordered as `ux uy uz rx ry rz` of each interface node then the modal
-/// coordinates; units N, mm, tonne, s, rad) to `model`: adds its modal nodes, their supports and
+/// Attaches a superelement with stiffness `k` and mass `m` to `model` (symmetric, of order
+/// 6 × the interface nodes plus the modes; rows `ux uy uz rx ry rz` of each interface node, then
+/// the modal coordinates; units N, mm, tonne, s, rad): adds its modal nodes, their supports and
 /// its pieces, and records it in [`Model::superelements`].
 pub fn attach(
     model: &mut Model,

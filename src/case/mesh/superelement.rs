@@ -138,7 +138,7 @@ pub(super) fn superelement_element(
         let x = r * Vector3::from(fnode.x) + t;
         let xh = Vector3::from(cx.spec.nodes[h]);
         let d = (x - xh).norm();
-        if !(d <= tol) {
+        if d.is_nan() || d > tol {
             return Err(CaseError::value(
                 format!("{p}.nodes[{j}]"),
                 h,
