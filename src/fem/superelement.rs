@@ -26,17 +26,17 @@ use nalgebra::DMatrix;
 pub const MODES_PER_NODE: usize = 3;
 
 /// Where a superelement attached to a model lives.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct Attached {
     /// Name for notes (the case's JSON path and file).
     pub label: String,
     /// Interface nodes of the model, in the superelement's order.
     pub interface: Vec<usize>,
+    /// Number of modal coordinates.
+    pub modes: usize,
     /// Auxiliary modal nodes: modal coordinate `j` is DOF `j % 3` (ux, uy, uz) of
     /// `modal_nodes[j / 3]`.
     pub modal_nodes: Vec<usize>,
-    /// Number of modal coordinates.
-    pub modes: usize,
     /// The model elements of its pieces (contiguous).
     pub elements: std::ops::Range<usize>,
 }
