@@ -234,6 +234,26 @@ fn round_trip_through_files_with_the_cli() {
     common::cleanup(&d);
 }
 
+/// An interface node with a node frame in the reduced model (a skew frame given by a support
+/// that fixes nothing: its boundary DOFs are then local, and the file records the frame) is
+/// turned back to global axes on attachment: the tip deflections equal F L³/(3 E I) to 1e-9.
+#[test]
+fn interface_node_frames_are_turned_back() {
+    let d = common::tempdir("se-frame");
+    let mut cb = bundled("craig_bampton_outer_half.json");
+    cb["supports"] = json!([{"node": 10, "fix": [], "frame": [[0.6, 0.8, 0], [-0.8, 0.6, 0], [0, 0, 1]]}]);
+    let reduced = run(&cb);
+    assert_eq!(reduced["interface_nodes"][1]["frame"][0], json!([0.6, 0.8, 0.0]));
+    let p = common::write(&d, "framed.json", &reduced.to_string());
+    let r = run(&host("superelement_cantilever.json", &p));
+    for (case, dof, ei) in [(0, 2, EI_Z), (1, 1, EI_Y)] {
+        let closed = 1e9 / (3.0 * ei);
+        let got = tip(&r, case, 11, dof);
+        assert!((got - closed).abs() <= 1e-9 * closed, "case {case}: {got} vs {closed}");
+    }
+    common::cleanup(&d);
+}
+
 /// The bundled superelement (meshes/superelement_outer_half.json) is what the bundled
 /// `craig_bampton` case writes: K and M entries agree to 1e-9 of each matrix's largest entry.
 #[test]
