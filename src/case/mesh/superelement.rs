@@ -123,7 +123,7 @@ pub(super) fn superelement_element(
         host.push(n);
     }
     let order = boundary_rows(f).map_err(bad)?;
-    let n = 6 * ni + f.modes;
+    let n = f.modes.saturating_add(6 * ni);
     for (name, a) in [("k", &f.k), ("m", &f.m)] {
         if a.len() != n || a.iter().any(|r| r.len() != n) || a.iter().flatten().any(|v| !v.is_finite()) {
             return Err(bad(format!(
