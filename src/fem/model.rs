@@ -129,7 +129,7 @@ pub struct Model {
     /// Fill-reducing ordering of the sparse Cholesky factor (default: chosen automatically).
     pub ordering: super::nd::FillOrdering,
     /// Attached superelements (their modal nodes and pieces; see [`super::superelement`]).
-    pub superelements: Vec<super::superelement::Attached>,
+    pub superelements: Vec<super::elements::matrix::Attached>,
 }
 
 impl Model {

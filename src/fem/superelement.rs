@@ -16,6 +16,7 @@
 //! block and one per node pair with the coupling blocks (all-zero pieces are skipped), so the
 //! assembly's element-by-element pattern takes them unchanged.
 
+pub use super::elements::matrix::Attached;
 use super::elements::MatrixElement;
 use super::error::FemError;
 use super::model::{Element, Model, Support};
@@ -24,22 +25,6 @@ use nalgebra::DMatrix;
 
 /// Modal coordinates per modal node (its `ux uy uz` slots).
 pub const MODES_PER_NODE: usize = 3;
-
-/// Where a superelement attached to a model lives.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct Attached {
-    /// Name for notes (the case's JSON path and file).
-    pub label: String,
-    /// Interface nodes of the model, in the superelement's order.
-    pub interface: Vec<usize>,
-    /// Number of modal coordinates.
-    pub modes: usize,
-    /// Auxiliary modal nodes: modal coordinate `j` is DOF `j % 3` (ux, uy, uz) of
-    /// `modal_nodes[j / 3]`.
-    pub modal_nodes: Vec<usize>,
-    /// The model elements of its pieces (contiguous).
-    pub elements: std::ops::Range<usize>,
-}
 
 /// Attaches a superelement with stiffness `k` and mass `m` to `model` (symmetric, of order
 /// 6 × the interface nodes plus the modes; rows `ux uy uz rx ry rz` of each interface node, then

@@ -17,6 +17,7 @@ pub mod path_control;
 pub mod requests;
 pub mod shapes;
 pub mod superelement;
+pub mod superelement_file;
 
 pub use super::fem_case::{ModalCase, StaticCase};
 pub use build::unique_load_case_names;

@@ -185,7 +185,7 @@ pub enum ElementSpec {
         /// The file's content (read with the case; not a case-file field).
         #[serde(skip)]
         #[schemars(skip)]
-        loaded: Option<std::sync::Arc<super::superelement::SuperelementFile>>,
+        loaded: Option<std::sync::Arc<super::superelement_file::SuperelementFile>>,
     },
 }
 

@@ -50,3 +50,20 @@ impl MatrixElement {
         })
     }
 }
+
+/// Where a superelement attached to a model lives (its matrices are [`MatrixElement`] pieces;
+/// see [`crate::fem::superelement`]).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Attached {
+    /// Name for notes (the case's JSON path and file).
+    pub label: String,
+    /// Interface nodes of the model, in the superelement's order.
+    pub interface: Vec<usize>,
+    /// Number of modal coordinates.
+    pub modes: usize,
+    /// Auxiliary modal nodes: modal coordinate `j` is DOF `j % 3` (ux, uy, uz) of
+    /// `modal_nodes[j / 3]`.
+    pub modal_nodes: Vec<usize>,
+    /// The model elements of its pieces (contiguous).
+    pub elements: std::ops::Range<usize>,
+}
