@@ -143,7 +143,8 @@ pub struct CraigBamptonResult {
     /// Frequencies of the retained fixed-interface modes, Hz.
     pub fixed_interface_frequencies_hz: Vec<f64>,
     /// Lowest frequencies of the superelement (interface held only by the model's supports) and
-    /// of the full model, Hz (up to 6; absent when the interface is free, K singular).
+    /// of the full model, Hz (up to 6; absent when the interface is free, K singular: a warning
+    /// when the model has supports, none for an unsupported substructure).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub superelement_frequencies_hz: Option<Vec<f64>>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -245,7 +246,8 @@ impl Analysis for CraigBamptonKind {
         let se = craig_bampton(&model, &case.interface, case.modes)
             .map_err(|e| AnalysisError::new("craig_bampton", e.to_string()))?;
         let r = result(case, &se, &model);
-        if r.superelement_frequencies_hz.is_none() {
+        // An unsupported substructure (the usual superelement for a host case) is free by design.
+        if r.superelement_frequencies_hz.is_none() && !model.supports.is_empty() {
             ctx.warnings
                 .push("the superelement's stiffness is singular (the interface is free): its frequencies are not computed".into());
         }
