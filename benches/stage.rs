@@ -17,6 +17,17 @@ fn bench(c: &mut Criterion) {
             s.solve(black_box(&drives)).expect("solves")
         })
     });
+    // The same design and load case solved on the condensed stage without an FE model
+    // (validation with the hinge regions, condensation, solve and recovery): what a linear
+    // stage analysis and `flexfem sweep` run per design.
+    let drive = drives[0].1;
+    c.bench_function("stage_linear_design_one_case", |b| {
+        b.iter(|| {
+            let v = black_box(&design).validate().expect("valid");
+            let s = v.linear().expect("condensed");
+            s.response(black_box(drive))
+        })
+    });
     // A sweep of 1,000 stage designs (full `stage` analysis each: the load case, reach at the
     // allowable, structural stiffness, platform compliance); target ≥ 2,000 designs/s on 2 cores.
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));

@@ -234,7 +234,8 @@ fn design_with_t_not_below_h_is_an_error_row_and_the_rest_finish() {
     cleanup(&d);
 }
 
-/// CSV: header `index, varied paths, flattened result leaves…, error`, one row per design.
+/// CSV: header `index, varied paths, flattened result leaves…, error`, one row per design;
+/// numeric columns carry their unit (`name [unit]`, see tests/sweep_csv_units.rs).
 #[test]
 fn csv_has_a_header_and_one_row_per_design() {
     // Four designs fail (t ≥ h): exit 1, the CSV is still written.
@@ -244,12 +245,15 @@ fn csv_has_a_header_and_one_row_per_design() {
     let rows: Vec<&str> = text.lines().collect();
     assert_eq!(rows.len(), 1 + 12);
     let header: Vec<&str> = rows[0].split(',').collect();
-    assert_eq!(header[..4], ["index", "hinge.t", "hinge.R", "k_bend"]);
+    assert_eq!(
+        header[..4],
+        ["index", "hinge.t [mm]", "hinge.R [mm]", "k_bend [N*mm/rad]"]
+    );
     assert_eq!(*header.last().unwrap(), "error");
-    assert!(header.contains(&"compliance.5.5"));
-    assert!(header.contains(&"closed_form.wu_zhou"));
+    assert!(header.contains(&"compliance.5.5 [rad/(N*mm)]"));
+    assert!(header.contains(&"closed_form.wu_zhou [N*mm/rad]"));
     assert!(!header.iter().any(|h| h.starts_with("model")), "notes are not columns");
-    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let col = |name: &str| header.iter().position(|h| h.split(" [").next() == Some(name)).unwrap();
     for (i, row) in rows[1..].iter().enumerate() {
         let cells: Vec<&str> = row.split(',').collect();
         assert_eq!(cells.len(), header.len(), "{row}");

@@ -40,6 +40,10 @@ fn float(v: f64) -> Result<(), NonFinite> {
 
 /// Finds the first non-finite number in `v`: `Err((JSON path, message))`.
 pub fn first_non_finite<T: Serialize + ?Sized>(v: &T) -> Result<(), (String, String)> {
+    // The plain walk first; the path is tracked (a string per field) only to name a failure.
+    if v.serialize(Check).is_ok() {
+        return Ok(());
+    }
     serde_path_to_error::serialize(v, Check).map_err(|e| {
         let path = e.path().to_string();
         (path, e.inner().to_string())

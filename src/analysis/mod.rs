@@ -19,9 +19,11 @@ pub mod modal;
 pub mod path_rows;
 pub mod registry;
 pub mod stage;
+mod stage_modes;
 pub mod stage_report;
 pub mod sweep_plot;
 pub mod track;
+pub mod units;
 pub mod vtu;
 pub mod warn;
 
@@ -199,8 +201,10 @@ pub fn run_with(case: &Case, ctx: &mut Ctx) -> Result<Outcome, RunError> {
         }
         m.insert("warnings".into(), serde_json::Value::from(out.warnings.clone()));
     }
-    out.report.markdown += &materials_markdown(&materials);
-    out.report.markdown += &warnings_markdown(&out.warnings);
+    if ctx.with_report {
+        out.report.markdown += &materials_markdown(&materials);
+        out.report.markdown += &warnings_markdown(&out.warnings);
+    }
     Ok(out)
 }
 

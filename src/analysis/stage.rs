@@ -1,9 +1,11 @@
 //! The `stage` analysis (the `fem_vs_fkp` comparison is [`super::fem_vs_fkp`]).
 
+pub use super::stage_modes::stage_modes;
+use super::stage_modes::stage_modes_with_model;
 use super::{AnalysisError, RunError};
 use crate::case::stage::{stage_error, StageCase};
 use crate::kinematics::Pose;
-use crate::stage::{self, Drive, StageCaseResult, StageModel};
+use crate::stage::{self, Drive, StageCaseResult, StageModel, StageResponse};
 use serde::Serialize;
 
 /// A platform pose in output units: mm and degrees.
@@ -132,15 +134,19 @@ pub struct StageResult {
 }
 
 fn row(r: &StageCaseResult, allowable: f64) -> StageRow {
+    row_of(&r.name, &r.response(), r.stability, allowable)
+}
+
+fn row_of(name: &str, r: &StageResponse, stability: Option<(bool, Option<[f64; 2]>)>, allowable: f64) -> StageRow {
     StageRow {
-        name: r.name.clone(),
+        name: name.to_string(),
         strokes: r.strokes,
         forces: r.forces,
         platform: r.platform.into(),
         max_von_mises: r.max_von_mises,
         hinge_stress: HingeStress {
-            revolute: r.revolute_stress,
-            spherical: r.spherical_stress,
+            revolute: r.hinge_stress[0],
+            spherical: r.hinge_stress[1],
         },
         t: r.t_ratio(),
         factor_at_allowable: if r.max_von_mises > 0.0 {
@@ -148,8 +154,8 @@ fn row(r: &StageCaseResult, allowable: f64) -> StageRow {
         } else {
             f64::INFINITY
         },
-        stable: r.stability.map(|s| s.0),
-        critical_load_factor: r.stability.and_then(|s| s.1),
+        stable: stability.map(|s| s.0),
+        critical_load_factor: stability.and_then(|s| s.1),
     }
 }
 
@@ -162,13 +168,17 @@ pub(super) fn fem_err(e: stage::StageError) -> RunError {
 
 /// Model notes shared by the stage analyses.
 pub fn model_notes(s: &StageModel) -> Vec<String> {
+    design_notes(&s.design)
+}
+
+fn design_notes(d: &stage::StageDesign) -> Vec<String> {
     let mut v = vec![
         "linear statics, small displacements (geometric nonlinearity not included)".to_string(),
         "legs: prismatic Timoshenko beams; hinges: one flexibility element each over the notch and its load-spreading zone in the leg, exact variable-section Timoshenko flexibility with the solid-calibrated 3-D factors of the hinge analysis (load spreading, short-notch G, plane-strain P), warping-restrained (Vlasov) torsion for rectangular notches".to_string(),
         "sliders: rigid bodies guided along e_i; platform: rigid body (rigid link)".to_string(),
         "hinge stress: beam stress along the hinge x notch factor (K_t/sqrt(P) flat notches, 1 + 0.041 sqrt(t/R) turned neck), torsion tau = T c / J, von Mises combining the peaks (conservative)".to_string(),
     ];
-    if s.design.ideal_joints {
+    if d.ideal_joints {
         v.push("ideal joints: hinges replaced by exact releases, legs and platform 1e6 x stiffer".into());
     }
     v
@@ -193,6 +203,17 @@ fn platform_stiffness(c: nalgebra::Matrix6<f64>) -> PlatformStiffness {
     }
 }
 
+/// Reach at the allowable stress from the response `u` to a unit force on every actuator.
+fn at_allowable(allowable: f64, u: &StageResponse) -> AtAllowable {
+    let k = allowable / u.max_von_mises;
+    AtAllowable {
+        allowable,
+        force: k,
+        stroke: k * u.strokes.iter().sum::<f64>() / 3.0,
+        z: k * u.platform.z,
+    }
+}
+
 /// Runs a `stage` case.
 pub fn run_stage(case: &StageCase) -> Result<StageResult, RunError> {
     Ok(run_stage_with(case, false, &mut crate::fem::SolverCache::new())?.0)
@@ -211,7 +232,6 @@ pub fn run_stage_with(
     cache: &mut crate::fem::SolverCache,
 ) -> Result<(StageResult, super::Files), RunError> {
     let (design, mut drives) = case.validated()?;
-    let s = design.build();
     let allowable = design.material.allowable;
     // One linear pass: the user's cases, a unit force on every actuator (reach at the allowable)
     // and a unit pure-z stroke set (structural stiffness), plus the platform compliance.
@@ -223,31 +243,73 @@ pub fn run_stage_with(
     let user = drives.clone();
     drives.push(("unit_force".into(), Drive::Forces([1.0; 3])));
     drives.push(("unit_z".into(), Drive::Strokes(unit_z)));
-    let mut a = s.analyse_with(cache, &drives, true).map_err(fem_err)?;
-    let z = a
-        .cases
-        .pop()
-        .ok_or_else(|| AnalysisError::new("stage", "unit-z case missing"))?;
-    let u = a
-        .cases
-        .pop()
-        .ok_or_else(|| AnalysisError::new("stage", "unit-force case missing"))?;
-    let u = &u;
+    let n = user.len();
+    // The linear numbers come from the stage solved on its condensed form without an FE model
+    // (stage::LinearStage), else (ideal joints, or a failure the FE model then reports) from
+    // the FE model; the model is built only for that, files, modes or nonlinear cases.
+    let condensed = design.linear().map(|l| {
+        let r: Vec<StageResponse> = drives.iter().map(|(_, d)| l.response(*d)).collect();
+        (r, l.compliance())
+    });
+    let condensed = condensed.filter(|(r, c)| {
+        let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
+        r.iter()
+            .all(|r| finite(&r.forces) && finite(&[r.max_von_mises, r.platform.z]))
+            && finite(c.as_slice())
+    });
+    let nonlinear = case.nonlinear_steps();
+    let s = (files || case.modes.is_some() || nonlinear.is_some() || condensed.is_none()).then(|| design.build());
+    // The FE results of the user's cases (with files: the .vtu are drawn from them).
+    let mut fe_cases = Vec::new();
+    let (responses, compliance) = match (condensed, &s) {
+        (Some(c), Some(s)) if files && nonlinear.is_none() => {
+            fe_cases = s.analyse_with(cache, &user, false).map_err(fem_err)?.cases;
+            c
+        }
+        (Some(c), _) => c,
+        (None, Some(s)) => {
+            let mut a = s.analyse_with(cache, &drives, true).map_err(fem_err)?;
+            let compliance = a
+                .compliance
+                .ok_or_else(|| AnalysisError::new("stage", "no platform compliance"))?;
+            let r = a.cases.iter().map(StageCaseResult::response).collect();
+            a.cases.truncate(n);
+            fe_cases = a.cases;
+            (r, compliance)
+        }
+        (None, None) => unreachable!("the FE model is built when there is no condensed solution"),
+    };
+    let (u, z) = (&responses[n], &responses[n + 1]);
     let stiffness_z = z.forces.iter().sum::<f64>() / (unit_z.iter().sum::<f64>() / 3.0);
-    let results = match case.nonlinear_steps() {
-        Some(steps) => s.solve_nonlinear(&user, steps).map_err(fem_err)?,
-        None => std::mem::take(&mut a.cases),
+    let at_allowable = at_allowable(allowable, u);
+    let nonlinear_cases = match (nonlinear, &s) {
+        (Some(steps), Some(s)) => Some(s.solve_nonlinear(&user, steps).map_err(fem_err)?),
+        _ => None,
     };
-    let k = allowable / u.max_von_mises;
-    let at_allowable = AtAllowable {
-        allowable,
-        force: k,
-        stroke: k * u.strokes.iter().sum::<f64>() / 3.0,
-        z: k * u.platform.z,
+    let load_cases = match &nonlinear_cases {
+        Some(cases) => cases.iter().map(|r| row(r, allowable)).collect(),
+        None => user
+            .iter()
+            .zip(&responses)
+            .map(|((name, _), r)| row_of(name, r, None, allowable))
+            .collect(),
     };
-    let compliance = a
-        .compliance
-        .ok_or_else(|| AnalysisError::new("stage", "no platform compliance"))?;
+    let Some(s) = s else {
+        return Ok((
+            StageResult {
+                load_cases,
+                stiffness_z,
+                at_allowable,
+                platform_stiffness: platform_stiffness(compliance),
+                model: design_notes(&design),
+                nonlinear: case.nonlinear,
+                modes: None,
+                calibration_warnings: crate::case::stage::stage_warnings(&design),
+            },
+            Vec::new(),
+        ));
+    };
+    let results = nonlinear_cases.unwrap_or(fe_cases);
     let mut out_files = Vec::new();
     let drawn = drawn_bodies(&s);
     if files {
@@ -280,12 +342,12 @@ pub fn run_stage_with(
             out_files.push(("stage_mesh.json".to_string(), text.into_bytes()));
         }
     }
-    let mut model = model_notes(&s);
+    let mut model = design_notes(&design);
     if let Some(steps) = case.nonlinear_steps() {
         model[0] = format!("load cases: geometrically nonlinear statics (co-rotational legs and hinges, rigid platform exact under finite rotation, Newton-Raphson in {steps} load steps); stiffness_z, at_allowable and platform_stiffness stay linear");
     }
     let result = StageResult {
-        load_cases: results.iter().map(|r| row(r, allowable)).collect(),
+        load_cases,
         stiffness_z,
         at_allowable,
         platform_stiffness: platform_stiffness(compliance),
@@ -328,43 +390,4 @@ fn drawn_bodies(s: &StageModel) -> super::vtu::Drawn {
             })
             .collect(),
     }
-}
-
-/// Modes of the stage with the actuators locked. Platform: point mass at P, a disc of radius
-/// b and thickness t (default 10 mm) unless `platform_mass` is given: m = ρπb²t,
-/// Ixx = Iyy = m(3b² + t²)/12, Izz = mb²/2 (platform normal = global z at home).
-pub fn stage_modes(case: &StageCase, s: &stage::StageModel, n: usize) -> Result<Vec<super::modal::ModeRow>, RunError> {
-    Ok(stage_modes_with_model(case, s, n)?.0)
-}
-
-/// [`stage_modes`] plus the model solved (sliders clamped, platform mass added) and the raw
-/// modal results (for the mode-shape `.vtu`).
-fn stage_modes_with_model(
-    case: &StageCase,
-    s: &stage::StageModel,
-    n: usize,
-) -> Result<
-    (
-        Vec<super::modal::ModeRow>,
-        crate::fem::Model,
-        crate::fem::modal::ModalResults,
-    ),
-    RunError,
-> {
-    let mut model = s.model.clone();
-    for leg in &s.legs {
-        model.supports.push(crate::fem::Support::clamp(leg.slider));
-    }
-    let rho = s.design.material.density;
-    let b = s.design.prs.b;
-    let t = case.platform_thickness.unwrap_or(10.0);
-    let mass = case.platform_mass.unwrap_or(rho * std::f64::consts::PI * b * b * t);
-    let ixx = mass * (3.0 * b * b + t * t) / 12.0;
-    model.masses.push(crate::fem::PointMass {
-        node: s.platform,
-        mass,
-        inertia: [ixx, ixx, mass * b * b / 2.0],
-    });
-    let (r, raw) = super::modal::solve(&model, n, None)?;
-    Ok((r.modes, model, raw))
 }

@@ -1,26 +1,48 @@
 //! Plots of sweep results over an analysis kind (rendered from the sweep's JSON lines).
 
 use crate::report::svg;
+use rayon::prelude::*;
+use serde::Deserialize;
+
+/// The fields of a stage sweep line the plot reads (a field of another type makes the line
+/// unreadable, as for a line that is not JSON).
+#[derive(Deserialize)]
+struct PlotLine {
+    result: Option<PlotResult>,
+}
+
+#[derive(Deserialize)]
+struct PlotResult {
+    stiffness_z: Option<f64>,
+    at_allowable: Option<PlotReach>,
+    load_cases: Option<Vec<PlotCase>>,
+}
+
+#[derive(Deserialize)]
+struct PlotReach {
+    z: Option<f64>,
+}
+
+#[derive(Deserialize)]
+struct PlotCase {
+    #[serde(rename = "T")]
+    t: Option<f64>,
+}
 
 /// Stage-sweep plot: structural stiffness against Δz reachable at the allowable stress,
 /// coloured by T; designs meeting the requirements of Ruiz et al. (2019) §4 (Δz ≥ 2 mm, T ∈ [0.8, 1.2]) filled. `None` if no line
 /// holds a stage result.
 pub fn stage_sweep_svg(lines: &[String]) -> Option<String> {
-    let mut pts = Vec::new();
-    for l in lines {
-        let Ok(v) = serde_json::from_str::<serde_json::Value>(l) else {
-            continue;
-        };
-        let r = &v["result"];
-        let (Some(k), Some(z), Some(t)) = (
-            r["stiffness_z"].as_f64(),
-            r["at_allowable"]["z"].as_f64(),
-            r["load_cases"][0]["T"].as_f64(),
-        ) else {
-            continue;
-        };
-        pts.push((k, z, t, z >= 2.0 && (0.8..=1.2).contains(&t)));
-    }
+    // Only the three numbers plotted are read (the rest of a line is skipped unparsed into
+    // values), lines in parallel, in order.
+    let pts: Vec<(f64, f64, f64, bool)> = lines
+        .par_iter()
+        .filter_map(|l| {
+            let r = serde_json::from_str::<PlotLine>(l).ok()?.result?;
+            let (k, z, t) = (r.stiffness_z?, r.at_allowable?.z?, r.load_cases?.first()?.t?);
+            Some((k, z, t, z >= 2.0 && (0.8..=1.2).contains(&t)))
+        })
+        .collect();
     if pts.is_empty() {
         return None;
     }

@@ -4,6 +4,7 @@ pub mod merge;
 pub mod resume;
 pub mod shard_env;
 pub mod sweep;
+mod sweep_finish;
 mod sweep_notes;
 mod targets;
 

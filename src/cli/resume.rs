@@ -173,6 +173,11 @@ impl Finished {
         Ok(f)
     }
 
+    /// True when nothing at all was found (no line, not even a foreign or unreadable one).
+    pub fn is_nothing(&self) -> bool {
+        self.lines.is_empty() && self.foreign == 0 && self.stale == 0 && self.errors == 0 && self.unreadable == 0
+    }
+
     /// How many of the kept lines belong to `shard`.
     pub fn in_shard(&self, shard: Shard) -> usize {
         self.lines.keys().filter(|&&i| shard.contains(i)).count()

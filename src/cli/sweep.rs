@@ -12,6 +12,7 @@
 //! line a sweep line) unless `--force`. A sweep with any error row exits 1.
 
 use super::resume::{Accept, Finished};
+use super::sweep_finish::{finish, Output, Written};
 use super::targets::{check_replaceable, io_context, Kind, Stop, Targets};
 use crate::case::sweep::Sweep;
 use crate::case::CaseError;
@@ -94,13 +95,12 @@ enum Stream {
     File(File),
 }
 
+/// What the sink keeps under its lock (the lines themselves are written outside it).
 struct SinkState {
-    stream: Stream,
-    /// With `--out`: the notes sidecar (a new reference is added in place).
-    notes: Option<NotesFile>,
     /// Rows kept for the CSV when they are not in a file (the values they were written from).
     kept: Option<Vec<(usize, Value)>>,
-    buf: Vec<u8>,
+    /// With `--out` onto an output that held nothing: this run's lines ([`Written`]).
+    written: Option<Written>,
 }
 
 fn progress_bar(len: usize) -> indicatif::ProgressBar {
@@ -219,6 +219,7 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         }
         None => (Finished::default(), Stream::Stdout(io::stdout())),
     };
+    let fresh = partial.is_some() && done.is_nothing();
     let skip: HashSet<usize> = done.lines.keys().copied().filter(|&i| shard.contains(i)).collect();
     let to_run = in_shard - skip.len();
     let keep_for_csv = args.csv.is_some() && args.out.is_none();
@@ -237,35 +238,32 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         omit: omit.iter().map(|p| p.to_string()).collect(),
     };
     let state = Mutex::new(SinkState {
-        notes,
-        stream,
         kept: keep_for_csv.then(Vec::new),
-        buf: Vec::with_capacity(4096),
+        written: fresh.then(Vec::new),
     });
+    // With --out: the notes sidecar (a new reference is added in place, under its own lock).
+    let notes = notes.map(Mutex::new);
     let pb = progress_bar(to_run);
     let stdout_tty = args.out.is_none() && io::stdout().is_terminal();
     let tally = run_sweep_formatted(sweep, base_dir, shard, &skip, &format, |row: Row| {
-        let mut st = state.lock().unwrap_or_else(|p| p.into_inner());
-        let SinkState {
-            stream,
-            kept,
-            buf,
-            notes,
-        } = &mut *st;
-        if let (Some(file), Some((r, n))) = (notes.as_mut(), &row.notes) {
-            file.add(r, n)?;
+        // The notes entry goes in before the first line that refers to it.
+        if let (Some(file), Some((r, n))) = (&notes, &row.notes) {
+            file.lock()
+                .unwrap_or_else(|p| p.into_inner())
+                .add(r, n, row.notes_json.as_deref())?;
         }
-        buf.clear();
-        buf.extend_from_slice(row.line.as_bytes());
-        buf.push(b'\n');
-        match stream {
-            Stream::File(f) => f
-                .write_all(buf)
+        // One write per line, without a lock of ours: the partial file is opened for appending
+        // (each write lands whole at the end), stdout has its own lock.
+        let mut line = row.line;
+        line.push('\n');
+        match &stream {
+            Stream::File(f) => (&mut &*f)
+                .write_all(line.as_bytes())
                 .map_err(|e| io_context("append to", partial.unwrap_or(Path::new("")))(e))?,
             Stream::Stdout(s) => {
                 let write = || -> io::Result<()> {
                     let mut lock = s.lock();
-                    lock.write_all(buf)?;
+                    lock.write_all(line.as_bytes())?;
                     lock.flush()
                 };
                 let write = || write().map_err(|e| io::Error::new(e.kind(), format!("cannot write to stdout: {e}")));
@@ -276,71 +274,45 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
                 }
             }
         }
-        if let Some(k) = kept {
+        line.pop();
+        let mut st = state.lock().unwrap_or_else(|p| p.into_inner());
+        if let Some(k) = &mut st.kept {
             k.push((row.index, row.value));
         }
+        if let Some(w) = &mut st.written {
+            w.push((row.index, row.failed, line));
+        }
+        drop(st);
         pb.inc(1);
         Ok(())
     });
     pb.finish_and_clear();
     let tally = tally?;
     let state = state.into_inner().unwrap_or_else(|p| p.into_inner());
-    drop(state.stream);
+    drop(stream);
+    drop(notes);
 
     let mut failed_total = tally.failed + done.failed.iter().filter(|&&i| shard.contains(i)).count();
-    let axes: Vec<&str> = sweep.axes.iter().map(|(p, _)| p.as_str()).collect();
     let csv_text: Option<String> = match (&targets.out, partial) {
         (Some(out), Some(partial)) => {
-            // Oldest first, so the lines just written replace retried or stale ones.
-            sources.retain(|p| *p != partial);
-            sources.push(partial);
-            let all = Finished::read_trusting(
-                sweep,
-                Accept {
-                    keep_errors: true,
-                    ..accept
-                },
-                &sources,
-                &|i| shard.contains(i),
-            )?;
-            failed_total = all.failed.iter().filter(|&&i| shard.contains(i)).count();
-            write_atomic(out, &all.to_jsonl()).map_err(io_context("write", out))?;
-            fs::remove_file(partial).or_else(|e| match e.kind() {
-                io::ErrorKind::NotFound => Ok(()),
-                _ => Err(e),
-            })?;
-            if all.in_shard(shard) != in_shard {
-                eprintln!(
-                    "warning: {} holds {} of the {in_shard} designs",
-                    out.display(),
-                    all.in_shard(shard)
-                );
-            }
-            // Files of the base case's analysis beside the JSON lines (a stage sweep's plot
-            // and table).
-            let lines: Vec<String> = all.lines.values().cloned().collect();
-            for (file, p) in &targets.extras {
-                let text = if file.table {
-                    let refs: Vec<&str> = lines.iter().map(String::as_str).collect();
-                    Some(table::csv(&axes, &refs))
-                } else {
-                    sweep_kind(sweep).and_then(|a| a.render_sweep_file(file, &lines))
-                };
-                if let Some(text) = text {
-                    write_atomic(p, text.as_bytes()).map_err(io_context("write", p))?;
-                }
-            }
-            args.csv.as_ref().map(|_| {
-                let refs: Vec<&str> = lines.iter().map(String::as_str).collect();
-                table::csv(&axes, &refs)
-            })
+            let output = Output {
+                out,
+                partial,
+                sources,
+                accept,
+                written: state.written,
+            };
+            let (failed, csv) = finish(sweep, shard, output, &targets.extras, args.csv.is_some())?;
+            failed_total = failed;
+            csv
         }
         // Rows of this run only, in memory: the table reads the values the lines were written
         // from (no round trip through the text).
         _ => state.kept.map(|mut k| {
+            let axes: Vec<&str> = sweep.axes.iter().map(|(p, _)| p.as_str()).collect();
             k.sort_unstable_by_key(|(i, _)| *i);
             let rows: Vec<Value> = k.into_iter().map(|(_, v)| v).collect();
-            table::csv_of_rows(&axes, &rows)
+            table::csv_of_rows_with_units(&axes, &rows, super::sweep_finish::units_of(sweep))
         }),
     };
     if let (Some(csv), Some(text)) = (&args.csv, csv_text) {
@@ -385,15 +357,6 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         eprintln!("error: {failed_total} of {in_shard} designs failed (their lines hold an \"error\"; exit code 1)");
     }
     Ok(failed_total)
-}
-
-/// The registered analysis of a sweep's base case.
-fn sweep_kind(sweep: &Sweep) -> Option<&'static dyn crate::analysis::DynAnalysis> {
-    sweep
-        .base
-        .get("analysis")
-        .and_then(Value::as_str)
-        .and_then(crate::analysis::registry::find)
 }
 
 fn rate(n: usize, d: Duration) -> f64 {

@@ -12,7 +12,9 @@ use super::targets::{io_context, Stop};
 use serde_json::{Map, Value};
 use std::collections::HashSet;
 use std::fs::{self, File, OpenOptions};
-use std::io::{self, Seek, SeekFrom, Write};
+use std::io;
+#[cfg(not(unix))]
+use std::io::{Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
 
 /// The sidecar of `--out FILE.jsonl`: `FILE.jsonl.notes.json`.
@@ -30,12 +32,17 @@ pub(super) struct NotesFile {
     open: Option<(File, u64)>,
 }
 
-/// One entry's text: `"ref":[…]` (compact JSON).
-fn entry(r: &str, notes: &Value) -> io::Result<Vec<u8>> {
+/// One entry's text: `"ref":[…]`, from the notes' compact JSON.
+fn entry(r: &str, json: &[u8]) -> io::Result<Vec<u8>> {
     let mut out = serde_json::to_vec(r).map_err(io::Error::other)?;
     out.push(b':');
-    serde_json::to_writer(&mut out, notes).map_err(io::Error::other)?;
+    out.extend_from_slice(json);
     Ok(out)
+}
+
+/// The compact JSON of `notes`.
+fn json_of(notes: &Value) -> io::Result<Vec<u8>> {
+    serde_json::to_vec(notes).map_err(io::Error::other)
 }
 
 /// The entries of a sidecar whose text does not parse as a whole (a torn last entry): each
@@ -56,6 +63,19 @@ fn recover(text: &str) -> Option<Map<String, Value>> {
         }
     }
     Some(m)
+}
+
+/// Writes `text` at `offset` (one positioned write on Unix, seek and write elsewhere).
+fn write_at(file: &mut File, text: &[u8], offset: u64) -> io::Result<()> {
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::FileExt::write_all_at(file, text, offset)
+    }
+    #[cfg(not(unix))]
+    {
+        file.seek(SeekFrom::Start(offset))?;
+        file.write_all(text)
+    }
 }
 
 impl NotesFile {
@@ -97,7 +117,7 @@ impl NotesFile {
         let mut text = vec![b'{'];
         for (k, (r, n)) in notes.iter().enumerate() {
             text.extend_from_slice(if k == 0 { b"\n" } else { b",\n" });
-            text.extend_from_slice(&entry(r, n)?);
+            text.extend_from_slice(&entry(r, &json_of(n)?)?);
         }
         text.extend_from_slice(b"\n}\n");
         crate::output::write_atomic(&self.path, &text).map_err(io_context("write", &self.path))?;
@@ -110,8 +130,9 @@ impl NotesFile {
         Ok(())
     }
 
-    /// Adds the notes of reference `r` unless the file has them already.
-    pub(super) fn add(&mut self, r: &str, notes: &Value) -> io::Result<()> {
+    /// Adds the notes of reference `r` unless the file has them already (`json`: the notes as
+    /// compact JSON, when the caller has it).
+    pub(super) fn add(&mut self, r: &str, notes: &Value, json: Option<&str>) -> io::Result<()> {
         if self.known.contains(r) {
             return Ok(());
         }
@@ -121,11 +142,12 @@ impl NotesFile {
             return self.rewrite(&m);
         };
         let mut text = b",\n".to_vec();
-        text.extend_from_slice(&entry(r, notes)?);
+        match json {
+            Some(json) => text.extend_from_slice(&entry(r, json.as_bytes())?),
+            None => text.extend_from_slice(&entry(r, &json_of(notes)?)?),
+        }
         text.extend_from_slice(b"\n}\n");
-        file.seek(SeekFrom::Start(*end))
-            .and_then(|_| file.write_all(&text))
-            .map_err(io_context("write", &self.path))?;
+        write_at(file, &text, *end).map_err(io_context("write", &self.path))?;
         *end += text.len() as u64 - 3;
         self.known.insert(r.to_string());
         Ok(())

@@ -1,12 +1,18 @@
 //! CSV view of sweep lines: `index`, each varied path, every scalar leaf of the result under
 //! its dotted name, then `error`.
 //!
+//! With the units of the sweep's analysis kind ([`crate::analysis::units`]) a column whose path
+//! has a unit is headed `name [unit]` (`stiffness_z [N/mm]`, `hinge.t [mm]`, `T [-]`); text,
+//! flag and `index`/`error` columns keep their bare names.
+//!
 //! Numbers, booleans, strings and nulls are leaves. Arrays of at most [`MAX_ARRAY`] elements
 //! are flattened by position (`compliance.2.4`, `load_cases.0.name`); longer arrays
 //! (per-node displacements, mode shapes) and arrays of strings (notes) are left out.
 
+use crate::analysis::units::UnitOf;
 use rayon::prelude::*;
 use serde_json::Value;
+use std::borrow::Cow;
 use std::collections::HashMap;
 use std::fmt::Write as _;
 
@@ -83,16 +89,36 @@ fn push_text(out: &mut String, s: &str) {
 /// Result columns are the union of the rows' leaves, in order of first appearance.
 /// Lines are parsed and rendered in parallel (rayon); unparseable lines are skipped.
 pub fn csv(axes: &[&str], lines: &[&str]) -> String {
+    csv_with_units(axes, lines, None)
+}
+
+/// [`csv`] with the column units `(result units, case units)` of the sweep's analysis kind
+/// ([`crate::analysis::units::of_kind`]).
+pub fn csv_with_units(axes: &[&str], lines: &[&str], units: Option<(UnitOf, UnitOf)>) -> String {
     let rows: Vec<Value> = lines
         .par_iter()
         .filter_map(|l| serde_json::from_str::<Value>(l).ok().filter(Value::is_object))
         .collect();
-    csv_of_rows(axes, &rows)
+    csv_of_rows_with_units(axes, &rows, units)
 }
 
 /// [`csv`] of sweep rows already in memory (the JSON objects of their lines, in index order;
 /// non-objects are skipped).
 pub fn csv_of_rows(axes: &[&str], rows: &[Value]) -> String {
+    csv_of_rows_with_units(axes, rows, None)
+}
+
+/// `name [unit]` when `unit_of` gives the dotted path `name` a unit, else `name`.
+fn with_unit(name: &str, unit_of: Option<UnitOf>) -> Cow<'_, str> {
+    let path: Vec<&str> = name.split('.').collect();
+    match unit_of.and_then(|f| f(&path)) {
+        Some(u) => Cow::Owned(format!("{name} [{u}]")),
+        None => Cow::Borrowed(name),
+    }
+}
+
+/// [`csv_of_rows`] with column units (see [`csv_with_units`]).
+pub fn csv_of_rows_with_units(axes: &[&str], rows: &[Value], units: Option<(UnitOf, UnitOf)>) -> String {
     let rows: Vec<&Value> = rows.iter().filter(|r| r.is_object()).collect();
 
     // Columns in order of first appearance; each row's leaves as (column, value).
@@ -122,15 +148,16 @@ pub fn csv_of_rows(axes: &[&str], rows: &[Value]) -> String {
         .collect();
 
     let mut out = String::new();
-    let header = std::iter::once("index")
-        .chain(axes.iter().copied())
-        .chain(columns.iter().map(String::as_str))
-        .chain(std::iter::once("error"));
+    let (result_unit, input_unit) = (units.map(|u| u.0), units.map(|u| u.1));
+    let header = std::iter::once(Cow::Borrowed("index"))
+        .chain(axes.iter().map(|a| with_unit(a, input_unit)))
+        .chain(columns.iter().map(|c| with_unit(c, result_unit)))
+        .chain(std::iter::once(Cow::Borrowed("error")));
     for (i, h) in header.enumerate() {
         if i > 0 {
             out.push(',');
         }
-        push_text(&mut out, h);
+        push_text(&mut out, &h);
     }
     out.push('\n');
     let body: Vec<String> = rows

@@ -29,13 +29,16 @@
 //! ```
 //! with η = q₁/q₂, ηᵢⱼ = qᵢⱼ/q₂ (components of q and qᵢ = RᵢR₀e₂ in the co-rotated frame).
 //! Internal force f = Bᵀ k₇ p (exact first variation of the strain energy ½ pᵀk₇p); tangent
-//! K = Bᵀ k₇ B + ∂(Bᵀ f₇)/∂d|_{f₇ fixed}: the material part is closed form, the geometric part
-//! (the derivative of B: the terms D, Q, a, K_h of Battini–Pacoste eqs. (40)–(48)) is
-//! evaluated by central differences of the closed-form B at fixed local forces (12 pairs of
-//! B evaluations, relative error ~1e-10), so K is the consistent tangent to that accuracy.
+//! K = Bᵀ k₇ B + ∂(Bᵀ f₇)/∂d|_{f₇ fixed}, both parts in closed form ([`tangent`]: the terms
+//! D, Q, K_h of Battini–Pacoste eqs. (40)–(48), with the variation of G derived in full, η and
+//! ηᵢⱼ included), so K is the exact consistent tangent. [`geometric_tangent_fd`] keeps the
+//! former evaluation of the geometric part by central differences of B as a check.
 
 use super::transform::{skew, Mat12};
+
+mod tangent;
 use nalgebra::{Matrix3, Rotation3, SMatrix, SVector, Vector3};
+pub use tangent::{geometric_tangent, geometric_tangent_fd, perturbed};
 
 /// 7×12 matrix.
 pub type Mat7x12 = SMatrix<f64, 7, 12>;
@@ -151,6 +154,26 @@ pub struct Kinematics {
 /// Kinematics of the element (see the module docs). `None` for a degenerate configuration
 /// (zero length, r₁ parallel to q, non-finite input).
 pub fn kinematics(g: &CorotGeometry, n1: &NodeState, n2: &NodeState) -> Option<Kinematics> {
+    kinematics_aux(g, n1, n2).map(|(k, _)| k)
+}
+
+/// What the closed-form tangent needs besides [`Kinematics`] (local components, co-rotated
+/// frame): −Gᵀ, the nodal Ts⁻¹(θ̄ᵢ), and q, qᵢ (see the module docs).
+#[derive(Debug, Clone)]
+struct Aux {
+    mgt: SMatrix<f64, 3, 12>,
+    th: [Vector3<f64>; 2],
+    ts: [Matrix3<f64>; 2],
+    /// qᵢ in the co-rotated frame.
+    qil: [Vector3<f64>; 2],
+    /// Second local component of q (its third is zero).
+    q_y: f64,
+    eta: f64,
+    /// ηᵢⱼ = (qᵢ)ⱼ/q₂ (j = first, second local component).
+    eij: [[f64; 2]; 2],
+}
+
+fn kinematics_aux(g: &CorotGeometry, n1: &NodeState, n2: &NodeState) -> Option<(Kinematics, Aux)> {
     // (X₂ − X₁) + (u₂ − u₁): round-off relative to the element length, not to the coordinates.
     let x21 = (g.x2 - g.x1) + (n2.u - n1.u);
     let ln = x21.norm();
@@ -199,7 +222,8 @@ pub fn kinematics(g: &CorotGeometry, n1: &NodeState, n2: &NodeState) -> Option<K
         b[(0, j)] = -r1[j];
         b[(0, 6 + j)] = r1[j];
     }
-    for (i, th) in [(0usize, &th1), (1usize, &th2)] {
+    let ts = [ts_inv(&th1), ts_inv(&th2)];
+    for (i, tsi) in ts.iter().enumerate() {
         let mut pi = mgt;
         for k in 0..3 {
             pi[(k, 3 + 6 * i + k)] += 1.0;
@@ -210,7 +234,7 @@ pub fn kinematics(g: &CorotGeometry, n1: &NodeState, n2: &NodeState) -> Option<K
             let blk = pi.fixed_view::<3, 3>(0, 3 * c) * rrt;
             pe.fixed_view_mut::<3, 3>(0, 3 * c).copy_from(&blk);
         }
-        let rows = ts_inv(th) * pe;
+        let rows = tsi * pe;
         b.fixed_view_mut::<3, 12>(1 + 3 * i, 0).copy_from(&rows);
     }
     let mut p = Vec7::zeros();
@@ -220,7 +244,16 @@ pub fn kinematics(g: &CorotGeometry, n1: &NodeState, n2: &NodeState) -> Option<K
     p[0] = (2.0 * x0 + dx).dot(&dx) / (ln + g.l0);
     p.fixed_rows_mut::<3>(1).copy_from(&th1);
     p.fixed_rows_mut::<3>(4).copy_from(&th2);
-    Some(Kinematics { rr, p, b, ln })
+    let aux = Aux {
+        mgt,
+        th: [th1, th2],
+        ts,
+        qil: [q1l, q2l],
+        q_y: ql[1],
+        eta,
+        eij: [[e11, e12], [e21, e22]],
+    };
+    Some((Kinematics { rr, p, b, ln }, aux))
 }
 
 /// The 7×7 block of a 12×12 local stiffness on [`LOCAL_IDX`].
@@ -252,41 +285,50 @@ pub struct CorotResponse {
     pub rr: Matrix3<f64>,
 }
 
-fn perturbed(n: &NodeState, j: usize, h: f64) -> NodeState {
-    let mut m = *n;
-    if j < 3 {
-        m.u[j] += h;
-    } else {
-        let mut w = Vector3::zeros();
-        w[j - 3] = h;
-        m.r = rot_exp(&w) * n.r;
-    }
-    m
+/// Internal force of a co-rotational element at one configuration, with what its tangent
+/// needs: a Newton iteration forms the residual from [`Linearisation::force`] and the tangent
+/// only when it goes on, without evaluating the kinematics twice.
+#[derive(Debug, Clone)]
+pub struct Linearisation {
+    kin: Kinematics,
+    aux: Aux,
+    k7: Mat7,
+    f7: Vec7,
+    f: Vec12,
 }
 
-/// Geometric part ∂(Bᵀ f₇)/∂d of the tangent at fixed local forces `f7` = [N, M₁, M₂]
-/// (central differences of the closed-form B, see the module docs), global, not symmetrised.
-/// `None` for a degenerate configuration.
-pub fn geometric_tangent(g: &CorotGeometry, n1: &NodeState, n2: &NodeState, f7: &Vec7) -> Option<Mat12> {
-    let mut k = Mat12::zeros();
-    let ht = 1e-6 * g.l0.max(1e-12);
-    let hr = 1e-6;
-    for j in 0..12 {
-        let (node, dof) = (j / 6, j % 6);
-        let h = if dof < 3 { ht } else { hr };
-        let mut cols = [Vec12::zeros(); 2];
-        for (s, col) in [h, -h].iter().zip(cols.iter_mut()) {
-            let (a, b) = if node == 0 {
-                (perturbed(n1, dof, *s), *n2)
-            } else {
-                (*n1, perturbed(n2, dof, *s))
-            };
-            let kp = kinematics(g, &a, &b)?;
-            *col = kp.b.transpose() * f7;
-        }
-        k.set_column(j, &((cols[0] - cols[1]) / (2.0 * h)));
+impl Linearisation {
+    /// Global internal force on [node 1, node 2] (N, N·mm).
+    pub fn force(&self) -> &Vec12 {
+        &self.f
     }
-    Some(k)
+
+    /// Local deformations p = [ū, θ̄₁, θ̄₂].
+    pub fn deformations(&self) -> &Vec7 {
+        &self.kin.p
+    }
+
+    /// Consistent tangent Bᵀ k₇ B + K_σ (not symmetrised), global; `None` when not finite.
+    pub fn tangent(&self) -> Option<Mat12> {
+        let kin = &self.kin;
+        let ks = tangent::geometric_local(&self.aux, kin, &self.f7);
+        let k = kin.b.tr_mul(&(self.k7 * kin.b)) + tangent::to_global(&ks, &kin.rr);
+        k.iter().all(|v| v.is_finite()).then_some(k)
+    }
+}
+
+/// The internal force (and, on demand, the tangent) of a co-rotational element with linear
+/// local stiffness `k_local` (12×12, local axes of the initial frame). `None` for a degenerate
+/// configuration or a non-finite force.
+pub fn linearise(g: &CorotGeometry, k_local: &Mat12, n1: &NodeState, n2: &NodeState) -> Option<Linearisation> {
+    let (kin, aux) = kinematics_aux(g, n1, n2)?;
+    let k7 = k7_of(k_local);
+    let f7 = k7 * kin.p;
+    let f = kin.b.transpose() * f7;
+    if f.iter().any(|v| !v.is_finite()) {
+        return None;
+    }
+    Some(Linearisation { kin, aux, k7, f7, f })
 }
 
 /// Internal force and consistent tangent of a co-rotational element with linear local
@@ -299,117 +341,17 @@ pub fn response(
     n2: &NodeState,
     with_tangent: bool,
 ) -> Option<CorotResponse> {
-    let kin = kinematics(g, n1, n2)?;
-    let k7 = k7_of(k_local);
-    let f7 = k7 * kin.p;
-    let f = kin.b.transpose() * f7;
-    let d_local = local_d(&kin.p);
-    let f_local = k_local * d_local;
-    let mut k = Mat12::zeros();
-    if with_tangent {
-        k = kin.b.transpose() * k7 * kin.b + geometric_tangent(g, n1, n2, &f7)?;
-    }
-    if f.iter().any(|v| !v.is_finite()) || k.iter().any(|v| !v.is_finite()) {
-        return None;
-    }
+    let lin = linearise(g, k_local, n1, n2)?;
+    let k = if with_tangent { lin.tangent()? } else { Mat12::zeros() };
+    let d_local = local_d(&lin.kin.p);
     Some(CorotResponse {
-        f,
+        f: lin.f,
         k,
-        f_local,
+        f_local: k_local * d_local,
         d_local,
-        rr: kin.rr,
+        rr: lin.kin.rr,
     })
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn geom() -> CorotGeometry {
-        CorotGeometry {
-            x1: Vector3::new(0.0, 0.0, 0.0),
-            x2: Vector3::new(10.0, 2.0, -1.0),
-            r0: crate::fem::transform::beam_frame([0.0; 3], [10.0, 2.0, -1.0], [0.0, 0.0, 1.0])
-                .map(|(l, _)| l.transpose())
-                .unwrap_or_else(Matrix3::identity),
-            l0: (105.0f64).sqrt(),
-        }
-    }
-
-    fn energy(g: &CorotGeometry, k7: &Mat7, a: &NodeState, b: &NodeState) -> f64 {
-        let kin = kinematics(g, a, b).unwrap_or_else(|| panic!("degenerate"));
-        0.5 * kin.p.dot(&(k7 * kin.p))
-    }
-
-    fn state() -> (NodeState, NodeState) {
-        (
-            NodeState {
-                u: Vector3::new(0.3, -0.2, 0.5),
-                r: rot_exp(&Vector3::new(0.4, -0.3, 0.7)),
-            },
-            NodeState {
-                u: Vector3::new(-1.0, 2.0, 0.7),
-                r: rot_exp(&Vector3::new(-0.2, 0.5, 0.9)),
-            },
-        )
-    }
-
-    fn k_local() -> Mat12 {
-        let p = crate::fem::Section::Rect { w: 1.0, h: 2.0 }.properties(0.3);
-        crate::fem::element::beam_local_stiffness(1000.0, 400.0, &p, 105f64.sqrt(), true)
-    }
-
-    /// f = ∂U/∂d (spin variations) and K = ∂f/∂d, by finite differences of the energy and force.
-    #[test]
-    fn force_and_tangent_are_consistent() {
-        let g = geom();
-        let kl = k_local();
-        let k7 = k7_of(&kl);
-        let (a, b) = state();
-        let r = response(&g, &kl, &a, &b, true).unwrap_or_else(|| panic!("degenerate"));
-        let h = 1e-6;
-        for j in 0..12 {
-            let (node, dof) = (j / 6, j % 6);
-            let e = |s: f64| {
-                let (x, y) = if node == 0 {
-                    (perturbed(&a, dof, s), b)
-                } else {
-                    (a, perturbed(&b, dof, s))
-                };
-                (energy(&g, &k7, &x, &y), response(&g, &kl, &x, &y, false).map(|r| r.f))
-            };
-            let (ep, fp) = e(h);
-            let (em, fm) = e(-h);
-            let fd = (ep - em) / (2.0 * h);
-            assert!((fd - r.f[j]).abs() < 1e-5 * r.f.amax(), "f[{j}]: {fd} vs {}", r.f[j]);
-            let (fp, fm) = (fp.unwrap_or_default(), fm.unwrap_or_default());
-            let col = (fp - fm) / (2.0 * h);
-            for i in 0..12 {
-                assert!(
-                    (col[i] - r.k[(i, j)]).abs() < 1e-5 * r.k.amax(),
-                    "K[{i},{j}]: {} vs {}",
-                    col[i],
-                    r.k[(i, j)]
-                );
-            }
-        }
-    }
-
-    /// A rigid motion gives no deformation and no force.
-    #[test]
-    fn rigid_motion_is_force_free() {
-        let g = geom();
-        let rot = rot_exp(&Vector3::new(1.0, -2.0, 0.5));
-        let t = Vector3::new(3.0, 4.0, -5.0);
-        let a = NodeState {
-            u: rot * g.x1 + t - g.x1,
-            r: rot,
-        };
-        let b = NodeState {
-            u: rot * g.x2 + t - g.x2,
-            r: rot,
-        };
-        let r = response(&g, &k_local(), &a, &b, false).unwrap_or_else(|| panic!("degenerate"));
-        assert!(r.f.amax() < 1e-9, "{:?}", r.f);
-    }
-}
+mod tests;

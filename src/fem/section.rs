@@ -114,21 +114,23 @@ pub struct RectTorsion {
 /// precision (the slowly converging parts are summed in closed form through ζ(5) and Catalan's
 /// constant; the remainders decay like e^(−nπa/b)).
 pub fn rect_torsion(s1: f64, s2: f64) -> RectTorsion {
-    // Designs reuse a few leg sections many times: remember the last results on this thread.
+    // Designs reuse a few leg sections many times: remember the last 16 results on this
+    // thread (a fixed ring, first in first out: no heap allocation).
+    const SLOTS: usize = 16;
+    type Ring = ([Option<((u64, u64), RectTorsion)>; SLOTS], usize);
     thread_local! {
-        static MEMO: std::cell::RefCell<Vec<((u64, u64), RectTorsion)>> = const { std::cell::RefCell::new(Vec::new()) };
+        static MEMO: std::cell::RefCell<Ring> = const { std::cell::RefCell::new(([None; SLOTS], 0)) };
     }
     let key = (s1.to_bits(), s2.to_bits());
-    if let Some(hit) = MEMO.with(|m| m.borrow().iter().find(|(k, _)| *k == key).map(|(_, v)| *v)) {
+    let hit = MEMO.with(|m| m.borrow().0.iter().flatten().find(|(k, _)| *k == key).map(|(_, v)| *v));
+    if let Some(hit) = hit {
         return hit;
     }
     let out = rect_torsion_series(s1, s2);
     MEMO.with(|m| {
-        let mut m = m.borrow_mut();
-        if m.len() >= 16 {
-            m.remove(0);
-        }
-        m.push((key, out));
+        let (ring, next) = &mut *m.borrow_mut();
+        ring[*next] = Some((key, out));
+        *next = (*next + 1) % SLOTS;
     });
     out
 }
@@ -251,53 +253,7 @@ impl Section {
     /// peak-bending points are added by the recovery from the moment direction.
     pub fn stress_points(&self) -> Vec<StressPoint> {
         match *self {
-            Section::Rect { w, h } => {
-                let t = rect_torsion(w, h);
-                // Torsional shear on the faces y = ±w/2 (length h) and z = ±h/2 (length w).
-                let (tau_yface, tau_zface) = if h >= w {
-                    (t.tau_long, t.tau_short)
-                } else {
-                    (t.tau_short, t.tau_long)
-                };
-                let a = w * h;
-                let mut pts = Vec::with_capacity(8);
-                for sy in [-1.0, 1.0] {
-                    for sz in [-1.0, 1.0] {
-                        pts.push(StressPoint {
-                            y: sy * w / 2.0,
-                            z: sz * h / 2.0,
-                            t_xy: 0.0,
-                            t_xz: 0.0,
-                            vy_xy: 0.0,
-                            vz_xz: 0.0,
-                            round_shear: 0.0,
-                        });
-                    }
-                }
-                for s in [-1.0, 1.0] {
-                    // Face y = s·w/2: torsional shear along z, direction (−z, y) ⇒ +s.
-                    pts.push(StressPoint {
-                        y: s * w / 2.0,
-                        z: 0.0,
-                        t_xy: 0.0,
-                        t_xz: s * tau_yface,
-                        vy_xy: 0.0,
-                        vz_xz: 1.5 / a,
-                        round_shear: 0.0,
-                    });
-                    // Face z = s·h/2: torsional shear along −y·s.
-                    pts.push(StressPoint {
-                        y: 0.0,
-                        z: s * h / 2.0,
-                        t_xy: -s * tau_zface,
-                        t_xz: 0.0,
-                        vy_xy: 1.5 / a,
-                        vz_xz: 0.0,
-                        round_shear: 0.0,
-                    });
-                }
-                pts
-            }
+            Section::Rect { w, h } => rect_stress_points(w, h).to_vec(),
             Section::Circle { .. } | Section::Tube { .. } => (0..36)
                 .filter_map(|k| {
                     let phi = k as f64 * PI / 18.0;
@@ -339,4 +295,55 @@ impl Section {
             round_shear: tau_na,
         })
     }
+}
+
+/// [`Section::stress_points`] of a `w` × `h` rectangle, without allocating: the four corners,
+/// then for s = −1, +1 the mid-points of the faces y = s·w/2 and z = s·h/2.
+pub fn rect_stress_points(w: f64, h: f64) -> [StressPoint; 8] {
+    let t = rect_torsion(w, h);
+    // Torsional shear on the faces y = ±w/2 (length h) and z = ±h/2 (length w).
+    let (tau_yface, tau_zface) = if h >= w {
+        (t.tau_long, t.tau_short)
+    } else {
+        (t.tau_short, t.tau_long)
+    };
+    let a = w * h;
+    let point = |y: f64, z: f64| StressPoint {
+        y,
+        z,
+        t_xy: 0.0,
+        t_xz: 0.0,
+        vy_xy: 0.0,
+        vz_xz: 0.0,
+        round_shear: 0.0,
+    };
+    let corner = |sy: f64, sz: f64| point(sy * w / 2.0, sz * h / 2.0);
+    let side = |s: f64| {
+        // Face y = s·w/2: torsional shear along z, direction (−z, y) ⇒ +s; face z = s·h/2:
+        // torsional shear along −y·s.
+        [
+            StressPoint {
+                t_xz: s * tau_yface,
+                vz_xz: 1.5 / a,
+                ..point(s * w / 2.0, 0.0)
+            },
+            StressPoint {
+                t_xy: -s * tau_zface,
+                vy_xy: 1.5 / a,
+                ..point(0.0, s * h / 2.0)
+            },
+        ]
+    };
+    let [n0, n1] = side(-1.0);
+    let [p0, p1] = side(1.0);
+    [
+        corner(-1.0, -1.0),
+        corner(-1.0, 1.0),
+        corner(1.0, -1.0),
+        corner(1.0, 1.0),
+        n0,
+        n1,
+        p0,
+        p1,
+    ]
 }

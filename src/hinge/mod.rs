@@ -37,6 +37,7 @@ pub mod damping;
 pub mod element;
 pub mod error;
 pub mod integrate;
+pub mod notes;
 pub mod pieces;
 pub mod profile;
 pub mod section;
@@ -44,8 +45,6 @@ pub mod solid_effects;
 pub mod spec;
 pub mod stress;
 pub mod torsion;
-
-use std::collections::BTreeMap;
 
 use nalgebra::Matrix6;
 use serde::Serialize;
@@ -57,6 +56,7 @@ pub use element::{
 };
 pub use error::HingeError;
 use integrate::{flex_integrals, flex_integrals_with_notch, Moduli, Quadrature};
+pub use notes::{ClosedForms, ModelNotes};
 pub use profile::{Contour, Profile};
 pub use section::Section;
 pub use spec::HingeSpec;
@@ -92,13 +92,13 @@ pub struct HingeResult {
     #[serde(flatten)]
     pub hinge: Stiffness,
     /// Published closed forms, name → compliant-axis stiffness of the notch alone, N·mm/rad.
-    pub closed_form: BTreeMap<&'static str, f64>,
+    pub closed_form: ClosedForms,
     /// The same quantities for the notch alone (blank_length = 0).
     pub notch_only: Stiffness,
     /// Notch stress-concentration factor applied to the beam stress.
     pub stress_concentration: f64,
-    /// Idealisations and models used.
-    pub model: Vec<String>,
+    /// Idealisations and models used (text made when written: [`ModelNotes::lines`]).
+    pub model: ModelNotes,
 }
 
 /// Checks the material constants the hinge model needs.
@@ -233,7 +233,7 @@ pub fn characterise(spec: &HingeSpec, material: &Material) -> Result<HingeResult
     let kt = stress::stress_factor(&profile, material.nu);
     let (hinge, notch_only) = stiffness_pair(&profile, &notch, material, kt);
     let closed = closed_forms(spec, material.e);
-    let model = model_notes(&profile, material, kt);
+    let model = ModelNotes::new(&profile, material, kt);
     Ok(HingeResult {
         hinge,
         closed_form: closed,
@@ -251,77 +251,35 @@ pub fn profile_stiffness(profile: &Profile, material: &Material) -> Result<Stiff
 }
 
 /// Closed-form compliant-axis stiffnesses applicable to the family (notch alone).
-pub fn closed_forms(spec: &HingeSpec, e: f64) -> BTreeMap<&'static str, f64> {
+pub fn closed_forms(spec: &HingeSpec, e: f64) -> ClosedForms {
     use closed_form as cf;
-    let mut m = BTreeMap::new();
     match *spec {
-        HingeSpec::CircularNotch { r, t, w, .. } => {
-            m.insert("paros_weisbord_full", cf::paros_weisbord_full(r, t, w, e));
-            m.insert("paros_weisbord_simplified", cf::paros_weisbord_simplified(r, t, w, e));
-            m.insert("wu_zhou", cf::wu_zhou(r, t, w, e));
-            m.insert(
+        HingeSpec::CircularNotch { r, t, w, .. } => ClosedForms::new(&[
+            ("paros_weisbord_full", cf::paros_weisbord_full(r, t, w, e)),
+            ("paros_weisbord_simplified", cf::paros_weisbord_simplified(r, t, w, e)),
+            ("wu_zhou", cf::wu_zhou(r, t, w, e)),
+            (
                 "smith_lobontiu_elliptical_ax_eq_ay",
                 cf::smith_lobontiu_elliptical(r, r, t, w, e),
-            );
-        }
-        HingeSpec::EllipticalNotch { ax, ay, t, w, .. } => {
-            m.insert(
-                "smith_lobontiu_elliptical",
-                cf::smith_lobontiu_elliptical(ax, ay, t, w, e),
-            );
-        }
+            ),
+        ]),
+        HingeSpec::EllipticalNotch { ax, ay, t, w, .. } => ClosedForms::new(&[(
+            "smith_lobontiu_elliptical",
+            cf::smith_lobontiu_elliptical(ax, ay, t, w, e),
+        )]),
         HingeSpec::CornerFilleted { l, r, t, w, .. } => {
-            m.insert("lobontiu_corner_filleted", cf::lobontiu_corner_filleted(l, r, t, w, e));
+            ClosedForms::new(&[("lobontiu_corner_filleted", cf::lobontiu_corner_filleted(l, r, t, w, e))])
         }
-        HingeSpec::Leaf { l, t, w, .. } => {
-            m.insert("euler_bernoulli", cf::leaf(l, t, w, e));
-        }
-        HingeSpec::SphericalNeck { l, t, r, .. } => {
-            m.insert(
+        HingeSpec::Leaf { l, t, w, .. } => ClosedForms::new(&[("euler_bernoulli", cf::leaf(l, t, w, e))]),
+        HingeSpec::SphericalNeck { l, t, r, .. } => ClosedForms::new(&[
+            (
                 "paros_weisbord_circular_section",
                 cf::paros_weisbord_circular_section(l, t, r, e),
-            );
-            m.insert(
+            ),
+            (
                 "paros_weisbord_circular_section_simplified",
                 cf::paros_weisbord_circular_section_simplified(l, t, r, e),
-            );
-        }
+            ),
+        ]),
     }
-    m
-}
-
-fn model_notes(profile: &Profile, material: &Material, kt: f64) -> Vec<String> {
-    let mut v = vec![
-        "bending/shear/axial: exact flexibility of a variable-section Timoshenko beam, Gauss-Legendre on pieces split at profile breakpoints (Cowper shear coefficients)".to_string(),
-        "compliance referenced to the centre of the loaded blank end face, the other face clamped".to_string(),
-    ];
-    match profile.contour {
-        Contour::SphericalNeck { .. } => {
-            v.push(
-                "torsion: Saint-Venant (circular waist, no warping); clipped-disk J blended between disk and square"
-                    .into(),
-            );
-            v.push(format!("stress: 32M/(pi t^3) at the waist x Kt = {kt:.4} (shoulder-fillet Kt = 1 + 0.041 sqrt(t/R), fitted to solid models within 2%)"));
-        }
-        _ => {
-            v.push("torsion: Vlasov non-uniform torsion FE (Hermite cubics), Timoshenko-Goodier J(x), exact rectangle warping constant, warping restrained at both blank end faces; in the blank the load-spreading effective thickness (solid models: circular notches -11...+4%, corner-filleted -14%)".into());
-            v.push(format!("stress: 6M/(w t^2) at the waist x {kt:.4} (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, divided by sqrt(P) for the plane-strain waist; solid models: within 6%)"));
-        }
-    }
-    match profile.spread {
-        Some(sp) => v.push(format!(
-            "load spreading (solid-calibrated): effective half-size grows at slope {} from |x| = {:.3} mm to {:.3} mm",
-            sp.slope,
-            sp.from,
-            profile.spread_reach()
-        )),
-        None => v.push("load spreading: none needed (the contour never widens faster than slope 1/2)".into()),
-    }
-    let g = solid_effects::short_notch_factor(profile);
-    let p = solid_effects::plane_strain_factor(profile, material.nu);
-    v.push(format!(
-        "compliant-axis bending modulus of the notch region E*P/G (solid-calibrated): short-notch G = {g:.4}, plane-strain P = {p:.4}"
-    ));
-    v.push("calibration: converged 10-node tetrahedron solid models (tools/solid_reference.py); circular notches t/R 0.06-0.5 within 2% bending, 4% axial; turned necks l/t >= 1 within 3% bending, 5% torsion, 3% axial; leaf within 5%".into());
-    v
 }

@@ -70,8 +70,9 @@ impl StageDesign {
                 ),
             ));
         }
-        let revolute = hinge::flex_region(&rp, &self.material).map_err(hinge_err(Joint::Revolute))?;
-        let spherical = hinge::flex_region(&sp, &self.material).map_err(hinge_err(Joint::Spherical))?;
+        // Remembered per thread: a sweep's designs repeat their hinges (super::hinge_memo).
+        let revolute = super::hinge_memo::flex_region(&rp, &self.material).map_err(hinge_err(Joint::Revolute))?;
+        let spherical = super::hinge_memo::flex_region(&sp, &self.material).map_err(hinge_err(Joint::Spherical))?;
         Ok(ValidStage {
             design: self.clone(),
             revolute,

@@ -21,6 +21,8 @@
 //! stiffer: the linear FE pose must then equal the linearised rigid-body kinematics.
 
 mod build;
+mod hinge_memo;
+mod linear;
 mod mesh_export;
 mod nonlinear;
 mod results;
@@ -29,6 +31,7 @@ mod solve;
 
 pub use crate::hinge::hinge_peak_stress;
 use build::*;
+pub use linear::{LinearStage, StageResponse};
 pub use nonlinear::NONLINEAR_HINGE_SEGMENTS;
 pub use solve::{stiffness_z, StageAnalysis};
 
@@ -244,9 +247,7 @@ pub struct StageCaseResult {
 impl StageCaseResult {
     /// T = max σ_sph / max σ_rev (Ruiz et al. (2019) §5).
     pub fn t_ratio(&self) -> f64 {
-        let s = self.spherical_stress.iter().cloned().fold(0.0, f64::max);
-        let r = self.revolute_stress.iter().cloned().fold(0.0, f64::max);
-        s / r
+        self.response().t_ratio()
     }
 }
 

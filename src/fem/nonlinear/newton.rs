@@ -3,7 +3,7 @@
 
 use super::convergence::{Convergence, Iterate, Verdict};
 use super::residual::{dot, norm};
-use super::state::{Assemble, CaseCtx, State};
+use super::state::{CaseCtx, State};
 use super::NonlinearOptions;
 
 /// Outcome of a failed step (for the error message).
@@ -63,11 +63,10 @@ pub(super) fn newton(
         reason: "degenerate element or non-finite internal force".into(),
     };
     for it in 0..=opts.max_iterations {
-        // The residual first: the tangent (most of the cost, see fem::corot) only when the
-        // iteration goes on, so the converged state never assembles one.
-        let ev = ctx
-            .evaluate(st, lambda, Assemble::None)
-            .ok_or_else(|| degenerate(f64::NAN))?;
+        // The residual first, keeping each element's linearisation: the tangent is formed
+        // from it only when the iteration goes on (the converged state never assembles one,
+        // and no iteration evaluates the element kinematics twice).
+        let (ev, lins) = ctx.residual(st, lambda).ok_or_else(|| degenerate(f64::NAN))?;
         let rn = norm(&ev.r);
         out.residuals.push(rn);
         let iterate = Iterate::after(&ev.r, ev.load, ev.internal, last_dq.as_deref(), &acc);
@@ -94,7 +93,7 @@ pub(super) fn newton(
             }
             Verdict::Continue => {}
         }
-        let values = ctx.evaluate(st, lambda, mode).ok_or_else(|| degenerate(rn))?.values;
+        let values = ctx.tangent_values(st, &ev, &lins, mode).ok_or_else(|| degenerate(rn))?;
         let neg: Vec<f64> = ev.r.iter().map(|v| -v).collect();
         let sol = ctx
             .solve(&values, &[neg])

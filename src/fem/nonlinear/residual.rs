@@ -78,20 +78,45 @@ impl CaseCtx<'_> {
 
     /// Residual, tangent and force norms at load factor `lambda`.
     pub(super) fn evaluate(&self, st: &State, lambda: f64, mode: Assemble) -> Option<Eval> {
-        let tangent = mode != Assemble::None;
-        let sym = mode == Assemble::Symmetric;
+        let (mut ev, lin) = self.residual(st, lambda)?;
+        if mode != Assemble::None {
+            ev.values = self.tangent_values(st, &ev, &lin, mode)?;
+        }
+        Some(ev)
+    }
+
+    /// Residual and force norms at load factor `lambda` (no tangent values), with the
+    /// co-rotational elements' linearisations for [`Self::tangent_values`] at the same state.
+    pub(super) fn residual(&self, st: &State, lambda: f64) -> Option<(Eval, Vec<Option<corot::Linearisation>>)> {
         let nn = self.model.nodes.len();
         let arms = self.arms(st);
         let mut f_int = vec![0.0; 6 * nn];
-        let mut mats = Vec::with_capacity(self.elems.len());
+        let mut lins = Vec::with_capacity(self.elems.len());
         for ie in 0..self.elems.len() {
-            let (nodes, n_nodes, k, f) = self.element_response(st, ie, tangent)?;
-            for s in 0..n_nodes {
-                for d in 0..6 {
-                    f_int[6 * nodes[s] + d] += f[6 * s + d];
+            let mut add = |nodes: &[usize; 2], n_nodes: usize, f: &[f64]| {
+                for s in 0..n_nodes {
+                    for d in 0..6 {
+                        f_int[6 * nodes[s] + d] += f[6 * s + d];
+                    }
+                }
+            };
+            match &self.elems[ie] {
+                ElemData::Corot { nodes, geom, k_local } => {
+                    let lin = corot::linearise(
+                        geom,
+                        k_local,
+                        &Self::node_state(st, nodes[0]),
+                        &Self::node_state(st, nodes[1]),
+                    )?;
+                    add(nodes, 2, lin.force().as_slice());
+                    lins.push(Some(lin));
+                }
+                ElemData::Spring { .. } => {
+                    let (nodes, n_nodes, _, f) = self.element_response(st, ie, false)?;
+                    add(&nodes, n_nodes, &f);
+                    lins.push(None);
                 }
             }
-            mats.push((nodes, n_nodes, k));
         }
         let net: Vec<f64> = f_int.iter().zip(&self.f_ext).map(|(a, b)| a - lambda * b).collect();
         let net_i = self.to_independent(&arms, &net);
@@ -102,56 +127,77 @@ impl CaseCtx<'_> {
         if r.iter().any(|v| !v.is_finite()) {
             return None;
         }
-        let mut values = Vec::with_capacity(self.pattern.n_triplets());
-        if tangent {
-            for (nodes, n_nodes, k) in &mats {
-                let mut t = Mat12::identity();
-                let mut any = false;
-                for s in 0..*n_nodes {
-                    if let Some(a) = &arms[nodes[s]] {
-                        t.fixed_view_mut::<6, 6>(6 * s, 6 * s).copy_from(a);
-                        any = true;
-                    }
-                }
-                let ks = if sym { (k + k.transpose()) * 0.5 } else { *k };
-                let kp = if any { t.transpose() * ks * t } else { ks };
-                let reps = [self.map.rep[nodes[0]], self.map.rep[nodes[1]]];
-                let eqs = self.map.element_eqs(reps, *n_nodes);
-                for_each_pair_in(sym, &eqs, 6 * n_nodes, |a, b, _, _| values.push(kp[(a, b)]));
-            }
-            // Rigid links: δ(a × F_s) = [F_s×][a×] δw_m (a = R_m a₀), symmetrised for Cholesky.
-            for &m in &self.masters {
-                let mut g = Matrix3::zeros();
-                for n in 0..nn {
-                    if self.map.rep[n] == m && n != m {
-                        let fs = Vector3::new(net[6 * n], net[6 * n + 1], net[6 * n + 2]);
-                        let a = st.r[m] * self.arm0[n];
-                        g += skew(&fs) * skew(&a);
-                    }
-                }
-                let mut g6 = Matrix6::zeros();
-                let gs = if sym { (g + g.transpose()) * 0.5 } else { g };
-                g6.fixed_view_mut::<3, 3>(3, 3).copy_from(&gs);
-                if let Some(f) = self.model.frames.get(&m) {
-                    let fb = frame_block(f);
-                    g6 = fb.transpose() * g6 * fb;
-                }
-                let mut k12 = Mat12::zeros();
-                k12.fixed_view_mut::<6, 6>(0, 0).copy_from(&g6);
-                let eqs = self.map.element_eqs([m, m], 1);
-                for_each_pair_in(sym, &eqs, 6, |a, b, _, _| values.push(k12[(a, b)]));
-            }
-            values.resize(values.len() + self.n_eq(), 0.0);
-            if values.iter().any(|v| !v.is_finite()) {
-                return None;
-            }
-        }
-        Some(Eval {
+        let ev = Eval {
             r,
-            values,
+            values: Vec::new(),
             load,
             internal,
-        })
+            net,
+            arms,
+        };
+        Some((ev, lins))
+    }
+
+    /// Tangent values (pattern order, see [`Eval::values`]) at the state `ev` and `lins` were
+    /// evaluated at ([`Self::residual`]).
+    pub(super) fn tangent_values(
+        &self,
+        st: &State,
+        ev: &Eval,
+        lins: &[Option<corot::Linearisation>],
+        mode: Assemble,
+    ) -> Option<Vec<f64>> {
+        let sym = mode == Assemble::Symmetric;
+        let (arms, net) = (&ev.arms, &ev.net);
+        let mut values = Vec::with_capacity(self.pattern.n_triplets());
+        for (ie, lin) in lins.iter().enumerate() {
+            let (nodes, n_nodes, k) = match (lin, &self.elems[ie]) {
+                (Some(lin), ElemData::Corot { nodes, .. }) => (*nodes, 2, lin.tangent()?),
+                _ => {
+                    let (nodes, n_nodes, k, _) = self.element_response(st, ie, true)?;
+                    (nodes, n_nodes, k)
+                }
+            };
+            let mut kp = if sym { (k + k.transpose()) * 0.5 } else { k };
+            // Tᵀ K T with T = diag(arm of each node), block by block (most arms are identities).
+            for s in 0..n_nodes {
+                if let Some(a) = &arms[nodes[s]] {
+                    for c in 0..n_nodes {
+                        let rows = a.tr_mul(&kp.fixed_view::<6, 6>(6 * s, 6 * c));
+                        kp.fixed_view_mut::<6, 6>(6 * s, 6 * c).copy_from(&rows);
+                        let cols = kp.fixed_view::<6, 6>(6 * c, 6 * s) * a;
+                        kp.fixed_view_mut::<6, 6>(6 * c, 6 * s).copy_from(&cols);
+                    }
+                }
+            }
+            let reps = [self.map.rep[nodes[0]], self.map.rep[nodes[1]]];
+            let eqs = self.map.element_eqs(reps, n_nodes);
+            for_each_pair_in(sym, &eqs, 6 * n_nodes, |a, b, _, _| values.push(kp[(a, b)]));
+        }
+        // Rigid links: δ(a × F_s) = [F_s×][a×] δw_m (a = R_m a₀), symmetrised for Cholesky.
+        for &m in &self.masters {
+            let mut g = Matrix3::zeros();
+            for n in 0..self.model.nodes.len() {
+                if self.map.rep[n] == m && n != m {
+                    let fs = Vector3::new(net[6 * n], net[6 * n + 1], net[6 * n + 2]);
+                    let a = st.r[m] * self.arm0[n];
+                    g += skew(&fs) * skew(&a);
+                }
+            }
+            let mut g6 = Matrix6::zeros();
+            let gs = if sym { (g + g.transpose()) * 0.5 } else { g };
+            g6.fixed_view_mut::<3, 3>(3, 3).copy_from(&gs);
+            if let Some(f) = self.model.frames.get(&m) {
+                let fb = frame_block(f);
+                g6 = fb.transpose() * g6 * fb;
+            }
+            let mut k12 = Mat12::zeros();
+            k12.fixed_view_mut::<6, 6>(0, 0).copy_from(&g6);
+            let eqs = self.map.element_eqs([m, m], 1);
+            for_each_pair_in(sym, &eqs, 6, |a, b, _, _| values.push(k12[(a, b)]));
+        }
+        values.resize(values.len() + self.n_eq(), 0.0);
+        values.iter().all(|v| v.is_finite()).then_some(values)
     }
 
     /// Solves K x = b for several right-hand sides with the tangent of [`Self::evaluate`] in

@@ -124,6 +124,10 @@ pub(super) struct Eval {
     pub(super) load: f64,
     /// ‖f_int‖ carried to the independent nodes (constrained DOFs included: the reactions).
     pub(super) internal: f64,
+    /// f_int − λ f_ext per node (6 each, global).
+    pub(super) net: Vec<f64>,
+    /// The increment maps of [`CaseCtx::arms`] at this configuration.
+    pub(super) arms: Vec<Option<Matrix6<f64>>>,
 }
 
 /// Which tangent [`CaseCtx::evaluate`] assembles.

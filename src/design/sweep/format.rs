@@ -1,0 +1,175 @@
+//! How a design's result goes into its sweep line: the fields kept (`--fields`), the fields
+//! left out by default, and the model notes taken out into the sidecar.
+
+use super::hash::{canonical, Fnv128};
+use serde_json::{Map, Value};
+
+/// How a design's result goes into its line.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct LineFormat {
+    /// Result fields kept, as dotted paths (`stiffness_z`, `at_allowable.force`,
+    /// `load_cases.0.platform`); `None` keeps every field.
+    pub fields: Option<Vec<String>>,
+    /// Take the model notes (`result.model`, text that is the same for every design of a
+    /// sweep) out of the line: the line's result holds `model_notes`, the notes' 8-digit
+    /// FNV hash, and the notes go once into a sidecar file ([`Row::notes`]).
+    pub notes_by_ref: bool,
+    /// Result fields left out of the line when [`Self::fields`] is `None`, as dotted paths in
+    /// which `*` matches any key or array index (see [`omitted_fields`]).
+    pub omit: Vec<String>,
+}
+
+/// The result fields a sweep of analysis `kind` leaves out of its lines by default
+/// (`flexfem sweep --full` keeps them, `--fields` picks from the full result). A stage line
+/// keeps every scalar response; it leaves out the 6×6 platform compliance (its eigenvalues
+/// stay), the echo of the material and of the actuator forces (both in the case) and the
+/// per-hinge stresses (their maximum, `max_von_mises`, stays): ~2,100 → ~980 bytes a line.
+pub fn omitted_fields(kind: &str) -> &'static [&'static str] {
+    match kind {
+        "stage" => &[
+            "platform_stiffness.compliance",
+            "material",
+            "load_cases.*.forces",
+            "load_cases.*.hinge_stress",
+        ],
+        _ => &[],
+    }
+}
+
+/// Removes the values at a dotted path whose `*` parts match any key or index.
+fn remove_path(v: &mut Value, path: &[&str]) {
+    let Some((first, rest)) = path.split_first() else {
+        return;
+    };
+    match v {
+        Value::Object(m) if rest.is_empty() => {
+            if *first == "*" {
+                m.clear();
+            } else {
+                m.shift_remove(*first);
+            }
+        }
+        Value::Object(m) if *first == "*" => m.values_mut().for_each(|x| remove_path(x, rest)),
+        Value::Object(m) => {
+            if let Some(x) = m.get_mut(*first) {
+                remove_path(x, rest);
+            }
+        }
+        Value::Array(a) if *first == "*" && !rest.is_empty() => a.iter_mut().for_each(|x| remove_path(x, rest)),
+        Value::Array(a) if !rest.is_empty() => {
+            if let Some(x) = first.parse::<usize>().ok().and_then(|i| a.get_mut(i)) {
+                remove_path(x, rest);
+            }
+        }
+        _ => {}
+    }
+}
+
+impl LineFormat {
+    /// Parses `--fields a,b.c` (empty names are refused).
+    pub fn parse_fields(text: &str) -> Result<Vec<String>, String> {
+        let fields: Vec<String> = text.split(',').map(|f| f.trim().to_string()).collect();
+        if fields.iter().any(|f| f.is_empty() || f.split('.').any(str::is_empty)) {
+            return Err(
+                "give comma-separated result fields as dotted paths, e.g. stiffness_z,at_allowable.force".into(),
+            );
+        }
+        Ok(fields)
+    }
+
+    /// The reference of model notes in a line (see [`Self::notes_by_ref`]).
+    pub fn notes_ref(notes: &Value) -> String {
+        let mut h = Fnv128::new();
+        canonical(notes, &mut h);
+        format!("{:08x}", (h.0 >> 96) as u32)
+    }
+
+    /// [`Self::notes_ref`] of notes whose compact JSON is `json`: when they hold no object
+    /// (notes are an array of strings) the canonical text is that JSON, hashed as it stands.
+    fn notes_ref_of(notes: &Value, json: &str) -> String {
+        fn has_object(v: &Value) -> bool {
+            match v {
+                Value::Object(_) => true,
+                Value::Array(a) => a.iter().any(has_object),
+                _ => false,
+            }
+        }
+        if has_object(notes) {
+            return Self::notes_ref(notes);
+        }
+        let mut h = Fnv128::new();
+        h.write(json.as_bytes());
+        format!("{:08x}", (h.0 >> 96) as u32)
+    }
+
+    /// Applies the format to a design's result; returns the notes taken out, as (reference,
+    /// notes, their compact JSON).
+    pub(super) fn apply(&self, result: &mut Value) -> Option<(String, Value, String)> {
+        let notes = match (self.notes_by_ref, result.as_object_mut()) {
+            (true, Some(m)) => m.remove("model").map(|notes| {
+                // Serialised once: hashed for the reference and written to the sidecar.
+                let json = serde_json::to_string(&notes).unwrap_or_else(|_| notes.to_string());
+                let r = Self::notes_ref_of(&notes, &json);
+                m.insert("model_notes".into(), Value::String(r.clone()));
+                (r, notes, json)
+            }),
+            _ => None,
+        };
+        if self.fields.is_none() {
+            for p in &self.omit {
+                remove_path(result, &p.split('.').collect::<Vec<_>>());
+            }
+        }
+        if let Some(fields) = &self.fields {
+            let mut kept = Value::Object(Map::new());
+            for f in fields {
+                let path: Vec<&str> = f.split('.').collect();
+                if let Some(v) = pointer(result, &path) {
+                    insert_path(&mut kept, &path, v.clone());
+                }
+            }
+            *result = kept;
+        }
+        notes
+    }
+}
+
+/// The value at a dotted path (object keys, array indices).
+fn pointer<'a>(v: &'a Value, path: &[&str]) -> Option<&'a Value> {
+    path.iter().try_fold(v, |v, key| match v {
+        Value::Object(m) => m.get(*key),
+        Value::Array(a) => key.parse::<usize>().ok().and_then(|i| a.get(i)),
+        _ => None,
+    })
+}
+
+/// Sets `path` in `out` (objects created as needed; array indices become object keys).
+fn insert_path(out: &mut Value, path: &[&str], v: Value) {
+    let Some((last, head)) = path.split_last() else { return };
+    let mut cur = out;
+    for key in head {
+        let Value::Object(m) = cur else { return };
+        cur = m.entry(key.to_string()).or_insert_with(|| Value::Object(Map::new()));
+    }
+    if let Value::Object(m) = cur {
+        m.insert(last.to_string(), v);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The reference hashed from the notes' JSON equals the canonical one (escapes, non-ASCII
+    /// and numbers included), and notes holding an object still sort its keys.
+    #[test]
+    fn notes_reference_from_json_is_the_canonical_one() {
+        for notes in [
+            serde_json::json!(["a \"quoted\" note", "K_t = 1.2345", "é\n\t", 1.5e-300, -0.0]),
+            serde_json::json!([{"z": 1, "a": 2}, "x"]),
+        ] {
+            let json = serde_json::to_string(&notes).unwrap();
+            assert_eq!(LineFormat::notes_ref_of(&notes, &json), LineFormat::notes_ref(&notes));
+        }
+    }
+}

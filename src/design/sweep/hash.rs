@@ -1,0 +1,164 @@
+//! `design_hash`: a 128-bit FNV-1a hash of a design's canonical JSON and of the mesh file it
+//! names (see [`super`]).
+
+use crate::case;
+use crate::case::sweep::Sweep;
+use serde_json::Value;
+use std::fs;
+use std::io;
+use std::path::Path;
+
+/// 128-bit FNV-1a (Fowler, Noll & Vo; IETF draft-eastlake-fnv): not cryptographic, only a
+/// change detector for resumed sweeps.
+#[derive(Clone, Copy)]
+pub(super) struct Fnv128(pub(super) u128);
+
+impl io::Write for Fnv128 {
+    fn write(&mut self, bytes: &[u8]) -> io::Result<usize> {
+        Fnv128::write(self, bytes);
+        Ok(bytes.len())
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+}
+
+impl Fnv128 {
+    const OFFSET: u128 = 0x6c62_272e_07bb_0142_62b8_2175_6295_c58d;
+    const PRIME: u128 = 0x0000_0000_0100_0000_0000_0000_0000_013b;
+
+    pub(super) fn new() -> Self {
+        Fnv128(Self::OFFSET)
+    }
+
+    pub(super) fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 ^= u128::from(b);
+            self.0 = self.0.wrapping_mul(Self::PRIME);
+        }
+    }
+}
+
+/// Canonical JSON: object keys sorted, no whitespace; numbers and strings as serde_json
+/// writes them.
+pub(super) fn canonical(v: &Value, out: &mut Fnv128) {
+    match v {
+        Value::Object(m) => {
+            let mut keys: Vec<&String> = m.keys().collect();
+            keys.sort_unstable();
+            out.write(b"{");
+            for (i, k) in keys.into_iter().enumerate() {
+                if i > 0 {
+                    out.write(b",");
+                }
+                // serde_json's string form of the key (escapes as in `Value::String`).
+                let _ = serde_json::to_writer(&mut *out, k);
+                out.write(b":");
+                canonical(&m[k], out);
+            }
+            out.write(b"}");
+        }
+        Value::Array(a) => {
+            out.write(b"[");
+            for (i, x) in a.iter().enumerate() {
+                if i > 0 {
+                    out.write(b",");
+                }
+                canonical(x, out);
+            }
+            out.write(b"]");
+        }
+        scalar => {
+            let _ = serde_json::to_writer(&mut *out, scalar);
+        }
+    }
+}
+
+/// The `design_hash` of a resolved design case (see the module notes), 32 hex digits.
+pub fn hash_design(design: &Value, base_dir: Option<&Path>) -> String {
+    let mut h = Fnv128::new();
+    canonical(design, &mut h);
+    if let Some(name) = design.get("mesh").and_then(Value::as_str) {
+        h.write(b"\0mesh\0");
+        match fs::read(case::resolve_file(name, base_dir)) {
+            Ok(bytes) => h.write(&bytes),
+            Err(_) => h.write(b"unreadable"),
+        }
+    }
+    format!("{:032x}", h.0)
+}
+
+/// The `design_hash` of design `index`, or `None` when the design cannot be built.
+pub fn design_hash(sweep: &Sweep, base_dir: Option<&Path>, index: usize) -> Option<String> {
+    sweep.design(index).ok().map(|d| hash_design(&d, base_dir))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// FNV-1a 128 test vector (draft-eastlake-fnv, "a"): d228cb696f1a8caf78912b704e4a8964.
+    #[test]
+    fn fnv128_matches_the_published_vector() {
+        let mut h = Fnv128::new();
+        h.write(b"a");
+        assert_eq!(format!("{:032x}", h.0), "d228cb696f1a8caf78912b704e4a8964");
+    }
+
+    /// The hash ignores key order and whitespace (canonical JSON) but sees any value change,
+    /// nested or not.
+    #[test]
+    fn design_hash_is_canonical() {
+        let a: Value = serde_json::from_str(r#"{"x": 1, "y": {"p": [1, 2], "q": "s"}}"#).unwrap();
+        let b: Value = serde_json::from_str(r#"{"y":{"q":"s","p":[1,2]},"x":1}"#).unwrap();
+        let c: Value = serde_json::from_str(r#"{"x": 1, "y": {"p": [1, 3], "q": "s"}}"#).unwrap();
+        assert_eq!(hash_design(&a, None), hash_design(&b, None));
+        assert_ne!(hash_design(&a, None), hash_design(&c, None));
+    }
+
+    /// The hash streams keys and scalars into the hasher; it must equal the hash of the
+    /// canonical text built as strings (`Value::to_string` of each key and scalar), which
+    /// earlier sweep outputs hold, so their lines stay resumable.
+    #[test]
+    fn streamed_canonical_equals_the_string_form() {
+        fn text(v: &Value, out: &mut String) {
+            match v {
+                Value::Object(m) => {
+                    let mut keys: Vec<&String> = m.keys().collect();
+                    keys.sort_unstable();
+                    out.push('{');
+                    for (i, k) in keys.into_iter().enumerate() {
+                        if i > 0 {
+                            out.push(',');
+                        }
+                        out.push_str(&Value::String(k.clone()).to_string());
+                        out.push(':');
+                        text(&m[k], out);
+                    }
+                    out.push('}');
+                }
+                Value::Array(a) => {
+                    out.push('[');
+                    for (i, x) in a.iter().enumerate() {
+                        if i > 0 {
+                            out.push(',');
+                        }
+                        text(x, out);
+                    }
+                    out.push(']');
+                }
+                scalar => out.push_str(&scalar.to_string()),
+            }
+        }
+        let v: Value = serde_json::from_str(
+            r#"{"z\"q": [1.5e-300, -0.0, 2, "a\u00e9\n"], "b": {"y": null, "x": true}, "é": 0.1}"#,
+        )
+        .unwrap();
+        let mut s = String::new();
+        text(&v, &mut s);
+        let mut h = Fnv128::new();
+        h.write(s.as_bytes());
+        assert_eq!(hash_design(&v, None), format!("{:032x}", h.0));
+    }
+}

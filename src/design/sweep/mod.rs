@@ -1,0 +1,280 @@
+//! `flexfem sweep`'s batch driver: full-factorial runs of a base case, one row per design.
+//!
+//! Designs run in parallel on rayon, each worker with its own solver cache (designs of one
+//! sweep share the topology, so their systems are refactorised numerically only). Each finished
+//! design becomes one JSON line, `{"index", "params", "design_hash", "result"}` or `{"index",
+//! "params", "design_hash", "error"}`, handed whole to a sink as soon as it is ready (with the
+//! JSON value it was written from); a failing design is an error row and the others go on.
+//!
+//! `design_hash` is a 128-bit FNV-1a hash of the design's full resolved case: the base case
+//! with the varied values set, as canonical JSON (object keys sorted, compact), followed by
+//! the bytes of the mesh file it names, if any. It ties a line to everything that produced it.
+//!
+//! A line holds nothing run-dependent (no timing), so shards `1/N … N/N` concatenated are the
+//! same set of lines as one unsharded run. The command-line half (output files, resume, locking,
+//! progress, exit codes) is [`crate::cli::sweep`]'s.
+
+mod check;
+mod format;
+mod hash;
+mod shard;
+
+pub use check::{check, load, with_suffix};
+pub use format::{omitted_fields, LineFormat};
+pub use hash::{design_hash, hash_design};
+pub use shard::Shard;
+
+use crate::analysis::Case;
+use crate::analysis::{self, Ctx, RunError};
+use crate::case::sweep::Sweep;
+use crate::case::CaseError;
+use crate::fem::SolverCache;
+use rayon::prelude::*;
+use serde_json::{Map, Value};
+use std::collections::HashSet;
+use std::io;
+use std::panic::{self, AssertUnwindSafe};
+use std::path::Path;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+/// One finished design: its JSON line (no newline) and whether it is an error row.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// Design index (row-major over the axes, last axis fastest).
+    pub index: usize,
+    /// True for an `error` row.
+    pub failed: bool,
+    /// `{"index","params","result"}` or `{"index","params","error"}`, compact JSON.
+    pub line: String,
+    /// The JSON value `line` was written from (the CSV table reads its cells from it).
+    pub value: Value,
+    /// With [`LineFormat::notes_by_ref`]: the model notes taken out of the line, as
+    /// (`model_notes` reference, notes).
+    pub notes: Option<(String, Value)>,
+    /// The notes of [`Self::notes`] as compact JSON (what the sidecar holds).
+    pub notes_json: Option<String>,
+}
+
+/// What [`run_sweep`] did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Tally {
+    /// Designs run (and handed to the sink).
+    pub run: usize,
+    /// Of those, error rows.
+    pub failed: usize,
+}
+
+/// The message of an error row: `path: message` for case errors (so the JSON path of the
+/// offending parameter leads), the full text for analysis failures.
+fn error_text(e: &RunError) -> String {
+    match e {
+        RunError::Case(c) => case_text(c),
+        RunError::Analysis(a) => a.to_string(),
+    }
+}
+
+fn case_text(e: &CaseError) -> String {
+    format!("{}: {}", e.path, e.message)
+}
+
+fn panic_text(p: &(dyn std::any::Any + Send)) -> String {
+    let msg = p
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| p.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "unknown panic".into());
+    format!("internal error (please report): {msg}")
+}
+
+/// Runs one design: `base` with the varied paths set, parsed with `base_dir` for file
+/// references, then analysed.
+/// The design's hash goes into `hash` as soon as the design is built.
+fn evaluate(
+    sweep: &Sweep,
+    base_dir: Option<&Path>,
+    index: usize,
+    cache: &mut SolverCache,
+    shapes: &Shapes,
+    hash: &mut Option<String>,
+) -> Result<Value, String> {
+    let design = sweep.design(index).map_err(|e| case_text(&e))?;
+    *hash = Some(hash_design(&design, base_dir));
+    let case = shapes.parse(design, base_dir).map_err(|e| case_text(&e))?;
+    if let Case::Sweep(_) = case {
+        return Err("analysis: a sweep cannot vary another sweep".into());
+    }
+    let mut ctx = Ctx::new(cache, false);
+    // Only the JSON goes into the line: no Markdown/CSV report.
+    ctx.with_report = false;
+    analysis::run_with(&case, &mut ctx)
+        .map(|o| o.json)
+        .map_err(|e| error_text(&e))
+}
+
+/// The array check of a sweep's designs ([`analysis::case_file::check_shape`]), done once per
+/// run when every varied value is a scalar: the designs then differ only in scalar values,
+/// which the check does not look at, so they all pass or fail it alike.
+struct Shapes {
+    scalar_axes: bool,
+    checked: AtomicBool,
+}
+
+impl Shapes {
+    fn new(sweep: &Sweep) -> Self {
+        let scalar = |v: &Value| !(v.is_array() || v.is_object());
+        Shapes {
+            scalar_axes: sweep.axes.iter().all(|(_, vals)| vals.iter().all(scalar)),
+            checked: AtomicBool::new(false),
+        }
+    }
+
+    /// [`analysis::parse_value`] of a design, skipping the array check once a design passed it.
+    fn parse(&self, design: Value, base_dir: Option<&Path>) -> Result<Case, CaseError> {
+        let skip = self.scalar_axes && self.checked.load(Ordering::Relaxed);
+        if !skip && design.is_object() {
+            analysis::case_file::check_shape(&design)?;
+            self.checked.store(true, Ordering::Relaxed);
+        }
+        analysis::case_file::parse_value_shaped(design, base_dir)
+    }
+}
+
+/// Runs design `index` of `sweep` into its JSON line. Never panics: a panic inside the
+/// analysis becomes an error row too.
+pub fn run_design(sweep: &Sweep, base_dir: Option<&Path>, index: usize) -> Row {
+    run_design_with(sweep, base_dir, index, &mut SolverCache::new())
+}
+
+/// [`run_design`] with the worker's solver cache.
+pub fn run_design_with(sweep: &Sweep, base_dir: Option<&Path>, index: usize, cache: &mut SolverCache) -> Row {
+    run_design_formatted(sweep, base_dir, index, cache, &LineFormat::default())
+}
+
+/// [`run_design_with`] writing the line in `format`.
+pub fn run_design_formatted(
+    sweep: &Sweep,
+    base_dir: Option<&Path>,
+    index: usize,
+    cache: &mut SolverCache,
+    format: &LineFormat,
+) -> Row {
+    run_design_in(sweep, base_dir, index, cache, format, &Shapes::new(sweep))
+}
+
+fn run_design_in(
+    sweep: &Sweep,
+    base_dir: Option<&Path>,
+    index: usize,
+    cache: &mut SolverCache,
+    format: &LineFormat,
+    shapes: &Shapes,
+) -> Row {
+    let mut hash = None;
+    let outcome = panic::catch_unwind(AssertUnwindSafe(|| {
+        evaluate(sweep, base_dir, index, cache, shapes, &mut hash)
+    }))
+    .unwrap_or_else(|p| {
+        // A panic may have left the cache half-updated: start the worker afresh.
+        *cache = SolverCache::new();
+        Err(panic_text(p.as_ref()))
+    });
+    let mut m = Map::with_capacity(4);
+    m.insert("index".into(), index.into());
+    m.insert("params".into(), Value::Object(sweep.params(index)));
+    if let Some(h) = hash.or_else(|| design_hash(sweep, base_dir, index)) {
+        m.insert("design_hash".into(), Value::String(h));
+    }
+    let failed = outcome.is_err();
+    let mut notes = None;
+    let mut notes_json = None;
+    match outcome {
+        Ok(mut result) => {
+            if let Some((r, n, json)) = format.apply(&mut result) {
+                notes = Some((r, n));
+                notes_json = Some(json);
+            }
+            m.insert("result".into(), result)
+        }
+        Err(msg) => m.insert("error".into(), Value::String(msg)),
+    };
+    let value = Value::Object(m);
+    // Straight into a byte buffer: `Value`'s `Display` (the same compact text) goes through
+    // `fmt::Formatter`, several times slower on number-heavy lines.
+    let line = serde_json::to_string(&value).unwrap_or_else(|_| value.to_string());
+    Row {
+        index,
+        failed,
+        line,
+        value,
+        notes,
+        notes_json,
+    }
+}
+
+/// Runs every design of `shard` not in `skip`, in parallel, handing each finished row to
+/// `sink` (called from worker threads, one row at a time per call; rows arrive in completion
+/// order). The first sink error stops the sweep (designs already started finish) and is
+/// returned.
+pub fn run_sweep<S>(
+    sweep: &Sweep,
+    base_dir: Option<&Path>,
+    shard: Shard,
+    skip: &HashSet<usize>,
+    sink: S,
+) -> io::Result<Tally>
+where
+    S: Fn(Row) -> io::Result<()> + Sync,
+{
+    run_sweep_formatted(sweep, base_dir, shard, skip, &LineFormat::default(), sink)
+}
+
+/// [`run_sweep`] writing the lines in `format`.
+pub fn run_sweep_formatted<S>(
+    sweep: &Sweep,
+    base_dir: Option<&Path>,
+    shard: Shard,
+    skip: &HashSet<usize>,
+    format: &LineFormat,
+    sink: S,
+) -> io::Result<Tally>
+where
+    S: Fn(Row) -> io::Result<()> + Sync,
+{
+    let run = AtomicUsize::new(0);
+    let failed = AtomicUsize::new(0);
+    let stop = AtomicBool::new(false);
+    let first_error: Mutex<Option<io::Error>> = Mutex::new(None);
+    let shapes = Shapes::new(sweep);
+    (0..shard.count(sweep.len()))
+        .into_par_iter()
+        .map(|j| shard.index(j))
+        .filter(|i| !skip.contains(i))
+        .for_each_init(SolverCache::new, |cache, i| {
+            if stop.load(Ordering::Relaxed) {
+                return;
+            }
+            let row = run_design_in(sweep, base_dir, i, cache, format, &shapes);
+            let row_failed = row.failed;
+            match sink(row) {
+                Ok(()) => {
+                    run.fetch_add(1, Ordering::Relaxed);
+                    if row_failed {
+                        failed.fetch_add(1, Ordering::Relaxed);
+                    }
+                }
+                Err(e) => {
+                    stop.store(true, Ordering::Relaxed);
+                    let mut slot = first_error.lock().unwrap_or_else(|p| p.into_inner());
+                    slot.get_or_insert(e);
+                }
+            }
+        });
+    if let Some(e) = first_error.into_inner().unwrap_or_else(|p| p.into_inner()) {
+        return Err(e);
+    }
+    Ok(Tally {
+        run: run.into_inner(),
+        failed: failed.into_inner(),
+    })
+}

@@ -1,0 +1,155 @@
+//! The text parts of a hinge characterisation, kept as numbers until they are written: the
+//! closed-form map and the model notes. [`super::characterise`] then costs no heap allocation
+//! (a sweep of hinges writes the notes once per file, not once per design); the text is made
+//! when the result is serialised or iterated.
+
+use super::profile::{Contour, Profile};
+use super::solid_effects;
+use crate::material::Material;
+use serde::ser::{SerializeMap, SerializeSeq};
+use serde::{Serialize, Serializer};
+
+/// Most closed forms a family has (the circular notch: four).
+const MAX_CLOSED_FORMS: usize = 4;
+
+/// Published closed-form stiffnesses, name → value, in name order (serialised as a JSON
+/// object, like a map).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ClosedForms {
+    entries: [(&'static str, f64); MAX_CLOSED_FORMS],
+    len: usize,
+}
+
+impl ClosedForms {
+    /// The forms `entries` (at most four), put in name order.
+    pub(super) fn new(entries: &[(&'static str, f64)]) -> ClosedForms {
+        let mut c = ClosedForms {
+            entries: [("", 0.0); MAX_CLOSED_FORMS],
+            len: entries.len().min(MAX_CLOSED_FORMS),
+        };
+        c.entries[..c.len].copy_from_slice(&entries[..c.len]);
+        c.entries[..c.len].sort_unstable_by(|a, b| a.0.cmp(b.0));
+        c
+    }
+
+    /// (name, value) pairs in name order.
+    pub fn iter(&self) -> impl Iterator<Item = (&'static str, f64)> + '_ {
+        self.entries[..self.len].iter().copied()
+    }
+
+    /// The values in name order.
+    pub fn values(&self) -> impl Iterator<Item = &f64> {
+        self.entries[..self.len].iter().map(|(_, v)| v)
+    }
+
+    /// The value of the form `name`.
+    pub fn get(&self, name: &str) -> Option<f64> {
+        self.iter().find(|(k, _)| *k == name).map(|(_, v)| v)
+    }
+
+    /// How many forms.
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// No form applies.
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+}
+
+impl<'a> IntoIterator for &'a ClosedForms {
+    type Item = &'a (&'static str, f64);
+    type IntoIter = std::slice::Iter<'a, (&'static str, f64)>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.entries[..self.len].iter()
+    }
+}
+
+impl Serialize for ClosedForms {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut m = s.serialize_map(Some(self.len))?;
+        for (k, v) in self.iter() {
+            m.serialize_entry(k, &v)?;
+        }
+        m.end()
+    }
+}
+
+/// The idealisations and models of a characterisation, as the numbers their text quotes
+/// (serialised as a JSON array of strings; [`ModelNotes::lines`] gives the text).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ModelNotes {
+    /// A turned neck (circular waist) rather than a flat notch.
+    neck: bool,
+    /// Notch stress-concentration factor.
+    kt: f64,
+    /// Load spreading: (slope, from |x|, reach), mm.
+    spread: Option<(f64, f64, f64)>,
+    /// Short-notch factor G and plane-strain factor P.
+    g: f64,
+    p: f64,
+}
+
+impl ModelNotes {
+    /// The notes of `profile` in `material` with notch factor `kt`.
+    pub(super) fn new(profile: &Profile, material: &Material, kt: f64) -> ModelNotes {
+        ModelNotes {
+            neck: matches!(profile.contour, Contour::SphericalNeck { .. }),
+            kt,
+            spread: profile.spread.map(|sp| (sp.slope, sp.from, profile.spread_reach())),
+            g: solid_effects::short_notch_factor(profile),
+            p: solid_effects::plane_strain_factor(profile, material.nu),
+        }
+    }
+
+    /// The notes as text, one line each.
+    pub fn lines(&self) -> Vec<String> {
+        let kt = self.kt;
+        let mut v = vec![
+            "bending/shear/axial: exact flexibility of a variable-section Timoshenko beam, Gauss-Legendre on pieces split at profile breakpoints (Cowper shear coefficients)".to_string(),
+            "compliance referenced to the centre of the loaded blank end face, the other face clamped".to_string(),
+        ];
+        if self.neck {
+            v.push(
+                "torsion: Saint-Venant (circular waist, no warping); clipped-disk J blended between disk and square"
+                    .into(),
+            );
+            v.push(format!("stress: 32M/(pi t^3) at the waist x Kt = {kt:.4} (shoulder-fillet Kt = 1 + 0.041 sqrt(t/R), fitted to solid models within 2%)"));
+        } else {
+            v.push("torsion: Vlasov non-uniform torsion FE (Hermite cubics), Timoshenko-Goodier J(x), exact rectangle warping constant, warping restrained at both blank end faces; in the blank the load-spreading effective thickness (solid models: circular notches -11...+4%, corner-filleted -14%)".into());
+            v.push(format!("stress: 6M/(w t^2) at the waist x {kt:.4} (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, divided by sqrt(P) for the plane-strain waist; solid models: within 6%)"));
+        }
+        match self.spread {
+            Some((slope, from, reach)) => v.push(format!(
+                "load spreading (solid-calibrated): effective half-size grows at slope {slope} from |x| = {from:.3} mm to {reach:.3} mm"
+            )),
+            None => v.push("load spreading: none needed (the contour never widens faster than slope 1/2)".into()),
+        }
+        let (g, p) = (self.g, self.p);
+        v.push(format!(
+            "compliant-axis bending modulus of the notch region E*P/G (solid-calibrated): short-notch G = {g:.4}, plane-strain P = {p:.4}"
+        ));
+        v.push("calibration: converged 10-node tetrahedron solid models (tools/solid_reference.py); circular notches t/R 0.06-0.5 within 2% bending, 4% axial; turned necks l/t >= 1 within 3% bending, 5% torsion, 3% axial; leaf within 5%".into());
+        v
+    }
+}
+
+impl IntoIterator for &ModelNotes {
+    type Item = String;
+    type IntoIter = std::vec::IntoIter<String>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.lines().into_iter()
+    }
+}
+
+impl Serialize for ModelNotes {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let lines = self.lines();
+        let mut seq = s.serialize_seq(Some(lines.len()))?;
+        for l in &lines {
+            seq.serialize_element(l)?;
+        }
+        seq.end()
+    }
+}
