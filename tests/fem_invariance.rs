@@ -68,6 +68,15 @@ fn rotate(m: &Model, q: &Matrix3<f64>) -> Model {
                 }
             }
             Element::Shell4(_) => {}
+            // Given matrices in global axes turn with the model: K' = T K Tᵀ, T = diag(q, q, q, q).
+            Element::Matrix(me) => {
+                let mut t = nalgebra::SMatrix::<f64, 12, 12>::zeros();
+                for b in 0..4 {
+                    t.fixed_view_mut::<3, 3>(3 * b, 3 * b).copy_from(q);
+                }
+                me.k = t * me.k * t.transpose();
+                me.m = t * me.m * t.transpose();
+            }
         }
     }
     for c in &mut r.load_cases {
@@ -93,6 +102,15 @@ fn reverse(m: &Model) -> Model {
             }
             // Reversed orientation: the normal flips, the physics must not.
             Element::Shell4(s) => s.nodes = [s.nodes[0], s.nodes[3], s.nodes[2], s.nodes[1]],
+            // Swapping the two nodes swaps the 6×6 blocks of the given matrices.
+            Element::Matrix(me) if me.n_nodes == 2 => {
+                me.nodes.reverse();
+                let swap = |a: &nalgebra::SMatrix<f64, 12, 12>| {
+                    nalgebra::SMatrix::<f64, 12, 12>::from_fn(|i, j| a[((i + 6) % 12, (j + 6) % 12)])
+                };
+                (me.k, me.m) = (swap(&me.k), swap(&me.m));
+            }
+            Element::Matrix(_) => {}
         }
     }
     r

@@ -119,6 +119,7 @@ pub struct BucklingResult {
 pub struct Buckling;
 
 fn build(case: &BucklingCase) -> Result<Model, CaseError> {
+    crate::case::mesh::superelement::refuse_in(&case.model, "linear buckling")?;
     let model = case.model.build_model(true)?;
     if let Some(ie) = model.elements.iter().position(|e| matches!(e, Element::Shell4(_))) {
         return Err(CaseError::new(

@@ -232,8 +232,10 @@ pub fn kinematic(
     hinges: HingeView,
     drives: bool,
 ) -> Result<Kinematic, CaseError> {
-    let model = spec.build_model(false)?;
+    let mut model = spec.build_model(false)?;
     let n = spec.nodes.len();
+    // Superelement modal nodes (after the case's nodes) carry no motion of a body.
+    model.supports.retain(|s| s.node < n);
     let mut groups: Vec<Vec<usize>> = spec
         .rigid_links
         .iter()
@@ -247,6 +249,7 @@ pub fn kinematic(
         let group: Vec<usize> = match e {
             ElementSpec::Beam { nodes, .. } if rigid => nodes.to_vec(),
             ElementSpec::Shell4 { nodes, .. } if rigid => nodes.to_vec(),
+            ElementSpec::Superelement { nodes, .. } if rigid => nodes.clone(),
             ElementSpec::Hinge { nodes, up, .. } if rigid => match hinges {
                 HingeView::Rigid => nodes.to_vec(),
                 HingeView::Revolute => {

@@ -2,6 +2,8 @@
 //! interface nodes ([`crate::fem::craig_bampton`]): a superelement (K and M on the interface
 //! DOFs plus fixed-interface modal coordinates), its frequencies against the full model's, and
 //! with `--out` its matrices in Matrix Market (`superelement_K.mtx`, `superelement_M.mtx`).
+//! The result JSON (`result.json`) is the superelement file a host mesh case attaches with a
+//! `superelement` element ([`crate::case::mesh::superelement`]).
 
 use super::kind::{named_materials, Analysis, Ctx, UsedMaterial};
 use super::{AnalysisError, Report, RunError};
@@ -112,11 +114,26 @@ pub struct BoundaryDof {
     pub dof: String,
 }
 
+/// An interface node: what a host case's `superelement` element checks its nodes against.
+#[derive(Debug, Clone, Serialize)]
+pub struct InterfaceNode {
+    pub node: usize,
+    /// Coordinates, mm.
+    pub x: [f64; 3],
+    /// The node's frame (rows: local x, y, z in global axes) when it has one: its boundary
+    /// DOFs are then local.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub frame: Option<[[f64; 3]; 3]>,
+}
+
 /// The superelement and its check against the full model.
 #[derive(Debug, Clone, Serialize)]
 pub struct CraigBamptonResult {
     /// Method and units.
     pub model: String,
+    /// The interface nodes in the case's order (a host case's `superelement` element names its
+    /// own nodes in this order).
+    pub interface_nodes: Vec<InterfaceNode>,
     /// Boundary coordinates (the first rows of K and M), then `modes` modal coordinates.
     pub boundary: Vec<BoundaryDof>,
     pub modes: usize,
@@ -126,7 +143,8 @@ pub struct CraigBamptonResult {
     /// Frequencies of the retained fixed-interface modes, Hz.
     pub fixed_interface_frequencies_hz: Vec<f64>,
     /// Lowest frequencies of the superelement (interface held only by the model's supports) and
-    /// of the full model, Hz (up to 6; absent when the interface is free, K singular).
+    /// of the full model, Hz (up to 6; absent when the interface is free, K singular: a warning
+    /// when the model has supports, none for an unsupported substructure).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub superelement_frequencies_hz: Option<Vec<f64>>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -169,6 +187,15 @@ fn result(case: &CraigBamptonCase, se: &Superelement, model: &crate::fem::Model)
             .map(|d| BoundaryDof {
                 node: d.node,
                 dof: d.dof.name().into(),
+            })
+            .collect(),
+        interface_nodes: case
+            .interface
+            .iter()
+            .map(|&node| InterfaceNode {
+                node,
+                x: model.nodes[node],
+                frame: model.frames.get(&node).copied(),
             })
             .collect(),
         modes: case.modes,
@@ -219,7 +246,8 @@ impl Analysis for CraigBamptonKind {
         let se = craig_bampton(&model, &case.interface, case.modes)
             .map_err(|e| AnalysisError::new("craig_bampton", e.to_string()))?;
         let r = result(case, &se, &model);
-        if r.superelement_frequencies_hz.is_none() {
+        // An unsupported substructure (the usual superelement for a host case) is free by design.
+        if r.superelement_frequencies_hz.is_none() && !model.supports.is_empty() {
             ctx.warnings
                 .push("the superelement's stiffness is singular (the interface is free): its frequencies are not computed".into());
         }

@@ -205,9 +205,15 @@ impl Analysis for Static {
     type Result = fem_static::StaticResult;
 
     fn check(case: &Self::Case) -> Result<(), CaseError> {
+        if case.nonlinear {
+            case::mesh::superelement::refuse_in(&case.model, "geometrically nonlinear statics")?;
+        }
         case.model.build().map(|_| ())
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
+        if case.nonlinear {
+            case::mesh::superelement::refuse_in(&case.model, "geometrically nonlinear statics")?;
+        }
         let (model, hinges) = case.model.build_with_hinges(true)?;
         let (mut r, raw, path_files) = match case.steps.filter(|_| case.nonlinear) {
             Some(steps) => super::fem_path::solve(&model, case, steps, ctx.with_files),

@@ -90,6 +90,8 @@ pub fn model_cells(model: &Model) -> ModelCells {
                     c.push(Cell::Line([s.a, b]), ie, Part::Spring);
                 }
             }
+            // Superelement pieces: matrices, no geometry to draw.
+            Element::Matrix(_) => {}
             Element::Shell4(s) => {
                 let n = s.nodes;
                 let cell = if n[3] == n[2] {

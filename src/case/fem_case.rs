@@ -269,7 +269,7 @@ pub fn read_model(
 ) -> Result<MeshSpec, CaseError> {
     check_node_count("nodes", &value)?;
     let inline: MeshSpec = from_value(value, "")?;
-    Ok(match mesh_name {
+    let mut spec = match mesh_name {
         Some(name) if name.ends_with(".msh") => {
             let Some(mapping) = gmsh_map else {
                 return Err(CaseError::new(
@@ -311,7 +311,9 @@ pub fn read_model(
             MeshSpec::merge_inline(from_file, inline)?
         }
         None => inline,
-    })
+    };
+    super::mesh::superelement::load_files(&mut spec, base)?;
+    Ok(spec)
 }
 
 /// Refuses a top-level field that a `static` or `modal` case does not take, listing all it does.

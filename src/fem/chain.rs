@@ -368,6 +368,17 @@ impl Condensed {
         out.ties = model.ties.clone();
         out.ties.iter_mut().for_each(|t| (t.a, t.b) = (map(t.a), map(t.b)));
         out.frames = model.frames.iter().map(|(&n, f)| (map(n), *f)).collect();
+        out.superelements = model.superelements.clone();
+        for se in &mut out.superelements {
+            se.interface
+                .iter_mut()
+                .chain(&mut se.modal_nodes)
+                .for_each(|n| *n = map(*n));
+            // Pieces are never in chains: they keep their order, shifted.
+            let start = original_element.iter().position(|&o| o == Some(se.elements.start));
+            let start = start.unwrap_or(se.elements.start);
+            se.elements = start..start + se.elements.len();
+        }
         out.load_cases = model
             .load_cases
             .iter()
@@ -458,6 +469,7 @@ fn renumber_element(e: &Element, map: &impl Fn(usize) -> usize) -> Element {
             s.b = s.b.map(map);
         }
         Element::Shell4(s) => s.nodes = s.nodes.map(map),
+        Element::Matrix(m) => m.nodes = m.nodes.map(map),
     }
     e
 }

@@ -66,6 +66,8 @@ pub fn gravity_loads(model: &Model, g: [f64; 3]) -> Result<NodeLoads, FemError> 
         return Err(FemError::BadInput(format!("gravity {g:?} must be finite")));
     }
     let mut loads = vec![[0.0; 6]; model.nodes.len()];
+    // Superelement modal nodes carry modal coordinates, no rigid motion.
+    let modal = model.modal_node_flags();
     let field = |n: usize| -> Vec<f64> { (0..n).flat_map(|_| [g[0], g[1], g[2], 0.0, 0.0, 0.0]).collect() };
     for (ie, e) in model.elements.iter().enumerate() {
         match e {
@@ -91,7 +93,7 @@ pub fn gravity_loads(model: &Model, g: [f64; 3]) -> Result<NodeLoads, FemError> 
                 }
                 // A one-node element (ground spring) uses only the top-left 6×6 block.
                 let r = nalgebra::SVector::<f64, 12>::from_iterator(field(2).into_iter().enumerate().map(|(i, v)| {
-                    if i < 6 * m.n_nodes {
+                    if i < 6 * m.n_nodes && !modal[m.nodes[i / 6]] {
                         v
                     } else {
                         0.0

@@ -134,6 +134,7 @@ pub fn element_mass(model: &Model, ie: usize) -> Result<Option<ElementMatrix>, F
             k: Mat12::zeros(),
         })),
         Some(Element::Shell4(_)) => Ok(None),
+        Some(Element::Matrix(m)) => m.matrix(ie, true).map(Some),
         None => Err(FemError::BadInput(format!("no element {ie}"))),
     }
 }

@@ -43,6 +43,7 @@ pub mod shell_loads;
 pub mod shell_recovery;
 pub mod solve;
 pub mod state_space;
+pub mod superelement;
 pub mod transform;
 pub mod transient;
 

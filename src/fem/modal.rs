@@ -78,13 +78,17 @@ pub struct ModalResults {
 }
 
 /// Rigid-body motion vectors in equation space: unit translation along global x, y, z and unit
-/// rotation about the global axes through the origin.
+/// rotation about the global axes through the origin (zero on superelement modal nodes).
 fn rigid_vectors(model: &Model, map: &DofMap) -> [Vec<f64>; 6] {
+    let modal = model.modal_node_flags();
     std::array::from_fn(|d| {
         map.eq_dof
             .iter()
             .map(|&g| {
                 let node = g / 6;
+                if modal[node] {
+                    return 0.0;
+                }
                 let x = Vector3::from(model.nodes[node]);
                 let mut r = Vector6::zeros();
                 if d < 3 {

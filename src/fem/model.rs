@@ -5,7 +5,9 @@
 mod validate;
 
 use super::dof::Dof;
-pub use super::elements::{Beam, Element, ElementMatrix, FlexElement, Shell4, ShellMatrix, Spring, SpringAxes};
+pub use super::elements::{
+    Beam, Element, ElementMatrix, FlexElement, MatrixElement, Shell4, ShellMatrix, Spring, SpringAxes,
+};
 use super::error::FemError;
 use super::section::SectionProps;
 use super::transform::{beam_frame, rotate12, t12, Mat12};
@@ -126,6 +128,8 @@ pub struct Model {
     pub ties: Vec<Tie>,
     /// Fill-reducing ordering of the sparse Cholesky factor (default: chosen automatically).
     pub ordering: super::nd::FillOrdering,
+    /// Attached superelements (their modal nodes and pieces; see [`super::superelement`]).
+    pub superelements: Vec<super::elements::matrix::Attached>,
 }
 
 impl Model {
@@ -168,7 +172,7 @@ impl Model {
         6 * self.nodes.len()
     }
 
-    fn check_node(&self, what: impl FnOnce() -> String, node: usize) -> Result<(), FemError> {
+    pub(crate) fn check_node(&self, what: impl FnOnce() -> String, node: usize) -> Result<(), FemError> {
         if node < self.nodes.len() {
             Ok(())
         } else {
@@ -223,7 +227,7 @@ impl Model {
         let k = match &self.elements[ie] {
             Element::Beam(b) => b.local_stiffness(ie, l)?,
             Element::Flex(f) => f.local_stiffness(ie, l)?,
-            Element::Spring(_) | Element::Shell4(_) => {
+            Element::Spring(_) | Element::Shell4(_) | Element::Matrix(_) => {
                 return Err(FemError::BadInput(format!("element {ie} is not a beam")))
             }
         };
@@ -265,6 +269,12 @@ impl Model {
             Some(Element::Shell4(_)) => Err(FemError::BadInput(format!(
                 "element {ie} is a shell (use Model::shell_matrix)"
             ))),
+            Some(Element::Matrix(m)) => {
+                for &n in &m.nodes[..m.n_nodes.min(2)] {
+                    self.check_node(|| format!("element {ie} (matrix)"), n)?;
+                }
+                m.matrix(ie, false)
+            }
             Some(e) => {
                 let (k, lam) = self.element_local_frame(ie)?;
                 Ok(ElementMatrix {

@@ -122,6 +122,22 @@ pub fn element_result(model: &Model, ie: usize, u: &[f64]) -> Result<ElementResu
             }
             Ok(spring_result(&k, &(b * d), n))
         }
+        Element::Matrix(_) => {
+            // Superelement piece: end forces K·d in global axes, no section forces or stresses.
+            let em = model.element_matrix(ie)?;
+            let mut d = elem_vec(u, em.nodes);
+            if em.n_nodes == 1 {
+                d.fixed_rows_mut::<6>(6).fill(0.0);
+            }
+            let f = em.k * d;
+            Ok(ElementResult {
+                end_forces: [std::array::from_fn(|i| f[i]), std::array::from_fn(|i| f[6 + i])],
+                section_forces: [[0.0; 6]; 2],
+                von_mises: None,
+                strain_energy: 0.5 * d.dot(&f),
+                shell: None,
+            })
+        }
         e => {
             let (k, t) = model.element_local(ie)?;
             let d = t * elem_vec(u, e.end_nodes());

@@ -234,6 +234,7 @@ impl TransientCase {
         if let Some(i) = self.model.elements.iter().position(|e| matches!(e, ElementSpec::Shell4 { .. })) {
             return refuse(&format!("elements[{i}]"), "a shell element");
         }
+        crate::case::mesh::superelement::refuse_in(&self.model, "nonlinear transients")?;
         Ok(())
     }
 
@@ -339,6 +340,10 @@ impl TransientCase {
         for e in &self.damping.elements {
             if let Some(ie) = index.get(e.element).copied().flatten() {
                 element_beta.push((ie, e.beta));
+                // A superelement's pieces follow its first.
+                if let Some(se) = model.superelements.iter().find(|s| s.elements.start == ie) {
+                    element_beta.extend(se.elements.clone().skip(1).map(|s| (s, e.beta)));
+                }
                 // Inner segments of a split hinge are appended after the case's elements.
                 if let Some(h) = hinges.iter().find(|h| h.case_element == e.element && h.segments > 1) {
                     let first_inner = h.last + 2 - h.segments;
@@ -385,7 +390,11 @@ impl Analysis for TransientKind {
         if ctx.with_files {
             ctx.files.extend(output::files(&model, &inputs.opts, &raw)?);
         }
-        Ok(output::result(case, &inputs.opts, &raw))
+        let mut r = output::result(case, &inputs.opts, &raw);
+        for note in crate::fem::superelement::notes(&model) {
+            r.model = format!("{}; {note}", r.model);
+        }
+        Ok(r)
     }
     fn report(r: &Self::Result) -> Report {
         output::report(r)

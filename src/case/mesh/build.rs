@@ -264,6 +264,12 @@ fn element(cx: &mut Ctx, p: &str, e: &ElementSpec) -> Result<(), CaseError> {
             section,
             material,
         } => shell4(cx, p, *nodes, section, material)?,
+        ElementSpec::Superelement {
+            file,
+            nodes,
+            placement,
+            loaded,
+        } => super::superelement::superelement_element(cx, p, file, nodes, placement.as_ref(), loaded.as_ref())?,
     }
     Ok(())
 }

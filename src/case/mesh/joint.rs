@@ -8,7 +8,7 @@ use crate::case::error::CaseError;
 use crate::fem;
 
 /// Relative distance (to the model size) up to which two nodes count as coincident.
-const COINCIDENT: f64 = 1e-6;
+pub(super) const COINCIDENT: f64 = 1e-6;
 
 /// Builds a `joint` element at JSON path `p`.
 ///
@@ -141,7 +141,7 @@ fn unit(v: [f64; 3]) -> [f64; 3] {
 }
 
 /// Diagonal of the nodes' bounding box, mm (1 for a single point).
-fn model_size(nodes: &[[f64; 3]]) -> f64 {
+pub(super) fn model_size(nodes: &[[f64; 3]]) -> f64 {
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
     for x in nodes {

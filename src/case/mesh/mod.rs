@@ -16,6 +16,8 @@ mod lookup;
 pub mod path_control;
 pub mod requests;
 pub mod shapes;
+pub mod superelement;
+pub mod superelement_file;
 
 pub use super::fem_case::{ModalCase, StaticCase};
 pub use build::unique_load_case_names;
@@ -25,4 +27,6 @@ pub use load_shapes::{
     PressureSpec,
 };
 pub use requests::{ComplianceRequest, StaticOutput, TrackRequest};
-pub use shapes::{ElementSpec, GmshMapping, GroupSpec, JointKind, MeshSpec, RigidSpec, SectionSpec, SupportSpec};
+pub use shapes::{
+    ElementSpec, GmshMapping, GroupSpec, JointKind, MeshSpec, PlacementSpec, RigidSpec, SectionSpec, SupportSpec,
+};

@@ -168,6 +168,41 @@ pub enum ElementSpec {
         /// Material name.
         material: String,
     },
+    /// A reduced superelement: the `result.json` of a `craig_bampton` analysis (stiffness and
+    /// mass on the six DOFs of each interface node plus its fixed-interface modal coordinates)
+    /// attached to `nodes` (linear analyses: static, modal, transient, frf).
+    Superelement {
+        /// The superelement file (a `craig_bampton` result JSON), relative to the case file.
+        file: String,
+        /// Host node indices, one per interface node of the superelement, in its order
+        /// (`interface_nodes` of the file); each must coincide with its interface node after
+        /// `placement`.
+        #[schemars(length(min = 1))]
+        nodes: Vec<usize>,
+        /// Where the superelement's model sits in this one (default: as it was reduced).
+        #[serde(default)]
+        placement: Option<PlacementSpec>,
+        /// The file's content (read with the case; not a case-file field).
+        #[serde(skip)]
+        #[schemars(skip)]
+        loaded: Option<std::sync::Arc<super::superelement_file::SuperelementFile>>,
+    },
+}
+
+/// Placement of a superelement's model in the host model: x_host = R·x + `translation`, R the
+/// right-handed rotation by `angle` about `axis`.
+#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PlacementSpec {
+    /// Translation, mm (default [0, 0, 0]).
+    #[serde(default)]
+    pub translation: [f64; 3],
+    /// Rotation axis (any length > 0; default [0, 0, 1]).
+    #[serde(default)]
+    pub axis: Option<[f64; 3]>,
+    /// Rotation angle about `axis`, degrees (default 0).
+    #[serde(default)]
+    pub angle: f64,
 }
 
 /// Kind of an ideal joint: what it releases.

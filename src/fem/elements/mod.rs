@@ -1,13 +1,15 @@
 //! The element kinds, one file each with its data and its matrices: [`Beam`], [`FlexElement`],
-//! [`Spring`], [`Shell4`]. [`super::model::Model`] dispatches to them by [`Element`].
+//! [`Spring`], [`Shell4`], [`MatrixElement`]. [`super::model::Model`] dispatches to them by [`Element`].
 
 pub mod beam;
 pub mod flex;
+pub mod matrix;
 pub mod shell4;
 pub mod spring;
 
 pub use beam::Beam;
 pub use flex::FlexElement;
+pub use matrix::MatrixElement;
 pub use shell4::{Shell4, ShellMatrix};
 pub use spring::{Spring, SpringAxes};
 
@@ -22,6 +24,8 @@ pub enum Element {
     Flex(FlexElement),
     Spring(Spring),
     Shell4(Shell4),
+    /// Given stiffness and mass matrices (superelement pieces); boxed, it is large.
+    Matrix(Box<MatrixElement>),
 }
 
 impl Element {
@@ -35,6 +39,7 @@ impl Element {
                 None => vec![s.a],
             },
             Element::Shell4(s) => s.nodes.to_vec(),
+            Element::Matrix(m) => m.nodes[..m.n_nodes].to_vec(),
         }
     }
 
@@ -46,6 +51,8 @@ impl Element {
             Element::Flex(f) => f.nodes,
             Element::Spring(s) => [s.a, s.b.unwrap_or(s.a)],
             Element::Shell4(s) => [s.nodes[0], s.nodes[1]],
+            Element::Matrix(m) if m.n_nodes == 2 => m.nodes,
+            Element::Matrix(m) => [m.nodes[0]; 2],
         }
     }
 }

@@ -32,6 +32,9 @@ pub(super) fn element_data(model: &Model) -> Result<Vec<ElemData>, FemError> {
             Element::Shell4(_) => Err(FemError::BadInput(format!(
                 "element {ie} is a shell: the geometrically nonlinear solver handles beams, flexibility elements (hinges) and springs"
             ))),
+            Element::Matrix(_) => Err(FemError::BadInput(format!(
+                "element {ie} is a piece of a superelement (given matrices, linear): the geometrically nonlinear solver handles beams, flexibility elements (hinges) and springs"
+            ))),
             Element::Spring(s) => {
                 let (b, k, n) = model.spring_b(ie)?;
                 Ok(ElemData::Spring {
