@@ -8,10 +8,10 @@ mod text;
 use crate::case::fields::case_struct;
 use super::kind::{Analysis, Ctx, UsedMaterial};
 use super::{AnalysisError, Report, RunError};
-use crate::case::fem_case::{model_rules, read_model, split, MODEL_FIELDS};
+use crate::case::fem_case::{model_rules, parse_with_model};
 use crate::case::gmsh::GmshMapping;
 use crate::case::mesh::{ElementSpec, MeshSpec};
-use crate::case::{from_value, CaseError};
+use crate::case::CaseError;
 use crate::kinematics::exact::{self, release, Bodies, BodyMotion, Constraint, Source};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -97,19 +97,8 @@ const OWN: [&str; 7] = ["analysis", "description", "mesh", "gmsh", "compliant", 
 
 /// Parses a `constraints` case; files it names resolve against `base` first.
 pub fn parse(value: Value, base: Option<&Path>) -> Result<ConstraintsCase, CaseError> {
-    if let Some(key) = value
-        .as_object()
-        .and_then(|m| m.keys().find(|k| !OWN.contains(&k.as_str()) && !MODEL_FIELDS.contains(&k.as_str())))
-    {
-        let expected: Vec<String> = OWN.iter().chain(MODEL_FIELDS.iter()).map(|f| format!("`{f}`")).collect();
-        return Err(CaseError::new(
-            key.clone(),
-            format!("unknown field `{key}` in a `constraints` case, expected one of {}", expected.join(", ")),
-        ));
-    }
-    let (options, model) = split(value, &OWN);
-    let o: Options = from_value(options, "")?;
-    let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
+    let (o, model) =
+        parse_with_model(value, "constraints", &OWN, &[], base, |o: &Options| (o.mesh.as_deref(), o.gmsh.as_ref()))?;
     let case = ConstraintsCase {
         description: o.description,
         mesh: o.mesh,

@@ -259,6 +259,42 @@ pub(crate) fn modes_of(modes: Option<usize>, what: &str) -> Result<usize, CaseEr
     }
 }
 
+/// A `kind` case whose own fields `own` sit beside the model's ([`MODEL_FIELDS`]): refuses any
+/// other field (listing the allowed ones), parses the own fields less `ignore` as `O`, and reads
+/// the model from the rest with the `mesh` file and `gmsh` mapping that `source` takes from `O`.
+pub fn parse_with_model<O: serde::de::DeserializeOwned>(
+    value: Value,
+    kind: &str,
+    own: &[&str],
+    ignore: &[&str],
+    base: Option<&Path>,
+    source: impl FnOnce(&O) -> (Option<&str>, Option<&GmshMapping>),
+) -> Result<(O, MeshSpec), CaseError> {
+    let known = |k: &str| own.contains(&k) || MODEL_FIELDS.contains(&k);
+    if let Some(key) = value.as_object().and_then(|m| m.keys().find(|k| !known(k))) {
+        let expected: Vec<String> = own
+            .iter()
+            .chain(MODEL_FIELDS.iter())
+            .map(|f| format!("`{f}`"))
+            .collect();
+        return Err(CaseError::new(
+            key.clone(),
+            format!(
+                "unknown field `{key}` in a `{kind}` case, expected one of {}",
+                expected.join(", ")
+            ),
+        ));
+    }
+    let (mut options, model) = split(value, own);
+    if let Value::Object(m) = &mut options {
+        m.retain(|k, _| !ignore.contains(&k.as_str()));
+    }
+    let o: O = from_value(options, "")?;
+    let (mesh, gmsh) = source(&o);
+    let model = read_model(model, mesh, gmsh, base)?;
+    Ok((o, model))
+}
+
 /// The model of a case: the inline fields `value`, merged into the `mesh` file's model if one
 /// is named (a JSON mesh file, or a Gmsh `.msh` file read through the `gmsh` mapping).
 pub fn read_model(

@@ -150,23 +150,11 @@ pub fn to_string(mesh: &VtuMesh) -> Result<String, VtkError> {
     check_finite("points", mesh.points.iter().flatten())?;
     for (name, v) in &mesh.point_vectors {
         check_name(name, &mut seen)?;
-        if v.len() != np {
-            return Err(VtkError::Shape(format!(
-                "{name} has {} entries for {np} points",
-                v.len()
-            )));
-        }
-        check_finite(name, v.iter().flatten())?;
+        check_multi(name, 3, v.as_flattened(), np, "points")?;
     }
     for (name, v) in &mesh.cell_scalars {
         check_name(name, &mut seen)?;
-        if v.len() != nc {
-            return Err(VtkError::Shape(format!(
-                "cell data {name} has {} entries for {nc} cells",
-                v.len()
-            )));
-        }
-        check_finite(name, v.iter())?;
+        check_multi(name, 1, v, nc, "cells")?;
     }
     for (name, v) in &mesh.field_scalars {
         check_name(name, &mut seen)?;
@@ -265,6 +253,15 @@ pub fn file_stem(name: &str) -> String {
 mod tests {
     use super::*;
 
+    /// A mesh of these points and cells with no data yet.
+    fn geometry<'a>(points: &'a [[f64; 3]], cells: &'a [Cell]) -> VtuMesh<'a> {
+        VtuMesh {
+            points,
+            cells,
+            ..Default::default()
+        }
+    }
+
     #[test]
     fn points_stay_undeformed_with_displacement_data() {
         let pts = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [2.0, 0.0, 0.0]];
@@ -272,11 +269,9 @@ mod tests {
         let disp = [[0.0; 3], [0.0, 0.0, 0.5], [0.0, 0.0, 1.0]];
         let vm = [10.0, 5.0];
         let mesh = VtuMesh {
-            points: &pts,
-            cells: &cells,
             point_vectors: vec![("displacement_mm", &disp)],
             cell_scalars: vec![("von_mises_MPa", &vm)],
-            ..Default::default()
+            ..geometry(&pts, &cells)
         };
         let s = to_string(&mesh).unwrap();
         assert!(s.contains("NumberOfPoints=\"3\" NumberOfCells=\"2\""));
@@ -307,13 +302,9 @@ mod tests {
         let mode = [[0.0, 0.0, 1.0]; 4];
         let f = [12.5];
         let cells = [Cell::Line([0, 1]), Cell::Triangle([0, 1, 2]), Cell::Quad([0, 1, 2, 3])];
-        let mesh = VtuMesh {
-            points: &pts,
-            cells: &cells,
-            point_vectors: vec![("mode_1_translation_mm", &mode)],
-            field_scalars: vec![("frequency_hz", &f)],
-            ..Default::default()
-        };
+        let mut mesh = geometry(&pts, &cells);
+        mesh.point_vectors.push(("mode_1_translation_mm", &mode));
+        mesh.field_scalars.push(("frequency_hz", &f));
         let s = to_string(&mesh).unwrap();
         assert!(s.contains("NumberOfCells=\"3\""));
         // Offsets 2, 5, 9; types line, triangle, quad.

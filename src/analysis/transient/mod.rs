@@ -11,9 +11,9 @@ use crate::case::fields::case_struct;
 use super::kind::{Analysis, Ctx, UsedMaterial};
 use super::kind::named_materials;
 use super::{Report, RunError};
-use crate::case::fem_case::{mesh_rules, read_model, split, MODEL_FIELDS};
+use crate::case::fem_case::{mesh_rules, parse_with_model};
 use crate::case::mesh::{DofName, ElementSpec, GmshMapping};
-use crate::case::{from_value, CaseError};
+use crate::case::CaseError;
 use crate::fem::transient::{Damping, PrescribedMotion, Scheme, TransientLoad, TransientOptions};
 use crate::fem::{Dof, NodeDof};
 pub use history::{ElementDampingSpec, HistorySpec};
@@ -181,18 +181,10 @@ const OWN: [&str; 16] = [
 
 /// Parses a `transient` case; files it names resolve against `base` first.
 pub fn parse_transient(value: Value, base: Option<&Path>) -> Result<TransientCase, CaseError> {
-    if let Some(key) = value
-        .as_object()
-        .and_then(|m| m.keys().find(|k| !OWN.contains(&k.as_str()) && !MODEL_FIELDS.contains(&k.as_str())))
-    {
-        return Err(CaseError::new(key.clone(), format!("unknown field `{key}` in a `transient` case")));
-    }
-    let (mut options, model) = split(value, &OWN);
-    if let Value::Object(m) = &mut options {
-        m.remove("load_cases");
-    }
-    let o: Options = from_value(options, "")?;
-    let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
+    // `load_cases` is accepted and not used: a transient takes its loads from `loads`.
+    let (o, model) = parse_with_model(value, "transient", &OWN, &["load_cases"], base, |o: &Options| {
+        (o.mesh.as_deref(), o.gmsh.as_ref())
+    })?;
     let case = TransientCase {
         description: o.description,
         mesh: o.mesh,
