@@ -30,6 +30,7 @@ pub mod lattice;
 pub mod loads;
 pub mod mass;
 pub mod matrices;
+pub mod memo;
 pub mod modal;
 pub mod model;
 pub mod nd;

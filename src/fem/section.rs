@@ -8,6 +8,7 @@
 //! rectangle κ = 10(1+ν)/(12+11ν), solid circle κ = 6(1+ν)/(7+6ν),
 //! hollow circle κ = 6(1+ν)(1+m²)² / ((7+6ν)(1+m²)² + (20+12ν)m²), m = d_in/d_out.
 
+use crate::fem::memo::{remembered, Ring};
 use std::f64::consts::PI;
 
 /// ζ(5), Apéry-like constant used by the rectangle torsion series.
@@ -115,22 +116,13 @@ pub struct RectTorsion {
 /// constant; the remainders decay like e^(−nπa/b)).
 pub fn rect_torsion(s1: f64, s2: f64) -> RectTorsion {
     // Designs reuse a few leg sections many times: remember the last 16 results on this
-    // thread (a fixed ring, first in first out: no heap allocation).
-    const SLOTS: usize = 16;
-    type Ring = ([Option<((u64, u64), RectTorsion)>; SLOTS], usize);
+    // thread (no heap allocation).
     thread_local! {
-        static MEMO: std::cell::RefCell<Ring> = const { std::cell::RefCell::new(([None; SLOTS], 0)) };
+        static MEMO: std::cell::RefCell<Ring<(u64, u64), RectTorsion, 16>> =
+            const { std::cell::RefCell::new(Ring::new()) };
     }
-    let key = (s1.to_bits(), s2.to_bits());
-    let hit = MEMO.with(|m| m.borrow().0.iter().flatten().find(|(k, _)| *k == key).map(|(_, v)| *v));
-    if let Some(hit) = hit {
-        return hit;
-    }
-    let out = rect_torsion_series(s1, s2);
-    MEMO.with(|m| {
-        let (ring, next) = &mut *m.borrow_mut();
-        ring[*next] = Some((key, out));
-        *next = (*next + 1) % SLOTS;
+    let Ok(out) = remembered(&MEMO, (s1.to_bits(), s2.to_bits()), || {
+        Ok::<_, std::convert::Infallible>(rect_torsion_series(s1, s2))
     });
     out
 }

@@ -6,47 +6,20 @@
 //! pure function of the profile and the material, so a remembered region is the one computed
 //! afresh; regions are compared by value (`PartialEq` of every field).
 
+use crate::fem::memo::{remembered, Ring};
 use crate::hinge::{self, HingeError, HingeRegion, Profile};
 use crate::material::Material;
 use std::cell::RefCell;
 
-/// Regions remembered per thread (replaced oldest first): a sweep cycling through up to this
-/// many hinges of one joint keeps finding them.
-const SLOTS: usize = 128;
-
-struct Memo {
-    slots: [Option<(Profile, Material, HingeRegion)>; SLOTS],
-    next: usize,
-}
-
 thread_local! {
-    static MEMO: RefCell<Memo> = const {
-        RefCell::new(Memo {
-            slots: [const { None }; SLOTS],
-            next: 0,
-        })
-    };
+    /// Regions remembered per thread (replaced oldest first): a sweep cycling through up to
+    /// 128 hinges of one joint keeps finding them.
+    static MEMO: RefCell<Ring<(Profile, Material), HingeRegion, 128>> = const { RefCell::new(Ring::new()) };
 }
 
 /// [`hinge::flex_region`] of `profile` and `material`, remembered (errors are not).
 pub(super) fn flex_region(profile: &Profile, material: &Material) -> Result<HingeRegion, HingeError> {
-    let known = MEMO.with_borrow(|m| {
-        m.slots
-            .iter()
-            .flatten()
-            .find(|(p, mat, _)| p == profile && mat == material)
-            .map(|(_, _, r)| r.clone())
-    });
-    if let Some(r) = known {
-        return Ok(r);
-    }
-    let r = hinge::flex_region(profile, material)?;
-    MEMO.with_borrow_mut(|m| {
-        let i = m.next;
-        m.slots[i] = Some((*profile, *material, r.clone()));
-        m.next = (i + 1) % SLOTS;
-    });
-    Ok(r)
+    remembered(&MEMO, (*profile, *material), || hinge::flex_region(profile, material))
 }
 
 #[cfg(test)]
