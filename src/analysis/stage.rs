@@ -294,57 +294,53 @@ pub fn run_stage_with(
             .map(|((name, _), r)| row_of(name, r, None, allowable))
             .collect(),
     };
-    let Some(s) = s else {
-        return Ok((
-            StageResult {
-                load_cases,
-                stiffness_z,
-                at_allowable,
-                platform_stiffness: platform_stiffness(compliance),
-                model: design_notes(&design),
-                nonlinear: case.nonlinear,
-                modes: None,
-                calibration_warnings: crate::case::stage::stage_warnings(&design),
-            },
-            Vec::new(),
-        ));
-    };
-    let results = nonlinear_cases.unwrap_or(fe_cases);
-    let mut out_files = Vec::new();
-    let drawn = drawn_bodies(&s);
-    if files {
-        for c in &results {
-            let mut cell = Vec::new();
-            for (i, leg) in s.legs.iter().enumerate() {
-                // Ideal joints have no hinge element (and no stress cell).
-                if let Some(el) = leg.rev_element {
-                    cell.push((el, c.revolute_stress[i]));
-                }
-                if let Some(el) = leg.sph_element {
-                    cell.push((el, c.spherical_stress[i]));
-                }
-            }
-            // The nonlinear solve splits each hinge into co-rotational segments (nodes added
-            // after the model's own): the file shows the model's nodes, a hinge as one line.
-            let vm = super::fem_static::von_mises_of(&c.fe, &cell);
-            let text = super::vtu::static_vtu(&s.model, &c.fe.displacements, &vm, &drawn)?;
-            out_files.push((
-                format!("stage_{}.vtu", super::fem_static::file_stem(&c.name)),
-                text.into_bytes(),
-            ));
-        }
-    }
-    if files {
-        // The same model as a `static` case (none with ideal joints, see StageModel::mesh_case).
-        if let Some(mesh) = s.mesh_case(&user, case.nonlinear_steps()) {
-            let text = serde_json::to_string_pretty(&mesh)
-                .map_err(|e| AnalysisError::new("stage", format!("stage_mesh.json: {e}")))?;
-            out_files.push(("stage_mesh.json".to_string(), text.into_bytes()));
-        }
-    }
     let mut model = design_notes(&design);
-    if let Some(steps) = case.nonlinear_steps() {
+    if let Some(steps) = nonlinear {
         model[0] = format!("load cases: geometrically nonlinear statics (co-rotational legs and hinges, rigid platform exact under finite rotation, Newton-Raphson in {steps} load steps); stiffness_z, at_allowable and platform_stiffness stay linear");
+    }
+    // What needs the FE model: the .vtu and stage_mesh.json files and the modes.
+    let mut out_files = Vec::new();
+    let mut modes = None;
+    if let Some(s) = &s {
+        let results = nonlinear_cases.as_ref().unwrap_or(&fe_cases);
+        let drawn = drawn_bodies(s);
+        if files {
+            for c in results {
+                let mut cell = Vec::new();
+                for (i, leg) in s.legs.iter().enumerate() {
+                    // Ideal joints have no hinge element (and no stress cell).
+                    if let Some(el) = leg.rev_element {
+                        cell.push((el, c.revolute_stress[i]));
+                    }
+                    if let Some(el) = leg.sph_element {
+                        cell.push((el, c.spherical_stress[i]));
+                    }
+                }
+                // The nonlinear solve splits each hinge into co-rotational segments (nodes added
+                // after the model's own): the file shows the model's nodes, a hinge as one line.
+                let vm = super::fem_static::von_mises_of(&c.fe, &cell);
+                let text = super::vtu::static_vtu(&s.model, &c.fe.displacements, &vm, &drawn)?;
+                out_files.push((
+                    format!("stage_{}.vtu", super::fem_static::file_stem(&c.name)),
+                    text.into_bytes(),
+                ));
+            }
+            // The same model as a `static` case (none with ideal joints, see StageModel::mesh_case).
+            if let Some(mesh) = s.mesh_case(&user, nonlinear) {
+                let text = serde_json::to_string_pretty(&mesh)
+                    .map_err(|e| AnalysisError::new("stage", format!("stage_mesh.json: {e}")))?;
+                out_files.push(("stage_mesh.json".to_string(), text.into_bytes()));
+            }
+        }
+        if let Some(n) = case.modes {
+            let (rows, model, raw) = stage_modes_with_model(case, s, n)?;
+            if files {
+                let modes: Vec<(f64, &[[f64; 6]])> =
+                    raw.modes.iter().map(|m| (m.frequency_hz, m.shape.as_slice())).collect();
+                out_files.push(("modes.vtu".to_string(), super::vtu::modes_vtu(&model, &modes, &drawn)?));
+            }
+            modes = Some(rows);
+        }
     }
     let result = StageResult {
         load_cases,
@@ -353,18 +349,7 @@ pub fn run_stage_with(
         platform_stiffness: platform_stiffness(compliance),
         model,
         nonlinear: case.nonlinear,
-        modes: match case.modes {
-            Some(n) => {
-                let (rows, model, raw) = stage_modes_with_model(case, &s, n)?;
-                if files {
-                    let modes: Vec<(f64, &[[f64; 6]])> =
-                        raw.modes.iter().map(|m| (m.frequency_hz, m.shape.as_slice())).collect();
-                    out_files.push(("modes.vtu".to_string(), super::vtu::modes_vtu(&model, &modes, &drawn)?));
-                }
-                Some(rows)
-            }
-            None => None,
-        },
+        modes,
         calibration_warnings: crate::case::stage::stage_warnings(&design),
     };
     Ok((result, out_files))
