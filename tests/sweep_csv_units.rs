@@ -6,10 +6,16 @@
 
 mod common;
 use common::*;
-use flexfem::analysis::units::{of_kind, UnitOf};
+use flexfem::analysis::registry;
+use flexfem::analysis::units::UnitOf;
 use flexfem::design::table::visit_leaves;
 use serde_json::Value;
 use std::fs;
+
+/// The column units the registered analysis `kind` declares.
+fn of_kind(kind: &str) -> Option<(UnitOf, UnitOf)> {
+    registry::find(kind).and_then(|a| a.column_units())
+}
 
 /// Runs `case` as a sweep with `extra` arguments and `--csv`; checks every column's unit.
 fn check_table(case: &str, kind: &str, axes: usize, extra: &[&str]) {

@@ -7,6 +7,7 @@
 //! kinds, [`super::kinds_list`].
 
 use super::case_file::{Case, CaseOf};
+use super::units::UnitOf;
 use super::{Files, Report, RunError};
 use crate::case::{CaseError, MaterialSpec};
 use crate::fem::SolverCache;
@@ -90,6 +91,11 @@ pub trait Analysis: 'static {
     fn render_sweep_file(_file: &SweepFile, _lines: &[String]) -> Option<String> {
         None
     }
+    /// The units of the result's and the case's numbers, for the columns of sweep tables
+    /// (`None`: bare column names); see [`super::units`].
+    fn column_units() -> Option<(UnitOf, UnitOf)> {
+        None
+    }
 }
 
 /// A file a sweep over some analysis kind writes beside its JSON lines.
@@ -148,6 +154,8 @@ pub trait DynAnalysis: Sync {
     fn sweep_files(&self) -> &'static [SweepFile];
     /// [`Analysis::render_sweep_file`].
     fn render_sweep_file(&self, file: &SweepFile, lines: &[String]) -> Option<String>;
+    /// [`Analysis::column_units`].
+    fn column_units(&self) -> Option<(UnitOf, UnitOf)>;
 }
 
 /// The registry entry of analysis `A`.
@@ -192,5 +200,8 @@ impl<A: CaseOf> DynAnalysis for Entry<A> {
     }
     fn render_sweep_file(&self, file: &SweepFile, lines: &[String]) -> Option<String> {
         A::render_sweep_file(file, lines)
+    }
+    fn column_units(&self) -> Option<(UnitOf, UnitOf)> {
+        A::column_units()
     }
 }

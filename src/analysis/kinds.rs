@@ -2,6 +2,7 @@
 //! [`crate::case`] to the run and report functions of its analysis module.
 
 use super::kind::{named_materials, Analysis, Ctx, SweepFile, UsedMaterial};
+use super::units::{self, UnitOf};
 use super::{design, fem_static, fem_vs_fkp, hinge, kinematics, modal, stage, stage_report, warn, Report, RunError};
 use crate::case::{self, CaseError, MaterialSpec};
 
@@ -70,6 +71,9 @@ impl Analysis for Hinge {
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         one_material(&case.material)
     }
+    fn column_units() -> Option<(UnitOf, UnitOf)> {
+        Some(units::of::<hinge::HingeOut>())
+    }
 }
 
 /// `stage`: the monolithic 3-PRS compliant stage.
@@ -106,6 +110,9 @@ impl Analysis for Stage {
     }
     fn render_sweep_file(_file: &SweepFile, lines: &[String]) -> Option<String> {
         super::sweep_plot::stage_sweep_svg(lines)
+    }
+    fn column_units() -> Option<(UnitOf, UnitOf)> {
+        Some(units::of::<stage::StageResult>())
     }
 }
 

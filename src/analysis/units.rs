@@ -5,7 +5,8 @@
 //! powers with `^` (`N*mm/rad`, `t/mm^3`), and `-` for a dimensionless number (ratios, factors,
 //! counts). Angles are degrees wherever a result holds them; `rad` appears only inside the units of
 //! stiffnesses and compliances, which the results give per radian. Each result type declares its
-//! units ([`Units`]) next to its fields' meaning; a path the type does not declare has no unit
+//! units ([`Units`]) next to its fields' meaning, and its analysis kind hands them to sweeps
+//! ([`Analysis::column_units`](crate::analysis::Analysis::column_units)); a path the type does not declare has no unit
 //! (text, flags and identifiers).
 
 use super::hinge::HingeOut;
@@ -23,16 +24,10 @@ pub trait Units {
     fn input_unit(path: &[&str]) -> Option<&'static str>;
 }
 
-/// The result and case units of analysis kind `kind`, for the kinds that declare them.
-pub fn of_kind(kind: &str) -> Option<(UnitOf, UnitOf)> {
-    fn pair<U: Units>() -> (UnitOf, UnitOf) {
-        (U::result_unit, U::input_unit)
-    }
-    match kind {
-        "stage" => Some(pair::<StageResult>()),
-        "hinge" => Some(pair::<HingeOut>()),
-        _ => None,
-    }
+/// The (result, case) unit functions of a result type, as
+/// [`Analysis::column_units`](crate::analysis::Analysis::column_units) gives them.
+pub fn of<U: Units>() -> (UnitOf, UnitOf) {
+    (U::result_unit, U::input_unit)
 }
 
 /// A rotational stiffness (moment per radian).

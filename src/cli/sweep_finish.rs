@@ -99,13 +99,9 @@ pub(super) fn finish(
     Ok((failed, table.filter(|_| want_csv)))
 }
 
-/// The column units of the sweep's analysis kind ([`crate::analysis::units`]).
+/// The column units of the sweep's analysis kind ([`crate::analysis::Analysis::column_units`]).
 pub(super) fn units_of(sweep: &Sweep) -> Option<(UnitOf, UnitOf)> {
-    sweep
-        .base
-        .get("analysis")
-        .and_then(Value::as_str)
-        .and_then(crate::analysis::units::of_kind)
+    sweep_kind(sweep).and_then(|a| a.column_units())
 }
 
 /// The registered analysis of a sweep's base case.

@@ -93,7 +93,7 @@ pub fn csv(axes: &[&str], lines: &[&str]) -> String {
 }
 
 /// [`csv`] with the column units `(result units, case units)` of the sweep's analysis kind
-/// ([`crate::analysis::units::of_kind`]).
+/// ([`crate::analysis::Analysis::column_units`]).
 pub fn csv_with_units(axes: &[&str], lines: &[&str], units: Option<(UnitOf, UnitOf)>) -> String {
     let rows: Vec<Value> = lines
         .par_iter()
