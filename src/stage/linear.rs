@@ -58,13 +58,12 @@ impl StageResponse {
     }
 }
 
-/// One element of a leg chain: its end points p → q (towards the platform), its frame's `up`
-/// and its cantilever compliance at q in local axes.
+/// One element of a leg chain: its end points p → q (towards the platform) and its frame's
+/// `up` (its compliance: [`LinearStage::local_compliance`]).
 struct Piece {
     p: Vector3<f64>,
     q: Vector3<f64>,
     up: Vector3<f64>,
-    local: Matrix6<f64>,
     /// A leg beam (else a hinge: `hinge` 0 revolute, 1 spherical).
     beam: bool,
     hinge: usize,
@@ -166,7 +165,7 @@ impl ValidStage {
                     Some((lam, _)) => {
                         let t = t6(&lam);
                         let r = rigid_arm(&(xt - pc.q));
-                        c_b += r * (t.transpose() * pc.local * t) * r.transpose();
+                        c_b += r * (t.transpose() * s.local_compliance(&pc) * t) * r.transpose();
                     }
                     None => ok = false,
                 }
@@ -223,19 +222,16 @@ impl LinearStage<'_> {
             p: c - hr * l,
             q: start,
             up: n,
-            local: self.flex[0],
             beam: false,
             hinge: 0,
         });
         let mut prev = start;
         for k in 1..=d.leg_elements {
             let x = start + (end - start) * (k as f64 / d.leg_elements as f64);
-            let len = (x - prev).norm();
             f(Piece {
                 p: prev,
                 q: x,
                 up: n,
-                local: cantilever_compliance(self.young, self.shear, &self.props, len, true),
                 beam: true,
                 hinge: 0,
             });
@@ -245,10 +241,19 @@ impl LinearStage<'_> {
             p: prev,
             q: b + hs * l,
             up: n,
-            local: self.flex[1],
             beam: false,
             hinge: 1,
         });
+    }
+
+    /// The cantilever compliance at q of a piece, local axes (the hinge's, or the leg beam's).
+    fn local_compliance(&self, pc: &Piece) -> Matrix6<f64> {
+        if pc.beam {
+            let len = (pc.q - pc.p).norm();
+            cantilever_compliance(self.young, self.shear, &self.props, len, true)
+        } else {
+            self.flex[pc.hinge]
+        }
     }
 
     /// The platform-centre compliance with the sliders held, mm, N, rad.
