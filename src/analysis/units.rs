@@ -80,6 +80,9 @@ impl Units for HingeOut {
             // Compliant-axis rotational stiffness of the notch alone.
             ["closed_form", _] => K_ROT,
             ["stress_concentration"] => "-",
+            ["calibration", "short_notch_g" | "plane_strain_p"] => "-",
+            ["calibration", "load_spreading", "slope"] => "-",
+            ["calibration", "load_spreading", "from_mm" | "to_mm"] => "mm",
             ["material", field] => return material_unit(field),
             ["large_rotation", "points", _, field] => match *field {
                 "force" => "N",

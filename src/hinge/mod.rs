@@ -56,7 +56,7 @@ pub use element::{
 };
 pub use error::HingeError;
 use integrate::{flex_integrals, flex_integrals_with_notch, Moduli, Quadrature};
-pub use notes::{ClosedForms, ModelNotes};
+pub use notes::{Calibration, ClosedForms, LoadSpreading, ModelNotes};
 pub use profile::{Contour, Profile};
 pub use section::Section;
 pub use spec::HingeSpec;
@@ -97,7 +97,10 @@ pub struct HingeResult {
     pub notch_only: Stiffness,
     /// Notch stress-concentration factor applied to the beam stress.
     pub stress_concentration: f64,
-    /// Idealisations and models used (text made when written: [`ModelNotes::lines`]).
+    /// The solid-calibrated factors used (the numbers the model notes refer to).
+    pub calibration: Calibration,
+    /// Idealisations and models used: JSON without design-specific numbers (those are
+    /// `stress_concentration` and `calibration`); [`ModelNotes::lines`] quotes them.
     pub model: ModelNotes,
 }
 
@@ -239,6 +242,7 @@ pub fn characterise(spec: &HingeSpec, material: &Material) -> Result<HingeResult
         closed_form: closed,
         notch_only,
         stress_concentration: kt,
+        calibration: model.calibration(),
         model,
     })
 }

@@ -103,7 +103,39 @@ impl ModelNotes {
         }
     }
 
-    /// The notes as text, one line each.
+    /// The numbers the notes quote, as a result field.
+    pub fn calibration(&self) -> Calibration {
+        Calibration {
+            short_notch_g: self.g,
+            plane_strain_p: self.p,
+            load_spreading: self
+                .spread
+                .map(|(slope, from_mm, to_mm)| LoadSpreading { slope, from_mm, to_mm }),
+        }
+    }
+
+    /// The notes without their numbers (the JSON form: see the `Serialize` impl).
+    pub fn invariant_lines(&self) -> &'static [&'static str] {
+        const BEAM: &str = "bending/shear/axial: exact flexibility of a variable-section Timoshenko beam, Gauss-Legendre on pieces split at profile breakpoints (Cowper shear coefficients)";
+        const FACE: &str = "compliance referenced to the centre of the loaded blank end face, the other face clamped";
+        const MODULUS: &str = "compliant-axis bending modulus of the notch region E*P/G (solid-calibrated): short-notch G and plane-strain P in calibration";
+        const CALIBRATION: &str = "calibration: converged 10-node tetrahedron solid models (tools/solid_reference.py); circular notches t/R 0.06-0.5 within 2% bending, 4% axial; turned necks l/t >= 1 within 3% bending, 5% torsion, 3% axial; leaf within 5%";
+        const NECK_TORSION: &str =
+            "torsion: Saint-Venant (circular waist, no warping); clipped-disk J blended between disk and square";
+        const NECK_STRESS: &str = "stress: 32M/(pi t^3) at the waist x Kt = stress_concentration (shoulder-fillet Kt = 1 + 0.041 sqrt(t/R), fitted to solid models within 2%)";
+        const VLASOV: &str = "torsion: Vlasov non-uniform torsion FE (Hermite cubics), Timoshenko-Goodier J(x), exact rectangle warping constant, warping restrained at both blank end faces; in the blank the load-spreading effective thickness (solid models: circular notches -11...+4%, corner-filleted -14%)";
+        const NOTCH_STRESS: &str = "stress: 6M/(w t^2) at the waist x stress_concentration (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, divided by sqrt(P) for the plane-strain waist; solid models: within 6%)";
+        const SPREAD: &str = "load spreading (solid-calibrated): effective half-size grows at calibration.load_spreading.slope from |x| = from_mm to to_mm";
+        const NO_SPREAD: &str = "load spreading: none needed (the contour never widens faster than slope 1/2)";
+        match (self.neck, self.spread.is_some()) {
+            (true, true) => &[BEAM, FACE, NECK_TORSION, NECK_STRESS, SPREAD, MODULUS, CALIBRATION],
+            (true, false) => &[BEAM, FACE, NECK_TORSION, NECK_STRESS, NO_SPREAD, MODULUS, CALIBRATION],
+            (false, true) => &[BEAM, FACE, VLASOV, NOTCH_STRESS, SPREAD, MODULUS, CALIBRATION],
+            (false, false) => &[BEAM, FACE, VLASOV, NOTCH_STRESS, NO_SPREAD, MODULUS, CALIBRATION],
+        }
+    }
+
+    /// The notes as text with their numbers, one line each (the Markdown report's form).
     pub fn lines(&self) -> Vec<String> {
         let kt = self.kt;
         let mut v = vec![
@@ -143,13 +175,39 @@ impl IntoIterator for &ModelNotes {
     }
 }
 
+/// The JSON form of the notes: the same lines with every design-specific number left out (they
+/// are the result's `stress_concentration` and `calibration`), so that every design of one hinge
+/// family has the same notes — a sweep writes them once per file — and writing them allocates
+/// nothing.
 impl Serialize for ModelNotes {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let lines = self.lines();
+        let lines = self.invariant_lines();
         let mut seq = s.serialize_seq(Some(lines.len()))?;
-        for l in &lines {
+        for l in lines {
             seq.serialize_element(l)?;
         }
         seq.end()
     }
+}
+
+/// The solid-calibrated factors a characterisation used (the numbers the model notes refer to).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Calibration {
+    /// Short-notch factor G of the compliant-axis bending modulus E·P/G (dimensionless).
+    pub short_notch_g: f64,
+    /// Plane-strain factor P of the compliant-axis bending modulus E·P/G (dimensionless).
+    pub plane_strain_p: f64,
+    /// Load spreading into the blank (`null`: none needed).
+    pub load_spreading: Option<LoadSpreading>,
+}
+
+/// Where the effective (load-carrying) half-size of the blank grows linearly.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LoadSpreading {
+    /// Growth of the effective half-size per unit length (dimensionless).
+    pub slope: f64,
+    /// |x| from which it grows, mm.
+    pub from_mm: f64,
+    /// |x| at which it reaches the blank's half-size, mm.
+    pub to_mm: f64,
 }
