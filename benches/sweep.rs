@@ -48,10 +48,18 @@ fn bench(c: &mut Criterion) {
     g.throughput(Throughput::Elements(stage.len() as u64));
     g.bench_function("stage_256_designs_rayon", |b| {
         b.iter(|| {
-            run_sweep_formatted(&stage, Some(Path::new("cases")), Shard::ALL, &none, &format, |row| {
-                black_box(row);
-                Ok(())
-            })
+            run_sweep_formatted(
+                &stage,
+                Some(Path::new("cases")),
+                Shard::ALL,
+                &none,
+                &format,
+                false,
+                |row| {
+                    black_box(row);
+                    Ok(())
+                },
+            )
             .expect("sink never fails")
         })
     });

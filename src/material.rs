@@ -71,12 +71,15 @@ impl Material {
 
     /// Looks up a built-in material by name (case-insensitive).
     pub fn builtin(name: &str) -> Option<Material> {
-        match name.to_ascii_lowercase().as_str() {
-            "al7075" => Some(Self::AL7075),
-            "nylon66" => Some(Self::NYLON66),
-            "steel" => Some(Self::STEEL),
-            _ => None,
-        }
+        // Letter case ignored without lowering a copy (no allocation: sweeps resolve it per design).
+        [
+            ("al7075", Self::AL7075),
+            ("nylon66", Self::NYLON66),
+            ("steel", Self::STEEL),
+        ]
+        .into_iter()
+        .find(|(n, _)| n.eq_ignore_ascii_case(name))
+        .map(|(_, m)| m)
     }
 
     /// Shear modulus G = E / (2(1 + ν)), MPa.

@@ -15,6 +15,8 @@ pub trait CaseOf: super::Analysis {
     const KIND: &'static str;
     /// The case of this kind inside a parsed case file, if it is one.
     fn case_of(case: &Case) -> Option<&Self::Case>;
+    /// [`Self::case_of`], mutable (a sweep sets each design's numbers in its worker's case).
+    fn case_of_mut(case: &mut Case) -> Option<&mut Self::Case>;
 }
 
 /// The parser of a plain case shape: serde with unknown fields refused, errors under their
@@ -66,6 +68,13 @@ macro_rules! case_side {
             impl CaseOf for $analysis {
                 const KIND: &'static str = $name;
                 fn case_of(case: &Case) -> Option<&Self::Case> {
+                    match case {
+                        Case::$variant(c) => Some(c),
+                        #[allow(unreachable_patterns)]
+                        _ => None,
+                    }
+                }
+                fn case_of_mut(case: &mut Case) -> Option<&mut Self::Case> {
                     match case {
                         Case::$variant(c) => Some(c),
                         #[allow(unreachable_patterns)]

@@ -74,6 +74,10 @@ impl ser::Serializer for Check {
     fn serialize_f32(self, v: f32) -> Result<(), NonFinite> {
         float(v as f64)
     }
+    /// Text holds no number to check: nothing is formatted (the default would build a String).
+    fn collect_str<T: ?Sized + fmt::Display>(self, _v: &T) -> Result<(), NonFinite> {
+        Ok(())
+    }
     fn serialize_f64(self, v: f64) -> Result<(), NonFinite> {
         float(v)
     }

@@ -7,6 +7,7 @@
 //! kinds, [`super::kinds_list`].
 
 use super::case_file::{Case, CaseOf};
+use super::line::{Echoed, LineSpec, MaterialEcho, ResultLine};
 use super::units::UnitOf;
 use super::{Files, Report, RunError};
 use crate::case::{CaseError, MaterialSpec};
@@ -96,6 +97,17 @@ pub trait Analysis: 'static {
     fn column_units() -> Option<(UnitOf, UnitOf)> {
         None
     }
+    /// The number at a case path (object keys and array indices, as in a sweep's `vary`), for
+    /// sweeps that set each design's numbers in a parsed case instead of parsing the design;
+    /// `None` (the default) sends sweeps of this kind through JSON values. A kind that gives it
+    /// must also give [`Self::material_of`] when it has [`Self::materials`].
+    fn number_mut<'c>(_case: &'c mut Self::Case, _path: &[&str]) -> Option<&'c mut f64> {
+        None
+    }
+    /// The one material of the case, echoed as `material` (see [`Self::number_mut`]).
+    fn material_of(_case: &Self::Case) -> Option<&MaterialSpec> {
+        None
+    }
 }
 
 /// A file a sweep over some analysis kind writes beside its JSON lines.
@@ -156,6 +168,19 @@ pub trait DynAnalysis: Sync {
     fn render_sweep_file(&self, file: &SweepFile, lines: &[String]) -> Option<String>;
     /// [`Analysis::column_units`].
     fn column_units(&self) -> Option<(UnitOf, UnitOf)>;
+    /// [`Analysis::number_mut`] of a parsed case of this kind.
+    fn number_mut<'c>(&self, case: &'c mut Case, path: &[&str]) -> Option<&'c mut f64>;
+    /// Runs a case of this kind and appends its result, as a run writes it (with the `material`
+    /// and `warnings` echoes), to `line` as `spec` keeps it — without a JSON value and, on the
+    /// paths of the kinds that give [`Analysis::number_mut`], without allocating. `None`: the
+    /// kind does not write lines this way.
+    fn write_result(
+        &self,
+        case: &Case,
+        ctx: &mut Ctx,
+        line: &mut ResultLine,
+        spec: LineSpec,
+    ) -> Option<Result<(), RunError>>;
 }
 
 /// The registry entry of analysis `A`.
@@ -203,5 +228,40 @@ impl<A: CaseOf> DynAnalysis for Entry<A> {
     }
     fn column_units(&self) -> Option<(UnitOf, UnitOf)> {
         A::column_units()
+    }
+    fn number_mut<'c>(&self, case: &'c mut Case, path: &[&str]) -> Option<&'c mut f64> {
+        A::number_mut(A::case_of_mut(case)?, path)
+    }
+    fn write_result(
+        &self,
+        case: &Case,
+        ctx: &mut Ctx,
+        line: &mut ResultLine,
+        spec: LineSpec,
+    ) -> Option<Result<(), RunError>> {
+        let c = A::case_of(case)?;
+        let spec_material = A::material_of(c);
+        if spec_material.is_none() && !A::materials(c).is_empty() {
+            return None;
+        }
+        let mut run = || -> Result<(), RunError> {
+            let result = A::run(c, ctx)?;
+            let mut warnings = std::mem::take(&mut ctx.warnings);
+            warnings.extend(A::case_warnings(c));
+            warnings.extend(A::result_warnings(c, &result));
+            super::check_finite(&result)?;
+            let material = match spec_material {
+                Some(spec) => Some((spec, spec.resolve("material")?)),
+                None => None,
+            };
+            let echoed = Echoed {
+                result: &result,
+                material: material.as_ref().map(|(spec, m)| MaterialEcho::of(spec, m)),
+                warnings: &warnings,
+            };
+            line.write(&echoed, spec)
+                .map_err(|e| super::AnalysisError::new("output", e.to_string()).into())
+        };
+        Some(run())
     }
 }

@@ -74,6 +74,12 @@ impl Analysis for Hinge {
     fn column_units() -> Option<(UnitOf, UnitOf)> {
         Some(units::of::<hinge::HingeOut>())
     }
+    fn number_mut<'c>(case: &'c mut Self::Case, path: &[&str]) -> Option<&'c mut f64> {
+        case.number_mut(path)
+    }
+    fn material_of(case: &Self::Case) -> Option<&MaterialSpec> {
+        Some(&case.material)
+    }
 }
 
 /// `stage`: the monolithic 3-PRS compliant stage.
@@ -92,7 +98,7 @@ impl Analysis for Stage {
         ctx.warnings = stability(
             r.load_cases
                 .iter()
-                .map(|c| (c.name.as_str(), c.stable, c.critical_load_factor)),
+                .map(|c| (&*c.name, c.stable, c.critical_load_factor)),
         );
         Ok(r)
     }
@@ -113,6 +119,12 @@ impl Analysis for Stage {
     }
     fn column_units() -> Option<(UnitOf, UnitOf)> {
         Some(units::of::<stage::StageResult>())
+    }
+    fn number_mut<'c>(case: &'c mut Self::Case, path: &[&str]) -> Option<&'c mut f64> {
+        case.number_mut(path)
+    }
+    fn material_of(case: &Self::Case) -> Option<&MaterialSpec> {
+        Some(&case.material)
     }
 }
 

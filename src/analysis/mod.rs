@@ -15,6 +15,7 @@ pub mod kind;
 pub mod kinds;
 pub mod kinds_list;
 pub mod kinematics;
+pub mod line;
 pub mod modal;
 pub mod path_rows;
 pub mod registry;
@@ -128,13 +129,18 @@ pub struct Outcome {
 /// (e.g. `load_cases[0].max_von_mises`). Every analysis result goes through it; batch drivers
 /// (sweeps) call it on each row.
 pub fn to_checked_json<T: serde::Serialize>(v: &T) -> Result<serde_json::Value, AnalysisError> {
+    check_finite(v)?;
+    serde_json::to_value(v).map_err(|e| AnalysisError::new("output", e.to_string()))
+}
+
+/// The check of [`to_checked_json`] alone (no allocation when every number is finite).
+pub fn check_finite<T: serde::Serialize>(v: &T) -> Result<(), AnalysisError> {
     finite::first_non_finite(v).map_err(|(path, msg)| {
         AnalysisError::new(
             if path.is_empty() || path == "." { "output".to_string() } else { path },
             format!("the computed number is not finite ({msg}): the input is outside the range the model can represent (overflow) or the model is degenerate"),
         )
-    })?;
-    serde_json::to_value(v).map_err(|e| AnalysisError::new("output", e.to_string()))
+    })
 }
 
 /// The `## Warnings` section of the Markdown report (empty when there are none).
@@ -212,18 +218,7 @@ pub fn run_with(case: &Case, ctx: &mut Ctx) -> Result<Outcome, RunError> {
 /// "yield" (MPa), "allowable" (MPa)}`; `name` is the built-in name or `"custom"`; an unlimited
 /// yield or allowable stress is `null`.
 fn material_json(spec: &MaterialSpec, m: &Material) -> serde_json::Value {
-    let name = match spec {
-        MaterialSpec::Name(n) => n.as_str(),
-        MaterialSpec::Custom(_) => "custom",
-    };
-    serde_json::json!({
-        "name": name,
-        "E": m.e,
-        "nu": m.nu,
-        "density": m.density,
-        "yield": m.yield_strength.is_finite().then_some(m.yield_strength),
-        "allowable": m.allowable.is_finite().then_some(m.allowable),
-    })
+    serde_json::to_value(line::MaterialEcho::of(spec, m)).unwrap_or(serde_json::Value::Null)
 }
 
 /// One Markdown line per material used.

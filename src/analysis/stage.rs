@@ -4,12 +4,14 @@ pub use super::stage_modes::stage_modes;
 use super::stage_modes::stage_modes_with_model;
 use super::{AnalysisError, RunError};
 use crate::case::stage::{stage_error, StageCase};
+use crate::fem::inline_vec::InlineVec;
 use crate::kinematics::Pose;
 use crate::stage::{self, Drive, StageCaseResult, StageModel, StageResponse};
 use serde::Serialize;
+use std::sync::Arc;
 
 /// A platform pose in output units: mm and degrees.
-#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+#[derive(Debug, Clone, Copy, Serialize, PartialEq, Default)]
 pub struct PoseOut {
     /// mm.
     pub x: f64,
@@ -39,7 +41,7 @@ impl From<Pose> for PoseOut {
 }
 
 /// Peak hinge stresses per leg, MPa.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Default)]
 pub struct HingeStress {
     /// Revolute hinges, MPa.
     pub revolute: [f64; 3],
@@ -48,10 +50,10 @@ pub struct HingeStress {
 }
 
 /// One stage load case.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Default)]
 pub struct StageRow {
-    /// Name.
-    pub name: String,
+    /// Name (shared with the case: no copy per design).
+    pub name: Arc<str>,
     /// Strokes, mm.
     pub strokes: [f64; 3],
     /// Actuator forces, N.
@@ -112,16 +114,16 @@ pub struct PlatformStiffness {
 /// Result of the `stage` analysis.
 #[derive(Debug, Clone, Serialize)]
 pub struct StageResult {
-    /// Load cases in input order.
-    pub load_cases: Vec<StageRow>,
+    /// Load cases in input order (inline up to four: a sweep builds one result per design).
+    pub load_cases: InlineVec<StageRow, 4>,
     /// Total actuator force per mm of pure-z stroke, N/mm.
     pub stiffness_z: f64,
     /// Reach at the allowable stress under equal forces.
     pub at_allowable: AtAllowable,
     /// Platform stiffness.
     pub platform_stiffness: PlatformStiffness,
-    /// Idealisations.
-    pub model: Vec<String>,
+    /// Idealisations (text made when written or iterated).
+    pub model: StageNotes,
     /// Were the load cases solved geometrically nonlinear?
     pub nonlinear: bool,
     /// Natural frequencies and shapes (when the case asks for `modes`).
@@ -134,12 +136,12 @@ pub struct StageResult {
 }
 
 fn row(r: &StageCaseResult, allowable: f64) -> StageRow {
-    row_of(&r.name, &r.response(), r.stability, allowable)
+    row_of(Arc::from(r.name.as_str()), &r.response(), r.stability, allowable)
 }
 
-fn row_of(name: &str, r: &StageResponse, stability: Option<(bool, Option<[f64; 2]>)>, allowable: f64) -> StageRow {
+fn row_of(name: Arc<str>, r: &StageResponse, stability: Option<(bool, Option<[f64; 2]>)>, allowable: f64) -> StageRow {
     StageRow {
-        name: name.to_string(),
+        name,
         strokes: r.strokes,
         forces: r.forces,
         platform: r.platform.into(),
@@ -168,20 +170,90 @@ pub(super) fn fem_err(e: stage::StageError) -> RunError {
 
 /// Model notes shared by the stage analyses.
 pub fn model_notes(s: &StageModel) -> Vec<String> {
-    design_notes(&s.design)
+    StageNotes::of(&s.design).into_iter().collect()
 }
 
-fn design_notes(d: &stage::StageDesign) -> Vec<String> {
-    let mut v = vec![
-        "linear statics, small displacements (geometric nonlinearity not included)".to_string(),
-        "legs: prismatic Timoshenko beams; hinges: one flexibility element each over the notch and its load-spreading zone in the leg, exact variable-section Timoshenko flexibility with the solid-calibrated 3-D factors of the hinge analysis (load spreading, short-notch G, plane-strain P), warping-restrained (Vlasov) torsion for rectangular notches".to_string(),
-        "sliders: rigid bodies guided along e_i; platform: rigid body (rigid link)".to_string(),
-        "hinge stress: beam stress along the hinge x notch factor (K_t/sqrt(P) flat notches, 1 + 0.041 sqrt(t/R) turned neck), torsion tau = T c / J, von Mises combining the peaks (conservative)".to_string(),
-    ];
-    if d.ideal_joints {
-        v.push("ideal joints: hinges replaced by exact releases, legs and platform 1e6 x stiffer".into());
+/// The model notes of a stage result, kept as what they depend on until written (JSON: an array
+/// of strings; iterating gives the lines).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct StageNotes {
+    /// Load steps of a nonlinear analysis (`None`: linear).
+    pub nonlinear_steps: Option<usize>,
+    /// Hinges replaced by ideal joints.
+    pub ideal_joints: bool,
+}
+
+const LINEAR_NOTE: &str = "linear statics, small displacements (geometric nonlinearity not included)";
+const STAGE_NOTES: [&str; 3] = [
+    "legs: prismatic Timoshenko beams; hinges: one flexibility element each over the notch and its load-spreading zone in the leg, exact variable-section Timoshenko flexibility with the solid-calibrated 3-D factors of the hinge analysis (load spreading, short-notch G, plane-strain P), warping-restrained (Vlasov) torsion for rectangular notches",
+    "sliders: rigid bodies guided along e_i; platform: rigid body (rigid link)",
+    "hinge stress: beam stress along the hinge x notch factor (K_t/sqrt(P) flat notches, 1 + 0.041 sqrt(t/R) turned neck), torsion tau = T c / J, von Mises combining the peaks (conservative)",
+];
+const IDEAL_NOTE: &str = "ideal joints: hinges replaced by exact releases, legs and platform 1e6 x stiffer";
+
+/// The first note of a nonlinear analysis.
+struct NonlinearNote(usize);
+
+impl std::fmt::Display for NonlinearNote {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "load cases: geometrically nonlinear statics (co-rotational legs and hinges, rigid platform exact under finite rotation, Newton-Raphson in {} load steps); stiffness_z, at_allowable and platform_stiffness stay linear", self.0)
     }
-    v
+}
+
+impl StageNotes {
+    /// The notes of a linear analysis of design `d`.
+    pub fn of(d: &stage::StageDesign) -> StageNotes {
+        StageNotes {
+            nonlinear_steps: None,
+            ideal_joints: d.ideal_joints,
+        }
+    }
+
+    /// Each line, as text written to `f` (one call per line, in order).
+    fn each(&self, mut f: impl FnMut(&dyn std::fmt::Display)) {
+        match self.nonlinear_steps {
+            Some(steps) => f(&NonlinearNote(steps)),
+            None => f(&LINEAR_NOTE),
+        }
+        STAGE_NOTES.iter().for_each(|n| f(n));
+        if self.ideal_joints {
+            f(&IDEAL_NOTE);
+        }
+    }
+}
+
+impl IntoIterator for &StageNotes {
+    type Item = String;
+    type IntoIter = std::vec::IntoIter<String>;
+    fn into_iter(self) -> Self::IntoIter {
+        let mut v = Vec::new();
+        self.each(|l| v.push(l.to_string()));
+        v.into_iter()
+    }
+}
+
+/// An array of strings, written without allocating (`collect_str`).
+impl Serialize for StageNotes {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeSeq;
+        struct Line<'a>(&'a dyn std::fmt::Display);
+        impl Serialize for Line<'_> {
+            fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                s.collect_str(self.0)
+            }
+        }
+        let mut seq = s.serialize_seq(None)?;
+        let mut err = None;
+        self.each(|l| {
+            if err.is_none() {
+                err = seq.serialize_element(&Line(l)).err();
+            }
+        });
+        match err {
+            Some(e) => Err(e),
+            None => seq.end(),
+        }
+    }
 }
 
 fn platform_stiffness(c: nalgebra::Matrix6<f64>) -> PlatformStiffness {
@@ -231,7 +303,7 @@ pub fn run_stage_with(
     files: bool,
     cache: &mut crate::fem::SolverCache,
 ) -> Result<(StageResult, super::Files), RunError> {
-    let (design, mut drives) = case.validated()?;
+    let (design, user_drives) = case.validated_drives()?;
     let allowable = design.material.allowable;
     // One linear pass: the user's cases, a unit force on every actuator (reach at the allowable)
     // and a unit pure-z stroke set (structural stiffness), plus the platform compliance.
@@ -240,15 +312,22 @@ pub fn run_stage_with(
         .actuation_jacobian(0.0, 0.0, 0.0)
         .map_err(|e| AnalysisError::new("stage", e.to_string()))?;
     let unit_z = [j[(0, 0)], j[(1, 0)], j[(2, 0)]];
-    let user = drives.clone();
-    drives.push(("unit_force".into(), Drive::Forces([1.0; 3])));
-    drives.push(("unit_z".into(), Drive::Strokes(unit_z)));
-    let n = user.len();
+    let n = user_drives.len();
+    // The user's drives and the two of the linear pass, in that order.
+    let all_drives = || {
+        let units = [Drive::Forces([1.0; 3]), Drive::Strokes(unit_z)];
+        user_drives.iter().copied().chain(units)
+    };
+    // Named, for the FE model (built only off the sweep's hot path).
+    let user = || -> Vec<(String, Drive)> {
+        let names = case.load_cases.iter().map(|lc| lc.name.to_string());
+        names.zip(user_drives.iter().copied()).collect()
+    };
     // The linear numbers come from the stage solved on its condensed form without an FE model
     // (stage::LinearStage), else (ideal joints, or a failure the FE model then reports) from
     // the FE model; the model is built only for that, files, modes or nonlinear cases.
     let condensed = design.linear().map(|l| {
-        let r: Vec<StageResponse> = drives.iter().map(|(_, d)| l.response(*d)).collect();
+        let r: InlineVec<StageResponse, 6> = all_drives().map(|d| l.response(d)).collect();
         (r, l.compliance())
     });
     let condensed = condensed.filter(|(r, c)| {
@@ -263,11 +342,14 @@ pub fn run_stage_with(
     let mut fe_cases = Vec::new();
     let (responses, compliance) = match (condensed, &s) {
         (Some(c), Some(s)) if files && nonlinear.is_none() => {
-            fe_cases = s.analyse_with(cache, &user, false).map_err(fem_err)?.cases;
+            fe_cases = s.analyse_with(cache, &user(), false).map_err(fem_err)?.cases;
             c
         }
         (Some(c), _) => c,
         (None, Some(s)) => {
+            let mut drives = user();
+            drives.push(("unit_force".into(), Drive::Forces([1.0; 3])));
+            drives.push(("unit_z".into(), Drive::Strokes(unit_z)));
             let mut a = s.analyse_with(cache, &drives, true).map_err(fem_err)?;
             let compliance = a
                 .compliance
@@ -283,21 +365,22 @@ pub fn run_stage_with(
     let stiffness_z = z.forces.iter().sum::<f64>() / (unit_z.iter().sum::<f64>() / 3.0);
     let at_allowable = at_allowable(allowable, u);
     let nonlinear_cases = match (nonlinear, &s) {
-        (Some(steps), Some(s)) => Some(s.solve_nonlinear(&user, steps).map_err(fem_err)?),
+        (Some(steps), Some(s)) => Some(s.solve_nonlinear(&user(), steps).map_err(fem_err)?),
         _ => None,
     };
     let load_cases = match &nonlinear_cases {
         Some(cases) => cases.iter().map(|r| row(r, allowable)).collect(),
-        None => user
+        None => case
+            .load_cases
             .iter()
-            .zip(&responses)
-            .map(|((name, _), r)| row_of(name, r, None, allowable))
+            .zip(responses.iter())
+            .map(|(lc, r)| row_of(lc.name.clone(), r, None, allowable))
             .collect(),
     };
-    let mut model = design_notes(&design);
-    if let Some(steps) = nonlinear {
-        model[0] = format!("load cases: geometrically nonlinear statics (co-rotational legs and hinges, rigid platform exact under finite rotation, Newton-Raphson in {steps} load steps); stiffness_z, at_allowable and platform_stiffness stay linear");
-    }
+    let model = StageNotes {
+        nonlinear_steps: nonlinear,
+        ..StageNotes::of(&design)
+    };
     // What needs the FE model: the .vtu and stage_mesh.json files and the modes.
     let mut out_files = Vec::new();
     let mut modes = None;
@@ -326,7 +409,7 @@ pub fn run_stage_with(
                 ));
             }
             // The same model as a `static` case (none with ideal joints, see StageModel::mesh_case).
-            if let Some(mesh) = s.mesh_case(&user, nonlinear) {
+            if let Some(mesh) = s.mesh_case(&user(), nonlinear) {
                 let text = serde_json::to_string_pretty(&mesh)
                     .map_err(|e| AnalysisError::new("stage", format!("stage_mesh.json: {e}")))?;
                 out_files.push(("stage_mesh.json".to_string(), text.into_bytes()));

@@ -31,7 +31,7 @@ pub fn stage_report(r: &StageResult) -> Report {
     for c in &r.load_cases {
         let mx = |v: [f64; 3]| v.iter().cloned().fold(0.0, f64::max);
         t.row(vec![
-            c.name.clone(),
+            c.name.to_string(),
             f3(c.forces, 2),
             f3(c.strokes, 4),
             format!("{:.1}", c.platform.z * 1000.0),

@@ -202,7 +202,7 @@ impl DesignCase {
         ];
         for (name, bd) in names.iter().zip(&bounds) {
             check::range(name, *bd)?;
-            check::positive(&format!("{name}[0]"), bd[0], "mm")?;
+            check::positive(format_args!("{name}[0]"), bd[0], "mm")?;
         }
         if !(1..=100_000).contains(&self.samples) {
             return Err(CaseError::value("samples", self.samples, "must be in 1..=100000"));

@@ -60,17 +60,20 @@ pub fn num(v: f64) -> String {
     }
 }
 
-/// Validation helpers: each returns an error naming `path` when the check fails.
+/// Validation helpers: each returns an error naming `path` when the check fails. The path is
+/// anything `Display` (`format_args!("{p}.E")`): it is made into text only for an error, so a
+/// valid case is checked without allocating.
 pub mod check {
     use super::{num, CaseError};
+    use std::fmt::Display;
 
     /// `v` finite and > 0.
-    pub fn positive(path: &str, v: f64, unit: &str) -> Result<(), CaseError> {
+    pub fn positive(path: impl Display, v: f64, unit: &str) -> Result<(), CaseError> {
         if v.is_finite() && v > 0.0 {
             Ok(())
         } else {
             Err(CaseError::value(
-                path,
+                path.to_string(),
                 num(v),
                 format!("must be a positive number ({unit})"),
             ))
@@ -78,12 +81,12 @@ pub mod check {
     }
 
     /// `v` finite and ≥ 0.
-    pub fn non_negative(path: &str, v: f64, unit: &str) -> Result<(), CaseError> {
+    pub fn non_negative(path: impl Display, v: f64, unit: &str) -> Result<(), CaseError> {
         if v.is_finite() && v >= 0.0 {
             Ok(())
         } else {
             Err(CaseError::value(
-                path,
+                path.to_string(),
                 num(v),
                 format!("must be zero or positive ({unit})"),
             ))
@@ -91,12 +94,12 @@ pub mod check {
     }
 
     /// `v` finite and within [lo, hi].
-    pub fn within(path: &str, v: f64, lo: f64, hi: f64, unit: &str) -> Result<(), CaseError> {
+    pub fn within(path: impl Display, v: f64, lo: f64, hi: f64, unit: &str) -> Result<(), CaseError> {
         if v.is_finite() && v >= lo && v <= hi {
             Ok(())
         } else {
             Err(CaseError::value(
-                path,
+                path.to_string(),
                 num(v),
                 format!("must lie in [{lo}, {hi}] {unit}"),
             ))
@@ -104,23 +107,23 @@ pub mod check {
     }
 
     /// `v` finite.
-    pub fn finite(path: &str, v: f64) -> Result<(), CaseError> {
+    pub fn finite(path: impl Display, v: f64) -> Result<(), CaseError> {
         if v.is_finite() {
             Ok(())
         } else {
-            Err(CaseError::value(path, num(v), "must be a finite number"))
+            Err(CaseError::value(path.to_string(), num(v), "must be a finite number"))
         }
     }
 
     /// `r[0] ≤ r[1]`, both finite.
-    pub fn range(path: &str, r: [f64; 2]) -> Result<(), CaseError> {
-        finite(&format!("{path}[0]"), r[0])?;
-        finite(&format!("{path}[1]"), r[1])?;
+    pub fn range(path: impl Display, r: [f64; 2]) -> Result<(), CaseError> {
+        finite(format_args!("{path}[0]"), r[0])?;
+        finite(format_args!("{path}[1]"), r[1])?;
         if r[0] <= r[1] {
             Ok(())
         } else {
             Err(CaseError::value(
-                path,
+                path.to_string(),
                 format!("[{}, {}]", r[0], r[1]),
                 "a range must be [min, max] with min ≤ max",
             ))

@@ -27,9 +27,9 @@ impl MechanismSpec {
     /// Validates and builds the mechanism; `path` is the JSON path of this object.
     pub fn build(&self, path: &str) -> Result<Prs, CaseError> {
         let p = |f: &str| format!("{path}.{f}");
-        check::positive(&p("L"), self.l, "mm")?;
-        check::positive(&p("b"), self.b, "mm")?;
-        check::within(&p("gamma_deg"), self.gamma_deg, -90.0, 90.0, "degrees")?;
+        check::positive(format_args!("{path}.L"), self.l, "mm")?;
+        check::positive(format_args!("{path}.b"), self.b, "mm")?;
+        check::within(format_args!("{path}.gamma_deg"), self.gamma_deg, -90.0, 90.0, "degrees")?;
         let gamma = self.gamma_deg.to_radians();
         let prs = match (self.alpha0_deg, self.a) {
             (Some(al), None) => {
@@ -39,7 +39,7 @@ impl MechanismSpec {
                 Prs::new(self.l, self.b, al.to_radians(), gamma).map_err(|e| CaseError::new(path, e.to_string()))?
             }
             (None, Some(a)) => {
-                check::positive(&p("a"), a, "mm")?;
+                check::positive(format_args!("{path}.a"), a, "mm")?;
                 Prs::with_base_radius(self.l, self.b, a, gamma).map_err(|e| CaseError::new(p("L"), e.to_string()))?
             }
             (Some(_), Some(_)) => {
@@ -108,12 +108,12 @@ impl WorkspaceSpec {
     /// Validates and converts to radians.
     pub fn build(&self, path: &str) -> Result<PoseBox, CaseError> {
         let p = |f: &str| format!("{path}.{f}");
-        check::range(&p("z"), self.z)?;
-        check::range(&p("psi_deg"), self.psi_deg)?;
-        check::range(&p("theta_deg"), self.theta_deg)?;
+        check::range(p("z"), self.z)?;
+        check::range(p("psi_deg"), self.psi_deg)?;
+        check::range(p("theta_deg"), self.theta_deg)?;
         for (f, r) in [("psi_deg", self.psi_deg), ("theta_deg", self.theta_deg)] {
             for (k, v) in r.iter().enumerate() {
-                check::within(&format!("{}[{k}]", p(f)), *v, -89.0, 89.0, "degrees")?;
+                check::within(format_args!("{}[{k}]", p(f)), *v, -89.0, 89.0, "degrees")?;
             }
         }
         if !(2..=201).contains(&self.steps) {
@@ -167,13 +167,13 @@ impl KinematicsCase {
     pub fn validate(&self) -> Result<(Prs, Option<PoseBox>), CaseError> {
         let prs = self.mechanism.build("mechanism")?;
         for (i, q) in self.ikp.iter().enumerate() {
-            check::finite(&format!("ikp[{i}].z"), q.z)?;
-            check::within(&format!("ikp[{i}].psi_deg"), q.psi_deg, -89.0, 89.0, "degrees")?;
-            check::within(&format!("ikp[{i}].theta_deg"), q.theta_deg, -89.0, 89.0, "degrees")?;
+            check::finite(format_args!("ikp[{i}].z"), q.z)?;
+            check::within(format_args!("ikp[{i}].psi_deg"), q.psi_deg, -89.0, 89.0, "degrees")?;
+            check::within(format_args!("ikp[{i}].theta_deg"), q.theta_deg, -89.0, 89.0, "degrees")?;
         }
         for (i, q) in self.fkp.iter().enumerate() {
             for (k, v) in q.s.iter().enumerate() {
-                check::finite(&format!("fkp[{i}].s[{k}]"), *v)?;
+                check::finite(format_args!("fkp[{i}].s[{k}]"), *v)?;
                 if v.abs() > prs.l {
                     return Err(CaseError::value(
                         format!("fkp[{i}].s[{k}]"),

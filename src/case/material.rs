@@ -84,7 +84,7 @@ impl MaterialSpec {
             })?,
             MaterialSpec::Custom(m) => *m,
         };
-        check::positive(&format!("{path}.E"), m.e, "MPa")?;
+        check::positive(format_args!("{path}.E"), m.e, "MPa")?;
         if !(m.nu > -1.0 && m.nu < 0.5) {
             return Err(CaseError::value(
                 format!("{path}.nu"),
@@ -92,7 +92,7 @@ impl MaterialSpec {
                 "Poisson's ratio must lie in (−1, 0.5)",
             ));
         }
-        check::non_negative(&format!("{path}.density"), m.density, "t/mm³")?;
+        check::non_negative(format_args!("{path}.density"), m.density, "t/mm³")?;
         if m.yield_strength.is_nan() || m.yield_strength <= 0.0 {
             return Err(CaseError::value(
                 format!("{path}.yield"),

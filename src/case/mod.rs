@@ -14,6 +14,7 @@ pub mod kinematics;
 pub mod limits;
 pub mod material;
 pub mod mesh;
+pub mod numbers;
 pub mod pantilt;
 pub mod prs_stiffness;
 pub mod stage;

@@ -235,8 +235,14 @@ pub struct ValidPanTilt {
 }
 
 fn pose(path: &str, gamma_deg: f64, phi_deg: f64) -> Result<Pointing, CaseError> {
-    check::within(&format!("{path}.gamma_deg"), gamma_deg, 0.0, MAX_GAMMA_DEG, "degrees")?;
-    check::finite(&format!("{path}.phi_deg"), phi_deg)?;
+    check::within(
+        format_args!("{path}.gamma_deg"),
+        gamma_deg,
+        0.0,
+        MAX_GAMMA_DEG,
+        "degrees",
+    )?;
+    check::finite(format_args!("{path}.phi_deg"), phi_deg)?;
     Ok(Pointing::from_deg(gamma_deg, phi_deg))
 }
 
@@ -250,7 +256,7 @@ impl MechanismSpec {
             }
         }
         for (i, a) in self.azimuths_deg.iter().enumerate() {
-            check::finite(&format!("{path}.azimuths_deg[{i}]"), *a)?;
+            check::finite(format_args!("{path}.azimuths_deg[{i}]"), *a)?;
         }
         if !(1..=3).contains(&self.rr_limb) {
             return Err(CaseError::value(p("rr_limb"), self.rr_limb, "must be 1, 2 or 3"));
@@ -286,10 +292,10 @@ impl JointsSpec {
     fn build(&self, path: &str) -> Result<JointSprings, CaseError> {
         for (name, spec, unit) in [("K", &self.k, "N·mm/degree"), ("D", &self.d, "N·mm·s/degree")] {
             match spec {
-                PerJoint::All(v) => check::non_negative(&format!("{path}.{name}"), *v, unit)?,
+                PerJoint::All(v) => check::non_negative(format_args!("{path}.{name}"), *v, unit)?,
                 PerJoint::Each(vs) => {
                     for (i, v) in vs.iter().enumerate() {
-                        check::non_negative(&format!("{path}.{name}[{i}]"), *v, unit)?;
+                        check::non_negative(format_args!("{path}.{name}[{i}]"), *v, unit)?;
                     }
                 }
             }
@@ -315,7 +321,7 @@ impl PathSpec {
             } => {
                 let start = pose(path, *gamma_deg, *phi0_deg)
                     .map_err(|e| CaseError::new(e.path.replace(".phi_deg", ".phi0_deg"), e.message))?;
-                check::positive(&format!("{path}.period"), *period, "s")?;
+                check::positive(format_args!("{path}.period"), *period, "s")?;
                 if !(2..=100_000).contains(points) {
                     return Err(CaseError::value(
                         format!("{path}.points"),
@@ -342,7 +348,7 @@ impl PathSpec {
                 let mut poses = Vec::with_capacity(samples.len());
                 for (i, s) in samples.iter().enumerate() {
                     let at = format!("{path}.samples[{i}]");
-                    check::finite(&format!("{at}.t"), s.t)?;
+                    check::finite(format_args!("{at}.t"), s.t)?;
                     if i > 0 && s.t <= samples[i - 1].t {
                         return Err(CaseError::value(
                             format!("{at}.t"),
@@ -413,7 +419,7 @@ impl PanTiltCase {
         let mut fk = Vec::with_capacity(self.fk.len());
         for (i, q) in self.fk.iter().enumerate() {
             for (k, v) in q.theta_deg.iter().enumerate() {
-                check::within(&format!("fk[{i}].theta_deg[{k}]"), *v, -90.0, 90.0, "degrees")?;
+                check::within(format_args!("fk[{i}].theta_deg[{k}]"), *v, -90.0, 90.0, "degrees")?;
             }
             let start = match &q.start {
                 Some(s) => Some(pose(&format!("fk[{i}].start"), s.gamma_deg, s.phi_deg)?),

@@ -243,7 +243,7 @@ pub struct Validated {
 
 fn positive_list(path: &str, v: &[f64]) -> Result<(), CaseError> {
     for (j, k) in v.iter().enumerate() {
-        check::positive(&format!("{path}[{j}]"), *k, "N/mm")?;
+        check::positive(format_args!("{path}[{j}]"), *k, "N/mm")?;
     }
     Ok(())
 }
@@ -334,17 +334,23 @@ impl PrsStiffnessCase {
         };
         check::positive("eigen_length", self.eigen_length, "mm")?;
         for (j, t) in self.tool.iter().enumerate() {
-            check::finite(&format!("tool[{j}]"), *t)?;
+            check::finite(format_args!("tool[{j}]"), *t)?;
         }
         for (i, p) in self.poses.iter().enumerate() {
-            check::finite(&format!("poses[{i}].pz"), p.pz)?;
-            check::within(&format!("poses[{i}].psi_deg"), p.psi_deg, -90.0, 90.0, "degrees")?;
-            check::within(&format!("poses[{i}].theta_deg"), p.theta_deg, -90.0, 90.0, "degrees")?;
+            check::finite(format_args!("poses[{i}].pz"), p.pz)?;
+            check::within(format_args!("poses[{i}].psi_deg"), p.psi_deg, -90.0, 90.0, "degrees")?;
+            check::within(
+                format_args!("poses[{i}].theta_deg"),
+                p.theta_deg,
+                -90.0,
+                90.0,
+                "degrees",
+            )?;
         }
         if let Some(l) = &self.load {
             for j in 0..3 {
-                check::finite(&format!("load.force[{j}]"), l.force[j])?;
-                check::finite(&format!("load.moment[{j}]"), l.moment[j])?;
+                check::finite(format_args!("load.force[{j}]"), l.force[j])?;
+                check::finite(format_args!("load.moment[{j}]"), l.moment[j])?;
             }
         }
         if self.poses.is_empty() && self.map.is_none() {
@@ -358,7 +364,7 @@ impl PrsStiffnessCase {
             check::range("map.theta_deg", mp.theta_deg)?;
             for (name, r) in [("map.psi_deg", mp.psi_deg), ("map.theta_deg", mp.theta_deg)] {
                 for (j, v) in r.iter().enumerate() {
-                    check::within(&format!("{name}[{j}]"), *v, -90.0, 90.0, "degrees")?;
+                    check::within(format_args!("{name}[{j}]"), *v, -90.0, 90.0, "degrees")?;
                 }
             }
             if !(2..=401).contains(&mp.n) {

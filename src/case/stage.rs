@@ -4,6 +4,7 @@ use super::error::{check, CaseError};
 use super::fields::case_struct;
 use super::kinematics::MechanismSpec;
 use super::material::MaterialSpec;
+use crate::fem::inline_vec::InlineVec;
 use crate::hinge::{Contour, HingeError, HingeSpec};
 use crate::stage::{Drive, StageDesign, StageError, ValidStage};
 use serde::Deserialize;
@@ -72,7 +73,7 @@ pub struct StageLoadSpec {
     /// Name shown in results and used for the load case's output file (`stage_NAME.vtu`);
     /// unique within the case, also after characters other than letters, digits, `-` and `_`
     /// are replaced by `_` for the file name.
-    pub name: String,
+    pub name: std::sync::Arc<str>,
     /// Actuator forces along the slider directions, N.
     #[serde(default)]
     pub actuator_forces: Option<[f64; 3]>,
@@ -248,6 +249,14 @@ impl StageCase {
 
     /// Validates everything before solving, keeping the validated design for the builder.
     pub fn validated(&self) -> Result<(ValidStage, Vec<(String, Drive)>), CaseError> {
+        let (d, drives) = self.validated_drives()?;
+        let named = self.load_cases.iter().zip(drives.iter());
+        Ok((d, named.map(|(lc, drive)| (lc.name.to_string(), *drive)).collect()))
+    }
+
+    /// [`Self::validated`] with the drives of the load cases in order, names left in the case
+    /// (no allocation for up to four load cases: a sweep validates every design).
+    pub fn validated_drives(&self) -> Result<(ValidStage, InlineVec<Drive, 4>), CaseError> {
         let d = self.stage.valid_design(&self.material)?;
         check_steps("steps", self.steps, self.nonlinear)?;
         if let Some(n) = self.modes {
@@ -264,43 +273,47 @@ impl StageCase {
         if self.load_cases.is_empty() {
             return Err(CaseError::new("load_cases", "at least one load case is needed"));
         }
-        super::mesh::unique_load_case_names(self.load_cases.iter().map(|c| c.name.as_str()))?;
-        let mut drives = Vec::with_capacity(self.load_cases.len());
+        super::mesh::unique_load_case_names(self.load_cases.iter().map(|c| &*c.name))?;
+        let mut drives = InlineVec::new();
         for (i, lc) in self.load_cases.iter().enumerate() {
-            let p = format!("load_cases[{i}]");
             let drive = match (lc.actuator_forces, lc.actuator_strokes) {
                 (Some(f), None) => {
                     for (k, v) in f.iter().enumerate() {
-                        check::finite(&format!("{p}.actuator_forces[{k}]"), *v)?;
+                        check::finite(format_args!("load_cases[{i}].actuator_forces[{k}]"), *v)?;
                     }
                     Drive::Forces(f)
                 }
                 (None, Some(s)) => {
                     for (k, v) in s.iter().enumerate() {
                         let why = "a linear stage analysis takes strokes well below the leg length";
-                        check_stroke(format!("{p}.actuator_strokes[{k}]"), *v, d.prs.l, why)?;
+                        check_stroke(format_args!("load_cases[{i}].actuator_strokes[{k}]"), *v, d.prs.l, why)?;
                     }
                     Drive::Strokes(s)
                 }
                 (Some(_), Some(_)) => {
                     return Err(CaseError::new(
-                        p,
+                        format!("load_cases[{i}]"),
                         "give either `actuator_forces` or `actuator_strokes`, not both",
                     ))
                 }
-                (None, None) => return Err(CaseError::new(p, "missing `actuator_forces` or `actuator_strokes`")),
+                (None, None) => {
+                    return Err(CaseError::new(
+                        format!("load_cases[{i}]"),
+                        "missing `actuator_forces` or `actuator_strokes`",
+                    ))
+                }
             };
-            drives.push((lc.name.clone(), drive));
+            drives.push(drive);
         }
         Ok((d, drives))
     }
 }
 
 /// A stroke at `path` (mm): finite and at most half the leg length `l` (else refused with `why`).
-fn check_stroke(path: String, v: f64, l: f64, why: &str) -> Result<(), CaseError> {
-    check::finite(&path, v)?;
+fn check_stroke(path: std::fmt::Arguments, v: f64, l: f64, why: &str) -> Result<(), CaseError> {
+    check::finite(path, v)?;
     if v.abs() > 0.5 * l {
-        return Err(CaseError::value(path, v, why));
+        return Err(CaseError::value(path.to_string(), v, why));
     }
     Ok(())
 }
@@ -333,7 +346,7 @@ impl FemVsFkpCase {
         for (i, s) in self.strokes.iter().enumerate() {
             for (k, v) in s.iter().enumerate() {
                 check_stroke(
-                    format!("strokes[{i}][{k}]"),
+                    format_args!("strokes[{i}][{k}]"),
                     *v,
                     d.prs.l,
                     "strokes must be well below the leg length",

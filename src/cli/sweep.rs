@@ -16,7 +16,7 @@ use super::sweep_finish::{finish, Output, Written};
 use super::targets::{check_replaceable, io_context, Kind, Stop, Targets};
 use crate::case::sweep::Sweep;
 use crate::case::CaseError;
-use crate::design::sweep::{load, run_sweep_formatted, LineFormat, Row, Shard};
+use crate::design::sweep::{load, run_sweep_formatted, Line, LineFormat, Shard};
 use crate::design::table;
 use crate::output::write_atomic;
 use serde_json::Value;
@@ -87,6 +87,11 @@ fn open_partial(path: &Path) -> io::Result<File> {
         }
     }
     Ok(f)
+}
+
+thread_local! {
+    /// Each sweep thread's copy of the line it is writing, with its newline.
+    static LINE: std::cell::RefCell<Vec<u8>> = const { std::cell::RefCell::new(Vec::new()) };
 }
 
 /// Where finished lines go during the run.
@@ -239,48 +244,50 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
     };
     let state = Mutex::new(SinkState {
         kept: keep_for_csv.then(Vec::new),
-        written: fresh.then(Vec::new),
+        written: fresh.then(Written::default),
     });
     // With --out: the notes sidecar (a new reference is added in place, under its own lock).
     let notes = notes.map(Mutex::new);
     let pb = progress_bar(to_run);
     let stdout_tty = args.out.is_none() && io::stdout().is_terminal();
-    let tally = run_sweep_formatted(sweep, base_dir, shard, &skip, &format, |row: Row| {
+    let tally = run_sweep_formatted(sweep, base_dir, shard, &skip, &format, keep_for_csv, |row: Line| {
         // The notes entry goes in before the first line that refers to it.
-        if let (Some(file), Some((r, n))) = (&notes, &row.notes) {
-            file.lock()
-                .unwrap_or_else(|p| p.into_inner())
-                .add(r, n, row.notes_json.as_deref())?;
+        if let (Some(file), Some((r, json))) = (&notes, row.notes) {
+            file.lock().unwrap_or_else(|p| p.into_inner()).add(r, json)?;
         }
         // One write per line, without a lock of ours: the partial file is opened for appending
-        // (each write lands whole at the end), stdout has its own lock.
-        let mut line = row.line;
-        line.push('\n');
-        match &stream {
-            Stream::File(f) => (&mut &*f)
-                .write_all(line.as_bytes())
-                .map_err(|e| io_context("append to", partial.unwrap_or(Path::new("")))(e))?,
-            Stream::Stdout(s) => {
-                let write = || -> io::Result<()> {
-                    let mut lock = s.lock();
-                    lock.write_all(line.as_bytes())?;
-                    lock.flush()
-                };
-                let write = || write().map_err(|e| io::Error::new(e.kind(), format!("cannot write to stdout: {e}")));
-                if stdout_tty {
-                    pb.suspend(write)?
-                } else {
-                    write()?
+        // (each write lands whole at the end), stdout has its own lock. The line and its newline
+        // are copied into this thread's buffer, kept from line to line.
+        LINE.with_borrow_mut(|buf| -> io::Result<()> {
+            buf.clear();
+            buf.extend_from_slice(row.text.as_bytes());
+            buf.push(b'\n');
+            match &stream {
+                Stream::File(f) => (&mut &*f)
+                    .write_all(buf)
+                    .map_err(|e| io_context("append to", partial.unwrap_or(Path::new("")))(e)),
+                Stream::Stdout(s) => {
+                    let write = || -> io::Result<()> {
+                        let mut lock = s.lock();
+                        lock.write_all(buf)?;
+                        lock.flush()
+                    };
+                    let write =
+                        || write().map_err(|e| io::Error::new(e.kind(), format!("cannot write to stdout: {e}")));
+                    if stdout_tty {
+                        pb.suspend(write)
+                    } else {
+                        write()
+                    }
                 }
             }
-        }
-        line.pop();
+        })?;
         let mut st = state.lock().unwrap_or_else(|p| p.into_inner());
         if let Some(k) = &mut st.kept {
-            k.push((row.index, row.value));
+            k.push((row.index, row.value.cloned().unwrap_or(Value::Null)));
         }
         if let Some(w) = &mut st.written {
-            w.push((row.index, row.failed, line));
+            w.push(row.index, row.failed, row.text);
         }
         drop(st);
         pb.inc(1);

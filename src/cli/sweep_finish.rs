@@ -15,10 +15,24 @@ use std::fs;
 use std::io;
 use std::path::{Path, PathBuf};
 
-/// The lines this run wrote, as (index, error row?, line), kept in memory when the output held
-/// nothing before the run: the output is then exactly these lines, and reading the partial file
-/// back (parsing every line again) is skipped.
-pub(super) type Written = Vec<(usize, bool, String)>;
+/// The lines this run wrote, kept in memory when the output held nothing before the run: the
+/// output is then exactly these lines, and reading the partial file back (parsing every line
+/// again) is skipped. One text holds them all (no allocation per line).
+#[derive(Debug, Default)]
+pub(super) struct Written {
+    text: String,
+    /// (index, error row?, start and end of the line in `text`).
+    rows: Vec<(usize, bool, usize, usize)>,
+}
+
+impl Written {
+    /// Keeps line `text` of design `index`.
+    pub(super) fn push(&mut self, index: usize, failed: bool, text: &str) {
+        let start = self.text.len();
+        self.text.push_str(text);
+        self.rows.push((index, failed, start, self.text.len()));
+    }
+}
 
 /// Where the output goes and what was there before the run.
 pub(super) struct Output<'a> {
@@ -42,13 +56,13 @@ pub(super) fn finish(
 ) -> Result<(usize, Option<String>), Stop> {
     let in_shard = shard.count(sweep.len());
     let all = match o.written {
-        Some(rows) => {
+        Some(written) => {
             let mut all = Finished::default();
-            for (i, failed, line) in rows {
+            for &(i, failed, start, end) in &written.rows {
                 if failed {
                     all.failed.insert(i);
                 }
-                all.lines.insert(i, line);
+                all.lines.insert(i, written.text[start..end].to_string());
             }
             all
         }

@@ -130,22 +130,19 @@ impl NotesFile {
         Ok(())
     }
 
-    /// Adds the notes of reference `r` unless the file has them already (`json`: the notes as
-    /// compact JSON, when the caller has it).
-    pub(super) fn add(&mut self, r: &str, notes: &Value, json: Option<&str>) -> io::Result<()> {
+    /// Adds the notes of reference `r`, given as compact JSON, unless the file has them already
+    /// (then nothing is allocated).
+    pub(super) fn add(&mut self, r: &str, json: &str) -> io::Result<()> {
         if self.known.contains(r) {
             return Ok(());
         }
         let Some((file, end)) = self.open.as_mut() else {
             let mut m = Map::new();
-            m.insert(r.to_string(), notes.clone());
+            m.insert(r.to_string(), serde_json::from_str(json).map_err(io::Error::other)?);
             return self.rewrite(&m);
         };
         let mut text = b",\n".to_vec();
-        match json {
-            Some(json) => text.extend_from_slice(&entry(r, json.as_bytes())?),
-            None => text.extend_from_slice(&entry(r, &json_of(notes)?)?),
-        }
+        text.extend_from_slice(&entry(r, json.as_bytes())?);
         text.extend_from_slice(b"\n}\n");
         write_at(file, &text, *end).map_err(io_context("write", &self.path))?;
         *end += text.len() as u64 - 3;

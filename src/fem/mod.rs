@@ -25,6 +25,7 @@ pub mod elements;
 pub mod error;
 pub mod frf;
 pub mod history;
+pub mod inline_vec;
 pub mod lanczos;
 pub mod lattice;
 pub mod loads;

@@ -197,7 +197,8 @@ pub struct Calibration {
     pub short_notch_g: f64,
     /// Plane-strain factor P of the compliant-axis bending modulus E·P/G (dimensionless).
     pub plane_strain_p: f64,
-    /// Load spreading into the blank (`null`: none needed).
+    /// Load spreading into the blank (absent: none needed).
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub load_spreading: Option<LoadSpreading>,
 }
 

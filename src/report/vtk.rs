@@ -232,21 +232,24 @@ pub fn write(w: &mut impl Write, mesh: &VtuMesh) -> Result<(), VtkError> {
 
 /// A file name made of the safe characters of `name` (others become `_`; empty → `case`).
 pub fn file_stem(name: &str) -> String {
-    let s: String = name
-        .chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
-                c
-            } else {
-                '_'
-            }
-        })
-        .collect();
-    if s.is_empty() {
-        "case".into()
-    } else {
-        s
-    }
+    stem_chars(name).collect()
+}
+
+/// The characters of [`file_stem`], without building it.
+fn stem_chars(name: &str) -> impl Iterator<Item = char> + '_ {
+    let name = if name.is_empty() { "case" } else { name };
+    name.chars().map(|c| {
+        if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
+            c
+        } else {
+            '_'
+        }
+    })
+}
+
+/// Whether two names give the same [`file_stem`] (compared without allocating).
+pub fn same_file_stem(a: &str, b: &str) -> bool {
+    stem_chars(a).eq(stem_chars(b))
 }
 
 #[cfg(test)]

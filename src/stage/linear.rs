@@ -24,7 +24,7 @@ use nalgebra::{Matrix6, SMatrix, SVector, Vector6};
 
 /// What one linear load case gives: the numbers of a [`StageCaseResult`] (same names, units
 /// and meaning), without its name, FE result and stability.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct StageResponse {
     /// Strokes, mm, and actuator forces, N, along each eᵢ.
     pub strokes: [f64; 3],

@@ -215,6 +215,13 @@ pub enum Drive {
     Strokes([f64; 3]),
 }
 
+/// No load: zero actuator forces (a placeholder of inline storage).
+impl Default for Drive {
+    fn default() -> Self {
+        Drive::Forces([0.0; 3])
+    }
+}
+
 /// Platform pose change from home: the kinematics' [`Pose`](crate::kinematics::Pose) (x, y, z in
 /// mm; ψ, θ, φ in rad — in linear analyses the small-rotation vector components, in nonlinear
 /// ones the angles of R = Ry(θ)·Rx(ψ)·Rz(φ)).

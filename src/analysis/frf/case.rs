@@ -244,7 +244,7 @@ impl FrfCase {
             check_node_frame(&p, s.node, s.frame, n)?;
             for (k, v) in s.force.iter().chain(&s.moment).enumerate() {
                 let field = if k < 3 { "force" } else { "moment" };
-                check::finite(&format!("{p}.{field}[{}]", k % 3), *v)?;
+                check::finite(format_args!("{p}.{field}[{}]", k % 3), *v)?;
             }
             if s.force.iter().chain(&s.moment).all(|v| *v == 0.0) {
                 return Err(CaseError::new(format!("{p}.force"), "the input loads nothing: give a nonzero `force` or `moment`"));

@@ -76,7 +76,7 @@ impl MeshSpec {
         };
         for (i, x) in self.nodes.iter().enumerate() {
             for (k, v) in x.iter().enumerate() {
-                check::finite(&format!("nodes[{i}][{k}]"), *v)?;
+                check::finite(format_args!("nodes[{i}][{k}]"), *v)?;
             }
             cx.model.add_node(*x);
         }
@@ -213,7 +213,7 @@ fn element(cx: &mut Ctx, p: &str, e: &ElementSpec) -> Result<(), CaseError> {
                 ));
             }
             for (i, kv) in k.iter().enumerate() {
-                check::non_negative(&format!("{p}.k[{i}]"), *kv, "N/mm or N·mm/rad")?;
+                check::non_negative(format_args!("{p}.k[{i}]"), *kv, "N/mm or N·mm/rad")?;
             }
             let a = cx.node(format!("{p}.nodes[0]"), nodes[0])?;
             let b = match nodes.get(1) {
@@ -229,9 +229,9 @@ fn element(cx: &mut Ctx, p: &str, e: &ElementSpec) -> Result<(), CaseError> {
         }
         ElementSpec::Mass { node, mass, inertia } => {
             let node = cx.node(format!("{p}.node"), *node)?;
-            check::non_negative(&format!("{p}.mass"), *mass, "tonne")?;
+            check::non_negative(format_args!("{p}.mass"), *mass, "tonne")?;
             for (i, v) in inertia.iter().enumerate() {
-                check::non_negative(&format!("{p}.inertia[{i}]"), *v, "tonne·mm²")?;
+                check::non_negative(format_args!("{p}.inertia[{i}]"), *v, "tonne·mm²")?;
             }
             cx.model.masses.push(fem::PointMass {
                 node,
@@ -317,25 +317,30 @@ fn shell4(cx: &mut Ctx, p: &str, nodes: [usize; 4], section: &str, material: &st
 
 /// Refuses two load cases with the same name, or with names that give the same output file
 /// name (each load case writes `NAME.vtu`): the error names `load_cases[i].name` of the later.
-pub fn unique_load_case_names<'a>(names: impl Iterator<Item = &'a str>) -> Result<(), CaseError> {
-    let mut seen: BTreeMap<String, (usize, &str)> = BTreeMap::new();
-    for (i, name) in names.enumerate() {
-        let stem = crate::report::vtk::file_stem(name);
-        if let Some((j, first)) = seen.get(&stem) {
-            let why = if *first == name {
-                format!("load_cases[{j}] has the same name; load case names must be unique")
-            } else {
-                format!(
-                    "load_cases[{j}] (\"{first}\") gives the same output file name `{stem}.vtu`; load case names must differ in letters, digits, `-` or `_`"
-                )
-            };
-            return Err(CaseError::value(
-                format!("load_cases[{i}].name"),
-                format!("\"{name}\""),
-                why,
-            ));
-        }
-        seen.insert(stem, (i, name));
+pub fn unique_load_case_names<'a>(names: impl Iterator<Item = &'a str> + Clone) -> Result<(), CaseError> {
+    // Pairwise (a case has few load cases): no allocation unless two names clash.
+    for (i, name) in names.clone().enumerate() {
+        let Some((j, first)) = names
+            .clone()
+            .take(i)
+            .enumerate()
+            .find(|(_, b)| crate::report::vtk::same_file_stem(name, b))
+        else {
+            continue;
+        };
+        let why = if first == name {
+            format!("load_cases[{j}] has the same name; load case names must be unique")
+        } else {
+            let stem = crate::report::vtk::file_stem(name);
+            format!(
+                "load_cases[{j}] (\"{first}\") gives the same output file name `{stem}.vtu`; load case names must differ in letters, digits, `-` or `_`"
+            )
+        };
+        return Err(CaseError::value(
+            format!("load_cases[{i}].name"),
+            format!("\"{name}\""),
+            why,
+        ));
     }
     Ok(())
 }
@@ -344,17 +349,17 @@ fn section(s: &SectionSpec, p: &str) -> Result<BuiltSection, CaseError> {
     let f = |k: &str| format!("{p}.{k}");
     Ok(BuiltSection::Beam(match *s {
         SectionSpec::Rect { w, h } => {
-            check::positive(&f("w"), w, "mm")?;
-            check::positive(&f("h"), h, "mm")?;
+            check::positive(f("w"), w, "mm")?;
+            check::positive(f("h"), h, "mm")?;
             fem::Section::Rect { w, h }
         }
         SectionSpec::Circle { d } => {
-            check::positive(&f("d"), d, "mm")?;
+            check::positive(f("d"), d, "mm")?;
             fem::Section::Circle { d }
         }
         SectionSpec::Tube { d, t } => {
-            check::positive(&f("d"), d, "mm")?;
-            check::positive(&f("t"), t, "mm")?;
+            check::positive(f("d"), d, "mm")?;
+            check::positive(f("t"), t, "mm")?;
             if 2.0 * t >= d {
                 return Err(CaseError::value(
                     f("t"),
@@ -368,20 +373,20 @@ fn section(s: &SectionSpec, p: &str) -> Result<BuiltSection, CaseError> {
             }
         }
         SectionSpec::General { a, iy, iz, j, asy, asz } => {
-            check::positive(&f("A"), a, "mm²")?;
-            check::positive(&f("Iy"), iy, "mm⁴")?;
-            check::positive(&f("Iz"), iz, "mm⁴")?;
-            check::positive(&f("J"), j, "mm⁴")?;
+            check::positive(f("A"), a, "mm²")?;
+            check::positive(f("Iy"), iy, "mm⁴")?;
+            check::positive(f("Iz"), iz, "mm⁴")?;
+            check::positive(f("J"), j, "mm⁴")?;
             if let Some(v) = asy {
-                check::positive(&f("Asy"), v, "mm²")?;
+                check::positive(f("Asy"), v, "mm²")?;
             }
             if let Some(v) = asz {
-                check::positive(&f("Asz"), v, "mm²")?;
+                check::positive(f("Asz"), v, "mm²")?;
             }
             fem::Section::General { a, iy, iz, j, asy, asz }
         }
         SectionSpec::Shell { t } => {
-            check::positive(&f("t"), t, "mm")?;
+            check::positive(f("t"), t, "mm")?;
             return Ok(BuiltSection::Shell(t));
         }
     }))

@@ -10,7 +10,7 @@ use crate::fem::{self, loads};
 pub(super) fn body_loads(cx: &Ctx, p: &str, c: &LoadCaseSpec, lc: &mut fem::LoadCase) -> Result<(), CaseError> {
     if let Some(g) = c.gravity {
         for (k, v) in g.iter().enumerate() {
-            check::finite(&format!("{p}.gravity[{k}]"), *v)?;
+            check::finite(format_args!("{p}.gravity[{k}]"), *v)?;
         }
         let at = format!("{p}.gravity");
         let f = loads::gravity_loads(&cx.model, g).map_err(|e| CaseError::new(at.clone(), e.to_string()))?;
@@ -26,7 +26,7 @@ pub(super) fn body_loads(cx: &Ctx, p: &str, c: &LoadCaseSpec, lc: &mut fem::Load
     for (i, ll) in c.line_loads.iter().enumerate() {
         let pl = format!("{p}.line_loads[{i}]");
         for (k, v) in ll.q.iter().enumerate() {
-            check::finite(&format!("{pl}.q[{k}]"), *v)?;
+            check::finite(format_args!("{pl}.q[{k}]"), *v)?;
         }
         let at = format!("{pl}.element");
         let n = cx.spec.elements.len();
@@ -59,7 +59,7 @@ pub(super) fn body_loads(cx: &Ctx, p: &str, c: &LoadCaseSpec, lc: &mut fem::Load
     for (i, gf) in c.group_forces.iter().enumerate() {
         let pg = format!("{p}.group_forces[{i}]");
         for (k, v) in gf.f.iter().enumerate() {
-            check::finite(&format!("{pg}.F[{k}]"), *v)?;
+            check::finite(format_args!("{pg}.F[{k}]"), *v)?;
         }
         let cells: Vec<Vec<usize>> = match (&gf.group, gf.nodes.is_empty()) {
             (Some(_), false) | (None, true) => {

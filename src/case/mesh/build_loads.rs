@@ -13,7 +13,7 @@ pub(super) fn load_case(cx: &mut Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::
     for (i, f) in c.forces.iter().enumerate() {
         let node = cx.node(format!("{p}.forces[{i}].node"), f.node)?;
         for (k, v) in f.f.iter().enumerate() {
-            check::finite(&format!("{p}.forces[{i}].F[{k}]"), *v)?;
+            check::finite(format_args!("{p}.forces[{i}].F[{k}]"), *v)?;
         }
         let fp = format!("{p}.forces[{i}]");
         let f = match frames::local(&fp, f.frame, f.axis)? {
@@ -24,7 +24,7 @@ pub(super) fn load_case(cx: &mut Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::
     }
     for (i, d) in c.displacements.iter().enumerate() {
         let node = cx.node(format!("{p}.displacements[{i}].node"), d.node)?;
-        check::finite(&format!("{p}.displacements[{i}].value"), d.value)?;
+        check::finite(format_args!("{p}.displacements[{i}].value"), d.value)?;
         let dp = format!("{p}.displacements[{i}]");
         match frames::local(&dp, d.frame, d.axis)? {
             Some(l) => {
@@ -70,7 +70,7 @@ pub(super) fn load_case(cx: &mut Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::
     }
     for (i, pr) in c.pressures.iter().enumerate() {
         let pp = format!("{p}.pressures[{i}]");
-        check::finite(&format!("{pp}.p"), pr.p)?;
+        check::finite(format_args!("{pp}.p"), pr.p)?;
         let mut list: Vec<(String, usize)> = Vec::new();
         for (k, &e) in pr.elements.iter().enumerate() {
             let at = format!("{pp}.elements[{k}]");
@@ -149,7 +149,7 @@ pub(super) fn load_case(cx: &mut Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::
             } else {
                 format!("m[{}]", k - 3)
             };
-            check::finite(&format!("{pe}.{name}"), *v)?;
+            check::finite(format_args!("{pe}.{name}"), *v)?;
         }
         let is_edge = cx.model.elements.iter().any(|e| match e {
             fem::Element::Shell4(sh) => (0..4).any(|k| {

@@ -99,7 +99,7 @@ pub fn check_node_frame(p: &str, node: usize, frame: Option<[[f64; 3]; 3]>, n_no
     }
     if let Some(f) = frame {
         for (k, v) in f.iter().flatten().enumerate() {
-            crate::case::error::check::finite(&format!("{p}.frame[{}][{}]", k / 3, k % 3), *v)?;
+            crate::case::error::check::finite(format_args!("{p}.frame[{}][{}]", k / 3, k % 3), *v)?;
         }
     }
     frames::local(p, frame, None)?;

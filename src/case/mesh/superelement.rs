@@ -171,9 +171,9 @@ fn rotation(p: &str, placement: Option<&PlacementSpec>) -> Result<(Matrix3<f64>,
     };
     let at = format!("{p}.placement");
     for (k, v) in pl.translation.iter().enumerate() {
-        crate::case::error::check::finite(&format!("{at}.translation[{k}]"), *v)?;
+        crate::case::error::check::finite(format_args!("{at}.translation[{k}]"), *v)?;
     }
-    crate::case::error::check::finite(&format!("{at}.angle"), pl.angle)?;
+    crate::case::error::check::finite(format_args!("{at}.angle"), pl.angle)?;
     let axis = match pl.axis {
         Some(a) if norm(a) > 0.0 => unit_direction(format!("{at}.axis"), a)?,
         Some(a) => {

@@ -106,13 +106,17 @@ impl LineFormat {
     /// notes, their compact JSON).
     pub(super) fn apply(&self, result: &mut Value) -> Option<(String, Value, String)> {
         let notes = match (self.notes_by_ref, result.as_object_mut()) {
-            (true, Some(m)) => m.remove("model").map(|notes| {
-                // Serialised once: hashed for the reference and written to the sidecar.
-                let json = serde_json::to_string(&notes).unwrap_or_else(|_| notes.to_string());
-                let r = Self::notes_ref_of(&notes, &json);
-                m.insert("model_notes".into(), Value::String(r.clone()));
-                (r, notes, json)
-            }),
+            (true, Some(m)) => {
+                // `model_notes` takes the place of `model` (the typed route writes it there).
+                let at = m.keys().position(|k| k == "model");
+                m.shift_remove("model").zip(at).map(|(notes, at)| {
+                    // Serialised once: hashed for the reference and written to the sidecar.
+                    let json = serde_json::to_string(&notes).unwrap_or_else(|_| notes.to_string());
+                    let r = Self::notes_ref_of(&notes, &json);
+                    m.shift_insert(at, "model_notes".into(), Value::String(r.clone()));
+                    (r, notes, json)
+                })
+            }
             _ => None,
         };
         if self.fields.is_none() {

@@ -1,6 +1,7 @@
 //! `design_hash`: a 128-bit FNV-1a hash of a design's canonical JSON and of the mesh file it
 //! names (see [`super`]).
 
+use crate::analysis::line::{fnv128, FNV128_OFFSET};
 use crate::case;
 use crate::case::sweep::Sweep;
 use serde_json::Value;
@@ -25,49 +26,43 @@ impl io::Write for Fnv128 {
 }
 
 impl Fnv128 {
-    const OFFSET: u128 = 0x6c62_272e_07bb_0142_62b8_2175_6295_c58d;
-    const PRIME: u128 = 0x0000_0000_0100_0000_0000_0000_0000_013b;
-
     pub(super) fn new() -> Self {
-        Fnv128(Self::OFFSET)
+        Fnv128(FNV128_OFFSET)
     }
 
     pub(super) fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.0 ^= u128::from(b);
-            self.0 = self.0.wrapping_mul(Self::PRIME);
-        }
+        self.0 = fnv128(self.0, bytes);
     }
 }
 
 /// Canonical JSON: object keys sorted, no whitespace; numbers and strings as serde_json
 /// writes them.
-pub(super) fn canonical(v: &Value, out: &mut Fnv128) {
+pub(super) fn canonical<W: io::Write>(v: &Value, out: &mut W) {
     match v {
         Value::Object(m) => {
             let mut keys: Vec<&String> = m.keys().collect();
             keys.sort_unstable();
-            out.write(b"{");
+            let _ = out.write_all(b"{");
             for (i, k) in keys.into_iter().enumerate() {
                 if i > 0 {
-                    out.write(b",");
+                    let _ = out.write_all(b",");
                 }
                 // serde_json's string form of the key (escapes as in `Value::String`).
                 let _ = serde_json::to_writer(&mut *out, k);
-                out.write(b":");
+                let _ = out.write_all(b":");
                 canonical(&m[k], out);
             }
-            out.write(b"}");
+            let _ = out.write_all(b"}");
         }
         Value::Array(a) => {
-            out.write(b"[");
+            let _ = out.write_all(b"[");
             for (i, x) in a.iter().enumerate() {
                 if i > 0 {
-                    out.write(b",");
+                    let _ = out.write_all(b",");
                 }
                 canonical(x, out);
             }
-            out.write(b"]");
+            let _ = out.write_all(b"]");
         }
         scalar => {
             let _ = serde_json::to_writer(&mut *out, scalar);

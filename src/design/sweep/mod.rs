@@ -18,6 +18,7 @@ mod check;
 mod format;
 mod hash;
 mod shard;
+mod typed;
 
 pub use check::{check, load, with_suffix};
 pub use format::{omitted_fields, LineFormat};
@@ -29,7 +30,6 @@ use crate::analysis::{self, Ctx, RunError};
 use crate::case::sweep::Sweep;
 use crate::case::CaseError;
 use crate::fem::SolverCache;
-use rayon::prelude::*;
 use serde_json::{Map, Value};
 use std::collections::HashSet;
 use std::io;
@@ -54,6 +54,40 @@ pub struct Row {
     pub notes: Option<(String, Value)>,
     /// The notes of [`Self::notes`] as compact JSON (what the sidecar holds).
     pub notes_json: Option<String>,
+}
+
+impl Row {
+    /// The row as handed to a sink.
+    pub fn as_line(&self) -> Line<'_> {
+        Line {
+            index: self.index,
+            failed: self.failed,
+            text: &self.line,
+            value: Some(&self.value),
+            notes: self
+                .notes_json
+                .as_deref()
+                .zip(self.notes.as_ref())
+                .map(|(json, (r, _))| (r.as_str(), json)),
+        }
+    }
+}
+
+/// One finished design as a sweep hands it to its sink, borrowed from the worker that wrote it.
+#[derive(Debug, Clone, Copy)]
+pub struct Line<'a> {
+    /// Design index.
+    pub index: usize,
+    /// True for an `error` row.
+    pub failed: bool,
+    /// The JSON line (no newline).
+    pub text: &'a str,
+    /// The JSON value the line was written from, on the value route (`None` on the typed
+    /// route, which builds no value: see [`run_sweep_formatted`]'s `want_values`).
+    pub value: Option<&'a Value>,
+    /// With [`LineFormat::notes_by_ref`]: the model notes taken out of the line, as
+    /// (`model_notes` reference, their compact JSON).
+    pub notes: Option<(&'a str, &'a str)>,
 }
 
 /// What [`run_sweep`] did.
@@ -224,39 +258,72 @@ pub fn run_sweep<S>(
     sink: S,
 ) -> io::Result<Tally>
 where
-    S: Fn(Row) -> io::Result<()> + Sync,
+    S: Fn(Line) -> io::Result<()> + Sync,
 {
-    run_sweep_formatted(sweep, base_dir, shard, skip, &LineFormat::default(), sink)
+    run_sweep_formatted(sweep, base_dir, shard, skip, &LineFormat::default(), false, sink)
 }
 
 /// [`run_sweep`] writing the lines in `format`.
+///
+/// Designs take the typed route (no JSON value, no allocation per design: see [`typed`]) where
+/// it gives the very lines of the value route, unless `want_values` (a sink that needs each
+/// line's [`Line::value`]).
 pub fn run_sweep_formatted<S>(
     sweep: &Sweep,
     base_dir: Option<&Path>,
     shard: Shard,
     skip: &HashSet<usize>,
     format: &LineFormat,
+    want_values: bool,
     sink: S,
 ) -> io::Result<Tally>
 where
-    S: Fn(Row) -> io::Result<()> + Sync,
+    S: Fn(Line) -> io::Result<()> + Sync,
 {
     let run = AtomicUsize::new(0);
     let failed = AtomicUsize::new(0);
     let stop = AtomicBool::new(false);
     let first_error: Mutex<Option<io::Error>> = Mutex::new(None);
     let shapes = Shapes::new(sweep);
-    (0..shard.count(sweep.len()))
-        .into_par_iter()
-        .map(|j| shard.index(j))
-        .filter(|i| !skip.contains(i))
-        .for_each_init(SolverCache::new, |cache, i| {
-            if stop.load(Ordering::Relaxed) {
+    let typed = (!want_values)
+        .then(|| typed::Typed::new(sweep, base_dir, format, &shapes))
+        .flatten();
+    // One worker per thread (its solver cache, its parsed case and line buffers), taking the
+    // next design from a shared counter until none is left: a worker is set up once per thread,
+    // not once per piece of a split range, and designs finish roughly in index order.
+    let next = AtomicUsize::new(0);
+    let count = shard.count(sweep.len());
+    rayon::broadcast(|_| {
+        let mut cache = SolverCache::new();
+        let mut worker = typed.as_ref().map(typed::Typed::worker);
+        loop {
+            let j = next.fetch_add(1, Ordering::Relaxed);
+            if j >= count || stop.load(Ordering::Relaxed) {
                 return;
             }
-            let row = run_design_in(sweep, base_dir, i, cache, format, &shapes);
-            let row_failed = row.failed;
-            match sink(row) {
+            let i = shard.index(j);
+            if skip.contains(&i) {
+                continue;
+            }
+            let fast = match (&typed, worker.as_mut()) {
+                (Some(t), Some(w)) => {
+                    let attempt = panic::catch_unwind(AssertUnwindSafe(|| t.line(w, i, &mut cache).is_some()));
+                    if attempt.is_err() {
+                        cache = SolverCache::new();
+                    }
+                    attempt.unwrap_or(false)
+                }
+                _ => false,
+            };
+            let row;
+            let (line, row_failed) = match (fast, worker.as_ref()) {
+                (true, Some(w)) => (w.finished(i), false),
+                _ => {
+                    row = run_design_in(sweep, base_dir, i, &mut cache, format, &shapes);
+                    (row.as_line(), row.failed)
+                }
+            };
+            match sink(line) {
                 Ok(()) => {
                     run.fetch_add(1, Ordering::Relaxed);
                     if row_failed {
@@ -269,7 +336,8 @@ where
                     slot.get_or_insert(e);
                 }
             }
-        });
+        }
+    });
     if let Some(e) = first_error.into_inner().unwrap_or_else(|p| p.into_inner()) {
         return Err(e);
     }

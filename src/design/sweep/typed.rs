@@ -1,0 +1,228 @@
+//! The typed route of a sweep: each worker parses the base case once and sets every design's
+//! varied numbers in its parsed case ([`DynAnalysis::number_mut`]); the result is written
+//! straight into the worker's line buffer ([`DynAnalysis::write_result`]); the design hash is
+//! the FNV-1a state of the base case's canonical text, continued over each varied value's text.
+//! No JSON value is built and, for hinge and stage sweeps, nothing is allocated per design.
+//!
+//! The route is taken only where it gives the very lines of the value route ([`super`]): every
+//! varied path holds a number in the base case and gets numbers, the kind reaches those numbers
+//! in its parsed case, no `--fields`, no mesh file; and the parsed case with the numbers set
+//! must equal the parsed design (checked on three designs before the run). A design that fails
+//! or panics, or whose notes the route cannot reference, is run again on the value route, so
+//! error rows are the value route's too.
+
+use super::hash::canonical;
+use super::{Line, LineFormat, Shapes};
+use crate::analysis::line::{fnv128, LineSpec, ResultLine, FNV128_OFFSET};
+use crate::analysis::{self, Case, Ctx, DynAnalysis};
+use crate::case::sweep::{set_path, Sweep};
+use crate::fem::SolverCache;
+use serde_json::Value;
+use std::io::Write;
+use std::path::Path;
+
+/// A sweep ready for the typed route.
+pub(super) struct Typed<'s> {
+    kind: &'static dyn DynAnalysis,
+    /// The parsed case of design 0 (every varied number is set again for each design).
+    base: Case,
+    /// Each axis's path, split at the dots.
+    paths: Vec<Vec<&'s str>>,
+    /// Each axis's values as numbers and as the JSON text the lines and the hash hold.
+    numbers: Vec<Vec<f64>>,
+    texts: Vec<Vec<Vec<u8>>>,
+    /// Each axis's `"path":` in the line's `params`.
+    keys: Vec<Vec<u8>>,
+    /// The hash state after the canonical text before the first varied value, then (axis whose
+    /// value comes next, the canonical text after it), in the text's order.
+    hash_head: u128,
+    hash_parts: Vec<(usize, Vec<u8>)>,
+    omit: Vec<Vec<String>>,
+    notes_by_ref: bool,
+}
+
+/// A worker's reused state on the typed route.
+pub(super) struct Worker {
+    case: Case,
+    line: ResultLine,
+    /// Value index per axis of the current design.
+    picks: Vec<usize>,
+}
+
+/// The number a JSON path holds, if it holds one.
+fn number_at(root: &Value, path: &[&str]) -> Option<f64> {
+    path.iter()
+        .try_fold(root, |v, key| match v {
+            Value::Object(m) => m.get(*key),
+            Value::Array(a) => key.parse::<usize>().ok().and_then(|i| a.get(i)),
+            _ => None,
+        })?
+        .as_f64()
+}
+
+impl<'s> Typed<'s> {
+    /// The typed route of `sweep` written in `format`, when it gives the same lines as the value
+    /// route (see the module docs).
+    pub(super) fn new(sweep: &'s Sweep, base_dir: Option<&Path>, format: &LineFormat, shapes: &Shapes) -> Option<Self> {
+        if format.fields.is_some() || sweep.is_empty() || sweep.base.get("mesh").is_some() {
+            return None;
+        }
+        let kind = analysis::registry::find(sweep.base.get("analysis")?.as_str()?)?;
+        let paths: Vec<Vec<&str>> = sweep.axes.iter().map(|(p, _)| p.split('.').collect()).collect();
+        let mut numbers = Vec::with_capacity(paths.len());
+        for (path, (_, values)) in paths.iter().zip(&sweep.axes) {
+            number_at(&sweep.base, path)?;
+            numbers.push(values.iter().map(Value::as_f64).collect::<Option<Vec<f64>>>()?);
+        }
+        let parse = |i: usize| shapes.parse(sweep.design(i).ok()?, base_dir).ok();
+        let base = parse(0)?;
+        let typed = Typed {
+            kind,
+            paths,
+            texts: sweep
+                .axes
+                .iter()
+                .map(|(_, vals)| vals.iter().map(|v| serde_json::to_vec(v).ok()).collect())
+                .collect::<Option<_>>()?,
+            keys: sweep
+                .axes
+                .iter()
+                .map(|(p, _)| {
+                    let mut k = serde_json::to_vec(p).ok()?;
+                    k.push(b':');
+                    Some(k)
+                })
+                .collect::<Option<_>>()?,
+            numbers,
+            hash_head: 0,
+            hash_parts: Vec::new(),
+            omit: format
+                .omit
+                .iter()
+                .map(|p| p.split('.').map(str::to_string).collect())
+                .collect(),
+            notes_by_ref: format.notes_by_ref,
+            base,
+        };
+        let typed = typed.with_hash_template(sweep)?;
+        // The numbers set in the parsed case must give the parsed design.
+        let mut w = typed.worker();
+        for i in [0, sweep.len() / 2, sweep.len() - 1] {
+            let parsed = parse(i)?;
+            typed.set(&mut w, i)?;
+            if format!("{:?}", w.case) != format!("{parsed:?}") {
+                return None;
+            }
+        }
+        Some(typed)
+    }
+
+    /// Splits the canonical text of the base case at the varied values.
+    fn with_hash_template(mut self, sweep: &Sweep) -> Option<Self> {
+        let mark = |k: usize| format!("\u{1}flexfem-axis-{k}\u{1}");
+        let mut base = sweep.base.clone();
+        for (k, (path, _)) in sweep.axes.iter().enumerate() {
+            set_path(&mut base, path, Value::String(mark(k))).ok()?;
+        }
+        let mut text = Vec::new();
+        canonical(&base, &mut text);
+        let marks: Vec<Vec<u8>> = (0..sweep.axes.len())
+            .map(|k| serde_json::to_vec(&mark(k)).ok())
+            .collect::<Option<_>>()?;
+        let mut at: Vec<(usize, usize)> = Vec::new();
+        for (k, m) in marks.iter().enumerate() {
+            let hits: Vec<usize> = text
+                .windows(m.len())
+                .enumerate()
+                .filter(|(_, w)| w == m)
+                .map(|(i, _)| i)
+                .collect();
+            let [i] = hits[..] else { return None };
+            at.push((i, k));
+        }
+        at.sort_unstable();
+        let mut end = at.first().map_or(text.len(), |&(i, _)| i);
+        self.hash_head = fnv128(FNV128_OFFSET, &text[..end]);
+        for (n, &(i, k)) in at.iter().enumerate() {
+            let from = i + marks[k].len();
+            end = at.get(n + 1).map_or(text.len(), |&(j, _)| j);
+            self.hash_parts.push((k, text[from..end].to_vec()));
+        }
+        Some(self)
+    }
+
+    /// A worker's state.
+    pub(super) fn worker(&self) -> Worker {
+        Worker {
+            case: self.base.clone(),
+            line: ResultLine::default(),
+            picks: vec![0; self.paths.len()],
+        }
+    }
+
+    /// Sets design `index`'s numbers in the worker's case.
+    fn set(&self, w: &mut Worker, mut index: usize) -> Option<()> {
+        for (k, vals) in self.numbers.iter().enumerate().rev() {
+            w.picks[k] = index % vals.len();
+            index /= vals.len();
+        }
+        for (k, path) in self.paths.iter().enumerate() {
+            *self.kind.number_mut(&mut w.case, path)? = self.numbers[k][w.picks[k]];
+        }
+        Some(())
+    }
+
+    /// Writes design `index`'s line into the worker's buffer ([`Worker::finished`] gives it);
+    /// `None` when the design must take the value route.
+    pub(super) fn line(&self, w: &mut Worker, index: usize, cache: &mut SolverCache) -> Option<()> {
+        self.set(w, index)?;
+        let out = &mut w.line.out;
+        out.clear();
+        out.extend_from_slice(b"{\"index\":");
+        write!(out, "{index},\"params\":{{").ok()?;
+        let mut h = self.hash_head;
+        for (k, key) in self.keys.iter().enumerate() {
+            if k > 0 {
+                out.push(b',');
+            }
+            out.extend_from_slice(key);
+            out.extend_from_slice(&self.texts[k][w.picks[k]]);
+        }
+        for (k, after) in &self.hash_parts {
+            h = fnv128(h, &self.texts[*k][w.picks[*k]]);
+            h = fnv128(h, after);
+        }
+        write!(out, "}},\"design_hash\":\"{h:032x}\",\"result\":").ok()?;
+        let mut ctx = Ctx::new(cache, false);
+        ctx.with_report = false;
+        let spec = LineSpec {
+            omit: &self.omit,
+            notes_by_ref: self.notes_by_ref,
+        };
+        self.kind.write_result(&w.case, &mut ctx, &mut w.line, spec)?.ok()?;
+        if w.line.notes_hold_object {
+            return None;
+        }
+        w.line.out.push(b'}');
+        // serde_json writes UTF-8; checked here once so that `finished` cannot fail.
+        std::str::from_utf8(&w.line.out).ok()?;
+        std::str::from_utf8(&w.line.notes).ok()?;
+        Some(())
+    }
+}
+
+impl Worker {
+    /// The line [`Typed::line`] wrote for design `index`.
+    pub(super) fn finished(&self, index: usize) -> Line<'_> {
+        fn text(b: &[u8]) -> &str {
+            std::str::from_utf8(b).unwrap_or("")
+        }
+        Line {
+            index,
+            failed: false,
+            text: text(&self.line.out),
+            value: None,
+            notes: (!self.line.notes.is_empty()).then(|| (text(&self.line.notes_ref), text(&self.line.notes))),
+        }
+    }
+}
