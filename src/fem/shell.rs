@@ -39,10 +39,26 @@
 //! about the local axes, so the in-plane displacements through the thickness are
 //! u(z) = u + z·θy, v(z) = v − z·θx; curvatures κ = (∂θy/∂x, −∂θx/∂y, ∂θy/∂y − ∂θx/∂x),
 //! shear strains γxz = ∂w/∂x + θy, γyz = ∂w/∂y − θx.
+//!
+//! Files: this one holds the geometry, shape functions and the assembled element matrices;
+//! `shell/membrane.rs` the membrane and drilling parts, `shell/plate.rs` the MITC4 plate part,
+//! `shell/stress.rs` the stress recovery.
 
 use super::transform::{rigid_arm, t6};
 use crate::material::Material;
 use nalgebra::{Matrix2, Matrix3, SMatrix, SVector, Vector3};
+
+mod membrane;
+mod plate;
+mod stress;
+
+use membrane::membrane;
+pub(crate) use membrane::membrane_rows;
+pub use membrane::shell_drilling_stiffness;
+use plate::plate_k;
+pub use plate::stabilized_shear_stiffness;
+pub(crate) use plate::{curvature_b, mitc_shear_b};
+pub use stress::{shell_stress, von_mises_plane, ShellStress};
 
 /// 24×24 matrix (four nodes × six DOFs).
 pub type Mat24 = SMatrix<f64, 24, 24>;
@@ -54,14 +70,6 @@ pub(crate) const ETA: [f64; 4] = [-1.0, -1.0, 1.0, 1.0];
 pub(crate) const G2: f64 = 0.577_350_269_189_625_8;
 /// Shear correction factor of the Reissner–Mindlin plate.
 pub(crate) const KAPPA: f64 = 5.0 / 6.0;
-/// Weight of the fully integrated drilling penalty, relative to γ = G.
-const DRILL_STAB: f64 = 1e-3;
-/// Shear stabilization α of the MITC4 plate part: transverse shear stiffness
-/// κGt·t²/(t² + α h_K²) (M. Lyly, R. Stenberg, T. Vihinen, CMAME 110 (1993) 343). Chosen with
-/// numbers on clamped square and 45° skew plates with the lumped mass (see the module notes):
-/// α = 0.05 puts modes 1–6 of both within ±5 % at 8×8 and ±2.5 % at 12×12; 0.04 leaves the
-/// square's modes 5–6 above +5 %, 0.06 puts the skew plate's mode 4 below −6 %.
-const SHEAR_STAB: f64 = 0.05;
 
 /// Geometry of one element: local frame, projected node coordinates, warping offsets.
 #[derive(Debug, Clone, PartialEq)]
@@ -178,167 +186,6 @@ fn plate(i: usize, k: usize) -> usize {
     6 * i + [2, 3, 4][k]
 }
 
-/// Compatible (3×12) and incompatible-mode (3×4) membrane strain rows at (ξ, η), with det J:
-/// incompatible modes P₁ = 1−ξ², P₂ = 1−η², derivatives through J₀ scaled by det J₀/det J
-/// (Taylor's constant-Jacobian correction of Wilson's modes). Shared by the stiffness and the
-/// stress recovery.
-pub(crate) type MemRows = (SMatrix<f64, 3, 12>, SMatrix<f64, 3, 4>, f64);
-
-pub(crate) fn membrane_rows(xy: &[[f64; 2]; 4], xi: f64, eta: f64) -> Option<MemRows> {
-    let (_, _, _, det0, ji0) = cartesian(xy, 0.0, 0.0)?;
-    let (_, dx, dy, det, _) = cartesian(xy, xi, eta)?;
-    let mut b = SMatrix::<f64, 3, 12>::zeros();
-    for i in 0..4 {
-        b[(0, 3 * i)] = dx[i];
-        b[(1, 3 * i + 1)] = dy[i];
-        b[(2, 3 * i)] = dy[i];
-        b[(2, 3 * i + 1)] = dx[i];
-    }
-    let s = det0 / det;
-    let pn = [(-2.0 * xi, 0.0), (0.0, -2.0 * eta)];
-    let mut bi = SMatrix::<f64, 3, 4>::zeros();
-    for (k, (pxi, peta)) in pn.iter().enumerate() {
-        let px = s * (ji0[(0, 0)] * pxi + ji0[(0, 1)] * peta);
-        let py = s * (ji0[(1, 0)] * pxi + ji0[(1, 1)] * peta);
-        bi[(0, k)] = px;
-        bi[(2, k)] = py;
-        bi[(1, 2 + k)] = py;
-        bi[(2, 2 + k)] = px;
-    }
-    Some((b, bi, det))
-}
-
-/// Membrane stiffness (12 DOFs u v θz per node, condensed incompatible modes, drilling).
-fn membrane(xy: &[[f64; 2]; 4], t: f64, mat: &Material) -> Option<SMatrix<f64, 12, 12>> {
-    let c = plane_stress(mat.e, mat.nu) * t;
-    let mut kcc = SMatrix::<f64, 12, 12>::zeros();
-    let mut kci = SMatrix::<f64, 12, 4>::zeros();
-    let mut kii = SMatrix::<f64, 4, 4>::zeros();
-    for &xi in &[-G2, G2] {
-        for &eta in &[-G2, G2] {
-            let (b, bi, det) = membrane_rows(xy, xi, eta)?;
-            kcc += b.transpose() * c * b * det;
-            kci += b.transpose() * c * bi * det;
-            kii += bi.transpose() * c * bi * det;
-        }
-    }
-    let kii_inv = kii.try_inverse()?;
-    let k = kcc - kci * kii_inv * kci.transpose() + drilling(xy, t, mat)?;
-    Some((k + k.transpose()) * 0.5)
-}
-
-/// Drilling penalty over (u v θz) × 4: γ·t∫(θz − ½(∂v/∂x − ∂u/∂y))² dA with γ = G at the
-/// centre (area 4 det J₀) plus the weak 2×2 part with 10⁻³·G, which removes the zero-energy θz
-/// patterns the centre point leaves (linear and checkerboard ω with zero mean).
-fn drilling(xy: &[[f64; 2]; 4], t: f64, mat: &Material) -> Option<SMatrix<f64, 12, 12>> {
-    let g = mat.shear_modulus();
-    let row = |xi: f64, eta: f64| {
-        let (n, dx, dy, det, _) = cartesian(xy, xi, eta)?;
-        let mut r = SVector::<f64, 12>::zeros();
-        for i in 0..4 {
-            r[3 * i] = 0.5 * dy[i];
-            r[3 * i + 1] = -0.5 * dx[i];
-            r[3 * i + 2] = n[i];
-        }
-        Some((r, det))
-    };
-    let (r0, det0) = row(0.0, 0.0)?;
-    let mut k = r0 * r0.transpose() * (g * t * 4.0 * det0);
-    for &xi in &[-G2, G2] {
-        for &eta in &[-G2, G2] {
-            let (r, det) = row(xi, eta)?;
-            k += r * r.transpose() * (DRILL_STAB * g * t * det);
-        }
-    }
-    Some(k)
-}
-
-/// Global drilling-penalty stiffness Tᵀ k_d T of a shell element (24×24): the part of its
-/// stiffness that rests on the artificial drilling rotation. A mode or a deformation whose
-/// strain energy sits mostly here is not governed by shell theory.
-pub fn shell_drilling_stiffness(x: &[[f64; 3]; 4], t: f64, mat: &Material) -> Option<Mat24> {
-    let g = shell_geometry(x)?;
-    let kd = drilling(&g.xy, t, mat)?;
-    let mut k = Mat24::zeros();
-    for a in 0..12 {
-        for b in 0..12 {
-            k[(mem(a / 3, a % 3), mem(b / 3, b % 3))] = kd[(a, b)];
-        }
-    }
-    Some(g.t.transpose() * k * g.t)
-}
-
-/// MITC4 covariant shear rows at a tying point: (γ_ξ, γ_η) as rows over (w θx θy) × 4.
-fn covariant_shear(xy: &[[f64; 2]; 4], xi: f64, eta: f64) -> SMatrix<f64, 2, 12> {
-    let (n, dxi, deta) = shape(xi, eta);
-    let j = jacobian(xy, &dxi, &deta);
-    let mut b = SMatrix::<f64, 2, 12>::zeros();
-    for i in 0..4 {
-        // γ_ξ = w_ξ + θy x_ξ − θx y_ξ
-        b[(0, 3 * i)] = dxi[i];
-        b[(0, 3 * i + 1)] = -n[i] * j[(0, 1)];
-        b[(0, 3 * i + 2)] = n[i] * j[(0, 0)];
-        b[(1, 3 * i)] = deta[i];
-        b[(1, 3 * i + 1)] = -n[i] * j[(1, 1)];
-        b[(1, 3 * i + 2)] = n[i] * j[(1, 0)];
-    }
-    b
-}
-
-/// Curvature rows B_b (κxx, κyy, κxy over (w θx θy) × 4).
-pub(crate) fn curvature_b(dx: &[f64; 4], dy: &[f64; 4]) -> SMatrix<f64, 3, 12> {
-    let mut b = SMatrix::<f64, 3, 12>::zeros();
-    for i in 0..4 {
-        b[(0, 3 * i + 2)] = dx[i];
-        b[(1, 3 * i + 1)] = -dy[i];
-        b[(2, 3 * i + 1)] = -dx[i];
-        b[(2, 3 * i + 2)] = dy[i];
-    }
-    b
-}
-
-/// MITC4 shear rows (γxz, γyz) at (ξ, η).
-pub(crate) fn mitc_shear_b(xy: &[[f64; 2]; 4], xi: f64, eta: f64, ji: &Matrix2<f64>) -> SMatrix<f64, 2, 12> {
-    let b_b = covariant_shear(xy, 0.0, -1.0);
-    let b_d = covariant_shear(xy, 0.0, 1.0);
-    let b_a = covariant_shear(xy, -1.0, 0.0);
-    let b_c = covariant_shear(xy, 1.0, 0.0);
-    let mut cov = SMatrix::<f64, 2, 12>::zeros();
-    for k in 0..12 {
-        cov[(0, k)] = 0.5 * (1.0 - eta) * b_b[(0, k)] + 0.5 * (1.0 + eta) * b_d[(0, k)];
-        cov[(1, k)] = 0.5 * (1.0 - xi) * b_a[(1, k)] + 0.5 * (1.0 + xi) * b_c[(1, k)];
-    }
-    ji * cov
-}
-
-/// Element diameter h_K: the longer diagonal of the projected quadrilateral, mm.
-fn diameter(xy: &[[f64; 2]; 4]) -> f64 {
-    let d = |a: usize, b: usize| (xy[a][0] - xy[b][0]).hypot(xy[a][1] - xy[b][1]);
-    d(0, 2).max(d(1, 3))
-}
-
-/// Transverse shear stiffness of the stabilized MITC4, N/mm: κGt · t²/(t² + α h_K²).
-pub fn stabilized_shear_stiffness(xy: &[[f64; 2]; 4], t: f64, mat: &Material) -> f64 {
-    let hk = diameter(xy);
-    KAPPA * mat.shear_modulus() * t * t * t / (t * t + SHEAR_STAB * hk * hk)
-}
-
-/// Plate stiffness (bending + stabilized MITC4 shear) over (w θx θy) × 4.
-fn plate_k(xy: &[[f64; 2]; 4], t: f64, mat: &Material) -> Option<SMatrix<f64, 12, 12>> {
-    let db = plane_stress(mat.e, mat.nu) * (t * t * t / 12.0);
-    let ds = stabilized_shear_stiffness(xy, t, mat);
-    let mut k = SMatrix::<f64, 12, 12>::zeros();
-    for &xi in &[-G2, G2] {
-        for &eta in &[-G2, G2] {
-            let (_, dx, dy, det, ji) = cartesian(xy, xi, eta)?;
-            let bb = curvature_b(&dx, &dy);
-            let bs = mitc_shear_b(xy, xi, eta, &ji);
-            k += (bb.transpose() * db * bb + bs.transpose() * bs * ds) * det;
-        }
-    }
-    Some((k + k.transpose()) * 0.5)
-}
-
 /// Local 24×24 stiffness of the flat element on its projected nodes.
 pub fn shell_local_stiffness(xy: &[[f64; 2]; 4], t: f64, mat: &Material) -> Option<Mat24> {
     let km = membrane(xy, t, mat)?;
@@ -405,55 +252,4 @@ pub fn shell_mass(x: &[[f64; 3]; 4], t: f64, rho: f64) -> Option<Mat24> {
     let m = shell_local_mass(&g.xy, t, rho)?;
     let mg = g.t.transpose() * m * g.t;
     Some((mg + mg.transpose()) * 0.5)
-}
-
-/// Stresses at the element centre, local axes (MPa): von Mises at the top (z = +t/2), middle
-/// and bottom surfaces, plus the membrane forces n = (nxx, nyy, nxy) (N/mm) and moments
-/// m = (mxx, myy, mxy) (N·mm/mm).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ShellStress {
-    /// Von Mises stress [top, mid, bottom], MPa.
-    pub von_mises: [f64; 3],
-    /// Membrane forces per unit length, N/mm.
-    pub n: [f64; 3],
-    /// Bending moments per unit length, N·mm/mm.
-    pub m: [f64; 3],
-}
-
-/// Plane-stress von Mises √(σx² − σxσy + σy² + 3τ²).
-pub fn von_mises_plane(s: &[f64; 3]) -> f64 {
-    (s[0] * s[0] - s[0] * s[1] + s[1] * s[1] + 3.0 * s[2] * s[2])
-        .max(0.0)
-        .sqrt()
-}
-
-/// Centre stresses from the global element displacements (24). The incompatible modes have
-/// zero derivatives at the centre, so they do not enter.
-pub fn shell_stress(x: &[[f64; 3]; 4], t: f64, mat: &Material, d_global: &Vec24) -> Option<ShellStress> {
-    let g = shell_geometry(x)?;
-    let d = g.t * d_global;
-    let (_, dx, dy, _, _) = cartesian(&g.xy, 0.0, 0.0)?;
-    let mut eps = Vector3::zeros();
-    let mut kap = Vector3::zeros();
-    for i in 0..4 {
-        let (u, v) = (d[6 * i], d[6 * i + 1]);
-        let (tx, ty) = (d[6 * i + 3], d[6 * i + 4]);
-        eps += Vector3::new(dx[i] * u, dy[i] * v, dy[i] * u + dx[i] * v);
-        kap += Vector3::new(dx[i] * ty, -dy[i] * tx, dy[i] * ty - dx[i] * tx);
-    }
-    let c = plane_stress(mat.e, mat.nu);
-    let sm = c * eps;
-    let sb = c * kap * (t / 2.0);
-    let top = sm + sb;
-    let bot = sm - sb;
-    let arr = |v: Vector3<f64>| [v.x, v.y, v.z];
-    Some(ShellStress {
-        von_mises: [
-            von_mises_plane(&arr(top)),
-            von_mises_plane(&arr(sm)),
-            von_mises_plane(&arr(bot)),
-        ],
-        n: arr(sm * t),
-        m: arr(c * kap * (t * t * t / 12.0)),
-    })
 }
