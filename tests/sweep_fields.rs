@@ -123,9 +123,15 @@ fn stage_lines_are_compact_by_default_and_full_on_request() {
         for k in ["platform", "max_von_mises", "strokes", "T", "factor_at_allowable"] {
             assert_eq!(lc[k], flc[k], "{k}");
         }
-        for k in ["stiffness_z", "at_allowable", "warnings"] {
+        for k in ["stiffness_z", "warnings"] {
             assert_eq!(r[k], fr[k], "{k}");
         }
+        for k in ["force", "stroke", "z"] {
+            assert_eq!(r["at_allowable"][k], fr["at_allowable"][k], "{k}");
+        }
+        // Echoes of the case: the material's allowable stress and the `nonlinear` flag.
+        assert!(r["at_allowable"].get("allowable").is_none() && fr["at_allowable"]["allowable"] == 400.0);
+        assert!(r.get("nonlinear").is_none() && fr["nonlinear"] == false);
         assert_eq!(v["design_hash"], f["design_hash"]);
     }
     // --full and --fields together are refused (exit 2).

@@ -22,7 +22,7 @@ const SLACK: f64 = 0.01;
 fn check(out: &mut Vec<String>, family: &str, name: &str, value: f64, lo: f64, hi: f64, what: &str) {
     if !(value >= lo * (1.0 - SLACK) && value <= hi * (1.0 + SLACK)) {
         out.push(format!(
-            "{family} {name} = {} is outside the range {lo}–{hi} covered by the solid calibration ({what}); the result is extrapolated",
+            "{family} {name} = {} is outside the solid-calibrated range {lo}–{hi} ({what}): extrapolated",
             fmt(value)
         ));
     }
@@ -43,7 +43,7 @@ pub fn calibration_warnings(profile: &Profile) -> Vec<String> {
     let (w, t) = (profile.w, profile.t_min());
     match profile.contour {
         Contour::Circular { r, .. } => {
-            let what = "41 circular notches checked against solid models";
+            let what = "41 circular notches";
             check(&mut out, "circular_notch", "t/R", t / r, 0.06, 0.5, what);
             check(&mut out, "circular_notch", "w/t", w / t, 0.5, 20.0, what);
         }
@@ -56,7 +56,7 @@ pub fn calibration_warnings(profile: &Profile) -> Vec<String> {
                 t / rho,
                 0.06,
                 0.5,
-                "short-notch factor G fitted on circular notches",
+                "factor G fitted on circular notches",
             );
             check(
                 &mut out,
@@ -83,7 +83,7 @@ pub fn calibration_warnings(profile: &Profile) -> Vec<String> {
             check(&mut out, "leaf", "w/t", w / t, 0.5, 20.0, "plane-strain factor P");
         }
         Contour::SphericalNeck { l, r, .. } => {
-            let what = "7 turned necks checked against solid models";
+            let what = "7 turned necks";
             check(&mut out, "spherical_neck", "l/t", l / t, 1.0, 5.0, what);
             check(&mut out, "spherical_neck", "t/R", t / r, 0.67, 2.0, what);
         }

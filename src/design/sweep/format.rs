@@ -22,15 +22,18 @@ pub struct LineFormat {
 /// The result fields a sweep of analysis `kind` leaves out of its lines by default
 /// (`flexfem sweep --full` keeps them, `--fields` picks from the full result). A stage line
 /// keeps every scalar response; it leaves out the 6×6 platform compliance (its eigenvalues
-/// stay), the echo of the material and of the actuator forces (both in the case) and the
-/// per-hinge stresses (their maximum, `max_von_mises`, stays): ~2,100 → ~980 bytes a line.
+/// stay), the echoes of the case (material, its allowable stress under `at_allowable`, the
+/// actuator forces, the `nonlinear` flag) and the per-hinge stresses (their maximum,
+/// `max_von_mises`, stays): ~2,100 → ~940 bytes a line.
 pub fn omitted_fields(kind: &str) -> &'static [&'static str] {
     match kind {
         "stage" => &[
             "platform_stiffness.compliance",
             "material",
+            "at_allowable.allowable",
             "load_cases.*.forces",
             "load_cases.*.hinge_stress",
+            "nonlinear",
         ],
         _ => &[],
     }
