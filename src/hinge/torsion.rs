@@ -258,8 +258,11 @@ impl HalfMesh {
 
     /// T/θ of the mirrored mesh of the first `nh` half nodes (warping restrained at ±x[nh − 1]).
     fn solve(&self, nh: usize) -> f64 {
-        let mut xs = [0.0; MAX_NODES];
-        let mut gp = [[(0.0, 0.0); 4]; MAX_NODES];
+        MIRROR.with_borrow_mut(|m| self.solve_in(nh, m))
+    }
+
+    fn solve_in(&self, nh: usize, mirror: &mut Mirror) -> f64 {
+        let Mirror { xs, gp } = mirror;
         let mut n = 0;
         for i in (1..nh).rev() {
             xs[n] = -self.x[i];
@@ -275,8 +278,35 @@ impl HalfMesh {
             }
             n += 1;
         }
-        torsion_fe_sampled(&xs[..n], &gp)
+        torsion_fe_sampled(&xs[..n], &gp[..])
     }
+}
+
+/// The mirrored mesh of [`HalfMesh::solve`], one per thread (written before it is read: kept
+/// from call to call instead of zeroing 22 kB of stack per solve).
+struct Mirror {
+    xs: [f64; MAX_NODES],
+    gp: [[(f64, f64); 4]; MAX_NODES],
+}
+
+/// The banded system of [`torsion_fe_sampled`], one per thread; only the rows in use are
+/// cleared.
+struct System {
+    keep: [usize; MAX_NODES],
+    k: [[f64; 4]; 2 * MAX_NODES],
+    load: [f64; 2 * MAX_NODES],
+}
+
+thread_local! {
+    static MIRROR: std::cell::RefCell<Box<Mirror>> = std::cell::RefCell::new(Box::new(Mirror {
+        xs: [0.0; MAX_NODES],
+        gp: [[(0.0, 0.0); 4]; MAX_NODES],
+    }));
+    static SYSTEM: std::cell::RefCell<Box<System>> = std::cell::RefCell::new(Box::new(System {
+        keep: [0; MAX_NODES],
+        k: [[0.0; 4]; 2 * MAX_NODES],
+        load: [0.0; 2 * MAX_NODES],
+    }));
 }
 
 /// Shortest FE element relative to the local warping boundary-layer length √(EΓ/GJ).
@@ -305,12 +335,17 @@ pub fn torsion_fe(xs: &[f64], mut props: impl FnMut(f64) -> (f64, f64)) -> f64 {
             gp[i][q] = props(xs[i] + GL4_X[q] * (xs[i + 1] - xs[i]));
         }
     }
-    torsion_fe_sampled(xs, &gp)
+    torsion_fe_sampled(xs, &gp[..])
 }
 
 /// [`torsion_fe`] with the properties (GJ, EΓ) at the 4 Gauss points of interval i of `xs`
 /// given in `gp[i]`.
-fn torsion_fe_sampled(xs: &[f64], gp: &[[(f64, f64); 4]; MAX_NODES]) -> f64 {
+fn torsion_fe_sampled(xs: &[f64], gp: &[[(f64, f64); 4]]) -> f64 {
+    SYSTEM.with_borrow_mut(|sys| torsion_fe_in(xs, gp, sys))
+}
+
+fn torsion_fe_in(xs: &[f64], gp: &[[(f64, f64); 4]], sys: &mut System) -> f64 {
+    let System { keep, k, load } = sys;
     // Element nodes: indices into xs, each element at least MIN_ELEMENT_PER_LAYER × the largest
     // warping layer √(EΓ/GJ) of the intervals it covers.
     let layer_of = |i: usize| -> f64 {
@@ -323,7 +358,7 @@ fn torsion_fe_sampled(xs: &[f64], gp: &[[(f64, f64); 4]; MAX_NODES]) -> f64 {
             )
             .sqrt()
     };
-    let mut keep = [0usize; MAX_NODES];
+    keep[0] = 0;
     let mut nk = 1;
     let mut layer = 0.0f64;
     for i in 1..xs.len() {
@@ -345,8 +380,8 @@ fn torsion_fe_sampled(xs: &[f64], gp: &[[(f64, f64); 4]; MAX_NODES]) -> f64 {
     let nn = nk;
     let ndof = 2 * nn - 1;
     // Symmetric band storage: k[i][d] = K(i, i + d), d = 0..=3; load vector ∫N dx (T = 1).
-    let mut k = [[0.0f64; 4]; 2 * MAX_NODES];
-    let mut load = [0.0f64; 2 * MAX_NODES];
+    k[..ndof].fill([0.0; 4]);
+    load[..ndof].fill(0.0);
     for el in 0..nn - 1 {
         let (xa, xb) = (xs[keep[el]], xs[keep[el + 1]]);
         let inv_le = 1.0 / (xb - xa);
@@ -427,7 +462,7 @@ fn torsion_fe_sampled(xs: &[f64], gp: &[[(f64, f64); 4]; MAX_NODES]) -> f64 {
     }
     // θ(end) = ∫φ dx = loadᵀ φ = loadᵀ K⁻¹ load = |y|², y = L⁻¹ load (the compliance, > 0 for
     // an SPD system): forward substitution only.
-    let f = &mut load;
+    let f = load;
     let mut theta = 0.0;
     for i in 0..ndof {
         let mut s = f[i];
