@@ -11,32 +11,13 @@
 use flexfem::analysis::{self, Case};
 use flexfem::case::sweep::Sweep;
 use flexfem::design::sweep::{omitted_fields, run_sweep_formatted, LineFormat, Shard};
-use std::alloc::{GlobalAlloc, Layout, System};
 use std::collections::HashSet;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
-/// Counts every allocation of every thread (the sweep's workers are rayon threads).
-struct Counting;
-
-static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        unsafe { System.alloc(layout) }
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        unsafe { System.dealloc(ptr, layout) }
-    }
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        unsafe { System.realloc(ptr, layout, new_size) }
-    }
-}
-
-#[global_allocator]
-static GLOBAL: Counting = Counting;
+#[path = "common/global_alloc.rs"]
+mod global_alloc;
+use global_alloc::allocations as allocated;
 
 /// The tests of this file run one at a time: the count covers every thread of the process.
 static SERIAL: Mutex<()> = Mutex::new(());
@@ -170,7 +151,7 @@ fn allocations(s: &Sweep, f: &LineFormat) -> (usize, usize) {
         let last = AtomicUsize::new(0);
         let n = AtomicUsize::new(0);
         run_sweep_formatted(s, None, Shard::ALL, &HashSet::new(), f, false, |l| {
-            let now = ALLOCATIONS.load(Ordering::Relaxed);
+            let now = allocated();
             assert!(l.value.is_none() && !l.failed, "{}", l.text);
             first.lock().unwrap().get_or_insert(now);
             last.store(now, Ordering::Relaxed);

@@ -7,7 +7,7 @@
 //! kinds, [`super::kinds_list`].
 
 use super::case_file::{Case, CaseOf};
-use super::line::{Echoed, LineSpec, MaterialEcho, ResultLine};
+use super::line::{Echoed, LineTarget, MaterialEcho};
 use super::units::UnitOf;
 use super::{Files, Report, RunError};
 use crate::case::{CaseError, MaterialSpec};
@@ -171,16 +171,10 @@ pub trait DynAnalysis: Sync {
     /// [`Analysis::number_mut`] of a parsed case of this kind.
     fn number_mut<'c>(&self, case: &'c mut Case, path: &[&str]) -> Option<&'c mut f64>;
     /// Runs a case of this kind and appends its result, as a run writes it (with the `material`
-    /// and `warnings` echoes), to `line` as `spec` keeps it — without a JSON value and, on the
+    /// and `warnings` echoes), to the line of `to` as its spec keeps it — without a JSON value and, on the
     /// paths of the kinds that give [`Analysis::number_mut`], without allocating. `None`: the
     /// kind does not write lines this way.
-    fn write_result(
-        &self,
-        case: &Case,
-        ctx: &mut Ctx,
-        line: &mut ResultLine,
-        spec: LineSpec,
-    ) -> Option<Result<(), RunError>>;
+    fn write_result(&self, case: &Case, ctx: &mut Ctx, to: LineTarget) -> Option<Result<(), RunError>>;
 }
 
 /// The registry entry of analysis `A`.
@@ -232,13 +226,7 @@ impl<A: CaseOf> DynAnalysis for Entry<A> {
     fn number_mut<'c>(&self, case: &'c mut Case, path: &[&str]) -> Option<&'c mut f64> {
         A::number_mut(A::case_of_mut(case)?, path)
     }
-    fn write_result(
-        &self,
-        case: &Case,
-        ctx: &mut Ctx,
-        line: &mut ResultLine,
-        spec: LineSpec,
-    ) -> Option<Result<(), RunError>> {
+    fn write_result(&self, case: &Case, ctx: &mut Ctx, to: LineTarget) -> Option<Result<(), RunError>> {
         let c = A::case_of(case)?;
         let spec_material = A::material_of(c);
         if spec_material.is_none() && !A::materials(c).is_empty() {
@@ -259,7 +247,8 @@ impl<A: CaseOf> DynAnalysis for Entry<A> {
                 material: material.as_ref().map(|(spec, m)| MaterialEcho::of(spec, m)),
                 warnings: &warnings,
             };
-            line.write(&echoed, spec)
+            to.line
+                .write(&echoed, to.spec)
                 .map_err(|e| super::AnalysisError::new("output", e.to_string()).into())
         };
         Some(run())

@@ -21,6 +21,15 @@ pub struct LineSpec<'a> {
     pub notes_by_ref: bool,
 }
 
+/// Where [`super::DynAnalysis::write_result`] writes: a worker's line and what it keeps.
+#[derive(Debug)]
+pub struct LineTarget<'a> {
+    /// The worker's buffers.
+    pub line: &'a mut ResultLine,
+    /// What the line keeps of the result.
+    pub spec: LineSpec<'a>,
+}
+
 /// The buffers a worker reuses for its lines.
 #[derive(Debug, Default)]
 pub struct ResultLine {
@@ -107,10 +116,11 @@ impl Filter<'_> {
         }
     }
 
-    fn open(&mut self, object: bool) {
+    /// Opens an object or array (`bracket`: its opening character).
+    fn open(&mut self, object: bool, bracket: u8) -> io::Result<()> {
         if let Some(n) = &mut self.skip {
             *n += 1;
-            return;
+            return Ok(());
         }
         if self.model.is_some() && object {
             *self.notes_object = true;
@@ -122,15 +132,19 @@ impl Filter<'_> {
             };
         }
         self.depth += 1;
+        self.out.push(bracket);
+        Ok(())
     }
 
-    fn close(&mut self) -> bool {
+    /// Closes the innermost object or array (`bracket`: its closing character).
+    fn close(&mut self, bracket: u8) -> io::Result<()> {
         if let Some(n) = &mut self.skip {
             *n -= 1;
-            return false;
+            return Ok(());
         }
         self.depth -= 1;
-        true
+        self.out.push(bracket);
+        Ok(())
     }
 }
 
@@ -149,7 +163,25 @@ macro_rules! pass {
     };
 }
 
+/// The opening and closing methods: [`Filter::open`] and [`Filter::close`] with the bracket.
+macro_rules! brackets {
+    ($($name:ident => $call:ident($($arg:expr),*),)*) => {
+        $(
+            fn $name<W: ?Sized + io::Write>(&mut self, _w: &mut W) -> io::Result<()> {
+                self.$call($($arg),*)
+            }
+        )*
+    };
+}
+
 impl Formatter for Filter<'_> {
+    brackets! {
+        begin_array => open(false, b'['),
+        end_array => close(b']'),
+        begin_object => open(true, b'{'),
+        end_object => close(b'}'),
+    }
+
     pass! {
         write_null();
         write_bool(v: bool);
@@ -174,22 +206,6 @@ impl Formatter for Filter<'_> {
         write_raw_fragment(v: &str);
     }
 
-    fn begin_array<W: ?Sized + io::Write>(&mut self, _w: &mut W) -> io::Result<()> {
-        let writing = self.skip.is_none();
-        self.open(false);
-        if writing {
-            self.out.push(b'[');
-        }
-        Ok(())
-    }
-
-    fn end_array<W: ?Sized + io::Write>(&mut self, _w: &mut W) -> io::Result<()> {
-        if self.close() {
-            self.out.push(b']');
-        }
-        Ok(())
-    }
-
     fn begin_array_value<W: ?Sized + io::Write>(&mut self, _w: &mut W, first: bool) -> io::Result<()> {
         if self.skip.is_some() {
             return Ok(());
@@ -206,22 +222,6 @@ impl Formatter for Filter<'_> {
     }
 
     fn end_array_value<W: ?Sized + io::Write>(&mut self, _w: &mut W) -> io::Result<()> {
-        Ok(())
-    }
-
-    fn begin_object<W: ?Sized + io::Write>(&mut self, _w: &mut W) -> io::Result<()> {
-        let writing = self.skip.is_none();
-        self.open(true);
-        if writing {
-            self.out.push(b'{');
-        }
-        Ok(())
-    }
-
-    fn end_object<W: ?Sized + io::Write>(&mut self, _w: &mut W) -> io::Result<()> {
-        if self.close() {
-            self.out.push(b'}');
-        }
         Ok(())
     }
 

@@ -5,64 +5,26 @@
 
 use super::hinge::HingeCase;
 use super::stage::StageCase;
-use crate::hinge::{Contour, HingeSpec};
-
-/// A dimension of a notch contour by its case-file name.
-fn contour_number<'c>(c: &'c mut Contour, key: &str) -> Option<&'c mut f64> {
-    use Contour::*;
-    match (c, key) {
-        (Circular { r, .. } | CornerFilleted { r, .. } | SphericalNeck { r, .. }, "R") => Some(r),
-        (
-            Circular { t, .. }
-            | Elliptical { t, .. }
-            | CornerFilleted { t, .. }
-            | Leaf { t, .. }
-            | SphericalNeck { t, .. },
-            "t",
-        ) => Some(t),
-        (Elliptical { ax, .. }, "ax") => Some(ax),
-        (Elliptical { ay, .. }, "ay") => Some(ay),
-        (CornerFilleted { l, .. } | Leaf { l, .. } | SphericalNeck { l, .. }, "l") => Some(l),
-        _ => None,
-    }
-}
+use crate::hinge::HingeSpec;
 
 /// A number of a hinge spec by its case-file name: a contour dimension or the blank's.
-fn hinge_spec_number<'c>(h: &'c mut HingeSpec, key: &str) -> Option<&'c mut f64> {
+fn hinge_spec_number<'c>(spec: &'c mut HingeSpec, key: &str) -> Option<&'c mut f64> {
     use HingeSpec::*;
-    match (h, key) {
-        (CircularNotch { w, .. } | EllipticalNotch { w, .. } | CornerFilleted { w, .. } | Leaf { w, .. }, "w") => {
-            Some(w)
-        }
-        (
-            CircularNotch { h, .. }
-            | EllipticalNotch { h, .. }
-            | CornerFilleted { h, .. }
-            | Leaf { h, .. }
-            | SphericalNeck { h, .. },
-            "h",
-        ) => Some(h),
-        (
-            CircularNotch { blank_length, .. }
-            | EllipticalNotch { blank_length, .. }
-            | CornerFilleted { blank_length, .. }
-            | Leaf { blank_length, .. }
-            | SphericalNeck { blank_length, .. },
-            "blank_length",
-        ) => Some(blank_length),
-        (CircularNotch { r, .. } | CornerFilleted { r, .. } | SphericalNeck { r, .. }, "R") => Some(r),
-        (
-            CircularNotch { t, .. }
-            | EllipticalNotch { t, .. }
-            | CornerFilleted { t, .. }
-            | Leaf { t, .. }
-            | SphericalNeck { t, .. },
-            "t",
-        ) => Some(t),
-        (EllipticalNotch { ax, .. }, "ax") => Some(ax),
-        (EllipticalNotch { ay, .. }, "ay") => Some(ay),
-        (CornerFilleted { l, .. } | Leaf { l, .. } | SphericalNeck { l, .. }, "l") => Some(l),
-        _ => None,
+    if !matches!(key, "w" | "h" | "blank_length") {
+        return spec.contour_number_mut(key);
+    }
+    let (w, h, blank_length) = match spec {
+        CircularNotch { w, h, blank_length, .. }
+        | EllipticalNotch { w, h, blank_length, .. }
+        | CornerFilleted { w, h, blank_length, .. }
+        | Leaf { w, h, blank_length, .. } => (Some(w), h, blank_length),
+        // The turned neck's square blank has no width of its own.
+        SphericalNeck { h, blank_length, .. } => (None, h, blank_length),
+    };
+    match key {
+        "w" => w,
+        "h" => Some(h),
+        _ => Some(blank_length),
     }
 }
 
@@ -88,8 +50,8 @@ impl StageCase {
             ["stage", "a"] => s.a.as_mut(),
             ["stage", "leg", "w"] => Some(&mut s.leg.w),
             ["stage", "leg", "h"] => Some(&mut s.leg.h),
-            ["stage", "revolute", key] => contour_number(&mut s.revolute, key),
-            ["stage", "spherical", key] => contour_number(&mut s.spherical, key),
+            ["stage", "revolute", key] => s.revolute.number_mut(key),
+            ["stage", "spherical", key] => s.spherical.number_mut(key),
             ["platform_mass"] => self.platform_mass.as_mut(),
             ["platform_thickness"] => self.platform_thickness.as_mut(),
             ["load_cases", i, drive, k] => {
@@ -102,6 +64,47 @@ impl StageCase {
                 v.get_mut(k.parse::<usize>().ok()?)
             }
             _ => None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every number of every hinge family, set through `number_mut`, gives the case parsed from
+    /// the JSON with that number changed (names and renames as serde reads them).
+    #[test]
+    fn every_hinge_number_is_the_parsed_one() {
+        use crate::hinge::Contour;
+        let contours = [
+            Contour::Circular { r: 8.0, t: 2.0 },
+            Contour::Elliptical {
+                ax: 6.0,
+                ay: 3.0,
+                t: 2.0,
+            },
+            Contour::CornerFilleted {
+                l: 10.0,
+                r: 2.0,
+                t: 2.0,
+            },
+            Contour::Leaf { l: 8.0, t: 1.0 },
+            Contour::SphericalNeck { l: 5.0, t: 3.0, r: 4.0 },
+        ];
+        let specs = contours.map(|c| serde_json::to_string(&HingeSpec::in_blank(c, 10.0, 10.0, 5.0)).unwrap());
+        for spec in specs {
+            let json: serde_json::Value = serde_json::from_str(&spec).unwrap();
+            for key in json.as_object().unwrap().keys().filter(|k| *k != "type") {
+                let mut set: HingeSpec = serde_json::from_value(json.clone()).unwrap();
+                *hinge_spec_number(&mut set, key).unwrap_or_else(|| panic!("{spec}: {key}")) = 123.5;
+                let mut changed = json.clone();
+                changed[key] = serde_json::json!(123.5);
+                let parsed: HingeSpec = serde_json::from_value(changed).unwrap();
+                assert_eq!(set, parsed, "{spec}: {key}");
+            }
+            let mut set: HingeSpec = serde_json::from_value(json).unwrap();
+            assert!(hinge_spec_number(&mut set, "type").is_none() && hinge_spec_number(&mut set, "x").is_none());
         }
     }
 }

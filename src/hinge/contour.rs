@@ -45,6 +45,33 @@ macro_rules! hinge_families {
                     $(HingeSpec::$spec { $($field,)+ .. } => Contour::$contour { $($field),+ },)+
                 }
             }
+
+            /// A dimension of the contour by its case-file name (`R`, `t`, `l`, `ax`, `ay`), for
+            /// sweeps that set numbers in a parsed case; the blank's are not among them.
+            pub fn contour_number_mut(&mut self, key: &str) -> Option<&mut f64> {
+                match self {
+                    $(HingeSpec::$spec { $($field,)+ .. } => {
+                        $(if key == json_name(stringify!($field)) {
+                            return Some($field);
+                        })+
+                        None
+                    })+
+                }
+            }
+        }
+
+        impl Contour {
+            /// A dimension by its case-file name (see [`HingeSpec::contour_number_mut`]).
+            pub fn number_mut(&mut self, key: &str) -> Option<&mut f64> {
+                match self {
+                    $(Contour::$contour { $($field),+ } => {
+                        $(if key == json_name(stringify!($field)) {
+                            return Some($field);
+                        })+
+                        None
+                    })+
+                }
+            }
         }
     };
     (@spec [$($done:tt)*] $(#[$sm:meta])* $spec:ident rectangle { $($f:tt)* } $($rest:tt)*) => {
@@ -87,6 +114,16 @@ macro_rules! hinge_families {
     (@in_blank square $spec:ident { $($f:ident),+ } $w:ident $h:ident $bl:ident) => {
         HingeSpec::$spec { $($f,)+ h: $h, blank_length: $bl }
     };
+}
+
+/// The case-file name of a contour dimension: the radius `r` is `R` (its `serde(rename)`), the
+/// others keep their names.
+fn json_name(field: &str) -> &str {
+    if field == "r" {
+        "R"
+    } else {
+        field
+    }
 }
 
 hinge_families! {

@@ -13,7 +13,7 @@
 
 use super::hash::canonical;
 use super::{Line, LineFormat, Shapes};
-use crate::analysis::line::{fnv128, LineSpec, ResultLine, FNV128_OFFSET};
+use crate::analysis::line::{fnv128, LineSpec, LineTarget, ResultLine, FNV128_OFFSET};
 use crate::analysis::{self, Case, Ctx, DynAnalysis};
 use crate::case::sweep::{set_path, Sweep};
 use crate::fem::SolverCache;
@@ -199,7 +199,11 @@ impl<'s> Typed<'s> {
             omit: &self.omit,
             notes_by_ref: self.notes_by_ref,
         };
-        self.kind.write_result(&w.case, &mut ctx, &mut w.line, spec)?.ok()?;
+        let to = LineTarget {
+            line: &mut w.line,
+            spec,
+        };
+        self.kind.write_result(&w.case, &mut ctx, to)?.ok()?;
         if w.line.notes_hold_object {
             return None;
         }
