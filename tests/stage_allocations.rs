@@ -4,14 +4,14 @@
 //! see the test), the full analysis must allocate nothing.
 
 use flexfem::analysis::{self as case, Case};
-#[path = "common/global_alloc.rs"]
-mod global_alloc;
+#[path = "common/counting_alloc.rs"]
+mod counting;
 
-/// Allocations of `f` (this test file has one test, so no other thread allocates meanwhile).
+/// Allocations of `f` (on this thread).
 fn count(f: impl FnOnce()) -> usize {
-    let before = global_alloc::allocations();
+    let before = counting::allocations();
     f();
-    global_alloc::allocations() - before
+    counting::allocations() - before
 }
 
 #[test]

@@ -15,16 +15,8 @@ use std::collections::HashSet;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
-#[path = "common/global_alloc.rs"]
-mod global_alloc;
-use global_alloc::allocations as allocated;
-
-/// The tests of this file run one at a time: the count covers every thread of the process.
-static SERIAL: Mutex<()> = Mutex::new(());
-
-fn serial() -> std::sync::MutexGuard<'static, ()> {
-    SERIAL.lock().unwrap_or_else(|p| p.into_inner())
-}
+#[path = "common/counting_alloc.rs"]
+mod counting;
 
 fn sweep(json: &str) -> Sweep {
     match analysis::parse(json) {
@@ -86,7 +78,6 @@ fn same_lines(json: &str, kind: &str) -> (usize, usize, usize) {
 /// Every hinge family, dimensions and blank varied, some designs invalid (t ≥ h).
 #[test]
 fn hinge_sweeps_give_the_value_route_lines() {
-    let _serial = serial();
     let families = [
         r#"{"type": "circular_notch", "R": 8, "t": 2, "w": 10, "h": 10, "blank_length": 20}"#,
         r#"{"type": "elliptical_notch", "ax": 6, "ay": 3, "t": 2, "w": 10, "h": 10, "blank_length": 5}"#,
@@ -110,7 +101,6 @@ fn hinge_sweeps_give_the_value_route_lines() {
 /// Stage sweeps: hinge dimensions, leg section, geometry, load-case forces and strokes.
 #[test]
 fn stage_sweeps_give_the_value_route_lines() {
-    let _serial = serial();
     let json = r#"{"analysis": "sweep",
         "base": {"analysis": "stage", "material": "Al7075",
             "stage": {"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": 0, "leg": {"w": 10, "h": 10},
@@ -131,7 +121,6 @@ fn stage_sweeps_give_the_value_route_lines() {
 /// The bundled sweeps take the typed route for every design.
 #[test]
 fn bundled_sweeps_take_the_typed_route() {
-    let _serial = serial();
     for (file, kind) in [
         ("ruiz2019_hinge_sweep.json", "hinge"),
         ("ruiz2019_stage_sweep.json", "stage"),
@@ -151,7 +140,9 @@ fn allocations(s: &Sweep, f: &LineFormat) -> (usize, usize) {
         let last = AtomicUsize::new(0);
         let n = AtomicUsize::new(0);
         run_sweep_formatted(s, None, Shard::ALL, &HashSet::new(), f, false, |l| {
-            let now = allocated();
+            // The sink runs on the worker thread: its own count (other threads of the test
+            // process, e.g. the harness reporting another test, are not counted).
+            let now = counting::allocations();
             assert!(l.value.is_none() && !l.failed, "{}", l.text);
             first.lock().unwrap().get_or_insert(now);
             last.store(now, Ordering::Relaxed);
@@ -166,7 +157,6 @@ fn allocations(s: &Sweep, f: &LineFormat) -> (usize, usize) {
 
 #[test]
 fn typed_route_allocates_nothing_per_design() {
-    let _serial = serial();
     let hinge = |n: usize| {
         format!(
             r#"{{"analysis": "sweep", "base": {{"analysis": "hinge", "material": "Al7075",

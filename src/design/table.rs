@@ -64,7 +64,7 @@ pub fn flatten(prefix: &str, v: &Value, out: &mut Vec<(String, String)>) {
 
 /// Appends a parameter or leaf as a CSV field: strings bare (quoted when RFC 4180 needs it),
 /// null and missing empty, everything else as JSON.
-fn push_cell(out: &mut String, v: Option<&Value>) {
+pub(super) fn push_cell(out: &mut String, v: Option<&Value>) {
     match v {
         None | Some(Value::Null) => {}
         Some(Value::String(s)) => push_text(out, s),
@@ -75,7 +75,7 @@ fn push_cell(out: &mut String, v: Option<&Value>) {
     }
 }
 
-fn push_text(out: &mut String, s: &str) {
+pub(super) fn push_text(out: &mut String, s: &str) {
     if s.contains([',', '"', '\n', '\r']) {
         out.push('"');
         out.push_str(&s.replace('"', "\"\""));
@@ -95,11 +95,7 @@ pub fn csv(axes: &[&str], lines: &[&str]) -> String {
 /// [`csv`] with the column units `(result units, case units)` of the sweep's analysis kind
 /// ([`crate::analysis::Analysis::column_units`]).
 pub fn csv_with_units(axes: &[&str], lines: &[&str], units: Option<(UnitOf, UnitOf)>) -> String {
-    let rows: Vec<Value> = lines
-        .par_iter()
-        .filter_map(|l| serde_json::from_str::<Value>(l).ok().filter(Value::is_object))
-        .collect();
-    csv_of_rows_with_units(axes, &rows, units)
+    super::table_lines::csv_of_lines(axes, lines, units)
 }
 
 /// [`csv`] of sweep rows already in memory (the JSON objects of their lines, in index order;
@@ -115,6 +111,28 @@ fn with_unit(name: &str, unit_of: Option<UnitOf>) -> Cow<'_, str> {
         Some(u) => Cow::Owned(format!("{name} [{u}]")),
         None => Cow::Borrowed(name),
     }
+}
+
+/// The header line: `index`, the varied paths, the result columns (with their units), `error`.
+pub(super) fn header<'a>(
+    axes: &[&str],
+    columns: impl Iterator<Item = &'a str>,
+    units: Option<(UnitOf, UnitOf)>,
+) -> String {
+    let mut out = String::new();
+    let (result_unit, input_unit) = (units.map(|u| u.0), units.map(|u| u.1));
+    let header = std::iter::once(Cow::Borrowed("index"))
+        .chain(axes.iter().map(|a| with_unit(a, input_unit)))
+        .chain(columns.map(|c| with_unit(c, result_unit)))
+        .chain(std::iter::once(Cow::Borrowed("error")));
+    for (i, h) in header.enumerate() {
+        if i > 0 {
+            out.push(',');
+        }
+        push_text(&mut out, &h);
+    }
+    out.push('\n');
+    out
 }
 
 /// [`csv_of_rows`] with column units (see [`csv_with_units`]).
@@ -147,19 +165,7 @@ pub fn csv_of_rows_with_units(axes: &[&str], rows: &[Value], units: Option<(Unit
         })
         .collect();
 
-    let mut out = String::new();
-    let (result_unit, input_unit) = (units.map(|u| u.0), units.map(|u| u.1));
-    let header = std::iter::once(Cow::Borrowed("index"))
-        .chain(axes.iter().map(|a| with_unit(a, input_unit)))
-        .chain(columns.iter().map(|c| with_unit(c, result_unit)))
-        .chain(std::iter::once(Cow::Borrowed("error")));
-    for (i, h) in header.enumerate() {
-        if i > 0 {
-            out.push(',');
-        }
-        push_text(&mut out, &h);
-    }
-    out.push('\n');
+    let mut out = header(axes, columns.iter().map(String::as_str), units);
     let body: Vec<String> = rows
         .par_iter()
         .zip(&leaves)

@@ -155,7 +155,12 @@ impl<'s> Typed<'s> {
     pub(super) fn worker(&self) -> Worker {
         Worker {
             case: self.base.clone(),
-            line: ResultLine::default(),
+            // Room for a line with its notes from the start (a longer line grows it once).
+            line: ResultLine {
+                out: Vec::with_capacity(8192),
+                notes: Vec::with_capacity(4096),
+                ..ResultLine::default()
+            },
             picks: vec![0; self.paths.len()],
         }
     }
