@@ -3,6 +3,7 @@
 pub mod plots;
 pub mod sweep;
 pub mod table;
+mod table_cells;
 mod table_lines;
 
 /// The stage sizing and sensitivity code lives with the stage ([`crate::stage::sizing`]); this

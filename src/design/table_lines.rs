@@ -4,7 +4,7 @@
 //! of a sweep share a handful), so the serial part of the table is one map look-up a line.
 //! The text equals [`super::table::csv_of_rows_with_units`] of the parsed lines.
 
-use super::table::{header, push_cell, push_text, MAX_ARRAY};
+use super::table_cells::{header, push_cell, push_text, MAX_ARRAY};
 use crate::analysis::units::UnitOf;
 use rayon::prelude::*;
 use serde::de::{DeserializeSeed, Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor};
