@@ -76,6 +76,16 @@ impl Serialize for ClosedForms {
     }
 }
 
+// Lines of the model notes without a design-specific number (the JSON form and the text form
+// share them).
+const BEAM: &str = "bending/shear/axial: exact flexibility of a variable-section Timoshenko beam, Gauss-Legendre on pieces split at profile breakpoints (Cowper shear coefficients)";
+const FACE: &str = "compliance referenced to the centre of the loaded blank end face, the other face clamped";
+const CALIBRATION: &str = "calibration: converged 10-node tetrahedron solid models (tools/solid_reference.py); circular notches t/R 0.06-0.5 within 2% bending, 4% axial; turned necks l/t >= 1 within 3% bending, 5% torsion, 3% axial; leaf within 5%";
+const NECK_TORSION: &str =
+    "torsion: Saint-Venant (circular waist, no warping); clipped-disk J blended between disk and square";
+const VLASOV: &str = "torsion: Vlasov non-uniform torsion FE (Hermite cubics), Timoshenko-Goodier J(x), exact rectangle warping constant, warping restrained at both blank end faces; in the blank the load-spreading effective thickness (solid models: circular notches -11...+4%, corner-filleted -14%)";
+const NO_SPREAD: &str = "load spreading: none needed (the contour never widens faster than slope 1/2)";
+
 /// The idealisations and models of a characterisation, as the numbers their text quotes
 /// (serialised as a JSON array of strings; [`ModelNotes::lines`] gives the text).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -116,17 +126,10 @@ impl ModelNotes {
 
     /// The notes without their numbers (the JSON form: see the `Serialize` impl).
     pub fn invariant_lines(&self) -> &'static [&'static str] {
-        const BEAM: &str = "bending/shear/axial: exact flexibility of a variable-section Timoshenko beam, Gauss-Legendre on pieces split at profile breakpoints (Cowper shear coefficients)";
-        const FACE: &str = "compliance referenced to the centre of the loaded blank end face, the other face clamped";
         const MODULUS: &str = "compliant-axis bending modulus of the notch region E*P/G (solid-calibrated): short-notch G and plane-strain P in calibration";
-        const CALIBRATION: &str = "calibration: converged 10-node tetrahedron solid models (tools/solid_reference.py); circular notches t/R 0.06-0.5 within 2% bending, 4% axial; turned necks l/t >= 1 within 3% bending, 5% torsion, 3% axial; leaf within 5%";
-        const NECK_TORSION: &str =
-            "torsion: Saint-Venant (circular waist, no warping); clipped-disk J blended between disk and square";
         const NECK_STRESS: &str = "stress: 32M/(pi t^3) at the waist x Kt = stress_concentration (shoulder-fillet Kt = 1 + 0.041 sqrt(t/R), fitted to solid models within 2%)";
-        const VLASOV: &str = "torsion: Vlasov non-uniform torsion FE (Hermite cubics), Timoshenko-Goodier J(x), exact rectangle warping constant, warping restrained at both blank end faces; in the blank the load-spreading effective thickness (solid models: circular notches -11...+4%, corner-filleted -14%)";
         const NOTCH_STRESS: &str = "stress: 6M/(w t^2) at the waist x stress_concentration (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, divided by sqrt(P) for the plane-strain waist; solid models: within 6%)";
         const SPREAD: &str = "load spreading (solid-calibrated): effective half-size grows at calibration.load_spreading.slope from |x| = from_mm to to_mm";
-        const NO_SPREAD: &str = "load spreading: none needed (the contour never widens faster than slope 1/2)";
         match (self.neck, self.spread.is_some()) {
             (true, true) => &[BEAM, FACE, NECK_TORSION, NECK_STRESS, SPREAD, MODULUS, CALIBRATION],
             (true, false) => &[BEAM, FACE, NECK_TORSION, NECK_STRESS, NO_SPREAD, MODULUS, CALIBRATION],
@@ -138,31 +141,25 @@ impl ModelNotes {
     /// The notes as text with their numbers, one line each (the Markdown report's form).
     pub fn lines(&self) -> Vec<String> {
         let kt = self.kt;
-        let mut v = vec![
-            "bending/shear/axial: exact flexibility of a variable-section Timoshenko beam, Gauss-Legendre on pieces split at profile breakpoints (Cowper shear coefficients)".to_string(),
-            "compliance referenced to the centre of the loaded blank end face, the other face clamped".to_string(),
-        ];
+        let mut v = vec![BEAM.to_string(), FACE.to_string()];
         if self.neck {
-            v.push(
-                "torsion: Saint-Venant (circular waist, no warping); clipped-disk J blended between disk and square"
-                    .into(),
-            );
+            v.push(NECK_TORSION.into());
             v.push(format!("stress: 32M/(pi t^3) at the waist x Kt = {kt:.4} (shoulder-fillet Kt = 1 + 0.041 sqrt(t/R), fitted to solid models within 2%)"));
         } else {
-            v.push("torsion: Vlasov non-uniform torsion FE (Hermite cubics), Timoshenko-Goodier J(x), exact rectangle warping constant, warping restrained at both blank end faces; in the blank the load-spreading effective thickness (solid models: circular notches -11...+4%, corner-filleted -14%)".into());
+            v.push(VLASOV.into());
             v.push(format!("stress: 6M/(w t^2) at the waist x {kt:.4} (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, divided by sqrt(P) for the plane-strain waist; solid models: within 6%)"));
         }
         match self.spread {
             Some((slope, from, reach)) => v.push(format!(
                 "load spreading (solid-calibrated): effective half-size grows at slope {slope} from |x| = {from:.3} mm to {reach:.3} mm"
             )),
-            None => v.push("load spreading: none needed (the contour never widens faster than slope 1/2)".into()),
+            None => v.push(NO_SPREAD.into()),
         }
         let (g, p) = (self.g, self.p);
         v.push(format!(
             "compliant-axis bending modulus of the notch region E*P/G (solid-calibrated): short-notch G = {g:.4}, plane-strain P = {p:.4}"
         ));
-        v.push("calibration: converged 10-node tetrahedron solid models (tools/solid_reference.py); circular notches t/R 0.06-0.5 within 2% bending, 4% axial; turned necks l/t >= 1 within 3% bending, 5% torsion, 3% axial; leaf within 5%".into());
+        v.push(CALIBRATION.into());
         v
     }
 }
