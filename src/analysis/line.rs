@@ -281,10 +281,8 @@ impl Formatter for Filter<'_> {
             self.notes.clear();
             self.notes.extend_from_slice(&self.out[start..]);
             let h = fnv128(FNV128_OFFSET, self.notes);
-            let hex = b"0123456789abcdef";
-            for (k, d) in self.notes_ref.iter_mut().enumerate() {
-                *d = hex[((h >> (124 - 4 * k)) & 0xf) as usize];
-            }
+            // The reference of the value route (`LineFormat::notes_ref`): the top 32 bits in hex.
+            io::Write::write_fmt(&mut &mut self.notes_ref[..], format_args!("{:08x}", (h >> 96) as u32))?;
             let f = self.frames[0];
             self.out.truncate(f.key.0 - 1);
             self.out.extend_from_slice(b"\"model_notes\":\"");
