@@ -37,6 +37,8 @@ impl Flat {
 struct Leaves<'a> {
     flat: &'a mut Flat,
     name: &'a mut String,
+    /// Set when the value is a string (an array element: the array then gives no leaves).
+    string: Option<&'a mut bool>,
 }
 
 impl Leaves<'_> {
@@ -120,7 +122,10 @@ impl<'de> Visitor<'de> for Leaves<'_> {
         });
         Ok(())
     }
-    fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<(), E> {
+    fn visit_str<E: serde::de::Error>(mut self, v: &str) -> Result<(), E> {
+        if let Some(s) = self.string.take() {
+            *s = true;
+        }
         self.leaf(|c| push_text(c, v));
         Ok(())
     }
@@ -133,6 +138,7 @@ impl<'de> Visitor<'de> for Leaves<'_> {
             m.next_value_seed(Leaves {
                 flat: self.flat,
                 name: self.name,
+                string: None,
             })?;
             self.name.truncate(len);
         }
@@ -145,22 +151,23 @@ impl<'de> Visitor<'de> for Leaves<'_> {
         let mut i = 0;
         loop {
             let len = enter_index(self.name, i);
+            let mut string = false;
             let next = if keep {
                 let leaves = Leaves {
                     flat: self.flat,
                     name: self.name,
+                    string: Some(&mut string),
                 };
-                s.next_element_seed(Element(leaves))?
+                s.next_element_seed(leaves)?
             } else {
-                s.next_element::<IgnoredAny>()?.map(|_| false)
+                s.next_element::<IgnoredAny>()?.map(|_| ())
             };
             self.name.truncate(len);
-            match next {
-                None => break,
-                // A string element: the array gives no leaves.
-                Some(true) => keep = false,
-                Some(false) => {}
+            if next.is_none() {
+                break;
             }
+            // A string element: the array gives no leaves.
+            keep &= !string;
             i += 1;
             if i > MAX_ARRAY {
                 keep = false;
@@ -172,47 +179,6 @@ impl<'de> Visitor<'de> for Leaves<'_> {
             self.flat.ends.truncate(mark.2);
         }
         Ok(())
-    }
-}
-
-/// An array element: its leaves, and whether it was a string.
-struct Element<'a>(Leaves<'a>);
-
-impl<'de> DeserializeSeed<'de> for Element<'_> {
-    type Value = bool;
-    fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<bool, D::Error> {
-        d.deserialize_any(self)
-    }
-}
-
-impl<'de> Visitor<'de> for Element<'_> {
-    type Value = bool;
-    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-        f.write_str("a JSON value")
-    }
-    fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<bool, E> {
-        self.0.visit_str::<E>(v).map(|()| true)
-    }
-    fn visit_bool<E: serde::de::Error>(self, v: bool) -> Result<bool, E> {
-        self.0.visit_bool::<E>(v).map(|()| false)
-    }
-    fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<bool, E> {
-        self.0.visit_u64::<E>(v).map(|()| false)
-    }
-    fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<bool, E> {
-        self.0.visit_i64::<E>(v).map(|()| false)
-    }
-    fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<bool, E> {
-        self.0.visit_f64::<E>(v).map(|()| false)
-    }
-    fn visit_unit<E: serde::de::Error>(self) -> Result<bool, E> {
-        self.0.visit_unit::<E>().map(|()| false)
-    }
-    fn visit_map<A: MapAccess<'de>>(self, m: A) -> Result<bool, A::Error> {
-        self.0.visit_map(m).map(|()| false)
-    }
-    fn visit_seq<A: SeqAccess<'de>>(self, s: A) -> Result<bool, A::Error> {
-        self.0.visit_seq(s).map(|()| false)
     }
 }
 
@@ -238,6 +204,7 @@ impl<'de> Visitor<'de> for Line {
                     m.next_value_seed(Leaves {
                         flat: &mut flat,
                         name: &mut name,
+                        string: None,
                     })?;
                 }
                 _ => {
