@@ -318,11 +318,6 @@ pub fn run_stage_with(
         let units = [Drive::Forces([1.0; 3]), Drive::Strokes(unit_z)];
         user_drives.iter().copied().chain(units)
     };
-    // Named, for the FE model (built only off the sweep's hot path).
-    let user = || -> Vec<(String, Drive)> {
-        let names = case.load_cases.iter().map(|lc| lc.name.to_string());
-        names.zip(user_drives.iter().copied()).collect()
-    };
     // The linear numbers come from the stage solved on its condensed form without an FE model
     // (stage::LinearStage), else (ideal joints, or a failure the FE model then reports) from
     // the FE model; the model is built only for that, files, modes or nonlinear cases.
@@ -338,16 +333,24 @@ pub fn run_stage_with(
     });
     let nonlinear = case.nonlinear_steps();
     let s = (files || case.modes.is_some() || nonlinear.is_some() || condensed.is_none()).then(|| design.build());
+    // The user's cases named, for the FE model (only when it is built: off the sweep's hot path).
+    let user: Vec<(String, Drive)> = match &s {
+        Some(_) => {
+            let names = case.load_cases.iter().map(|lc| lc.name.to_string());
+            names.zip(user_drives.iter().copied()).collect()
+        }
+        None => Vec::new(),
+    };
     // The FE results of the user's cases (with files: the .vtu are drawn from them).
     let mut fe_cases = Vec::new();
     let (responses, compliance) = match (condensed, &s) {
         (Some(c), Some(s)) if files && nonlinear.is_none() => {
-            fe_cases = s.analyse_with(cache, &user(), false).map_err(fem_err)?.cases;
+            fe_cases = s.analyse_with(cache, &user, false).map_err(fem_err)?.cases;
             c
         }
         (Some(c), _) => c,
         (None, Some(s)) => {
-            let mut drives = user();
+            let mut drives = user.clone();
             drives.push(("unit_force".into(), Drive::Forces([1.0; 3])));
             drives.push(("unit_z".into(), Drive::Strokes(unit_z)));
             let mut a = s.analyse_with(cache, &drives, true).map_err(fem_err)?;
@@ -365,7 +368,7 @@ pub fn run_stage_with(
     let stiffness_z = z.forces.iter().sum::<f64>() / (unit_z.iter().sum::<f64>() / 3.0);
     let at_allowable = at_allowable(allowable, u);
     let nonlinear_cases = match (nonlinear, &s) {
-        (Some(steps), Some(s)) => Some(s.solve_nonlinear(&user(), steps).map_err(fem_err)?),
+        (Some(steps), Some(s)) => Some(s.solve_nonlinear(&user, steps).map_err(fem_err)?),
         _ => None,
     };
     let load_cases = match &nonlinear_cases {
@@ -409,7 +412,7 @@ pub fn run_stage_with(
                 ));
             }
             // The same model as a `static` case (none with ideal joints, see StageModel::mesh_case).
-            if let Some(mesh) = s.mesh_case(&user(), nonlinear) {
+            if let Some(mesh) = s.mesh_case(&user, nonlinear) {
                 let text = serde_json::to_string_pretty(&mesh)
                     .map_err(|e| AnalysisError::new("stage", format!("stage_mesh.json: {e}")))?;
                 out_files.push(("stage_mesh.json".to_string(), text.into_bytes()));
