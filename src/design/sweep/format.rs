@@ -142,7 +142,7 @@ impl LineFormat {
 }
 
 /// The value at a dotted path (object keys, array indices).
-fn pointer<'a>(v: &'a Value, path: &[&str]) -> Option<&'a Value> {
+pub(super) fn pointer<'a>(v: &'a Value, path: &[&str]) -> Option<&'a Value> {
     path.iter().try_fold(v, |v, key| match v {
         Value::Object(m) => m.get(*key),
         Value::Array(a) => key.parse::<usize>().ok().and_then(|i| a.get(i)),

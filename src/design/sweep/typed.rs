@@ -11,6 +11,7 @@
 //! or panics, or whose notes the route cannot reference, is run again on the value route, so
 //! error rows are the value route's too.
 
+use super::format::pointer;
 use super::hash::canonical;
 use super::{Line, LineFormat, Shapes};
 use crate::analysis::line::{fnv128, LineSpec, LineTarget, ResultLine, FNV128_OFFSET};
@@ -49,17 +50,6 @@ pub(super) struct Worker {
     picks: Vec<usize>,
 }
 
-/// The number a JSON path holds, if it holds one.
-fn number_at(root: &Value, path: &[&str]) -> Option<f64> {
-    path.iter()
-        .try_fold(root, |v, key| match v {
-            Value::Object(m) => m.get(*key),
-            Value::Array(a) => key.parse::<usize>().ok().and_then(|i| a.get(i)),
-            _ => None,
-        })?
-        .as_f64()
-}
-
 impl<'s> Typed<'s> {
     /// The typed route of `sweep` written in `format`, when it gives the same lines as the value
     /// route (see the module docs).
@@ -71,7 +61,7 @@ impl<'s> Typed<'s> {
         let paths: Vec<Vec<&str>> = sweep.axes.iter().map(|(p, _)| p.split('.').collect()).collect();
         let mut numbers = Vec::with_capacity(paths.len());
         for (path, (_, values)) in paths.iter().zip(&sweep.axes) {
-            number_at(&sweep.base, path)?;
+            pointer(&sweep.base, path)?.as_f64()?;
             numbers.push(values.iter().map(Value::as_f64).collect::<Option<Vec<f64>>>()?);
         }
         let parse = |i: usize| shapes.parse(sweep.design(i).ok()?, base_dir).ok();
