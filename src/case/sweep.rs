@@ -66,13 +66,19 @@ impl Sweep {
         self.len() == 0
     }
 
-    /// The parameters of design `index` (path → value), in axis order.
-    pub fn params(&self, mut index: usize) -> Map<String, Value> {
-        let mut picks = vec![0; self.axes.len()];
+    /// The value index on each axis of design `index` (row-major, the last axis fastest), into
+    /// `picks` (one per axis).
+    pub fn picks(&self, mut index: usize, picks: &mut [usize]) {
         for (k, (_, vals)) in self.axes.iter().enumerate().rev() {
             picks[k] = index % vals.len();
             index /= vals.len();
         }
+    }
+
+    /// The parameters of design `index` (path → value), in axis order.
+    pub fn params(&self, index: usize) -> Map<String, Value> {
+        let mut picks = vec![0; self.axes.len()];
+        self.picks(index, &mut picks);
         self.axes
             .iter()
             .zip(picks)

@@ -24,6 +24,7 @@ use std::path::Path;
 
 /// A sweep ready for the typed route.
 pub(super) struct Typed<'s> {
+    sweep: &'s Sweep,
     kind: &'static dyn DynAnalysis,
     /// The parsed case of design 0 (every varied number is set again for each design).
     base: Case,
@@ -67,6 +68,7 @@ impl<'s> Typed<'s> {
         let parse = |i: usize| shapes.parse(sweep.design(i).ok()?, base_dir).ok();
         let base = parse(0)?;
         let typed = Typed {
+            sweep,
             kind,
             paths,
             texts: sweep
@@ -94,7 +96,7 @@ impl<'s> Typed<'s> {
             notes_by_ref: format.notes_by_ref,
             base,
         };
-        let typed = typed.with_hash_template(sweep)?;
+        let typed = typed.with_hash_template()?;
         // The numbers set in the parsed case must give the parsed design.
         let mut w = typed.worker();
         for i in [0, sweep.len() / 2, sweep.len() - 1] {
@@ -108,7 +110,8 @@ impl<'s> Typed<'s> {
     }
 
     /// Splits the canonical text of the base case at the varied values.
-    fn with_hash_template(mut self, sweep: &Sweep) -> Option<Self> {
+    fn with_hash_template(mut self) -> Option<Self> {
+        let sweep = self.sweep;
         let mark = |k: usize| format!("\u{1}flexfem-axis-{k}\u{1}");
         let mut base = sweep.base.clone();
         for (k, (path, _)) in sweep.axes.iter().enumerate() {
@@ -156,11 +159,8 @@ impl<'s> Typed<'s> {
     }
 
     /// Sets design `index`'s numbers in the worker's case.
-    fn set(&self, w: &mut Worker, mut index: usize) -> Option<()> {
-        for (k, vals) in self.numbers.iter().enumerate().rev() {
-            w.picks[k] = index % vals.len();
-            index /= vals.len();
-        }
+    fn set(&self, w: &mut Worker, index: usize) -> Option<()> {
+        self.sweep.picks(index, &mut w.picks);
         for (k, path) in self.paths.iter().enumerate() {
             *self.kind.number_mut(&mut w.case, path)? = self.numbers[k][w.picks[k]];
         }
