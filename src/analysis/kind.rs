@@ -233,10 +233,8 @@ impl<A: CaseOf> DynAnalysis for Entry<A> {
             return None;
         }
         let mut run = || -> Result<(), RunError> {
-            let result = A::run(c, ctx)?;
-            let mut warnings = std::mem::take(&mut ctx.warnings);
-            warnings.extend(A::case_warnings(c));
-            warnings.extend(A::result_warnings(c, &result));
+            // The sweep's context renders no report and no files: only the result and warnings.
+            let Typed { result, warnings, .. } = run_typed::<A>(c, ctx)?;
             super::check_finite(&result)?;
             let material = match spec_material {
                 Some(spec) => Some((spec, spec.resolve("material")?)),
