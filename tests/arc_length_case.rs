@@ -107,6 +107,7 @@ fn bundled_shallow_arch_limits_bound_the_traced_path() {
         .unwrap_or_default();
     let first_unstable = stable.iter().position(|s| !s).unwrap_or(lam.len());
     let max_before = lam[..first_unstable].iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    assert_eq!(stable.len(), lam.len(), "one stability flag per trace point");
     let min_unstable = lam[first_unstable..]
         .iter()
         .zip(&stable[first_unstable..])

@@ -41,8 +41,10 @@ fn check(what: &str, got: f64, reference: f64, tol: f64) {
 
 /// Euler's column P = π²EI/(KL)² (S. P. Timoshenko, J. M. Gere, Theory of Elastic Stability,
 /// 2nd ed., 1961, §2.1–2.4): pinned–pinned K = 1, clamped–free K = 2, clamped–clamped
-/// K = 1/2; within 0.1 % with 8, 10 and 16 elements (the consistent geometric stiffness
-/// converges as h⁴).
+/// K = 1/2; within `EULER_TOL` = 0.01 % with 8, 10 and 16 elements (measured ≤ 0.0033 %: the
+/// consistent geometric stiffness converges as h⁴).
+const EULER_TOL: f64 = 1e-4;
+
 #[test]
 fn euler_columns() {
     let (l, w, h): (f64, f64, f64) = (1000.0, 10.0, 20.0);
@@ -54,10 +56,10 @@ fn euler_columns() {
     m.supports.push(Support::dofs(8, &[Uy, Uz]));
     m.load_cases.push(load(8, [-1.0, 0.0, 0.0, 0.0, 0.0, 0.0]));
     let lam = lowest(&m, 2);
-    check("pinned–pinned (8 el.)", lam[0], PI * PI * ei / (l * l), 1e-3);
+    check("pinned–pinned (8 el.)", lam[0], PI * PI * ei / (l * l), EULER_TOL);
     // The second mode: the strong axis (4× the weak-axis load for h = 2w), before the second
-    // weak-axis mode (also 4×): both 4 π²EI/L² within 0.1 %.
-    check("pinned–pinned mode 2", lam[1], 4.0 * PI * PI * ei / (l * l), 1e-3);
+    // weak-axis mode (also 4×): both 4 π²EI/L² within 0.01 %.
+    check("pinned–pinned mode 2", lam[1], 4.0 * PI * PI * ei / (l * l), EULER_TOL);
     // Clamped–free, 10 elements.
     let mut m = column(10, l, w, h);
     m.supports.push(Support::clamp(0));
@@ -66,7 +68,7 @@ fn euler_columns() {
         "clamped–free (10 el.)",
         lowest(&m, 1)[0],
         PI * PI * ei / (4.0 * l * l),
-        1e-3,
+        EULER_TOL,
     );
     // Clamped–clamped (the top slides axially), 16 elements.
     let mut m = column(16, l, w, h);
@@ -77,7 +79,7 @@ fn euler_columns() {
         "clamped–clamped (16 el.)",
         lowest(&m, 1)[0],
         4.0 * PI * PI * ei / (l * l),
-        1e-3,
+        EULER_TOL,
     );
 }
 
@@ -90,13 +92,13 @@ fn reversed_load_gives_a_negative_multiplier() {
     m.supports.push(Support::clamp(0));
     m.load_cases.push(load(10, [2.0, 0.0, 0.0, 0.0, 0.0, 0.0]));
     let lam = lowest(&m, 1)[0];
-    check("reversed clamped–free", -2.0 * lam, PI * PI * ei / (4.0 * l * l), 1e-3);
+    check("reversed clamped–free", -2.0 * lam, PI * PI * ei / (4.0 * l * l), EULER_TOL);
 }
 
 /// Lateral–torsional buckling of a deep simply supported beam (fork supports: lateral
 /// displacement and twist held, warping free) under uniform moment:
 /// M_cr = (π/L)·√(E·I_z·G·J) (Timoshenko & Gere 1961, §6.2, eq. (6-19) without warping
-/// rigidity), within 2 % with 20 elements. Section 5 × 50 mm (h along local z): strong axis
+/// rigidity), within 0.5 % with 20 elements (measured +0.18 %). Section 5 × 50 mm (h along local z): strong axis
 /// local y, weak axis local z.
 #[test]
 fn lateral_torsional_buckling_of_a_deep_beam() {
@@ -117,9 +119,9 @@ fn lateral_torsional_buckling_of_a_deep_beam() {
     let g = STEEL.e / (2.0 * (1.0 + STEEL.nu));
     let m_cr = PI / l * (STEEL.e * p.iz * g * p.j).sqrt();
     let lam = lowest(&m, 2);
-    check("lateral–torsional (20 el.)", lam[0].abs(), m_cr, 0.02);
+    check("lateral–torsional (20 el.)", lam[0].abs(), m_cr, 5e-3);
     // Uniform moment of either sign buckles the beam at the same magnitude.
-    check("lateral–torsional, reversed", lam[1].abs(), m_cr, 0.02);
+    check("lateral–torsional, reversed", lam[1].abs(), m_cr, 5e-3);
     assert!(lam[0] * lam[1] < 0.0, "one positive, one negative multiplier: {lam:?}");
 }
 
@@ -152,7 +154,7 @@ fn parallel_leaf_guide_under_axial_load() {
         "leaf guide sway",
         r.modes[0].load_factor,
         2.0 * PI * PI * ei / (l * l),
-        0.01,
+        5e-4, // measured −0.018 %
     );
     // The mode is the sway of the bar along x (the leaves' compliant direction).
     let top = r.modes[0].shape[tops[0]];

@@ -52,7 +52,8 @@ fn notch_hinge_column_matches_the_segmented_notch() {
         "hinge column: one element {p1:.3} N, 48 segments {p48:.3} N ({:+.3} %), rigid bar on k_θ/L {closed:.3} N",
         100.0 * (p1 - p48) / p48
     );
-    assert!(((p1 - p48) / p48).abs() < 0.05, "{p1} vs {p48}");
+    // Measured +1.73 %.
+    assert!(((p1 - p48) / p48).abs() < 0.03, "{p1} vs {p48}");
     // The mode: the bar tilts (the top moves along z, the thin direction of the notch).
     let top = one.modes[0].shape[5];
     assert!((top[2].abs() - 1.0).abs() < 1e-9, "{top:?}");

@@ -85,6 +85,7 @@ fn bundled_kinematics_case_prints_table4_fkp_column() {
         .iter()
         .map(|r| r["z"].as_f64().unwrap() * 1000.0)
         .collect();
+    assert_eq!(z.len(), 4, "Table 4 rows");
     for (got, want) in z.iter().zip([1384.0, 722.0, -631.0, -1511.0]) {
         assert!((got - want).abs() <= 2.0, "{got} vs {want}");
     }

@@ -41,6 +41,7 @@ fn ten_modes_converge_to_the_full_model() {
     let cb = se.eigenvalues(3).unwrap();
     let full = solve_modal(&model, &ModalOptions::new(3)).unwrap();
     let mut worst: f64 = 0.0;
+    assert_eq!(cb.len(), full.modes.len());
     for (a, mode) in cb.iter().zip(&full.modes) {
         worst = worst.max((a - mode.eigenvalue).abs() / mode.eigenvalue);
     }

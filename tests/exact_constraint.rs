@@ -24,6 +24,7 @@ fn parallelogram(kinds: [Value; 4]) -> Value {
     let mut elements: Vec<Value> = (0..4)
         .map(|i| json!({"type": "beam", "nodes": [2 * i, 2 * i + 1], "section": "bar", "material": "al", "up": Z}))
         .collect();
+    // zip-checked: both sides are [_; 4] arrays.
     for ((a, b), mut k) in [(1, 2), (3, 4), (5, 6), (7, 0)].into_iter().zip(kinds) {
         k["type"] = json!("joint");
         k["nodes"] = json!([a, b]);

@@ -111,6 +111,7 @@ fn scale<'a>(v: impl Iterator<Item = &'a f64>) -> f64 {
 
 fn assert_same(full: &CaseResult, cond: &CaseResult) {
     let su = scale(full.displacements.iter().flatten());
+    assert_eq!(full.displacements.len(), cond.displacements.len());
     for (n, (a, b)) in full.displacements.iter().zip(&cond.displacements).enumerate() {
         for i in 0..6 {
             assert!(
@@ -136,6 +137,7 @@ fn assert_same(full: &CaseResult, cond: &CaseResult) {
         }
     }
     let sf = scale(full.elements.iter().flat_map(|e| e.section_forces.iter().flatten()));
+    assert_eq!(full.elements.len(), cond.elements.len());
     for (ie, (a, b)) in full.elements.iter().zip(&cond.elements).enumerate() {
         for k in 0..2 {
             for i in 0..6 {

@@ -131,6 +131,7 @@ proptest! {
         let (r0, r1) = (solve_static(&m0).unwrap(), solve_static(&m1).unwrap());
         let (c0, c1) = (&r0.load_cases[0], &r1.load_cases[0]);
         let scale = c0.displacements.iter().flat_map(|u| u.iter()).fold(0.0f64, |a, v| a.max(v.abs()));
+        prop_assert_eq!(c0.displacements.len(), c1.displacements.len());
         for (u0, u1) in c0.displacements.iter().zip(&c1.displacements) {
             let expect = rot6(&q, *u0);
             for d in 0..6 {
@@ -139,10 +140,12 @@ proptest! {
         }
         let (v0, v1) = (c0.max_von_mises.unwrap(), c1.max_von_mises.unwrap());
         prop_assert!((v0 - v1).abs() <= 1e-9 * v0);
+        prop_assert_eq!(c0.elements.len(), c1.elements.len());
         for (e0, e1) in c0.elements.iter().zip(&c1.elements) {
             prop_assert!((e0.strain_energy - e1.strain_energy).abs() <= 1e-9 * e0.strain_energy.abs().max(1e-12));
         }
         let r = rot6(&q, c0.reactions[0].1);
+        // zip-checked: two [f64; 6] reactions.
         for (a, b) in c1.reactions[0].1.iter().zip(&r) {
             prop_assert!((a - b).abs() <= 1e-9 * 1000.0);
         }

@@ -1,13 +1,10 @@
-//! Lattice generator, Matrix Market output and the 200k-DOF timing run (ignored by default:
-//! `cargo test --release --test fem_lattice -- --ignored --nocapture`).
+//! Lattice generator and Matrix Market output. The 200k-DOF timing run is an example:
+//! `cargo run --release --example lattice_200k`.
 
-use flexfem::fem::assembly::Pattern;
-use flexfem::fem::constraints::DofMap;
 use flexfem::fem::lattice::{cubic_lattice, flexure_chain};
-use flexfem::fem::solve::{Factor, Parallelism, SymbolicFactor};
+use flexfem::fem::solve::Parallelism;
 use flexfem::fem::{solve_static, Section, System};
 use flexfem::material::Material;
-use std::time::Instant;
 
 #[test]
 fn small_lattice_is_balanced_and_symmetric() {
@@ -59,54 +56,6 @@ fn refactor_on_the_same_pattern_matches_a_fresh_solve() {
 }
 
 #[test]
-#[ignore]
-fn lattice_200k_timing_and_matrix_market() {
-    let t = Instant::now();
-    let m = cubic_lattice(31, 10.0, Section::Circle { d: 1.5 }, Material::AL7075, 1000.0);
-    println!("build model: {:?}, {} DOF", t.elapsed(), m.n_dofs());
-    let t = Instant::now();
-    let map = DofMap::new(&m, &[], None).unwrap();
-    let pat = Pattern::new(&m, &map).unwrap();
-    println!(
-        "pattern: {:?} ({} eqs, {} triplets, {} nnz)",
-        t.elapsed(),
-        pat.n_eq(),
-        pat.n_triplets(),
-        pat.nnz()
-    );
-    let t = Instant::now();
-    let vals = pat.values(&m, &map).unwrap();
-    println!("values: {:?}", t.elapsed());
-    let t = Instant::now();
-    let k = pat.matrix(&vals).unwrap();
-    println!("sum into CSC: {:?}", t.elapsed());
-    let t = Instant::now();
-    let sym = SymbolicFactor::new(pat.sparse()).unwrap();
-    println!("symbolic (AMD): {:?}, nnz(L) = {}", t.elapsed(), sym.nnz_l());
-    let t = Instant::now();
-    let f = Factor::new(&sym, &k, Parallelism::Rayon).unwrap();
-    println!("numeric factor: {:?}", t.elapsed());
-    let t = Instant::now();
-    let mut rhs = vec![1.0; pat.n_eq()];
-    f.solve_in_place(&mut rhs, 1).unwrap();
-    println!("solve: {:?}", t.elapsed());
-    let kx = k.mul_vec(&rhs);
-    let res = kx.iter().map(|v| (v - 1.0).powi(2)).sum::<f64>().sqrt() / (pat.n_eq() as f64).sqrt();
-    println!("relative residual: {res:e}");
-    let t = Instant::now();
-    let mut file = std::io::BufWriter::new(std::fs::File::create("/tmp/lattice200k.mtx").unwrap());
-    k.write_matrix_market(&mut file).unwrap();
-    println!("mtx written: {:?}", t.elapsed());
-    let t = Instant::now();
-    let r = solve_static(&m).unwrap();
-    println!(
-        "solve_static end to end (incl. recovery): {:?}, max vM {:?}",
-        t.elapsed(),
-        r.load_cases[0].max_von_mises
-    );
-}
-
-#[test]
 fn bundled_lattice_mesh_is_the_generator_model() {
     // meshes/lattice_3x3x3.json is `cubic_lattice(3, 20 mm, Ø2 mm struts, Al 7075, 100 N)`
     // written out in the case format: running it through `static` gives the generator's answer.
@@ -128,6 +77,7 @@ fn bundled_lattice_mesh_is_the_generator_model() {
     let (ua, ub) = (&a.load_cases[0].displacements, &b.load_cases[0].displacements);
     assert_eq!(ua.len(), 64);
     let scale = ub.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+    assert_eq!(ub.len(), ua.len());
     for (x, y) in ua.iter().flatten().zip(ub.iter().flatten()) {
         assert!((x - y).abs() <= 1e-9 * scale);
     }

@@ -45,6 +45,7 @@ fn amd_nd_difference(mut model: Model) -> f64 {
     }
     let scale = u[0].iter().fold(0.0f64, |m, v| m.max(v.abs()));
     assert!(scale > 0.0);
+    assert_eq!(u[0].len(), u[1].len());
     u[0].iter().zip(&u[1]).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max) / scale
 }
 

@@ -33,6 +33,7 @@ fn result_text(case: &Path) -> String {
 
 /// The first differing line of two texts, for the failure message.
 fn first_difference(want: &str, got: &str) -> String {
+    // zip-checked: a failure message; unequal line counts are reported after the loop.
     for (i, (w, g)) in want.lines().zip(got.lines()).enumerate() {
         if w != g {
             return format!("line {}:\n  golden: {w}\n  now:    {g}", i + 1);

@@ -5,7 +5,7 @@
 //!
 //! With stiffness-proportional material damping C = β K every mode of the hinge is heavily
 //! overdamped (ζᵢ = β ωᵢ/2 ≫ 1) and its slow pole is −1/β, so the fitted second-order joint has
-//! D/K = β: the test asserts it within 1 %.
+//! D/K = β: the test asserts it within `DK_TOL` (measured −1.2e-11 at β = 0.05, −6.5e-9 at 0.01).
 //!
 //! Against the paper (K = 4.78 N·mm/°, D = 0.226 N·mm·s/°, so D/K = 0.0473 s): our D is
 //! 0.2071 N·mm·s/°, 8.4 % lower. Two reasons, both asserted below: (1) our K from the hinge's
@@ -37,6 +37,9 @@ fn run(beta: f64) -> DampingRun {
     }
 }
 
+/// Relative tolerance on D/K = β.
+const DK_TOL: f64 = 2e-8;
+
 #[test]
 fn stiffness_proportional_damping_is_identified() {
     let p = paper_hinge();
@@ -50,7 +53,8 @@ fn stiffness_proportional_damping_is_identified() {
             d.j,
             d.residual
         );
-        assert!((ratio / beta - 1.0).abs() < 0.01, "D/K = {ratio} for beta = {beta}");
+        eprintln!("D/K / beta − 1 = {:+.2e}", ratio / beta - 1.0);
+        assert!((ratio / beta - 1.0).abs() < DK_TOL, "D/K = {ratio} for beta = {beta}");
         // The second-order model reproduces the simulated response (RMS < 0.1 % of static).
         assert!(d.residual < 1e-3, "residual {}", d.residual);
     }

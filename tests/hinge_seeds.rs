@@ -27,20 +27,25 @@ fn ruiz2019_revolute_circular_notch() {
     // restrained warping must stiffen it into that band.
     let gain = r.hinge.k_torsion / r.hinge.k_torsion_saint_venant;
     assert!(gain > 1.2 && gain < 2.0, "Vlasov/Saint-Venant = {gain}");
-    // Ruiz et al. (2019) §4: the revolute joint must reach ±1.7° below 400 MPa.
-    assert!(r.hinge.max_rotation_deg > 1.0 && r.hinge.max_rotation_deg < 3.0);
+    // Ruiz et al. (2019) §4 ask the revolute joint to reach ±1.7° below 400 MPa. This model's
+    // notch reaches 1.546° at 400 MPa (its peak stress per unit moment is conservative: the
+    // Table 2 stresses come out 3–5 % above ANSYS's), so the requirement is not met here; the
+    // value is pinned, not claimed.
+    eprintln!("revolute notch: k_bend {e:+.2} %, rotation at the allowable {}°", r.hinge.max_rotation_deg);
+    assert!((r.hinge.max_rotation_deg - 1.546).abs() < 0.005, "{}°", r.hinge.max_rotation_deg);
 }
 
 #[test]
 fn ruiz2019_spherical_neck() {
     // Ruiz et al. (2019) §5: l = 5, t = 3, R = 4 in the 10×10 leg, 20 mm blank each side;
-    // ANSYS bending 32.67 N·m/rad, torsion 24.46 N·m/rad.
+    // ANSYS bending 32.67 N·m/rad, torsion 24.46 N·m/rad; measured +0.6 %, +0.7 % (2 % asserted).
     let spec = fixtures::ruiz2019_spherical_hinge();
     let r = characterise(&spec, &al()).unwrap();
     let eb = pct(r.hinge.k_bend, 32_670.0);
     let et = pct(r.hinge.k_torsion, 24_460.0);
-    assert!(eb.abs() < 5.0, "bending {} ({eb:.2} %)", r.hinge.k_bend);
-    assert!(et.abs() < 5.0, "torsion {} ({et:.2} %)", r.hinge.k_torsion);
+    eprintln!("neck: bending {eb:+.2} %, torsion {et:+.2} %");
+    assert!(eb.abs() < 2.0, "bending {} ({eb:.2} %)", r.hinge.k_bend);
+    assert!(et.abs() < 2.0, "torsion {} ({et:.2} %)", r.hinge.k_torsion);
     // Axisymmetric waist: both bending axes equal (geometry).
     assert!((r.hinge.k_bend - r.hinge.k_bend_off).abs() < 1e-9 * r.hinge.k_bend);
 }

@@ -2,7 +2,7 @@
 //!
 //! The issue's accuracy bands refer to converged quadratic-tetrahedron (C3D10) solid models.
 //! The references below were computed with `tools/solid_reference.py`: the exact geometry of
-//! The hinge geometry built in gmsh 4.15 (OpenCASCADE), meshed with 10-node tetrahedra whose size is the
+//! the hinge built in gmsh 4.15 (OpenCASCADE), meshed with 10-node tetrahedra whose size is the
 //! local thickness / n (n = 5 here, 4 for the thinnest notches), solved with scikit-fem 12
 //! (P2 Lagrange, isoparametric) and CHOLMOD; one blank end face clamped, the other rigid
 //! (six unit rigid motions → 6×6 face stiffness → compliance at the face centre); peak
@@ -15,10 +15,18 @@
 //! Mesh convergence on the Ruiz et al. notch: n = 3 → 5 changes k_bend by −0.55 %, on the
 //! corner-filleted hinge by −0.6 %.
 //!
-//! flexfem's beam model uses three solid-calibrated ingredients (load spreading at slope 1/2,
-//! the short-notch factor G, the plane-strain factor P, see `hinge::solid_effects`). Most rows
-//! below were used to find them (circular notches, necks); the rows marked HELD OUT were
-//! computed afterwards and never used in a fit.
+//! These references are ours (computed here), so every comparison below is a cross-check of
+//! the beam model against our own solid models, not an independent validation.
+//!
+//! flexfem's beam model uses solid-calibrated ingredients (load spreading at slope 1/2, the
+//! short-notch factor G, the plane-strain factor P — `hinge::solid_effects` —, the turned
+//! neck's K_t — `hinge::stress` —, and the torsion load spreading), all found on the rows of
+//! [`FITTED`] (commit "hinge: solid-calibrated beam model …" and the torsion commit after it):
+//! 36 of the 41 circular notches, 5 of the 7 necks and the pan-tilt corner-filleted hinge.
+//! Their errors are fit residuals, reported and asserted apart from those of [`HELD_OUT`]:
+//! 9 models computed after the fits and never used in one (5 circular notches, 2 necks, an
+//! elliptical notch, a leaf). Nine rows are few; they show that the laws carry over to those
+//! geometries, no more.
 
 use flexfem::hinge::{characterise, HingeSpec};
 use flexfem::material::Material;
@@ -38,7 +46,11 @@ struct Ref {
     spm: f64,
 }
 
-const REFS: &[Ref] = &[
+/// Rows used to fit the solid-calibrated ingredients (commit "hinge: solid-calibrated beam
+/// model"): the short-notch factor G and the plane-strain factor P on the circular notches, the
+/// neck's K_t on the necks, the torsion load spreading on the circular notches and the
+/// corner-filleted hinge. Errors on these rows are fit residuals, not accuracy.
+const FITTED: &[Ref] = &[
     // Ruiz et al. (2019) revolute notch, n = 5 (n = 3: 96449).
     Ref {
         hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 2.0, "w": 10.0, "h": 10.0, "blank_length": 20.0}"#,
@@ -418,7 +430,12 @@ const REFS: &[Ref] = &[
         k_axial: 3362.34,
         spm: 1.63574,
     },
-    // HELD OUT: computed after the fits.
+];
+
+/// Rows computed after the fits and never used in one: the only evidence of accuracy on unseen
+/// geometry. Nine models — five circular notches, two necks, one elliptical notch, one leaf —
+/// a small set; the figures below are what it shows, no more.
+const HELD_OUT: &[Ref] = &[
     Ref {
         hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 2.0, "w": 10.0, "h": 10.0, "blank_length": 0.0}"#,
         e: 72000.0,
@@ -511,8 +528,8 @@ struct Row {
     spm: f64,
 }
 
-fn rows() -> Vec<Row> {
-    REFS.iter()
+fn rows(refs: &[Ref]) -> Vec<Row> {
+    refs.iter()
         .map(|r| {
             let spec: HingeSpec = serde_json::from_str(r.hinge).unwrap_or_else(|e| panic!("{}: {e}", r.hinge));
             let m = Material {
@@ -540,68 +557,141 @@ fn rows() -> Vec<Row> {
         .collect()
 }
 
-/// Circular notches, t/R 0.06–0.5, all widths: issue bands (bending 5 % to t/R = 0.4, 10 % to
-/// 0.5; axial 10 %; peak von Mises per unit moment 8 %) and what the model achieves
-/// (bending 2.5 %, axial 4 %, stress 6 %, torsion 12 %) so that a regression shows.
-#[test]
-fn circular_notches_match_solid_models() {
-    let mut n = 0;
-    for r in rows() {
-        let HingeSpec::CircularNotch { r: rad, t, .. } = r.spec else {
-            continue;
-        };
-        n += 1;
-        let band: f64 = if t / rad <= 0.4 { 5.0 } else { 10.0 };
-        assert!(r.bend.abs() < band.min(2.5), "{:?}: bending {:+.2} %", r.spec, r.bend);
-        assert!(r.axial.abs() < 4.0, "{:?}: axial {:+.2} %", r.spec, r.axial);
-        assert!(r.spm.abs() < 6.0, "{:?}: stress per moment {:+.2} %", r.spec, r.spm);
-        // Rectangular-section torsion with warping restraint: issue band 20 % for t/R ≥ 0.1;
-        // achieved −11.4 … +4.2 % over all rows (12 % asserted).
-        if t / rad >= 0.1 {
-            assert!(r.torsion.abs() < 12.0, "{:?}: torsion {:+.2} %", r.spec, r.torsion);
-        }
-    }
-    assert!(n >= 40, "{n} circular rows");
+fn circular(r: &Row) -> bool {
+    matches!(r.spec, HingeSpec::CircularNotch { .. })
 }
 
-/// Turned necks with l/t ≥ 1: issue bands bending and torsion 8 %, axial 10 %; achieved 3 %,
-/// 5 %, 3 %; peak stress per moment within 2 % with the neck's K_t = 1 + 0.041√(t/R).
-#[test]
-fn turned_necks_match_solid_models() {
-    let mut n = 0;
-    for r in rows() {
-        let HingeSpec::SphericalNeck { l, t, .. } = r.spec else {
-            continue;
-        };
-        assert!(l / t >= 1.0);
-        n += 1;
-        assert!(r.bend.abs() < 3.0, "{:?}: bending {:+.2} %", r.spec, r.bend);
-        assert!(r.torsion.abs() < 5.0, "{:?}: torsion {:+.2} %", r.spec, r.torsion);
-        assert!(r.axial.abs() < 3.0, "{:?}: axial {:+.2} %", r.spec, r.axial);
-        assert!(r.spm.abs() < 2.0, "{:?}: stress per moment {:+.2} %", r.spec, r.spm);
-    }
-    assert_eq!(n, 7);
+fn neck(r: &Row) -> bool {
+    matches!(r.spec, HingeSpec::SphericalNeck { .. })
 }
 
-/// Other families: the elliptical notch (held out) within 1 %, the 8R pan-tilt corner-filleted
-/// hinge within 2.5 % (it is also checked against 4.05 N·mm/° in tests/hinge_seeds.rs), the leaf
-/// within 5 % (its sharp re-entrant corners are beyond beam theory; the solid's peak stress
-/// there is singular and not compared).
+/// Prints the range of each error over `rows` under `label` (the figures the README quotes) and
+/// returns the largest |error| per quantity, %: (bending, torsion, axial, stress per moment).
+fn report(label: &str, rows: &[&Row]) -> [f64; 4] {
+    let range = |f: fn(&Row) -> f64| {
+        let v: Vec<f64> = rows.iter().map(|r| f(r)).collect();
+        let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        (lo, hi, lo.abs().max(hi.abs()))
+    };
+    let q = [range(|r| r.bend), range(|r| r.torsion), range(|r| r.axial), range(|r| r.spm)];
+    println!(
+        "{label} (n = {}): bending {:+.2} … {:+.2} %, torsion {:+.2} … {:+.2} %, axial {:+.2} … {:+.2} %, \
+         peak stress per moment {:+.2} … {:+.2} %",
+        rows.len(),
+        q[0].0,
+        q[0].1,
+        q[1].0,
+        q[1].1,
+        q[2].0,
+        q[2].1,
+        q[3].0,
+        q[3].1
+    );
+    q.map(|(_, _, m)| m)
+}
+
+/// Asserts |error| < tolerance per quantity (bending, torsion, axial, stress per moment, %).
+fn check(label: &str, worst: [f64; 4], tol: [f64; 4]) {
+    // zip-checked: three [_; 4] arrays.
+    for ((w, t), q) in worst.iter().zip(tol).zip(["bending", "torsion", "axial", "stress per moment"]) {
+        assert!(*w < t, "{label}: {q} off by up to {w:.2} %, tolerance {t} %");
+    }
+}
+
+// Fit residuals: how closely the calibrated laws reproduce the rows they were fitted on. A
+// regression pin, not accuracy: asserted at 1.05–2.5× the measured residual (in the comments)
+// so that a change in the hinge model shows.
+
+/// Circular notches used in the fits (36 of 41), t/R 0.06–0.5, w/t 0.5–20, ν = 0 and 0.33.
+/// Torsion for t/R ≥ 0.1 only (below, the warping restraint of a very thin waist is beyond the
+/// beam model). Measured: bending −0.71 … +1.86 %, torsion −11.44 … +4.21 %, axial
+/// +0.90 … +3.78 %, peak stress per moment −1.72 … +5.28 %.
+const CIRCULAR_FIT_TOL: [f64; 4] = [2.5, 12.0, 4.0, 6.0];
+/// The five turned necks used to fit the neck's K_t = 1 + 0.041√(t/R). Measured: bending
+/// −1.77 … +0.79 %, torsion −4.11 … −0.06 %, axial −2.73 … +0.29 %, stress −0.82 … +0.04 %.
+const NECK_FIT_TOL: [f64; 4] = [3.0, 5.0, 3.0, 2.0];
+
+// Held out: computed after the fits, never used in one. Few rows (5 + 2 + 2): what they show
+// is agreement on those geometries, not a statistical accuracy.
+
+/// The five held-out circular notches (R3–R10, t/R 0.13–0.5, one without blanks). Measured:
+/// bending −0.38 … +0.71 %, torsion −10.42 … −2.30 %, axial +0.85 … +3.41 %, stress
+/// −1.67 … +3.38 %.
+const CIRCULAR_HELD_OUT_TOL: [f64; 4] = [2.0, 12.0, 4.0, 6.0];
+/// The two held-out necks (l/t 1 and 1.5, t/R 2 and 0.67). Measured: bending −2.00 … +1.06 %,
+/// torsion −4.01 … −0.11 %, axial −2.28 … −0.16 %, stress −0.61 … +0.02 %.
+const NECK_HELD_OUT_TOL: [f64; 4] = [3.0, 5.0, 3.0, 2.0];
+
+#[test]
+fn circular_notches_fit_residual() {
+    let all = rows(FITTED);
+    let rows: Vec<&Row> = all.iter().filter(|r| circular(r)).collect();
+    assert_eq!(rows.len(), 36);
+    let worst = report("circular notches, fit residual", &rows);
+    let thick: Vec<&Row> = rows
+        .iter()
+        .copied()
+        .filter(|r| matches!(r.spec, HingeSpec::CircularNotch { r: rad, t, .. } if t / rad >= 0.1))
+        .collect();
+    let torsion = report("circular notches t/R ≥ 0.1, fit residual", &thick)[1];
+    check("fitted circular notches", [worst[0], torsion, worst[2], worst[3]], CIRCULAR_FIT_TOL);
+}
+
+#[test]
+fn circular_notches_held_out() {
+    let all = rows(HELD_OUT);
+    let rows: Vec<&Row> = all.iter().filter(|r| circular(r)).collect();
+    assert_eq!(rows.len(), 5);
+    let worst = report("circular notches, HELD OUT", &rows);
+    check("held-out circular notches", worst, CIRCULAR_HELD_OUT_TOL);
+}
+
+#[test]
+fn turned_necks_fit_residual() {
+    let all = rows(FITTED);
+    let rows: Vec<&Row> = all.iter().filter(|r| neck(r)).collect();
+    assert_eq!(rows.len(), 5);
+    for r in &rows {
+        let HingeSpec::SphericalNeck { l, t, .. } = r.spec else { unreachable!() };
+        assert!(l / t >= 1.0, "{:?}", r.spec);
+    }
+    let worst = report("turned necks, fit residual", &rows);
+    check("fitted necks", worst, NECK_FIT_TOL);
+}
+
+#[test]
+fn turned_necks_held_out() {
+    let all = rows(HELD_OUT);
+    let rows: Vec<&Row> = all.iter().filter(|r| neck(r)).collect();
+    assert_eq!(rows.len(), 2);
+    let worst = report("turned necks, HELD OUT", &rows);
+    check("held-out necks", worst, NECK_HELD_OUT_TOL);
+}
+
+/// Other families, one row each: the elliptical notch and the leaf (held out), the 8R pan-tilt
+/// corner-filleted hinge (used to fit the torsion load spreading; its bending is also checked
+/// against 4.05 N·mm/° in tests/hinge_seeds.rs). The leaf's sharp re-entrant corners are beyond
+/// beam theory; the solid's peak stress there is singular and not compared. Measured (bending,
+/// torsion, axial): elliptical −0.67, −7.40, +2.44 %; corner-filleted +2.04, −13.89, −6.13 %;
+/// leaf −4.67, −12.66, −4.29 %.
 #[test]
 fn other_families_match_solid_models() {
+    let fitted = rows(FITTED);
+    let held_out = rows(HELD_OUT);
     let mut n = 0;
-    for r in rows() {
+    for r in fitted.iter().chain(&held_out) {
+        // (bending, torsion, axial) tolerances, %.
         let tol = match r.spec {
-            HingeSpec::EllipticalNotch { .. } => 1.0,
-            HingeSpec::CornerFilleted { .. } => 2.5,
-            HingeSpec::Leaf { .. } => 5.0,
+            HingeSpec::EllipticalNotch { .. } => [1.0, 15.0, 4.0],
+            HingeSpec::CornerFilleted { .. } => [2.5, 15.0, 8.0],
+            HingeSpec::Leaf { .. } => [5.0, 15.0, 6.0],
             _ => continue,
         };
         n += 1;
-        assert!(r.bend.abs() < tol, "{:?}: bending {:+.2} %", r.spec, r.bend);
-        assert!(r.axial.abs() < 10.0, "{:?}: axial {:+.2} %", r.spec, r.axial);
-        // Torsion: elliptical −7.4 %, corner-filleted −13.9 %, leaf −12.7 % (20 % band).
-        assert!(r.torsion.abs() < 15.0, "{:?}: torsion {:+.2} %", r.spec, r.torsion);
+        assert!(r.bend.abs() < tol[0], "{:?}: bending {:+.2} %", r.spec, r.bend);
+        assert!(r.torsion.abs() < tol[1], "{:?}: torsion {:+.2} %", r.spec, r.torsion);
+        assert!(r.axial.abs() < tol[2], "{:?}: axial {:+.2} %", r.spec, r.axial);
     }
     assert_eq!(n, 3);
 }

@@ -55,6 +55,7 @@ fn exported_matrices_give_the_modal_eigenvalues() {
     let from_files = lowest_eigenvalues(&dense(&k), &dense(&m), 6);
     let modal = solve_modal(&s.model, &ModalOptions::new(6)).unwrap();
     let mut worst: f64 = 0.0;
+    assert_eq!(from_files.len(), modal.modes.len());
     for (a, mode) in from_files.iter().zip(&modal.modes) {
         worst = worst.max((a - mode.eigenvalue).abs() / mode.eigenvalue);
     }
@@ -88,6 +89,7 @@ fn cli_export_matrices_of_the_stage_mesh() {
     let modes = result["modes"].as_array().unwrap();
     let lam = lowest_eigenvalues(&dense(&k), &dense(&m), modes.len());
     let mut worst: f64 = 0.0;
+    assert_eq!(lam.len(), modes.len());
     for (l, mode) in lam.iter().zip(modes) {
         let w = 2.0 * std::f64::consts::PI * mode["frequency_hz"].as_f64().unwrap();
         worst = worst.max((l - w * w).abs() / (w * w));
@@ -144,6 +146,7 @@ fn cli_export_matrices_of_a_transient_case() {
     let modal = solve_modal(&model, &ModalOptions::new(6)).unwrap();
     let lam = lowest_eigenvalues(&dense(&k), &dense(&m), 6);
     let mut worst: f64 = 0.0;
+    assert_eq!(lam.len(), modal.modes.len());
     for (l, mode) in lam.iter().zip(&modal.modes) {
         worst = worst.max((l - mode.eigenvalue).abs() / mode.eigenvalue);
     }

@@ -294,7 +294,10 @@ fn pantilt_table3_pitch_and_phase() {
 /// same hinge): the lever turns by θ and both hinges bend by θ, so the strut force is
 /// P = 2k_θθ/a; it stretches the fulcrum (the lever rises by v₀ = P/k_a) and shortens the strut
 /// by P/k_a. Input u = aθ + 2P/k_a, output bθ + P/k_a: ratio (b + g)/(a + 2g), g = 2k_θ/(a·k_a).
-/// FE within 0.5 % of it, and below the ideal 5.
+/// The elastic departure from the ideal 5 is 0.71 %; the FE matches the lumped lever to −7.7e-6,
+/// asserted within `LEVER_TOL` (≈ 3× that), and stays below the ideal 5.
+const LEVER_TOL: f64 = 2.5e-5;
+
 #[test]
 fn lever_amplifier_ratio_matches_the_lumped_lever() {
     let res = run_value(&read_json("cases/lever_amplifier.json"));
@@ -315,7 +318,7 @@ fn lever_amplifier_ratio_matches_the_lumped_lever() {
         "ratio {ratio} must fall below the rigid-linkage {}",
         b / a
     );
-    assert!(rel.abs() < 5e-3, "ratio {ratio} vs lumped {lumped} ({rel:+.3e})");
+    assert!(rel.abs() < LEVER_TOL, "ratio {ratio} vs lumped {lumped} ({rel:+.3e})");
 }
 
 /// X. Han, Y. Wang and J. Shi, "Stiffness modeling of 3-PRS mechanism", Table IV:

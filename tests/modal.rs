@@ -31,6 +31,10 @@ fn beam_hz(beta_l: f64) -> f64 {
     beta_l * beta_l * (STEEL.e * i / (STEEL.density * a * l.powi(4))).sqrt() / (2.0 * PI)
 }
 
+/// Relative tolerance on the 40-element beam frequencies against Euler–Bernoulli (measured
+/// worst −0.033 % clamped–free, −0.045 % free–free).
+const MODAL_BEAM_TOL: f64 = 1e-3;
+
 #[test]
 fn cantilever_beam_frequencies() {
     let mut m = beam(40);
@@ -48,7 +52,7 @@ fn cantilever_beam_frequencies() {
                 2 * k + j + 1,
                 100.0 * err
             );
-            assert!(err.abs() < 0.005, "mode {}: {f} vs {f_ref}", 2 * k + j + 1);
+            assert!(err.abs() < MODAL_BEAM_TOL, "mode {}: {f} vs {f_ref}", 2 * k + j + 1);
         }
     }
     // Mass-normalised shapes: the effective mass Γ² of the first bending mode is 0.613 of the
@@ -78,7 +82,7 @@ fn free_free_beam_six_rigid_modes_then_bending() {
                 7 + 2 * k + j,
                 100.0 * err
             );
-            assert!(err.abs() < 0.005);
+            assert!(err.abs() < MODAL_BEAM_TOL, "mode {}: {f} vs {f_ref}", 7 + 2 * k + j);
         }
     }
     // The rigid modes carry all the translational mass: Σ fractions = 1 in x, y, z.

@@ -47,7 +47,8 @@ fn end_moment_rolls_a_full_circle() {
         dist / l,
         c.iterations
     );
-    assert!(dist < 0.005 * l, "tip {tip:?} is {dist} mm from the root");
+    // Measured 6.2e-13 L.
+    assert!(dist < 1e-9 * l, "tip {tip:?} is {dist} mm from the root");
     // Half load: a half circle, tip at (0, 2L/π) (semicircle of diameter 2L/π).
     let mut half = model.clone();
     half.load_cases[0] = LoadCase::new("M/2").force(n, [0.0, 0.0, 0.0, 0.0, 0.0, 0.5 * moment]);
@@ -55,7 +56,8 @@ fn end_moment_rolls_a_full_circle() {
     let u = r.load_cases[0].fe.displacements[n];
     let d = 2.0 * l / PI;
     println!("half circle: tip ({}, {}), expected (0, {d})", l + u[0], u[1]);
-    assert!((l + u[0]).abs() < 0.005 * l && (u[1] - d).abs() < 0.005 * d);
+    // Measured: x 9e-13 L, y +0.10 % (20 straight elements on the arc).
+    assert!((l + u[0]).abs() < 1e-9 * l && (u[1] - d).abs() < 3e-3 * d);
 }
 
 /// Incomplete elliptic integrals of the first and second kind, F(k, φ) and E(k, φ), by
@@ -103,7 +105,7 @@ fn bisshopp_drucker(alpha: f64) -> (f64, f64) {
 
 /// Cantilever under a large tip force vs the elliptic-integral solution (Bisshopp & Drucker
 /// 1945; tabulated by K. Mattiasson, IJNME 17 (1981) 145: α = 1: 0.05643, 0.30172; α = 2: 0.16064,
-/// 0.49346; α = 5: 0.38763, 0.71379), tip displacements within 0.5 %.
+/// 0.49346; α = 5: 0.38763, 0.71379), tip displacements within 0.12 % (measured ≤ 0.042 %).
 #[test]
 fn tip_force_matches_elliptic_integrals() {
     let (l, n) = (100.0, 20);
@@ -140,7 +142,7 @@ fn tip_force_matches_elliptic_integrals() {
             100.0 * (h / h_ref - 1.0),
             100.0 * (v / v_ref - 1.0)
         );
-        assert!((h / h_ref - 1.0).abs() < 0.005 && (v / v_ref - 1.0).abs() < 0.005);
+        assert!((h / h_ref - 1.0).abs() < 1.2e-3 && (v / v_ref - 1.0).abs() < 1.2e-3);
     }
 }
 
@@ -298,9 +300,11 @@ fn small_loads_give_the_linear_answer() {
         .push(LoadCase::new("stroke").displacement(n0, Dof::Uz, 1e-7));
     let lin = solve_static_with(&model, Parallelism::Sequential).unwrap_or_else(|e| panic!("{e}"));
     let nl = solve_nonlinear(&model, &opts(1)).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(lin.load_cases.len(), nl.load_cases.len());
     for (a, b) in lin.load_cases.iter().zip(&nl.load_cases) {
         let scale = a.displacements.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
         assert!(scale > 0.0);
+        assert_eq!(a.displacements.len(), b.fe.displacements.len());
         for (x, y) in a.displacements.iter().zip(&b.fe.displacements) {
             for i in 0..6 {
                 assert!(
@@ -315,6 +319,7 @@ fn small_loads_give_the_linear_answer() {
             .iter()
             .flat_map(|e| e.end_forces.iter().flatten())
             .fold(0.0f64, |m, v| m.max(v.abs()));
+        assert_eq!(a.elements.len(), b.fe.elements.len());
         for (ea, eb) in a.elements.iter().zip(&b.fe.elements) {
             for (x, y) in ea.end_forces.iter().flatten().zip(eb.end_forces.iter().flatten()) {
                 assert!(
@@ -463,6 +468,7 @@ fn bundled_nonlinear_stage_case() {
 fn fem_vs_fkp_has_the_nonlinear_column() {
     let v = json(&run(&["run", "cases/ruiz2019_fem_vs_fkp.json"]));
     let rows = v["rows"].as_array().unwrap_or_else(|| panic!("no rows"));
+    assert_eq!(rows.len(), 4, "Table 4 rows");
     for (row, z) in rows.iter().zip([1385.0, 721.8, -629.7, -1507.3]) {
         let zn = row["fem_nonlinear"]["z"].as_f64().unwrap_or(f64::NAN) * 1000.0;
         assert!((zn - z).abs() < 1.0, "{zn} vs {z}");
@@ -542,11 +548,13 @@ fn stage_hinge_subdivision() {
     let sixteen = stage
         .solve_nonlinear_segments(&cases, &opts, 16)
         .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(eight.len(), sixteen.len());
     for (c, d) in eight.iter().zip(&sixteen) {
         println!("{}: 16 elements {:.3} µm", c.name, d.platform.z * 1e3);
         // Converged in the number of segments.
         assert!((c.platform.z - d.platform.z).abs() * 1e3 < 0.1);
     }
+    assert_eq!(one.len(), eight.len());
     for (a, b) in one.iter().zip(&eight) {
         println!(
             "{}: Δz default ({NONLINEAR_HINGE_SEGMENTS} elements) {:.3} µm, 8 elements {:.3} µm; σ_max {:.1} / {:.1} MPa",

@@ -20,6 +20,7 @@ fn imbalance(model: &Model, c: &NonlinearCase) -> (f64, f64) {
         .iter()
         .map(|l| (l.f[0] * l.f[0] + l.f[1] * l.f[1] + l.f[2] * l.f[2]).sqrt())
         .sum();
+    assert_eq!(model.nodes.len(), c.fe.displacements.len());
     let lever = model
         .nodes
         .iter()

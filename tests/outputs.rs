@@ -295,6 +295,7 @@ fn triangles_are_vtk_triangles() {
         let dir = run_out(case, &root().join(format!("cases/{case}.json")));
         let vtu = Vtu::read(&dir.join("centre.vtu"));
         let part = vtu.cell_scalars("part");
+        assert_eq!(vtu.types.len(), part.len());
         let shells: Vec<u8> = vtu
             .types
             .iter()
@@ -608,6 +609,7 @@ fn kinematics_csv_rows_match_their_header() {
         let kind = if cells[0] == "fkp" { 0 } else { 1 };
         let j = &res[cells[0]][seen[kind]];
         seen[kind] += 1;
+        assert_eq!(cells.len(), header.len(), "{line}");
         for (h, c) in header.iter().zip(&cells).skip(1) {
             let key = h.trim_end_matches("_mm");
             let expect = match key {

@@ -112,6 +112,7 @@ fn table5_unequal_torques_need_the_rr_limb_on_j2() {
         let states = PanTilt::new(g).unwrap().path(&path, &springs).unwrap();
         let mut p = [0.0f64; 2];
         for s in &states {
+            // zip-checked: two [f64; 2].
             for (pa, t) in p.iter_mut().zip(s.torque_stiffness) {
                 *pa = pa.max(t.abs());
             }
@@ -252,6 +253,7 @@ fn bad_geometry_is_refused_with_the_parameter_named() {
             ..PanTiltGeometry::default()
         },
     ];
+    // zip-checked: two [_; 3] arrays.
     for (g, word) in bad.into_iter().zip(["θ₀", "azimuth", "actuated"]) {
         let e = PanTilt::new(g).unwrap_err().to_string();
         assert!(e.contains(word), "{e}");
@@ -289,6 +291,7 @@ fn fig12_largest_torque_difference_and_the_direction_of_travel() {
         let mut damped = [0.0f64; 2];
         let mut share = 0.0f64;
         for s in &states {
+            // zip-checked: two [f64; 2].
             for (d, t) in damped.iter_mut().zip(s.torque_total()) {
                 *d = d.max(t.abs());
             }

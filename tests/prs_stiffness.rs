@@ -118,6 +118,7 @@ fn actuation_jacobian_matches_ikp_differences() {
             let q = [pz, psi, theta];
             let ps = m.at(q[0], q[1], q[2], &Vector3::zeros()).unwrap();
             let fd = fd_jacobian(&m, q);
+            // zip-checked: two Matrix3<f64>.
             for (a, b) in ps.jacobian.iter().zip(fd.iter()) {
                 assert!(
                     (a - b).abs() <= 1e-7 * a.abs().max(1.0),
@@ -148,6 +149,7 @@ fn twist_map_respects_constraints_and_matches_pose_differences() {
             }
         }
         let fd = fd_twist(&layout, [pz, 0.2, -0.3]);
+        // zip-checked: two Matrix6x3<f64>.
         for (a, b) in t.iter().zip(fd.iter()) {
             assert!((a - b).abs() <= 1e-7 * a.abs().max(1.0), "{a} vs {b}");
         }
@@ -422,6 +424,7 @@ fn han_deformation_table_iv() {
         }
     }
     eprintln!("Han et al. Table IV, our deformation |δp| at P: {out:?} mm (paper 0.25/0.47/0.69 analytic, 0.21/0.42/0.61 FEA)");
+    assert_eq!(out.len(), PIN_HAN.len());
     for (a, b) in out.iter().zip(PIN_HAN) {
         assert!((a / b - 1.0).abs() < 1e-6, "{a} vs pinned {b}");
     }
@@ -438,6 +441,7 @@ fn han_deformation_table_iv() {
         })
         .collect();
     eprintln!("with I_z = 2.16e6 mm⁴ out of plane: {other:?} mm");
+    assert_eq!(other.len(), PIN_HAN_IZ.len());
     for (a, b) in other.iter().zip(PIN_HAN_IZ) {
         assert!((a / b - 1.0).abs() < 1e-6, "{a} vs pinned {b}");
     }

@@ -58,6 +58,7 @@ fn sprint_case_kzz_map_is_flat() {
 fn han_case_deformations() {
     let r = run(load("prs_stiffness_han_fsw")).unwrap();
     let want = [0.10885477998706646, 0.10503016898976353, 0.10109718806903639];
+    assert_eq!(r.poses.len(), want.len());
     for (p, w) in r.poses.iter().zip(want) {
         let d = p.deformation.as_ref().unwrap().translation_norm_mm;
         assert!((d / w - 1.0).abs() < 1e-9, "{d} vs {w}");

@@ -108,6 +108,7 @@ fn han_frame_fe_matches_prs_stiffness() {
         loads.push(Vector6::new(f[0], f[1], f[2], 0.0, 0.0, 0.0));
         let d1 = run_frame(frame_case(&m, beta, &loads, 1e4));
         let d2 = run_frame(frame_case(&m, beta, &loads, 2e4));
+        assert_eq!(d1.len(), d2.len());
         let d: Vec<Vector6<f64>> = d1.iter().zip(&d2).map(|(a, b)| 2.0 * b - a).collect();
         let mut c_fe = Matrix6::zeros();
         for k in 0..6 {

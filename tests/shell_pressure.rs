@@ -38,6 +38,11 @@ fn navier(a: f64, q: f64, d: f64, nu: f64) -> (f64, f64) {
 /// rotation about the edge normal held). Centre deflection and top-surface σxx = 6Mx/t²
 /// within 1 % of Navier's series (Timoshenko: w = 0.00406 q a⁴/D, Mx = 0.0479 q a² for
 /// ν = 0.3; the series here to m, n < 400). Reissner–Mindlin shear adds ≈ 0.06 % at a/t = 100.
+/// Relative tolerances on the centre deflection and the top stress against the Navier series
+/// (measured +0.071 % and +0.0014 %).
+const NAVIER_W_TOL: f64 = 2e-3;
+const NAVIER_STRESS_TOL: f64 = 5e-5;
+
 #[test]
 fn simply_supported_plate_under_pressure_matches_navier() {
     let (a, t, q): (f64, f64, f64) = (1000.0, 10.0, 0.01);
@@ -93,12 +98,12 @@ fn simply_supported_plate_under_pressure_matches_navier() {
     let s_top = f(&lc["shell_stress"]["top"][c][0]);
     let s_ref = 6.0 * mx_ref / (t * t);
     eprintln!(
-        "SS plate: w = {w:.6} vs {w_ref:.6} ({:+.3} %), σxx top = {s_top:.4} vs {s_ref:.4} ({:+.3} %)",
+        "SS plate: w = {w:.6} vs {w_ref:.6} ({:+.3} %), σxx top = {s_top:.4} vs {s_ref:.4} ({:+.5} %)",
         100.0 * (w - w_ref) / w_ref,
         100.0 * (s_top - s_ref) / s_ref
     );
-    assert!(((w - w_ref) / w_ref).abs() < 0.01);
-    assert!(((s_top - s_ref) / s_ref).abs() < 0.01);
+    assert!(((w - w_ref) / w_ref).abs() < NAVIER_W_TOL);
+    assert!(((s_top - s_ref) / s_ref).abs() < NAVIER_STRESS_TOL);
     // Reactions carry the whole pressure load q·(a/2)².
     let fz: f64 = lc["reactions"].as_array().unwrap().iter().map(|r| f(&r[2])).sum();
     assert!((fz + q * h * h).abs() < 1e-9 * q * h * h, "ΣFz = {fz}");

@@ -196,7 +196,8 @@ fn pinched_hemisphere_18deg_hole() {
         "pinched hemisphere 16x16: ux = {ux:.5}, uy = {uy:.5}, error {:.2} %",
         100.0 * err
     );
-    assert!(err.abs() < 0.02, "ux = {ux}");
+    // The reference is printed to two digits (±0.5 %): 0.6 % asserted.
+    assert!(err.abs() < 0.006, "ux = {ux}");
     assert!((ux - uy).abs() < 1e-3 * ux);
 }
 
@@ -245,29 +246,25 @@ fn twisted_beam_thick() {
     assert!(e1.abs() < 0.02 && e2.abs() < 0.02);
 }
 
+/// Relative error of the 32×32 Scordelis–Lo roof allowed (measured +0.04 %).
+const ROOF_32_TOL: f64 = 1.3e-3;
+
+/// Scordelis–Lo roof under refinement, full roof 8×8 → 16×16 → 32×32: +6.15 %, +1.14 %,
+/// +0.04 % against 0.3024 (MacNeal & Harder 1985): the error falls at each refinement and the
+/// finest mesh is within `ROOF_32_TOL`.
 #[test]
-fn convergence_report() {
-    if std::env::var("FLEXFEM_SHELL_CONVERGENCE").is_err() {
-        return;
-    }
-    for n in [4, 8, 16, 32] {
-        eprintln!(
-            "n={n}: plate {:.6} roof {:.5} cyl {:.5e} hemi {:.5}",
-            clamped_plate(n),
-            scordelis_lo(n),
-            pinched_cylinder(n),
-            pinched_hemisphere(n).0
-        );
-    }
-    for nl in [12, 24, 48] {
-        eprintln!(
-            "twisted 2x{nl}: {:.5e} {:.5e}; 4x{nl}: {:.5e} {:.5e}",
-            twisted_beam(2, nl, 2),
-            twisted_beam(2, nl, 1),
-            twisted_beam(4, nl, 2),
-            twisted_beam(4, nl, 1)
-        );
-    }
+fn scordelis_lo_roof_converges() {
+    let err: Vec<f64> = [8, 16, 32]
+        .iter()
+        .map(|&n| {
+            let w = scordelis_lo(n);
+            let e = w / 0.3024 - 1.0;
+            eprintln!("Scordelis-Lo {n}x{n}: w = {w:.5} ({:+.3} %)", 100.0 * e);
+            e
+        })
+        .collect();
+    assert!(err[1].abs() < err[0].abs() && err[2].abs() < err[1].abs(), "{err:?}");
+    assert!(err[2].abs() < ROOF_32_TOL, "{err:?}");
 }
 
 /// Gmsh MSH 4.1 import (bundled `meshes/plate_clamped_{quads,tris}.msh`, 16×16 square plate

@@ -17,6 +17,9 @@ fn f(v: &serde_json::Value) -> f64 {
     v.as_f64().unwrap()
 }
 
+/// Relative tolerance on Δz at 400 MPa against Ruiz et al. (2019) §5 (measured −7.3 %).
+const DZ_AT_ALLOWABLE_TOL: f64 = 0.10;
+
 #[test]
 fn table2_strokes_displacements_and_stress() {
     // Ruiz et al. (2019) Table 2 (ANSYS, equal forces on the three actuators):
@@ -25,6 +28,7 @@ fn table2_strokes_displacements_and_stress() {
     let v = run_json("cases/ruiz2019_stage.json");
     let rows = v["load_cases"].as_array().unwrap();
     let published = [(0.935, 0.933, 169.25), (1.899, 1.896, 344.01), (2.865, 2.859, 518.78)];
+    assert_eq!(rows.len(), published.len(), "Table 2 rows");
     for (row, (s_ref, z_ref, sig_ref)) in rows.iter().zip(published) {
         for k in 0..3 {
             let s = f(&row["strokes"][k]);
@@ -46,25 +50,28 @@ fn table2_strokes_displacements_and_stress() {
         assert!(f(&row["platform"]["psi_deg"]).abs() < 1e-9 && f(&row["platform"]["theta_deg"]).abs() < 1e-9);
     }
     // The reach at 400 MPa is reported and is the linear scaling of the F = 20 N case.
-    // Ruiz et al. (2019) §5 gives Δz = 2.205 mm at 400 MPa; we reach less (1.83 mm) because our peak
-    // stress per mm of stroke is 13–20 % above ANSYS's (conservative hinge stress model, see
-    // README): assert within 20 %.
+    // Ruiz et al. (2019) §5 gives Δz = 2.205 mm at 400 MPa; we reach 2.043 mm (−7.3 %: our peak
+    // stress per mm of stroke is about 8 % above ANSYS's, as in the Table 2 rows above).
     let z400 = f(&v["at_allowable"]["z"]);
     let z20 = f(&rows[0]["platform"]["z"]);
     let s20 = f(&rows[0]["max_von_mises"]);
     assert!((z400 - z20 * 400.0 / s20).abs() < 1e-9 * z400, "Δz at 400 MPa {z400}");
-    assert!((z400 / 2.205 - 1.0).abs() <= 0.20, "Δz at 400 MPa {z400}");
+    eprintln!("Δz at 400 MPa: {z400} mm vs 2.205 ({:+.2} %)", 100.0 * (z400 / 2.205 - 1.0));
+    assert!((z400 / 2.205 - 1.0).abs() <= DZ_AT_ALLOWABLE_TOL, "Δz at 400 MPa {z400}");
     assert_eq!(f(&v["at_allowable"]["allowable"]), 400.0);
 }
 
 #[test]
-fn table4_linear_fem_column_within_10um() {
-    // Ruiz et al. (2019) Table 4, FEM column (linear ANSYS): Δz = 1408, 727, −624, −1478 µm.
+fn table4_linear_fem_column_within_3um() {
+    // Ruiz et al. (2019) Table 4, FEM column (linear ANSYS): Δz = 1408, 727, −624, −1478 µm;
+    // measured 1409.4, 728.3, −624.8, −1479.0 µm (worst 1.4 µm; the table rounds to 1 µm).
     let v = run_json("cases/ruiz2019_fem_vs_fkp.json");
     let rows = v["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 4, "Table 4 rows");
     for (row, z_ref) in rows.iter().zip([1408.0, 727.0, -624.0, -1478.0]) {
         let z = f(&row["fem_linear"]["z"]) * 1000.0;
-        assert!((z - z_ref).abs() <= 10.0, "Δz {z} µm vs {z_ref} µm");
+        eprintln!("Table 4 linear FEM Δz {z:.1} µm vs {z_ref} µm");
+        assert!((z - z_ref).abs() <= 3.0, "Δz {z} µm vs {z_ref} µm");
         // and the FKP column of the same table (1384, 722, −631, −1511 µm) to 2 µm
     }
     let fkp: Vec<f64> = rows.iter().map(|r| f(&r["fkp"]["z"]) * 1000.0).collect();
@@ -92,6 +99,7 @@ proptest! {
         prop_assert!((p.psi - k.psi).abs() < tol, "ψ {} vs {}", p.psi, k.psi);
         prop_assert!((p.theta - k.theta).abs() < tol, "θ {} vs {}", p.theta, k.theta);
         prop_assert!((p.phi - k.phi).abs() < tol);
+        // zip-checked: two [f64; 3] stroke arrays.
         for (got, want) in r.strokes.iter().zip(s) {
             prop_assert!((got - want).abs() < 1e-12);
         }

@@ -72,6 +72,7 @@ fn random_design(r: &mut Rng) -> Option<StageDesign> {
 /// `a` equals `b` entry by entry within REL, floor REL × the largest |b|.
 fn close(what: &str, a: &[f64], b: &[f64]) {
     let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    assert_eq!(a.len(), b.len(), "{what}: lengths");
     for (x, y) in a.iter().zip(b) {
         assert!((x - y).abs() <= REL * y.abs().max(scale), "{what}: {a:?} vs FE {b:?}");
     }
@@ -95,6 +96,7 @@ fn condensed_stage_equals_the_fe_model() {
         ];
         let fe = valid.build().analyse(&drives, true).expect("FE solve");
         let lin = valid.linear().expect("condensed");
+        assert_eq!(fe.cases.len(), drives.len());
         for (c, (_, d)) in fe.cases.iter().zip(&drives) {
             let l = lin.response(*d);
             let p = |p: &flexfem::stage::PoseChange| [p.x, p.y, p.z, p.psi, p.theta, p.phi];

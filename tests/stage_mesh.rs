@@ -122,6 +122,7 @@ fn amax(v: &[f64]) -> f64 {
 
 /// Relative difference of `got` to `want`, both lists, relative to `scale`.
 fn worst(got: &[f64], want: &[f64], scale: f64) -> f64 {
+    assert_eq!(got.len(), want.len());
     got.iter().zip(want).fold(0.0, |m, (g, w)| m.max((g - w).abs() / scale))
 }
 

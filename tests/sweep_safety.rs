@@ -87,6 +87,7 @@ fn resume_after_a_base_case_change_reruns_stale_lines() {
     let fresh_dir = d.join("fresh");
     std::fs::create_dir_all(&fresh_dir).unwrap();
     assert_same_as_fresh_run(&d, &case, &out, &fresh_dir.join("f.jsonl"));
+    assert_eq!(al.len(), steel.len());
     for (a, s) in al.iter().zip(&steel) {
         assert_eq!(a["params"], s["params"]);
         assert_ne!(a["design_hash"], s["design_hash"]);

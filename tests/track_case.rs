@@ -27,6 +27,7 @@ fn bundled_leaf_guide_tracks_support_stiffness_and_frequencies() {
     assert!(out.status.success(), "{}", stderr(&out));
     let r: Value = serde_json::from_str(&std::fs::read_to_string(d.join("out/result.json")).unwrap()).unwrap();
     let t = 0.5;
+    assert_eq!(r["load_cases"].as_array().unwrap().len(), 2);
     for (lc, sign) in r["load_cases"].as_array().unwrap().iter().zip([1.0, -1.0]) {
         let track = &lc["track"];
         assert_eq!(track["stroke"], "node 22 uy (mm)");
@@ -84,6 +85,7 @@ fn first_point_equals_the_linear_modal_and_compliance() {
     let mut held = model.clone();
     held.supports.push(Support::dofs(c, &[Dof::Uy]));
     let modal = fem::modal::solve_modal(&held, &fem::modal::ModalOptions::new(3)).expect("modes");
+    assert_eq!(q0.frequencies_hz().len(), modal.modes.len());
     for (a, b) in q0.frequencies_hz().iter().zip(&modal.modes) {
         assert!((a / b.frequency_hz - 1.0).abs() < 1e-6, "{a} vs {}", b.frequency_hz);
     }

@@ -52,6 +52,7 @@ fn rigid_rotation_keeps_frequencies_and_turns_the_compliance() {
     let q = &r.load_cases[0].step_quantities;
     let (q0, q1) = (&q[0], q.last().unwrap());
     assert_eq!(q1.lambda, 1.0);
+    assert_eq!(q0.frequencies_hz().len(), q1.frequencies_hz().len());
     for (a, b) in q0.frequencies_hz().iter().zip(q1.frequencies_hz()) {
         assert!((a / b - 1.0).abs() < 1e-6, "{a} Hz at 0°, {b} Hz at 90°");
     }

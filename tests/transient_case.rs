@@ -54,6 +54,7 @@ fn base_motion_matches_the_base_excited_oscillator() {
     let (t, u) = series(&out, 0);
     let big = w / 3.0;
     let exact = |t: f64| a * w * w / (w * w - big * big) * ((big * t).sin() - big / w * (w * t).sin());
+    assert_eq!(t.len(), u.len());
     let err = t.iter().zip(&u).map(|(t, u)| (u - exact(*t)).abs()).fold(0.0, f64::max);
     let peak = u.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     eprintln!(
@@ -80,6 +81,7 @@ fn element_damping_equals_rayleigh_beta() {
     assert_eq!(rayleigh["damping"], json!({"beta": 2e-4}));
     let (_, u1) = series(&run_json(&rayleigh), 0);
     let (_, u2) = series(&run_json(&element), 0);
+    assert_eq!(u1.len(), u2.len());
     let diff = u1.iter().zip(&u2).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
     // The bar is the only element: C = beta K either way (to roundoff).
     assert!(diff < 1e-12, "{diff}");

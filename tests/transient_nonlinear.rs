@@ -68,8 +68,10 @@ fn small_amplitude_equals_the_linear_transient() {
             .fold(0.0f64, |m, x| m.max(x.abs()))
     };
     let (pt, pr) = (peak(0..3), peak(3..6));
+    assert_eq!(lin.displacement.len(), nl.displacement.len());
     for (d, (a, b)) in lin.displacement.iter().zip(&nl.displacement).enumerate() {
         let p = if d < 3 { pt } else { pr };
+        assert_eq!(a.len(), b.len(), "DOF {d}: samples");
         let diff = a.iter().zip(b).fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
         eprintln!("DOF {d}: largest difference {:.3e} of the peak {p:.4e}", diff / p);
         assert!(p > 0.0 && diff <= 1e-6 * p, "DOF {d}: {diff} vs peak {p}");
@@ -164,6 +166,7 @@ fn large_amplitude_pendulum_period_and_energy() {
     assert!(rel.abs() < 1e-3, "{rel}");
     // Energy: kinetic + strain − F·u (gravity is constant from t = 0; E(0) = 0).
     let swing = MASS * G * L * (1.0 - theta0.cos());
+    assert_eq!(res.energy.len(), res.displacement[1].len());
     let worst = res
         .energy
         .iter()

@@ -8,6 +8,7 @@ pub mod fixtures;
 pub mod materials;
 pub mod meshes;
 pub mod nonlinear;
+pub mod rust_source;
 
 /// Path of the built `flexfem` binary.
 pub fn bin() -> &'static str {
