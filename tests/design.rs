@@ -22,47 +22,72 @@ fn f(v: &serde_json::Value) -> f64 {
     v.as_f64().unwrap()
 }
 
+/// Ruiz et al. (2019) Table 1 and §5 text: "an increase in the thickness of the revolute joint
+/// causes a significant increment in the stiffness of the structure, by a factor greater than
+/// 1.5, while the Z displacement and the relation of maximum stresses in the joints suffer a
+/// slighter reduction with a factor of 0.8. By contrast, an increase in the length of the
+/// spherical joint causes a tinier reduction of the structural stiffness, an important increase
+/// of the Z displacement and a notable reduction of the relation of maximum stresses."
+///
+/// The entries this model reproduces from the paper's design (each parameter +50 %), asserted
+/// as the paper states them. The two it does not (T under t_rev ↑, d under l_sph ↑) are pinned
+/// in the tests below.
 #[test]
 fn table1_directions_from_the_paper_design() {
-    // Ruiz et al. (2019) Table 1 / §5 text: "an increase in the thickness of the revolute joint causes a
-    // significant increment in the stiffness of the structure, by a factor greater than 1.5, while
-    // the Z displacement and the relation of maximum stresses in the joints suffer a slighter
-    // reduction with a factor of 0.8. By contrast, an increase in the length of the spherical
-    // joint causes a tinier reduction of the structural stiffness, an important increase of the Z
-    // displacement and a notable reduction of the relation of maximum stresses."
     let out = run(&["run", "cases/ruiz2019_sensitivity.json"]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
     let t = row(&v, "t_rev");
-    assert!(f(&t["stiffness_ratio"]) > 1.5, "{t}");
-    assert_eq!(t["bins"]["stiffness"], "> 1.5");
-    assert_eq!(t["bins"]["displacement"], "0.8-1");
-    assert_eq!(t["bins"]["stress_ratio"], "0.8-1");
+    assert_eq!(t["bins"]["stiffness"], "> 1.5", "{t}");
+    assert_eq!(t["bins"]["displacement"], "0.8-1", "{t}");
+    assert_eq!(t["bins"]["stress_ratio"], "0.8-1", "{t}");
     let l = row(&v, "l_sph");
     assert_eq!(l["bins"]["stiffness"], "0.8-1", "{l}");
     assert!(f(&l["stiffness_ratio"]) > 0.9, "lowers η only a little: {l}");
-    assert!(f(&l["displacement_ratio"]) > 1.0, "raises d: {l}");
     assert!(f(&l["stress_ratio_ratio"]) < 0.85, "lowers T notably: {l}");
-    // From the paper's design (T = 1.05) d rises only ~6 %: once the neck is no longer the most
-    // stressed hinge the revolute limits d. The "important increase" needs a design whose neck
-    // is clearly critical (next test).
-    assert!(f(&v["base"]["T"]) < 1.1);
 }
 
+/// Absolute tolerance on the pinned ratios below (they are computed to ~1e-12; the pin shows a
+/// change of the model, not noise).
+const TABLE1_PIN_TOL: f64 = 0.005;
+
+/// Table 1 entries this model does NOT reproduce, pinned at what it gives (regressions, not
+/// claims; the README says which and why):
+/// - t_rev ↑: T × 0.984 (bin 0.8–1 as printed, but not the text's "factor of 0.8");
+/// - l_sph ↑: d × 1.005, not 1.2–1.5. In this model the revolute notch is already the most
+///   stressed hinge of the paper's design (T = 0.948), and d is the Δz at which the most
+///   stressed hinge reaches the allowable: unloading the neck cannot raise it.
 #[test]
-fn lengthening_a_critical_neck_raises_d_a_lot() {
-    // With a thicker neck (t_sph = 5 mm: the spherical hinge is critical, T ≈ 1.16), a longer
-    // neck (+50 %) raises the reachable Δz by ~1.17× (Table 1 says "important increase",
-    // bin 1.2–1.5), lowers T notably and η a little. With the neck's solid-calibrated stress
-    // factor (K_t ≈ 1.04 instead of the flat-notch fit's 1.15–1.37) the neck is less often the
-    // critical hinge, and the gain stays just under the paper's 1.2 bin edge.
+fn table1_entries_not_reproduced() {
+    let out = run(&["run", "cases/ruiz2019_sensitivity.json"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    let pin = |what: &str, got: f64, want: f64| {
+        eprintln!("{what}: {got:.4} (pinned {want})");
+        assert!((got - want).abs() < TABLE1_PIN_TOL, "{what}: {got} vs pinned {want}");
+    };
+    pin("base T", f(&v["base"]["T"]), 0.948);
+    pin("t_rev ↑: T ratio", f(&row(&v, "t_rev")["stress_ratio_ratio"]), 0.984);
+    pin("l_sph ↑: d ratio", f(&row(&v, "l_sph")["displacement_ratio"]), 1.005);
+    assert_eq!(row(&v, "l_sph")["bins"]["displacement"], "1-1.2");
+}
+
+/// The paper's "important increase" of d with l_sph (bin 1.2–1.5) is not reached even from a
+/// design whose neck is clearly critical: with t_sph = 5 mm (T = 1.156) a neck 50 % longer
+/// raises d by 1.170 (bin 1–1.2), lowers T notably (× 0.838) and η a little — the gain is capped
+/// near the base T, where the revolute notch becomes the most stressed hinge. (With t_sph = 4:
+/// T = 1.081, d × 1.088.) Pinned, not claimed.
+#[test]
+fn lengthening_a_critical_neck_raises_d_but_not_into_the_papers_bin() {
     let text = std::fs::read_to_string(root().join("cases/ruiz2019_sensitivity.json")).unwrap();
     let text = text.replace("\"t\": 3,", "\"t\": 5,");
     let (code, v, err) = run_json_text("critical_neck", &text);
     assert_eq!(code, Some(0), "{err}");
-    assert!(f(&v["base"]["T"]) > 1.1, "{}", v["base"]);
     let l = row(&v, "l_sph");
-    assert!(f(&l["displacement_ratio"]) > 1.15, "{l}");
+    eprintln!("t_sph 5: base T {}, l_sph ↑: {l}", v["base"]["T"]);
+    assert!((f(&v["base"]["T"]) - 1.156).abs() < TABLE1_PIN_TOL, "{}", v["base"]);
+    assert!((f(&l["displacement_ratio"]) - 1.170).abs() < TABLE1_PIN_TOL, "{l}");
+    assert_eq!(l["bins"]["displacement"], "1-1.2", "{l}");
     assert!(f(&l["stress_ratio_ratio"]) < 0.85, "{l}");
     assert_eq!(l["bins"]["stiffness"], "0.8-1", "{l}");
 }
