@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Solid-FEM reference for flexfem's hinge models (not used by the build or the tests).
 
-Builds the exact 3-D geometry of a hinge of SPEC.md §4 with gmsh's OpenCASCADE kernel,
+Builds the exact 3-D geometry of a hinge (the profiles of flexfem's src/hinge/profile.rs) with gmsh's OpenCASCADE kernel,
 meshes it with second-order (10-node) tetrahedra — the element class of the C3D10 models
 the hinge accuracy bands refer to — and solves linear elasticity with scikit-fem (P2 Lagrange)
 and CHOLMOD. Boundary conditions as in flexfem's `hinge` analysis: the face x = -X clamped,
