@@ -24,9 +24,9 @@
 //! [`FITTED`] (commit "hinge: solid-calibrated beam model …" and the torsion commit after it):
 //! 36 of the 41 circular notches, 5 of the 7 necks and the pan-tilt corner-filleted hinge.
 //! Their errors are fit residuals, reported and asserted apart from those of [`HELD_OUT`]:
-//! 9 models computed after the fits and never used in one (5 circular notches, 2 necks, an
-//! elliptical notch, a leaf). Nine rows are few; they show that the laws carry over to those
-//! geometries, no more.
+//! 25 models computed after the fits and never used in one (12 circular notches, 6 necks, 3
+//! elliptical notches, 2 corner-filleted hinges, 2 leaves; 16 of them computed for this split).
+//! That is enough to show the laws carry over to other geometries, not a statistical accuracy.
 
 use flexfem::hinge::{characterise, HingeSpec};
 use flexfem::material::Material;
@@ -107,11 +107,12 @@ fn report(label: &str, rows: &[&Row]) -> [f64; 4] {
     q.map(|(_, _, m)| m)
 }
 
-/// Asserts |error| < tolerance per quantity (bending, torsion, axial, stress per moment, %).
-fn check(label: &str, worst: [f64; 4], tol: [f64; 4]) {
-    // zip-checked: three [_; 4] arrays.
+/// Asserts |error| < tolerance per quantity (bending, torsion, axial, stress per moment, %; the
+/// first `tol.len()` of them).
+fn check(label: &str, worst: &[f64], tol: &[f64]) {
+    assert_eq!(worst.len(), tol.len());
     for ((w, t), q) in worst.iter().zip(tol).zip(["bending", "torsion", "axial", "stress per moment"]) {
-        assert!(*w < t, "{label}: {q} off by up to {w:.2} %, tolerance {t} %");
+        assert!(w < t, "{label}: {q} off by up to {w:.2} %, tolerance {t} %");
     }
 }
 
@@ -128,16 +129,17 @@ const CIRCULAR_FIT_TOL: [f64; 4] = [2.5, 12.0, 4.0, 6.0];
 /// −1.77 … +0.79 %, torsion −4.11 … −0.06 %, axial −2.73 … +0.29 %, stress −0.82 … +0.04 %.
 const NECK_FIT_TOL: [f64; 4] = [3.0, 5.0, 3.0, 2.0];
 
-// Held out: computed after the fits, never used in one. Few rows (5 + 2 + 2): what they show
-// is agreement on those geometries, not a statistical accuracy.
+// Held out: computed after the fits, never used in one. 25 rows in all, tolerances about
+// 1.2–2.5× the measured worst case: what they show is agreement on these geometries, with a
+// sample too small for a statistical accuracy.
 
-/// The five held-out circular notches (R3–R10, t/R 0.08–0.5, one without blanks). Measured:
-/// bending −0.38 … +0.71 %, torsion −10.42 … −2.30 %, axial +0.85 … +3.41 %, stress
-/// −1.67 … +3.38 %.
-const CIRCULAR_HELD_OUT_TOL: [f64; 4] = [2.0, 12.0, 4.0, 6.0];
-/// The two held-out necks (l/t 1 and 1.5, t/R 2 and 0.67). Measured: bending −2.00 … +1.06 %,
-/// torsion −4.01 … −0.11 %, axial −2.28 … −0.16 %, stress −0.61 … +0.02 %.
-const NECK_HELD_OUT_TOL: [f64; 4] = [3.0, 5.0, 3.0, 2.0];
+/// The 12 held-out circular notches: R 2.5–10, t/R 0.08–0.5, w/t 1.2–15, one with ν = 0, one
+/// without blanks. Measured: bending −0.38 … +1.18 %, torsion −10.84 … +0.73 %, axial
+/// +0.85 … +5.06 % (ν = 0: beyond the fitted rows' +3.78 %), stress −1.67 … +3.38 %.
+const CIRCULAR_HELD_OUT_TOL: [f64; 4] = [3.0, 13.0, 6.0, 5.0];
+/// The 6 held-out necks: l/t 1–2.7, t/R 0.67–2. Measured: bending −2.00 … +1.06 %, torsion
+/// −4.01 … −0.11 %, axial −2.28 … −0.16 %, stress −1.31 … +0.26 %.
+const NECK_HELD_OUT_TOL: [f64; 4] = [3.0, 5.0, 3.0, 3.0];
 
 #[test]
 fn circular_notches_fit_residual() {
@@ -151,16 +153,16 @@ fn circular_notches_fit_residual() {
         .filter(|r| matches!(r.spec, HingeSpec::CircularNotch { r: rad, t, .. } if t / rad >= 0.1))
         .collect();
     let torsion = report("circular notches t/R ≥ 0.1, fit residual", &thick)[1];
-    check("fitted circular notches", [worst[0], torsion, worst[2], worst[3]], CIRCULAR_FIT_TOL);
+    check("fitted circular notches", &[worst[0], torsion, worst[2], worst[3]], &CIRCULAR_FIT_TOL);
 }
 
 #[test]
 fn circular_notches_held_out() {
     let all = rows(HELD_OUT);
     let rows: Vec<&Row> = all.iter().filter(|r| circular(r)).collect();
-    assert_eq!(rows.len(), 5);
+    assert_eq!(rows.len(), 12);
     let worst = report("circular notches, HELD OUT", &rows);
-    check("held-out circular notches", worst, CIRCULAR_HELD_OUT_TOL);
+    check("held-out circular notches", &worst, &CIRCULAR_HELD_OUT_TOL);
 }
 
 #[test]
@@ -173,45 +175,55 @@ fn turned_necks_fit_residual() {
         assert!(l / t >= 1.0, "{:?}", r.spec);
     }
     let worst = report("turned necks, fit residual", &rows);
-    check("fitted necks", worst, NECK_FIT_TOL);
+    check("fitted necks", &worst, &NECK_FIT_TOL);
 }
 
 #[test]
 fn turned_necks_held_out() {
     let all = rows(HELD_OUT);
     let rows: Vec<&Row> = all.iter().filter(|r| neck(r)).collect();
-    assert_eq!(rows.len(), 2);
+    assert_eq!(rows.len(), 6);
     let worst = report("turned necks, HELD OUT", &rows);
-    check("held-out necks", worst, NECK_HELD_OUT_TOL);
+    check("held-out necks", &worst, &NECK_HELD_OUT_TOL);
 }
 
-/// Other families, one row each: the elliptical notch and the leaf (held out), the 8R pan-tilt
-/// corner-filleted hinge (used to fit the torsion load spreading; its bending is also checked
-/// against 4.05 N·mm/° in tests/hinge_seeds.rs). The leaf's sharp re-entrant corners are beyond
-/// beam theory; the solid's peak stress there is singular and not compared. Measured (bending,
-/// torsion, axial): elliptical −0.67, −7.40, +2.44 %; corner-filleted +2.04, −13.89, −6.13 %;
-/// leaf −4.67, −12.66, −4.29 %.
+/// The 8R pan-tilt corner-filleted hinge, used to fit the torsion load spreading (its bending is
+/// also checked against 4.05 N·mm/° in tests/hinge_seeds.rs). Measured: bending +2.04 %, torsion
+/// −13.89 %, axial −6.13 %, stress +4.28 %.
+const CORNER_FIT_TOL: [f64; 4] = [2.5, 15.0, 8.0, 6.0];
+
 #[test]
-fn other_families_match_solid_models() {
-    let fitted = rows(FITTED);
-    let held_out = rows(HELD_OUT);
-    let mut n = 0;
-    for r in fitted.iter().chain(&held_out) {
-        // (bending, torsion, axial) tolerances, %.
-        let tol = match r.spec {
-            HingeSpec::EllipticalNotch { .. } => [1.0, 15.0, 4.0],
-            HingeSpec::CornerFilleted { .. } => [2.5, 15.0, 8.0],
-            HingeSpec::Leaf { .. } => [5.0, 15.0, 6.0],
-            _ => continue,
-        };
-        n += 1;
-        assert!(r.bend.abs() < tol[0], "{:?}: bending {:+.2} %", r.spec, r.bend);
-        assert!(r.torsion.abs() < tol[1], "{:?}: torsion {:+.2} %", r.spec, r.torsion);
-        assert!(r.axial.abs() < tol[2], "{:?}: axial {:+.2} %", r.spec, r.axial);
-    }
-    assert_eq!(n, 3);
+fn corner_filleted_fit_residual() {
+    let all = rows(FITTED);
+    let rows: Vec<&Row> = all.iter().filter(|r| matches!(r.spec, HingeSpec::CornerFilleted { .. })).collect();
+    assert_eq!(rows.len(), 1);
+    let worst = report("pan-tilt corner-filleted hinge, fit residual", &rows);
+    check("fitted corner-filleted hinge", &worst, &CORNER_FIT_TOL);
 }
 
+/// Held-out elliptical notches (3), corner-filleted hinges (2) and leaves (2), tolerances per
+/// family (bending, torsion, axial, stress per moment, %). Measured: elliptical −0.67 … +0.26,
+/// −7.40 … −5.12, +2.44 … +2.63, −1.58 … +0.78 %; corner-filleted +0.19 … +1.81, −18.23 …
+/// −15.95, −0.44 … +0.77, +10.72 … +14.75 % (stress on the safe side); leaf −5.92 … −4.67,
+/// −19.92 … −12.66, −4.29 … −3.91 %. The leaf's sharp re-entrant corners are beyond beam
+/// theory: the solid's peak stress there is singular and not compared.
+const ELLIPTICAL_HELD_OUT_TOL: [f64; 4] = [1.0, 10.0, 4.0, 2.0];
+const CORNER_HELD_OUT_TOL: [f64; 4] = [3.0, 20.0, 2.0, 20.0];
+const LEAF_HELD_OUT_TOL: [f64; 3] = [8.0, 25.0, 6.0];
+
+#[test]
+fn other_families_held_out() {
+    let all = rows(HELD_OUT);
+    let pick = |f: fn(&Row) -> bool| all.iter().filter(|r| f(r)).collect::<Vec<&Row>>();
+    let elliptical = pick(|r| matches!(r.spec, HingeSpec::EllipticalNotch { .. }));
+    let corner = pick(|r| matches!(r.spec, HingeSpec::CornerFilleted { .. }));
+    let leaf = pick(|r| matches!(r.spec, HingeSpec::Leaf { .. }));
+    assert_eq!((elliptical.len(), corner.len(), leaf.len()), (3, 2, 2));
+    check("held-out elliptical notches", &report("elliptical notches, HELD OUT", &elliptical), &ELLIPTICAL_HELD_OUT_TOL);
+    check("held-out corner-filleted hinges", &report("corner-filleted hinges, HELD OUT", &corner), &CORNER_HELD_OUT_TOL);
+    let w = report("leaves, HELD OUT (stress not compared)", &leaf);
+    check("held-out leaves", &w[..3], &LEAF_HELD_OUT_TOL);
+}
 /// Provenance: every reference above is one line of the solid tool's raw output
 /// (`tools/solid_reference_results.jsonl`: same geometry and ν, the four quantities to the 6
 /// digits copied here). The Ruiz et al. R8/t2 notch (k_bend 95922.3 N·mm/rad) was missing from
@@ -221,7 +233,7 @@ fn other_families_match_solid_models() {
 fn every_reference_is_a_line_of_the_raw_results() {
     let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tools/solid_reference_results.jsonl")).unwrap();
     let lines: Vec<serde_json::Value> = text.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
-    assert_eq!(lines.len(), 52);
+    assert_eq!(lines.len(), 68);
     let close = |a: &serde_json::Value, b: f64| a.as_f64().is_some_and(|a| (a / b - 1.0).abs() < 1e-5);
     for r in FITTED.iter().chain(HELD_OUT) {
         let spec: serde_json::Value = serde_json::from_str(r.hinge).unwrap();
