@@ -7,6 +7,7 @@ pub mod analysis;
 pub mod case;
 pub mod cli;
 pub mod design;
+pub mod fatigue;
 pub mod fem;
 pub mod hinge;
 pub mod kinematics;

@@ -1,5 +1,6 @@
 //! Linear-elastic isotropic materials and the built-in library.
 
+use crate::fatigue::MaterialFatigue;
 use serde::{Deserialize, Serialize};
 
 /// A linear-elastic isotropic material in the mm–N–MPa–tonne system.
@@ -27,6 +28,9 @@ pub struct Material {
     #[schemars(transform = no_default)]
     #[schemars(extend("exclusiveMinimum" = 0))]
     pub allowable: f64,
+    /// High-cycle fatigue data (`null`/absent: none; a case with a `"fatigue"` block needs it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fatigue: Option<MaterialFatigue>,
 }
 
 /// The default "unlimited" (infinity) has no JSON spelling: the schema states it in words.
@@ -40,30 +44,49 @@ fn default_strength() -> f64 {
 
 impl Material {
     /// Aluminium 7075-T6 as used by Ruiz et al. (2019, §4–5): E = 72 GPa, ν = 0.33,
-    /// ρ = 2.81 g/cm³, yield 503 MPa, allowable 400 MPa.
+    /// ρ = 2.81 g/cm³, yield 503 MPa, allowable 400 MPa. Fatigue: S_ut 572 MPa, S_e' 159 MPa
+    /// (R. R. Moore rotating beam, 5·10⁸ cycles; ASM Handbook vol. 2 / MIL-HDBK-5), Peterson's
+    /// a = 0.635 mm for aluminium alloys (Peterson, Stress Concentration Factors, 1974).
     pub const AL7075: Material = Material {
         e: 72_000.0,
         nu: 0.33,
         density: 2.81e-9,
         yield_strength: 503.0,
         allowable: 400.0,
+        fatigue: Some(MaterialFatigue {
+            endurance: 159.0,
+            ultimate: 572.0,
+            sn_cycles: 5e8,
+            basquin_b: None,
+            peterson_a_mm: Some(0.635),
+        }),
     };
     /// Nylon 66 as used for the 8R pan-tilt mechanism (8R pan-tilt paper): E = 3.3 GPa, ν = 0.33, ρ = 1.15 g/cm³.
-    /// Yield 80 MPa (typical datasheet value, dry), allowable 50 MPa.
+    /// Yield 80 MPa (typical datasheet value, dry), allowable 50 MPa. No fatigue data built in.
     pub const NYLON66: Material = Material {
         e: 3_300.0,
         nu: 0.33,
         density: 1.15e-9,
         yield_strength: 80.0,
         allowable: 50.0,
+        fatigue: None,
     };
     /// Generic structural steel: E = 210 GPa (Han et al.), ν = 0.3, ρ = 7.85 g/cm³, yield 355 MPa, allowable 235 MPa.
+    /// Fatigue: S_ut 470 MPa (minimum of EN 10025-2 S355), S_e' = 0.5 S_ut at 10⁶ cycles
+    /// (Shigley 10th ed. eq. (6-8)), Peterson's a from eq. (6-35a).
     pub const STEEL: Material = Material {
         e: 210_000.0,
         nu: 0.3,
         density: 7.85e-9,
         yield_strength: 355.0,
         allowable: 235.0,
+        fatigue: Some(MaterialFatigue {
+            endurance: 235.0,
+            ultimate: 470.0,
+            sn_cycles: 1e6,
+            basquin_b: None,
+            peterson_a_mm: None,
+        }),
     };
 
     /// Names accepted for built-in materials.

@@ -92,7 +92,12 @@ fn reversed_load_gives_a_negative_multiplier() {
     m.supports.push(Support::clamp(0));
     m.load_cases.push(load(10, [2.0, 0.0, 0.0, 0.0, 0.0, 0.0]));
     let lam = lowest(&m, 1)[0];
-    check("reversed clamped–free", -2.0 * lam, PI * PI * ei / (4.0 * l * l), EULER_TOL);
+    check(
+        "reversed clamped–free",
+        -2.0 * lam,
+        PI * PI * ei / (4.0 * l * l),
+        EULER_TOL,
+    );
 }
 
 /// Lateral–torsional buckling of a deep simply supported beam (fork supports: lateral

@@ -135,6 +135,7 @@ fn design(rng: &mut Rng, fam: usize) -> (HingeSpec, Material) {
         density: 0.0,
         yield_strength: f64::INFINITY,
         allowable: rng.log(10.0, 1000.0),
+        fatigue: None,
     };
     (spec, material)
 }

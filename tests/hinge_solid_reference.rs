@@ -90,7 +90,12 @@ fn report(label: &str, rows: &[&Row]) -> [f64; 4] {
         let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         (lo, hi, lo.abs().max(hi.abs()))
     };
-    let q = [range(|r| r.bend), range(|r| r.torsion), range(|r| r.axial), range(|r| r.spm)];
+    let q = [
+        range(|r| r.bend),
+        range(|r| r.torsion),
+        range(|r| r.axial),
+        range(|r| r.spm),
+    ];
     println!(
         "{label} (n = {}): bending {:+.2} … {:+.2} %, torsion {:+.2} … {:+.2} %, axial {:+.2} … {:+.2} %, \
          peak stress per moment {:+.2} … {:+.2} %",
@@ -111,7 +116,11 @@ fn report(label: &str, rows: &[&Row]) -> [f64; 4] {
 /// first `tol.len()` of them).
 fn check(label: &str, worst: &[f64], tol: &[f64]) {
     assert_eq!(worst.len(), tol.len());
-    for ((w, t), q) in worst.iter().zip(tol).zip(["bending", "torsion", "axial", "stress per moment"]) {
+    for ((w, t), q) in worst
+        .iter()
+        .zip(tol)
+        .zip(["bending", "torsion", "axial", "stress per moment"])
+    {
         assert!(w < t, "{label}: {q} off by up to {w:.2} %, tolerance {t} %");
     }
 }
@@ -153,7 +162,11 @@ fn circular_notches_fit_residual() {
         .filter(|r| matches!(r.spec, HingeSpec::CircularNotch { r: rad, t, .. } if t / rad >= 0.1))
         .collect();
     let torsion = report("circular notches t/R ≥ 0.1, fit residual", &thick)[1];
-    check("fitted circular notches", &[worst[0], torsion, worst[2], worst[3]], &CIRCULAR_FIT_TOL);
+    check(
+        "fitted circular notches",
+        &[worst[0], torsion, worst[2], worst[3]],
+        &CIRCULAR_FIT_TOL,
+    );
 }
 
 #[test]
@@ -171,7 +184,9 @@ fn turned_necks_fit_residual() {
     let rows: Vec<&Row> = all.iter().filter(|r| neck(r)).collect();
     assert_eq!(rows.len(), 5);
     for r in &rows {
-        let HingeSpec::SphericalNeck { l, t, .. } = r.spec else { unreachable!() };
+        let HingeSpec::SphericalNeck { l, t, .. } = r.spec else {
+            unreachable!()
+        };
         assert!(l / t >= 1.0, "{:?}", r.spec);
     }
     let worst = report("turned necks, fit residual", &rows);
@@ -195,7 +210,10 @@ const CORNER_FIT_TOL: [f64; 4] = [2.5, 15.0, 8.0, 6.0];
 #[test]
 fn corner_filleted_fit_residual() {
     let all = rows(FITTED);
-    let rows: Vec<&Row> = all.iter().filter(|r| matches!(r.spec, HingeSpec::CornerFilleted { .. })).collect();
+    let rows: Vec<&Row> = all
+        .iter()
+        .filter(|r| matches!(r.spec, HingeSpec::CornerFilleted { .. }))
+        .collect();
     assert_eq!(rows.len(), 1);
     let worst = report("pan-tilt corner-filleted hinge, fit residual", &rows);
     check("fitted corner-filleted hinge", &worst, &CORNER_FIT_TOL);
@@ -219,8 +237,16 @@ fn other_families_held_out() {
     let corner = pick(|r| matches!(r.spec, HingeSpec::CornerFilleted { .. }));
     let leaf = pick(|r| matches!(r.spec, HingeSpec::Leaf { .. }));
     assert_eq!((elliptical.len(), corner.len(), leaf.len()), (3, 2, 2));
-    check("held-out elliptical notches", &report("elliptical notches, HELD OUT", &elliptical), &ELLIPTICAL_HELD_OUT_TOL);
-    check("held-out corner-filleted hinges", &report("corner-filleted hinges, HELD OUT", &corner), &CORNER_HELD_OUT_TOL);
+    check(
+        "held-out elliptical notches",
+        &report("elliptical notches, HELD OUT", &elliptical),
+        &ELLIPTICAL_HELD_OUT_TOL,
+    );
+    check(
+        "held-out corner-filleted hinges",
+        &report("corner-filleted hinges, HELD OUT", &corner),
+        &CORNER_HELD_OUT_TOL,
+    );
     let w = report("leaves, HELD OUT (stress not compared)", &leaf);
     check("held-out leaves", &w[..3], &LEAF_HELD_OUT_TOL);
 }
@@ -231,7 +257,11 @@ fn other_families_held_out() {
 /// and gave the same digits.
 #[test]
 fn every_reference_is_a_line_of_the_raw_results() {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tools/solid_reference_results.jsonl")).unwrap();
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tools/solid_reference_results.jsonl"
+    ))
+    .unwrap();
     let lines: Vec<serde_json::Value> = text.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
     assert_eq!(lines.len(), 68);
     let close = |a: &serde_json::Value, b: f64| a.as_f64().is_some_and(|a| (a / b - 1.0).abs() < 1e-5);

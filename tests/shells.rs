@@ -15,6 +15,7 @@ fn mat(e: f64, nu: f64) -> Material {
         density: 1.0,
         yield_strength: f64::INFINITY,
         allowable: f64::INFINITY,
+        fatigue: None,
     }
 }
 

@@ -43,11 +43,16 @@ fn sources() -> Vec<(PathBuf, String, String)> {
 }
 
 fn name(path: &Path) -> String {
-    path.strip_prefix(env!("CARGO_MANIFEST_DIR")).unwrap_or(path).display().to_string()
+    path.strip_prefix(env!("CARGO_MANIFEST_DIR"))
+        .unwrap_or(path)
+        .display()
+        .to_string()
 }
 
 fn asserts_directly(body: &str) -> bool {
-    ["assert", "panic!", "unwrap_err", "expect_err", "unreachable!"].iter().any(|k| body.contains(k))
+    ["assert", "panic!", "unwrap_err", "expect_err", "unreachable!"]
+        .iter()
+        .any(|k| body.contains(k))
 }
 
 fn calls(body: &str, name: &str) -> bool {
@@ -76,7 +81,10 @@ fn no_ignored_tests() {
             }
         }
     }
-    assert!(hits.is_empty(), "{IGNORE}]d tests (run them, make them a bench or remove them): {hits:?}");
+    assert!(
+        hits.is_empty(),
+        "{IGNORE}]d tests (run them, make them a bench or remove them): {hits:?}"
+    );
 }
 
 #[test]

@@ -48,6 +48,7 @@ fn guide(cases: Vec<LoadCase>) -> (Model, usize) {
         density: RHO,
         yield_strength: 1e9,
         allowable: 1e9,
+        fatigue: None,
     };
     let mut m = Model::new();
     let mut ends = Vec::new();

@@ -18,6 +18,7 @@ fn rigid_rotation_keeps_frequencies_and_turns_the_compliance() {
         density: 2.7e-9,
         yield_strength: 1e9,
         allowable: 1e9,
+        fatigue: None,
     };
     let mut m = Model::new();
     let mut prev = m.add_node([0.0, 0.0, 0.0]);

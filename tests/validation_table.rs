@@ -20,7 +20,9 @@ const KINDS: [&str; 3] = ["independent", "cross-check", "regression"];
 /// The rows of the Validation table, each split into its cells.
 fn table() -> Vec<Vec<String>> {
     let readme = std::fs::read_to_string(common::root().join("README.md")).unwrap();
-    let start = readme.find("\n## Validation\n").expect("README has a Validation section");
+    let start = readme
+        .find("\n## Validation\n")
+        .expect("README has a Validation section");
     let section = &readme[start + 1..];
     let section = &section[..section[3..].find("\n## ").map_or(section.len(), |e| e + 3)];
     let lines: Vec<&str> = section.lines().filter(|l| l.starts_with('|')).collect();
@@ -142,7 +144,9 @@ fn every_row_names_a_test_its_kind_and_the_tolerance_that_test_asserts() {
         }
         for tol in tolerances {
             if !source.contains(&tol) {
-                problems.push(format!("{what}: tolerance `{tol}` not found in {path}::{fns:?} (or what it uses)"));
+                problems.push(format!(
+                    "{what}: tolerance `{tol}` not found in {path}::{fns:?} (or what it uses)"
+                ));
             }
         }
     }

@@ -21,6 +21,9 @@ pub struct HingeOut {
     /// Identified joint damping (`"damping"` only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub damping: Option<DampingOut>,
+    /// Fatigue assessment (`"fatigue"` only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fatigue: Option<super::hinge_fatigue::FatigueOut>,
 }
 
 /// The joint damping identified from a simulated step response (Yu, Lu and Hao (2016), §4.1).
@@ -118,10 +121,22 @@ pub fn solve(case: &HingeCase) -> Result<HingeOut, super::RunError> {
         }
         None => None,
     };
+    let fatigue = match &case.fatigue {
+        Some(spec) => {
+            let f = spec.validate("material", &m)?;
+            let profile = case
+                .hinge
+                .profile()
+                .map_err(|e| super::RunError::Case(hinge_error(&e, "hinge", "material")))?;
+            Some(super::hinge_fatigue::assess(spec, &m, &f, &profile, &result))
+        }
+        None => None,
+    };
     Ok(HingeOut {
         result,
         large_rotation,
         damping,
+        fatigue,
     })
 }
 

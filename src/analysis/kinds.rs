@@ -63,6 +63,9 @@ impl Analysis for Hinge {
         if let Some(d) = &r.damping {
             report.markdown += &hinge::damping_report(d);
         }
+        if let Some(f) = &r.fatigue {
+            report.markdown += &super::hinge_fatigue::report(f);
+        }
         report
     }
     fn case_warnings(case: &Self::Case) -> Vec<String> {

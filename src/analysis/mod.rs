@@ -11,6 +11,7 @@ pub mod finite;
 pub mod frf_files;
 pub mod frf_result;
 pub mod hinge;
+pub mod hinge_fatigue;
 pub mod kind;
 pub mod kinds;
 pub mod kinds_list;

@@ -29,6 +29,10 @@ case_struct! {
         /// with K from statics.
         #[serde(default)]
         pub damping: Option<HingeDampingSpec>,
+        /// High-cycle fatigue of a cyclic rotation about the compliant axis (the material needs
+        /// `"fatigue"` data): utilisation, life, and the stroke at infinite life.
+        #[serde(default)]
+        pub fatigue: Option<super::fatigue::FatigueSpec>,
     }
 }
 
@@ -40,6 +44,9 @@ impl HingeCase {
         self.hinge.profile().map_err(|e| hinge_error(&e, "hinge", "material"))?;
         if let Some(d) = &self.damping {
             d.run()?;
+        }
+        if let Some(f) = &self.fatigue {
+            f.validate("material", &m)?;
         }
         Ok(m)
     }

@@ -6,6 +6,7 @@
 
 pub mod design;
 pub mod error;
+pub mod fatigue;
 pub mod fem_case;
 pub(crate) mod fields;
 pub mod gmsh;

@@ -11,4 +11,5 @@ pub const STEEL: Material = Material {
     density: 7.85e-9,
     yield_strength: f64::INFINITY,
     allowable: f64::INFINITY,
+    fatigue: None,
 };

@@ -13,6 +13,7 @@ pub fn mat(e: f64, nu: f64) -> Material {
         density: 0.0,
         yield_strength: 1e9,
         allowable: 1e9,
+        fatigue: None,
     }
 }
 

@@ -48,7 +48,9 @@ pub fn mask(code: &str) -> String {
             b'\'' => {
                 // A char literal ('x', '\n', '{', '"') — not a lifetime ('a).
                 let len = if b.get(i + 1) == Some(&b'\\') {
-                    b.get(i + 3..).and_then(|r| r.iter().position(|&c| c == b'\'')).map(|p| p + 4)
+                    b.get(i + 3..)
+                        .and_then(|r| r.iter().position(|&c| c == b'\''))
+                        .map(|p| p + 4)
                 } else {
                     let ch = code[i + 1..].chars().next().map_or(1, char::len_utf8);
                     (b.get(i + 1 + ch) == Some(&b'\'')).then_some(ch + 2)
@@ -82,7 +84,10 @@ pub fn functions(m: &str, macros: bool) -> Vec<(String, usize, std::ops::Range<u
             if at > 0 && (b[at - 1].is_ascii_alphanumeric() || b[at - 1] == b'_') {
                 continue;
             }
-            let name: String = m[from..].chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
+            let name: String = m[from..]
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect();
             if name.is_empty() {
                 continue;
             }

@@ -1,0 +1,124 @@
+//! High-cycle fatigue of a notch hinge (`"fatigue"` of a `hinge` case): the stroke at infinite
+//! life and the Basquin life against a hand computation written out step by step after Budynas
+//! & Nisbett, Shigley's Mechanical Engineering Design, 10th ed. (2015), ch. 6; errors of a fatigue
+//! block without material fatigue data.
+//!
+//! Hinge: the Ruiz et al. (2019) revolute notch, Al 7075-T6, R = 8 mm, t = 2 mm, w = h = 10 mm.
+//! From the hinge result the hand computation takes only what it cannot compute by hand: the
+//! compliant-axis stiffness k_bend (the model's answer) and the model's elastic stress
+//! concentration K_t (calibrated to solid models). Everything else is written out below.
+//! The tolerance `HAND_TOL` (1e-9 relative) is far inside the 1 % the feature requires: the two
+//! computations evaluate the same closed-form steps in different code.
+
+mod common;
+
+/// Relative tolerance of the hand computations (they agree to ~1e-15).
+const HAND_TOL: f64 = 1e-9;
+
+fn run_fatigue(fatigue: &str, material: &str) -> serde_json::Value {
+    let text = format!(
+        r#"{{"analysis": "hinge", "material": {material},
+            "hinge": {{"type": "circular_notch", "R": 8, "t": 2, "w": 10, "h": 10, "blank_length": 20}},
+            "fatigue": {fatigue}}}"#
+    );
+    let o = common::run_case_text("hinge_fatigue", &text);
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a / b - 1.0).abs()
+}
+
+/// The hand steps shared by both tests: (fatigue stress per radian, MPa/rad; corrected S_e, MPa).
+fn hand_steps(r: &serde_json::Value) -> (f64, f64) {
+    let (big_r, t, w) = (8.0_f64, 2.0_f64, 10.0_f64);
+    let k_bend = r["k_bend"].as_f64().unwrap(); // N·mm/rad, the model's
+    let kt = r["stress_concentration"].as_f64().unwrap(); // the model's K_t
+    // Nominal bending stress of the waist per radian: σ = 6 M/(w t²), M = k_bend θ.
+    let nominal_per_rad = 6.0 * k_bend / (w * t * t);
+    // Peterson's notch sensitivity, a = 0.635 mm for aluminium alloys, r = R for a circular notch.
+    let q = 1.0 / (1.0 + 0.635 / big_r);
+    // Fatigue notch factor, Shigley eq. (6-32).
+    let kf = 1.0 + q * (kt - 1.0);
+    // Marin surface factor, machined: k_a = 4.51 S_ut^−0.265, S_ut = 572 MPa (eq. 6-19, Table 6-2).
+    let ka = 4.51 * 572.0_f64.powf(-0.265);
+    // Size factor in non-rotating bending: d_e = 0.808 √(t w) (eq. 6-25), k_b = 1.24 d_e^−0.107 (eq. 6-20).
+    let d_e = 0.808 * (t * w).sqrt();
+    assert!((2.79..=51.0).contains(&d_e), "d_e = {d_e} mm outside eq. (6-20)'s range");
+    let kb = 1.24 * d_e.powf(-0.107);
+    // k_c = 1 (bending), k_d = 1 (room temperature), k_e = 1 (50 % reliability);
+    // S_e' = 159 MPa (7075-T6, rotating beam, 5e8 cycles).
+    let se = ka * kb * 159.0;
+    assert_eq!(r["fatigue"]["kf"].as_f64().map(|v| rel(v, kf) < HAND_TOL), Some(true), "K_f");
+    assert_eq!(r["fatigue"]["endurance_corrected"].as_f64().map(|v| rel(v, se) < HAND_TOL), Some(true), "S_e");
+    (kf * nominal_per_rad, se)
+}
+
+#[test]
+fn notch_stroke_at_infinite_life_matches_goodman_by_hand() {
+    let r = run_fatigue(r#"{"cycles": 1e9, "stroke": 0.2, "mean": 0.5, "method": "goodman"}"#, "\"Al7075\"");
+    let (c, se) = hand_steps(&r);
+    // Modified Goodman (Shigley eq. 6-41): c θ_a / S_e + c θ_m / S_ut = 1 → θ_a.
+    let sm = c * 0.5_f64.to_radians();
+    let theta_a = (se * (1.0 - sm / 572.0) / c).to_degrees();
+    let got = r["fatigue"]["stroke_infinite_life"].as_f64().unwrap();
+    assert!(rel(got, theta_a) < HAND_TOL, "stroke at infinite life {got}° vs hand {theta_a}°");
+    // The 0.2° stroke is inside it: utilisation c θ_a/S_e + σ_m/S_ut < 1 and infinite life.
+    let u = c * 0.2_f64.to_radians() / se + sm / 572.0;
+    let got_u = r["fatigue"]["fatigue_utilisation"].as_f64().unwrap();
+    assert!(rel(got_u, u) < HAND_TOL, "utilisation {got_u} vs hand {u}");
+    assert!(u < 1.0, "{u}");
+    assert!(r["fatigue"]["life_cycles"].is_null(), "{}", r["fatigue"]);
+    // Soderberg uses S_y = 503 MPa for the mean: a smaller stroke.
+    let s = run_fatigue(r#"{"cycles": 1e9, "stroke": 0.2, "mean": 0.5, "method": "soderberg"}"#, "\"Al7075\"");
+    let theta_s = (se * (1.0 - sm / 503.0) / c).to_degrees();
+    let got_s = s["fatigue"]["stroke_infinite_life"].as_f64().unwrap();
+    assert!(rel(got_s, theta_s) < HAND_TOL, "Soderberg {got_s}° vs hand {theta_s}°");
+}
+
+#[test]
+fn finite_life_follows_basquin_by_hand() {
+    let r = run_fatigue(r#"{"cycles": 1e6, "stroke": 0.6, "mean": 0.2}"#, "\"Al7075\"");
+    let (c, se) = hand_steps(&r);
+    let (sa, sm) = (c * 0.6_f64.to_radians(), c * 0.2_f64.to_radians());
+    // Fully reversed equivalent (Goodman, Shigley eq. 6-59), then Basquin through S_e at
+    // N_e = 5e8 with b from 0.9 S_ut at 10³ cycles (Shigley §6-7, Fig. 6-18).
+    let s_ar = sa / (1.0 - sm / 572.0);
+    assert!(s_ar > se, "the stroke must be above the endurance limit: {s_ar} vs {se}");
+    let b = (159.0_f64 / (0.9 * 572.0)).log10() / (5e8_f64 / 1e3).log10();
+    let n = 5e8 * (s_ar / se).powf(1.0 / b);
+    let got = r["fatigue"]["life_cycles"].as_f64().unwrap();
+    assert!(rel(got, n) < HAND_TOL, "life {got} vs hand {n}");
+    // Utilisation at 1e6 cycles against S_f = S_e (1e6/5e8)^b.
+    let u = sa / (se * (1e6_f64 / 5e8).powf(b)) + sm / 572.0;
+    let got_u = r["fatigue"]["fatigue_utilisation"].as_f64().unwrap();
+    assert!(rel(got_u, u) < HAND_TOL, "utilisation {got_u} vs hand {u}");
+}
+
+#[test]
+fn fatigue_without_material_data_is_refused_naming_the_path() {
+    let fatigue = r#"{"cycles": 1e7, "stroke": 0.5}"#;
+    for (material, path) in [
+        ("\"nylon66\"", "material.fatigue"),
+        (r#"{"E": 72000, "nu": 0.33, "allowable": 400}"#, "material.fatigue"),
+        (
+            r#"{"E": 72000, "nu": 0.33, "fatigue": {"endurance": 600, "ultimate": 572}}"#,
+            "material.fatigue.endurance",
+        ),
+    ] {
+        let text = format!(
+            r#"{{"analysis": "hinge", "material": {material},
+                "hinge": {{"type": "circular_notch", "R": 8, "t": 2, "w": 10, "h": 10, "blank_length": 20}},
+                "fatigue": {fatigue}}}"#
+        );
+        for cmd in ["run", "check"] {
+            let d = common::tempdir("hinge_fatigue_err");
+            let p = d.join("case.json");
+            std::fs::write(&p, &text).unwrap();
+            let o = common::run_in(&d, &[cmd, p.to_str().unwrap()]);
+            assert_eq!(o.status.code(), Some(2), "{cmd} {material}: {}", common::stderr(&o));
+            assert!(common::stderr(&o).contains(path), "{cmd} {material}: {}", common::stderr(&o));
+        }
+    }
+}
