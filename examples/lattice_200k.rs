@@ -14,9 +14,10 @@ use flexfem::material::Material;
 use std::time::Instant;
 
 fn main() {
-    let out = std::env::args()
-        .nth(1)
-        .map_or_else(|| std::env::temp_dir().join("lattice200k.mtx"), std::path::PathBuf::from);
+    let out = std::env::args().nth(1).map_or_else(
+        || std::env::temp_dir().join("lattice200k.mtx"),
+        std::path::PathBuf::from,
+    );
     let t = Instant::now();
     let m = cubic_lattice(31, 10.0, Section::Circle { d: 1.5 }, Material::AL7075, 1000.0);
     println!("build model: {:?}, {} DOF", t.elapsed(), m.n_dofs());
