@@ -35,7 +35,7 @@ fn hand_steps(r: &serde_json::Value) -> (f64, f64) {
     let (big_r, t, w) = (8.0_f64, 2.0_f64, 10.0_f64);
     let k_bend = r["k_bend"].as_f64().unwrap(); // N·mm/rad, the model's
     let kt = r["stress_concentration"].as_f64().unwrap(); // the model's K_t
-    // Nominal bending stress of the waist per radian: σ = 6 M/(w t²), M = k_bend θ.
+                                                          // Nominal bending stress of the waist per radian: σ = 6 M/(w t²), M = k_bend θ.
     let nominal_per_rad = 6.0 * k_bend / (w * t * t);
     // Peterson's notch sensitivity, a = 0.635 mm for aluminium alloys, r = R for a circular notch.
     let q = 1.0 / (1.0 + 0.635 / big_r);
@@ -45,25 +45,44 @@ fn hand_steps(r: &serde_json::Value) -> (f64, f64) {
     let ka = 4.51 * 572.0_f64.powf(-0.265);
     // Size factor in non-rotating bending: d_e = 0.808 √(t w) (eq. 6-25), k_b = 1.24 d_e^−0.107 (eq. 6-20).
     let d_e = 0.808 * (t * w).sqrt();
-    assert!((2.79..=51.0).contains(&d_e), "d_e = {d_e} mm outside eq. (6-20)'s range");
+    assert!(
+        (2.79..=51.0).contains(&d_e),
+        "d_e = {d_e} mm outside eq. (6-20)'s range"
+    );
     let kb = 1.24 * d_e.powf(-0.107);
     // k_c = 1 (bending), k_d = 1 (room temperature), k_e = 1 (50 % reliability);
     // S_e' = 159 MPa (7075-T6, rotating beam, 5e8 cycles).
     let se = ka * kb * 159.0;
-    assert_eq!(r["fatigue"]["kf"].as_f64().map(|v| rel(v, kf) < HAND_TOL), Some(true), "K_f");
-    assert_eq!(r["fatigue"]["endurance_corrected"].as_f64().map(|v| rel(v, se) < HAND_TOL), Some(true), "S_e");
+    assert_eq!(
+        r["fatigue"]["kf"].as_f64().map(|v| rel(v, kf) < HAND_TOL),
+        Some(true),
+        "K_f"
+    );
+    assert_eq!(
+        r["fatigue"]["endurance_corrected"]
+            .as_f64()
+            .map(|v| rel(v, se) < HAND_TOL),
+        Some(true),
+        "S_e"
+    );
     (kf * nominal_per_rad, se)
 }
 
 #[test]
 fn notch_stroke_at_infinite_life_matches_goodman_by_hand() {
-    let r = run_fatigue(r#"{"cycles": 1e9, "stroke": 0.2, "mean": 0.5, "method": "goodman"}"#, "\"Al7075\"");
+    let r = run_fatigue(
+        r#"{"cycles": 1e9, "stroke": 0.2, "mean": 0.5, "method": "goodman"}"#,
+        "\"Al7075\"",
+    );
     let (c, se) = hand_steps(&r);
     // Modified Goodman (Shigley eq. 6-41): c θ_a / S_e + c θ_m / S_ut = 1 → θ_a.
     let sm = c * 0.5_f64.to_radians();
     let theta_a = (se * (1.0 - sm / 572.0) / c).to_degrees();
     let got = r["fatigue"]["stroke_infinite_life"].as_f64().unwrap();
-    assert!(rel(got, theta_a) < HAND_TOL, "stroke at infinite life {got}° vs hand {theta_a}°");
+    assert!(
+        rel(got, theta_a) < HAND_TOL,
+        "stroke at infinite life {got}° vs hand {theta_a}°"
+    );
     // The 0.2° stroke is inside it: utilisation c θ_a/S_e + σ_m/S_ut < 1 and infinite life.
     let u = c * 0.2_f64.to_radians() / se + sm / 572.0;
     let got_u = r["fatigue"]["fatigue_utilisation"].as_f64().unwrap();
@@ -71,7 +90,10 @@ fn notch_stroke_at_infinite_life_matches_goodman_by_hand() {
     assert!(u < 1.0, "{u}");
     assert!(r["fatigue"]["life_cycles"].is_null(), "{}", r["fatigue"]);
     // Soderberg uses S_y = 503 MPa for the mean: a smaller stroke.
-    let s = run_fatigue(r#"{"cycles": 1e9, "stroke": 0.2, "mean": 0.5, "method": "soderberg"}"#, "\"Al7075\"");
+    let s = run_fatigue(
+        r#"{"cycles": 1e9, "stroke": 0.2, "mean": 0.5, "method": "soderberg"}"#,
+        "\"Al7075\"",
+    );
     let theta_s = (se * (1.0 - sm / 503.0) / c).to_degrees();
     let got_s = s["fatigue"]["stroke_infinite_life"].as_f64().unwrap();
     assert!(rel(got_s, theta_s) < HAND_TOL, "Soderberg {got_s}° vs hand {theta_s}°");
@@ -85,7 +107,10 @@ fn finite_life_follows_basquin_by_hand() {
     // Fully reversed equivalent (Goodman, Shigley eq. 6-59), then Basquin through S_e at
     // N_e = 5e8 with b from 0.9 S_ut at 10³ cycles (Shigley §6-7, Fig. 6-18).
     let s_ar = sa / (1.0 - sm / 572.0);
-    assert!(s_ar > se, "the stroke must be above the endurance limit: {s_ar} vs {se}");
+    assert!(
+        s_ar > se,
+        "the stroke must be above the endurance limit: {s_ar} vs {se}"
+    );
     let b = (159.0_f64 / (0.9 * 572.0)).log10() / (5e8_f64 / 1e3).log10();
     let n = 5e8 * (s_ar / se).powf(1.0 / b);
     let got = r["fatigue"]["life_cycles"].as_f64().unwrap();
@@ -118,7 +143,11 @@ fn fatigue_without_material_data_is_refused_naming_the_path() {
             std::fs::write(&p, &text).unwrap();
             let o = common::run_in(&d, &[cmd, p.to_str().unwrap()]);
             assert_eq!(o.status.code(), Some(2), "{cmd} {material}: {}", common::stderr(&o));
-            assert!(common::stderr(&o).contains(path), "{cmd} {material}: {}", common::stderr(&o));
+            assert!(
+                common::stderr(&o).contains(path),
+                "{cmd} {material}: {}",
+                common::stderr(&o)
+            );
         }
     }
 }

@@ -102,6 +102,15 @@ impl Units for HingeOut {
                 "fit_residual" | "steps" => "-",
                 _ => return None,
             },
+            ["fatigue", field] => match *field {
+                "fatigue_utilisation" | "kt" | "notch_sensitivity" | "kf" | "marin_surface" | "marin_size" => "-",
+                "life_cycles" => "cycles",
+                "stroke_infinite_life" => "deg",
+                "notch_radius_mm" => "mm",
+                "endurance_corrected" | "stress_alternating" | "stress_mean" => "MPa",
+                "stress_per_rad" => "MPa/rad",
+                _ => return None,
+            },
             _ => return stiffness_unit(path),
         })
     }
@@ -110,6 +119,8 @@ impl Units for HingeOut {
         match path {
             ["hinge", rest @ ..] => hinge_spec_unit(rest),
             ["material", field] => material_unit(field),
+            ["fatigue", "stroke" | "mean"] => Some("deg"),
+            ["fatigue", "cycles"] => Some("cycles"),
             _ => None,
         }
     }
