@@ -88,7 +88,9 @@ fn figures(text: &str, line: usize) -> Vec<Figure> {
                 j += '–'.len_utf8() + m;
             }
         }
-        if let Some((f, kind, m)) = unit(&text[j..]) {
+        // `1/s` is a unit (a Rayleigh α), not a rate.
+        let unit_name = text[i..].starts_with("1/s");
+        if let Some((f, kind, m)) = unit(&text[j..]).filter(|_| !unit_name) {
             let before = text[..i].trim_end();
             let approx = before.ends_with('≈') || before.ends_with('~');
             out.push(Figure { lo: lo * f, hi: hi * f, kind, approx, line });
@@ -128,7 +130,7 @@ fn agrees(p: &Figure, t: &Figure) -> bool {
 
 #[test]
 fn figure_scanner_reads_ranges_units_and_approximations() {
-    let f = figures("≈ 36 µs, 27,000–30,300 stage designs per second, 7.53 ms, 2,556/s, 384 s, L2 5 ms", 1);
+    let f = figures("≈ 36 µs, 27,000–30,300 stage designs per second, 7.53 ms, 2,556/s, 384 s, α (1/s), L2 5 ms", 1);
     assert_eq!(f.len(), 5, "{f:?}");
     assert!((f[0].lo - 36e-6).abs() < 1e-15 && f[0].approx && f[0].kind == Kind::Time);
     assert!(f[1].lo == 27_000.0 && f[1].hi == 30_300.0 && f[1].kind == Kind::Rate && !f[1].approx);
@@ -237,4 +239,39 @@ fn command_table_names_every_cli_flag() {
         let name = r.trim_start_matches("| `flexfem ").split([' ', '`']).next().unwrap();
         assert!(name.starts_with("--") || commands.iter().any(|c| c == name), "README command `{name}` is not a subcommand");
     }
+}
+
+/// The `transient` and `frf` examples of the case-file reference run as printed (their mesh
+/// path resolves as from `cases/`). `meshes/cantilever.json`: L = 100 mm, Al 7075 (E = 72,000 MPa,
+/// ν = 0.33), 10 × 5 mm section bending about y (I = 104.17 mm⁴), Timoshenko κ = 5/6. Transient:
+/// the step load of 1 N at x = a = 50 mm settles (ζ₁ = β ω₁/2 ≈ 0.08, 16 periods) to the static
+/// tip deflection P a²(3L − a)/(6EI) + P a/(κGA) = 0.013933 mm to 0.1 %; frf: the static gain
+/// from the tip push to the tip uz is L³/(3EI) + L/(κGA) = 0.044533 mm/N to 0.1 % (Timoshenko
+/// cantilever; e.g. S. Timoshenko, J. Gere, Mechanics of Materials, §9).
+#[test]
+fn transient_and_frf_reference_examples_run() {
+    let section = README.split("### `transient` and `frf`").nth(1).unwrap().split("\n## ").next().unwrap();
+    let blocks: Vec<&str> = section.split("```json\n").skip(1).map(|b| b.split("```").next().unwrap()).collect();
+    assert_eq!(blocks.len(), 2, "a transient and an frf example");
+    let root = std::env::temp_dir().join(format!("flexfem-readme-examples-{}", std::process::id()));
+    std::fs::create_dir_all(root.join("cases")).unwrap();
+    std::fs::create_dir_all(root.join("meshes")).unwrap();
+    std::fs::copy(concat!(env!("CARGO_MANIFEST_DIR"), "/meshes/cantilever.json"), root.join("meshes/cantilever.json")).unwrap();
+    let mut results = Vec::new();
+    for (k, b) in blocks.iter().enumerate() {
+        let path = root.join(format!("cases/example_{k}.json"));
+        std::fs::write(&path, b).unwrap();
+        let case = flexfem::analysis::load(&path).unwrap_or_else(|e| panic!("README example {k}: {e}"));
+        results.push(flexfem::analysis::run(&case).unwrap_or_else(|e| panic!("README example {k}: {e}")).json);
+    }
+    let _ = std::fs::remove_dir_all(&root);
+    let (l, a, e, nu, i, area) = (100.0, 50.0, 72_000.0, 0.33, 10.0 * 125.0 / 12.0, 50.0);
+    let kga = 5.0 / 6.0 * e / (2.0 * (1.0 + nu)) * area;
+    let settled = a * a * (3.0 * l - a) / (6.0 * e * i) + a / kga;
+    let record = &results[0]["records"][0];
+    let last = record["final_value"].as_f64().unwrap_or_else(|| panic!("{record}"));
+    assert!((-last / settled - 1.0).abs() < 1e-3, "tip uz settles at {last} mm vs −{settled} mm");
+    let compliance = l * l * l / (3.0 * e * i) + l / kga;
+    let gain = results[1]["static_gain"][0][0].as_f64().unwrap();
+    assert!((gain / compliance - 1.0).abs() < 1e-3, "static gain {gain} vs {compliance} mm/N");
 }
