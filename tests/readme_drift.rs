@@ -275,3 +275,47 @@ fn transient_and_frf_reference_examples_run() {
     let gain = results[1]["static_gain"][0][0].as_f64().unwrap();
     assert!((gain / compliance - 1.0).abs() < 1e-3, "static gain {gain} vs {compliance} mm/N");
 }
+
+/// `key="value"` of an XML start tag.
+fn attr<'a>(tag: &'a str, key: &str) -> Option<&'a str> {
+    let at = tag.find(&format!(" {key}=\""))? + key.len() + 3;
+    tag[at..].split('"').next()
+}
+
+/// The SVG figure the README shows: every `<text>` label lies inside the view box, by a
+/// generous estimate of its extent (0.6 em per character, ascent 0.8 em, descent 0.25 em; the
+/// sans-serif average is ~0.5 em), and no two labels overlap. Before, "Beams: same axes …" and
+/// "Blanks (w × h) …" ran past the right edge of the 640-wide view box (to ≈ 810).
+#[test]
+fn hinge_axes_svg_labels_are_inside_the_view_box() {
+    let svg = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/hinge_axes.svg")).unwrap();
+    assert!(README.contains("docs/hinge_axes.svg"));
+    let root = &svg[svg.find("<svg").unwrap()..];
+    let root = &root[..root.find('>').unwrap()];
+    let view: Vec<f64> = attr(root, "viewBox").unwrap().split_whitespace().map(|v| v.parse().unwrap()).collect();
+    assert_eq!(view.len(), 4);
+    let size: f64 = attr(root, "font-size").unwrap().parse().unwrap();
+    let mut boxes: Vec<(String, [f64; 4])> = Vec::new();
+    for piece in svg.split("<text").skip(1) {
+        let (tag, rest) = piece.split_once('>').unwrap();
+        let label = rest.split("</text>").next().unwrap();
+        let x: f64 = attr(tag, "x").unwrap().parse().unwrap();
+        let y: f64 = attr(tag, "y").unwrap().parse().unwrap();
+        let fs: f64 = attr(tag, "font-size").map_or(size, |v| v.parse().unwrap());
+        let w = 0.6 * fs * label.chars().count() as f64;
+        let left = match attr(tag, "text-anchor") {
+            Some("middle") => x - w / 2.0,
+            Some("end") => x - w,
+            _ => x,
+        };
+        let b = [left, y - 0.8 * fs, left + w, y + 0.25 * fs];
+        let inside = b[0] >= view[0] && b[1] >= view[1] && b[2] <= view[0] + view[2] && b[3] <= view[1] + view[3];
+        assert!(inside, "label {label:?} spans x {:.0}–{:.0}, y {:.0}–{:.0}: outside the view box {view:?}", b[0], b[2], b[1], b[3]);
+        for (other, o) in &boxes {
+            let apart = b[2] <= o[0] || o[2] <= b[0] || b[3] <= o[1] || o[3] <= b[1];
+            assert!(apart, "labels {label:?} and {other:?} overlap");
+        }
+        boxes.push((label.to_string(), b));
+    }
+    assert!(boxes.len() >= 8, "the figure's labels: {}", boxes.len());
+}
