@@ -25,9 +25,12 @@ pub struct LineFormat {
     pub loaded_displacements: bool,
 }
 
+/// Per load case, the nodes whose displacements a static sweep line keeps ([`loaded_nodes`]).
+pub type LoadedNodes = Vec<Vec<usize>>;
+
 /// The nodes each load case of a static model loads (`forces`, `group_forces` given by node)
 /// or prescribes (`displacements`), sorted: the displacements a sweep line keeps by default.
-pub fn loaded_nodes(model: &MeshSpec) -> Vec<Vec<usize>> {
+pub fn loaded_nodes(model: &MeshSpec) -> LoadedNodes {
     model
         .load_cases
         .iter()

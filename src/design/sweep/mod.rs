@@ -132,7 +132,7 @@ fn evaluate(
     shapes: &Shapes,
     format: &LineFormat,
     hash: &mut Option<String>,
-) -> Result<(Value, Option<Vec<Vec<usize>>>), String> {
+) -> Result<(Value, Option<format::LoadedNodes>), String> {
     let design = sweep.design(index).map_err(|e| case_text(&e))?;
     *hash = Some(hash_design(&design, base_dir));
     let case = shapes.parse(design, base_dir).map_err(|e| case_text(&e))?;
