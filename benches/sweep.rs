@@ -42,6 +42,7 @@ fn bench(c: &mut Criterion) {
         fields: None,
         notes_by_ref: true,
         omit: omitted_fields("stage").iter().map(|p| p.to_string()).collect(),
+        loaded_displacements: false,
     };
     let mut g = c.benchmark_group("sweep_stage");
     g.sample_size(10);

@@ -118,3 +118,32 @@ fn unreachable_pose_is_an_error() {
     v["poses"][0]["pz"] = json!(-800);
     assert!(matches!(run(v), Err(RunError::Analysis(_))));
 }
+
+/// Nigatu et al. (Sprint Z3 3-PRS head, vertical actuators): the platform sits beyond the
+/// revolute joints along +z, on the tool side, as in the real head; the other IKP branch is its
+/// mirror image about the platform plane, with the sliders past the platform. The bundled case
+/// states its branch, and at each of its poses and over the corners and centre of its map z(P)
+/// exceeds every z(Cᵢ) (Cᵢ from the library's IKP).
+#[test]
+fn sprint_case_platform_is_above_the_revolute_joints() {
+    let v = load("prs_stiffness_sprint_z3");
+    assert_eq!(v["mechanism"]["branch"], json!("minus"), "the case must state its IKP branch");
+    let case = parse(v);
+    let layout = case.validate().unwrap().model.layout;
+    let m = case.map.as_ref().unwrap();
+    let mut poses: Vec<(f64, f64, f64)> = case.poses.iter().map(|p| (p.pz, p.psi_deg, p.theta_deg)).collect();
+    for psi in [m.psi_deg[0], 0.0, m.psi_deg[1]] {
+        for theta in [m.theta_deg[0], 0.0, m.theta_deg[1]] {
+            poses.push((m.pz, psi, theta));
+        }
+    }
+    assert_eq!(poses.len(), case.poses.len() + 9);
+    for (pz, psi, theta) in poses {
+        let st = layout.pose(pz, psi.to_radians(), theta.to_radians()).unwrap();
+        for (i, c) in st.c_pts.iter().enumerate() {
+            // Home pose: z(P) = 250 mm, z(Cᵢ) = 250 − √(500² − 76.923²) = −244.0 mm (branch
+            // `plus`: +744.0 mm, the platform hanging below the joints).
+            assert!(st.pz > c.z, "pose ({pz}, {psi}°, {theta}°): z(P) = {} mm, z(C{}) = {} mm", st.pz, i + 1, c.z);
+        }
+    }
+}

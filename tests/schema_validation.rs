@@ -306,3 +306,37 @@ fn positional_arrays_for_objects_are_refused_like_the_schema_does() {
     let e = flexfem::analysis::parse(&section.to_string()).unwrap_err();
     assert_eq!(e.path, "sections.leg", "{e}");
 }
+
+/// Each analysis' `load_cases` says what that analysis does with them: before, every mesh-based
+/// analysis repeated the `static` text ("`static`: at least one … `modal` ignores them").
+#[test]
+fn load_cases_description_is_the_analysis_own() {
+    let s = schema();
+    let arms = s["oneOf"].as_array().unwrap();
+    let described = |kind: &str| -> String {
+        let arm = arms.iter().find(|a| a["properties"]["analysis"]["const"] == kind).unwrap();
+        arm["properties"]["load_cases"]["description"].as_str().unwrap().to_string()
+    };
+    let mut texts = std::collections::BTreeSet::new();
+    for (kind, needle) in [
+        ("static", "at least one"),
+        ("modal", "Not used by `modal`"),
+        ("transient", "`loads` and `motions`"),
+        ("frf", "`inputs`"),
+        ("buckling", "reference load"),
+        ("constraints", "prescribed displacements"),
+        ("craig_bampton", "Not used by `craig_bampton`"),
+    ] {
+        let d = described(kind);
+        assert!(d.contains(needle), "{kind}: {d}");
+        texts.insert(d);
+    }
+    assert_eq!(texts.len(), 7, "two analyses share a load_cases text: {texts:?}");
+    // The transient load and the frf input document `F` and its aliases.
+    let defs = &s["$defs"];
+    let with_alias = defs.as_object().unwrap().values().filter(|d| {
+        let p = &d["properties"];
+        p.get("F").is_some() && p.get("force").is_some() && p["force"]["description"].as_str().is_some_and(|t| t.contains("Alias of `F`"))
+    });
+    assert_eq!(with_alias.count(), 2, "the transient load and the frf input");
+}

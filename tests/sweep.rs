@@ -367,7 +367,7 @@ fn mesh_paths_resolve_beside_the_sweep_file() {
     assert_eq!(lines.len(), 3);
     let uz: Vec<f64> = lines
         .iter()
-        .map(|v| v["result"]["load_cases"][0]["displacements"][10][2].as_f64().unwrap())
+        .map(|v| v["result"]["load_cases"][0]["displacements"]["10"][2].as_f64().unwrap())
         .collect();
     assert!(uz[0] < 0.0);
     assert!(

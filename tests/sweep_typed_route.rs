@@ -35,6 +35,7 @@ fn format(kind: &str, full: bool, notes_by_ref: bool) -> LineFormat {
         } else {
             omitted_fields(kind).iter().map(|p| p.to_string()).collect()
         },
+        loaded_displacements: !full && kind == "static",
     }
 }
 

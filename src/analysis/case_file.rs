@@ -293,9 +293,41 @@ fn positional<'a>(
     Ok(())
 }
 
+/// What `load_cases` means to each analysis whose model part (the shared mesh fields) carries
+/// it: the field's doc comment is written once, on the mesh.
+const LOAD_CASES: [(&str, &str); 7] = [
+    ("static", "Load cases (at least one, inline or in the mesh file)."),
+    ("buckling", "Exactly one load case: the reference load whose multipliers λ are the results."),
+    ("constraints", "Load cases: their prescribed displacements (drives) count as constraints; forces are not used."),
+    ("modal", "Not used by `modal` (accepted, so a `static` model runs unchanged)."),
+    (
+        "transient",
+        "Not used by `transient`: its loads are `loads` and `motions` (accepted, so a `static` model runs unchanged).",
+    ),
+    ("frf", "Not used by `frf`: its loads are `inputs` (accepted, so a `static` model runs unchanged)."),
+    ("craig_bampton", "Not used by `craig_bampton` (accepted, so a `static` model runs unchanged)."),
+];
+
+/// Sets the `load_cases` description of each analysis' schema from [`LOAD_CASES`].
+fn describe_load_cases(schema: &mut Value) {
+    let Some(arms) = schema.get_mut("oneOf").and_then(Value::as_array_mut) else {
+        return;
+    };
+    for arm in arms {
+        let kind = arm.pointer("/properties/analysis/const").and_then(Value::as_str).map(str::to_string);
+        let Some((_, text)) = kind.and_then(|k| LOAD_CASES.iter().find(|(a, _)| *a == k)) else {
+            continue;
+        };
+        if let Some(field) = arm.pointer_mut("/properties/load_cases").and_then(Value::as_object_mut) {
+            field.insert("description".into(), Value::from(*text));
+        }
+    }
+}
+
 /// The JSON Schema of case files.
 pub fn schema() -> Value {
     let mut schema = serde_json::to_value(schemars::schema_for!(Case)).unwrap_or(Value::Null);
+    describe_load_cases(&mut schema);
     // The sweep's `base` names any kind but `sweep` (see `crate::case::sweep`).
     let names: Vec<&str> = ANALYSES.iter().copied().filter(|a| *a != "sweep").collect();
     if let Some(defs) = schema.get_mut("$defs").and_then(Value::as_object_mut) {

@@ -65,7 +65,8 @@ pub struct SweepArgs {
     pub fields: Option<String>,
     /// Keep every result field in each line. By default a stage sweep's lines leave out the
     /// 6×6 platform compliance, the material echo and the per-hinge stresses (their maximum
-    /// stays): see `flexfem::design::sweep::omitted_fields`.
+    /// stays), and a static sweep's keep the displacements of the loaded and prescribed nodes
+    /// only, without per-element stress lists: see `flexfem::design::sweep::omitted_fields`.
     #[arg(long, conflicts_with = "fields")]
     pub full: bool,
 }
@@ -233,11 +234,13 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         Some(Ok(f)) => Some(f),
         Some(Err(msg)) => return Err(Stop::Usage(format!("invalid --fields: {msg}"))),
     };
-    let omit = match (&fields, args.full, sweep.base.get("analysis").and_then(Value::as_str)) {
+    let kind = sweep.base.get("analysis").and_then(Value::as_str);
+    let omit = match (&fields, args.full, kind) {
         (None, false, Some(kind)) => crate::design::sweep::omitted_fields(kind),
         _ => &[],
     };
     let format = LineFormat {
+        loaded_displacements: fields.is_none() && !args.full && kind == Some("static"),
         fields,
         notes_by_ref: notes.is_some(),
         omit: omit.iter().map(|p| p.to_string()).collect(),

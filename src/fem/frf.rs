@@ -258,7 +258,12 @@ impl DirectFrf {
     }
 }
 
-/// ‖a − b‖ / ‖b‖ (Frobenius norms over all input/output pairs).
+/// ‖a − b‖ / ‖b‖ (Frobenius norms over all input/output pairs); where ‖b‖ = 0 (every output
+/// decoupled from every input), 0 if a is zero as well, else 1.
 pub fn relative_difference(a: &DMatrix<C64>, b: &DMatrix<C64>) -> f64 {
-    (a - b).norm() / b.norm()
+    let scale = b.norm();
+    if scale == 0.0 {
+        return if a.norm() == 0.0 { 0.0 } else { 1.0 };
+    }
+    (a - b).norm() / scale
 }

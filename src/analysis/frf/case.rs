@@ -102,23 +102,48 @@ impl FrequencySpec {
     }
 }
 
-/// One input: a load at a node per unit input, in the input's frame.
+/// One input: a load at a node per unit input, in the input's frame: `F` (as in a `static` load
+/// case), or its aliases `force` and `moment` (not with `F`).
 #[derive(Debug, Clone, PartialEq, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(extend("oneOf" = [
+    {"required": ["F"], "properties": {"force": {"type": "null"}, "moment": {"type": "null"}}},
+    {"anyOf": [{"required": ["force"]}, {"required": ["moment"]}], "properties": {"F": {"type": "null"}}}
+]))]
 pub struct InputSpec {
     /// Name in results and plots (default `node N`).
     pub name: Option<String>,
     /// The node loaded.
     pub node: usize,
-    /// Force per unit input, N, in the frame (default zero).
+    /// Load per unit input [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)] in the frame (the `F` of a
+    /// `static` load).
+    #[serde(rename = "F", default)]
+    pub f: Option<[f64; 6]>,
+    /// Alias of `F`'s first three components: force per unit input, N, in the frame (default zero).
     #[serde(default)]
-    pub force: [f64; 3],
-    /// Moment per unit input, N·mm, in the frame (default zero).
+    pub force: Option<[f64; 3]>,
+    /// Alias of `F`'s last three components: moment per unit input, N·mm, in the frame (default
+    /// zero).
     #[serde(default)]
-    pub moment: [f64; 3],
+    pub moment: Option<[f64; 3]>,
     /// Axes of `force` and `moment`: three orthonormal right-handed rows (local x, y, z in
     /// global coordinates); default the global axes.
     pub frame: Option<[[f64; 3]; 3]>,
+}
+
+impl InputSpec {
+    /// The load per unit input [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)] in the input's frame, from `F`
+    /// or from its aliases `force` and `moment` (`p` is the input's JSON path).
+    pub fn load(&self, p: &str) -> Result<[f64; 6], CaseError> {
+        match (self.f, self.force, self.moment) {
+            (Some(f), None, None) => Ok(f),
+            (Some(_), ..) => Err(CaseError::new(p, "give the load as `F` or as its aliases `force` and `moment`, not both")),
+            (None, force, moment) => {
+                let (f, m) = (force.unwrap_or_default(), moment.unwrap_or_default());
+                Ok([f[0], f[1], f[2], m[0], m[1], m[2]])
+            }
+        }
+    }
 }
 
 /// One output entry: DOFs of a node, in the entry's frame (one output per DOF).
@@ -242,12 +267,16 @@ impl FrfCase {
         for (i, s) in self.inputs.iter().enumerate() {
             let p = format!("inputs[{i}]");
             check_node_frame(&p, s.node, s.frame, n)?;
-            for (k, v) in s.force.iter().chain(&s.moment).enumerate() {
-                let field = if k < 3 { "force" } else { "moment" };
-                check::finite(format_args!("{p}.{field}[{}]", k % 3), *v)?;
+            let f = s.load(&p)?;
+            for (k, v) in f.iter().enumerate() {
+                match s.f {
+                    Some(_) => check::finite(format_args!("{p}.F[{k}]"), *v)?,
+                    None => check::finite(format_args!("{p}.{}[{}]", if k < 3 { "force" } else { "moment" }, k % 3), *v)?,
+                }
             }
-            if s.force.iter().chain(&s.moment).all(|v| *v == 0.0) {
-                return Err(CaseError::new(format!("{p}.force"), "the input loads nothing: give a nonzero `force` or `moment`"));
+            if f.iter().all(|v| *v == 0.0) {
+                let field = if s.f.is_some() { "F" } else { "force" };
+                return Err(CaseError::new(format!("{p}.{field}"), "the input loads nothing: give a nonzero `F` (or `force`, `moment`)"));
             }
         }
         for (i, s) in self.outputs.iter().enumerate() {

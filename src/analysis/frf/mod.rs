@@ -32,12 +32,15 @@ pub fn ports(case: &FrfCase, model: &Model) -> (Ports, Vec<(String, &'static str
     let node_name = |name: &Option<String>, node: usize| name.clone().unwrap_or_else(|| format!("node {node}"));
     let mut inputs = Vec::new();
     let mut in_names = Vec::new();
-    for s in &case.inputs {
+    for (i, s) in case.inputs.iter().enumerate() {
+        // Checked when the case was validated.
+        let load = s.load(&format!("inputs[{i}]")).unwrap_or_default();
+        let (force, moment) = ([load[0], load[1], load[2]], [load[3], load[4], load[5]]);
         let mut f = vec![0.0; n];
-        f[6 * s.node..6 * s.node + 3].copy_from_slice(&to_global(s.frame, s.force));
-        f[6 * s.node + 3..6 * s.node + 6].copy_from_slice(&to_global(s.frame, s.moment));
+        f[6 * s.node..6 * s.node + 3].copy_from_slice(&to_global(s.frame, force));
+        f[6 * s.node + 3..6 * s.node + 6].copy_from_slice(&to_global(s.frame, moment));
         inputs.push(f);
-        let unit = match (s.force.iter().any(|v| *v != 0.0), s.moment.iter().any(|v| *v != 0.0)) {
+        let unit = match (force.iter().any(|v| *v != 0.0), moment.iter().any(|v| *v != 0.0)) {
             (true, false) => "N",
             (false, true) => "Nmm",
             _ => "input",

@@ -22,15 +22,37 @@ use serde::Deserialize;
 use serde_json::Value;
 use std::path::Path;
 
-/// A nodal load history.
+/// A nodal load history: `F` (as in a `static` load case) or its alias `force`, not both.
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(extend("oneOf" = [
+    {"required": ["F"], "properties": {"force": {"type": "null"}}},
+    {"required": ["force"], "properties": {"F": {"type": "null"}}}
+]))]
 pub struct LoadSpec {
     /// Node index.
     pub node: usize,
-    /// [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)], global axes, times the history.
-    pub force: [f64; 6],
+    /// [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)], global axes, times the history (the `F` of a
+    /// `static` load).
+    #[serde(rename = "F", default)]
+    pub f: Option<[f64; 6]>,
+    /// Alias of `F` (an earlier spelling, still accepted): [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)].
+    #[serde(default)]
+    pub force: Option<[f64; 6]>,
     pub history: HistorySpec,
+}
+
+impl LoadSpec {
+    /// The load [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)] from `F` or its alias `force`, and the
+    /// JSON path of the field that gave it (`p` is the load's path).
+    pub fn load(&self, p: &str) -> Result<([f64; 6], String), CaseError> {
+        match (self.f, self.force) {
+            (Some(f), None) => Ok((f, format!("{p}.F"))),
+            (None, Some(f)) => Ok((f, format!("{p}.force"))),
+            (Some(_), Some(_)) => Err(CaseError::new(p, "give the load as `F` or as its alias `force`, not both")),
+            (None, None) => Err(CaseError::new(p, "missing `F`: the load [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)]")),
+        }
+    }
 }
 
 /// A prescribed-motion history of one DOF (node axes at framed nodes).
@@ -277,12 +299,13 @@ impl TransientCase {
         let mut loads = Vec::with_capacity(self.loads.len());
         for (i, l) in self.loads.iter().enumerate() {
             let p = format!("loads[{i}]");
-            if let Some(v) = l.force.iter().find(|v| !v.is_finite()) {
-                return Err(CaseError::value(format!("{p}.force"), v, "must be finite"));
+            let (f, field) = l.load(&p)?;
+            if let Some(k) = f.iter().position(|v| !v.is_finite()) {
+                return Err(CaseError::value(format!("{field}[{k}]"), f[k], "must be finite"));
             }
             loads.push(TransientLoad {
                 node: node(format!("{p}.node"), l.node)?,
-                f: l.force,
+                f,
                 history: l.history.history(&format!("{p}.history"))?,
             });
         }
@@ -300,6 +323,14 @@ impl TransientCase {
             let value = if dof.index() >= 3 { m.value.to_radians() } else { m.value };
             if !value.is_finite() {
                 return Err(CaseError::value(format!("{p}.value"), m.value, "must be finite"));
+            }
+            let fixed_by = self.model.supports.iter().position(|s| s.node == m.node && s.fix.iter().any(|d| d.dof() == dof));
+            if let Some(j) = fixed_by {
+                return Err(CaseError::value(
+                    format!("{p}.dof"),
+                    format_args!("{} of node {}", dof.name(), m.node),
+                    format!("must be a free DOF: `supports[{j}]` fixes it (take it out of that support's `fix`)"),
+                ));
             }
             motions.push(PrescribedMotion {
                 node: node(format!("{p}.node"), m.node)?,

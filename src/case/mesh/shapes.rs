@@ -266,7 +266,8 @@ pub struct MeshSpec {
     /// Supports.
     #[serde(default)]
     pub supports: Vec<SupportSpec>,
-    /// Load cases (`static`: at least one, inline or in the mesh file; `modal` ignores them).
+    /// Load cases (`static`: at least one, inline or in the mesh file; what they mean to the
+    /// other analyses is set per analysis in the case-file schema).
     #[serde(default)]
     pub load_cases: Vec<LoadCaseSpec>,
     /// Fill-reducing ordering of the sparse Cholesky factor: `"auto"` (default: AMD for small

@@ -2,6 +2,7 @@
 //! left out by default, and the model notes taken out into the sidecar.
 
 use super::hash::{canonical, Fnv128};
+use crate::case::mesh::MeshSpec;
 use serde_json::{Map, Value};
 
 /// How a design's result goes into its line.
@@ -17,6 +18,46 @@ pub struct LineFormat {
     /// Result fields left out of the line when [`Self::fields`] is `None`, as dotted paths in
     /// which `*` matches any key or array index (see [`omitted_fields`]).
     pub omit: Vec<String>,
+    /// When [`Self::fields`] is `None`: each load case's `displacements` keeps only the nodes
+    /// its loads and prescribed displacements act on ([`loaded_nodes`]), as an object keyed by
+    /// node index (`load_cases.0.displacements.8`, the path of that row in the full result).
+    /// For `static` sweeps by default.
+    pub loaded_displacements: bool,
+}
+
+/// Per load case, the nodes whose displacements a static sweep line keeps ([`loaded_nodes`]).
+pub type LoadedNodes = Vec<Vec<usize>>;
+
+/// The nodes each load case of a static model loads (`forces`, `group_forces` given by node)
+/// or prescribes (`displacements`), sorted: the displacements a sweep line keeps by default.
+pub fn loaded_nodes(model: &MeshSpec) -> LoadedNodes {
+    model
+        .load_cases
+        .iter()
+        .map(|c| {
+            let forces = c.forces.iter().map(|f| f.node);
+            let groups = c.group_forces.iter().flat_map(|g| g.nodes.iter().copied());
+            let mut nodes: Vec<usize> = forces.chain(groups).chain(c.displacements.iter().map(|d| d.node)).collect();
+            nodes.sort_unstable();
+            nodes.dedup();
+            nodes
+        })
+        .collect()
+}
+
+/// Replaces `load_cases[k].displacements` (one row per node) by the rows of `nodes[k]`, keyed
+/// by node index.
+fn keep_loaded_displacements(result: &mut Value, nodes: &[Vec<usize>]) {
+    let Some(cases) = result.get_mut("load_cases").and_then(Value::as_array_mut) else {
+        return;
+    };
+    for (case, keep) in cases.iter_mut().zip(nodes) {
+        let Some(rows) = case.get_mut("displacements") else { continue };
+        let Value::Array(all) = rows.take() else { continue };
+        let kept: Map<String, Value> =
+            keep.iter().filter_map(|&n| all.get(n).map(|row| (n.to_string(), row.clone()))).collect();
+        *rows = Value::Object(kept);
+    }
 }
 
 /// The result fields a sweep of analysis `kind` leaves out of its lines by default
@@ -24,9 +65,17 @@ pub struct LineFormat {
 /// keeps every scalar response; it leaves out the 6×6 platform compliance (its eigenvalues
 /// stay), the echoes of the case (material, its allowable stress under `at_allowable`, the
 /// actuator forces, the `nonlinear` flag) and the per-hinge stresses (their maximum,
-/// `max_von_mises`, stays): ~2,100 → ~940 bytes a line.
+/// `max_von_mises`, stays): ~2,100 → ~940 bytes a line. A static line leaves out the
+/// per-element von Mises lists (`max_von_mises` and each hinge's peak stress and utilisation
+/// stay) and the hinges' end forces, and keeps the displacements of the loaded nodes only
+/// ([`LineFormat::loaded_displacements`]).
 pub fn omitted_fields(kind: &str) -> &'static [&'static str] {
     match kind {
+        "static" => &[
+            "load_cases.*.element_von_mises",
+            "load_cases.*.shell_von_mises",
+            "load_cases.*.hinges.*.end_forces",
+        ],
         "stage" => &[
             "platform_stiffness.compliance",
             "material",
@@ -107,7 +156,7 @@ impl LineFormat {
 
     /// Applies the format to a design's result; returns the notes taken out, as (reference,
     /// notes, their compact JSON).
-    pub(super) fn apply(&self, result: &mut Value) -> Option<(String, Value, String)> {
+    pub(super) fn apply(&self, result: &mut Value, loaded: Option<&[Vec<usize>]>) -> Option<(String, Value, String)> {
         let notes = match (self.notes_by_ref, result.as_object_mut()) {
             (true, Some(m)) => {
                 // `model_notes` takes the place of `model` (the typed route writes it there).
@@ -125,6 +174,9 @@ impl LineFormat {
         if self.fields.is_none() {
             for p in &self.omit {
                 remove_path(result, &p.split('.').collect::<Vec<_>>());
+            }
+            if let Some(nodes) = loaded.filter(|_| self.loaded_displacements) {
+                keep_loaded_displacements(result, nodes);
             }
         }
         if let Some(fields) = &self.fields {

@@ -21,7 +21,7 @@ mod shard;
 mod typed;
 
 pub use check::{check, load, with_suffix};
-pub use format::{omitted_fields, LineFormat};
+pub use format::{loaded_nodes, omitted_fields, LineFormat};
 pub use hash::{design_hash, hash_design};
 pub use shard::Shard;
 
@@ -130,19 +130,22 @@ fn evaluate(
     index: usize,
     cache: &mut SolverCache,
     shapes: &Shapes,
+    format: &LineFormat,
     hash: &mut Option<String>,
-) -> Result<Value, String> {
+) -> Result<(Value, Option<format::LoadedNodes>), String> {
     let design = sweep.design(index).map_err(|e| case_text(&e))?;
     *hash = Some(hash_design(&design, base_dir));
     let case = shapes.parse(design, base_dir).map_err(|e| case_text(&e))?;
-    if let Case::Sweep(_) = case {
-        return Err("analysis: a sweep cannot vary another sweep".into());
-    }
+    let loaded = match &case {
+        Case::Sweep(_) => return Err("analysis: a sweep cannot vary another sweep".into()),
+        Case::Static(c) if format.loaded_displacements => Some(format::loaded_nodes(&c.model)),
+        _ => None,
+    };
     let mut ctx = Ctx::new(cache, false);
     // Only the JSON goes into the line: no Markdown/CSV report.
     ctx.with_report = false;
     analysis::run_with(&case, &mut ctx)
-        .map(|o| o.json)
+        .map(|o| (o.json, loaded))
         .map_err(|e| error_text(&e))
 }
 
@@ -206,7 +209,7 @@ fn run_design_in(
 ) -> Row {
     let mut hash = None;
     let outcome = panic::catch_unwind(AssertUnwindSafe(|| {
-        evaluate(sweep, base_dir, index, cache, shapes, &mut hash)
+        evaluate(sweep, base_dir, index, cache, shapes, format, &mut hash)
     }))
     .unwrap_or_else(|p| {
         // A panic may have left the cache half-updated: start the worker afresh.
@@ -223,8 +226,8 @@ fn run_design_in(
     let mut notes = None;
     let mut notes_json = None;
     match outcome {
-        Ok(mut result) => {
-            if let Some((r, n, json)) = format.apply(&mut result) {
+        Ok((mut result, loaded)) => {
+            if let Some((r, n, json)) = format.apply(&mut result, loaded.as_deref()) {
                 notes = Some((r, n));
                 notes_json = Some(json);
             }

@@ -178,8 +178,14 @@ fn couplings(
     prescribed
         .iter()
         .map(|p| {
+            // A supported DOF has no equation even with every prescribed DOF free.
+            let Some(&eq) = all.eq.get(p.global()).filter(|&&q| q < all.n_eq()) else {
+                return Err(FemError::OverConstrained(format!(
+                    "{p} has a prescribed motion but is fixed by a support: free it in the support or drop the motion"
+                )));
+            };
             let mut e = vec![0.0; all.n_eq()];
-            e[all.eq[p.global()]] = 1.0;
+            e[eq] = 1.0;
             Ok(Coupling {
                 m: to_free(m.mul_vec(&e)),
                 k: to_free(k.mul_vec(&e)),

@@ -1,0 +1,76 @@
+//! The default line and CSV of a `static` sweep: the displacements of the nodes each load case
+//! loads or prescribes (not of every node), peak stresses and utilisations, without the
+//! per-element lists; `--full` keeps the whole result.
+
+mod common;
+use common::*;
+use serde_json::{json, Value};
+
+/// The parallelogram guide (`cases/parallelogram_guide.json`): load case 0 pushes node 8 along x
+/// with F = 1, 2 N; load case 1 prescribes ux = 1 mm at node 8.
+fn guide_sweep() -> String {
+    let mut base: Value = serde_json::from_str(&std::fs::read_to_string(root().join("cases/parallelogram_guide.json")).unwrap()).unwrap();
+    base["mesh"] = json!(root().join("meshes/parallelogram_notch.json").to_str().unwrap());
+    json!({"analysis": "sweep", "base": base, "vary": {"load_cases.0.forces.0.F.0": [1, 2]}}).to_string()
+}
+
+/// The cells of a CSV line (quoted cells may hold commas; no quotes inside them here).
+fn cells(line: &str) -> Vec<String> {
+    let (mut out, mut cur, mut quoted) = (Vec::new(), String::new(), false);
+    for c in line.chars() {
+        match c {
+            '"' => quoted = !quoted,
+            ',' if !quoted => out.push(std::mem::take(&mut cur)),
+            _ => cur.push(c),
+        }
+    }
+    out.push(cur);
+    out
+}
+
+/// The CSV cell of `column` in data row `row`.
+fn cell(csv: &str, row: usize, column: &str) -> f64 {
+    let head = cells(csv.lines().next().unwrap());
+    let k = head.iter().position(|h| h == column).unwrap_or_else(|| panic!("no column {column} in {head:?}"));
+    let line = cells(csv.lines().nth(row + 1).unwrap());
+    assert_eq!(line.len(), head.len());
+    line[k].parse().unwrap()
+}
+
+/// Default: node 8's six displacements per load case are columns (equal to the full result's row
+/// 8), no other node's are; the lateral compliance is 0.10624 mm/N (the README's parallelogram
+/// guide: 1/0.10624 = 9.413 N/mm), so F = 2 N gives twice that (linear) to 1e-12. Lines lose the
+/// per-element stress lists and hinge end forces but keep each hinge's peak stress and
+/// utilisation, and are less than half the `--full` line.
+#[test]
+fn static_sweep_keeps_the_loaded_nodes_displacements() {
+    let d = tempdir("static_lines");
+    let case = write(&d, "sweep.json", &guide_sweep());
+    let csv_path = d.join("out.csv");
+    let o = sweep(&d, &[case.to_str().unwrap(), "--csv", csv_path.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let lines = parse_lines(&stdout(&o));
+    let full = parse_lines(&stdout(&sweep(&d, &[case.to_str().unwrap(), "--full"])));
+    assert_eq!((lines.len(), full.len()), (2, 2));
+    let csv = std::fs::read_to_string(&csv_path).unwrap();
+    let head = csv.lines().next().unwrap();
+    let displacement_columns = head.split(',').filter(|h| h.contains(".displacements.")).count();
+    assert_eq!(displacement_columns, 2 * 6, "{head}");
+    for (row, f) in [1.0, 2.0].into_iter().enumerate() {
+        let ux = cell(&csv, row, "load_cases.0.displacements.8.0");
+        assert!((ux / (0.10624 * f) - 1.0).abs() < 1e-4, "ux(8) = {ux} mm at F = {f} N");
+        let line = lines.iter().find(|l| l["index"] == row).unwrap();
+        let whole = full.iter().find(|l| l["index"] == row).unwrap();
+        for (k, node_row) in whole["result"]["load_cases"].as_array().unwrap().iter().enumerate() {
+            assert_eq!(line["result"]["load_cases"][k]["displacements"], json!({"8": node_row["displacements"][8]}));
+        }
+        let stroke = cell(&csv, row, "load_cases.1.displacements.8.0");
+        assert!((stroke - 1.0).abs() < 1e-12, "prescribed ux(8) = {stroke}");
+        let lc = &line["result"]["load_cases"][0];
+        assert!(lc.get("element_von_mises").is_none() && lc["hinges"][0].get("end_forces").is_none());
+        assert_eq!(lc["hinges"][0]["utilisation"], whole["result"]["load_cases"][0]["hinges"][0]["utilisation"]);
+        let (short, long) = (line.to_string().len(), whole.to_string().len());
+        assert!(2 * short < long, "default line {short} B vs full {long} B");
+    }
+    cleanup(&d);
+}
