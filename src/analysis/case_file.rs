@@ -5,7 +5,8 @@
 use super::kinds_list::analyses;
 #[allow(unused_imports)]
 use super::*; // the modules the list's paths start from
-use crate::case::{from_value, limits, short, CaseError};
+use crate::case::params::{self, Parameters};
+use crate::case::{from_value, limits, short, CaseError, Source};
 use serde_json::Value;
 use std::path::Path;
 
@@ -21,7 +22,7 @@ pub trait CaseOf: super::Analysis {
 
 /// The parser of a plain case shape: serde with unknown fields refused, errors under their
 /// JSON path.
-pub fn shape<T: serde::de::DeserializeOwned>(value: Value, _base: Option<&Path>) -> Result<T, CaseError> {
+pub fn shape<T: serde::de::DeserializeOwned>(value: Value, _base: &Source<'_>) -> Result<T, CaseError> {
     from_value(value, "")
 }
 
@@ -85,7 +86,7 @@ macro_rules! case_side {
         )*
 
         /// The case of kind `analysis` from the rest of its JSON object (`None`: no such kind).
-        fn parse_kind(analysis: &str, value: Value, base: Option<&Path>) -> Option<Result<Case, CaseError>> {
+        fn parse_kind(analysis: &str, value: Value, base: &Source<'_>) -> Option<Result<Case, CaseError>> {
             match analysis {
                 $($name => Some(parser!($($parse)?)(value, base).map(Case::$variant)),)*
                 _ => None,
@@ -96,8 +97,23 @@ macro_rules! case_side {
 
 analyses!(case_side);
 
+/// A parsed case with the values of its parameters (see [`crate::case::params`]).
+#[derive(Debug, Clone)]
+pub struct Parsed {
+    /// The case.
+    pub case: Case,
+    /// Every declared parameter (the case's and its mesh file's) with its resolved value;
+    /// results echo them as `parameters`.
+    pub parameters: Parameters,
+}
+
 /// Reads and parses a case file; files it refers to (`mesh`) are looked up beside it.
 pub fn load(path: &Path) -> Result<Case, CaseError> {
+    load_resolved(path).map(|p| p.case)
+}
+
+/// [`load`] with the case's parameter values.
+pub fn load_resolved(path: &Path) -> Result<Parsed, CaseError> {
     let shown = format!("\"{}\"", path.display());
     let bytes = limits::read_file(".", "case file", &shown, path)?;
     let text = String::from_utf8(bytes).map_err(|e| {
@@ -106,7 +122,8 @@ pub fn load(path: &Path) -> Result<Case, CaseError> {
             format!("cannot read case file {}: not UTF-8 text ({e})", path.display()),
         )
     })?;
-    parse_in(&text, path.parent())
+    let value: Value = serde_json::from_str(&text).map_err(|e| CaseError::new(".", format!("not valid JSON: {e}")))?;
+    parse_resolved(value, path.parent(), true)
 }
 
 /// Parses case-file text (relative file references resolve against the working folder).
@@ -122,22 +139,44 @@ pub fn parse_in(text: &str, base: Option<&Path>) -> Result<Case, CaseError> {
 
 /// Parses a case already read as JSON.
 pub fn parse_value(value: Value, base: Option<&Path>) -> Result<Case, CaseError> {
-    if value.is_object() {
-        check_shape(&value)?;
-    }
-    parse_value_shaped(value, base)
+    parse_resolved(value, base, true).map(|p| p.case)
 }
 
 /// The check of [`parse_value`] that refuses an array given where the schema wants an object
 /// (see `refuse_positional`). It depends only on where the case has arrays, so a batch driver
 /// whose designs differ from one already checked only in scalar values may skip it
-/// ([`parse_value_shaped`]).
+/// ([`parse_resolved`] with `check_arrays` false).
 pub fn check_shape(value: &Value) -> Result<(), CaseError> {
     refuse_positional(value)
 }
 
 /// [`parse_value`] without [`check_shape`], for a value whose arrays were checked already.
-pub fn parse_value_shaped(mut value: Value, base: Option<&Path>) -> Result<Case, CaseError> {
+pub fn parse_value_shaped(value: Value, base: Option<&Path>) -> Result<Case, CaseError> {
+    parse_resolved(value, base, false).map(|p| p.case)
+}
+
+/// Parses a case already read as JSON, with its parameter values: resolves parameters,
+/// hinge types and expressions ([`params::resolve_case`]), checks the arrays of the resolved
+/// value if `check_arrays` ([`check_shape`]) and deserialises it into its kind's shape. A
+/// `sweep` case is not resolved: each of its designs is, as a case of its own.
+pub fn parse_resolved(mut value: Value, base: Option<&Path>, check_arrays: bool) -> Result<Parsed, CaseError> {
+    let resolved = if value.get("analysis").and_then(Value::as_str) == Some("sweep") {
+        params::Resolved::default()
+    } else {
+        params::resolve_case(&mut value, base)?
+    };
+    if check_arrays && value.is_object() {
+        check_shape(&value)?;
+    }
+    let source = Source::with_mesh(base, resolved.mesh);
+    Ok(Parsed {
+        case: parse_shaped(value, &source)?,
+        parameters: resolved.parameters,
+    })
+}
+
+/// The typed parse of a resolved case value.
+fn parse_shaped(mut value: Value, base: &Source<'_>) -> Result<Case, CaseError> {
     if !value.is_object() {
         return Err(CaseError::value(
             ".",

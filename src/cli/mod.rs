@@ -107,6 +107,10 @@ fn read_case(path: &Path) -> Result<analysis::Case, CaseError> {
     analysis::load(path)
 }
 
+fn read_case_resolved(path: &Path) -> Result<analysis::Parsed, CaseError> {
+    analysis::load_resolved(path)
+}
+
 fn fail(e: &RunError) -> ExitCode {
     eprintln!("error: {e}");
     ExitCode::from(match e {
@@ -244,8 +248,8 @@ pub fn run(cli: Cli) -> ExitCode {
                     return ExitCode::from(EXIT_BAD_CASE);
                 }
             }
-            let parsed = match read_case(&case) {
-                Ok(c) => c,
+            let (parsed, parameters) = match read_case_resolved(&case) {
+                Ok(p) => (p.case, p.parameters),
                 Err(e) => return fail(&RunError::Case(e)),
             };
             if export_matrices {
@@ -262,6 +266,7 @@ pub fn run(cli: Cli) -> ExitCode {
                 Ok(o) => o,
                 Err(e) => return fail(&e),
             };
+            outcome.echo_parameters(&parameters);
             if export_matrices {
                 match analysis::export::matrix_files(&parsed) {
                     Ok(files) => outcome.files.extend(files),
