@@ -38,6 +38,18 @@ pub struct Declared {
     pub path: String,
     /// A number or an expression string.
     pub raw: Value,
+    /// The mesh file it is declared in (`None`: the case).
+    pub file: Option<String>,
+}
+
+impl Declared {
+    /// An error about this declaration: at its path, or at `mesh` naming the file and path.
+    fn error(&self, e: CaseError) -> CaseError {
+        match &self.file {
+            Some(name) => in_mesh_file(name, e),
+            None => e,
+        }
+    }
 }
 
 /// Takes `parameters` out of a case or mesh-file object: name → declaration. A name must be
@@ -70,7 +82,7 @@ pub fn take_declared(value: &mut Value) -> Result<BTreeMap<String, Declared>, Ca
                 "a parameter is a number or an expression string of other parameters (\"2*$t\")",
             ));
         }
-        out.insert(name, Declared { path, raw });
+        out.insert(name, Declared { path, raw, file: None });
     }
     Ok(out)
 }
@@ -82,9 +94,9 @@ pub fn resolve_table(declared: &BTreeMap<String, Declared>) -> Result<Parameters
     let mut exprs: BTreeMap<&str, (Expr, &Declared)> = BTreeMap::new();
     for (name, d) in declared {
         let e = match &d.raw {
-            Value::String(s) => Expr::parse(s).map_err(|e| expr_error(&d.path, s, &e))?,
+            Value::String(s) => Expr::parse(s).map_err(|e| d.error(expr_error(&d.path, s, &e)))?,
             v => Expr::Num(v.as_f64().filter(|x| x.is_finite()).ok_or_else(|| {
-                CaseError::value(&d.path, short(v), "must be a finite number")
+                d.error(CaseError::value(&d.path, short(v), "must be a finite number"))
             })?),
         };
         exprs.insert(name, (e, d));
@@ -125,11 +137,11 @@ fn value_of<'a>(
     if let Some(from) = stack.iter().position(|n| *n == name) {
         let cycle: Vec<String> = stack[from..].iter().chain([&name]).map(|n| format!("${n}")).collect();
         let first = &exprs[stack[from]].1;
-        return Err(CaseError::value(
+        return Err(first.error(CaseError::value(
             &first.path,
             short(&first.raw),
             format!("parameters defined in a cycle: {}", cycle.join(" → ")),
-        ));
+        )));
     }
     stack.push(*key);
     let text = d.raw.as_str().unwrap_or_default();
@@ -142,14 +154,14 @@ fn value_of<'a>(
         })
         .map_err(|s| match s {
             Stop::Case(e) => e,
-            Stop::Expr(e) => expr_error(&d.path, text, &e),
+            Stop::Expr(e) => d.error(expr_error(&d.path, text, &e)),
             Stop::Unknown(n) => {
                 let names: Vec<String> = exprs.keys().map(|k| format!("${k}")).collect();
-                CaseError::value(
+                d.error(CaseError::value(
                     &d.path,
                     format!("\"{text}\""),
                     format!("unknown parameter `${n}` (declared: {})", names.join(", ")),
-                )
+                ))
             }
         })?;
     stack.pop();
@@ -255,7 +267,7 @@ pub fn resolve_case(value: &mut Value, base: Option<&std::path::Path>) -> Result
         all = take_declared(mv).map_err(in_mesh)?;
         types = take_hinge_types(mv).map_err(in_mesh)?;
         for d in all.values_mut() {
-            d.path = format!("{} (mesh file \"{name}\")", d.path);
+            d.file = Some(name.clone());
         }
     }
     all.extend(declared);
