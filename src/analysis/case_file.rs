@@ -143,11 +143,11 @@ pub fn parse_value(value: Value, base: Option<&Path>) -> Result<Case, CaseError>
 }
 
 /// The check of [`parse_value`] that refuses an array given where the schema wants an object
-/// (see `refuse_positional`). It depends only on where the case has arrays, so a batch driver
+/// (see [`super::case_shape`]). It depends only on where the case has arrays, so a batch driver
 /// whose designs differ from one already checked only in scalar values may skip it
 /// ([`parse_resolved`] with `check_arrays` false).
 pub fn check_shape(value: &Value) -> Result<(), CaseError> {
-    refuse_positional(value)
+    super::case_shape::refuse_positional(value)
 }
 
 /// [`parse_value`] without [`check_shape`], for a value whose arrays were checked already.
@@ -210,126 +210,6 @@ fn parse_shaped(mut value: Value, base: &Source<'_>) -> Result<Case, CaseError> 
             format!("must be one of {}", ANALYSES.join(", ")),
         ))
     })
-}
-
-/// Refuses an array where the case schema allows only an object.
-///
-/// serde also reads a struct from the array of its field values in declaration order
-/// (`"leg": [10, 10]`, `"hinge": ["leaf", 5, 1, …]`). Case files do not take that form: the schema
-/// refuses it, and the errors about such a value would name fields (`hinge.t`) that the file
-/// does not have.
-fn refuse_positional(value: &Value) -> Result<(), CaseError> {
-    static SCHEMA: std::sync::OnceLock<Value> = std::sync::OnceLock::new();
-    let schema = SCHEMA.get_or_init(schema);
-    let defs = schema.get("$defs").and_then(Value::as_object);
-    let mut roots = Vec::new();
-    expand(schema, defs, &mut roots, 0);
-    positional(value, &roots, defs, String::new())
-}
-
-/// The schema nodes that `node` stands for: itself if it says something about types, and what
-/// its `$ref`, `anyOf`, `oneOf` and `allOf` lead to (`if`/`then`/`else` and `not` are skipped:
-/// they only add constraints).
-fn expand<'a>(
-    node: &'a Value,
-    defs: Option<&'a serde_json::Map<String, Value>>,
-    out: &mut Vec<&'a Value>,
-    depth: usize,
-) {
-    let Some(m) = node.as_object() else {
-        return;
-    };
-    if depth > 32 {
-        return;
-    }
-    let typed = [
-        "type",
-        "properties",
-        "additionalProperties",
-        "items",
-        "prefixItems",
-        "enum",
-        "const",
-    ];
-    if typed.iter().any(|k| m.contains_key(*k)) {
-        out.push(node);
-    }
-    if let Some(r) = m.get("$ref").and_then(Value::as_str) {
-        if let Some(d) = r.strip_prefix("#/$defs/").and_then(|n| defs.and_then(|d| d.get(n))) {
-            expand(d, defs, out, depth + 1);
-        }
-    }
-    for k in ["anyOf", "oneOf", "allOf"] {
-        for b in m.get(k).and_then(Value::as_array).into_iter().flatten() {
-            expand(b, defs, out, depth + 1);
-        }
-    }
-}
-
-fn allows_array(node: &Value) -> bool {
-    match node.get("type") {
-        Some(Value::String(t)) => t == "array",
-        Some(Value::Array(ts)) => ts.iter().any(|t| t == "array"),
-        _ => {
-            !(node.get("properties").is_some()
-                || node.get("additionalProperties").is_some_and(Value::is_object)
-                || node.get("enum").is_some()
-                || node.get("const").is_some())
-        }
-    }
-}
-
-fn positional<'a>(
-    value: &Value,
-    candidates: &[&'a Value],
-    defs: Option<&'a serde_json::Map<String, Value>>,
-    path: String,
-) -> Result<(), CaseError> {
-    if candidates.is_empty() {
-        return Ok(());
-    }
-    // The schema nodes of a child: what `pick` gives of each candidate, expanded.
-    let children = |pick: &dyn Fn(&'a Value) -> Option<&'a Value>| {
-        let mut out = Vec::new();
-        for n in candidates.iter().filter_map(|c| pick(c)) {
-            expand(n, defs, &mut out, 0);
-        }
-        out
-    };
-    match value {
-        Value::Array(items) => {
-            if !candidates.iter().any(|c| allows_array(c)) {
-                return Err(CaseError::value(
-                    if path.is_empty() { "." } else { &path },
-                    short(value),
-                    "an object is expected here: give its fields by name, {\"field\": value, …}",
-                ));
-            }
-            for (i, item) in items.iter().enumerate() {
-                let of_item = children(&|c| {
-                    let prefix = c.get("prefixItems").and_then(|p| p.get(i));
-                    prefix.or_else(|| c.get("items").filter(|x| x.is_object()))
-                });
-                positional(item, &of_item, defs, format!("{path}[{i}]"))?;
-            }
-        }
-        Value::Object(map) => {
-            for (k, item) in map {
-                let of_field = children(&|c| {
-                    let named = c.get("properties").and_then(|p| p.get(k));
-                    named.or_else(|| c.get("additionalProperties").filter(|x| x.is_object()))
-                });
-                let p = if path.is_empty() {
-                    k.clone()
-                } else {
-                    format!("{path}.{k}")
-                };
-                positional(item, &of_field, defs, p)?;
-            }
-        }
-        _ => {}
-    }
-    Ok(())
 }
 
 /// The JSON Schema of case files.

@@ -1,6 +1,7 @@
 //! Analyses: validated case → typed result → JSON/Markdown/CSV views.
 
 pub mod case_file;
+mod case_shape;
 pub mod compliance;
 pub mod design;
 pub mod export;

@@ -198,18 +198,22 @@ const HINGE_FIELDS: [&str; 3] = ["hinge", "revolute", "spherical"];
 
 /// Replaces every hinge field (`"hinge": "NAME"`, a stage's `"revolute"`/`"spherical"`) given as
 /// a string by the hinge type of that name (its expressions are resolved afterwards, with the
-/// rest of the value). `at` is the JSON path of `v`.
-pub fn expand_hinge_types(v: &mut Value, types: &Map<String, Value>, at: &str) -> Result<(), CaseError> {
+/// rest of the value). `at` is the JSON path of `v` (a buffer: restored on return).
+pub fn expand_hinge_types(v: &mut Value, types: &Map<String, Value>, at: &mut String) -> Result<(), CaseError> {
+    let len = at.len();
     match v {
         Value::Object(m) => {
             for (k, x) in m.iter_mut() {
-                let p = if at.is_empty() { k.clone() } else { format!("{at}.{k}") };
+                if !at.is_empty() {
+                    at.push('.');
+                }
+                at.push_str(k);
                 match x {
                     Value::String(name) if HINGE_FIELDS.contains(&k.as_str()) => {
                         let Some(spec) = types.get(name.as_str()) else {
                             let known: Vec<&str> = types.keys().map(String::as_str).collect();
                             return Err(CaseError::value(
-                                p,
+                                at.as_str(),
                                 format!("\"{name}\""),
                                 if known.is_empty() {
                                     "a hinge given by name needs `hinge_types` {\"NAME\": {<hinge spec>}} (none is declared)".to_string()
@@ -220,13 +224,20 @@ pub fn expand_hinge_types(v: &mut Value, types: &Map<String, Value>, at: &str) -
                         };
                         *x = spec.clone();
                     }
-                    _ => expand_hinge_types(x, types, &p)?,
+                    Value::Object(_) | Value::Array(_) => expand_hinge_types(x, types, at)?,
+                    _ => {}
                 }
+                at.truncate(len);
             }
         }
         Value::Array(a) => {
+            use std::fmt::Write;
             for (i, x) in a.iter_mut().enumerate() {
-                expand_hinge_types(x, types, &format!("{at}[{i}]"))?;
+                if x.is_object() || x.is_array() {
+                    let _ = write!(at, "[{i}]");
+                    expand_hinge_types(x, types, at)?;
+                    at.truncate(len);
+                }
             }
         }
         _ => {}
@@ -281,11 +292,11 @@ pub fn resolve_case(value: &mut Value, base: Option<&std::path::Path>) -> Result
                 .map_err(|e| e.under(&format!("hinge_types.{name}")))?;
         }
     }
-    expand_hinge_types(value, &types, "")?;
+    expand_hinge_types(value, &types, &mut String::new())?;
     *value = Template::new(std::mem::take(value))?.fill(&parameters)?;
     if let Some((name, mv)) = &mut mesh {
         let in_mesh = |e: CaseError| in_mesh_file(name, e);
-        expand_hinge_types(mv, &types, "").map_err(in_mesh)?;
+        expand_hinge_types(mv, &types, &mut String::new()).map_err(in_mesh)?;
         *mv = Template::new(std::mem::take(mv))
             .and_then(|t| t.fill(&parameters))
             .map_err(in_mesh)?;
@@ -342,10 +353,10 @@ mod tests {
     fn hinge_types_expand() {
         let types: Map<String, Value> = serde_json::from_value(serde_json::json!({"flex": {"type": "leaf", "t": "$t"}})).unwrap();
         let mut v = serde_json::json!({"elements": [{"hinge": "flex"}, {"hinge": {"type": "leaf"}}]});
-        expand_hinge_types(&mut v, &types, "").unwrap();
+        expand_hinge_types(&mut v, &types, &mut String::new()).unwrap();
         assert_eq!(v["elements"][0]["hinge"], serde_json::json!({"type": "leaf", "t": "$t"}));
         let mut w = serde_json::json!({"elements": [{"hinge": "flx"}]});
-        let e = expand_hinge_types(&mut w, &types, "").unwrap_err();
+        let e = expand_hinge_types(&mut w, &types, &mut String::new()).unwrap_err();
         assert_eq!(e.path, "elements[0].hinge");
         assert!(e.message.contains("declared: flex"), "{}", e.message);
     }
