@@ -148,7 +148,7 @@ fn value_of<'a>(
     let v = expr
         .eval(&mut |n: &str| -> Result<f64, Stop> {
             match exprs.get_key_value(n) {
-                Some((k, _)) => value_of(*k, exprs, done, stack).map_err(Stop::Case),
+                Some((k, _)) => value_of(k, exprs, done, stack).map_err(Stop::Case),
                 None => Err(Stop::Unknown(n.to_string())),
             }
         })
