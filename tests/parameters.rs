@@ -212,3 +212,33 @@ fn mesh_file_expression_errors_name_the_file() {
         "{err}"
     );
 }
+
+/// A value that fails validation inside the mesh file, set by a case parameter through a hinge
+/// type, is reported at the parameter (`parameters.t`), naming the place in the mesh file and
+/// the expression; the same from `check`, `run` and a sweep design's error row.
+#[test]
+fn validation_errors_of_parameter_values_name_the_parameter() {
+    let d = tempdir("param_locate");
+    let mut case = read("cases/parallelogram_parameters.json");
+    case["mesh"] = json!(root().join("meshes/parallelogram_parameters.json"));
+    case["parameters"]["t"] = json!(0.0);
+    std::fs::write(d.join("c.json"), case.to_string()).unwrap();
+    for cmd in ["check", "run"] {
+        let out = run_in(&d, &[cmd, "c.json"]);
+        let err = stderr(&out);
+        assert_eq!(out.status.code(), Some(2), "{cmd}: {err}");
+        assert!(
+            err.contains("case file error at `parameters.t`")
+                && err.contains("elements[0].hinge.t")
+                && err.contains("\"$t\"")
+                && err.contains("value 0 is not allowed"),
+            "{cmd}: {err}"
+        );
+    }
+    let mut sweep = bundled_sweep();
+    sweep.axes[0].1[0] = json!(0.0);
+    let row = run_design(&sweep, Some(&root().join("cases")), 0);
+    assert!(row.failed);
+    let msg = row.value["error"].as_str().unwrap();
+    assert!(msg.starts_with("parameters.t: at `elements[0].hinge.t`"), "{msg}");
+}

@@ -105,6 +105,25 @@ pub struct Parsed {
     /// Every declared parameter (the case's and its mesh file's) with its resolved value;
     /// results echo them as `parameters`.
     pub parameters: Parameters,
+    /// Where values outside the case as written (in its mesh file, in hinges given by type
+    /// name) came from.
+    pub origins: params::Origins,
+}
+
+impl Parsed {
+    /// A case error of the parsed case's validation or run moved to where the case file sets
+    /// the value ([`params::Origins::locate`]); other errors unchanged.
+    pub fn locate(&self, e: CaseError) -> CaseError {
+        self.origins.locate(e)
+    }
+
+    /// [`Self::locate`] for the error of a run.
+    pub fn locate_run(&self, e: super::RunError) -> super::RunError {
+        match e {
+            super::RunError::Case(c) => super::RunError::Case(self.locate(c)),
+            other => other,
+        }
+    }
 }
 
 /// Reads and parses a case file; files it refers to (`mesh`) are looked up beside it.
@@ -169,9 +188,11 @@ pub fn parse_resolved(mut value: Value, base: Option<&Path>, check_arrays: bool)
         check_shape(&value)?;
     }
     let source = Source::with_mesh(base, resolved.mesh);
+    let case = parse_shaped(value, &source).map_err(|e| resolved.origins.locate(e))?;
     Ok(Parsed {
-        case: parse_shaped(value, &source)?,
+        case,
         parameters: resolved.parameters,
+        origins: resolved.origins,
     })
 }
 

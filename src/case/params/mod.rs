@@ -15,12 +15,14 @@
 //! `hinge_types` are taken out before validation.
 
 pub mod expr;
+pub mod origin;
 pub mod template;
 
 use crate::case::{short, CaseError};
 use expr::{Expr, ExprError};
 use serde_json::{Map, Value};
 use std::collections::BTreeMap;
+pub use origin::Origins;
 pub use template::Template;
 
 /// Resolved parameter values by name (no `$`), in the units of wherever they are used.
@@ -198,8 +200,14 @@ const HINGE_FIELDS: [&str; 3] = ["hinge", "revolute", "spherical"];
 
 /// Replaces every hinge field (`"hinge": "NAME"`, a stage's `"revolute"`/`"spherical"`) given as
 /// a string by the hinge type of that name (its expressions are resolved afterwards, with the
-/// rest of the value). `at` is the JSON path of `v` (a buffer: restored on return).
-pub fn expand_hinge_types(v: &mut Value, types: &Map<String, Value>, at: &mut String) -> Result<(), CaseError> {
+/// rest of the value). `at` is the JSON path of `v` (a buffer: restored on return); each use is
+/// listed in `used` as (JSON path, type name).
+pub fn expand_hinge_types(
+    v: &mut Value,
+    types: &Map<String, Value>,
+    at: &mut String,
+    used: &mut Vec<(String, String)>,
+) -> Result<(), CaseError> {
     let len = at.len();
     match v {
         Value::Object(m) => {
@@ -222,9 +230,10 @@ pub fn expand_hinge_types(v: &mut Value, types: &Map<String, Value>, at: &mut St
                                 },
                             ));
                         };
+                        used.push((at.clone(), std::mem::take(name)));
                         *x = spec.clone();
                     }
-                    Value::Object(_) | Value::Array(_) => expand_hinge_types(x, types, at)?,
+                    Value::Object(_) | Value::Array(_) => expand_hinge_types(x, types, at, used)?,
                     _ => {}
                 }
                 at.truncate(len);
@@ -235,7 +244,7 @@ pub fn expand_hinge_types(v: &mut Value, types: &Map<String, Value>, at: &mut St
             for (i, x) in a.iter_mut().enumerate() {
                 if x.is_object() || x.is_array() {
                     let _ = write!(at, "[{i}]");
-                    expand_hinge_types(x, types, at)?;
+                    expand_hinge_types(x, types, at, used)?;
                     at.truncate(len);
                 }
             }
@@ -253,6 +262,8 @@ pub struct Resolved {
     pub parameters: Parameters,
     /// The JSON mesh file the case names, read and resolved: (name as written, content).
     pub mesh: Option<(String, Value)>,
+    /// Where the values outside the case as written came from (for errors found later).
+    pub origins: Origins,
 }
 
 /// Resolves a case object in place (see the module docs): takes out `parameters` and
@@ -282,6 +293,7 @@ pub fn resolve_case(value: &mut Value, base: Option<&std::path::Path>) -> Result
         }
     }
     all.extend(declared);
+    let case_type_names: Vec<String> = case_types.keys().cloned().collect();
     types.extend(case_types);
     let parameters = resolve_table(&all)?;
     if !types.is_empty() {
@@ -292,16 +304,51 @@ pub fn resolve_case(value: &mut Value, base: Option<&std::path::Path>) -> Result
                 .map_err(|e| e.under(&format!("hinge_types.{name}")))?;
         }
     }
-    expand_hinge_types(value, &types, &mut String::new())?;
-    *value = Template::new(std::mem::take(value))?.fill(&parameters)?;
+    // Errors found after resolution at a place the case does not have as written go to the
+    // parameter, the hinge type or the mesh file that set the value.
+    let mut origins = Origins::default();
+    let param_target = |n: Option<&str>| match n {
+        Some(n) if all.get(n).is_some_and(|d| d.file.is_none()) => format!("parameters.{n}"),
+        _ => "mesh".to_string(),
+    };
+    let type_target = |n: &str| {
+        if case_type_names.iter().any(|k| k == n) {
+            format!("hinge_types.{n}")
+        } else {
+            "mesh".to_string()
+        }
+    };
+    let mut used = Vec::new();
+    expand_hinge_types(value, &types, &mut String::new(), &mut used)?;
+    for (at, name) in &used {
+        origins.add(at.clone(), name, type_target(name), None, true);
+    }
+    let template = Template::new(std::mem::take(value))?;
+    for (at, text, first) in template.sites() {
+        let in_use = used.iter().any(|(u, _)| at.strip_prefix(u.as_str()).is_some_and(|r| r.starts_with('.')));
+        if in_use {
+            origins.add(at, text, param_target(first), None, false);
+        }
+    }
+    *value = template.fill(&parameters)?;
     if let Some((name, mv)) = &mut mesh {
         let in_mesh = |e: CaseError| in_mesh_file(name, e);
-        expand_hinge_types(mv, &types, &mut String::new()).map_err(in_mesh)?;
-        *mv = Template::new(std::mem::take(mv))
-            .and_then(|t| t.fill(&parameters))
-            .map_err(in_mesh)?;
+        let mut used = Vec::new();
+        expand_hinge_types(mv, &types, &mut String::new(), &mut used).map_err(in_mesh)?;
+        for (at, t) in &used {
+            origins.add(at.clone(), t, type_target(t), Some(name), true);
+        }
+        let template = Template::new(std::mem::take(mv)).map_err(in_mesh)?;
+        for (at, text, first) in template.sites() {
+            origins.add(at, text, param_target(first), Some(name), false);
+        }
+        *mv = template.fill(&parameters).map_err(in_mesh)?;
     }
-    Ok(Resolved { parameters, mesh })
+    Ok(Resolved {
+        parameters,
+        mesh,
+        origins,
+    })
 }
 
 /// An error inside mesh file `name`, reported at `mesh` as the model reader does.
@@ -353,10 +400,12 @@ mod tests {
     fn hinge_types_expand() {
         let types: Map<String, Value> = serde_json::from_value(serde_json::json!({"flex": {"type": "leaf", "t": "$t"}})).unwrap();
         let mut v = serde_json::json!({"elements": [{"hinge": "flex"}, {"hinge": {"type": "leaf"}}]});
-        expand_hinge_types(&mut v, &types, &mut String::new()).unwrap();
+        let mut used = Vec::new();
+        expand_hinge_types(&mut v, &types, &mut String::new(), &mut used).unwrap();
+        assert_eq!(used, [("elements[0].hinge".to_string(), "flex".to_string())]);
         assert_eq!(v["elements"][0]["hinge"], serde_json::json!({"type": "leaf", "t": "$t"}));
         let mut w = serde_json::json!({"elements": [{"hinge": "flx"}]});
-        let e = expand_hinge_types(&mut w, &types, &mut String::new()).unwrap_err();
+        let e = expand_hinge_types(&mut w, &types, &mut String::new(), &mut Vec::new()).unwrap_err();
         assert_eq!(e.path, "elements[0].hinge");
         assert!(e.message.contains("declared: flex"), "{}", e.message);
     }

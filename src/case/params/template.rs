@@ -50,6 +50,15 @@ impl Template {
         Ok(Template { value, sites })
     }
 
+    /// Each site's JSON path, expression as written and the first parameter it uses.
+    pub fn sites(&self) -> impl Iterator<Item = (String, &str, Option<&str>)> + '_ {
+        self.sites.iter().map(|s| {
+            let mut names = Vec::new();
+            s.expr.names(&mut names);
+            (path_of(borrowed(&s.steps)), s.text.as_str(), names.first().copied())
+        })
+    }
+
     /// True when the value holds no expression.
     pub fn is_plain(&self) -> bool {
         self.sites.is_empty()

@@ -146,7 +146,7 @@ fn evaluate(
             o.echo_parameters(&parsed.parameters);
             o.json
         })
-        .map_err(|e| error_text(&e))
+        .map_err(|e| error_text(&parsed.locate_run(e)))
 }
 
 /// The array check of a sweep's designs ([`analysis::case_file::check_shape`]), done once per
