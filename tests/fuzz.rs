@@ -612,7 +612,9 @@ fn unless_panics<T>(
 fn exercise(doc: &Value, what: &str, f: &mut Findings) {
     let analysis = doc.get("analysis").and_then(Value::as_str).unwrap_or("?").to_string();
     let base = cases_dir();
-    let parsed = match quietly(|| analysis::parse_value(doc.clone(), Some(&base))) {
+    // As the command line does: errors of the resolved case are located where the case file
+    // sets the value (a parameter, a hinge type, the mesh file).
+    let resolved = match quietly(|| analysis::case_file::parse_resolved(doc.clone(), Some(&base), true)) {
         Err(p) => {
             let m = panic_text(p);
             f.add(class_of("panic in parse", &analysis, &m), doc, what, m);
@@ -623,9 +625,10 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
             f.unlocated(doc, what, &analysis, &e.path, &e.message);
             return;
         }
-        Ok(Ok(c)) => c,
+        Ok(Ok(p)) => p,
     };
-    if let Case::Sweep(s) = &parsed {
+    let parsed = &resolved.case;
+    if let Case::Sweep(s) = parsed {
         // A sweep runs its designs one by one: the first and the last.
         match quietly(|| s.build()) {
             Err(p) => {
@@ -653,12 +656,12 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
         }
         return;
     }
-    let Some(checked) = unless_panics(f, ("panic in check", &analysis, doc, what), || analysis::check(&parsed)) else {
+    let Some(checked) = unless_panics(f, ("panic in check", &analysis, doc, what), || analysis::check(parsed).map_err(|e| resolved.locate(e))) else {
         return;
     };
     f.runs += 1;
     let Some(outcome) = unless_panics(f, ("panic in run", &analysis, doc, what), || {
-        analysis::run_with_files(&parsed)
+        analysis::run_with_files(parsed).map_err(|e| resolved.locate_run(e))
     }) else {
         return;
     };

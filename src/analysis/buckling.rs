@@ -14,7 +14,6 @@ use crate::fem::{Element, Model};
 use crate::report::markdown::Table;
 use serde::Serialize;
 use serde_json::Value;
-use std::path::Path;
 
 case_struct! {
     /// `"analysis": "buckling"`: the `modes` smallest load multipliers λ (by magnitude) of the
@@ -46,7 +45,7 @@ case_struct! {
 const OWN: [&str; 6] = ["analysis", "description", "mesh", "gmsh", "modes", "shapes"];
 
 /// Parses a `buckling` case; files it names resolve against `base` first.
-pub fn parse_buckling(value: Value, base: Option<&Path>) -> Result<BucklingCase, CaseError> {
+pub fn parse_buckling(value: Value, base: &crate::case::Source<'_>) -> Result<BucklingCase, CaseError> {
     if let Some(k) = ["nonlinear", "steps", "shift_hz", "compliance", "output"]
         .iter()
         .find(|k| value.get(**k).is_some())

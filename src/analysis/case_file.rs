@@ -5,7 +5,8 @@
 use super::kinds_list::analyses;
 #[allow(unused_imports)]
 use super::*; // the modules the list's paths start from
-use crate::case::{from_value, limits, short, CaseError};
+use crate::case::params::{self, Parameters};
+use crate::case::{from_value, limits, short, CaseError, Source};
 use serde_json::Value;
 use std::path::Path;
 
@@ -21,7 +22,7 @@ pub trait CaseOf: super::Analysis {
 
 /// The parser of a plain case shape: serde with unknown fields refused, errors under their
 /// JSON path.
-pub fn shape<T: serde::de::DeserializeOwned>(value: Value, _base: Option<&Path>) -> Result<T, CaseError> {
+pub fn shape<T: serde::de::DeserializeOwned>(value: Value, _base: &Source<'_>) -> Result<T, CaseError> {
     from_value(value, "")
 }
 
@@ -85,7 +86,7 @@ macro_rules! case_side {
         )*
 
         /// The case of kind `analysis` from the rest of its JSON object (`None`: no such kind).
-        fn parse_kind(analysis: &str, value: Value, base: Option<&Path>) -> Option<Result<Case, CaseError>> {
+        fn parse_kind(analysis: &str, value: Value, base: &Source<'_>) -> Option<Result<Case, CaseError>> {
             match analysis {
                 $($name => Some(parser!($($parse)?)(value, base).map(Case::$variant)),)*
                 _ => None,
@@ -96,8 +97,42 @@ macro_rules! case_side {
 
 analyses!(case_side);
 
+/// A parsed case with the values of its parameters (see [`crate::case::params`]).
+#[derive(Debug, Clone)]
+pub struct Parsed {
+    /// The case.
+    pub case: Case,
+    /// Every declared parameter (the case's and its mesh file's) with its resolved value;
+    /// results echo them as `parameters`.
+    pub parameters: Parameters,
+    /// Where values outside the case as written (in its mesh file, in hinges given by type
+    /// name) came from.
+    pub origins: params::Origins,
+}
+
+impl Parsed {
+    /// A case error of the parsed case's validation or run moved to where the case file sets
+    /// the value ([`params::Origins::locate`]); other errors unchanged.
+    pub fn locate(&self, e: CaseError) -> CaseError {
+        self.origins.locate(e)
+    }
+
+    /// [`Self::locate`] for the error of a run.
+    pub fn locate_run(&self, e: super::RunError) -> super::RunError {
+        match e {
+            super::RunError::Case(c) => super::RunError::Case(self.locate(c)),
+            other => other,
+        }
+    }
+}
+
 /// Reads and parses a case file; files it refers to (`mesh`) are looked up beside it.
 pub fn load(path: &Path) -> Result<Case, CaseError> {
+    load_resolved(path).map(|p| p.case)
+}
+
+/// [`load`] with the case's parameter values.
+pub fn load_resolved(path: &Path) -> Result<Parsed, CaseError> {
     let shown = format!("\"{}\"", path.display());
     let bytes = limits::read_file(".", "case file", &shown, path)?;
     let text = String::from_utf8(bytes).map_err(|e| {
@@ -106,7 +141,8 @@ pub fn load(path: &Path) -> Result<Case, CaseError> {
             format!("cannot read case file {}: not UTF-8 text ({e})", path.display()),
         )
     })?;
-    parse_in(&text, path.parent())
+    let value: Value = serde_json::from_str(&text).map_err(|e| CaseError::new(".", format!("not valid JSON: {e}")))?;
+    parse_resolved(value, path.parent(), true)
 }
 
 /// Parses case-file text (relative file references resolve against the working folder).
@@ -122,22 +158,46 @@ pub fn parse_in(text: &str, base: Option<&Path>) -> Result<Case, CaseError> {
 
 /// Parses a case already read as JSON.
 pub fn parse_value(value: Value, base: Option<&Path>) -> Result<Case, CaseError> {
-    if value.is_object() {
-        check_shape(&value)?;
-    }
-    parse_value_shaped(value, base)
+    parse_resolved(value, base, true).map(|p| p.case)
 }
 
 /// The check of [`parse_value`] that refuses an array given where the schema wants an object
-/// (see `refuse_positional`). It depends only on where the case has arrays, so a batch driver
+/// (see [`super::case_shape`]). It depends only on where the case has arrays, so a batch driver
 /// whose designs differ from one already checked only in scalar values may skip it
-/// ([`parse_value_shaped`]).
+/// ([`parse_resolved`] with `check_arrays` false).
 pub fn check_shape(value: &Value) -> Result<(), CaseError> {
-    refuse_positional(value)
+    super::case_shape::refuse_positional(value)
 }
 
 /// [`parse_value`] without [`check_shape`], for a value whose arrays were checked already.
-pub fn parse_value_shaped(mut value: Value, base: Option<&Path>) -> Result<Case, CaseError> {
+pub fn parse_value_shaped(value: Value, base: Option<&Path>) -> Result<Case, CaseError> {
+    parse_resolved(value, base, false).map(|p| p.case)
+}
+
+/// Parses a case already read as JSON, with its parameter values: resolves parameters,
+/// hinge types and expressions ([`params::resolve_case`]), checks the arrays of the resolved
+/// value if `check_arrays` ([`check_shape`]) and deserialises it into its kind's shape. A
+/// `sweep` case is not resolved: each of its designs is, as a case of its own.
+pub fn parse_resolved(mut value: Value, base: Option<&Path>, check_arrays: bool) -> Result<Parsed, CaseError> {
+    let resolved = if value.get("analysis").and_then(Value::as_str) == Some("sweep") {
+        params::Resolved::default()
+    } else {
+        params::resolve_case(&mut value, base)?
+    };
+    if check_arrays && value.is_object() {
+        check_shape(&value)?;
+    }
+    let source = Source::with_mesh(base, resolved.mesh);
+    let case = parse_shaped(value, &source).map_err(|e| resolved.origins.locate(e))?;
+    Ok(Parsed {
+        case,
+        parameters: resolved.parameters,
+        origins: resolved.origins,
+    })
+}
+
+/// The typed parse of a resolved case value.
+fn parse_shaped(mut value: Value, base: &Source<'_>) -> Result<Case, CaseError> {
     if !value.is_object() {
         return Err(CaseError::value(
             ".",
@@ -171,126 +231,6 @@ pub fn parse_value_shaped(mut value: Value, base: Option<&Path>) -> Result<Case,
             format!("must be one of {}", ANALYSES.join(", ")),
         ))
     })
-}
-
-/// Refuses an array where the case schema allows only an object.
-///
-/// serde also reads a struct from the array of its field values in declaration order
-/// (`"leg": [10, 10]`, `"hinge": ["leaf", 5, 1, …]`). Case files do not take that form: the schema
-/// refuses it, and the errors about such a value would name fields (`hinge.t`) that the file
-/// does not have.
-fn refuse_positional(value: &Value) -> Result<(), CaseError> {
-    static SCHEMA: std::sync::OnceLock<Value> = std::sync::OnceLock::new();
-    let schema = SCHEMA.get_or_init(schema);
-    let defs = schema.get("$defs").and_then(Value::as_object);
-    let mut roots = Vec::new();
-    expand(schema, defs, &mut roots, 0);
-    positional(value, &roots, defs, String::new())
-}
-
-/// The schema nodes that `node` stands for: itself if it says something about types, and what
-/// its `$ref`, `anyOf`, `oneOf` and `allOf` lead to (`if`/`then`/`else` and `not` are skipped:
-/// they only add constraints).
-fn expand<'a>(
-    node: &'a Value,
-    defs: Option<&'a serde_json::Map<String, Value>>,
-    out: &mut Vec<&'a Value>,
-    depth: usize,
-) {
-    let Some(m) = node.as_object() else {
-        return;
-    };
-    if depth > 32 {
-        return;
-    }
-    let typed = [
-        "type",
-        "properties",
-        "additionalProperties",
-        "items",
-        "prefixItems",
-        "enum",
-        "const",
-    ];
-    if typed.iter().any(|k| m.contains_key(*k)) {
-        out.push(node);
-    }
-    if let Some(r) = m.get("$ref").and_then(Value::as_str) {
-        if let Some(d) = r.strip_prefix("#/$defs/").and_then(|n| defs.and_then(|d| d.get(n))) {
-            expand(d, defs, out, depth + 1);
-        }
-    }
-    for k in ["anyOf", "oneOf", "allOf"] {
-        for b in m.get(k).and_then(Value::as_array).into_iter().flatten() {
-            expand(b, defs, out, depth + 1);
-        }
-    }
-}
-
-fn allows_array(node: &Value) -> bool {
-    match node.get("type") {
-        Some(Value::String(t)) => t == "array",
-        Some(Value::Array(ts)) => ts.iter().any(|t| t == "array"),
-        _ => {
-            !(node.get("properties").is_some()
-                || node.get("additionalProperties").is_some_and(Value::is_object)
-                || node.get("enum").is_some()
-                || node.get("const").is_some())
-        }
-    }
-}
-
-fn positional<'a>(
-    value: &Value,
-    candidates: &[&'a Value],
-    defs: Option<&'a serde_json::Map<String, Value>>,
-    path: String,
-) -> Result<(), CaseError> {
-    if candidates.is_empty() {
-        return Ok(());
-    }
-    // The schema nodes of a child: what `pick` gives of each candidate, expanded.
-    let children = |pick: &dyn Fn(&'a Value) -> Option<&'a Value>| {
-        let mut out = Vec::new();
-        for n in candidates.iter().filter_map(|c| pick(c)) {
-            expand(n, defs, &mut out, 0);
-        }
-        out
-    };
-    match value {
-        Value::Array(items) => {
-            if !candidates.iter().any(|c| allows_array(c)) {
-                return Err(CaseError::value(
-                    if path.is_empty() { "." } else { &path },
-                    short(value),
-                    "an object is expected here: give its fields by name, {\"field\": value, …}",
-                ));
-            }
-            for (i, item) in items.iter().enumerate() {
-                let of_item = children(&|c| {
-                    let prefix = c.get("prefixItems").and_then(|p| p.get(i));
-                    prefix.or_else(|| c.get("items").filter(|x| x.is_object()))
-                });
-                positional(item, &of_item, defs, format!("{path}[{i}]"))?;
-            }
-        }
-        Value::Object(map) => {
-            for (k, item) in map {
-                let of_field = children(&|c| {
-                    let named = c.get("properties").and_then(|p| p.get(k));
-                    named.or_else(|| c.get("additionalProperties").filter(|x| x.is_object()))
-                });
-                let p = if path.is_empty() {
-                    k.clone()
-                } else {
-                    format!("{path}.{k}")
-                };
-                positional(item, &of_field, defs, p)?;
-            }
-        }
-        _ => {}
-    }
-    Ok(())
 }
 
 /// What `load_cases` means to each analysis whose model part (the shared mesh fields) carries

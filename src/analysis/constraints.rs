@@ -15,7 +15,6 @@ use crate::case::CaseError;
 use crate::kinematics::exact::{self, release, Bodies, BodyMotion, Constraint, Source};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
-use std::path::Path;
 
 case_struct! {
     /// `"analysis": "constraints"`: over- and under-constraint of a model whose bodies are taken
@@ -96,7 +95,7 @@ impl Default for Options {
 const OWN: [&str; 7] = ["analysis", "description", "mesh", "gmsh", "compliant", "hinges", "drives"];
 
 /// Parses a `constraints` case; files it names resolve against `base` first.
-pub fn parse(value: Value, base: Option<&Path>) -> Result<ConstraintsCase, CaseError> {
+pub fn parse(value: Value, base: &crate::case::Source<'_>) -> Result<ConstraintsCase, CaseError> {
     let (o, model) =
         parse_with_model(value, "constraints", &OWN, &[], base, |o: &Options| (o.mesh.as_deref(), o.gmsh.as_ref()))?;
     let case = ConstraintsCase {

@@ -16,7 +16,6 @@ use crate::fem::modal::{solve_modal, ModalOptions};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::f64::consts::PI;
-use std::path::Path;
 
 /// `"analysis": "craig_bampton"`.
 #[derive(Debug, Clone, schemars::JsonSchema)]
@@ -53,7 +52,7 @@ struct Options {
 const OWN: [&str; 6] = ["analysis", "description", "mesh", "interface", "modes", "load_cases"];
 
 /// Parses a `craig_bampton` case; a mesh file it names resolves against `base` first.
-pub fn parse(value: Value, base: Option<&Path>) -> Result<CraigBamptonCase, CaseError> {
+pub fn parse(value: Value, base: &crate::case::Source<'_>) -> Result<CraigBamptonCase, CaseError> {
     let (mut options, model) = split(value, &OWN);
     let stray = model
         .as_object()

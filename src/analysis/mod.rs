@@ -1,6 +1,7 @@
 //! Analyses: validated case → typed result → JSON/Markdown/CSV views.
 
 pub mod case_file;
+mod case_shape;
 pub mod compliance;
 pub mod design;
 pub mod export;
@@ -32,7 +33,7 @@ pub mod warn;
 use registry::analysis_modules;
 kinds_list::analyses!(analysis_modules);
 
-pub use case_file::{load, parse, parse_in, parse_value, schema, Case, ANALYSES};
+pub use case_file::{load, load_resolved, parse, parse_in, parse_value, schema, Case, Parsed, ANALYSES};
 pub use kind::{Analysis, Ctx, DynAnalysis};
 pub use warn::{hinge_warnings, SMALL_STRAIN};
 
@@ -123,6 +124,24 @@ pub struct Outcome {
     pub report: Report,
     /// Extra output files (e.g. `.vtu`, `.svg`), written by `--out`.
     pub files: Files,
+}
+
+impl Outcome {
+    /// Echoes the case's resolved parameters (name → value) in the result as `parameters` and
+    /// in the Markdown report; nothing when the case declares none.
+    pub fn echo_parameters(&mut self, parameters: &crate::case::params::Parameters) {
+        if parameters.is_empty() {
+            return;
+        }
+        if let serde_json::Value::Object(m) = &mut self.json {
+            let echo = parameters.iter().map(|(k, v)| (k.clone(), serde_json::Value::from(*v)));
+            m.insert("parameters".into(), serde_json::Value::Object(echo.collect()));
+        }
+        if !self.report.markdown.is_empty() {
+            let list: Vec<String> = parameters.iter().map(|(k, v)| format!("`{k}` = {v}")).collect();
+            self.report.markdown += &format!("\nParameters: {}.\n", list.join(", "));
+        }
+    }
 }
 
 /// The JSON value of a result, refusing any non-finite number: serde_json would write NaN and

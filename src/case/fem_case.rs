@@ -9,7 +9,6 @@ use super::stage::{self, nonlinear_true, steps_given};
 use super::{check_node_count, from_value, limits, read_json, resolve_file};
 use serde::Deserialize;
 use serde_json::{Map, Value};
-use std::path::Path;
 
 /// `"analysis": "modal"`: the lowest `modes` natural frequencies and mass-normalised shapes of
 /// a model given as for `static` (supports optional: a free body gives six rigid-body modes
@@ -199,7 +198,7 @@ pub fn split(mut value: Value, own: &[&str]) -> (Value, Value) {
 
 /// Parses a `static` case (the object without `analysis` checks); files it names resolve
 /// against `base` first.
-pub fn parse_static(value: Value, base: Option<&Path>) -> Result<StaticCase, CaseError> {
+pub fn parse_static(value: Value, base: &crate::case::Source<'_>) -> Result<StaticCase, CaseError> {
     unknown_model_field(&value, "static")?;
     let (options, model) = split(value, &STATIC_OWN);
     let o: StaticOptions = from_value(options, "")?;
@@ -225,7 +224,7 @@ pub fn parse_static(value: Value, base: Option<&Path>) -> Result<StaticCase, Cas
 }
 
 /// Parses a `modal` case, as [`parse_static`].
-pub fn parse_modal(value: Value, base: Option<&Path>) -> Result<ModalCase, CaseError> {
+pub fn parse_modal(value: Value, base: &crate::case::Source<'_>) -> Result<ModalCase, CaseError> {
     unknown_model_field(&value, "modal")?;
     let (options, model) = split(value, &MODAL_OWN);
     let o: ModalOptions = from_value(options, "")?;
@@ -267,7 +266,7 @@ pub fn parse_with_model<O: serde::de::DeserializeOwned>(
     kind: &str,
     own: &[&str],
     ignore: &[&str],
-    base: Option<&Path>,
+    base: &crate::case::Source<'_>,
     source: impl FnOnce(&O) -> (Option<&str>, Option<&GmshMapping>),
 ) -> Result<(O, MeshSpec), CaseError> {
     let known = |k: &str| own.contains(&k) || MODEL_FIELDS.contains(&k);
@@ -301,7 +300,7 @@ pub fn read_model(
     value: Value,
     mesh_name: Option<&str>,
     gmsh_map: Option<&GmshMapping>,
-    base: Option<&Path>,
+    base: &crate::case::Source<'_>,
 ) -> Result<MeshSpec, CaseError> {
     check_node_count("nodes", &value)?;
     let inline: MeshSpec = from_value(value, "")?;
@@ -313,7 +312,7 @@ pub fn read_model(
                     "a .msh mesh needs a `gmsh` mapping: {\"groups\": {\"NAME\": {\"section\", \"material\"} or {\"fix\": [...]}}}",
                 ));
             };
-            let file = resolve_file(name, base);
+            let file = resolve_file(name, base.dir);
             let bytes = limits::read_file("mesh", "mesh file", &format!("\"{name}\""), &file)?;
             let text = gmsh::msh_text(&bytes)
                 .map_err(|e| CaseError::new(e.path.clone(), format!("in {name}: {}", e.message)))?;
@@ -333,7 +332,10 @@ pub fn read_model(
             ))
         }
         Some(name) => {
-            let mut mv = read_json("mesh", name, base)?;
+            let mut mv = match base.take_mesh(name) {
+                Some(v) => v,
+                None => read_json("mesh", name, base.dir)?,
+            };
             check_node_count("mesh", &mv)?;
             if let Value::Object(m) = &mut mv {
                 m.remove("analysis");
@@ -348,7 +350,7 @@ pub fn read_model(
         }
         None => inline,
     };
-    super::mesh::superelement::load_files(&mut spec, base)?;
+    super::mesh::superelement::load_files(&mut spec, base.dir)?;
     Ok(spec)
 }
 

@@ -16,6 +16,7 @@ pub mod limits;
 pub mod material;
 pub mod mesh;
 pub mod numbers;
+pub mod params;
 pub mod pantilt;
 pub mod prs_stiffness;
 pub mod stage;
@@ -49,6 +50,47 @@ fn check_node_count(field: &str, model: &Value) -> Result<(), CaseError> {
     }
 }
 
+/// Where a case is read from: the folder its file references resolve against, and the JSON
+/// mesh file it names when that was read already (with its parameters resolved, see
+/// [`params::resolve_case`]), so the model reader does not read it again.
+#[derive(Debug, Default)]
+pub struct Source<'a> {
+    /// The case file's folder (`None`: the working folder).
+    pub dir: Option<&'a Path>,
+    mesh: std::cell::RefCell<Option<(String, Value)>>,
+}
+
+impl<'a> Source<'a> {
+    /// A case read from a file in `dir`.
+    pub fn new(dir: Option<&'a Path>) -> Self {
+        Source {
+            dir,
+            mesh: Default::default(),
+        }
+    }
+
+    /// [`Self::new`] with the mesh file `name` already read and resolved as `content`.
+    pub fn with_mesh(dir: Option<&'a Path>, mesh: Option<(String, Value)>) -> Self {
+        Source {
+            dir,
+            mesh: std::cell::RefCell::new(mesh),
+        }
+    }
+
+    /// The content of mesh file `name` if it was read already (taken: a case reads its mesh
+    /// once).
+    fn take_mesh(&self, name: &str) -> Option<Value> {
+        let mut slot = self.mesh.borrow_mut();
+        match slot.take() {
+            Some((n, v)) if n == name => Some(v),
+            other => {
+                *slot = other;
+                None
+            }
+        }
+    }
+}
+
 /// Resolves a file named in a case: relative to `base` if it exists there, else as given.
 pub fn resolve_file(name: &str, base: Option<&Path>) -> PathBuf {
     let p = Path::new(name);
@@ -58,7 +100,7 @@ pub fn resolve_file(name: &str, base: Option<&Path>) -> PathBuf {
     }
 }
 
-fn read_json(path_field: &str, name: &str, base: Option<&Path>) -> Result<Value, CaseError> {
+pub(crate) fn read_json(path_field: &str, name: &str, base: Option<&Path>) -> Result<Value, CaseError> {
     let file = resolve_file(name, base);
     let bytes = limits::read_file(path_field, "mesh file", &format!("\"{name}\""), &file)?;
     serde_json::from_slice(&bytes).map_err(|e| {

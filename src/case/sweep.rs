@@ -96,7 +96,9 @@ impl Sweep {
     }
 }
 
-/// Sets `value` at a dotted path (`hinge.t`, `load_cases.0.name`); the parent must exist.
+/// Sets `value` at a dotted path (`hinge.t`, `load_cases.0.name`); the parent must exist,
+/// except a case's `parameters` object, created for `parameters.NAME` (a parameter the mesh
+/// file declares, overridden by the case).
 pub fn set_path(root: &mut Value, path: &str, value: Value) -> Result<(), String> {
     let parts: Vec<&str> = path.split('.').collect();
     let mut cur = root;
@@ -107,6 +109,9 @@ pub fn set_path(root: &mut Value, path: &str, value: Value) -> Result<(), String
                 if last {
                     m.insert(part.to_string(), value);
                     return Ok(());
+                }
+                if depth == 0 && *part == "parameters" && !m.contains_key("parameters") {
+                    m.insert("parameters".into(), Value::Object(Map::new()));
                 }
                 m.get_mut(*part)
                     .ok_or_else(|| format!("`{}` does not exist in the base case", parts[..=depth].join(".")))?

@@ -103,8 +103,8 @@ plot of the base case's analysis beside OUT."
 
 pub use crate::output::{EXIT_BAD_CASE, EXIT_FAILED};
 
-fn read_case(path: &Path) -> Result<analysis::Case, CaseError> {
-    analysis::load(path)
+fn read_case_resolved(path: &Path) -> Result<analysis::Parsed, CaseError> {
+    analysis::load_resolved(path)
 }
 
 fn fail(e: &RunError) -> ExitCode {
@@ -214,7 +214,7 @@ pub fn run(cli: Cli) -> ExitCode {
             serde_json::to_string_pretty(&analysis::schema()).unwrap_or_default()
         )),
         Command::Check { case } => {
-            let checked = read_case(&case).and_then(|c| match &c {
+            let checked = read_case_resolved(&case).and_then(|p| match &p.case {
                 analysis::Case::Sweep(s) => {
                     let sweep = s.build()?;
                     let n = crate::design::sweep::check(&sweep, case.parent())?;
@@ -224,7 +224,9 @@ pub fn run(cli: Cli) -> ExitCode {
                         sweep.len()
                     ))
                 }
-                _ => analysis::check(&c).map(|_| format!("ok: {} case {}\n", c.analysis(), case.display())),
+                c => analysis::check(c)
+                    .map(|_| format!("ok: {} case {}\n", c.analysis(), case.display()))
+                    .map_err(|e| p.locate(e)),
             });
             match checked {
                 Ok(msg) => emit(&msg),
@@ -244,12 +246,13 @@ pub fn run(cli: Cli) -> ExitCode {
                     return ExitCode::from(EXIT_BAD_CASE);
                 }
             }
-            let parsed = match read_case(&case) {
-                Ok(c) => c,
+            let resolved = match read_case_resolved(&case) {
+                Ok(p) => p,
                 Err(e) => return fail(&RunError::Case(e)),
             };
+            let parsed = &resolved.case;
             if export_matrices {
-                if let Err(e) = analysis::export::check_exportable(&parsed) {
+                if let Err(e) = analysis::export::check_exportable(parsed) {
                     return fail(&RunError::Case(e));
                 }
             }
@@ -258,12 +261,13 @@ pub fn run(cli: Cli) -> ExitCode {
             } else {
                 analysis::run
             };
-            let mut outcome = match run(&parsed) {
+            let mut outcome = match run(parsed) {
                 Ok(o) => o,
-                Err(e) => return fail(&e),
+                Err(e) => return fail(&resolved.locate_run(e)),
             };
+            outcome.echo_parameters(&resolved.parameters);
             if export_matrices {
-                match analysis::export::matrix_files(&parsed) {
+                match analysis::export::matrix_files(parsed) {
                     Ok(files) => outcome.files.extend(files),
                     Err(e) => return fail(&e),
                 }

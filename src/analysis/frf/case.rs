@@ -11,7 +11,6 @@ use crate::case::mesh::MeshSpec;
 use crate::fem::Model;
 use serde::Deserialize;
 use serde_json::Value;
-use std::path::Path;
 
 /// `"analysis": "frf"`.
 #[derive(Debug, Clone, schemars::JsonSchema)]
@@ -191,7 +190,7 @@ struct Options {
 }
 
 /// Parses an `frf` case; a mesh file it names resolves against `base` first.
-pub fn parse_frf(value: Value, base: Option<&Path>) -> Result<FrfCase, CaseError> {
+pub fn parse_frf(value: Value, base: &crate::case::Source<'_>) -> Result<FrfCase, CaseError> {
     if let Some(key) = value
         .as_object()
         .and_then(|m| m.keys().find(|k| !OWN.contains(&k.as_str()) && !MODEL_FIELDS.contains(&k.as_str())))

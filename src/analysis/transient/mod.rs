@@ -20,7 +20,6 @@ pub use history::{ElementDampingSpec, HistorySpec};
 pub use output::{RecordOut, TransientResult};
 use serde::Deserialize;
 use serde_json::Value;
-use std::path::Path;
 
 /// A nodal load history: `F` (as in a `static` load case) or its alias `force`, not both.
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
@@ -202,7 +201,7 @@ const OWN: [&str; 16] = [
 ];
 
 /// Parses a `transient` case; files it names resolve against `base` first.
-pub fn parse_transient(value: Value, base: Option<&Path>) -> Result<TransientCase, CaseError> {
+pub fn parse_transient(value: Value, base: &crate::case::Source<'_>) -> Result<TransientCase, CaseError> {
     // `load_cases` is accepted and not used: a transient takes its loads from `loads`.
     let (o, model) = parse_with_model(value, "transient", &OWN, &["load_cases"], base, |o: &Options| {
         (o.mesh.as_deref(), o.gmsh.as_ref())

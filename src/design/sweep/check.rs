@@ -56,15 +56,15 @@ pub fn check(sweep: &Sweep, base_dir: Option<&Path>) -> Result<usize, CaseError>
             CaseError::new(path, format!("design {i} ({params}): {}", e.message))
         };
         let design = sweep.design(i)?;
-        let case = analysis::parse_value(design, base_dir).map_err(located)?;
-        if let Case::Sweep(_) = case {
+        let parsed = analysis::case_file::parse_resolved(design, base_dir, true).map_err(located)?;
+        if let Case::Sweep(_) = parsed.case {
             return Err(CaseError::value(
                 "base.analysis",
                 "\"sweep\"",
                 "a sweep cannot vary another sweep",
             ));
         }
-        analysis::check(&case).map_err(located)?;
+        analysis::check(&parsed.case).map_err(|e| located(parsed.locate(e)))?;
     }
     Ok(indices.len())
 }

@@ -135,8 +135,8 @@ fn evaluate(
 ) -> Result<(Value, Option<format::LoadedNodes>), String> {
     let design = sweep.design(index).map_err(|e| case_text(&e))?;
     *hash = Some(hash_design(&design, base_dir));
-    let case = shapes.parse(design, base_dir).map_err(|e| case_text(&e))?;
-    let loaded = match &case {
+    let parsed = shapes.parse(design, base_dir).map_err(|e| case_text(&e))?;
+    let loaded = match &parsed.case {
         Case::Sweep(_) => return Err("analysis: a sweep cannot vary another sweep".into()),
         Case::Static(c) if format.loaded_displacements => Some(format::loaded_nodes(&c.model)),
         _ => None,
@@ -144,9 +144,12 @@ fn evaluate(
     let mut ctx = Ctx::new(cache, false);
     // Only the JSON goes into the line: no Markdown/CSV report.
     ctx.with_report = false;
-    analysis::run_with(&case, &mut ctx)
-        .map(|o| (o.json, loaded))
-        .map_err(|e| error_text(&e))
+    analysis::run_with(&parsed.case, &mut ctx)
+        .map(|mut o| {
+            o.echo_parameters(&parsed.parameters);
+            (o.json, loaded)
+        })
+        .map_err(|e| error_text(&parsed.locate_run(e)))
 }
 
 /// The array check of a sweep's designs ([`analysis::case_file::check_shape`]), done once per
@@ -166,14 +169,15 @@ impl Shapes {
         }
     }
 
-    /// [`analysis::parse_value`] of a design, skipping the array check once a design passed it.
-    fn parse(&self, design: Value, base_dir: Option<&Path>) -> Result<Case, CaseError> {
-        let skip = self.scalar_axes && self.checked.load(Ordering::Relaxed);
-        if !skip && design.is_object() {
-            analysis::case_file::check_shape(&design)?;
+    /// [`analysis::parse_value`] of a design with its parameter values, skipping the array
+    /// check once a design passed it.
+    fn parse(&self, design: Value, base_dir: Option<&Path>) -> Result<analysis::Parsed, CaseError> {
+        let check = !(self.scalar_axes && self.checked.load(Ordering::Relaxed)) && design.is_object();
+        let parsed = analysis::case_file::parse_resolved(design, base_dir, check)?;
+        if check {
             self.checked.store(true, Ordering::Relaxed);
         }
-        analysis::case_file::parse_value_shaped(design, base_dir)
+        Ok(parsed)
     }
 }
 

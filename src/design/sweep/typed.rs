@@ -6,7 +6,8 @@
 //!
 //! The route is taken only where it gives the very lines of the value route ([`super`]): every
 //! varied path holds a number in the base case and gets numbers, the kind reaches those numbers
-//! in its parsed case, no `--fields`, no mesh file; and the parsed case with the numbers set
+//! in its parsed case, no `--fields`, no mesh file, no parameters or hinge types (whose values
+//! the value route resolves and echoes); and the parsed case with the numbers set
 //! must equal the parsed design (checked on three designs before the run). A design that fails
 //! or panics, or whose notes the route cannot reference, is run again on the value route, so
 //! error rows are the value route's too.
@@ -55,7 +56,8 @@ impl<'s> Typed<'s> {
     /// The typed route of `sweep` written in `format`, when it gives the same lines as the value
     /// route (see the module docs).
     pub(super) fn new(sweep: &'s Sweep, base_dir: Option<&Path>, format: &LineFormat, shapes: &Shapes) -> Option<Self> {
-        if format.fields.is_some() || sweep.is_empty() || sweep.base.get("mesh").is_some() {
+        let resolved = ["mesh", "parameters", "hinge_types"];
+        if format.fields.is_some() || sweep.is_empty() || resolved.iter().any(|k| sweep.base.get(k).is_some()) {
             return None;
         }
         let kind = analysis::registry::find(sweep.base.get("analysis")?.as_str()?)?;
@@ -65,7 +67,7 @@ impl<'s> Typed<'s> {
             pointer(&sweep.base, path)?.as_f64()?;
             numbers.push(values.iter().map(Value::as_f64).collect::<Option<Vec<f64>>>()?);
         }
-        let parse = |i: usize| shapes.parse(sweep.design(i).ok()?, base_dir).ok();
+        let parse = |i: usize| shapes.parse(sweep.design(i).ok()?, base_dir).ok().map(|p| p.case);
         let base = parse(0)?;
         let typed = Typed {
             sweep,

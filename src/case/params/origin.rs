@@ -1,0 +1,60 @@
+//! Where a resolved value came from. Validation runs on the resolved case, so an error may name
+//! a place the case file does not have as written: inside the mesh file, or inside a hinge
+//! given by type name. [`Origins::locate`] moves such an error to where the value is set (the
+//! parameter's declaration, the hinge type, or `mesh`), keeping the place it was found and the
+//! expression in the message.
+
+use crate::case::CaseError;
+
+/// One expression site or hinge-type use outside the case as written.
+#[derive(Debug, Clone)]
+struct Origin {
+    /// JSON path of the resolved value (in the case or its mesh file).
+    at: String,
+    /// What was written there: the expression, or the hinge type's name.
+    written: String,
+    /// Where the error is reported instead.
+    target: String,
+    /// The mesh file it is in (`None`: the case).
+    file: Option<String>,
+    /// True for a hinge-type use (errors anywhere inside it are its).
+    hinge: bool,
+}
+
+/// The origins of a resolved case's values (see the module docs).
+#[derive(Debug, Clone, Default)]
+pub struct Origins {
+    all: Vec<Origin>,
+}
+
+impl Origins {
+    /// A value at `at` written as `written`, reported at `target`.
+    pub(super) fn add(&mut self, at: String, written: &str, target: String, file: Option<&str>, hinge: bool) {
+        self.all.push(Origin {
+            at,
+            written: written.to_string(),
+            target,
+            file: file.map(str::to_string),
+            hinge,
+        });
+    }
+
+    /// `e` moved to where the value at its path is set, if that path is one recorded (an
+    /// expression site first, else inside a hinge-type use); otherwise `e` unchanged.
+    pub fn locate(&self, e: CaseError) -> CaseError {
+        let inside = |o: &Origin| {
+            e.path == o.at
+                || (o.hinge && e.path.strip_prefix(o.at.as_str()).is_some_and(|r| r.starts_with(['.', '['])))
+        };
+        let Some(o) = self.all.iter().find(|o| !o.hinge && e.path == o.at).or_else(|| self.all.iter().find(|o| inside(o)))
+        else {
+            return e;
+        };
+        let file = o.file.as_ref().map(|f| format!(" of mesh file \"{f}\"")).unwrap_or_default();
+        let what = if o.hinge { "hinge type" } else { "expression" };
+        CaseError::new(
+            o.target.clone(),
+            format!("at `{}`{file} ({what} \"{}\"): {}", e.path, o.written, e.message),
+        )
+    }
+}
