@@ -254,18 +254,26 @@ impl Analysis for Static {
             ctx.files.extend(super::track::files(tracked));
             ctx.files.extend(path_files);
         }
-        ctx.warnings = if case.nonlinear {
-            let mut w = warn::stretch_warnings(&model, &r);
-            w.extend(warn::single_segment_hinge_warnings(&hinges));
-            w.extend(stability(
-                r.load_cases
-                    .iter()
-                    .map(|c| (c.name.as_str(), c.stable, c.critical_load_factor)),
-            ));
-            w
+        for (ic, row) in r.load_cases.iter_mut().enumerate() {
+            let w = if case.nonlinear {
+                let stretch = warn::stretch_warning(&model, ic, row);
+                stretch.into_iter().chain(fem_static::stability_text(
+                    &row.name,
+                    row.stable,
+                    row.critical_load_factor,
+                ))
+                .collect()
+            } else {
+                Vec::from_iter(warn::linear_range_warning(&model, ic, row))
+            };
+            row.warnings.extend(w);
+        }
+        ctx.warnings = r.load_cases.iter().flat_map(|c| c.warnings.iter().cloned()).collect();
+        ctx.warnings.extend(if case.nonlinear {
+            warn::single_segment_hinge_warnings(&hinges)
         } else {
             fem_static::shell_orientation_warnings(&model)
-        };
+        });
         Ok(r)
     }
     fn report(r: &Self::Result) -> Report {
@@ -303,9 +311,6 @@ impl Analysis for Modal {
     }
     fn report(r: &Self::Result) -> Report {
         modal::report(r)
-    }
-    fn case_warnings(case: &Self::Case) -> Vec<String> {
-        warn::density_warnings(&case.model)
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         named_materials(&case.model.materials)

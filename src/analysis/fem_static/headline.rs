@@ -62,11 +62,14 @@ fn sites(model: &Model, case_index: &[Option<usize>], hinges: &[BuiltHinge]) -> 
 }
 
 /// Sets `max_von_mises`, `max_von_mises_at`, `max_utilisation` and `loaded_nodes` of every load
-/// case of `r` (after [`super::add_hinges`]; `r.load_cases` in the order of `model.load_cases`).
+/// case of `r`, and adds to its `warnings` the elements above their allowable stress (after
+/// [`super::add_hinges`]; `r.load_cases` in the order of `model.load_cases`).
 pub fn add_headlines(r: &mut StaticResult, model: &Model, case_index: &[Option<usize>], hinges: &[BuiltHinge]) {
     let sites = sites(model, case_index, hinges);
-    for (row, lc) in r.load_cases.iter_mut().zip(&model.load_cases) {
-        set_headline(row, &sites);
+    for (ic, (row, lc)) in r.load_cases.iter_mut().zip(&model.load_cases).enumerate() {
+        let over = set_headline(row, &sites);
+        row.warnings
+            .extend(crate::analysis::warn::allowable_warning(ic, &row.name, &over));
         let mut nodes: Vec<usize> = lc
             .forces
             .iter()
@@ -79,9 +82,12 @@ pub fn add_headlines(r: &mut StaticResult, model: &Model, case_index: &[Option<u
     }
 }
 
-fn set_headline(row: &mut StaticCaseRow, sites: &[Site]) {
+/// Sets the headline of one load case; returns the elements above their allowable stress,
+/// worst first.
+fn set_headline(row: &mut StaticCaseRow, sites: &[Site]) -> Vec<Utilisation> {
     let mut top: Option<StressAt> = None;
     let mut util: Option<Utilisation> = None;
+    let mut over = Vec::new();
     for s in sites {
         let von_mises = match s.source {
             Source::Element(ie) => row.element_von_mises.get(ie).copied().flatten(),
@@ -97,20 +103,25 @@ fn set_headline(row: &mut StaticCaseRow, sites: &[Site]) {
             });
         }
         if s.allowable.is_finite() {
-            let value = von_mises / s.allowable;
-            if util.is_none_or(|u| value > u.value) {
-                util = Some(Utilisation {
-                    value,
-                    element: s.element,
-                    kind: s.kind,
-                    model_element: s.model_element,
-                    von_mises,
-                    allowable: s.allowable,
-                });
+            let u = Utilisation {
+                value: von_mises / s.allowable,
+                element: s.element,
+                kind: s.kind,
+                model_element: s.model_element,
+                von_mises,
+                allowable: s.allowable,
+            };
+            if util.is_none_or(|w| u.value > w.value) {
+                util = Some(u);
+            }
+            if u.value > 1.0 {
+                over.push(u);
             }
         }
     }
     row.max_von_mises = top.map(|t| t.von_mises);
     row.max_von_mises_at = top;
     row.max_utilisation = util;
+    over.sort_by(|a, b| b.value.total_cmp(&a.value));
+    over
 }
