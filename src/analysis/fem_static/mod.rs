@@ -8,6 +8,7 @@ pub use super::compliance::{compliance_row, ComplianceRow};
 mod headline;
 mod report;
 mod rows;
+mod summary;
 
 pub use headline::add_headlines;
 pub use report::{file_stem, report, von_mises_of, vtu, vtu_files};
