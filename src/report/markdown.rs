@@ -90,19 +90,16 @@ pub fn num(v: f64, digits: usize) -> String {
         return "0".into();
     }
     let digits = digits.max(1);
-    let mag = v.abs().log10().floor() as i32;
+    // The exponent after rounding to `digits` (0.99999 → 1.0000e0, not 0.99999 plain).
+    let s = format!("{v:.prec$e}", prec = digits - 1);
+    let Some((m, e)) = s.split_once('e') else { return s };
+    let mag: i32 = e.parse().unwrap_or(0);
     if (-2..5).contains(&mag) {
         let decimals = (digits as i32 - 1 - mag).max(0) as usize;
         return format!("{v:.decimals$}");
     }
-    let s = format!("{v:.prec$e}", prec = digits - 1);
-    match s.split_once('e') {
-        Some((m, e)) => {
-            let (sign, e) = e.strip_prefix('-').map_or(("+", e), |e| ("-", e));
-            format!("{m}e{sign}{e:0>2}")
-        }
-        None => s,
-    }
+    let (sign, e) = e.strip_prefix('-').map_or(("+", e), |e| ("-", e));
+    format!("{m}e{sign}{e:0>2}")
 }
 
 #[cfg(test)]
@@ -126,6 +123,8 @@ mod tests {
         assert_eq!(num(123456.0, 5), "1.2346e+05");
         assert_eq!(num(-4.5e-13, 5), "-4.5000e-13");
         assert_eq!(num(2.5e120, 4), "2.500e+120");
+        assert_eq!(num(-0.99999999997, 5), "-1.0000");
+        assert_eq!(num(99999.7, 5), "1.0000e+05");
     }
 
     #[test]

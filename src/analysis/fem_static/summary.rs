@@ -74,9 +74,20 @@ fn load_case(c: &StaticCaseRow) -> String {
         }
         md += "\n";
     }
-    md += "Total reaction (supports and ground springs, about the global origin):\n\n";
-    let mut t = Table::new(&["Fx (N)", "Fy (N)", "Fz (N)", "Mx (N·mm)", "My (N·mm)", "Mz (N·mm)"]);
-    t.row(c.total_reaction.iter().map(|v| num(*v, DIGITS)).collect());
+    // The prescribed nodes carry the force that imposes their motion: listed before the total
+    // (supports, ground springs and prescribed DOFs, which balances the applied loads).
+    md += "Reactions (the prescribed nodes', and the total of supports, ground springs and prescribed DOFs about the global origin):\n\n";
+    let mut t = Table::new(&["node", "Fx (N)", "Fy (N)", "Fz (N)", "Mx (N·mm)", "My (N·mm)", "Mz (N·mm)"]);
+    for (n, r) in c.reaction_nodes.iter().zip(&c.reactions) {
+        if c.loaded_nodes.binary_search(n).is_ok() {
+            t.row(node_row(*n, r));
+        }
+    }
+    t.row(
+        std::iter::once("total".to_string())
+            .chain(c.total_reaction.iter().map(|v| num(*v, DIGITS)))
+            .collect(),
+    );
     md += &t.render();
     md += "\n";
     for w in &c.warnings {
