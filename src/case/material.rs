@@ -167,12 +167,21 @@ pub fn modulus_warning(at: &str, m: &Material) -> Option<String> {
     } else {
         String::new()
     };
+    let stand_in = if e > hi {
+        "; a stand-in for a rigid part is exact as a `rigid` element"
+    } else {
+        ""
+    };
     Some(format!(
-        "{at}.E = {} MPa is outside the plausible range {} … {:e} MPa of structural solids (nylon 2800, aluminium 72000, steel 210000 MPa){hint}; displacements and rotations under given forces scale as 1/E (an elastomer softer than {} MPa is possible: then ignore this)",
+        "{at}.E = {} MPa is outside the plausible range {} … {:e} MPa of structural solids (nylon 2800, aluminium 72000, steel 210000 MPa){hint}; displacements and rotations under given forces scale as 1/E{}",
         plain(e),
         plain(lo),
         hi,
-        plain(lo)
+        if e < lo {
+            format!(" (an elastomer softer than {} MPa is possible: then ignore this)", plain(lo))
+        } else {
+            stand_in.to_string()
+        }
     ))
 }
 
