@@ -43,10 +43,14 @@ fn hinge_case(t: f64, m: f64, materials: Value, beam: Option<(&str, [f64; 6])>) 
     });
     match beam {
         Some((mat, tip)) => {
-            case["elements"].as_array_mut().unwrap().push(
-                json!({"type": "beam", "nodes": [1, 2], "section": "bar", "material": mat, "up": [0, 0, 1]}),
-            );
-            case["load_cases"][0]["forces"].as_array_mut().unwrap().push(json!({"node": 2, "F": tip}));
+            case["elements"]
+                .as_array_mut()
+                .unwrap()
+                .push(json!({"type": "beam", "nodes": [1, 2], "section": "bar", "material": mat, "up": [0, 0, 1]}));
+            case["load_cases"][0]["forces"]
+                .as_array_mut()
+                .unwrap()
+                .push(json!({"node": 2, "F": tip}));
         }
         None => {
             case["nodes"].as_array_mut().unwrap().pop();
@@ -71,7 +75,10 @@ fn lone_hinge_headline_is_its_peak_stress() {
     assert_eq!(u["element"], json!(0), "{u}");
     assert_eq!(u["kind"], json!("hinge"), "{u}");
     assert!((f(&u["value"]) - peak / AL_ALLOWABLE).abs() <= 1e-12, "{u}");
-    assert!((f(&u["value"]) - f(&c["hinges"][0]["utilisation"])).abs() <= 1e-12, "{u}");
+    assert!(
+        (f(&u["value"]) - f(&c["hinges"][0]["utilisation"])).abs() <= 1e-12,
+        "{u}"
+    );
     assert!((f(&u["value"]) / 4.607 - 1.0).abs() < 1e-3, "{u}");
     assert_eq!(f(&u["allowable"]), AL_ALLOWABLE);
 }
@@ -86,7 +93,12 @@ fn headline_covers_beams_and_utilisation_needs_an_allowable() {
     let both = json!({"al": "Al7075", "free": soft});
     // 20 N across a 2×2 mm bar 40 mm long; the hinge (t = 2) carries 20 N · 80 mm = 1600 N·mm
     // (308.5 MPa per 2000 N·mm).
-    let r = run_json(hinge_case(2.0, 0.0, both.clone(), Some(("free", [0.0, 0.0, -20.0, 0.0, 0.0, 0.0]))));
+    let r = run_json(hinge_case(
+        2.0,
+        0.0,
+        both.clone(),
+        Some(("free", [0.0, 0.0, -20.0, 0.0, 0.0, 0.0])),
+    ));
     let c = &r["load_cases"][0];
     let beam = f(&c["element_von_mises"][1]);
     // Bending at the beam's root: M = 20 N · 40 mm, σ = 6M/(b h²) = 600 MPa (von Mises with
@@ -102,9 +114,18 @@ fn headline_covers_beams_and_utilisation_needs_an_allowable() {
     assert!((f(&u["value"]) - hinge / AL_ALLOWABLE).abs() <= 1e-12, "{u}");
 
     // The beam in Al7075 too: its 600 MPa is the utilisation (1.5).
-    let r = run_json(hinge_case(2.0, 0.0, json!({"al": "Al7075"}), Some(("al", [0.0, 0.0, -20.0, 0.0, 0.0, 0.0]))));
+    let r = run_json(hinge_case(
+        2.0,
+        0.0,
+        json!({"al": "Al7075"}),
+        Some(("al", [0.0, 0.0, -20.0, 0.0, 0.0, 0.0])),
+    ));
     let u = &r["load_cases"][0]["max_utilisation"];
-    assert_eq!((u["kind"].as_str(), u["element"].as_u64()), (Some("beam"), Some(1)), "{u}");
+    assert_eq!(
+        (u["kind"].as_str(), u["element"].as_u64()),
+        (Some("beam"), Some(1)),
+        "{u}"
+    );
     assert!((f(&u["value"]) - beam / AL_ALLOWABLE).abs() <= 1e-9, "{u}");
 
     // No material with an allowable: no utilisation.

@@ -36,7 +36,10 @@ fn row<'a>(md: &'a str, from: usize, first: &str) -> Vec<&'a str> {
 /// `cell` is `want` to five significant digits (relative to `scale`, the row's largest entry).
 fn close(cell: &str, want: f64, scale: f64) {
     let got: f64 = cell.parse().unwrap_or_else(|_| panic!("not a number: {cell}"));
-    assert!((got - want).abs() <= 5e-5 * want.abs().max(scale) + 1e-300, "{cell} vs {want}");
+    assert!(
+        (got - want).abs() <= 5e-5 * want.abs().max(scale) + 1e-300,
+        "{cell} vs {want}"
+    );
 }
 
 /// Numbers in table cells are plain or `d.dddde±XX`: no Rust exponent (`e-3`, `e0`) and no
@@ -76,7 +79,11 @@ fn mechanism_report_opens_with_the_summary() {
     assert!(summary < hinges && hinges < nodes, "{heads:?}");
     // The node table is the last section of the static report (materials and warnings follow).
     assert!(
-        heads.iter().skip_while(|h| **h != "## Node displacements").skip(1).all(|h| *h == "## Warnings"),
+        heads
+            .iter()
+            .skip_while(|h| **h != "## Node displacements")
+            .skip(1)
+            .all(|h| *h == "## Warnings"),
         "{heads:?}"
     );
     for c in cases {
@@ -85,23 +92,50 @@ fn mechanism_report_opens_with_the_summary() {
         assert!(at < hinges, "{name}: summary after the hinge table");
         let vm = c["max_von_mises"].as_f64().unwrap();
         let el = &c["max_von_mises_at"];
-        let line = md[at..].lines().find(|l| l.starts_with("- Maximum von Mises stress")).unwrap();
+        let line = md[at..]
+            .lines()
+            .find(|l| l.starts_with("- Maximum von Mises stress"))
+            .unwrap();
         let expect_tail = format!(" MPa at element {} ({}).", el["element"], el["kind"].as_str().unwrap());
         assert!(line.ends_with(&expect_tail), "{line}");
-        let value = line.trim_start_matches("- Maximum von Mises stress: ").split(' ').next().unwrap();
+        let value = line
+            .trim_start_matches("- Maximum von Mises stress: ")
+            .split(' ')
+            .next()
+            .unwrap();
         close(value, vm, 0.0);
         let u = &c["max_utilisation"];
-        let line = md[at..].lines().find(|l| l.starts_with("- Maximum utilisation")).unwrap();
-        assert!(line.contains(&format!("at element {} ({};", u["element"], u["kind"].as_str().unwrap())), "{line}");
+        let line = md[at..]
+            .lines()
+            .find(|l| l.starts_with("- Maximum utilisation"))
+            .unwrap();
+        assert!(
+            line.contains(&format!(
+                "at element {} ({};",
+                u["element"],
+                u["kind"].as_str().unwrap()
+            )),
+            "{line}"
+        );
         // The loaded (or prescribed) node 8 and the total reaction.
-        let d: Vec<f64> = c["displacements"][8].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
+        let d: Vec<f64> = c["displacements"][8]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_f64().unwrap())
+            .collect();
         let cells = row(md, at, "8");
         assert_eq!(cells.len(), 7);
         let scale = d.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         for (k, want) in d.iter().enumerate() {
             close(cells[k + 1], *want, scale);
         }
-        let total: Vec<f64> = c["total_reaction"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
+        let total: Vec<f64> = c["total_reaction"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_f64().unwrap())
+            .collect();
         let cells = row(md, at, "total");
         assert_eq!(cells.len(), 7);
         for (k, want) in total.iter().enumerate() {
@@ -109,13 +143,22 @@ fn mechanism_report_opens_with_the_summary() {
         }
     }
     // Push 1 N along x: the total reaction is −1 N along x, written −1.0000.
-    assert_eq!(row(md, md.find("### Load case `push_x_1N`").unwrap(), "total")[1], "-1.0000");
+    assert_eq!(
+        row(md, md.find("### Load case `push_x_1N`").unwrap(), "total")[1],
+        "-1.0000"
+    );
     // Headers carry units.
-    for h in ["| node | ux (mm) | uy (mm) | uz (mm) | rx (°) | ry (°) | rz (°) |", "| node | Fx (N) | Fy (N) | Fz (N) | Mx (N·mm) | My (N·mm) | Mz (N·mm) |"] {
+    for h in [
+        "| node | ux (mm) | uy (mm) | uz (mm) | rx (°) | ry (°) | rz (°) |",
+        "| node | Fx (N) | Fy (N) | Fz (N) | Mx (N·mm) | My (N·mm) | Mz (N·mm) |",
+    ] {
         assert!(md.contains(h), "{h}");
     }
     assert!(md.contains("| element | rotation (°) | peak von Mises (MPa) | utilisation (–) |"));
-    assert!(!md.contains("0.000000e0") && !md.contains("e-3 "), "Rust exponent format left");
+    assert!(
+        !md.contains("0.000000e0") && !md.contains("e-3 "),
+        "Rust exponent format left"
+    );
     conventional(md);
 }
 
@@ -136,10 +179,15 @@ fn load_case_warnings_are_in_the_summary() {
     assert_eq!(out.warnings.len(), 2, "{:?}", out.warnings);
     let hinges = md.find("Hinge elements").unwrap();
     for w in &out.warnings {
-        let at = md.find(&format!("> **Warning**: {w}")).unwrap_or_else(|| panic!("no callout: {w}"));
+        let at = md
+            .find(&format!("> **Warning**: {w}"))
+            .unwrap_or_else(|| panic!("no callout: {w}"));
         assert!(at < hinges, "{w}");
     }
-    assert!(md.contains("- Maximum von Mises stress: 1842.7 MPa at element 0 (hinge)."), "{md}");
+    assert!(
+        md.contains("- Maximum von Mises stress: 1842.7 MPa at element 0 (hinge)."),
+        "{md}"
+    );
     assert!(md.contains("4.607 at element 0 (hinge; 1842.7 MPa against 400.00 MPa), **above the allowable stress**."));
     conventional(md);
 }

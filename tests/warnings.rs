@@ -50,11 +50,20 @@ fn warnings(v: &serde_json::Value) -> Vec<String> {
 const KNOWN: [(&str, &[&str]); 4] = [
     (
         "leaf_guide_track.json",
-        &["(\"stroke_plus\"): element 0 (beam) is above its allowable", "(\"stroke_minus\"): element 10 (beam) is above its allowable"],
+        &[
+            "(\"stroke_plus\"): element 0 (beam) is above its allowable",
+            "(\"stroke_minus\"): element 10 (beam) is above its allowable",
+        ],
     ),
     ("pantilt_8r.json", &["element 4 (hinge) is above its allowable stress"]),
-    ("pendulum_nonlinear_transient.json", &["materials.light_steel.density = 7.85e-13"]),
-    ("prs_stiffness_han_fsw_frame.json", &["materials.platform.E = 2.1e10 MPa"]),
+    (
+        "pendulum_nonlinear_transient.json",
+        &["materials.light_steel.density = 7.85e-13"],
+    ),
+    (
+        "prs_stiffness_han_fsw_frame.json",
+        &["materials.platform.E = 2.1e10 MPa"],
+    ),
 ];
 
 /// Every bundled case that `run` accepts has `warnings`: empty (the bundled hinges are all

@@ -257,12 +257,14 @@ impl Analysis for Static {
         for (ic, row) in r.load_cases.iter_mut().enumerate() {
             let w = if case.nonlinear {
                 let stretch = warn::stretch_warning(&model, ic, row);
-                stretch.into_iter().chain(fem_static::stability_text(
-                    &row.name,
-                    row.stable,
-                    row.critical_load_factor,
-                ))
-                .collect()
+                stretch
+                    .into_iter()
+                    .chain(fem_static::stability_text(
+                        &row.name,
+                        row.stable,
+                        row.critical_load_factor,
+                    ))
+                    .collect()
             } else {
                 Vec::from_iter(warn::linear_range_warning(&model, ic, row))
             };

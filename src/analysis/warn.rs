@@ -123,11 +123,26 @@ pub fn allowable_warning(ic: usize, name: &str, over: &[Utilisation]) -> Option<
         let list: Vec<String> = rest
             .iter()
             .take(LISTED)
-            .map(|u| format!("{} ({}, {})", u.element, u.kind, crate::report::markdown::sig(u.value, 3)))
+            .map(|u| {
+                format!(
+                    "{} ({}, {})",
+                    u.element,
+                    u.kind,
+                    crate::report::markdown::sig(u.value, 3)
+                )
+            })
             .collect();
         let more = rest.len().saturating_sub(LISTED);
-        let more = if more > 0 { format!(" and {more} more") } else { String::new() };
-        format!("; also above it: element{} {}{more}", if rest.len() > 1 { "s" } else { "" }, list.join(", "))
+        let more = if more > 0 {
+            format!(" and {more} more")
+        } else {
+            String::new()
+        };
+        format!(
+            "; also above it: element{} {}{more}",
+            if rest.len() > 1 { "s" } else { "" },
+            list.join(", ")
+        )
     };
     Some(format!(
         "load_cases[{ic}] (\"{name}\"): element {} ({}) is above its allowable stress: von Mises {} MPa against {} MPa, utilisation {}{others}",

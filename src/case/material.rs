@@ -161,7 +161,10 @@ pub fn modulus_warning(at: &str, m: &Material) -> Option<String> {
     let hint = if (0.1..lo).contains(&e) {
         format!(" — it looks like GPa: in MPa it is {} (GPa × 1000), and as given the displacements come out 1000× too large", plain(e * 1e3))
     } else if (1e8..=1.2e12).contains(&e) {
-        format!(" — it looks like Pa: in MPa it is {} (Pa × 1e-6), and as given the displacements come out 10⁶× too small", plain(e * 1e-6))
+        format!(
+            " — it looks like Pa: in MPa it is {} (Pa × 1e-6), and as given the displacements come out 10⁶× too small",
+            plain(e * 1e-6)
+        )
     } else if (1.45e6..1e8).contains(&e) {
         format!(" — it looks like psi: in MPa it is {} (psi × 6.894757e-3), and as given the displacements come out 145× too small", plain(e * 6.894757e-3))
     } else {
@@ -188,7 +191,10 @@ pub fn modulus_warning(at: &str, m: &Material) -> Option<String> {
 /// The unit-slip warnings of a material (Young's modulus, density) at `at` (e.g. `material`,
 /// `materials.steel`): one place for every analysis kind that takes a material.
 pub fn plausibility_warnings(at: &str, m: &Material) -> Vec<String> {
-    modulus_warning(at, m).into_iter().chain(density_warning(at, m)).collect()
+    modulus_warning(at, m)
+        .into_iter()
+        .chain(density_warning(at, m))
+        .collect()
 }
 
 /// A number as typed: plain below 1e7, else in exponent notation.

@@ -13,8 +13,8 @@ mod summary;
 pub use headline::add_headlines;
 pub use report::{file_stem, report, von_mises_of, vtu, vtu_files};
 pub use rows::{
-    BeamForcesRow, HingeRow, ShellForcesRow, ShellStressRow, ShellVonMises, StaticCaseRow, StaticResult, StressAt, Units,
-    Utilisation,
+    BeamForcesRow, HingeRow, ShellForcesRow, ShellStressRow, ShellVonMises, StaticCaseRow, StaticResult, StressAt,
+    Units, Utilisation,
 };
 
 /// Solves every load case of the model.

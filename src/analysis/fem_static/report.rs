@@ -21,7 +21,10 @@ pub fn report(r: &StaticResult) -> Report {
     md += &summary::section(r);
     for c in &r.load_cases {
         let details = hinge_table(c)
-            + &c.track.as_ref().map(crate::analysis::track::markdown).unwrap_or_default()
+            + &c.track
+                .as_ref()
+                .map(crate::analysis::track::markdown)
+                .unwrap_or_default()
             + &crate::analysis::path_rows::markdown(&c.name, &c.critical_points, c.trace.as_ref());
         if !details.is_empty() {
             md += &format!("## Load case `{}`\n\n{details}", c.name);
@@ -73,7 +76,10 @@ fn compliance_section(rows: &[ComplianceRow]) -> String {
             num(c.rotational_eigen[1], DIGITS)
         );
         let mut t = Table::new(&["", "Fx (N)", "Fy (N)", "Fz (N)", "Mx (N·mm)", "My (N·mm)", "Mz (N·mm)"]);
-        for (i, name) in ["ux (mm)", "uy (mm)", "uz (mm)", "rx (rad)", "ry (rad)", "rz (rad)"].iter().enumerate() {
+        for (i, name) in ["ux (mm)", "uy (mm)", "uz (mm)", "rx (rad)", "ry (rad)", "rz (rad)"]
+            .iter()
+            .enumerate()
+        {
             let mut row = vec![name.to_string()];
             row.extend(c.matrix[i].iter().map(|v| num(*v, DIGITS)));
             t.row(row);

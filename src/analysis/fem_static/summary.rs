@@ -49,9 +49,15 @@ fn load_case(c: &StaticCaseRow) -> String {
             u.kind,
             num(u.von_mises, DIGITS),
             num(u.allowable, DIGITS),
-            if u.value > 1.0 { ", **above the allowable stress**" } else { "" }
+            if u.value > 1.0 {
+                ", **above the allowable stress**"
+            } else {
+                ""
+            }
         ),
-        None => "- Maximum utilisation: not defined (no stressed element's material has an allowable stress).\n".to_string(),
+        None => {
+            "- Maximum utilisation: not defined (no stressed element's material has an allowable stress).\n".to_string()
+        }
     };
     md += "\n";
     md += &super::report::principal_extremes(c);
@@ -77,7 +83,15 @@ fn load_case(c: &StaticCaseRow) -> String {
     // The prescribed nodes carry the force that imposes their motion: listed before the total
     // (supports, ground springs and prescribed DOFs, which balances the applied loads).
     md += "Reactions (the prescribed nodes', and the total of supports, ground springs and prescribed DOFs about the global origin):\n\n";
-    let mut t = Table::new(&["node", "Fx (N)", "Fy (N)", "Fz (N)", "Mx (N·mm)", "My (N·mm)", "Mz (N·mm)"]);
+    let mut t = Table::new(&[
+        "node",
+        "Fx (N)",
+        "Fy (N)",
+        "Fz (N)",
+        "Mx (N·mm)",
+        "My (N·mm)",
+        "Mz (N·mm)",
+    ]);
     for (n, r) in c.reaction_nodes.iter().zip(&c.reactions) {
         if c.loaded_nodes.binary_search(n).is_ok() {
             t.row(node_row(*n, r));
