@@ -150,3 +150,39 @@ fn implausible_modulus_is_warned_in_every_kind_with_a_material() {
     let w = warnings(&run(m));
     assert_eq!(with(&w, "materials.al.E = 7.2e10 MPa").len(), 1, "{w:?}");
 }
+
+/// `stage`: a load case above the allowable is named with the hinge that carries it and its
+/// utilisation; the cases within it are not. Source: stage linear statics scale with the
+/// forces, so the utilisation of the 60 N case of `cases/ruiz2019_stage.json` is the stage's
+/// own σ_max / 400 MPa (Al7075 built-in allowable) = 1/factor_at_allowable, and the 20 N and
+/// 40 N cases are at a third and two thirds of it (0.45, 0.89). Regression: the stage ran at
+/// utilisation 1.33 with `warnings: []`.
+#[test]
+fn stage_above_allowable_is_named_with_its_hinge() {
+    let text = std::fs::read_to_string("cases/ruiz2019_stage.json").unwrap();
+    let out = run(serde_json::from_str(&text).unwrap());
+    let w = warnings(&out);
+    let over = with(&w, "above the allowable stress");
+    assert_eq!(over.len(), 1, "{w:?}");
+    let cases = out.json["load_cases"].as_array().unwrap();
+    assert_eq!(cases.len(), 3);
+    let f60 = &cases[2];
+    let smax = f60["max_von_mises"].as_f64().unwrap();
+    let utilisation = smax / 400.0;
+    assert!((utilisation - 1.335).abs() < 0.002, "utilisation {utilisation}");
+    assert!(
+        (utilisation * f60["factor_at_allowable"].as_f64().unwrap() - 1.0).abs() < 1e-12,
+        "factor_at_allowable"
+    );
+    let w60 = over[0];
+    assert!(
+        w60.starts_with("load_cases[2] (\"F60\"): the revolute hinge of leg"),
+        "{w60}"
+    );
+    assert!(w60.contains(&format!("utilisation {utilisation:.3}")), "{w60}");
+    assert!(w60.contains("against 400.00 MPa"), "{w60}");
+    for (i, k) in [(0, 1.0 / 3.0), (1, 2.0 / 3.0)] {
+        let u = cases[i]["max_von_mises"].as_f64().unwrap() / 400.0;
+        assert!((u - utilisation * k).abs() < 1e-9 * utilisation, "case {i}: {u}");
+    }
+}

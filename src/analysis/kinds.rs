@@ -106,7 +106,14 @@ impl Analysis for Stage {
         stage_report::stage_report(r)
     }
     fn result_warnings(_case: &Self::Case, r: &Self::Result) -> Vec<String> {
-        r.calibration_warnings.clone()
+        let mut w = r.calibration_warnings.clone();
+        w.extend(
+            r.load_cases
+                .iter()
+                .enumerate()
+                .filter_map(|(ic, c)| warn::stage_allowable_warning(ic, c)),
+        );
+        w
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         one_material(&case.material)
