@@ -80,6 +80,12 @@ case_struct! {
         /// n}]}`.
         #[serde(default)]
         pub track: Option<super::mesh::TrackRequest>,
+        /// Named scalar results, listed in the result's `metrics` as `{"NAME": value}`:
+        /// `[{"name", "kind": "stiffness" | "compliance" | "displacement" | "hinge_rotation" |
+        /// "max_utilisation", "node", "dof", "load_case", "element"}]` (each kind takes the fields
+        /// its documentation names).
+        #[serde(default)]
+        pub metrics: Vec<super::mesh::MetricRequest>,
     }
 }
 
@@ -142,6 +148,8 @@ struct StaticOptions {
     compliance: Vec<super::mesh::ComplianceRequest>,
     #[serde(default)]
     track: Option<super::mesh::TrackRequest>,
+    #[serde(default)]
+    metrics: Vec<super::mesh::MetricRequest>,
 }
 
 /// The options of a `modal` (or `buckling`) case besides its model, as in the case file (each
@@ -170,7 +178,7 @@ pub const MODEL_FIELDS: [&str; 8] = [
     "ordering",
 ];
 
-const STATIC_OWN: [&str; 9] = [
+const STATIC_OWN: [&str; 10] = [
     "analysis",
     "description",
     "mesh",
@@ -180,6 +188,7 @@ const STATIC_OWN: [&str; 9] = [
     "output",
     "compliance",
     "track",
+    "metrics",
 ];
 const MODAL_OWN: [&str; 6] = ["analysis", "mesh", "gmsh", "modes", "shift_hz", "shapes"];
 
@@ -208,6 +217,7 @@ pub fn parse_static(value: Value, base: Option<&Path>) -> Result<StaticCase, Cas
     let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
     super::mesh::requests::check_compliance(&o.compliance, model.nodes.len())?;
     super::mesh::requests::check_track(o.track.as_ref(), nonlinear, model.nodes.len())?;
+    super::mesh::metrics::check_metrics(&o.metrics, &model)?;
     for (i, c) in model.load_cases.iter().enumerate() {
         super::mesh::path_control::check(&format!("load_cases[{i}]"), c, nonlinear, model.nodes.len())?;
     }
@@ -221,6 +231,7 @@ pub fn parse_static(value: Value, base: Option<&Path>) -> Result<StaticCase, Cas
         output: o.output,
         compliance: o.compliance,
         track: o.track,
+        metrics: o.metrics,
     })
 }
 

@@ -6,6 +6,7 @@ use crate::fem::{self, Model};
 pub use super::compliance::{compliance_row, ComplianceRow};
 
 mod headline;
+pub mod metrics;
 mod report;
 mod rows;
 mod summary;
@@ -57,6 +58,7 @@ pub fn solve_with(
             },
             model: notes,
             compliance: Vec::new(),
+            metrics: Default::default(),
         },
         res,
     ))
@@ -133,6 +135,7 @@ pub fn solve_nonlinear_each(
             "stresses from the section forces in the deformed element frames".to_string(),
         ],
         compliance: Vec::new(),
+        metrics: Default::default(),
     };
     Ok((result, raw, paths))
 }

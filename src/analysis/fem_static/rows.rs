@@ -208,6 +208,10 @@ pub struct StaticResult {
     /// (DOFs prescribed in load cases are free here); omitted when none was asked.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub compliance: Vec<ComplianceRow>,
+    /// The named values the case asked for (`"metrics"`), `{"NAME": value}` in the case's order;
+    /// omitted when none was asked.
+    #[serde(skip_serializing_if = "super::metrics::Metrics::is_empty")]
+    pub metrics: super::metrics::Metrics,
 }
 
 /// Units of the `static` result.
