@@ -153,3 +153,60 @@ fn bad_metric_requests_name_their_path() {
         assert!(e.contains(path) && e.contains(why), "{e}");
     }
 }
+
+/// The parallelogram guide, linear: the stroke at the allowable is the hand value allowable /
+/// (σ per mm of stroke) from its own 1 mm load case, with the load scaled the same way and the
+/// limiting hinge named; driven by the 1 N force instead, the same stroke and load (linear
+/// statics: prescribing ux alone, the other DOFs free, is the same as applying its reaction).
+#[test]
+fn parallelogram_stroke_at_allowable_is_the_linear_hand_value() {
+    let mut case: Value =
+        serde_json::from_str(&std::fs::read_to_string("cases/parallelogram_guide.json").unwrap()).unwrap();
+    case["mesh"] = json!("meshes/parallelogram_notch.json");
+    case["metrics"] = json!([
+        {"name": "stroke", "kind": "stroke_at_allowable", "node": 8, "dof": "ux", "load_case": "stroke_1mm"},
+        {"name": "pushed", "kind": "stroke_at_allowable", "node": 8, "dof": "ux", "load_case": "push_x_1N"}
+    ]);
+    let out = run(case.clone());
+    let lc = &out["load_cases"][1];
+    let u = &lc["max_utilisation"];
+    let sigma_per_mm = u["von_mises"].as_f64().unwrap() / 1.0;
+    let hand = u["allowable"].as_f64().unwrap() / sigma_per_mm;
+    let s = &out["metrics"]["stroke"];
+    let stroke = s["stroke"].as_f64().unwrap();
+    assert!(
+        (stroke / hand - 1.0).abs() < 1e-9,
+        "stroke {stroke} mm vs hand {hand} mm"
+    );
+    assert!((2.5..3.0).contains(&stroke), "{stroke}");
+    assert_eq!(s["linear_estimate"], s["stroke"]);
+    assert_eq!(s["element"], u["element"]);
+    let reaction = lc["reactions"][2][0].as_f64().unwrap();
+    assert_eq!(lc["reaction_nodes"][2], 8);
+    assert!(
+        (s["load"].as_f64().unwrap() / (reaction * hand) - 1.0).abs() < 1e-9,
+        "{s}"
+    );
+    let p = &out["metrics"]["pushed"];
+    assert!(
+        (p["stroke"].as_f64().unwrap() / stroke - 1.0).abs() < 1e-9,
+        "{p} vs {s}"
+    );
+    assert!(
+        (p["load"].as_f64().unwrap() / s["load"].as_f64().unwrap() - 1.0).abs() < 1e-9,
+        "{p} vs {s}"
+    );
+
+    // Nonlinear runs are refused with the path until the nonlinear stop is available.
+    case["nonlinear"] = json!(true);
+    let e = refused(case);
+    assert!(e.contains("metrics[0].kind") && e.contains("linear runs only"), "{e}");
+    // A load case that does not drive the node along the DOF is refused.
+    let e = refused(cantilever(json!([
+        {"name": "s", "kind": "stroke_at_allowable", "node": 1, "dof": "ux", "load_case": "tip"}
+    ])));
+    assert!(
+        e.contains("metrics[0].load_case") && e.contains("must prescribe a non-zero ux of node 1"),
+        "{e}"
+    );
+}

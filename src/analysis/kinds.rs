@@ -252,7 +252,7 @@ impl Analysis for Static {
             fem_static::add_beam_forces(&mut r, &model, &raw);
         }
         r.compliance = fem_static::node_compliances(&model, &case.compliance)?;
-        r.metrics = fem_static::metrics::evaluate(&model, &case.metrics, &r)?;
+        r.metrics = fem_static::metrics::evaluate(&model, &case.model, &case.metrics, &r)?;
         if ctx.with_files {
             ctx.files = fem_static::vtu_files(&model, &raw)?;
             let tracked = r

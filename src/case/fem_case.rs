@@ -217,7 +217,7 @@ pub fn parse_static(value: Value, base: Option<&Path>) -> Result<StaticCase, Cas
     let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
     super::mesh::requests::check_compliance(&o.compliance, model.nodes.len())?;
     super::mesh::requests::check_track(o.track.as_ref(), nonlinear, model.nodes.len())?;
-    super::mesh::metrics::check_metrics(&o.metrics, &model)?;
+    super::mesh::metrics::check_metrics(&o.metrics, &model, nonlinear)?;
     for (i, c) in model.load_cases.iter().enumerate() {
         super::mesh::path_control::check(&format!("load_cases[{i}]"), c, nonlinear, model.nodes.len())?;
     }

@@ -22,6 +22,10 @@ pub enum MetricKind {
     HingeRotation,
     /// The largest von Mises / allowable over the stressed elements in `load_case`.
     MaxUtilisation,
+    /// Linear runs: the displacement of `node` along `dof` at which the load case, scaled,
+    /// brings the largest utilisation to 1; `load_case` prescribes that DOF (global axes) or
+    /// applies a force along it at the node (no `frame`/`axis`).
+    StrokeAtAllowable,
 }
 
 /// One entry of `"metrics"`.
@@ -55,6 +59,7 @@ impl MetricKind {
             MetricKind::Displacement => "displacement",
             MetricKind::HingeRotation => "hinge_rotation",
             MetricKind::MaxUtilisation => "max_utilisation",
+            MetricKind::StrokeAtAllowable => "stroke_at_allowable",
         }
     }
 
@@ -62,7 +67,7 @@ impl MetricKind {
     fn fields(self) -> [bool; 4] {
         match self {
             MetricKind::Stiffness | MetricKind::Compliance => [true, true, false, false],
-            MetricKind::Displacement => [true, true, true, false],
+            MetricKind::Displacement | MetricKind::StrokeAtAllowable => [true, true, true, false],
             MetricKind::HingeRotation => [false, false, true, true],
             MetricKind::MaxUtilisation => [false, false, true, false],
         }
@@ -78,7 +83,7 @@ impl MetricRequest {
 
 /// Validates `"metrics"` against the model (paths `metrics[i].…`): unique non-empty names, the
 /// fields each kind needs (and no others), nodes, DOFs, load cases and hinge elements that exist.
-pub fn check_metrics(reqs: &[MetricRequest], model: &MeshSpec) -> Result<(), CaseError> {
+pub fn check_metrics(reqs: &[MetricRequest], model: &MeshSpec, nonlinear: bool) -> Result<(), CaseError> {
     for (i, m) in reqs.iter().enumerate() {
         let at = |f: &str| format!("metrics[{i}].{f}");
         if m.name.is_empty() {
@@ -127,6 +132,9 @@ pub fn check_metrics(reqs: &[MetricRequest], model: &MeshSpec) -> Result<(), Cas
                 return Err(CaseError::value(at("load_case"), format!("\"{lc}\""), rule));
             }
         }
+        if m.kind == MetricKind::StrokeAtAllowable {
+            check_stroke(m, model, nonlinear).map_err(|e| e.under(&format!("metrics[{i}]")))?;
+        }
         if let Some(e) = m.element {
             if !matches!(model.elements.get(e), Some(ElementSpec::Hinge { .. })) {
                 return Err(CaseError::value(
@@ -138,4 +146,37 @@ pub fn check_metrics(reqs: &[MetricRequest], model: &MeshSpec) -> Result<(), Cas
         }
     }
     Ok(())
+}
+
+/// A `stroke_at_allowable` request: a linear run, and a load case that drives `node` along `dof`
+/// (a prescribed displacement or a force component, both in global axes).
+fn check_stroke(m: &MetricRequest, model: &MeshSpec, nonlinear: bool) -> Result<(), CaseError> {
+    if nonlinear {
+        return Err(CaseError::new(
+            "kind",
+            "\"stroke_at_allowable\" is evaluated in linear runs only (the stop at utilisation 1 along a nonlinear path is not available): remove \"nonlinear\": true",
+        ));
+    }
+    let (Some(node), Some(dof), Some(name)) = (m.node, m.dof(), m.load_case.as_deref()) else {
+        return Ok(());
+    };
+    let Some(lc) = model.load_cases.iter().find(|c| c.name == name) else {
+        return Ok(());
+    };
+    let prescribed = lc
+        .displacements
+        .iter()
+        .any(|d| d.node == node && d.dof.dof() == dof && d.frame.is_none() && d.axis.is_none() && d.value != 0.0);
+    let forced = lc
+        .forces
+        .iter()
+        .any(|f| f.node == node && f.frame.is_none() && f.axis.is_none() && f.f[dof.index()] != 0.0);
+    if prescribed || forced {
+        return Ok(());
+    }
+    Err(CaseError::value(
+        "load_case",
+        format!("\"{name}\""),
+        format!("must prescribe a non-zero {dof} of node {node} or apply a force (moment) along it there, in global axes (no frame or axis)"),
+    ))
 }
