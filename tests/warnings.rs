@@ -43,8 +43,39 @@ fn warnings(v: &serde_json::Value) -> Vec<String> {
         .collect()
 }
 
-/// Every bundled case that `run` accepts has `warnings` (empty: the bundled hinges are all
-/// inside their calibration).
+/// Bundled cases whose warnings are true statements about them, with one phrase each warning
+/// must contain (in order): stresses above the allowable of two mechanisms driven to their
+/// stroke and of the stage's 60 N case (utilisation 1.34 linear, 1.38 nonlinear), and two deliberate stand-ins (a pendulum bar of 1e-4 steel's density so its tip
+/// mass dominates, a 1e5× stiff platform standing in for a rigid one).
+const KNOWN: [(&str, &[&str]); 6] = [
+    (
+        "leaf_guide_track.json",
+        &[
+            "(\"stroke_plus\"): element 0 (beam) is above its allowable",
+            "(\"stroke_minus\"): element 10 (beam) is above its allowable",
+        ],
+    ),
+    ("pantilt_8r.json", &["element 4 (hinge) is above its allowable stress"]),
+    (
+        "ruiz2019_stage.json",
+        &["load_cases[2] (\"F60\"): the revolute hinge of leg 2 is above the allowable stress"],
+    ),
+    (
+        "ruiz2019_stage_nonlinear.json",
+        &["load_cases[2] (\"F60\"): the revolute hinge of leg 3 is above the allowable stress"],
+    ),
+    (
+        "pendulum_nonlinear_transient.json",
+        &["materials.light_steel.density = 7.85e-13"],
+    ),
+    (
+        "prs_stiffness_han_fsw_frame.json",
+        &["materials.platform.E = 2.1e10 MPa"],
+    ),
+];
+
+/// Every bundled case that `run` accepts has `warnings`: empty (the bundled hinges are all
+/// inside their calibration) but for the [`KNOWN`] ones.
 #[test]
 fn every_bundled_result_has_an_empty_warnings_list() {
     let mut n = 0;
@@ -60,6 +91,15 @@ fn every_bundled_result_has_an_empty_warnings_list() {
         if p.ends_with("shallow_arch_arc_length.json") {
             let w = warnings(&out.json);
             assert!(w.len() == 1 && w[0].contains("lost stability"), "{w:?}");
+            n += 1;
+            continue;
+        }
+        if let Some((_, phrases)) = KNOWN.iter().find(|(f, _)| p.ends_with(f)) {
+            let w = warnings(&out.json);
+            assert_eq!(w.len(), phrases.len(), "{}: {w:?}", p.display());
+            for (w, phrase) in w.iter().zip(phrases.iter()) {
+                assert!(w.contains(phrase), "{}: {w}", p.display());
+            }
             n += 1;
             continue;
         }
@@ -163,13 +203,14 @@ fn sensitivity_and_design_warn_about_their_hinges() {
 
 /// Geometrically nonlinear statics within small strains (a cantilever under a tip force
 /// bending it by ~20°): no warning; pulled to 2 % axial strain: one warning naming the load
-/// case and the element.
+/// case and the element. (Al7075's properties without its allowable stress: at these loads the
+/// bars are far above it, which is warned about separately.)
 #[test]
 fn nonlinear_static_warns_beyond_small_strain() {
     let case = |fx: f64, fz: f64| {
         format!(
             r#"{{"analysis": "static", "nonlinear": true, "steps": 10,
-  "materials": {{"al": "Al7075"}},
+  "materials": {{"al": {{"E": 72000, "nu": 0.33, "density": 2.81e-9}}}},
   "sections": {{"leg": {{"shape": "rect", "w": 10, "h": 10}}}},
   "nodes": [[0, 0, 0], [50, 0, 0], [100, 0, 0]],
   "elements": [

@@ -128,7 +128,7 @@ pub struct Typed<R> {
     pub result: R,
     /// Markdown and CSV views.
     pub report: Report,
-    /// Run, case and result warnings, in that order.
+    /// Run, case, material and result warnings, in that order.
     pub warnings: Vec<String>,
     /// Extra output files.
     pub files: Files,
@@ -139,6 +139,7 @@ pub fn run_typed<A: Analysis>(case: &A::Case, ctx: &mut Ctx) -> Result<Typed<A::
     let result = A::run(case, ctx)?;
     let mut warnings = std::mem::take(&mut ctx.warnings);
     warnings.extend(A::case_warnings(case));
+    warnings.extend(material_warnings::<A>(case));
     warnings.extend(A::result_warnings(case, &result));
     Ok(Typed {
         report: if ctx.with_report {
@@ -150,6 +151,29 @@ pub fn run_typed<A: Analysis>(case: &A::Case, ctx: &mut Ctx) -> Result<Typed<A::
         files: std::mem::take(&mut ctx.files),
         result,
     })
+}
+
+/// The unit-slip warnings (Young's modulus, density; [`crate::case::material::plausibility_warnings`])
+/// of the materials a case of kind `A` uses: the one check of every kind that takes a material.
+fn material_warnings<A: Analysis>(case: &A::Case) -> Vec<String> {
+    use crate::case::material::plausibility_warnings;
+    match A::material_of(case) {
+        // Built-in materials are plausible; resolving the name would cost every design of a
+        // sweep an allocation.
+        Some(MaterialSpec::Name(_)) => Vec::new(),
+        Some(MaterialSpec::Custom(m)) => plausibility_warnings("material", m),
+        None => A::materials(case)
+            .iter()
+            .flat_map(|(key, _, m)| {
+                let at = if key.is_empty() {
+                    "material".to_string()
+                } else {
+                    format!("materials.{key}")
+                };
+                plausibility_warnings(&at, m)
+            })
+            .collect(),
+    }
 }
 
 /// The object-safe view of an [`Analysis`], as the registry holds it.

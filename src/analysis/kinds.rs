@@ -109,7 +109,14 @@ impl Analysis for Stage {
         stage_report::stage_report(r)
     }
     fn result_warnings(_case: &Self::Case, r: &Self::Result) -> Vec<String> {
-        r.calibration_warnings.clone()
+        let mut w = r.calibration_warnings.clone();
+        w.extend(
+            r.load_cases
+                .iter()
+                .enumerate()
+                .filter_map(|(ic, c)| warn::stage_allowable_warning(ic, c)),
+        );
+        w
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         one_material(&case.material)
@@ -236,17 +243,19 @@ impl Analysis for Static {
         if case.nonlinear {
             case::mesh::superelement::refuse_in(&case.model, "geometrically nonlinear statics")?;
         }
-        let (model, hinges) = case.model.build_with_hinges(true)?;
+        let (model, hinges, case_index) = case.model.build_indexed(true)?;
         let (mut r, raw, path_files) = match case.steps.filter(|_| case.nonlinear) {
             Some(steps) => super::fem_path::solve(&model, case, steps, ctx.with_files),
             None => fem_static::solve_with(&model, ctx.cache).map(|(r, raw)| (r, raw, Vec::new())),
         }
         .map_err(|e| super::constraints::singular_hint(e, &case.model))?;
         fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
+        fem_static::add_headlines(&mut r, &model, &case_index, &hinges);
         if case.output.section_forces {
             fem_static::add_beam_forces(&mut r, &model, &raw);
         }
         r.compliance = fem_static::node_compliances(&model, &case.compliance)?;
+        r.metrics = fem_static::metrics::evaluate(&model, &case.model, &case.metrics, &r)?;
         if ctx.with_files {
             ctx.files = fem_static::vtu_files(&model, &raw)?;
             let tracked = r
@@ -256,18 +265,28 @@ impl Analysis for Static {
             ctx.files.extend(super::track::files(tracked));
             ctx.files.extend(path_files);
         }
-        ctx.warnings = if case.nonlinear {
-            let mut w = warn::stretch_warnings(&model, &r);
-            w.extend(warn::single_segment_hinge_warnings(&hinges));
-            w.extend(stability(
-                r.load_cases
-                    .iter()
-                    .map(|c| (c.name.as_str(), c.stable, c.critical_load_factor)),
-            ));
-            w
+        for (ic, row) in r.load_cases.iter_mut().enumerate() {
+            let w = if case.nonlinear {
+                let stretch = warn::stretch_warning(&model, ic, row);
+                stretch
+                    .into_iter()
+                    .chain(fem_static::stability_text(
+                        &row.name,
+                        row.stable,
+                        row.critical_load_factor,
+                    ))
+                    .collect()
+            } else {
+                Vec::from_iter(warn::linear_range_warning(&model, ic, row))
+            };
+            row.warnings.extend(w);
+        }
+        ctx.warnings = r.load_cases.iter().flat_map(|c| c.warnings.iter().cloned()).collect();
+        ctx.warnings.extend(if case.nonlinear {
+            warn::single_segment_hinge_warnings(&hinges)
         } else {
             fem_static::shell_orientation_warnings(&model)
-        };
+        });
         Ok(r)
     }
     fn report(r: &Self::Result) -> Report {
@@ -305,9 +324,6 @@ impl Analysis for Modal {
     }
     fn report(r: &Self::Result) -> Report {
         modal::report(r)
-    }
-    fn case_warnings(case: &Self::Case) -> Vec<String> {
-        warn::density_warnings(&case.model)
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         named_materials(&case.model.materials)

@@ -79,6 +79,12 @@ case_struct! {
         /// n}]}`.
         #[serde(default)]
         pub track: Option<super::mesh::TrackRequest>,
+        /// Named scalar results, listed in the result's `metrics` as `{"NAME": value}`:
+        /// `[{"name", "kind": "stiffness" | "compliance" | "displacement" | "hinge_rotation" |
+        /// "max_utilisation", "node", "dof", "load_case", "element"}]` (each kind takes the fields
+        /// its documentation names).
+        #[serde(default)]
+        pub metrics: Vec<super::mesh::MetricRequest>,
     }
 }
 
@@ -141,6 +147,8 @@ struct StaticOptions {
     compliance: Vec<super::mesh::ComplianceRequest>,
     #[serde(default)]
     track: Option<super::mesh::TrackRequest>,
+    #[serde(default)]
+    metrics: Vec<super::mesh::MetricRequest>,
 }
 
 /// The options of a `modal` (or `buckling`) case besides its model, as in the case file (each
@@ -169,7 +177,7 @@ pub const MODEL_FIELDS: [&str; 8] = [
     "ordering",
 ];
 
-const STATIC_OWN: [&str; 9] = [
+const STATIC_OWN: [&str; 10] = [
     "analysis",
     "description",
     "mesh",
@@ -179,6 +187,7 @@ const STATIC_OWN: [&str; 9] = [
     "output",
     "compliance",
     "track",
+    "metrics",
 ];
 const MODAL_OWN: [&str; 6] = ["analysis", "mesh", "gmsh", "modes", "shift_hz", "shapes"];
 
@@ -207,6 +216,7 @@ pub fn parse_static(value: Value, base: &crate::case::Source<'_>) -> Result<Stat
     let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
     super::mesh::requests::check_compliance(&o.compliance, model.nodes.len())?;
     super::mesh::requests::check_track(o.track.as_ref(), nonlinear, model.nodes.len())?;
+    super::mesh::metrics::check_metrics(&o.metrics, &model, nonlinear)?;
     for (i, c) in model.load_cases.iter().enumerate() {
         super::mesh::path_control::check(&format!("load_cases[{i}]"), c, nonlinear, model.nodes.len())?;
     }
@@ -220,6 +230,7 @@ pub fn parse_static(value: Value, base: &crate::case::Source<'_>) -> Result<Stat
         output: o.output,
         compliance: o.compliance,
         track: o.track,
+        metrics: o.metrics,
     })
 }
 

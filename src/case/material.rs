@@ -140,6 +140,68 @@ pub fn density_warning(at: &str, m: &Material) -> Option<String> {
         String::new()
     };
     Some(format!(
-        "{at}.density = {rho:e} t/mm³ is outside the plausible range {lo:e} … {hi:e} t/mm³ (100 … 30 000 kg/m³; steel 7.85e-9){hint}; natural frequencies scale as 1/√density"
+        "{at}.density = {rho:e} t/mm³ is outside the plausible range {lo:e} … {hi:e} t/mm³ (100 … 30 000 kg/m³; steel 7.85e-9){hint}; masses, self-weight and natural frequencies follow it (f ∝ 1/√density)"
     ))
+}
+
+/// Plausible Young's moduli of the solids flexures are made of, MPa: 100 (the stiffest
+/// elastomers and soft polyethylene, LDPE ≈ 200) … 1.2e6 (diamond, 1.05e6, the stiffest solid).
+pub const MODULUS_RANGE: (f64, f64) = (100.0, 1.2e6);
+
+/// A warning when a material's Young's modulus (MPa) is outside [`MODULUS_RANGE`] — typically
+/// E typed in GPa (72 for aluminium: 1000× too soft), in Pa (72e9: 10⁶× too stiff) or in psi
+/// (10.4e6 for aluminium: 145× too stiff); displacements and rotations under given forces
+/// scale as 1/E. `None` for plausible moduli. `at` as for [`density_warning`].
+pub fn modulus_warning(at: &str, m: &Material) -> Option<String> {
+    let e = m.e;
+    let (lo, hi) = MODULUS_RANGE;
+    if (lo..=hi).contains(&e) {
+        return None;
+    }
+    let hint = if (0.1..lo).contains(&e) {
+        format!(" — it looks like GPa: in MPa it is {} (GPa × 1000), and as given the displacements come out 1000× too large", plain(e * 1e3))
+    } else if (1e8..=1.2e12).contains(&e) {
+        format!(
+            " — it looks like Pa: in MPa it is {} (Pa × 1e-6), and as given the displacements come out 10⁶× too small",
+            plain(e * 1e-6)
+        )
+    } else if (1.45e6..1e8).contains(&e) {
+        format!(" — it looks like psi: in MPa it is {} (psi × 6.894757e-3), and as given the displacements come out 145× too small", plain(e * 6.894757e-3))
+    } else {
+        String::new()
+    };
+    let stand_in = if e > hi {
+        "; a stand-in for a rigid part is exact as a `rigid` element"
+    } else {
+        ""
+    };
+    Some(format!(
+        "{at}.E = {} MPa is outside the plausible range {} … {:e} MPa of structural solids (nylon 2800, aluminium 72000, steel 210000 MPa){hint}; displacements and rotations under given forces scale as 1/E{}",
+        plain(e),
+        plain(lo),
+        hi,
+        if e < lo {
+            format!(" (an elastomer softer than {} MPa is possible: then ignore this)", plain(lo))
+        } else {
+            stand_in.to_string()
+        }
+    ))
+}
+
+/// The unit-slip warnings of a material (Young's modulus, density) at `at` (e.g. `material`,
+/// `materials.steel`): one place for every analysis kind that takes a material.
+pub fn plausibility_warnings(at: &str, m: &Material) -> Vec<String> {
+    modulus_warning(at, m)
+        .into_iter()
+        .chain(density_warning(at, m))
+        .collect()
+}
+
+/// A number as typed: plain below 1e7, else in exponent notation.
+fn plain(v: f64) -> String {
+    if v.abs() < 1e7 {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
 }

@@ -79,6 +79,29 @@ pub fn sig(v: f64, digits: usize) -> String {
     }
 }
 
+/// `v` with `digits` significant digits in conventional notation: plain from 0.01 up to 1e5
+/// (`1842.7`, `0.012346`), else a mantissa and a signed two-digit exponent (`8.0123e-03`,
+/// `1.2000e+05`); exactly 0 as `0`.
+pub fn num(v: f64, digits: usize) -> String {
+    if !v.is_finite() {
+        return "—".into();
+    }
+    if v == 0.0 {
+        return "0".into();
+    }
+    let digits = digits.max(1);
+    // The exponent after rounding to `digits` (0.99999 → 1.0000e0, not 0.99999 plain).
+    let s = format!("{v:.prec$e}", prec = digits - 1);
+    let Some((m, e)) = s.split_once('e') else { return s };
+    let mag: i32 = e.parse().unwrap_or(0);
+    if (-2..5).contains(&mag) {
+        let decimals = (digits as i32 - 1 - mag).max(0) as usize;
+        return format!("{v:.decimals$}");
+    }
+    let (sign, e) = e.strip_prefix('-').map_or(("+", e), |e| ("-", e));
+    format!("{m}e{sign}{e:0>2}")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -89,6 +112,19 @@ mod tests {
         t.row(vec!["1".into(), "|2|".into()]);
         let md = t.render();
         assert_eq!(md, "| \\|a − b\\| | x |\n|---|---:|\n| 1 | \\|2\\| |\n");
+    }
+
+    #[test]
+    fn num_is_conventional_notation() {
+        assert_eq!(num(8.012266e-3, 5), "8.0123e-03");
+        assert_eq!(num(0.0, 5), "0");
+        assert_eq!(num(1842.6566, 5), "1842.7");
+        assert_eq!(num(-0.0123456, 5), "-0.012346");
+        assert_eq!(num(123456.0, 5), "1.2346e+05");
+        assert_eq!(num(-4.5e-13, 5), "-4.5000e-13");
+        assert_eq!(num(2.5e120, 4), "2.500e+120");
+        assert_eq!(num(-0.99999999997, 5), "-1.0000");
+        assert_eq!(num(99999.7, 5), "1.0000e+05");
     }
 
     #[test]

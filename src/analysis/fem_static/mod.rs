@@ -5,12 +5,17 @@ use crate::fem::{self, Model};
 
 pub use super::compliance::{compliance_row, ComplianceRow};
 
+mod headline;
+pub mod metrics;
 mod report;
 mod rows;
+mod summary;
 
+pub use headline::add_headlines;
 pub use report::{file_stem, report, von_mises_of, vtu, vtu_files};
 pub use rows::{
-    BeamForcesRow, HingeRow, ShellForcesRow, ShellStressRow, ShellVonMises, StaticCaseRow, StaticResult, Units,
+    BeamForcesRow, HingeRow, ShellForcesRow, ShellStressRow, ShellVonMises, StaticCaseRow, StaticResult, StressAt,
+    Units, Utilisation,
 };
 
 /// Solves every load case of the model.
@@ -53,6 +58,7 @@ pub fn solve_with(
             },
             model: notes,
             compliance: Vec::new(),
+            metrics: Default::default(),
         },
         res,
     ))
@@ -129,6 +135,7 @@ pub fn solve_nonlinear_each(
             "stresses from the section forces in the deformed element frames".to_string(),
         ],
         compliance: Vec::new(),
+        metrics: Default::default(),
     };
     Ok((result, raw, paths))
 }
@@ -178,6 +185,9 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
         reactions: c.reactions.iter().map(|(_, r)| *r).collect(),
         reaction_nodes: c.reactions.iter().map(|(n, _)| *n).collect(),
         max_von_mises: c.max_von_mises,
+        max_von_mises_at: None,
+        max_utilisation: None,
+        total_reaction: c.statics.reactions,
         element_von_mises: c.elements.iter().map(|e| e.max_von_mises()).collect(),
         shell_von_mises: c
             .elements
@@ -202,6 +212,8 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
         hinges: Vec::new(),
         beam_forces: Vec::new(),
         track: None,
+        loaded_nodes: Vec::new(),
+        warnings: Vec::new(),
     }
 }
 

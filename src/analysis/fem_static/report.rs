@@ -1,11 +1,13 @@
 //! Markdown/CSV views and `.vtu` files of a `static` result.
 
-use super::{stability_warning, ComplianceRow, StaticCaseRow, StaticResult};
+use super::summary::{self, DIGITS};
+use super::{ComplianceRow, StaticCaseRow, StaticResult};
 use crate::analysis::{AnalysisError, Report};
 use crate::fem::{self, Model};
-use crate::report::markdown::Table;
+use crate::report::markdown::{num, Table};
 
-/// Markdown/CSV views.
+/// Markdown/CSV views: the summary of every load case first, then the per-load-case details
+/// (hinge elements, path tracking), the node compliances and last the node displacements.
 pub fn report(r: &StaticResult) -> Report {
     let nonlinear = r
         .model
@@ -16,21 +18,33 @@ pub fn report(r: &StaticResult) -> Report {
     } else {
         "# Linear static analysis\n\n"
     });
+    md += &summary::section(r);
+    for c in &r.load_cases {
+        let details = hinge_table(c)
+            + &c.track
+                .as_ref()
+                .map(crate::analysis::track::markdown)
+                .unwrap_or_default()
+            + &crate::analysis::path_rows::markdown(&c.name, &c.critical_points, c.trace.as_ref());
+        if !details.is_empty() {
+            md += &format!("## Load case `{}`\n\n{details}", c.name);
+        }
+    }
+    md += &compliance_section(&r.compliance);
+    let (nodes, csv) = node_section(r);
+    md += &nodes;
+    Report { markdown: md, csv }
+}
+
+/// The `## Node displacements` section (the last of the report) and the CSV of every node.
+fn node_section(r: &StaticResult) -> (String, String) {
+    let mut md = format!("## Node displacements\n\nGlobal axes; {}.\n\n", r.units.displacements);
     let mut csv = String::from("load_case,node,ux_mm,uy_mm,uz_mm,rx_deg,ry_deg,rz_deg\n");
     for c in &r.load_cases {
-        md += &format!("## Load case `{}`\n\n", c.name);
-        if let Some(w) = stability_warning(&c.name, c.stable, c.critical_load_factor) {
-            md += &w;
-        }
-        if let Some(s) = c.max_von_mises {
-            md += &format!("Maximum von Mises stress: {s:.3} MPa.\n\n");
-        }
-        md += &principal_extremes(c);
-        let mut t = Table::new(&["node", "ux (mm)", "uy (mm)", "uz (mm)", "rx (°)", "ry (°)", "rz (°)"]);
+        md += &format!("### Load case `{}`\n\n", c.name);
+        let mut t = Table::new(&summary::NODE_HEADER);
         for (i, d) in c.displacements.iter().enumerate() {
-            let mut row = vec![i.to_string()];
-            row.extend(d.iter().map(|v| format!("{v:.6e}")));
-            t.row(row);
+            t.row(summary::node_row(i, d));
             csv += &format!("{},{i},{},{},{},{},{},{}\n", c.name, d[0], d[1], d[2], d[3], d[4], d[5]);
         }
         if c.displacements.len() <= 200 {
@@ -39,14 +53,8 @@ pub fn report(r: &StaticResult) -> Report {
             md += &format!("({} nodes: see result.csv)\n", c.displacements.len());
         }
         md += "\n";
-        md += &hinge_table(c);
-        if let Some(t) = &c.track {
-            md += &crate::analysis::track::markdown(t);
-        }
-        md += &crate::analysis::path_rows::markdown(&c.name, &c.critical_points, c.trace.as_ref());
     }
-    md += &compliance_section(&r.compliance);
-    Report { markdown: md, csv }
+    (md, csv)
 }
 
 /// The Markdown section of the requested node compliances (empty without).
@@ -59,18 +67,21 @@ fn compliance_section(rows: &[ComplianceRow]) -> String {
     );
     for c in rows {
         md += &format!(
-            "### Node {}\n\nFrame rows (local x, y, z): {:?}. Translational eigenvalues {:.6e} … {:.6e} mm/N; rotational {:.6e} … {:.6e} rad/(N·mm).\n\n",
+            "### Node {}\n\nFrame rows (local x, y, z): {:?}. Translational eigenvalues {} … {} mm/N; rotational {} … {} rad/(N·mm).\n\n",
             c.node,
             c.frame,
-            c.translational_eigen[0],
-            c.translational_eigen[1],
-            c.rotational_eigen[0],
-            c.rotational_eigen[1]
+            num(c.translational_eigen[0], DIGITS),
+            num(c.translational_eigen[1], DIGITS),
+            num(c.rotational_eigen[0], DIGITS),
+            num(c.rotational_eigen[1], DIGITS)
         );
-        let mut t = Table::new(&["", "Fx", "Fy", "Fz", "Mx", "My", "Mz"]);
-        for (i, name) in ["ux", "uy", "uz", "rx", "ry", "rz"].iter().enumerate() {
+        let mut t = Table::new(&["", "Fx (N)", "Fy (N)", "Fz (N)", "Mx (N·mm)", "My (N·mm)", "Mz (N·mm)"]);
+        for (i, name) in ["ux (mm)", "uy (mm)", "uz (mm)", "rx (rad)", "ry (rad)", "rz (rad)"]
+            .iter()
+            .enumerate()
+        {
             let mut row = vec![name.to_string()];
-            row.extend(c.matrix[i].iter().map(|v| format!("{v:.6e}")));
+            row.extend(c.matrix[i].iter().map(|v| num(*v, DIGITS)));
             t.row(row);
         }
         md += &t.render();
@@ -84,21 +95,21 @@ fn hinge_table(c: &StaticCaseRow) -> String {
     if c.hinges.is_empty() {
         return String::new();
     }
-    let mut t = Table::columns("element | rotation (°) | peak von Mises (MPa) | utilisation | remaining rotation (°) | My a (N·mm) | My b (N·mm)");
+    let mut t = Table::columns("element | rotation (°) | peak von Mises (MPa) | utilisation (–) | remaining rotation (°) | My a (N·mm) | My b (N·mm)");
     for h in &c.hinges {
         let rem = if h.remaining_rotation_deg.is_finite() {
-            format!("{:.4}", h.remaining_rotation_deg)
+            num(h.remaining_rotation_deg, DIGITS)
         } else {
             "unbounded".to_string()
         };
         t.row(vec![
             h.element.to_string(),
-            format!("{:.6}", h.rotation_deg),
-            format!("{:.4}", h.peak_von_mises),
-            format!("{:.4}", h.utilisation),
+            num(h.rotation_deg, DIGITS),
+            num(h.peak_von_mises, DIGITS),
+            num(h.utilisation, 4),
             rem,
-            format!("{:.6e}", h.end_forces[0][4]),
-            format!("{:.6e}", h.end_forces[1][4]),
+            num(h.end_forces[0][4], DIGITS),
+            num(h.end_forces[1][4], DIGITS),
         ]);
     }
     format!(
@@ -109,7 +120,7 @@ fn hinge_table(c: &StaticCaseRow) -> String {
 
 /// Markdown lines with the largest and smallest principal shell stresses of a load case and
 /// where they occur (node, surface); empty without shells.
-fn principal_extremes(c: &StaticCaseRow) -> String {
+pub(super) fn principal_extremes(c: &StaticCaseRow) -> String {
     let Some(ss) = &c.shell_stress else {
         return String::new();
     };
@@ -129,8 +140,8 @@ fn principal_extremes(c: &StaticCaseRow) -> String {
     }
     match (hi, lo) {
         (Some(h), Some(l)) => format!(
-            "Shells, extreme principal stresses (nodal averages): largest σ₁ = {:.4} MPa at node {} ({} surface); smallest σ₃ = {:.4} MPa at node {} ({} surface).\n\n",
-            h.0, h.1, h.2, l.0, l.1, l.2
+            "Shells, extreme principal stresses (nodal averages): largest σ₁ = {} MPa at node {} ({} surface); smallest σ₃ = {} MPa at node {} ({} surface).\n\n",
+            num(h.0, DIGITS), h.1, h.2, num(l.0, DIGITS), l.1, l.2
         ),
         _ => String::new(),
     }

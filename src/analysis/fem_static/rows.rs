@@ -15,8 +15,19 @@ pub struct StaticCaseRow {
     pub reactions: Vec<[f64; 6]>,
     /// The supported nodes, ascending.
     pub reaction_nodes: Vec<usize>,
-    /// Largest von Mises stress over all beams, MPa (`null` when no element has a stress).
+    /// Largest von Mises stress over every stressed element — beams and shells (their recovered
+    /// stresses) and hinge elements (their `peak_von_mises`) — MPa; `null` only when the model
+    /// has no stressed element (springs, joints, rigid links, superelements, masses only).
     pub max_von_mises: Option<f64>,
+    /// The element that carries `max_von_mises` (`null` with it).
+    pub max_von_mises_at: Option<StressAt>,
+    /// Largest von Mises / allowable over the stressed elements whose material has an allowable
+    /// stress, and where it is; `null` when none has one (utilisation is not defined without an
+    /// allowable: such elements count in `max_von_mises` only).
+    pub max_utilisation: Option<Utilisation>,
+    /// Sum of the support (and ground-spring) reactions about the global origin:
+    /// [Fx, Fy, Fz (N), Mx, My, Mz (N·mm)].
+    pub total_reaction: [f64; 6],
     /// Largest von Mises stress per element, MPa (`null` for springs).
     pub element_von_mises: Vec<Option<f64>>,
     /// Shells only: von Mises at the element centre on the top, mid and bottom surfaces, MPa
@@ -57,6 +68,45 @@ pub struct StaticCaseRow {
     /// (omitted otherwise).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub track: Option<crate::analysis::track::TrackRow>,
+    /// The nodes with applied nodal loads or prescribed displacements, ascending (for the
+    /// report's summary; not written to the JSON).
+    #[serde(skip)]
+    pub loaded_nodes: Vec<usize>,
+    /// The warnings about this load case (also in the result's `warnings`), for the report's
+    /// summary; not written to the JSON.
+    #[serde(skip)]
+    pub warnings: Vec<String>,
+}
+
+/// A stressed element of a load case.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct StressAt {
+    /// Index of the element in the case's `elements`.
+    pub element: usize,
+    /// What it is: `"beam"`, `"shell"` or `"hinge"`.
+    pub kind: &'static str,
+    /// Index of the element in the FE model (the order of `element_von_mises`; a hinge of
+    /// several segments: its first).
+    pub model_element: usize,
+    /// Its von Mises stress, MPa (a hinge: its `peak_von_mises`, notch factor included).
+    pub von_mises: f64,
+}
+
+/// The largest utilisation of a load case.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Utilisation {
+    /// von Mises / allowable, dimensionless (above 1: the allowable stress is exceeded).
+    pub value: f64,
+    /// Index of the element in the case's `elements`.
+    pub element: usize,
+    /// What it is: `"beam"`, `"shell"` or `"hinge"`.
+    pub kind: &'static str,
+    /// Index of the element in the FE model (see [`StressAt::model_element`]).
+    pub model_element: usize,
+    /// Its von Mises stress, MPa.
+    pub von_mises: f64,
+    /// Allowable stress of its material, MPa.
+    pub allowable: f64,
 }
 
 /// Section forces of one beam element in one load case.
@@ -158,6 +208,10 @@ pub struct StaticResult {
     /// (DOFs prescribed in load cases are free here); omitted when none was asked.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub compliance: Vec<ComplianceRow>,
+    /// The named values the case asked for (`"metrics"`), `{"NAME": value}` in the case's order;
+    /// omitted when none was asked.
+    #[serde(skip_serializing_if = "super::metrics::Metrics::is_empty")]
+    pub metrics: super::metrics::Metrics,
 }
 
 /// Units of the `static` result.

@@ -199,9 +199,6 @@ impl Analysis for FrfKind {
     fn report(r: &Self::Result) -> Report {
         frf_result::report(r)
     }
-    fn case_warnings(case: &Self::Case) -> Vec<String> {
-        super::warn::density_warnings(&case.model)
-    }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         super::kind::named_materials(&case.model.materials)
     }

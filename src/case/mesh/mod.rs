@@ -13,6 +13,7 @@ pub mod hinge;
 mod joint;
 pub mod load_shapes;
 mod lookup;
+pub mod metrics;
 pub mod path_control;
 pub mod requests;
 pub mod shapes;
@@ -26,6 +27,7 @@ pub use load_shapes::{
     DisplacementSpec, DofName, EdgeLoadSpec, ForceSpec, GroupForceSpec, LineAxes, LineLoadSpec, LoadCaseSpec,
     PressureSpec,
 };
+pub use metrics::{MetricKind, MetricRequest};
 pub use requests::{ComplianceRequest, StaticOutput, TrackRequest};
 pub use shapes::{
     ElementSpec, GmshMapping, GroupSpec, JointKind, MeshSpec, PlacementSpec, RigidSpec, SectionSpec, SupportSpec,
