@@ -295,6 +295,7 @@ impl Analysis for Modal {
             r.modes.iter_mut().for_each(|row| row.shape = None);
         }
         ctx.warnings = modal::drilling_warnings(&model, &raw);
+        ctx.warnings.extend(warn::fewer_modes(case.modes, raw.modes.len(), Some(raw.n_eq)));
         if ctx.with_files {
             ctx.files = vec![("modes.vtu".to_string(), modal::vtu(&model, &raw)?)];
         }
