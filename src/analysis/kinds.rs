@@ -238,12 +238,15 @@ impl Analysis for Static {
             Some(steps) => super::fem_path::solve(&model, case, steps, ctx.with_files),
             None => fem_static::solve_with(&model, ctx.cache).map(|(r, raw)| (r, raw, Vec::new())),
         }
-        .map_err(|e| super::constraints::singular_hint(e, &case.model))?;
+        .map_err(|e| fem_static::inner_nodes::label(super::constraints::singular_hint(e, &case.model), &hinges))?;
         fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
         if case.output.section_forces {
             fem_static::add_beam_forces(&mut r, &model, &raw);
         }
         r.compliance = fem_static::node_compliances(&model, &case.compliance)?;
+        if !case.output.internal_nodes {
+            fem_static::inner_nodes::hide(&mut r, &model, &hinges, case.model.nodes.len());
+        }
         if ctx.with_files {
             ctx.files = fem_static::vtu_files(&model, &raw)?;
             let tracked = r

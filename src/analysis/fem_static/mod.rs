@@ -5,6 +5,7 @@ use crate::fem::{self, Model};
 
 pub use super::compliance::{compliance_row, ComplianceRow};
 
+pub mod inner_nodes;
 mod report;
 mod rows;
 
