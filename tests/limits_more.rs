@@ -92,6 +92,18 @@ fn craig_bampton_with_more_modes_than_the_interior_is_refused_at_check() {
 }
 
 #[test]
+fn craig_bampton_interface_node_without_equations_is_refused_at_check() {
+    // Node 0 is clamped: no equation to keep on the interface (`run` refused it with exit 1
+    // after `check` passed).
+    let c = chain(
+        4,
+        json!({"analysis": "craig_bampton", "interface": [3, 0], "modes": 0,
+               "supports": [{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}]}),
+    );
+    exits_2(&flexfem("cb_bare", "check", &c, None), &["`interface[1]`", "has no equations"]);
+}
+
+#[test]
 fn frf_and_buckling_apply_the_modal_memory_estimate() {
     // 1000 modes of a 2001-node chain: modal refused these at once under a 0.05 GiB limit,
     // frf and buckling ran past two minutes.

@@ -94,9 +94,14 @@ impl CraigBamptonCase {
     /// or more modes than the interior has, before anything large is allocated.
     fn check_sizes(&self, model: &crate::fem::Model) -> Result<(), CaseError> {
         // Conflicting constraints are reported by the run with the solver's message.
-        let Ok((nb, ni)) = partition(model, &self.interface) else {
+        let Ok(part) = partition(model, &self.interface) else {
             return Ok(());
         };
+        if let Some(k) = part.bare {
+            let allowed = "has no equations (fully supported, or a rigid-link slave: use its master)";
+            return Err(CaseError::value(format!("interface[{k}]"), self.interface[k], allowed));
+        }
+        let (nb, ni) = (part.boundary, part.interior);
         let nodes = format!("({} nodes)", self.interface.len());
         if ni > MAX_INTERIOR {
             let allowed = format!(

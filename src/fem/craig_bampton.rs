@@ -32,13 +32,34 @@ fn split(dofs: &[NodeDof], interface: &[usize]) -> (Vec<usize>, Vec<usize>) {
     (0..dofs.len()).partition(|&i| interface.contains(&dofs[i].node))
 }
 
-/// Numbers of boundary and interior equations of the reduction of `model` to `interface`
-/// (from the DOF numbering alone: nothing is assembled), for checks before the run.
-pub fn partition(model: &Model, interface: &[usize]) -> Result<(usize, usize), FemError> {
+/// The position in `interface` of the first node without equations (fully supported, or a
+/// rigid-link slave), if any.
+fn bare_node(dofs: &[NodeDof], interface: &[usize]) -> Option<usize> {
+    interface.iter().position(|&nd| !dofs.iter().any(|d| d.node == nd))
+}
+
+/// How `interface` splits the equations of `model` (from the DOF numbering alone: nothing is
+/// assembled), for checks before the run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Partition {
+    /// Boundary equations (those of the interface nodes).
+    pub boundary: usize,
+    /// Interior equations.
+    pub interior: usize,
+    /// Position in `interface` of a node without equations, if any (refused by [`craig_bampton`]).
+    pub bare: Option<usize>,
+}
+
+/// The [`Partition`] of `model`'s equations by `interface`.
+pub fn partition(model: &Model, interface: &[usize]) -> Result<Partition, FemError> {
     let map = super::constraints::DofMap::new(model, &[], None)?;
     let dofs: Vec<NodeDof> = (0..map.n_eq()).map(|i| map.describe_eq(i)).collect();
     let (b, i) = split(&dofs, interface);
-    Ok((b.len(), i.len()))
+    Ok(Partition {
+        boundary: b.len(),
+        interior: i.len(),
+        bare: bare_node(&dofs, interface),
+    })
 }
 
 /// A Craig–Bampton superelement.
@@ -120,7 +141,7 @@ pub fn lowest_modes(k: &DMatrix<f64>, m: &DMatrix<f64>, n: usize) -> Result<(Vec
 pub fn craig_bampton(model: &Model, interface: &[usize], n_modes: usize) -> Result<Superelement, FemError> {
     let red = reduced_matrices(model)?;
     let (b, i_) = split(&red.dofs, interface);
-    if let Some(&node) = interface.iter().find(|&&nd| !red.dofs.iter().any(|d| d.node == nd)) {
+    if let Some(node) = bare_node(&red.dofs, interface).map(|k| interface[k]) {
         return Err(FemError::BadInput(format!(
             "interface node {node} has no equations (fully supported, or a rigid-link slave: use its master)"
         )));
