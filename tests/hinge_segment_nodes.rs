@@ -92,3 +92,17 @@ fn transient_of_a_segmented_hinge_has_a_regular_mass_matrix() {
     let out = run(&parse(&c.to_string()).unwrap()).unwrap();
     assert!(out.warnings.iter().all(|w| !w.contains("singular")), "{:?}", out.warnings);
 }
+
+#[test]
+fn a_mechanism_through_inner_nodes_names_their_hinge() {
+    // Node 0 held in translation only: the hinge chain spins about it, and the solver's message
+    // lists the inner nodes 2, 3, 4 the user never wrote.
+    let mut c = leaf_case("static", 4, json!({"load_cases": [{"name": "push", "forces": [{"node": 1, "F": [0, 0, 1, 0, 0, 0]}]}]}));
+    c["supports"] = json!([{"node": 0, "fix": ["ux", "uy", "uz"]}]);
+    c["elements"].as_array_mut().unwrap().truncate(1);
+    let d = tempdir("inner_mechanism");
+    let p = d.join("case.json");
+    std::fs::write(&p, c.to_string()).unwrap();
+    let o = run_in(&d, &["run", p.to_str().unwrap()]);
+    exits(&o, 1, &["mechanism", "node 2 uy", "nodes 2, 3, 4 are inner nodes of the segmented hinge elements[0]"]);
+}

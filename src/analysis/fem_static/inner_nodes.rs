@@ -34,26 +34,35 @@ pub fn hide(r: &mut StaticResult, model: &Model, hinges: &[BuiltHinge], user: us
     ));
 }
 
-/// The message `e` with a line naming the hinge element of every inner node it mentions
+/// The message `e` with a line naming the hinge element of the inner nodes it mentions
 /// (`node N`), so that a mechanism at node 18 reads as what the user built.
 pub fn label(e: AnalysisError, hinges: &[BuiltHinge]) -> AnalysisError {
-    let mut named: Vec<String> = Vec::new();
-    let mut rest = e.message.as_str();
-    while let Some(at) = rest.find("node ") {
-        rest = &rest[at + 5..];
-        let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
+    // (case element, its inner nodes named), in order of first mention.
+    let mut named: Vec<(usize, Vec<usize>)> = Vec::new();
+    for (at, _) in e.message.match_indices("node ") {
+        let digits: String = e.message[at + 5..].chars().take_while(char::is_ascii_digit).collect();
         let Ok(node) = digits.parse::<usize>() else {
             continue;
         };
-        if let Some(h) = hinges.iter().find(|h| h.inner_nodes.contains(&node)) {
-            let text = format!("node {node} is an inner node of the segmented hinge elements[{}]", h.case_element);
-            if !named.contains(&text) {
-                named.push(text);
-            }
+        let Some(h) = hinges.iter().find(|h| h.inner_nodes.contains(&node)) else {
+            continue;
+        };
+        match named.iter_mut().find(|(el, _)| *el == h.case_element) {
+            Some((_, nodes)) if !nodes.contains(&node) => nodes.push(node),
+            Some(_) => {}
+            None => named.push((h.case_element, vec![node])),
         }
     }
     if named.is_empty() {
         return e;
     }
-    AnalysisError::new(e.context, format!("{}\n({})", e.message, named.join("; ")))
+    let parts: Vec<String> = named
+        .iter()
+        .map(|(el, nodes)| {
+            let list: Vec<String> = nodes.iter().map(usize::to_string).collect();
+            let (word, verb) = if nodes.len() == 1 { ("node", "is an inner node") } else { ("nodes", "are inner nodes") };
+            format!("{word} {} {verb} of the segmented hinge elements[{el}]", list.join(", "))
+        })
+        .collect();
+    AnalysisError::new(e.context, format!("{}\n({})", e.message, parts.join("; ")))
 }
