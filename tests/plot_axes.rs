@@ -124,8 +124,11 @@ fn value_at(ticks: &[(f64, f64)], log: bool, p: f64) -> f64 {
     }
 }
 
-/// Points along every drawn polyline (at most 1 px apart) and every marker (centre, radius).
-fn drawn(panel: &str) -> (Vec<Vec<(f64, f64)>>, Vec<(f64, f64, f64)>) {
+/// The drawn polylines (screen points per series) and markers (centre, radius).
+type Drawn = (Vec<Vec<(f64, f64)>>, Vec<(f64, f64, f64)>);
+
+/// The series polylines and the markers of a panel.
+fn drawn(panel: &str) -> Drawn {
     let lines = elements(panel, "polyline")
         .into_iter()
         .filter(|(t, _)| attr(t, "class") == Some("series"))
