@@ -383,10 +383,11 @@ pub fn scatter_coloured(
             ca.label(c)
         );
     }
+    // The colour's name runs up the right edge, beside the bar's ticks.
     out += &format!(
-        "<text x=\"{}\" y=\"{}\">{}</text>\n",
-        bx - 4.0,
-        f.t - 14.0,
+        "<text x=\"{0}\" y=\"{1}\" text-anchor=\"middle\" transform=\"rotate(-90 {0} {1})\">{2}</text>\n",
+        f.w - 12.0,
+        f.t + span / 2.0,
         esc(colour_label)
     );
     out += &format!(
