@@ -119,6 +119,7 @@ pub struct Buckling;
 
 fn build(case: &BucklingCase) -> Result<Model, CaseError> {
     crate::case::mesh::superelement::refuse_in(&case.model, "linear buckling")?;
+    crate::case::limits::check_modal(case.modes, case.model.nodes.len())?;
     let model = case.model.build_model(true)?;
     if let Some(ie) = model.elements.iter().position(|e| matches!(e, Element::Shell4(_))) {
         return Err(CaseError::new(
@@ -242,6 +243,7 @@ impl Analysis for Buckling {
         let model = build(case)?;
         let (r, raw) = solve(&model, case.modes, case.shapes)?;
         ctx.warnings = warnings(&model, &r);
+        ctx.warnings.extend(super::warn::fewer_modes(case.modes, raw.modes.len(), Some(raw.n_eq)));
         if ctx.with_files {
             ctx.files = vec![("buckling_modes.vtu".to_string(), vtu(&model, &raw)?)];
         }

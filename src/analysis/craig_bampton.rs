@@ -10,7 +10,7 @@ use super::{AnalysisError, Report, RunError};
 use crate::case::fem_case::{mesh_rules, read_model, split, MODEL_FIELDS};
 use crate::case::mesh::MeshSpec;
 use crate::case::{from_value, CaseError};
-use crate::fem::craig_bampton::{craig_bampton, Superelement};
+use crate::fem::craig_bampton::{craig_bampton, partition, Superelement, MAX_INTERIOR, MAX_REDUCED};
 use crate::fem::matrices::ReducedMatrices;
 use crate::fem::modal::{solve_modal, ModalOptions};
 use serde::{Deserialize, Serialize};
@@ -81,9 +81,48 @@ pub fn parse(value: Value, base: &crate::case::Source<'_>) -> Result<CraigBampto
 }
 
 impl CraigBamptonCase {
-    /// The model, after the options are checked.
+    /// The model, after the options are checked, and its sizes checked.
     fn build(&self) -> Result<crate::fem::Model, CaseError> {
-        self.check_options().and_then(|()| self.model.build_model(false))
+        self.check_options()?;
+        let model = self.model.build_model(false)?;
+        self.check_sizes(&model)?;
+        Ok(model)
+    }
+
+    /// Refuses a reduction the dense algebra cannot take (interior, superelement size, memory)
+    /// or more modes than the interior has, before anything large is allocated.
+    fn check_sizes(&self, model: &crate::fem::Model) -> Result<(), CaseError> {
+        // Conflicting constraints are reported by the run with the solver's message.
+        let Ok(part) = partition(model, &self.interface) else {
+            return Ok(());
+        };
+        if let Some(k) = part.bare {
+            let allowed = "has no equations (fully supported, or a rigid-link slave: use its master)";
+            return Err(CaseError::value(format!("interface[{k}]"), self.interface[k], allowed));
+        }
+        let (nb, ni) = (part.boundary, part.interior);
+        let nodes = format!("({} nodes)", self.interface.len());
+        if ni > MAX_INTERIOR {
+            let allowed = format!(
+                "leaves {ni} interior equations; the dense reduction takes at most {MAX_INTERIOR} (reduce a smaller part of the model)"
+            );
+            return Err(CaseError::value("interface", nodes, allowed));
+        }
+        if nb + self.modes > MAX_REDUCED {
+            let allowed = format!(
+                "has {nb} boundary equations, which with {} modes make a superelement of {} coordinates; the dense superelement takes at most {MAX_REDUCED} (use fewer interface nodes or modes)",
+                self.modes,
+                nb + self.modes
+            );
+            return Err(CaseError::value("interface", nodes, allowed));
+        }
+        if self.modes > ni {
+            let allowed = format!(
+                "must be at most {ni}: the interior (the model's equations off the interface nodes) has {ni} equations, so it has at most {ni} fixed-interface modes"
+            );
+            return Err(CaseError::value("modes", self.modes, allowed));
+        }
+        crate::case::limits::check_craig_bampton(nb + ni, nb, self.modes, self.interface.len())
     }
 
     fn check_options(&self) -> Result<(), CaseError> {

@@ -136,7 +136,7 @@ fn path_svg(name: &str, t: &TraceRow) -> String {
     crate::report::svg::curve(
         &format!("Load case {name}: equilibrium path"),
         &format!("{} of node {} ({})", t.dof, t.node, t.unit),
-        "load factor λ",
+        "load factor λ (–)",
         &[("path", &pts)],
     )
 }

@@ -5,6 +5,7 @@
 use super::frf_result::FrfResult;
 use super::{AnalysisError, Files, RunError};
 use crate::fem::state_space::StateSpace;
+use crate::report::axis::Scale;
 use crate::report::svg;
 
 /// The files of a run.
@@ -16,36 +17,39 @@ pub fn files(r: &FrfResult, ss: &StateSpace) -> Result<Files, RunError> {
     let top = r.response.iter().map(peak).fold(0.0f64, f64::max);
     let shown: Vec<&super::frf_result::Pair> = r.response.iter().filter(|p| peak(p) > 1e-9 * top).collect();
     let names: Vec<String> = shown.iter().map(|p| format!("{} → {}", p.input, p.output)).collect();
-    let lf: Vec<f64> = r.frequencies_hz.iter().map(|f| f.log10()).collect();
+    let f = &r.frequencies_hz;
     let mag: Vec<Vec<(f64, f64)>> = shown
         .iter()
-        .map(|p| lf.iter().zip(&p.magnitude).map(|(&x, &m)| (x, m.log10())).collect())
+        .map(|p| f.iter().copied().zip(p.magnitude.iter().copied()).collect())
         .collect();
     let phase: Vec<Vec<(f64, f64)>> = shown
         .iter()
-        .map(|p| lf.iter().zip(&p.phase_deg).map(|(&x, &y)| (x, y)).collect())
+        .map(|p| f.iter().copied().zip(p.phase_deg.iter().copied()).collect())
         .collect();
     let series = |v: &[Vec<(f64, f64)>]| -> Vec<(String, Vec<(f64, f64)>)> {
         names.iter().cloned().zip(v.iter().cloned()).collect()
     };
-    for (file, title, ylabel, data) in [
+    // Bode plots: frequency on a log axis in Hz, magnitude on a log axis, phase in 90° steps.
+    for (file, title, ylabel, data, y_scale) in [
         (
             "bode_magnitude.svg",
             "Frequency response: magnitude",
-            "log₁₀ |H| (mm or ° per N or N·mm)",
+            "|H| (mm or ° per N or N·mm)",
             series(&mag),
+            Scale::Log,
         ),
         (
             "bode_phase.svg",
             "Frequency response: phase",
             "phase (°)",
             series(&phase),
+            Scale::Degrees,
         ),
     ] {
         let refs: Vec<(&str, &[(f64, f64)])> = data.iter().map(|(n, p)| (n.as_str(), p.as_slice())).collect();
         out.push((
             file.to_string(),
-            svg::lines(title, "log₁₀ f (Hz)", ylabel, &refs).into_bytes(),
+            svg::lines_scaled(title, "frequency (Hz)", ylabel, &refs, (Scale::Log, y_scale)).into_bytes(),
         ));
     }
     let json = serde_json::json!({

@@ -248,7 +248,7 @@ impl Analysis for Static {
             Some(steps) => super::fem_path::solve(&model, case, steps, ctx.with_files),
             None => fem_static::solve_with(&model, ctx.cache).map(|(r, raw)| (r, raw, Vec::new())),
         }
-        .map_err(|e| super::constraints::singular_hint(e, &case.model))?;
+        .map_err(|e| fem_static::inner_nodes::label(super::constraints::singular_hint(e, &case.model), &hinges))?;
         fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
         fem_static::add_headlines(&mut r, &model, &case_index, &hinges);
         if case.output.section_forces {
@@ -256,6 +256,9 @@ impl Analysis for Static {
         }
         r.compliance = fem_static::node_compliances(&model, &case.compliance)?;
         r.metrics = fem_static::metrics::evaluate(&model, &case.model, &case.metrics, &r)?;
+        if !case.output.internal_nodes {
+            fem_static::inner_nodes::hide(&mut r, &model, &hinges, case.model.nodes.len());
+        }
         if ctx.with_files {
             ctx.files = fem_static::vtu_files(&model, &raw)?;
             let tracked = r
@@ -317,6 +320,7 @@ impl Analysis for Modal {
             r.modes.iter_mut().for_each(|row| row.shape = None);
         }
         ctx.warnings = modal::drilling_warnings(&model, &raw);
+        ctx.warnings.extend(warn::fewer_modes(case.modes, raw.modes.len(), Some(raw.n_eq)));
         if ctx.with_files {
             ctx.files = vec![("modes.vtu".to_string(), modal::vtu(&model, &raw)?)];
         }

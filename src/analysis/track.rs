@@ -260,13 +260,15 @@ pub fn plot(name: &str, t: &TrackRow) -> String {
         .collect();
     let panel = |title: &str, ylabel: &str, series: &[(String, Vec<(f64, f64)>)]| {
         let s: Vec<(&str, &[(f64, f64)])> = series.iter().map(|(n, p)| (n.as_str(), p.as_slice())).collect();
-        svg::scatter(title, &t.stroke, ylabel, &s)
+        // The stroke is a node's displacement with its unit, or the dimensionless load factor.
+        let xlabel = if t.stroke.ends_with(')') { t.stroke.clone() } else { format!("{} (–)", t.stroke) };
+        svg::scatter(title, &xlabel, ylabel, &s)
     };
     let mut panels = Vec::new();
     if !stiff.is_empty() {
         panels.push(panel(
             &format!("{name}: support stiffness along the path"),
-            "k / k at λ = 0",
+            "k / k at λ = 0 (–)",
             &stiff,
         ));
     }

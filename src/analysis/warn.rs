@@ -14,6 +14,16 @@ pub fn hinge_warnings(at: &str, spec: &crate::hinge::HingeSpec) -> Vec<String> {
     }
 }
 
+/// The warning when an eigen-analysis computed fewer modes than `modes` asked for: a model with
+/// `n_eq` equations (free DOFs) has at most that many modes, fewer when some DOFs carry no mass
+/// (or, in buckling, no geometric stiffness). The run keeps the modes there are and says so.
+pub fn fewer_modes(asked: usize, got: usize, n_eq: Option<usize>) -> Option<String> {
+    (got < asked).then(|| {
+        let eqs = n_eq.map(|n| format!(" (it has {n} equations)")).unwrap_or_default();
+        format!("`modes`: {asked} asked for, but the model has only {got}{eqs}: {got} computed")
+    })
+}
+
 /// Largest element stretch in a geometrically nonlinear result above which it is reported: the
 /// co-rotational elements assume small strains (a linear-elastic element at 1 % strain is at
 /// the end of the elastic range of every structural metal).

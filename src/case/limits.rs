@@ -1,4 +1,4 @@
-//! Input size limits: case and mesh file size, node count, modal memory.
+//! Input size limits: case and mesh file size, node count, modal and Craig–Bampton memory.
 //!
 //! A case that would exhaust memory is refused before anything large is allocated, with the
 //! limit, the value and how to raise the limit. Defaults suit a workstation; override them for
@@ -169,6 +169,41 @@ pub fn check_modal(modes: usize, nodes: usize) -> Result<(), CaseError> {
             format!(
                 "{modes} modes of a model of {nodes} nodes ({} DOFs) need about {} of memory, over the limit of {} (ask for fewer modes, or raise the limit with {ENV}=memory_gib=N)",
                 6 * nodes,
+                human(need),
+                human(limits.memory_bytes)
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// Memory a Craig–Bampton reduction plans to use, bytes, for `equations` equations of which
+/// `boundary` are on the interface, and `modes` fixed-interface modes (8 bytes a number): the
+/// dense K and M of the model (2 n²), their partitions, the constraint modes and the interior
+/// Cholesky factor (2 i² + 4 i b + 2 b² + i² + 2 i b), the interior eigen-decomposition (5 i²,
+/// with modes), the superelement's K and M and their eigen-decomposition for the frequency
+/// check (8 r², r = b + modes) and its rows in the JSON result (2 r² numbers at about 56 bytes
+/// each as a JSON value and as text).
+pub fn craig_bampton_memory(equations: usize, boundary: usize, modes: usize) -> u64 {
+    let (n, b) = (equations as f64, boundary as f64);
+    let i = (n - b).max(0.0);
+    let r = b + modes as f64;
+    let eig = if modes > 0 { 5.0 * i * i } else { 0.0 };
+    let numbers = 2.0 * n * n + 3.0 * i * i + 6.0 * i * b + 2.0 * b * b + eig + 8.0 * r * r;
+    (8.0 * numbers + 112.0 * r * r).min(u64::MAX as f64) as u64
+}
+
+/// Refuses a Craig–Bampton reduction whose memory estimate exceeds the memory limit (the JSON
+/// path is `interface`, whose size drives it).
+pub fn check_craig_bampton(equations: usize, boundary: usize, modes: usize, interface_nodes: usize) -> Result<(), CaseError> {
+    let limits = Limits::current()?;
+    let need = craig_bampton_memory(equations, boundary, modes);
+    if need > limits.memory_bytes {
+        return Err(CaseError::value(
+            "interface",
+            format!("({interface_nodes} nodes)"),
+            format!(
+                "a Craig–Bampton reduction onto {boundary} boundary equations with {modes} modes, of a model of {equations} equations, needs about {} of memory (dense matrices), over the limit of {} (use fewer interface nodes or modes, or raise the limit with {ENV}=memory_gib=N)",
                 human(need),
                 human(limits.memory_bytes)
             ),

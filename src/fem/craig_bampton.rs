@@ -22,6 +22,46 @@ use nalgebra::{DMatrix, SymmetricEigen};
 /// Largest number of interior equations of the dense reduction.
 pub const MAX_INTERIOR: usize = 4000;
 
+/// Largest number of coordinates of the superelement (boundary equations plus modes): its
+/// dense K and M, their eigen-decomposition (the frequency check) and the JSON rows grow as
+/// the square and cube of it (3000 coordinates: about 1.3 GiB and minutes of dense algebra).
+pub const MAX_REDUCED: usize = 3000;
+
+/// Boundary (the equations of the interface nodes) and interior equation indices.
+fn split(dofs: &[NodeDof], interface: &[usize]) -> (Vec<usize>, Vec<usize>) {
+    (0..dofs.len()).partition(|&i| interface.contains(&dofs[i].node))
+}
+
+/// The position in `interface` of the first node without equations (fully supported, or a
+/// rigid-link slave), if any.
+fn bare_node(dofs: &[NodeDof], interface: &[usize]) -> Option<usize> {
+    interface.iter().position(|&nd| !dofs.iter().any(|d| d.node == nd))
+}
+
+/// How `interface` splits the equations of `model` (from the DOF numbering alone: nothing is
+/// assembled), for checks before the run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Partition {
+    /// Boundary equations (those of the interface nodes).
+    pub boundary: usize,
+    /// Interior equations.
+    pub interior: usize,
+    /// Position in `interface` of a node without equations, if any (refused by [`craig_bampton`]).
+    pub bare: Option<usize>,
+}
+
+/// The [`Partition`] of `model`'s equations by `interface`.
+pub fn partition(model: &Model, interface: &[usize]) -> Result<Partition, FemError> {
+    let map = super::constraints::DofMap::new(model, &[], None)?;
+    let dofs: Vec<NodeDof> = (0..map.n_eq()).map(|i| map.describe_eq(i)).collect();
+    let (b, i) = split(&dofs, interface);
+    Ok(Partition {
+        boundary: b.len(),
+        interior: i.len(),
+        bare: bare_node(&dofs, interface),
+    })
+}
+
 /// A Craig–Bampton superelement.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Superelement {
@@ -61,6 +101,10 @@ fn sparse(d: &DMatrix<f64>) -> sprs::CsMat<f64> {
 /// give μ = 0 and are never among them. Eigenvectors mass-normalised, the largest component
 /// of each positive.
 pub fn lowest_modes(k: &DMatrix<f64>, m: &DMatrix<f64>, n: usize) -> Result<(Vec<f64>, DMatrix<f64>), FemError> {
+    if n == 0 {
+        // Guyan (no modes), possibly of an interface without interior: nothing to decompose.
+        return Ok((Vec::new(), DMatrix::zeros(k.nrows(), 0)));
+    }
     let l = k
         .clone()
         .cholesky()
@@ -96,11 +140,8 @@ pub fn lowest_modes(k: &DMatrix<f64>, m: &DMatrix<f64>, n: usize) -> Result<(Vec
 /// `interface` and `n_modes` fixed-interface modes.
 pub fn craig_bampton(model: &Model, interface: &[usize], n_modes: usize) -> Result<Superelement, FemError> {
     let red = reduced_matrices(model)?;
-    let n = red.dofs.len();
-    let is_b: Vec<bool> = red.dofs.iter().map(|d| interface.contains(&d.node)).collect();
-    let b: Vec<usize> = (0..n).filter(|&i| is_b[i]).collect();
-    let i_: Vec<usize> = (0..n).filter(|&i| !is_b[i]).collect();
-    if let Some(&node) = interface.iter().find(|&&nd| !red.dofs.iter().any(|d| d.node == nd)) {
+    let (b, i_) = split(&red.dofs, interface);
+    if let Some(node) = bare_node(&red.dofs, interface).map(|k| interface[k]) {
         return Err(FemError::BadInput(format!(
             "interface node {node} has no equations (fully supported, or a rigid-link slave: use its master)"
         )));
@@ -109,6 +150,12 @@ pub fn craig_bampton(model: &Model, interface: &[usize], n_modes: usize) -> Resu
         return Err(FemError::BadInput(format!(
             "Craig–Bampton: {} interior equations; the dense reduction takes at most {MAX_INTERIOR}",
             i_.len()
+        )));
+    }
+    if b.len() + n_modes > MAX_REDUCED {
+        return Err(FemError::BadInput(format!(
+            "Craig–Bampton: {} boundary equations and {n_modes} modes; the dense superelement takes at most {MAX_REDUCED} coordinates",
+            b.len()
         )));
     }
     if n_modes > i_.len() {

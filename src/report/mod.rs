@@ -1,5 +1,6 @@
 //! Reports: Markdown, CSV, SVG and VTK views of results (formatting only).
 
+pub mod axis;
 pub mod json;
 pub mod markdown;
 pub mod numbers;

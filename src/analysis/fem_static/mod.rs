@@ -6,6 +6,7 @@ use crate::fem::{self, Model};
 pub use super::compliance::{compliance_row, ComplianceRow};
 
 mod headline;
+pub mod inner_nodes;
 pub mod metrics;
 mod report;
 mod rows;

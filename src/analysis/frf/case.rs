@@ -239,6 +239,7 @@ impl FrfCase {
         if !(1..=1000).contains(&self.modes) {
             return Err(CaseError::value("modes", self.modes, "must be an integer from 1 to 1000"));
         }
+        crate::case::limits::check_modal(self.modes, self.model.nodes.len())?;
         let d = &self.damping;
         check::non_negative("damping.alpha", d.alpha, "1/s")?;
         check::non_negative("damping.beta", d.beta, "s")?;

@@ -73,6 +73,47 @@ pub fn ports(case: &FrfCase, model: &Model) -> (Ports, Vec<(String, &'static str
     (Ports { inputs, outputs }, in_names, out_info)
 }
 
+/// Refuses an input that loads only fixed DOFs or an output that reads only fixed DOFs (its
+/// response would be a silent zero), naming the case path. The ports are those of [`ports`],
+/// reduced onto the model's equations (supports, rigid links, node frames and ties applied).
+fn check_ports(case: &FrfCase, model: &Model) -> Result<(), CaseError> {
+    // A model whose constraints conflict is refused by the run with the solver's message.
+    let Ok(map) = crate::fem::constraints::DofMap::new(model, &[], None) else {
+        return Ok(());
+    };
+    let (ports, _, _) = ports(case, model);
+    let dead = |v: &[f64]| map.reduce(v).iter().all(|x| *x == 0.0);
+    for (i, (s, f)) in case.inputs.iter().zip(&ports.inputs).enumerate() {
+        if dead(f) {
+            return Err(CaseError::value(
+                format!("inputs[{i}].node"),
+                s.node,
+                "the input's force and moment act only on DOFs the supports fix, so its response is zero: load a free DOF",
+            ));
+        }
+    }
+    let mut columns = ports.outputs.iter();
+    for (i, s) in case.outputs.iter().enumerate() {
+        for (j, (d, c)) in s.dofs.iter().zip(columns.by_ref()).enumerate() {
+            if dead(c) {
+                return Err(CaseError::value(
+                    format!("outputs[{i}].dofs[{j}]"),
+                    d.dof().name(),
+                    format!("node {} does not move in this direction (the supports fix it), so its response is zero: give a free DOF", s.node),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Validates the case ([`FrfCase::validate`]) and its ports ([`check_ports`]).
+fn validated(case: &FrfCase) -> Result<ValidFrf<'_>, CaseError> {
+    let valid = case.validate()?;
+    check_ports(case, &valid.model)?;
+    Ok(valid)
+}
+
 fn fem_err(e: crate::fem::FemError) -> RunError {
     RunError::from(AnalysisError::new("model", e.to_string()))
 }
@@ -187,10 +228,11 @@ impl Analysis for FrfKind {
     type Result = FrfResult;
 
     fn check(case: &Self::Case) -> Result<(), CaseError> {
-        case.validate().map(drop)
+        validated(case).map(drop)
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        let (r, ss) = run(&case.validate()?, ctx.cache)?;
+        let (r, ss) = run(&validated(case)?, ctx.cache)?;
+        ctx.warnings.extend(super::warn::fewer_modes(case.modes, r.modes.len(), None));
         if ctx.with_files {
             ctx.files = super::frf_files::files(&r, &ss)?;
         }

@@ -139,7 +139,7 @@ pub fn plots(r: &PanTiltResult) -> Vec<(String, Vec<u8>)> {
         let refs: Vec<(&str, &[(f64, f64)])> = series.iter().map(|(n, s)| (n.as_str(), s.as_slice())).collect();
         files.push((
             name.to_string(),
-            svg::scatter(title, "time (s)", "rotation (°)", &refs).into_bytes(),
+            svg::lines(title, "time (s)", "rotation (°)", &refs).into_bytes(),
         ));
     }
     let a = r.geometry.actuated;
@@ -158,7 +158,7 @@ pub fn plots(r: &PanTiltResult) -> Vec<(String, Vec<u8>)> {
     let refs: Vec<(&str, &[(f64, f64)])> = series.iter().map(|(n, s)| (n.as_str(), s.as_slice())).collect();
     files.push((
         "pantilt_torques.svg".to_string(),
-        svg::scatter("Actuator torques", "time (s)", "torque (N·mm)", &refs).into_bytes(),
+        svg::lines("Actuator torques", "time (s)", "torque (N·mm)", &refs).into_bytes(),
     ));
     files
 }

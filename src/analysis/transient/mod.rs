@@ -105,7 +105,8 @@ case_struct! {
     #[serde(deny_unknown_fields)]
     #[schemars(extend("allOf" = mesh_rules(false)))]
     pub struct TransientCase {
-        /// Time step, s (> 0).
+        /// Time step, s (1e-12 … 1e6).
+        #[schemars(range(min = 1e-12, max = 1e6))]
         pub dt: f64,
         /// Number of steps, 1 … 1000000.
         #[schemars(range(min = 1, max = 1000000))]
@@ -273,8 +274,10 @@ impl TransientCase {
                 Err(CaseError::value(p, n, format!("must be a node index below {n_nodes}")))
             }
         };
-        if !(self.dt.is_finite() && self.dt > 0.0) {
-            return Err(CaseError::value("dt", self.dt, "must be a time step > 0, s"));
+        let dts = crate::fem::transient::DT_RANGE;
+        if !dts.contains(&self.dt) {
+            let allowed = format!("must be a time step from {:e} to {:e} s", dts.start(), dts.end());
+            return Err(CaseError::value("dt", format!("{:e}", self.dt), allowed));
         }
         if !(1..=1_000_000).contains(&self.steps) {
             return Err(CaseError::value("steps", self.steps, "must be an integer from 1 to 1000000"));

@@ -105,16 +105,32 @@ impl MeshSpec {
         }
         // Hinges of several segments: inner nodes and further elements after the case's own,
         // so node and element indices of the case stay those of the model.
-        for h in cx.hinges.iter_mut().filter(|h| h.segments > 1) {
-            if let Some(last) = crate::hinge::split_flex(
-                &mut cx.model,
-                h.element,
-                &h.region.profile,
-                &h.material,
-                &h.region.stiffness,
-                h.segments,
-            ) {
-                h.last = last;
+        // Then every hinge's mass on its chain of nodes.
+        for h in cx.hinges.iter_mut() {
+            let first_inner = cx.model.nodes.len();
+            if h.segments > 1 {
+                if let Some(last) = crate::hinge::split_flex(
+                    &mut cx.model,
+                    h.element,
+                    &h.region.profile,
+                    &h.material,
+                    &h.region.stiffness,
+                    h.segments,
+                ) {
+                    h.last = last;
+                }
+            }
+            let ends = |ie: usize| match cx.model.elements.get(ie) {
+                Some(fem::Element::Flex(f)) => Some(f.nodes),
+                _ => None,
+            };
+            h.inner_nodes = first_inner..cx.model.nodes.len();
+            if let (Some([a, _]), Some([_, b])) = (ends(h.element), ends(h.last)) {
+                let chain: Vec<usize> = std::iter::once(a)
+                    .chain(first_inner..cx.model.nodes.len())
+                    .chain(std::iter::once(b))
+                    .collect();
+                super::hinge::chain_masses(&mut cx.model, &chain, &h.region, h.material.density);
             }
         }
         for (p, r) in rigid {

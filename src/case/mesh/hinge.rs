@@ -18,7 +18,8 @@ use serde_json::Value;
 /// blank beam + notch + blank beam: the compliance between the two end faces is what the hinge
 /// analysis computes, and it is reproduced with no internal nodes (the flexibility element is
 /// co-rotational in the nonlinear solver, as the stage's hinges). Mass: the geometric volume of
-/// notch and blank times the density, lumped half at each node (translational only).
+/// notch and blank times the density, lumped on the nodes with rotary inertia
+/// ([`chain_masses`]).
 ///
 /// With `segments` ([`set_segments`]; 1 … 64, default 1) the element is split into a chain of that many
 /// co-rotational flexibility elements over equal lengths ([`hinge::split_flex`], as the
@@ -49,7 +50,6 @@ pub(super) fn hinge_element(
         ));
     }
     let region = hinge::hinge_element(&spec, &mat, len.max(notch_len)).map_err(herr)?;
-    let mass = mat.density * region.volume();
     let element = cx.model.add_element(fem::Element::Flex(fem::FlexElement {
         nodes: [a, b],
         compliance: region.compliance(),
@@ -60,18 +60,65 @@ pub(super) fn hinge_element(
         element,
         last: element,
         segments: 1,
+        inner_nodes: 0..0,
         material: mat,
         region,
         allowable: mat.allowable,
     });
-    for node in [a, b] {
-        cx.model.masses.push(fem::PointMass {
+    // The mass is lumped on the chain's nodes once the hinge is split ([`chain_masses`]).
+    Ok(())
+}
+
+/// Lumps the mass of a hinge element (density × geometric volume, tonne) on its chain `nodes`
+/// (end node a, the inner nodes of its segments, end node b, equally spaced): each node takes
+/// the mass of its share of the length (half a segment at an end, a whole segment inside) and
+/// that share's rotary inertia about the node, as a box of the blank's cross-section b₁ × b₂
+/// (w × h; h × h for a neck) and length ℓ along the axis (the rectangular prism of J. L. Meriam,
+/// L. G. Kraige, Engineering Mechanics: Dynamics, Appendix D, Table D/4, with the parallel-axis
+/// theorem for the end nodes):
+///
+/// ```text
+/// about the axis        m (b₁² + b₂²)/12
+/// about a transverse    m (ℓ²/12 + (b₁² + b₂²)/24)   inner node (share centred on it)
+///                       m (ℓ²/3 + (b₁² + b₂²)/24)    end node (share of length ℓ beside it)
+/// ```
+/// (the two transverse inertias averaged). Point masses take rotary inertia about the global
+/// axes, so the node's inertia tensor I = I_t 𝟙 + (I_a − I_t) e eᵀ (e the hinge axis) is given
+/// by its diagonal: exact for hinges along a global axis; an oblique hinge loses the products
+/// of inertia (I_a − I_t) eᵢ eⱼ. Without rotary inertia the inner nodes' rotations were
+/// massless and the mass matrix singular.
+pub(super) fn chain_masses(model: &mut fem::Model, nodes: &[usize], region: &hinge::HingeRegion, density: f64) {
+    let (Some(&a), Some(&b)) = (nodes.first(), nodes.last()) else {
+        return;
+    };
+    let (xa, xb) = (model.nodes[a], model.nodes[b]);
+    let axis: [f64; 3] = std::array::from_fn(|i| xb[i] - xa[i]);
+    let len = axis.iter().map(|v| v * v).sum::<f64>().sqrt();
+    if nodes.len() < 2 || len <= 0.0 {
+        return;
+    }
+    let e = axis.map(|v| v / len);
+    let p = &region.profile;
+    let (b1, b2) = if region.is_neck() { (p.h, p.h) } else { (p.w, p.h) };
+    let section = b1 * b1 + b2 * b2;
+    let segments = (nodes.len() - 1) as f64;
+    let (mass, seg) = (density * region.volume(), len / segments);
+    for (k, &node) in nodes.iter().enumerate() {
+        let end = k == 0 || k + 1 == nodes.len();
+        let (m, i_t) = if end {
+            let m = mass / segments / 2.0;
+            (m, m * ((seg / 2.0).powi(2) / 3.0 + section / 24.0))
+        } else {
+            let m = mass / segments;
+            (m, m * (seg * seg / 12.0 + section / 24.0))
+        };
+        let i_a = m * section / 12.0;
+        model.masses.push(fem::PointMass {
             node,
-            mass: mass / 2.0,
-            inertia: [0.0; 3],
+            mass: m,
+            inertia: e.map(|ei| i_t + (i_a - i_t) * ei * ei),
         });
     }
-    Ok(())
 }
 
 /// Makes the hinge element just built at JSON path `p` a chain of `segments` (1 … 64)

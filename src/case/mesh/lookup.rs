@@ -73,6 +73,8 @@ pub struct BuiltHinge {
     pub last: usize,
     /// Co-rotational segments the hinge is made of.
     pub segments: usize,
+    /// The inner nodes of its segments (after every node of the case; empty for one segment).
+    pub inner_nodes: std::ops::Range<usize>,
     /// Its material.
     pub material: Material,
     /// Its hinge region: compliance and stress model, as in the `hinge` analysis.

@@ -13,6 +13,10 @@ pub struct StaticOutput {
     /// (`beam_forces` in each load case of the result). Default false.
     #[serde(default)]
     pub section_forces: bool,
+    /// Also list the inner nodes of segmented hinge elements (`"segments"` > 1; numbered after
+    /// the case's nodes) in `displacements`. Default false: one row per node of the case.
+    #[serde(default)]
+    pub internal_nodes: bool,
 }
 
 /// One entry of `"compliance"`: the 6×6 compliance of a node with the model's supports.

@@ -42,7 +42,13 @@ impl Shard {
 
     /// How many of the designs `0..len` belong to this shard.
     pub fn count(&self, len: usize) -> usize {
-        (len + self.n - self.k) / self.n
+        // (len − k)/n + 1 designs k−1, k−1+n, … below len; written so that no N (up to
+        // usize::MAX) overflows.
+        if len < self.k {
+            0
+        } else {
+            (len - self.k) / self.n + 1
+        }
     }
 
     /// The `j`-th design index of this shard.

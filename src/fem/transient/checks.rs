@@ -6,10 +6,13 @@ use crate::fem::model::Model;
 
 fn check_options(model: &Model, opts: &TransientOptions) -> Result<(), FemError> {
     let bad = |s: String| Err(FemError::BadInput(s));
-    if !(opts.dt.is_finite() && opts.dt > 0.0) || opts.steps == 0 {
+    if !super::DT_RANGE.contains(&opts.dt) || opts.steps == 0 {
         return bad(format!(
-            "transient: time step {} s and {} steps: both must be > 0",
-            opts.dt, opts.steps
+            "transient: time step {} s and {} steps: the step must be from {:e} to {:e} s and the steps > 0",
+            opts.dt,
+            opts.steps,
+            super::DT_RANGE.start(),
+            super::DT_RANGE.end()
         ));
     }
     let (a, _, _) = opts.scheme.parameters();

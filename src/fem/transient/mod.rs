@@ -17,7 +17,7 @@
 //! (three with element damping) sparse products. Prescribed motions follow the same Newmark
 //! relations (their accelerations and velocities are the scheme's, so a velocity jump is an
 //! impulse spread over one step) and load the free equations through the coupling columns of
-//! M, C and K.
+//! M, C and K. A motion prescribed on a supported DOF moves that support (base excitation).
 
 mod checks;
 mod record;
@@ -91,6 +91,11 @@ impl Scheme {
     }
 }
 
+/// Usable time steps, s: below 1e-12 s (far under the period of any structural mode) the
+/// Newmark coefficient 1/(β Δt²) swamps the stiffness in floating point (and overflows near
+/// 1e-154 s); above 1e6 s the end time of a long run is no longer a usable number.
+pub const DT_RANGE: std::ops::RangeInclusive<f64> = 1e-12..=1e6;
+
 /// Options of [`solve_transient`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct TransientOptions {
@@ -161,7 +166,8 @@ struct Coupling {
 }
 
 /// Free-equation parts of the columns of M, K and the element damping for each prescribed DOF
-/// (from the system where those DOFs are free).
+/// (from the system where those DOFs are free). A prescribed DOF that a support also fixes is a
+/// moving support (base excitation): its support is released here so that it has a column.
 fn couplings(
     model: &Model,
     map: &DofMap,
@@ -171,6 +177,20 @@ fn couplings(
     if prescribed.is_empty() {
         return Ok(Vec::new());
     }
+    let moving = |s: &super::model::Support| prescribed.iter().any(|p| p.node == s.node && s.fix[p.dof.index()]);
+    let released;
+    let model = if model.supports.iter().any(moving) {
+        let mut m = model.clone();
+        for s in &mut m.supports {
+            for p in prescribed.iter().filter(|p| p.node == s.node) {
+                s.fix[p.dof.index()] = false;
+            }
+        }
+        released = m;
+        &released
+    } else {
+        model
+    };
     let all = DofMap::new(model, &[], None)?;
     let pattern = Pattern::new(model, &all)?;
     let (k, m, ce) = matrices(model, &all, &pattern, damping)?;
