@@ -233,13 +233,14 @@ impl Analysis for Static {
         if case.nonlinear {
             case::mesh::superelement::refuse_in(&case.model, "geometrically nonlinear statics")?;
         }
-        let (model, hinges) = case.model.build_with_hinges(true)?;
+        let (model, hinges) = case.model.build_with_hinges(true, case.nonlinear)?;
         let (mut r, raw, path_files) = match case.steps.filter(|_| case.nonlinear) {
             Some(steps) => super::fem_path::solve(&model, case, steps, ctx.with_files),
             None => fem_static::solve_with(&model, ctx.cache).map(|(r, raw)| (r, raw, Vec::new())),
         }
         .map_err(|e| super::constraints::singular_hint(e, &case.model))?;
         fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
+        r.model.extend(warn::default_segments_note(&hinges));
         if case.output.section_forces {
             fem_static::add_beam_forces(&mut r, &model, &raw);
         }

@@ -73,6 +73,9 @@ pub struct BuiltHinge {
     pub last: usize,
     /// Co-rotational segments the hinge is made of.
     pub segments: usize,
+    /// Whether `segments` is the nonlinear default ([`crate::hinge::NONLINEAR_SEGMENTS`], the
+    /// case giving none) rather than the case's.
+    pub default_segments: bool,
     /// Its material.
     pub material: Material,
     /// Its hinge region: compliance and stress model, as in the `hinge` analysis.
@@ -94,6 +97,9 @@ pub(super) struct Ctx<'a> {
     pub model_index: Vec<Option<usize>>,
     /// The hinge elements built so far (side table: `fem` knows no hinges).
     pub hinges: Vec<BuiltHinge>,
+    /// Whether the model is for a geometrically nonlinear run (hinge elements then default to
+    /// [`crate::hinge::NONLINEAR_SEGMENTS`] segments).
+    pub nonlinear: bool,
 }
 
 impl Ctx<'_> {
