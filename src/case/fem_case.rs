@@ -209,7 +209,7 @@ pub fn parse_static(value: Value, base: Option<&Path>) -> Result<StaticCase, Cas
     super::mesh::requests::check_compliance(&o.compliance, model.nodes.len())?;
     super::mesh::requests::check_track(o.track.as_ref(), nonlinear, model.nodes.len())?;
     for (i, c) in model.load_cases.iter().enumerate() {
-        super::mesh::path_control::check(&format!("load_cases[{i}]"), c, nonlinear, model.nodes.len())?;
+        super::mesh::path_control::check(&format!("load_cases[{i}]"), c, steps, model.nodes.len())?;
     }
     Ok(StaticCase {
         description: o.description,
