@@ -134,7 +134,7 @@ pub(super) fn arc_length(
                 steps += 1;
                 cut_run = 0;
                 internal = s.internal;
-                ctx.accept_point(path, st, lambda, stable, s.residuals, &opts.track)?;
+                ctx.accept_point(path, st, lambda, stable, s.residuals, &opts.track, name)?;
                 let grow = (a.target_iterations as f64 / s.iterations.max(1) as f64).sqrt();
                 ds = (ds * grow.clamp(0.5, 2.0)).clamp(a.min, a.max);
                 prev = Some((s.dq, s.dlam));
