@@ -227,7 +227,7 @@ impl Analysis for Static {
         if case.nonlinear {
             case::mesh::superelement::refuse_in(&case.model, "geometrically nonlinear statics")?;
         }
-        case.model.build().map(|_| ())
+        case.model.build_with_hinges(true, case.nonlinear).map(|_| ())
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         if case.nonlinear {

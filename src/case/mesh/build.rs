@@ -111,6 +111,12 @@ impl MeshSpec {
             let built = (cx.model.elements.len() > before).then_some(before);
             cx.model_index.push(built);
         }
+        if nonlinear {
+            let hinges = &cx.hinges;
+            super::corot_length::check(self, |i| {
+                hinges.iter().find(|h| h.case_element == i).map(|h| h.segments)
+            })?;
+        }
         // Hinges of several segments: inner nodes and further elements after the case's own,
         // so node and element indices of the case stay those of the model.
         for h in cx.hinges.iter_mut().filter(|h| h.segments > 1) {

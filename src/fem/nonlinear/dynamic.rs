@@ -20,7 +20,7 @@
 
 use super::convergence::{Convergence, Iterate, Verdict};
 use super::load_case::case_ctx;
-use super::recover::{capped_floor, EQUILIBRIUM_TOL};
+use super::recover::EQUILIBRIUM_TOL;
 use super::residual::{dot, norm};
 use super::state::{CaseCtx, ElemData, State};
 use super::{element_data, NonlinearOptions};
@@ -187,8 +187,7 @@ pub fn solve_transient_nonlinear(
             let rn = norm(&r);
             match test.check(&Iterate::after(&r, load, ev.internal, last.as_deref(), &delta)) {
                 Verdict::Converged => {
-                    let scale = load.max(internal);
-                    if rn > EQUILIBRIUM_TOL * scale + capped_floor(ctx.round, scale) {
+                    if rn > EQUILIBRIUM_TOL * load.max(internal) + ctx.round {
                         return Err(err(step, t1, rn, "the accepted state is not in dynamic equilibrium"));
                     }
                     let f: Vec<f64> = (0..n).map(|i| ma[i] + cv[i]).collect();
