@@ -257,6 +257,9 @@ impl Analysis for Static {
         ctx.warnings = if case.nonlinear {
             let mut w = warn::stretch_warnings(&model, &r);
             w.extend(warn::single_segment_hinge_warnings(&hinges));
+            w.extend(r.load_cases.iter().filter_map(|c| {
+                warn::equilibrium_floor_warning(&format!("load case \"{}\"", c.name), c.path_equilibrium_residual)
+            }));
             w.extend(stability(
                 r.load_cases
                     .iter()

@@ -107,3 +107,14 @@ pub fn default_segments_note(hinges: &[crate::case::mesh::BuiltHinge]) -> Option
         )
     })
 }
+
+/// A warning when a nonlinear state was accepted on the round-off floor of the stiffest element
+/// rather than within 1e-6 of its load (`what` names the load case or run, `relative` is its
+/// largest relative equilibrium residual): its forces and reactions are only that accurate.
+pub fn equilibrium_floor_warning(what: &str, relative: Option<f64>) -> Option<String> {
+    relative.filter(|e| *e > 1e-6).map(|e| {
+        format!(
+            "{what}: equilibrium verified only to {e:.1e} of the load (above 1e-6, within the round-off floor of the stiffest element): reactions and element forces are no more accurate than that; very stiff or very short elements cause it"
+        )
+    })
+}

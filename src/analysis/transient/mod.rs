@@ -379,6 +379,7 @@ impl Analysis for TransientKind {
         }
         .map_err(|e| RunError::Analysis(super::AnalysisError::new("transient", e.to_string())))?;
         ctx.warnings.extend(raw.warnings.iter().cloned());
+        ctx.warnings.extend(super::warn::equilibrium_floor_warning("nonlinear transient", raw.equilibrium));
         if ctx.with_files {
             ctx.files.extend(output::files(&model, &inputs.opts, &raw)?);
         }

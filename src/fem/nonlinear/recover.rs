@@ -73,7 +73,7 @@ pub(super) fn finish(
     for (n, r) in &reactions {
         statics.add_reaction(pos(*n), r);
     }
-    verify_equilibrium(ctx, st, name, steps, lambda, &f_int, &f_app, &gi, &reactions)?;
+    let equilibrium = verify_equilibrium(ctx, st, name, steps, lambda, &f_int, &f_app, &gi, &reactions)?;
     let displacements: Vec<[f64; 6]> = (0..nn)
         .map(|n| {
             let rv = corot::rot_log(&st.r[n]);
@@ -84,7 +84,9 @@ pub(super) fn finish(
         st.r.iter()
             .map(|r| std::array::from_fn(|i| std::array::from_fn(|j| r[(i, j)])))
             .collect();
+    let equilibrium = path.iter().map(|p| p.equilibrium).fold(equilibrium, f64::max);
     Ok(NonlinearCase {
+        equilibrium,
         fe: CaseResult::new(name, displacements, reactions, elements, statics),
         rotations,
         path,
@@ -106,7 +108,8 @@ pub(super) const EQUILIBRIUM_TOL: f64 = 1e-6;
 /// Checks the accepted path point `st` at `lambda` (point `step` of load case `name`) as
 /// [`finish`] checks the final state ([`verify_equilibrium`]): every returned state of the
 /// path (load control, arc length, tracked steps) is balanced or the solve fails naming it.
-pub(super) fn verify_point(ctx: &CaseCtx, st: &State, name: &str, step: usize, lambda: f64) -> Result<(), FemError> {
+/// Returns the relative residual ([`PathPoint::equilibrium`]).
+pub(super) fn verify_point(ctx: &CaseCtx, st: &State, name: &str, step: usize, lambda: f64) -> Result<f64, FemError> {
     let (ev, _) = ctx
         .residual(st, lambda)
         .ok_or_else(|| fail(name, step, lambda, f64::NAN, "degenerate element or non-finite internal force"))?;
@@ -123,7 +126,8 @@ pub(super) fn verify_point(ctx: &CaseCtx, st: &State, name: &str, step: usize, l
 /// their small-rotation moments are not objective) summed as forces and moments about the
 /// origin at the deformed positions — both within [`EQUILIBRIUM_TOL`] of the applied load
 /// (plus the reactions where displacements are prescribed), with a round-off allowance of
-/// 1e-11 of the summed element forces. Fails naming the step otherwise.
+/// 1e-11 of the summed element forces. Fails naming the step otherwise; returns the largest
+/// of the three residuals over its scale ([`PathPoint::equilibrium`]).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn verify_equilibrium(
     ctx: &CaseCtx,
@@ -135,7 +139,7 @@ pub(super) fn verify_equilibrium(
     f_app: &[f64],
     gi: &[f64],
     reactions: &[(usize, [f64; 6])],
-) -> Result<(), FemError> {
+) -> Result<f64, FemError> {
     let model = ctx.model;
     let nn = model.nodes.len();
     let pos = |n: usize| Vector3::from(model.nodes[n]) + st.u[n];
@@ -192,7 +196,8 @@ pub(super) fn verify_equilibrium(
     let force_ok = fsum <= EQUILIBRIUM_TOL * force_scale + round;
     let moment_ok = msum <= EQUILIBRIUM_TOL * moment_scale + round * lever;
     if nodal_ok && force_ok && moment_ok {
-        return Ok(());
+        let rel = |r: f64, scale: f64| if r == 0.0 { 0.0 } else { r / scale };
+        return Ok(rel(rn, nodal_scale).max(rel(fsum, force_scale)).max(rel(msum, moment_scale)));
     }
     Err(fail(
         name,

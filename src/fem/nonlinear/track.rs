@@ -99,8 +99,9 @@ impl CaseCtx<'_> {
         track: &[NodeDof],
         name: &str,
     ) -> Result<(), FemError> {
-        super::recover::verify_point(self, st, name, path.len(), lambda)?;
+        let equilibrium = super::recover::verify_point(self, st, name, path.len(), lambda)?;
         path.push(PathPoint {
+            equilibrium,
             lambda,
             values: self.tracked(st, track),
             stable,
