@@ -158,3 +158,49 @@ fn path_control_errors_name_the_field() {
         assert!(stderr(&out).contains(path), "{extra}: {}", stderr(&out));
     }
 }
+
+/// Arc-length bounds the solve cannot use (min above max or above the initial arc length,
+/// given or defaulted: initial 1/steps, max 20 × initial) are refused by `check` and `run` alike
+/// with exit 2 at `arc_length.min`, naming the bound. Before: `check` passed them and `run`
+/// panicked in `f64::clamp` (exit 101).
+#[test]
+fn arc_length_bounds_refused_at_check() {
+    let arc = |a: &str| format!(r#", "control": "arc_length", "arc_length": {a}"#);
+    for (extra, steps, rule) in [
+        (arc(r#"{"min": 0.5, "max": 0.1}"#), None, "must not exceed `max` (0.1)"),
+        // steps 50: initial 0.02, max 0.4 by default.
+        (arc(r#"{"min": 0.5}"#), Some(50), "must not exceed the default `max` (20 × initial = 4e-1)"),
+        (arc(r#"{"min": 0.5, "max": 1}"#), None, "must not exceed the default `initial` (1/steps = 5e-2)"),
+    ] {
+        let mut text = truss_case(&extra, true);
+        if let Some(n) = steps {
+            text = text.replacen(r#""nonlinear": true,"#, &format!(r#""nonlinear": true, "steps": {n},"#), 1);
+        }
+        let d = tempdir("arc_bounds");
+        let p = d.join("case.json");
+        std::fs::write(&p, &text).unwrap();
+        for cmd in ["check", "run"] {
+            let out = run_in(&d, &[cmd, p.to_str().unwrap()]);
+            let err = stderr(&out);
+            assert_eq!(out.status.code(), Some(2), "{cmd} {extra}: {err}");
+            assert!(err.contains("load_cases[0].arc_length.min"), "{cmd} {extra}: {err}");
+            assert!(err.contains("0.5") && err.contains(rule), "{cmd} {extra}: {err}");
+        }
+        common::cleanup(&d);
+    }
+}
+
+/// Arc length on a model with every DOF supported: a clear analysis error naming the load case
+/// and step (exit 1), not a panic (before: `Vec::remove(0)` on the empty solution, exit 101).
+#[test]
+fn arc_length_without_free_dof_is_an_error() {
+    let text = truss_case(r#", "control": "arc_length""#, true).replace(
+        r#"{"node": 1, "fix": ["uy", "rx", "rz"]}"#,
+        r#"{"node": 1, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}, {"node": 0, "fix": ["ry"]}, {"node": 2, "fix": ["ry"]}"#,
+    );
+    let out = run_case_text("arc_no_dof", &text);
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(err.contains("load case \"P\"") && err.contains("step 1"), "{err}");
+    assert!(err.contains("no free degree of freedom"), "{err}");
+}

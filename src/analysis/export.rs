@@ -27,7 +27,7 @@ pub fn check_exportable(case: &Case) -> Result<(), CaseError> {
 /// prescribed motions are not removed: their DOFs stay equations).
 pub fn matrix_files(case: &Case) -> Result<super::Files, RunError> {
     let model = match case {
-        Case::Static(s) => s.model.build_with_hinges(true)?.0,
+        Case::Static(s) => s.model.build_with_hinges(true, false)?.0,
         Case::Modal(m) => m.model.build_model(false)?,
         Case::Frf(f) => f.model.build_model(false)?,
         Case::Transient(t) => t.model.build_model(false)?,

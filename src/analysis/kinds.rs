@@ -237,13 +237,13 @@ impl Analysis for Static {
         if case.nonlinear {
             case::mesh::superelement::refuse_in(&case.model, "geometrically nonlinear statics")?;
         }
-        case.model.build().map(|_| ())
+        case.model.build_with_hinges(true, case.nonlinear).map(|_| ())
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         if case.nonlinear {
             case::mesh::superelement::refuse_in(&case.model, "geometrically nonlinear statics")?;
         }
-        let (model, hinges, case_index) = case.model.build_indexed(true)?;
+        let (model, hinges, case_index) = case.model.build_indexed(true, case.nonlinear)?;
         let (mut r, raw, path_files) = match case.steps.filter(|_| case.nonlinear) {
             Some(steps) => super::fem_path::solve(&model, case, steps, ctx.with_files),
             None => fem_static::solve_with(&model, ctx.cache).map(|(r, raw)| (r, raw, Vec::new())),
@@ -251,6 +251,7 @@ impl Analysis for Static {
         .map_err(|e| fem_static::inner_nodes::label(super::constraints::singular_hint(e, &case.model), &hinges))?;
         fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
         fem_static::add_headlines(&mut r, &model, &case_index, &hinges);
+        r.model.extend(warn::default_segments_note(&hinges));
         if case.output.section_forces {
             fem_static::add_beam_forces(&mut r, &model, &raw);
         }
@@ -271,8 +272,13 @@ impl Analysis for Static {
         for (ic, row) in r.load_cases.iter_mut().enumerate() {
             let w = if case.nonlinear {
                 let stretch = warn::stretch_warning(&model, ic, row);
+                let floor = warn::equilibrium_floor_warning(
+                    &format!("load case \"{}\"", row.name),
+                    row.path_equilibrium_residual,
+                );
                 stretch
                     .into_iter()
+                    .chain(floor)
                     .chain(fem_static::stability_text(
                         &row.name,
                         row.stable,

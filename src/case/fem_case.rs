@@ -218,7 +218,7 @@ pub fn parse_static(value: Value, base: &crate::case::Source<'_>) -> Result<Stat
     super::mesh::requests::check_track(o.track.as_ref(), nonlinear, model.nodes.len())?;
     super::mesh::metrics::check_metrics(&o.metrics, &model, nonlinear)?;
     for (i, c) in model.load_cases.iter().enumerate() {
-        super::mesh::path_control::check(&format!("load_cases[{i}]"), c, nonlinear, model.nodes.len())?;
+        super::mesh::path_control::check(&format!("load_cases[{i}]"), c, steps, model.nodes.len())?;
     }
     Ok(StaticCase {
         description: o.description,

@@ -7,6 +7,18 @@ use crate::fem::{self, Model};
 use crate::material::Material;
 use nalgebra::{Matrix6, Vector3};
 
+/// Co-rotational segments a hinge element is split into in a geometrically nonlinear run when
+/// its case gives no `segments`. Chosen by measurement against 16 segments (circular notch
+/// R = 5, t = 1 mm in a 10 × 10 mm Al 7075 bar): the parallelogram guide of
+/// `cases/parallelogram_guide.json` at a 1 mm stroke (0.57° per hinge) drops 4.908 µm with 4
+/// segments against 4.920 µm (−0.24 %; one segment: 4.620 µm, −6.1 %), the lever of
+/// `cases/lever_amplifier.json` driven 1 mm (5.7°) peaks at 1533 MPa against 1537 MPa (−0.22 %;
+/// one segment −5.6 %; odd counts put no node at the notch centre and do worse: 3 segments
+/// −1.1 %); at 17° the peak stress is −0.55 %. Rotations agree to 1e-5 at every count. The
+/// error of a fixed count is nearly independent of the rotation (the lost shortening is a fixed
+/// fraction of ½∫θ² ds), so the count is fixed; the stage's nonlinear solve uses the same.
+pub const NONLINEAR_SEGMENTS: usize = 4;
+
 /// Replaces the flexibility element `el` of `model` (spanning the hinge region `profile`, one
 /// element of compliance `single`) by a chain of `n` flexibility elements over equal
 /// sub-intervals of the region; returns the index of the last one (the first keeps index `el`,

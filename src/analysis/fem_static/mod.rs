@@ -108,6 +108,7 @@ pub fn solve_nonlinear_each(
         .zip(opts)
         .map(|((c, lc), o)| StaticCaseRow {
             stable: Some(c.stable),
+            path_equilibrium_residual: Some(c.equilibrium),
             critical_load_factor: c.critical_load_factor,
             track: track.map(|t| super::track::row(t, lc, c, &o.track)),
             ..row(&c.fe)
@@ -204,6 +205,7 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
             })
             .collect(),
         equilibrium_residual: c.statics.residual(),
+        path_equilibrium_residual: None,
         stable: None,
         critical_load_factor: None,
         critical_points: Vec::new(),

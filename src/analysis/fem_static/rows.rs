@@ -36,6 +36,14 @@ pub struct StaticCaseRow {
     pub shell_von_mises: Vec<ShellVonMises>,
     /// Sum of loads plus reactions (should vanish): [N, N, N, N·mm, N·mm, N·mm].
     pub equilibrium_residual: [f64; 6],
+    /// Nonlinear only: the largest equilibrium residual over every returned state of the path
+    /// (each accepted load step or arc-length point, the final state included), relative to
+    /// its load scale: the largest of nodal residual, unbalanced total force and unbalanced
+    /// total moment at the deformed positions, each over the applied loads (with prescribed
+    /// displacements, the reactions too). Every state is checked to 1e-6 of it (plus a
+    /// round-off floor of the stiffest element).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub path_equilibrium_residual: Option<f64>,
     /// Nonlinear only: whether every converged point of the equilibrium path was stable
     /// (positive definite tangent stiffness, no jump over a limit point).
     #[serde(skip_serializing_if = "Option::is_none")]

@@ -395,11 +395,11 @@ impl Analysis for TransientKind {
     type Result = TransientResult;
 
     fn check(case: &Self::Case) -> Result<(), CaseError> {
-        let (model, hinges, index) = case.model.build_indexed(false)?;
+        let (model, hinges, index) = case.model.build_indexed(false, case.nonlinear)?;
         case.inputs(&model, &index, &hinges).map(|_| ())
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        let (model, hinges, index) = case.model.build_indexed(false)?;
+        let (model, hinges, index) = case.model.build_indexed(false, case.nonlinear)?;
         let mut inputs = case.inputs(&model, &index, &hinges)?;
         if !ctx.with_files {
             inputs.opts.snapshot_every = 0;
@@ -412,11 +412,13 @@ impl Analysis for TransientKind {
         }
         .map_err(|e| RunError::Analysis(super::AnalysisError::new("transient", e.to_string())))?;
         ctx.warnings.extend(raw.warnings.iter().cloned());
+        ctx.warnings.extend(super::warn::equilibrium_floor_warning("nonlinear transient", raw.equilibrium));
         if ctx.with_files {
             ctx.files.extend(output::files(&model, &inputs.opts, &raw)?);
         }
         let mut r = output::result(case, &inputs.opts, &raw);
-        for note in crate::fem::superelement::notes(&model) {
+        let segments = super::warn::default_segments_note(&hinges);
+        for note in crate::fem::superelement::notes(&model).into_iter().chain(segments) {
             r.model = format!("{}; {note}", r.model);
         }
         Ok(r)

@@ -50,6 +50,11 @@ pub struct TransientResult {
     pub n_eq: usize,
     /// The mechanics: linear, or the geometrically nonlinear model and its approximations.
     pub model: String,
+    /// Nonlinear only: the largest dynamic equilibrium residual of an accepted step relative
+    /// to its force scale (applied load, or inertia and internal forces when larger); every
+    /// step is checked to 1e-6 of it (plus a round-off floor of the stiffest element).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub equilibrium_residual: Option<f64>,
     pub damping: DampingOut,
     pub records: Vec<RecordOut>,
     /// Times of the series, s (only with `"histories": true`).
@@ -106,6 +111,7 @@ pub fn result(case: &TransientCase, opts: &TransientOptions, raw: &TransientResu
         } else {
             "linear (small displacements)".into()
         },
+        equilibrium_residual: raw.equilibrium,
         damping: DampingOut {
             alpha: opts.damping.alpha,
             beta: opts.damping.beta,

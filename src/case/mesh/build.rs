@@ -44,13 +44,19 @@ impl MeshSpec {
 
     /// As [`MeshSpec::build`]; `need_loads = false` accepts a model without load cases (modal).
     pub fn build_model(&self, need_loads: bool) -> Result<fem::Model, CaseError> {
-        self.build_with_hinges(need_loads).map(|(m, _)| m)
+        self.build_with_hinges(need_loads, false).map(|(m, _)| m)
     }
 
     /// As [`MeshSpec::build_model`], also returning the model's hinge elements (their element
-    /// index, hinge region and allowable stress) for the per-hinge results.
-    pub fn build_with_hinges(&self, need_loads: bool) -> Result<(fem::Model, Vec<BuiltHinge>), CaseError> {
-        self.build_indexed(need_loads).map(|(m, h, _)| (m, h))
+    /// index, hinge region and allowable stress) for the per-hinge results. `nonlinear`: the
+    /// model is for a geometrically nonlinear run (hinge elements without `segments` are then
+    /// split into [`crate::hinge::NONLINEAR_SEGMENTS`]).
+    pub fn build_with_hinges(
+        &self,
+        need_loads: bool,
+        nonlinear: bool,
+    ) -> Result<(fem::Model, Vec<BuiltHinge>), CaseError> {
+        self.build_indexed(need_loads, nonlinear).map(|(m, h, _)| (m, h))
     }
 
     /// As [`MeshSpec::build_with_hinges`], also returning the model element index of each case
@@ -59,6 +65,7 @@ impl MeshSpec {
     pub fn build_indexed(
         &self,
         need_loads: bool,
+        nonlinear: bool,
     ) -> Result<(fem::Model, Vec<BuiltHinge>, Vec<Option<usize>>), CaseError> {
         let materials = Named::validate("material", "materials", &self.materials, |m, p| m.resolve(p))?;
         let sections = Named::validate("section", "sections", &self.sections, section)?;
@@ -73,6 +80,7 @@ impl MeshSpec {
             frame_owner: BTreeMap::new(),
             model_index: Vec::with_capacity(self.elements.len()),
             hinges: Vec::new(),
+            nonlinear,
         };
         for (i, x) in self.nodes.iter().enumerate() {
             for (k, v) in x.iter().enumerate() {
@@ -102,6 +110,12 @@ impl MeshSpec {
             }
             let built = (cx.model.elements.len() > before).then_some(before);
             cx.model_index.push(built);
+        }
+        if nonlinear {
+            let hinges = &cx.hinges;
+            super::corot_length::check(self, |i| {
+                hinges.iter().find(|h| h.case_element == i).map(|h| h.segments)
+            })?;
         }
         // Hinges of several segments: inner nodes and further elements after the case's own,
         // so node and element indices of the case stay those of the model.

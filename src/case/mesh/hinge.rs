@@ -21,7 +21,9 @@ use serde_json::Value;
 /// notch and blank times the density, lumped on the nodes with rotary inertia
 /// ([`chain_masses`]).
 ///
-/// With `segments` ([`set_segments`]; 1 … 64, default 1) the element is split into a chain of that many
+/// With `segments` ([`set_segments`]; 1 … 64; default 1, or [`hinge::NONLINEAR_SEGMENTS`] in a
+/// geometrically nonlinear run, where one co-rotational element loses the shortening along the
+/// bent notch) the element is split into a chain of that many
 /// co-rotational flexibility elements over equal lengths ([`hinge::split_flex`], as the
 /// stage's nonlinear solve), once every case element is built, so the inner nodes and
 /// elements come after the case's own.
@@ -59,8 +61,9 @@ pub(super) fn hinge_element(
         case_element,
         element,
         last: element,
-        segments: 1,
         inner_nodes: 0..0,
+        segments: if cx.nonlinear { hinge::NONLINEAR_SEGMENTS } else { 1 },
+        default_segments: cx.nonlinear,
         material: mat,
         region,
         allowable: mat.allowable,
@@ -133,6 +136,7 @@ pub(super) fn set_segments(cx: &mut Ctx, p: &str, segments: usize) -> Result<(),
     }
     if let Some(h) = cx.hinges.last_mut() {
         h.segments = segments;
+        h.default_segments = false;
     }
     Ok(())
 }

@@ -75,6 +75,9 @@ pub struct BuiltHinge {
     pub segments: usize,
     /// The inner nodes of its segments (after every node of the case; empty for one segment).
     pub inner_nodes: std::ops::Range<usize>,
+    /// Whether `segments` is the nonlinear default ([`crate::hinge::NONLINEAR_SEGMENTS`], the
+    /// case giving none) rather than the case's.
+    pub default_segments: bool,
     /// Its material.
     pub material: Material,
     /// Its hinge region: compliance and stress model, as in the `hinge` analysis.
@@ -96,6 +99,9 @@ pub(super) struct Ctx<'a> {
     pub model_index: Vec<Option<usize>>,
     /// The hinge elements built so far (side table: `fem` knows no hinges).
     pub hinges: Vec<BuiltHinge>,
+    /// Whether the model is for a geometrically nonlinear run (hinge elements then default to
+    /// [`crate::hinge::NONLINEAR_SEGMENTS`] segments).
+    pub nonlinear: bool,
 }
 
 impl Ctx<'_> {

@@ -7,8 +7,10 @@ use crate::case::error::CaseError;
 use crate::fem::{self, NodeDof};
 
 /// Checks the path-control fields of load case `c` (JSON path `p`) for a model of `nodes`
-/// nodes; `nonlinear`: the case is nonlinear (they are refused otherwise).
-pub fn check(p: &str, c: &LoadCaseSpec, nonlinear: bool, nodes: usize) -> Result<(), CaseError> {
+/// nodes; `steps`: the nominal load steps of a nonlinear case, `None` for a linear one (the
+/// fields are refused then).
+pub fn check(p: &str, c: &LoadCaseSpec, steps: Option<usize>, nodes: usize) -> Result<(), CaseError> {
+    let nonlinear = steps.is_some();
     let given = [
         ("control", c.control.is_some()),
         ("arc_length", c.arc_length.is_some()),
@@ -60,6 +62,27 @@ pub fn check(p: &str, c: &LoadCaseSpec, nonlinear: bool, nodes: usize) -> Result
                     format!("must be at least `initial` ({i})"),
                 ));
             }
+        }
+        // With the defaults filled in (initial 1/steps, min 1e-4 × initial, max 20 × initial)
+        // the solve needs min ≤ initial ≤ max.
+        let [initial, min, max] = a.resolve().bounds(steps.unwrap_or(1));
+        let given = |k: &str, v: Option<f64>, d: &str, resolved: f64| match v {
+            Some(v) => format!("`{k}` ({v})"),
+            None => format!("the default `{k}` ({d} = {resolved:e})"),
+        };
+        if min > max {
+            return Err(CaseError::value(
+                at("min"),
+                min,
+                format!("must not exceed {}", given("max", a.max, "20 × initial", max)),
+            ));
+        }
+        if min > initial {
+            return Err(CaseError::value(
+                at("min"),
+                min,
+                format!("must not exceed {}", given("initial", a.initial, "1/steps", initial)),
+            ));
         }
         if let Some(t) = a.target_iterations.filter(|t| !(1..=50).contains(t)) {
             return Err(CaseError::value(

@@ -56,6 +56,27 @@ pub(super) fn arc_length(
     stab: &mut Stability,
 ) -> Result<(usize, usize, usize, f64), FemError> {
     let a = opts.arc.resolved(opts.steps);
+    if !(a.min <= a.initial && a.initial <= a.max) {
+        return Err(fail(
+            name,
+            1,
+            0.0,
+            f64::NAN,
+            format!(
+                "arc length: the bounds are inconsistent (min {:e} ≤ initial {:e} ≤ max {:e} is needed)",
+                a.min, a.initial, a.max
+            ),
+        ));
+    }
+    if ctx.n_eq() == 0 {
+        return Err(fail(
+            name,
+            1,
+            0.0,
+            0.0,
+            "arc length: the model has no free degree of freedom (every DOF is supported, prescribed or tied): there is no path to follow; use load control",
+        ));
+    }
     let f_red = ctx.reduced_load(st);
     let ev0 = ctx
         .evaluate(st, 0.0, ctx.newton_tangent())
@@ -64,7 +85,9 @@ pub(super) fn arc_length(
         .solve(&ev0.values, std::slice::from_ref(&f_red))
         .map_err(|r| fail(name, 1, 0.0, norm(&ev0.r), r))?
         .x
-        .remove(0);
+        .into_iter()
+        .next()
+        .ok_or_else(|| fail(name, 1, 0.0, norm(&ev0.r), "arc length: the tangent solve returned no solution"))?;
     let qref = norm(&t0);
     if !(qref > 0.0 && qref.is_finite()) {
         return Err(fail(name, 1, 0.0, norm(&ev0.r), "arc length: no load to follow"));
@@ -111,7 +134,7 @@ pub(super) fn arc_length(
                 steps += 1;
                 cut_run = 0;
                 internal = s.internal;
-                ctx.accept_point(path, st, lambda, stable, s.residuals, &opts.track)?;
+                ctx.accept_point(path, st, lambda, stable, s.residuals, &opts.track, name)?;
                 let grow = (a.target_iterations as f64 / s.iterations.max(1) as f64).sqrt();
                 ds = (ds * grow.clamp(0.5, 2.0)).clamp(a.min, a.max);
                 prev = Some((s.dq, s.dlam));
@@ -166,7 +189,12 @@ fn arc_step(
     let ev = ctx
         .evaluate(st, lambda, ctx.newton_tangent())
         .ok_or("degenerate configuration")?;
-    let dt = ctx.solve(&ev.values, &[f_red.to_vec()])?.x.remove(0);
+    let dt = ctx
+        .solve(&ev.values, &[f_red.to_vec()])?
+        .x
+        .into_iter()
+        .next()
+        .ok_or("the tangent solve returned no solution")?;
     let tn = m.dot(&dt, 1.0, &dt, 1.0).sqrt();
     if !(tn > 0.0 && tn.is_finite()) {
         return Err("the tangent is singular".into());
@@ -254,13 +282,24 @@ fn arc_step(
 }
 
 impl ArcLength {
+    /// The arc lengths `[initial, min, max]` with defaults filled in for `steps` nominal load
+    /// steps (dimensionless, as [`ArcLength`]); the solve needs min ≤ initial ≤ max.
+    pub fn bounds(&self, steps: usize) -> [f64; 3] {
+        let initial = self.initial.unwrap_or(1.0 / steps.max(1) as f64);
+        [
+            initial,
+            self.min.unwrap_or(initial * 1e-4),
+            self.max.unwrap_or(initial * 20.0).max(initial),
+        ]
+    }
+
     /// The parameters with defaults filled in for `steps` nominal load steps.
     pub(super) fn resolved(&self, steps: usize) -> ResolvedArc {
-        let initial = self.initial.unwrap_or(1.0 / steps.max(1) as f64);
+        let [initial, min, max] = self.bounds(steps);
         ResolvedArc {
             initial,
-            min: self.min.unwrap_or(initial * 1e-4),
-            max: self.max.unwrap_or(initial * 20.0).max(initial),
+            min,
+            max,
             target_iterations: self.target_iterations,
             spherical: self.spherical,
             max_steps: self.max_steps,

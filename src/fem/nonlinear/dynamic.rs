@@ -147,6 +147,7 @@ pub fn solve_transient_nonlinear(
         energy: Vec::new(),
         n_eq: n,
         warnings: Vec::new(),
+        equilibrium: Some(0.0),
     };
     // Initial acceleration: M a₀ = f(0) (at rest and undeformed, f_int = 0).
     ctx.f_ext = force(0.0);
@@ -187,8 +188,12 @@ pub fn solve_transient_nonlinear(
             let rn = norm(&r);
             match test.check(&Iterate::after(&r, load, ev.internal, last.as_deref(), &delta)) {
                 Verdict::Converged => {
-                    if rn > EQUILIBRIUM_TOL * load.max(internal) + ctx.round {
+                    let scale = load.max(internal);
+                    if rn > EQUILIBRIUM_TOL * scale + ctx.round {
                         return Err(err(step, t1, rn, "the accepted state is not in dynamic equilibrium"));
+                    }
+                    if rn > 0.0 {
+                        res.equilibrium = res.equilibrium.map(|e| e.max(rn / scale));
                     }
                     let f: Vec<f64> = (0..n).map(|i| ma[i] + cv[i]).collect();
                     (v, a, internal, inertia, done) = (v1, a1, ev.internal, norm(&f), true);

@@ -45,6 +45,7 @@ pub(super) fn solve_case(
         values: ctx.tracked(&st, &opts.track),
         stable: true,
         residuals: Vec::new(),
+        equilibrium: 0.0,
     }];
     ctx.record_step(&st, 0.0, 0)?;
     let has_prescribed = ctx.u_c.iter().any(|&v| v != 0.0);

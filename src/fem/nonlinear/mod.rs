@@ -240,6 +240,12 @@ pub struct PathPoint {
     /// Euclidean norms of the residual at each Newton iteration of the step that reached this
     /// point (N and N·mm mixed, as the equations), the last one converged: the iteration log.
     pub residuals: Vec<f64>,
+    /// Equilibrium residual of this state relative to its load scale: the largest of the
+    /// nodal residual, the unbalanced total force and the unbalanced total moment (statics at
+    /// the deformed positions), each over its scale (applied loads; with prescribed
+    /// displacements the reactions too) — what the equilibrium check bounds by 1e-6 (plus a
+    /// round-off floor of the stiffest element). 0 at the unloaded start.
+    pub equilibrium: f64,
 }
 
 /// Result of one load case.
@@ -275,6 +281,9 @@ pub struct NonlinearCase {
     /// With [`NonlinearOptions::step_track`]: the tracked quantities at every accepted point of
     /// the path, in path order (empty otherwise).
     pub step_quantities: Vec<StepQuantities>,
+    /// The largest [`PathPoint::equilibrium`] over every returned state: each accepted point of
+    /// the path and the final state.
+    pub equilibrium: f64,
 }
 
 /// Results of all load cases, in model order.

@@ -177,7 +177,7 @@ pub(super) fn load_control(
                 lambda = target;
                 cut_run = 0;
                 prev_stable = stable;
-                ctx.accept_point(path, st, lambda, stable, nk.residuals, &opts.track)?;
+                ctx.accept_point(path, st, lambda, stable, nk.residuals, &opts.track, name)?;
                 if dl < dl0 && nk.iterations <= 4 {
                     dl = (dl * 2.0).min(dl0);
                 } else if nk.iterations >= 12 && dl * 0.5 >= dl_min {

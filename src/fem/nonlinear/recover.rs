@@ -73,7 +73,7 @@ pub(super) fn finish(
     for (n, r) in &reactions {
         statics.add_reaction(pos(*n), r);
     }
-    verify_equilibrium(ctx, st, name, steps, lambda, &f_int, &f_app, &gi, &reactions)?;
+    let equilibrium = verify_equilibrium(ctx, st, name, steps, lambda, &f_int, &f_app, &gi, &reactions)?;
     let displacements: Vec<[f64; 6]> = (0..nn)
         .map(|n| {
             let rv = corot::rot_log(&st.r[n]);
@@ -84,7 +84,9 @@ pub(super) fn finish(
         st.r.iter()
             .map(|r| std::array::from_fn(|i| std::array::from_fn(|j| r[(i, j)])))
             .collect();
+    let equilibrium = path.iter().map(|p| p.equilibrium).fold(equilibrium, f64::max);
     Ok(NonlinearCase {
+        equilibrium,
         fe: CaseResult::new(name, displacements, reactions, elements, statics),
         rotations,
         path,
@@ -103,13 +105,29 @@ pub(super) fn finish(
 /// when displacements are prescribed).
 pub(super) const EQUILIBRIUM_TOL: f64 = 1e-6;
 
+/// Checks the accepted path point `st` at `lambda` (point `step` of load case `name`) as
+/// [`finish`] checks the final state ([`verify_equilibrium`]): every returned state of the
+/// path (load control, arc length, tracked steps) is balanced or the solve fails naming it.
+/// Returns the relative residual ([`PathPoint::equilibrium`]).
+pub(super) fn verify_point(ctx: &CaseCtx, st: &State, name: &str, step: usize, lambda: f64) -> Result<f64, FemError> {
+    let (ev, _) = ctx
+        .residual(st, lambda)
+        .ok_or_else(|| fail(name, step, lambda, f64::NAN, "degenerate element or non-finite internal force"))?;
+    let f_app: Vec<f64> = ctx.f_ext.iter().map(|v| v * lambda).collect();
+    let f_int: Vec<f64> = ev.net.iter().zip(&f_app).map(|(a, b)| a + b).collect();
+    let gi = ctx.to_independent(&ev.arms, &ev.net);
+    let reactions = recovery::reactions_at(&ctx.map, &gi);
+    verify_equilibrium(ctx, st, name, step, lambda, &f_int, &f_app, &gi, &reactions)
+}
+
 /// Checks the accepted state: (1) the unbalanced force and moment at every free equation
 /// (nodal equilibrium at the deformed positions, spins as rotational unknowns), and (2) the
 /// global statics — applied loads, reactions and spring forces (springs count as supports:
 /// their small-rotation moments are not objective) summed as forces and moments about the
 /// origin at the deformed positions — both within [`EQUILIBRIUM_TOL`] of the applied load
 /// (plus the reactions where displacements are prescribed), with a round-off allowance of
-/// 1e-11 of the summed element forces. Fails naming the step otherwise.
+/// 1e-11 of the summed element forces. Fails naming the step otherwise; returns the largest
+/// of the three residuals over its scale ([`PathPoint::equilibrium`]).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn verify_equilibrium(
     ctx: &CaseCtx,
@@ -121,7 +139,7 @@ pub(super) fn verify_equilibrium(
     f_app: &[f64],
     gi: &[f64],
     reactions: &[(usize, [f64; 6])],
-) -> Result<(), FemError> {
+) -> Result<f64, FemError> {
     let model = ctx.model;
     let nn = model.nodes.len();
     let pos = |n: usize| Vector3::from(model.nodes[n]) + st.u[n];
@@ -164,7 +182,8 @@ pub(super) fn verify_equilibrium(
     let residual: Vec<f64> = ctx.map.eq_dof.iter().map(|&g| gi[g]).collect();
     let rn = norm(&residual);
     let round = ctx.round + 1e-13 * internal;
-    let nodal_ok = rn <= EQUILIBRIUM_TOL * norm(f_app).max(fi) + round;
+    let nodal_scale = norm(f_app).max(fi);
+    let nodal_ok = rn <= EQUILIBRIUM_TOL * nodal_scale + round;
     let fsum = Vector3::new(sum[0], sum[1], sum[2]).norm();
     let msum = Vector3::new(sum[3], sum[4], sum[5]).norm();
     // Moments about the origin: forces act on levers up to the model's extent from it.
@@ -173,10 +192,12 @@ pub(super) fn verify_equilibrium(
     // moment loads the structure with internal force pairs of order M/size; without this term a
     // moment-only load case would be checked against a zero force).
     let size = model_size(model, st).max(1e-300);
-    let force_ok = fsum <= EQUILIBRIUM_TOL * (scale_f + scale_m / size) + round;
-    let moment_ok = msum <= EQUILIBRIUM_TOL * (scale_m + lever * scale_f) + round * lever;
+    let (force_scale, moment_scale) = (scale_f + scale_m / size, scale_m + lever * scale_f);
+    let force_ok = fsum <= EQUILIBRIUM_TOL * force_scale + round;
+    let moment_ok = msum <= EQUILIBRIUM_TOL * moment_scale + round * lever;
     if nodal_ok && force_ok && moment_ok {
-        return Ok(());
+        let rel = |r: f64, scale: f64| if r == 0.0 { 0.0 } else { r / scale };
+        return Ok(rel(rn, nodal_scale).max(rel(fsum, force_scale)).max(rel(msum, moment_scale)));
     }
     Err(fail(
         name,

@@ -85,7 +85,10 @@ fn beam_eqs(elems: &[ElemData], map: &DofMap, ie: usize) -> [usize; 12] {
 impl CaseCtx<'_> {
     /// Appends the accepted state `st` at load factor `lambda` to `path` (the values of `track`,
     /// its stability and the Newton iteration log `residuals` of the step that reached it) and
-    /// records the tracked quantities there ([`Self::record_step`]).
+    /// records the tracked quantities there ([`Self::record_step`]), once the state passed the
+    /// equilibrium check of the final state ([`super::recover::verify_point`]; fails naming
+    /// load case `name` and the point otherwise).
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn accept_point(
         &self,
         path: &mut Vec<PathPoint>,
@@ -94,8 +97,11 @@ impl CaseCtx<'_> {
         stable: bool,
         residuals: Vec<f64>,
         track: &[NodeDof],
+        name: &str,
     ) -> Result<(), FemError> {
+        let equilibrium = super::recover::verify_point(self, st, name, path.len(), lambda)?;
         path.push(PathPoint {
+            equilibrium,
             lambda,
             values: self.tracked(st, track),
             stable,

@@ -156,6 +156,10 @@ pub struct TransientResults {
     pub n_eq: usize,
     /// Things the caller should be told (e.g. a zero initial acceleration on a singular mass).
     pub warnings: Vec<String>,
+    /// Geometrically nonlinear runs: the largest dynamic equilibrium residual of an accepted
+    /// step relative to its force scale (applied load, or the inertia and internal forces when
+    /// larger), each step checked to 1e-6 of it (plus a round-off floor); `None` when linear.
+    pub equilibrium: Option<f64>,
 }
 
 /// Coupling columns of one prescribed DOF into the free equations (M, K, element damping).

@@ -34,6 +34,7 @@ impl<'a> Recorder<'a> {
                 energy: Vec::new(),
                 n_eq: 0,
                 warnings: Vec::new(),
+                equilibrium: None,
             },
         }
     }
