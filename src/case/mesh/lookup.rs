@@ -94,6 +94,8 @@ pub(super) struct Ctx<'a> {
     pub model_index: Vec<Option<usize>>,
     /// The hinge elements built so far (side table: `fem` knows no hinges).
     pub hinges: Vec<BuiltHinge>,
+    /// The JSON path of the element that made each model tie (`model.ties` order).
+    pub tie_paths: Vec<String>,
 }
 
 impl Ctx<'_> {

@@ -8,6 +8,7 @@
 pub mod build;
 mod build_body_loads;
 mod build_loads;
+mod conflicts;
 mod frames;
 pub mod hinge;
 mod joint;
