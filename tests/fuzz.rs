@@ -1111,6 +1111,23 @@ fn fuzz_binary_exit_codes_and_files() {
     report(&findings, "binary");
 }
 
+/// The fuzzer mutates every bundled case, so it covers every analysis kind only if each kind has
+/// a bundled case (a sweep's base counts for its kind).
+#[test]
+fn every_analysis_kind_has_a_fuzzed_case() {
+    let mut kinds: Vec<String> = Vec::new();
+    for (_, doc) in bundled() {
+        for v in [doc.get("analysis"), doc.get("base").and_then(|b| b.get("analysis"))] {
+            if let Some(k) = v.and_then(Value::as_str) {
+                kinds.push(k.to_string());
+            }
+        }
+    }
+    let missing: Vec<&&str> = analysis::ANALYSES.iter().filter(|k| !kinds.iter().any(|x| x == **k)).collect();
+    assert!(analysis::ANALYSES.len() >= 10, "{} kinds", analysis::ANALYSES.len());
+    assert!(missing.is_empty(), "analysis kinds with no bundled case to fuzz: {missing:?}");
+}
+
 #[test]
 fn path_resolution_rules() {
     let doc: Value = serde_json::json!({

@@ -5,6 +5,7 @@ use crate::fem::{self, Model};
 
 pub use super::compliance::{compliance_row, ComplianceRow};
 
+mod equilibrium;
 mod report;
 mod rows;
 
@@ -29,6 +30,7 @@ pub fn solve_with(
         .load_cases
         .iter()
         .map(|c| {
+            equilibrium::check(model, c)?;
             let mut r = row(c);
             let field = fem::shell_recovery::shell_field(model, &c.displacements)
                 .map_err(|e| AnalysisError::new(format!("load case `{}`", c.name), e.to_string()))?;
