@@ -234,3 +234,26 @@ fn overlapping_vary_paths() {
     assert_eq!(e.path, "vary.hinge.t", "{e}");
     assert!(e.message.contains("inside `vary.hinge`"), "{e}");
 }
+
+#[test]
+fn an_unbalanced_static_solution_is_an_analysis_error_not_a_result() {
+    // Found by the fuzzer: the FSW head frame of Han et al. (2019) with one section's Iz set to
+    // 2^64 mm⁴, 14 orders above the others. The solve "succeeded" with an equilibrium residual
+    // of 22 N against 2.5e5 N of loads and reactions (8.8e-5); the statics check (1e-6) now
+    // fails the run, naming the load case.
+    let mut d = bundled("han2019_prs_head");
+    d["sections"]["platform_arm"]["Iz"] = json!(18446744073709551615u64);
+    let case = parse(d);
+    analysis::check(&case).expect("the input is valid");
+    match analysis::run(&case) {
+        Err(RunError::Analysis(e)) => {
+            assert!(e.context.starts_with("load case `"), "{e}");
+            assert!(e.message.contains("does not balance the loads"), "{e}");
+        }
+        Err(RunError::Case(e)) => panic!("refused as input: {e}"),
+        Ok(o) => panic!("run wrote a result: residual {}", o.json["load_cases"][0]["equilibrium_residual"]),
+    }
+    // The bundled case itself balances.
+    let o = analysis::run(&parse(bundled("han2019_prs_head"))).unwrap_or_else(|e| panic!("{e}"));
+    assert!(o.json["load_cases"][0]["equilibrium_residual"].is_array());
+}
