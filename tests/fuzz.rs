@@ -836,15 +836,14 @@ fn static_invariants(result: &Value, doc: &Value) -> Vec<String> {
         let fscale = (0..3).map(|k| applied[k].abs() + abs[k]).fold(0.0, f64::max);
         let mscale = (3..6).map(|k| applied[k].abs() + abs[k]).fold(0.0, f64::max) + fscale * size;
         let with_moments = nodes.is_some();
-        for k in 0..6 {
+        for (k, r) in res.iter().enumerate() {
             let scale = if k < 3 { fscale } else { mscale };
             if k >= 3 && !with_moments {
                 continue;
             }
-            if res[k].abs() > 1e-6 * scale + 1e-9 {
+            if r.abs() > 1e-6 * scale + 1e-9 {
                 out.push(format!(
-                    "load case {name}: equilibrium residual[{k}] = {:e} above 1e-6 of the load scale {scale:e}",
-                    res[k]
+                    "load case {name}: equilibrium residual[{k}] = {r:e} above 1e-6 of the load scale {scale:e}"
                 ));
             }
         }

@@ -73,7 +73,10 @@ fn a_gmsh_file_with_a_node_tag_given_twice() {
     std::fs::write(&msh, lines.join("\n") + "\n").unwrap();
     let mut d = bundled("gmsh_plate_tris");
     d["mesh"] = json!(msh.to_string_lossy());
-    let e = analysis::parse_value(d, Some(&cases())).err().expect("refused");
+    let e = match analysis::parse_value(d, Some(&cases())) {
+        Err(e) => e,
+        Ok(_) => panic!("a mesh with a node tag given twice was accepted"),
+    };
     let _ = std::fs::remove_dir_all(&dir);
     assert_eq!(e.path, "mesh", "{e}");
     assert!(e.message.contains("node tag 1 twice"), "{e}");

@@ -32,7 +32,7 @@ pub fn check(model: &Model, c: &fem::CaseResult) -> Result<(), AnalysisError> {
     let residual = c.statics.residual();
     let bad = (0..6).find(|&k| {
         let scale = if k < 3 { fscale } else { mscale };
-        !(residual[k].abs() <= EQUILIBRIUM_TOLERANCE * scale + FLOOR)
+        residual[k].is_nan() || residual[k].abs() > EQUILIBRIUM_TOLERANCE * scale + FLOOR
     });
     match bad {
         None => Ok(()),
