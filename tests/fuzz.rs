@@ -681,6 +681,19 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
         }
         Err(RunError::Analysis(e)) => {
             f.failed += 1;
+            if checked.is_err() {
+                let m = format!("check refused it but run failed in the analysis: {e}");
+                f.add(class_of("check refuses, run does not", &analysis, ""), doc, what, m);
+            }
+            if let Some(w) = INPUT_CONFLICTS.iter().find(|w| e.message.contains(*w)) {
+                let m = format!("an input conflict found only by the solver ({w}): {e}");
+                f.add(
+                    class_of("input conflict as an analysis failure", &analysis, w),
+                    doc,
+                    what,
+                    m,
+                );
+            }
             if e.context.is_empty() || e.message.is_empty() {
                 f.add(
                     class_of("analysis error without context", &analysis, ""),
@@ -725,6 +738,11 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
                 let m = format!("warning not in report.md: {w}");
                 f.add(class_of("warning missing from report.md", &analysis, ""), doc, what, m);
             }
+            if analysis == "static" {
+                for m in static_invariants(&o.json, doc) {
+                    f.add(class_of("static invariant", &analysis, &m), doc, what, m);
+                }
+            }
             let mut bad = Vec::new();
             non_finite_in_json(&o.json, "", "result", &mut bad);
             if let Some(first) = bad.first() {
@@ -763,6 +781,87 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
             }
         }
     }
+}
+
+/// Messages of the solver's constraint checks ([`flexfem::fem::FemError`]) that are about the
+/// input: a case that reaches them passed `check` with an input `run` cannot take.
+const INPUT_CONFLICTS: [&str; 3] = ["over-constrained", "is prescribed twice", "a tie joins coincident nodes"];
+
+/// The static result's own checks, for every load case: equilibrium (the summed reactions
+/// balance the applied loads within 1e-6 of the load scale; the applied load is the residual
+/// minus the reactions' resultant, whose moments need the case's inline nodes) and a non-null
+/// `max_von_mises` when an element reports a positive stress.
+fn static_invariants(result: &Value, doc: &Value) -> Vec<String> {
+    let mut out = Vec::new();
+    let nodes: Option<Vec<[f64; 3]>> = doc.get("nodes").and_then(|n| serde_json::from_value(n.clone()).ok());
+    let Some(cases) = result.get("load_cases").and_then(Value::as_array) else {
+        out.push("no load_cases array".into());
+        return out;
+    };
+    for c in cases {
+        let name = c.get("name").and_then(Value::as_str).unwrap_or("?");
+        let vec6 = |v: &Value| -> Option<[f64; 6]> { serde_json::from_value(v.clone()).ok() };
+        let (Some(res), Some(reactions), Some(at)) = (
+            c.get("equilibrium_residual").and_then(vec6),
+            c.get("reactions").and_then(|r| serde_json::from_value::<Vec<[f64; 6]>>(r.clone()).ok()),
+            c.get("reaction_nodes").and_then(|r| serde_json::from_value::<Vec<usize>>(r.clone()).ok()),
+        ) else {
+            out.push(format!("load case {name}: equilibrium_residual, reactions or reaction_nodes missing"));
+            continue;
+        };
+        if reactions.len() != at.len() {
+            out.push(format!("load case {name}: {} reactions for {} reaction nodes", reactions.len(), at.len()));
+            continue;
+        }
+        // Resultant of the reactions about the origin (moments only with the node positions).
+        let mut sum = [0.0f64; 6];
+        let mut abs = [0.0f64; 6];
+        let mut size = 0.0f64;
+        for (r, &n) in reactions.iter().zip(&at) {
+            let x = nodes.as_ref().and_then(|v| v.get(n)).copied();
+            let m = x.map(|x| {
+                [
+                    x[1] * r[2] - x[2] * r[1] + r[3],
+                    x[2] * r[0] - x[0] * r[2] + r[4],
+                    x[0] * r[1] - x[1] * r[0] + r[5],
+                ]
+            });
+            for k in 0..3 {
+                sum[k] += r[k];
+                abs[k] += r[k].abs();
+                if let Some(m) = m {
+                    sum[3 + k] += m[k];
+                    abs[3 + k] += m[k].abs();
+                }
+            }
+            if let Some(x) = x {
+                size = size.max(x.iter().map(|v| v.abs()).fold(0.0, f64::max));
+            }
+        }
+        let applied: Vec<f64> = (0..6).map(|k| res[k] - sum[k]).collect();
+        let fscale = (0..3).map(|k| applied[k].abs() + abs[k]).fold(0.0, f64::max);
+        let mscale = (3..6).map(|k| applied[k].abs() + abs[k]).fold(0.0, f64::max) + fscale * size;
+        let with_moments = nodes.is_some();
+        for (k, r) in res.iter().enumerate() {
+            let scale = if k < 3 { fscale } else { mscale };
+            if k >= 3 && !with_moments {
+                continue;
+            }
+            if r.abs() > 1e-6 * scale + 1e-9 {
+                out.push(format!(
+                    "load case {name}: equilibrium residual[{k}] = {r:e} above 1e-6 of the load scale {scale:e}"
+                ));
+            }
+        }
+        let stressed = c
+            .get("element_von_mises")
+            .and_then(Value::as_array)
+            .is_some_and(|v| v.iter().any(|s| s.as_f64().is_some_and(|s| s > 0.0)));
+        if stressed && c.get("max_von_mises").is_none_or(Value::is_null) {
+            out.push(format!("load case {name}: an element carries stress but max_von_mises is null"));
+        }
+    }
+    out
 }
 
 /// Mutations per bundled case (the slow cases get fewer; the total is ≥ 2,000).
@@ -930,18 +1029,43 @@ fn fuzz_binary_exit_codes_and_files() {
             runs += 1;
             let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
             let analysis = doc.get("analysis").and_then(Value::as_str).unwrap_or("?").to_string();
+            // `check` refuses exactly what `run` refuses about the input (exit 2 both or neither).
+            let checked = Command::new(exe)
+                .current_dir(cases_dir())
+                .arg("check")
+                .arg(&file)
+                .output()
+                .expect("check flexfem");
+            let (check_code, run_code) = (checked.status.code(), out.status.code());
+            if !is_sweep && (check_code == Some(2)) != (run_code == Some(2)) {
+                let m = format!(
+                    "check exited {check_code:?}, run exited {run_code:?}: {}{}",
+                    String::from_utf8_lossy(&checked.stderr),
+                    stderr
+                );
+                findings.add(class_of("check and run disagree", &analysis, ""), &doc, &what, m);
+            }
             match out.status.code() {
                 Some(0) => {
                     let mut problems = Vec::new();
                     if is_sweep {
-                        if let Ok(text) = std::fs::read_to_string(out_dir.join("designs.jsonl")) {
-                            for (k, line) in text.lines().enumerate() {
-                                if let Ok(v) = serde_json::from_str::<Value>(line) {
-                                    let mut bad = Vec::new();
-                                    non_finite_in_json(&v, "", &format!("designs.jsonl line {}", k + 1), &mut bad);
-                                    problems.extend(bad.into_iter().take(2));
+                        match std::fs::read_to_string(out_dir.join("designs.jsonl")) {
+                            Ok(text) => {
+                                if text.lines().next().is_none() {
+                                    problems.push("designs.jsonl is empty".into());
+                                }
+                                for (k, line) in text.lines().enumerate() {
+                                    match serde_json::from_str::<Value>(line) {
+                                        Ok(v) => {
+                                            let mut bad = Vec::new();
+                                            non_finite_in_json(&v, "", &format!("designs.jsonl line {}", k + 1), &mut bad);
+                                            problems.extend(bad.into_iter().take(2));
+                                        }
+                                        Err(e) => problems.push(format!("designs.jsonl line {} is not JSON: {e}", k + 1)),
+                                    }
                                 }
                             }
+                            Err(e) => problems.push(format!("sweep exited 0 without designs.jsonl: {e}")),
                         }
                     } else {
                         scan_dir(&out_dir, &doc, &mut problems);
@@ -949,7 +1073,7 @@ fn fuzz_binary_exit_codes_and_files() {
                     if !problems.is_empty() {
                         let m = problems.join("; ");
                         findings.add(
-                            class_of("non-finite number in --out files", &analysis, ""),
+                            class_of("non-finite number or missing line in --out files", &analysis, ""),
                             &doc,
                             &what,
                             m,
@@ -990,6 +1114,23 @@ fn fuzz_binary_exit_codes_and_files() {
     eprintln!("fuzz: {runs} mutated cases through the binary");
     assert!(runs >= 40, "only {runs} binary runs");
     report(&findings, "binary");
+}
+
+/// The fuzzer mutates every bundled case, so it covers every analysis kind only if each kind has
+/// a bundled case (a sweep's base counts for its kind).
+#[test]
+fn every_analysis_kind_has_a_fuzzed_case() {
+    let mut kinds: Vec<String> = Vec::new();
+    for (_, doc) in bundled() {
+        for v in [doc.get("analysis"), doc.get("base").and_then(|b| b.get("analysis"))] {
+            if let Some(k) = v.and_then(Value::as_str) {
+                kinds.push(k.to_string());
+            }
+        }
+    }
+    let missing: Vec<&&str> = analysis::ANALYSES.iter().filter(|k| !kinds.iter().any(|x| x == **k)).collect();
+    assert!(analysis::ANALYSES.len() >= 10, "{} kinds", analysis::ANALYSES.len());
+    assert!(missing.is_empty(), "analysis kinds with no bundled case to fuzz: {missing:?}");
 }
 
 #[test]

@@ -248,6 +248,11 @@ fn ideal_joint_stage_mesh_has_joint_elements_and_the_same_pose() {
         panic!()
     };
     c.stage.ideal_joints = true;
+    // With ideal joints the sliders are free: load cases give strokes (forces are refused).
+    for lc in &mut c.load_cases {
+        lc.actuator_forces = None;
+        lc.actuator_strokes = Some([0.1; 3]);
+    }
     let s = c.validated().unwrap().0.build();
     let strokes = [1.0, 0.5, -0.3];
     let cases = vec![("s".to_string(), flexfem::stage::Drive::Strokes(strokes))];

@@ -83,7 +83,8 @@ pub struct StageRow {
 /// What the stage reaches at the allowable stress under equal actuator forces (pure z).
 #[derive(Debug, Clone, Serialize)]
 ///
-/// All four are `null` when the material has no allowable stress (unbounded).
+/// All four are `null` when the material has no allowable stress (unbounded); force, stroke and
+/// z are `null` with ideal joints (no hinge stress bounds them).
 pub struct AtAllowable {
     /// Allowable stress used, MPa.
     #[serde(serialize_with = "crate::report::numbers::unbounded_as_null")]
@@ -351,7 +352,11 @@ pub fn run_stage_with(
         (Some(c), _) => c,
         (None, Some(s)) => {
             let mut drives = user.clone();
-            drives.push(("unit_force".into(), Drive::Forces([1.0; 3])));
+            // With ideal joints the free sliders make actuator forces a mechanism: no unit-force
+            // case (and no hinge stress to reach the allowable).
+            if !design.ideal_joints {
+                drives.push(("unit_force".into(), Drive::Forces([1.0; 3])));
+            }
             drives.push(("unit_z".into(), Drive::Strokes(unit_z)));
             let mut a = s.analyse_with(cache, &drives, true).map_err(fem_err)?;
             let compliance = a
@@ -364,9 +369,18 @@ pub fn run_stage_with(
         }
         (None, None) => unreachable!("the FE model is built when there is no condensed solution"),
     };
-    let (u, z) = (&responses[n], &responses[n + 1]);
+    let z = &responses[responses.len() - 1];
     let stiffness_z = z.forces.iter().sum::<f64>() / (unit_z.iter().sum::<f64>() / 3.0);
-    let at_allowable = at_allowable(allowable, u);
+    let at_allowable = if design.ideal_joints {
+        AtAllowable {
+            allowable,
+            force: f64::INFINITY,
+            stroke: f64::INFINITY,
+            z: f64::INFINITY,
+        }
+    } else {
+        at_allowable(allowable, &responses[n])
+    };
     let nonlinear_cases = match (nonlinear, &s) {
         (Some(steps), Some(s)) => Some(s.solve_nonlinear(&user, steps).map_err(fem_err)?),
         _ => None,

@@ -148,6 +148,12 @@ impl SensitivityCase {
         let v = self.stage.valid_design(&self.material)?;
         let d = v.design();
         check_loop_design(d)?;
+        if !d.material.allowable.is_finite() {
+            return Err(CaseError::new(
+                "material",
+                "the material has no `allowable` stress (MPa), and the sensitivity ranks the parameters by the platform z at the allowable stress: give a material with `allowable`",
+            ));
+        }
         if !(self.increment.is_finite() && self.increment > 0.0 && self.increment <= 2.0) {
             return Err(CaseError::value(
                 "increment",

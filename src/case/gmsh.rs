@@ -286,7 +286,15 @@ pub fn parse_msh_traced(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, 
             ));
         }
     }
-    let index: HashMap<usize, usize> = node_tags.iter().enumerate().map(|(i, &t)| (t, i)).collect();
+    let mut index: HashMap<usize, usize> = HashMap::with_capacity(node_tags.len());
+    for (i, &t) in node_tags.iter().enumerate() {
+        if let Some(first) = index.insert(t, i) {
+            return Err(CaseError::new(
+                "mesh",
+                format!(".msh $Nodes defines node tag {t} twice (the {}th and the {}th node): each node tag must be unique", first + 1, i + 1),
+            ));
+        }
+    }
     let mut spec = MeshSpec {
         nodes: coords,
         ..Default::default()

@@ -41,6 +41,12 @@ impl HingeCase {
     pub fn validate(&self) -> Result<Material, CaseError> {
         let m = self.material.resolve("material")?;
         super::stage::check_steps("steps", self.steps, self.nonlinear)?;
+        if self.nonlinear && !m.allowable.is_finite() {
+            return Err(CaseError::new(
+                "material",
+                "the material has no `allowable` stress (MPa), and the large-rotation curve of \"nonlinear\": true runs up to it: give a material with `allowable`, or drop `nonlinear`",
+            ));
+        }
         self.hinge.profile().map_err(|e| hinge_error(&e, "hinge", "material"))?;
         if let Some(d) = &self.damping {
             d.run()?;

@@ -75,11 +75,12 @@ pub enum LegSpec {
         k: f64,
     },
     /// Series chains: actuation (on the stroke, N/mm) and constraint (lateral at the spherical
-    /// joint along the revolute axis, N/mm; empty = rigid).
+    /// joint along the revolute axis, N/mm; empty = rigid). Every leg has the same chains; a
+    /// list holds the springs in series of one chain (any number), not one value per leg.
     Chain {
-        /// Actuation-chain stiffnesses, N/mm.
+        /// Actuation-chain stiffnesses in series (carriage, revolute, limb …), N/mm.
         actuation: Vec<f64>,
-        /// Constraint-chain stiffnesses, N/mm.
+        /// Constraint-chain stiffnesses in series, N/mm.
         #[serde(default)]
         constraint: Vec<f64>,
     },

@@ -278,6 +278,12 @@ impl StageCase {
         for (i, lc) in self.load_cases.iter().enumerate() {
             let drive = match (lc.actuator_forces, lc.actuator_strokes) {
                 (Some(f), None) => {
+                    if d.ideal_joints {
+                        return Err(CaseError::new(
+                            format!("load_cases[{i}].actuator_forces"),
+                            "with \"ideal_joints\": true the stage is a mechanism under actuator forces (the sliders are free): give `actuator_strokes`",
+                        ));
+                    }
                     for (k, v) in f.iter().enumerate() {
                         check::finite(format_args!("load_cases[{i}].actuator_forces[{k}]"), *v)?;
                     }

@@ -38,6 +38,9 @@ pub struct SweepCase {
     pub vary: Map<String, Value>,
 }
 
+/// The fields of a [`VarySpec::Range`].
+const RANGE_KEYS: [&str; 3] = ["from", "to", "steps"];
+
 /// Most designs one sweep may have.
 pub const MAX_DESIGNS: usize = 100_000_000;
 
@@ -161,6 +164,21 @@ impl SweepCase {
         let mut specs = Vec::with_capacity(self.vary.len());
         for (path, spec) in &self.vary {
             let p = format!("vary.{path}");
+            if let Some(inner) = self.vary.keys().find(|q| path.starts_with(q.as_str()) && path[q.len()..].starts_with('.')) {
+                return Err(CaseError::value(
+                    &p,
+                    format!("\"{path}\""),
+                    format!("it lies inside `vary.{inner}`, which sets the whole of `{inner}`: the two would overwrite each other; vary either the whole or its parts"),
+                ));
+            }
+            if let Value::Object(m) = spec {
+                if let Some(k) = m.keys().find(|k| !RANGE_KEYS.contains(&k.as_str())) {
+                    return Err(CaseError::new(
+                        format!("{p}.{k}"),
+                        format!("unknown field `{k}` of a range; a varied path takes a list of values or {{\"from\", \"to\", \"steps\"}}"),
+                    ));
+                }
+            }
             let spec: VarySpec = super::from_value(spec.clone(), &p)?;
             match &spec {
                 VarySpec::List(v) if v.is_empty() => return Err(CaseError::new(p, "the list of values is empty")),

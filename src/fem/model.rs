@@ -3,6 +3,7 @@
 //! element kinds and their matrices live in [`super::elements`]; `Model` dispatches to them.
 
 mod validate;
+pub use validate::{model_size, COINCIDENT};
 
 use super::dof::Dof;
 pub use super::elements::{

@@ -52,6 +52,8 @@ pub fn ruiz2019_ideal_stage_design(gamma_deg: f64) -> StageDesign {
     let text = ruiz2019_stage_with(|v| {
         v["stage"]["gamma_deg"] = Value::from(gamma_deg);
         v["stage"]["ideal_joints"] = Value::Bool(true);
+        // Free sliders: an ideal-joint stage takes strokes, not actuator forces.
+        v["load_cases"] = serde_json::json!([{"name": "s", "actuator_strokes": [0.01, 0.01, 0.01]}]);
     });
     stage_case(&text).0
 }

@@ -8,6 +8,7 @@ pub use super::compliance::{compliance_row, ComplianceRow};
 mod headline;
 pub mod inner_nodes;
 pub mod metrics;
+mod equilibrium;
 mod report;
 mod rows;
 mod summary;
@@ -35,6 +36,7 @@ pub fn solve_with(
         .load_cases
         .iter()
         .map(|c| {
+            equilibrium::check(model, c)?;
             let mut r = row(c);
             let field = fem::shell_recovery::shell_field(model, &c.displacements)
                 .map_err(|e| AnalysisError::new(format!("load case `{}`", c.name), e.to_string()))?;

@@ -252,6 +252,36 @@ impl TransientCase {
         Ok(())
     }
 
+    /// Refuses a DOF moved twice, or moved at a rigid-link slave (whose motion its master
+    /// fixes) or at the second node of a joint (which follows the first).
+    fn check_motions(&self, model: &crate::fem::Model, motions: &[PrescribedMotion]) -> Result<(), CaseError> {
+        for (i, m) in motions.iter().enumerate() {
+            let p = format!("motions[{i}]");
+            if let Some(j) = motions[..i].iter().position(|o| o.node == m.node && o.dof == m.dof) {
+                return Err(CaseError::value(
+                    format!("{p}.dof"),
+                    m.dof,
+                    format!("node {} {} is already moved by `motions[{j}]`: give each DOF one motion (sum the histories)", m.node, m.dof),
+                ));
+            }
+            if let Some(l) = model.rigid_links.iter().find(|l| l.slaves.contains(&m.node)) {
+                return Err(CaseError::value(
+                    format!("{p}.node"),
+                    m.node,
+                    format!("node {} is a rigid-link slave, moved by its master {}: prescribe the master's motion instead", m.node, l.master),
+                ));
+            }
+            if let Some(t) = model.ties.iter().find(|t| t.b == m.node && t.dofs[m.dof.index()]) {
+                return Err(CaseError::value(
+                    format!("{p}.node"),
+                    m.node,
+                    format!("node {} {} is tied by a joint to node {}: prescribe node {} instead", m.node, m.dof, t.a, t.a),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     fn scheme(&self) -> Result<Scheme, CaseError> {
         match (self.scheme, self.hht_alpha) {
             (SchemeName::Newmark, None) => Ok(Scheme::AverageAcceleration),
@@ -361,6 +391,13 @@ impl TransientCase {
 
     fn inputs(&self, model: &crate::fem::Model, index: &[Option<usize>], hinges: &[crate::case::mesh::BuiltHinge]) -> Result<Inputs, CaseError> {
         let (mut opts, loads, motions) = self.options(model.nodes.len())?;
+        if loads.is_empty() && motions.is_empty() {
+            return Err(CaseError::new(
+                "loads",
+                "the transient has no loads and no motions, so the model stays at rest: give `loads` (node, force, history) or `motions` (node, dof, value, history)",
+            ));
+        }
+        self.check_motions(model, &motions)?;
         let mut element_beta = Vec::new();
         for e in &self.damping.elements {
             if let Some(ie) = index.get(e.element).copied().flatten() {

@@ -81,6 +81,7 @@ impl MeshSpec {
             model_index: Vec::with_capacity(self.elements.len()),
             hinges: Vec::new(),
             nonlinear,
+            tie_paths: Vec::new(),
         };
         for (i, x) in self.nodes.iter().enumerate() {
             for (k, v) in x.iter().enumerate() {
@@ -88,6 +89,7 @@ impl MeshSpec {
             }
             cx.model.add_node(*x);
         }
+        let size = super::joint::model_size(&self.nodes);
         let mut rigid: Vec<(String, RigidSpec)> = self
             .rigid_links
             .iter()
@@ -106,6 +108,7 @@ impl MeshSpec {
                     },
                 ));
             } else {
+                super::conflicts::element_length(&cx, &p, e, size)?;
                 element(&mut cx, &p, e)?;
             }
             let built = (cx.model.elements.len() > before).then_some(before);
@@ -147,6 +150,7 @@ impl MeshSpec {
                 super::hinge::chain_masses(&mut cx.model, &chain, &h.region, h.material.density);
             }
         }
+        let rigid_paths: Vec<String> = rigid.iter().map(|(p, _)| p.clone()).collect();
         for (p, r) in rigid {
             let master = cx.node(format!("{p}.master"), r.master)?;
             let mut slaves = Vec::with_capacity(r.slaves.len());
@@ -163,6 +167,7 @@ impl MeshSpec {
             }
             cx.model.rigid_links.push(fem::RigidLink { master, slaves });
         }
+        let first_support = cx.model.supports.len();
         for (i, s) in self.supports.iter().enumerate() {
             let node = cx.node(format!("supports[{i}].node"), s.node)?;
             let dofs: Vec<Dof> = s.fix.iter().map(|d| d.dof()).collect();
@@ -205,8 +210,16 @@ impl MeshSpec {
         unique_load_case_names(self.load_cases.iter().map(|c| c.name.as_str()))?;
         for (ic, c) in self.load_cases.iter().enumerate() {
             let lc = super::build_loads::load_case(&mut cx, &format!("load_cases[{ic}]"), c)?;
+            if need_loads && lc.forces.is_empty() && lc.displacements.is_empty() {
+                return Err(CaseError::value(
+                    format!("load_cases[{ic}]"),
+                    format!("\"{}\"", c.name),
+                    "the load case loads nothing: give `forces`, `displacements`, `pressures`, `edge_loads`, `line_loads`, `group_forces` or a non-zero `gravity`",
+                ));
+            }
             cx.model.load_cases.push(lc);
         }
+        super::conflicts::constraint_conflicts(&cx.model, &rigid_paths, &cx.tie_paths, first_support)?;
         cx.model.ordering = self.ordering.map(|o| o.fill_ordering()).unwrap_or_default();
         Ok((cx.model, cx.hinges, cx.model_index))
     }
@@ -345,11 +358,23 @@ fn shell4(cx: &mut Ctx, p: &str, nodes: [usize; 4], section: &str, material: &st
     Ok(())
 }
 
-/// Refuses two load cases with the same name, or with names that give the same output file
+/// The longest load case name, characters: its output files (`NAME.vtu`, `NAME_….csv`) stay
+/// under the 255-byte file-name limit of common file systems.
+pub const MAX_LOAD_CASE_NAME: usize = 200;
+
+/// Refuses a load case name longer than [`MAX_LOAD_CASE_NAME`], two load cases with the same name, or with names that give the same output file
 /// name (each load case writes `NAME.vtu`): the error names `load_cases[i].name` of the later.
 pub fn unique_load_case_names<'a>(names: impl Iterator<Item = &'a str> + Clone) -> Result<(), CaseError> {
     // Pairwise (a case has few load cases): no allocation unless two names clash.
     for (i, name) in names.clone().enumerate() {
+        let chars = name.chars().count();
+        if chars > MAX_LOAD_CASE_NAME {
+            return Err(CaseError::value(
+                format!("load_cases[{i}].name"),
+                format!("\"{}…\" ({chars} characters)", name.chars().take(24).collect::<String>()),
+                format!("a load case name is at most {MAX_LOAD_CASE_NAME} characters (it names the load case's output files, and file systems allow 255 bytes)"),
+            ));
+        }
         let Some((j, first)) = names
             .clone()
             .take(i)

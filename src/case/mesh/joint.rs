@@ -7,8 +7,7 @@ use super::shapes::JointKind;
 use crate::case::error::CaseError;
 use crate::fem;
 
-/// Relative distance (to the model size) up to which two nodes count as coincident.
-pub(super) const COINCIDENT: f64 = 1e-6;
+pub(super) use crate::fem::model::{model_size, COINCIDENT};
 
 /// Builds a `joint` element at JSON path `p`.
 ///
@@ -109,6 +108,7 @@ pub(super) fn joint_element(
         dofs[k] = false;
     }
     cx.model.ties.push(fem::Tie { a, b, dofs });
+    cx.tie_paths.push(p.to_string());
     Ok(())
 }
 
@@ -138,22 +138,4 @@ fn unit_axis(
 fn unit(v: [f64; 3]) -> [f64; 3] {
     let n = norm(v);
     v.map(|c| c / n)
-}
-
-/// Diagonal of the nodes' bounding box, mm (1 for a single point).
-pub(super) fn model_size(nodes: &[[f64; 3]]) -> f64 {
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    for x in nodes {
-        for k in 0..3 {
-            lo[k] = lo[k].min(x[k]);
-            hi[k] = hi[k].max(x[k]);
-        }
-    }
-    let d = norm([hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]]);
-    if d > 0.0 {
-        d
-    } else {
-        1.0
-    }
 }

@@ -102,6 +102,8 @@ pub(super) struct Ctx<'a> {
     /// Whether the model is for a geometrically nonlinear run (hinge elements then default to
     /// [`crate::hinge::NONLINEAR_SEGMENTS`] segments).
     pub nonlinear: bool,
+    /// The JSON path of the element that made each model tie (`model.ties` order).
+    pub tie_paths: Vec<String>,
 }
 
 impl Ctx<'_> {

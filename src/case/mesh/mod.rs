@@ -9,6 +9,7 @@ pub mod build;
 mod build_body_loads;
 mod build_loads;
 pub mod corot_length;
+mod conflicts;
 mod frames;
 pub mod hinge;
 mod joint;

@@ -5,6 +5,28 @@ use super::{Element, LoadCase, Model};
 use crate::fem::dof::NodeDof;
 use crate::fem::error::FemError;
 
+/// Distance between two nodes, relative to the model size ([`model_size`]), up to which they
+/// count as coincident (the nodes of a tie, a joint, a superelement's interface).
+pub const COINCIDENT: f64 = 1e-6;
+
+/// Diagonal of the nodes' bounding box, mm (1 for a single point or none).
+pub fn model_size(nodes: &[[f64; 3]]) -> f64 {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for x in nodes {
+        for k in 0..3 {
+            lo[k] = lo[k].min(x[k]);
+            hi[k] = hi[k].max(x[k]);
+        }
+    }
+    let d = ((hi[0] - lo[0]).powi(2) + (hi[1] - lo[1]).powi(2) + (hi[2] - lo[2]).powi(2)).sqrt();
+    if d > 0.0 && d.is_finite() {
+        d
+    } else {
+        1.0
+    }
+}
+
 impl Model {
     /// Checks indices, geometry, sections, materials, compliances and loads (not constraints;
     /// those are checked by [`crate::fem::constraints::DofMap::new`]).
@@ -45,6 +67,7 @@ impl Model {
                 )));
             }
         }
+        let coincident = COINCIDENT * model_size(&self.nodes);
         for (i, t) in self.ties.iter().enumerate() {
             self.check_node(|| format!("tie {i}"), t.a)?;
             self.check_node(|| format!("tie {i}"), t.b)?;
@@ -53,10 +76,9 @@ impl Model {
             }
             let (xa, xb) = (self.nodes[t.a], self.nodes[t.b]);
             let dist = ((xa[0] - xb[0]).powi(2) + (xa[1] - xb[1]).powi(2) + (xa[2] - xb[2]).powi(2)).sqrt();
-            let scale = xa.iter().chain(xb.iter()).fold(1.0f64, |m, v| m.max(v.abs()));
-            if dist > 1e-9 * scale {
+            if dist > coincident {
                 return Err(FemError::BadInput(format!(
-                    "tie {i}: nodes {} and {} are {dist} mm apart; a tie joins coincident nodes",
+                    "tie {i}: nodes {} and {} are {dist} mm apart; a tie joins coincident nodes (within {COINCIDENT} of the model size, {coincident} mm)",
                     t.a, t.b
                 )));
             }

@@ -1,0 +1,155 @@
+//! Inputs that used to be accepted silently (a run returning zeros, a node silently replaced, a
+//! key ignored) are refused as case-file errors naming the JSON path and what is allowed; and
+//! elements shorter than 1e-9 of the model size are refused at `check`.
+
+use flexfem::analysis::{self, Case, RunError};
+use serde_json::{json, Value};
+use std::path::{Path, PathBuf};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn bundled(name: &str) -> Value {
+    let text = std::fs::read_to_string(root().join("cases").join(format!("{name}.json"))).unwrap();
+    serde_json::from_str(&text).unwrap()
+}
+
+/// `check` and `run` both refuse `doc` at `path`, the message holding every word of `words`.
+fn refused(doc: Value, base: &Path, path: &str, words: &[&str]) {
+    let case = analysis::parse_value(doc, Some(base)).unwrap_or_else(|e| panic!("parses: {e}"));
+    let e = analysis::check(&case).expect_err("check must refuse");
+    assert_eq!(e.path, path, "check: {e}");
+    for w in words {
+        assert!(e.message.contains(w), "message lacks {w:?}: {e}");
+    }
+    match analysis::run(&case) {
+        Err(RunError::Case(r)) => assert_eq!(r.path, path, "run: {r}"),
+        Err(RunError::Analysis(a)) => panic!("run failed in the analysis: {a}"),
+        Ok(_) => panic!("run accepted what check refused"),
+    }
+}
+
+fn cases() -> PathBuf {
+    root().join("cases")
+}
+
+#[test]
+fn a_static_load_case_without_loads() {
+    // It ran and returned zero displacements and reactions.
+    let mut d = bundled("static_cantilever");
+    d["load_cases"].as_array_mut().unwrap().push(json!({"name": "empty"}));
+    refused(d, &cases(), "load_cases[1]", &["loads nothing", "`forces`"]);
+}
+
+#[test]
+fn a_transient_without_loads_or_motions() {
+    let mut d = bundled("pendulum_nonlinear_transient");
+    d.as_object_mut().unwrap().remove("loads");
+    refused(d, &cases(), "loads", &["no loads and no motions", "`motions`"]);
+}
+
+#[test]
+fn a_gmsh_file_with_a_node_tag_given_twice() {
+    // The bundled plate mesh with node tag 1 defined a second time at the end of its node
+    // block: the second definition silently replaced the first.
+    let text = std::fs::read_to_string(root().join("meshes/plate_clamped_tris.msh")).unwrap();
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+    let i = lines.iter().position(|l| l == "$Nodes").unwrap();
+    assert_eq!(lines[i + 1], "1 289 1 289", "the bundled mesh's node header");
+    assert_eq!(lines[i + 2], "2 1 0 289", "its one node block");
+    lines[i + 1] = "1 290 1 290".into();
+    lines[i + 2] = "2 1 0 290".into();
+    let tags_end = i + 3 + 289;
+    assert_eq!(lines[tags_end - 1], "289");
+    lines.insert(tags_end, "1".into());
+    let coords_end = tags_end + 1 + 289;
+    let first = lines[tags_end + 1].clone();
+    lines.insert(coords_end, first);
+    assert_eq!(lines[coords_end + 1], "$EndNodes");
+    let dir = std::env::temp_dir().join(format!("flexfem-refused-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let msh = dir.join("plate_duplicate_tag.msh");
+    std::fs::write(&msh, lines.join("\n") + "\n").unwrap();
+    let mut d = bundled("gmsh_plate_tris");
+    d["mesh"] = json!(msh.to_string_lossy());
+    let e = match analysis::parse_value(d, Some(&cases())) {
+        Err(e) => e,
+        Ok(_) => panic!("a mesh with a node tag given twice was accepted"),
+    };
+    let _ = std::fs::remove_dir_all(&dir);
+    assert_eq!(e.path, "mesh", "{e}");
+    assert!(e.message.contains("node tag 1 twice"), "{e}");
+    assert!(e.message.contains("unique"), "{e}");
+}
+
+#[test]
+fn an_unknown_key_inside_a_vary_range() {
+    let d = json!({
+        "analysis": "sweep",
+        "base": bundled("ruiz2019_hinge_revolute"),
+        "vary": {"hinge.R": {"from": 6, "to": 10, "steps": 3, "foo": 1}}
+    });
+    let Case::Sweep(s) = analysis::parse_value(d, Some(&cases())).unwrap() else {
+        panic!("a sweep")
+    };
+    let e = s.build().expect_err("unknown range key refused");
+    assert_eq!(e.path, "vary.hinge.R.foo", "{e}");
+    assert!(e.message.contains("\"from\", \"to\", \"steps\""), "{e}");
+}
+
+#[test]
+fn a_rigid_link_master_as_its_own_slave_in_a_constraints_case() {
+    // The `constraints` analysis builds no stiffness, so nothing refused it; `static` did.
+    let mesh: Value =
+        serde_json::from_str(&std::fs::read_to_string(root().join("meshes/parallelogram_notch.json")).unwrap()).unwrap();
+    let mut d = bundled("constraints_parallelogram_guide");
+    let m = d.as_object_mut().unwrap();
+    m.remove("mesh");
+    for (k, v) in mesh.as_object().unwrap() {
+        if k != "load_cases" && k != "description" {
+            m.insert(k.clone(), v.clone());
+        }
+    }
+    let n = mesh["nodes"].as_array().unwrap().len();
+    assert!(n >= 2);
+    m.insert("rigid_links".into(), json!([{"master": 0, "slaves": [0, 1]}]));
+    refused(d, &cases(), "rigid_links[0].slaves[0]", &["own slave"]);
+}
+
+/// A 100 mm cantilever (`cases/static_cantilever.json`) with a fourth node `gap` mm beyond its
+/// tip, joined to it by `element`.
+fn with_short_element(gap: f64, element: Value) -> Value {
+    let mut d = bundled("static_cantilever");
+    d["nodes"].as_array_mut().unwrap().push(json!([100.0 + gap, 0.0, 0.0]));
+    d["elements"].as_array_mut().unwrap().push(element);
+    d
+}
+
+#[test]
+fn elements_shorter_than_1e_9_of_the_model_size() {
+    // Model size 100 mm: the limit is 1e-7 mm. 1e-8 mm passed before (the old check was
+    // absolute, 1e-12 mm); 1e-13 mm was refused as "zero-length" and still is, now relative.
+    let beam = json!({"type": "beam", "nodes": [2, 3], "section": "leg", "material": "al", "up": [0, 0, 1]});
+    for gap in [1e-8, 1e-13] {
+        refused(
+            with_short_element(gap, beam.clone()),
+            &cases(),
+            "elements[2].nodes",
+            &["1e-9 of the model size"],
+        );
+    }
+    let hinge = json!({"type": "hinge", "nodes": [2, 3], "material": "al", "up": [0, 0, 1],
+        "hinge": {"type": "circular_notch", "R": 5.0, "t": 1.0, "w": 10.0, "h": 10.0}});
+    refused(with_short_element(1e-8, hinge), &cases(), "elements[2].nodes", &["1e-9 of the model size"]);
+    // A shell4 with one edge 1e-8 mm long.
+    let mut d = bundled("static_cantilever");
+    d["nodes"].as_array_mut().unwrap().extend([json!([100.0, 1e-8, 0.0]), json!([50.0, 20.0, 0.0])]);
+    d["sections"]["skin"] = json!({"shape": "shell", "t": 1.0});
+    d["elements"].as_array_mut().unwrap().push(json!({"type": "shell4", "nodes": [1, 2, 3, 4], "section": "skin", "material": "al"}));
+    refused(d, &cases(), "elements[2].nodes", &["1e-9 of the model size"]);
+    // At 1e-6 of the size (1e-4 mm) a beam is accepted: the limit is not an absolute length.
+    let ok = with_short_element(1e-4, json!({"type": "beam", "nodes": [2, 3], "section": "leg", "material": "al", "up": [0, 0, 1]}));
+    let case = analysis::parse_value(ok, Some(&cases())).unwrap();
+    analysis::check(&case).expect("a 1e-4 mm beam in a 100 mm model is accepted");
+}
