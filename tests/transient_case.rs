@@ -155,12 +155,6 @@ fn case_errors_name_their_path() {
             json!({"dt": 1e-4, "steps": 10, "loads": [{"node": 1, "force": [1, 0, 0, 0, 0, 0], "history": {"type": "ramp", "start": 1, "end": 0}}]}),
             "loads[0].history",
         ),
-        // A motion on a DOF a support fixes: refused here; before, the run panicked indexing
-        // the equation of the supported DOF.
-        (
-            json!({"dt": 1e-4, "steps": 10, "motions": [{"node": 0, "dof": "uy", "value": 1, "history": {"type": "ramp", "start": 0, "end": 1e-3}}]}),
-            "motions[0].dof",
-        ),
         (
             json!({"dt": 1e-4, "steps": 10, "scheme": "hht", "hht_alpha": -0.5}),
             "hht_alpha",

@@ -356,14 +356,6 @@ impl TransientCase {
             if !value.is_finite() {
                 return Err(CaseError::value(format!("{p}.value"), m.value, "must be finite"));
             }
-            let fixed_by = self.model.supports.iter().position(|s| s.node == m.node && s.fix.iter().any(|d| d.dof() == dof));
-            if let Some(j) = fixed_by {
-                return Err(CaseError::value(
-                    format!("{p}.dof"),
-                    format_args!("{} of node {}", dof.name(), m.node),
-                    format!("must be a free DOF: `supports[{j}]` fixes it (take it out of that support's `fix`)"),
-                ));
-            }
             motions.push(PrescribedMotion {
                 node: node(format!("{p}.node"), m.node)?,
                 dof,
