@@ -188,7 +188,7 @@ pub fn single_segment_hinge_warnings(hinges: &[crate::case::mesh::BuiltHinge]) -
 /// (`factor_at_allowable` < 1), naming the hinge (kind and leg) or the leg beams that carry it.
 /// Nothing is formatted (nor allocated) when the case is within its allowable.
 pub fn stage_allowable_warning(ic: usize, c: &super::stage::StageRow) -> Option<String> {
-    if c.factor_at_allowable >= 1.0 || !(c.max_von_mises > 0.0) {
+    if !(0.0..1.0).contains(&c.factor_at_allowable) || c.max_von_mises <= 0.0 {
         return None;
     }
     let sig = crate::report::markdown::sig;
