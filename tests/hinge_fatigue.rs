@@ -88,7 +88,8 @@ fn notch_stroke_at_infinite_life_matches_goodman_by_hand() {
     let got_u = r["fatigue"]["fatigue_utilisation"].as_f64().unwrap();
     assert!(rel(got_u, u) < HAND_TOL, "utilisation {got_u} vs hand {u}");
     assert!(u < 1.0, "{u}");
-    assert!(r["fatigue"]["life_cycles"].is_null(), "{}", r["fatigue"]);
+    assert!(r["fatigue"].get("life_cycles").is_none(), "{}", r["fatigue"]);
+    assert_eq!(r["fatigue"]["infinite_life"].as_bool(), Some(true), "{}", r["fatigue"]);
     // Soderberg uses S_y = 503 MPa for the mean: a smaller stroke.
     let s = run_fatigue(
         r#"{"cycles": 1e9, "stroke": 0.2, "mean": 0.5, "method": "soderberg"}"#,
@@ -113,6 +114,7 @@ fn finite_life_follows_basquin_by_hand() {
     );
     let b = (159.0_f64 / (0.9 * 572.0)).log10() / (5e8_f64 / 1e3).log10();
     let n = 5e8 * (s_ar / se).powf(1.0 / b);
+    assert_eq!(r["fatigue"]["infinite_life"].as_bool(), Some(false), "{}", r["fatigue"]);
     let got = r["fatigue"]["life_cycles"].as_f64().unwrap();
     assert!(rel(got, n) < HAND_TOL, "life {got} vs hand {n}");
     // Utilisation at 1e6 cycles against S_f = S_e (1e6/5e8)^b.
