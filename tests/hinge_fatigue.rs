@@ -88,7 +88,8 @@ fn notch_stroke_at_infinite_life_matches_goodman_by_hand() {
     let got_u = r["fatigue"]["fatigue_utilisation"].as_f64().unwrap();
     assert!(rel(got_u, u) < HAND_TOL, "utilisation {got_u} vs hand {u}");
     assert!(u < 1.0, "{u}");
-    assert!(r["fatigue"]["life_cycles"].is_null(), "{}", r["fatigue"]);
+    assert!(r["fatigue"].get("life_cycles").is_none(), "{}", r["fatigue"]);
+    assert_eq!(r["fatigue"]["infinite_life"].as_bool(), Some(true), "{}", r["fatigue"]);
     // Soderberg uses S_y = 503 MPa for the mean: a smaller stroke.
     let s = run_fatigue(
         r#"{"cycles": 1e9, "stroke": 0.2, "mean": 0.5, "method": "soderberg"}"#,
@@ -113,6 +114,7 @@ fn finite_life_follows_basquin_by_hand() {
     );
     let b = (159.0_f64 / (0.9 * 572.0)).log10() / (5e8_f64 / 1e3).log10();
     let n = 5e8 * (s_ar / se).powf(1.0 / b);
+    assert_eq!(r["fatigue"]["infinite_life"].as_bool(), Some(false), "{}", r["fatigue"]);
     let got = r["fatigue"]["life_cycles"].as_f64().unwrap();
     assert!(rel(got, n) < HAND_TOL, "life {got} vs hand {n}");
     // Utilisation at 1e6 cycles against S_f = S_e (1e6/5e8)^b.
@@ -150,4 +152,56 @@ fn fatigue_without_material_data_is_refused_naming_the_path() {
             );
         }
     }
+}
+
+/// The inputs of q and k_b for the other families, and the steel defaults, by hand:
+/// elliptical notch root radius a_x²/a_y; turned neck d_e = 0.370 d (Shigley eq. 6-24);
+/// steel S_ut = 470 MPa → Peterson's a from Shigley eq. (6-35a) (S_ut in kpsi, √a in √in).
+#[test]
+fn other_families_and_steel_defaults_by_hand() {
+    let run = |hinge: &str, material: &str| {
+        let text = format!(
+            r#"{{"analysis": "hinge", "material": "{material}", "hinge": {hinge},
+                "fatigue": {{"cycles": 1e9, "stroke": 0.1}}}}"#
+        );
+        let o = common::run_case_text("hinge_fatigue_families", &text);
+        assert!(o.status.success(), "{}", common::stderr(&o));
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        v["fatigue"].clone()
+    };
+    let get = |v: &serde_json::Value, k: &str| v[k].as_f64().unwrap_or(f64::NAN);
+    // Elliptical notch a_x = 6, a_y = 4: root radius 36/4 = 9 mm.
+    let e = run(
+        r#"{"type": "elliptical_notch", "ax": 6, "ay": 4, "t": 2, "w": 10, "h": 10, "blank_length": 20}"#,
+        "Al7075",
+    );
+    assert!(rel(get(&e, "notch_radius_mm"), 9.0) < HAND_TOL, "{e}");
+    assert!(
+        rel(get(&e, "notch_sensitivity"), 1.0 / (1.0 + 0.635 / 9.0)) < HAND_TOL,
+        "{e}"
+    );
+    // Turned neck d = 4 mm: d_e = 1.48 mm, below eq. (6-20)'s 2.79 mm, so k_b = 1.24·2.79^−0.107.
+    let n = run(
+        r#"{"type": "spherical_neck", "l": 0, "t": 4, "R": 3, "h": 10, "blank_length": 20}"#,
+        "Al7075",
+    );
+    assert!(
+        rel(get(&n, "marin_size"), 1.24 * 2.79_f64.powf(-0.107)) < HAND_TOL,
+        "{n}"
+    );
+    // Steel: √a = 0.246 − 3.08e-3 s + 1.51e-5 s² − 2.67e-8 s³, s = 470/6.894757 kpsi.
+    let s: f64 = 470.0 / 6.894_757;
+    let a_mm = (0.246 - 3.08e-3 * s + 1.51e-5 * s * s - 2.67e-8 * s * s * s).powi(2) * 25.4;
+    assert!((a_mm - 0.2427).abs() < 1e-4, "a = {a_mm} mm");
+    let st = run(
+        r#"{"type": "circular_notch", "R": 8, "t": 2, "w": 10, "h": 10, "blank_length": 20}"#,
+        "steel",
+    );
+    assert!(
+        rel(get(&st, "notch_sensitivity"), 1.0 / (1.0 + a_mm / 8.0)) < HAND_TOL,
+        "{st}"
+    );
+    // S_e = k_a k_b · 235 MPa with k_a = 4.51·470^−0.265 and the notch's k_b.
+    let se = 4.51 * 470.0_f64.powf(-0.265) * 1.24 * (0.808 * 20.0_f64.sqrt()).powf(-0.107) * 235.0;
+    assert!(rel(get(&st, "endurance_corrected"), se) < HAND_TOL, "{st}");
 }

@@ -14,8 +14,11 @@ pub struct FatigueOut {
     /// Fatigue utilisation at the required cycles: σ_a/S_f(N) + σ_m/S_ut (Goodman) or
     /// σ_m/S_y (Soderberg); ≤ 1 passes.
     pub fatigue_utilisation: f64,
-    /// Predicted life, cycles (`null`: infinite, the stroke is within the endurance limit).
+    /// Predicted life, cycles (absent when `infinite_life`).
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub life_cycles: Option<f64>,
+    /// The stroke is within the endurance limit (no `life_cycles`).
+    pub infinite_life: bool,
     /// Alternating rotation about the compliant axis at which the utilisation at infinite
     /// life is 1, given the mean rotation, degrees (0: the mean alone exhausts it).
     pub stroke_infinite_life: f64,
@@ -92,6 +95,7 @@ pub fn assess(spec: &FatigueSpec, m: &Material, f: &MaterialFatigue, p: &Profile
     let stroke_infinite_life = (se * ratio.max(0.0) / c).to_degrees();
     FatigueOut {
         fatigue_utilisation,
+        infinite_life: life_cycles.is_none(),
         life_cycles,
         stroke_infinite_life,
         kt,

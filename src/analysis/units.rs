@@ -105,6 +105,7 @@ impl Units for HingeOut {
             ["fatigue", field] => match *field {
                 "fatigue_utilisation" | "kt" | "notch_sensitivity" | "kf" | "marin_surface" | "marin_size" => "-",
                 "life_cycles" => "cycles",
+                "infinite_life" => "-",
                 "stroke_infinite_life" => "deg",
                 "notch_radius_mm" => "mm",
                 "endurance_corrected" | "stress_alternating" | "stress_mean" => "MPa",
