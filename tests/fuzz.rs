@@ -817,6 +817,7 @@ fn static_invariants(result: &Value, doc: &Value) -> Vec<String> {
         let mut sum = [0.0f64; 6];
         let mut abs = [0.0f64; 6];
         let mut size = 0.0f64;
+        // zip-checked: the lengths are compared just above (an unequal pair is reported and skipped).
         for (r, &n) in reactions.iter().zip(&at) {
             let x = nodes.as_ref().and_then(|v| v.get(n)).copied();
             let m = x.map(|x| {

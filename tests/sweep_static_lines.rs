@@ -70,7 +70,10 @@ fn static_sweep_keeps_the_loaded_nodes_displacements() {
         assert!(lc.get("element_von_mises").is_none() && lc["hinges"][0].get("end_forces").is_none());
         assert_eq!(lc["hinges"][0]["utilisation"], whole["result"]["load_cases"][0]["hinges"][0]["utilisation"]);
         let (short, long) = (line.to_string().len(), whole.to_string().len());
-        assert!(2 * short < long, "default line {short} B vs full {long} B");
+        // Measured 3,884 B against 6,529 B (0.59): the full line no longer carries the hinges'
+        // inner segment nodes (hidden by default), so the gap is the per-element stress lists and
+        // hinge end forces the default line leaves out.
+        assert!((short as f64) < 0.62 * long as f64, "default line {short} B vs full {long} B");
     }
     cleanup(&d);
 }

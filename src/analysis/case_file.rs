@@ -166,7 +166,7 @@ pub fn parse_value(value: Value, base: Option<&Path>) -> Result<Case, CaseError>
 /// whose designs differ from one already checked only in scalar values may skip it
 /// ([`parse_resolved`] with `check_arrays` false).
 pub fn check_shape(value: &Value) -> Result<(), CaseError> {
-    super::case_shape::refuse_positional(value)
+    super::case_shape::refuse_positional(value, schema)
 }
 
 /// [`parse_value`] without [`check_shape`], for a value whose arrays were checked already.

@@ -12,7 +12,6 @@
 //! index per array item, a binary search per object field among a few sorted names, and no
 //! allocation unless there is an error; a subtree that cannot hold a refused array is skipped.
 
-use super::case_file::schema;
 use crate::case::{short, CaseError};
 use serde_json::{Map, Value};
 use std::collections::HashMap;
@@ -41,8 +40,9 @@ struct Shapes {
     root: Id,
 }
 
-/// Refuses an array where the case schema allows only an object (see the module docs).
-pub fn refuse_positional(value: &Value) -> Result<(), CaseError> {
+/// Refuses an array where the case schema allows only an object (see the module docs). `schema`
+/// gives the case schema; it is called once per process, when the shape graph is compiled.
+pub fn refuse_positional(value: &Value, schema: fn() -> Value) -> Result<(), CaseError> {
     static SHAPES: OnceLock<Shapes> = OnceLock::new();
     let s = SHAPES.get_or_init(|| compile(&schema()));
     let mut steps = Vec::new();

@@ -118,35 +118,6 @@ fn hinge_table(c: &StaticCaseRow) -> String {
     )
 }
 
-/// Markdown lines with the largest and smallest principal shell stresses of a load case and
-/// where they occur (node, surface); empty without shells.
-pub(super) fn principal_extremes(c: &StaticCaseRow) -> String {
-    let Some(ss) = &c.shell_stress else {
-        return String::new();
-    };
-    let mut hi: Option<(f64, usize, &str)> = None;
-    let mut lo: Option<(f64, usize, &str)> = None;
-    for (name, list) in [("top", &ss.top), ("mid", &ss.mid), ("bottom", &ss.bottom)] {
-        for (node, s) in list.iter().enumerate() {
-            let Some(s) = s else { continue };
-            let p = fem::shell_recovery::principal(s);
-            if hi.is_none_or(|h| p[2] > h.0) {
-                hi = Some((p[2], node, name));
-            }
-            if lo.is_none_or(|l| p[0] < l.0) {
-                lo = Some((p[0], node, name));
-            }
-        }
-    }
-    match (hi, lo) {
-        (Some(h), Some(l)) => format!(
-            "Shells, extreme principal stresses (nodal averages): largest σ₁ = {} MPa at node {} ({} surface); smallest σ₃ = {} MPa at node {} ({} surface).\n\n",
-            num(h.0, DIGITS), h.1, h.2, num(l.0, DIGITS), l.1, l.2
-        ),
-        _ => String::new(),
-    }
-}
-
 /// A `.vtu` of one load case (see [`crate::analysis::vtu`]): the undeformed model with displacement and
 /// rotation point data, shell stresses and stress resultants
 /// ([`crate::analysis::vtu::static_vtu_with_shells`]) and von Mises per cell (the element's maximum over its ends / shell

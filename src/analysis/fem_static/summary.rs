@@ -60,7 +60,7 @@ fn load_case(c: &StaticCaseRow) -> String {
         }
     };
     md += "\n";
-    md += &super::report::principal_extremes(c);
+    md += &principal_extremes(c);
     if c.loaded_nodes.is_empty() {
         md += "No nodal loads or prescribed displacements (distributed loads only).\n\n";
     } else {
@@ -108,4 +108,33 @@ fn load_case(c: &StaticCaseRow) -> String {
         md += &format!("> **Warning**: {w}\n\n");
     }
     md
+}
+
+/// Markdown lines with the largest and smallest principal shell stresses of a load case and
+/// where they occur (node, surface); empty without shells.
+fn principal_extremes(c: &StaticCaseRow) -> String {
+    let Some(ss) = &c.shell_stress else {
+        return String::new();
+    };
+    let mut hi: Option<(f64, usize, &str)> = None;
+    let mut lo: Option<(f64, usize, &str)> = None;
+    for (name, list) in [("top", &ss.top), ("mid", &ss.mid), ("bottom", &ss.bottom)] {
+        for (node, s) in list.iter().enumerate() {
+            let Some(s) = s else { continue };
+            let p = crate::fem::shell_recovery::principal(s);
+            if hi.is_none_or(|h| p[2] > h.0) {
+                hi = Some((p[2], node, name));
+            }
+            if lo.is_none_or(|l| p[0] < l.0) {
+                lo = Some((p[0], node, name));
+            }
+        }
+    }
+    match (hi, lo) {
+        (Some(h), Some(l)) => format!(
+            "Shells, extreme principal stresses (nodal averages): largest σ₁ = {} MPa at node {} ({} surface); smallest σ₃ = {} MPa at node {} ({} surface).\n\n",
+            num(h.0, DIGITS), h.1, h.2, num(l.0, DIGITS), l.1, l.2
+        ),
+        _ => String::new(),
+    }
 }
