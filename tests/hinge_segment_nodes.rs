@@ -106,3 +106,25 @@ fn a_mechanism_through_inner_nodes_names_their_hinge() {
     let o = run_in(&d, &["run", p.to_str().unwrap()]);
     exits(&o, 1, &["mechanism", "node 2 uy", "nodes 2, 3, 4 are inner nodes of the segmented hinge elements[0]"]);
 }
+
+#[test]
+fn modal_and_buckling_shapes_list_the_case_nodes() {
+    // 4 segments: 3 inner nodes after the case's 2. The first mode's tip row is the same number
+    // whether the inner rows are listed or not (they are cut off, not renumbered).
+    let c = leaf_case("modal", 4, json!({"modes": 2}));
+    let r = run(&parse(&c.to_string()).unwrap()).unwrap().json;
+    let modes = r["modes"].as_array().unwrap();
+    assert_eq!(modes.len(), 2);
+    for m in modes {
+        assert_eq!(m["shape"].as_array().unwrap().len(), 2, "{m}");
+    }
+    assert!(r["model"].to_string().contains("3 inner nodes"), "{}", r["model"]);
+    // Buckling of the same hinge under an axial tip push: shapes by case node too.
+    let mut b = leaf_case("buckling", 4, json!({"modes": 1}));
+    b["load_cases"] = json!([{"name": "push", "forces": [{"node": 1, "F": [-1, 0, 0, 0, 0, 0]}]}]);
+    let r = run(&parse(&b.to_string()).unwrap()).unwrap().json;
+    let rows = r["buckling"].as_array().unwrap();
+    assert_eq!(rows.len(), 1);
+    assert_eq!(rows[0]["shape"].as_array().unwrap().len(), 2, "{}", rows[0]);
+    assert!(r["model"].to_string().contains("3 inner nodes"), "{}", r["model"]);
+}

@@ -117,10 +117,10 @@ pub struct BucklingResult {
 /// `buckling`: linear buckling load multipliers and mode shapes.
 pub struct Buckling;
 
-fn build(case: &BucklingCase) -> Result<Model, CaseError> {
+fn build(case: &BucklingCase) -> Result<(Model, Vec<crate::case::mesh::BuiltHinge>), CaseError> {
     crate::case::mesh::superelement::refuse_in(&case.model, "linear buckling")?;
     crate::case::limits::check_modal(case.modes, case.model.nodes.len())?;
-    let model = case.model.build_model(true)?;
+    let (model, hinges) = case.model.build_with_hinges(true, false)?;
     if let Some(ie) = model.elements.iter().position(|e| matches!(e, Element::Shell4(_))) {
         return Err(CaseError::new(
             format!("elements[{}]", shell_case_element(case, ie)),
@@ -129,7 +129,7 @@ fn build(case: &BucklingCase) -> Result<Model, CaseError> {
             ),
         ));
     }
-    Ok(model)
+    Ok((model, hinges))
 }
 
 /// The first case element that is a shell.
@@ -240,8 +240,11 @@ impl Analysis for Buckling {
         build(case).map(|_| ())
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        let model = build(case)?;
-        let (r, raw) = solve(&model, case.modes, case.shapes)?;
+        let (model, hinges) = build(case)?;
+        let (mut r, raw) = solve(&model, case.modes, case.shapes)?;
+        let shapes = r.buckling.iter_mut().filter_map(|row| row.shape.as_mut());
+        let user = case.model.nodes.len();
+        r.model.extend(super::fem_static::inner_nodes::hide_in_shapes(shapes, &model, &hinges, user));
         ctx.warnings = warnings(&model, &r);
         ctx.warnings.extend(super::warn::fewer_modes(case.modes, raw.modes.len(), Some(raw.n_eq)));
         if ctx.with_files {

@@ -319,12 +319,14 @@ impl Analysis for Modal {
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         case::limits::check_modal(case.modes, case.model.nodes.len())?;
-        let model = case.model.build_model(false)?;
+        let (model, hinges) = case.model.build_with_hinges(false, false)?;
         let (mut r, raw) = modal::solve_with(&model, case.modes, case.shift_hz, ctx.cache)?;
         modal::mark_rigid_body(&model, &raw, &mut r);
         if !case.shapes {
             r.modes.iter_mut().for_each(|row| row.shape = None);
         }
+        let shapes = r.modes.iter_mut().filter_map(|row| row.shape.as_mut());
+        r.model.extend(fem_static::inner_nodes::hide_in_shapes(shapes, &model, &hinges, case.model.nodes.len()));
         ctx.warnings = modal::drilling_warnings(&model, &raw);
         ctx.warnings.extend(warn::fewer_modes(case.modes, raw.modes.len(), Some(raw.n_eq)));
         if ctx.with_files {

@@ -1,6 +1,7 @@
 //! The inner nodes of segmented hinge elements (`"segments"` > 1): numbered after the case's
 //! nodes, they are hidden from a `static` result's `displacements` unless the case asks for them
-//! (`"output": {"internal_nodes": true}`), and named as such in error messages.
+//! (`"output": {"internal_nodes": true}`), from the mode shapes of `modal` and `buckling` results
+//! (their `.vtu` files keep every node), and named as such in error messages.
 
 use super::StaticResult;
 use crate::analysis::AnalysisError;
@@ -9,7 +10,7 @@ use crate::fem::Model;
 
 /// Number of inner hinge nodes when they are exactly the model's nodes after the case's
 /// `user` nodes (else 0: e.g. a superelement's modal nodes follow, which stay listed).
-fn trailing_inner(model: &Model, hinges: &[BuiltHinge], user: usize) -> usize {
+pub fn trailing_inner(model: &Model, hinges: &[BuiltHinge], user: usize) -> usize {
     let inner: usize = hinges.iter().map(|h| h.inner_nodes.len()).sum();
     if inner > 0 && model.nodes.len() == user + inner {
         inner
@@ -32,6 +33,27 @@ pub fn hide(r: &mut StaticResult, model: &Model, hinges: &[BuiltHinge], user: us
         "displacements: one row per node of the case; the {inner} inner nodes of segmented hinge elements (nodes {user}–{}) are not listed (\"output\": {{\"internal_nodes\": true}} lists them)",
         user + inner - 1
     ));
+}
+
+/// Cuts the per-node rows of mode shapes (`modal`, `buckling`) to the case's `user` nodes when the
+/// model's last nodes are inner hinge nodes; the model note saying so, or `None`.
+pub fn hide_in_shapes<'a>(
+    shapes: impl Iterator<Item = &'a mut Vec<[f64; 6]>>,
+    model: &Model,
+    hinges: &[BuiltHinge],
+    user: usize,
+) -> Option<String> {
+    let inner = trailing_inner(model, hinges, user);
+    if inner == 0 {
+        return None;
+    }
+    for s in shapes {
+        s.truncate(user);
+    }
+    Some(format!(
+        "shapes: one row per node of the case; the {inner} inner nodes of segmented hinge elements (nodes {user}–{}) are in the .vtu file only",
+        user + inner - 1
+    ))
 }
 
 /// The message `e` with a line naming the hinge element of the inner nodes it mentions
