@@ -169,12 +169,24 @@ fn arc_length_bounds_refused_at_check() {
     for (extra, steps, rule) in [
         (arc(r#"{"min": 0.5, "max": 0.1}"#), None, "must not exceed `max` (0.1)"),
         // steps 50: initial 0.02, max 0.4 by default.
-        (arc(r#"{"min": 0.5}"#), Some(50), "must not exceed the default `max` (20 × initial = 4e-1)"),
-        (arc(r#"{"min": 0.5, "max": 1}"#), None, "must not exceed the default `initial` (1/steps = 5e-2)"),
+        (
+            arc(r#"{"min": 0.5}"#),
+            Some(50),
+            "must not exceed the default `max` (20 × initial = 4e-1)",
+        ),
+        (
+            arc(r#"{"min": 0.5, "max": 1}"#),
+            None,
+            "must not exceed the default `initial` (1/steps = 5e-2)",
+        ),
     ] {
         let mut text = truss_case(&extra, true);
         if let Some(n) = steps {
-            text = text.replacen(r#""nonlinear": true,"#, &format!(r#""nonlinear": true, "steps": {n},"#), 1);
+            text = text.replacen(
+                r#""nonlinear": true,"#,
+                &format!(r#""nonlinear": true, "steps": {n},"#),
+                1,
+            );
         }
         let d = tempdir("arc_bounds");
         let p = d.join("case.json");

@@ -28,9 +28,7 @@ fn lattice_case(n: usize) -> Value {
             for i in 0..m {
                 nodes.push(json!([i as f64 * 20.0, j as f64 * 20.0, k as f64 * 20.0]));
                 let a = id(i, j, k);
-                let beam = |b: usize, up: [f64; 3]| {
-                    json!({"type": "beam", "nodes": [a, b], "section": "strut", "material": "al", "up": up})
-                };
+                let beam = |b: usize, up: [f64; 3]| json!({"type": "beam", "nodes": [a, b], "section": "strut", "material": "al", "up": up});
                 if i + 1 < m {
                     elements.push(beam(id(i + 1, j, k), [0.0, 0.0, 1.0]));
                 }

@@ -76,7 +76,11 @@ fn weld_within_the_joint_tolerance_runs_as_the_unwelded_cantilever() {
 fn a_joint_farther_apart_than_the_tolerance_is_refused_at_check() {
     let mut d = cantilever(&[[100.0, 0.0, 1e-3]]);
     d["elements"].as_array_mut().unwrap().push(weld(2, 3));
-    refused(d, "elements[2].nodes", &["apart", "a joint joins coincident nodes", "of the model size"]);
+    refused(
+        d,
+        "elements[2].nodes",
+        &["apart", "a joint joins coincident nodes", "of the model size"],
+    );
 }
 
 #[test]
@@ -86,7 +90,11 @@ fn a_dof_prescribed_twice_in_one_load_case() {
         {"node": 2, "dof": "uz", "value": 1},
         {"node": 2, "dof": "uz", "value": 2}
     ]);
-    refused(d, "load_cases[0].displacements[1].dof", &["already prescribed", "displacements[0]"]);
+    refused(
+        d,
+        "load_cases[0].displacements[1].dof",
+        &["already prescribed", "displacements[0]"],
+    );
 }
 
 #[test]
@@ -106,7 +114,10 @@ fn chained_and_duplicate_rigid_link_slaves() {
     refused(d, "rigid_links[1].slaves[0]", &["already a slave", "rigid_links[0]"]);
     // The same slave twice in one link, given as a `rigid` element.
     let mut d = cantilever(&[[110.0, 0.0, 0.0]]);
-    d["elements"].as_array_mut().unwrap().push(json!({"type": "rigid", "master": 2, "slaves": [3, 3]}));
+    d["elements"]
+        .as_array_mut()
+        .unwrap()
+        .push(json!({"type": "rigid", "master": 2, "slaves": [3, 3]}));
     refused(d, "elements[2].slaves[1]", &["listed twice"]);
 }
 
@@ -114,12 +125,23 @@ fn chained_and_duplicate_rigid_link_slaves() {
 fn a_supported_or_prescribed_rigid_link_slave() {
     let mut d = cantilever(&[[110.0, 0.0, 0.0]]);
     d["rigid_links"] = json!([{"master": 2, "slaves": [3]}]);
-    d["supports"].as_array_mut().unwrap().push(json!({"node": 3, "fix": ["ux"]}));
-    refused(d, "supports[1].node", &["slave of `rigid_links[0]`", "support the master"]);
+    d["supports"]
+        .as_array_mut()
+        .unwrap()
+        .push(json!({"node": 3, "fix": ["ux"]}));
+    refused(
+        d,
+        "supports[1].node",
+        &["slave of `rigid_links[0]`", "support the master"],
+    );
     let mut d = cantilever(&[[110.0, 0.0, 0.0]]);
     d["rigid_links"] = json!([{"master": 2, "slaves": [3]}]);
     d["load_cases"][0]["displacements"] = json!([{"node": 3, "dof": "uz", "value": 1}]);
-    refused(d, "load_cases[0].displacements[0].node", &["slave of `rigid_links[0]`", "prescribe the master"]);
+    refused(
+        d,
+        "load_cases[0].displacements[0].node",
+        &["slave of `rigid_links[0]`", "prescribe the master"],
+    );
 }
 
 #[test]
@@ -205,11 +227,22 @@ fn stage_with_ideal_joints_runs_and_needs_no_force_for_a_compatible_stroke() {
     let k_c = compliant.json["stiffness_z"].as_f64().unwrap();
     let k_i = ideal.json["stiffness_z"].as_f64().unwrap();
     assert!(k_c > 1.0, "compliant stiffness_z {k_c} N/mm");
-    assert!(k_i.abs() < 1e-6 * k_c, "ideal stiffness_z {k_i} N/mm vs compliant {k_c} N/mm");
-    assert!(ideal.json["at_allowable"]["force"].is_null(), "{}", ideal.json["at_allowable"]);
+    assert!(
+        k_i.abs() < 1e-6 * k_c,
+        "ideal stiffness_z {k_i} N/mm vs compliant {k_c} N/mm"
+    );
+    assert!(
+        ideal.json["at_allowable"]["force"].is_null(),
+        "{}",
+        ideal.json["at_allowable"]
+    );
     // Actuator forces on free sliders are a mechanism: refused at check.
     d["load_cases"] = json!([{"name": "F", "actuator_forces": [1, 1, 1]}]);
-    refused(d, "load_cases[0].actuator_forces", &["ideal_joints", "actuator_strokes"]);
+    refused(
+        d,
+        "load_cases[0].actuator_forces",
+        &["ideal_joints", "actuator_strokes"],
+    );
 }
 
 #[test]
@@ -251,7 +284,10 @@ fn an_unbalanced_static_solution_is_an_analysis_error_not_a_result() {
             assert!(e.message.contains("does not balance the loads"), "{e}");
         }
         Err(RunError::Case(e)) => panic!("refused as input: {e}"),
-        Ok(o) => panic!("run wrote a result: residual {}", o.json["load_cases"][0]["equilibrium_residual"]),
+        Ok(o) => panic!(
+            "run wrote a result: residual {}",
+            o.json["load_cases"][0]["equilibrium_residual"]
+        ),
     }
     // The bundled case itself balances.
     let o = analysis::run(&parse(bundled("han2019_prs_head"))).unwrap_or_else(|e| panic!("{e}"));

@@ -238,7 +238,11 @@ fn readme_worked_example_matches_the_program() {
     // warning, say) may be missing from it.
     let truncated = readme[start + cmd.len()..].lines().nth(1 + shown.len()) == Some("...");
     if !truncated {
-        assert_eq!(shown.len(), printed.len(), "README worked example misses the program's last lines");
+        assert_eq!(
+            shown.len(),
+            printed.len(),
+            "README worked example misses the program's last lines"
+        );
     }
     assert!(md.contains("| F20 | 20.00, 20.00, 20.00 | 0.9098, 0.9098, 0.9098 | 908.9 |"));
 }

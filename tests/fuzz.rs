@@ -656,7 +656,9 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
         }
         return;
     }
-    let Some(checked) = unless_panics(f, ("panic in check", &analysis, doc, what), || analysis::check(parsed).map_err(|e| resolved.locate(e))) else {
+    let Some(checked) = unless_panics(f, ("panic in check", &analysis, doc, what), || {
+        analysis::check(parsed).map_err(|e| resolved.locate(e))
+    }) else {
         return;
     };
     f.runs += 1;
@@ -785,7 +787,11 @@ fn exercise(doc: &Value, what: &str, f: &mut Findings) {
 
 /// Messages of the solver's constraint checks ([`flexfem::fem::FemError`]) that are about the
 /// input: a case that reaches them passed `check` with an input `run` cannot take.
-const INPUT_CONFLICTS: [&str; 3] = ["over-constrained", "is prescribed twice", "a tie joins coincident nodes"];
+const INPUT_CONFLICTS: [&str; 3] = [
+    "over-constrained",
+    "is prescribed twice",
+    "a tie joins coincident nodes",
+];
 
 /// The static result's own checks, for every load case: equilibrium (the summed reactions
 /// balance the applied loads within 1e-6 of the load scale; the applied load is the residual
@@ -803,14 +809,22 @@ fn static_invariants(result: &Value, doc: &Value) -> Vec<String> {
         let vec6 = |v: &Value| -> Option<[f64; 6]> { serde_json::from_value(v.clone()).ok() };
         let (Some(res), Some(reactions), Some(at)) = (
             c.get("equilibrium_residual").and_then(vec6),
-            c.get("reactions").and_then(|r| serde_json::from_value::<Vec<[f64; 6]>>(r.clone()).ok()),
-            c.get("reaction_nodes").and_then(|r| serde_json::from_value::<Vec<usize>>(r.clone()).ok()),
+            c.get("reactions")
+                .and_then(|r| serde_json::from_value::<Vec<[f64; 6]>>(r.clone()).ok()),
+            c.get("reaction_nodes")
+                .and_then(|r| serde_json::from_value::<Vec<usize>>(r.clone()).ok()),
         ) else {
-            out.push(format!("load case {name}: equilibrium_residual, reactions or reaction_nodes missing"));
+            out.push(format!(
+                "load case {name}: equilibrium_residual, reactions or reaction_nodes missing"
+            ));
             continue;
         };
         if reactions.len() != at.len() {
-            out.push(format!("load case {name}: {} reactions for {} reaction nodes", reactions.len(), at.len()));
+            out.push(format!(
+                "load case {name}: {} reactions for {} reaction nodes",
+                reactions.len(),
+                at.len()
+            ));
             continue;
         }
         // Resultant of the reactions about the origin (moments only with the node positions).
@@ -859,7 +873,9 @@ fn static_invariants(result: &Value, doc: &Value) -> Vec<String> {
             .and_then(Value::as_array)
             .is_some_and(|v| v.iter().any(|s| s.as_f64().is_some_and(|s| s > 0.0)));
         if stressed && c.get("max_von_mises").is_none_or(Value::is_null) {
-            out.push(format!("load case {name}: an element carries stress but max_von_mises is null"));
+            out.push(format!(
+                "load case {name}: an element carries stress but max_von_mises is null"
+            ));
         }
     }
     out
@@ -1059,10 +1075,17 @@ fn fuzz_binary_exit_codes_and_files() {
                                     match serde_json::from_str::<Value>(line) {
                                         Ok(v) => {
                                             let mut bad = Vec::new();
-                                            non_finite_in_json(&v, "", &format!("designs.jsonl line {}", k + 1), &mut bad);
+                                            non_finite_in_json(
+                                                &v,
+                                                "",
+                                                &format!("designs.jsonl line {}", k + 1),
+                                                &mut bad,
+                                            );
                                             problems.extend(bad.into_iter().take(2));
                                         }
-                                        Err(e) => problems.push(format!("designs.jsonl line {} is not JSON: {e}", k + 1)),
+                                        Err(e) => {
+                                            problems.push(format!("designs.jsonl line {} is not JSON: {e}", k + 1))
+                                        }
                                     }
                                 }
                             }
@@ -1129,9 +1152,15 @@ fn every_analysis_kind_has_a_fuzzed_case() {
             }
         }
     }
-    let missing: Vec<&&str> = analysis::ANALYSES.iter().filter(|k| !kinds.iter().any(|x| x == **k)).collect();
+    let missing: Vec<&&str> = analysis::ANALYSES
+        .iter()
+        .filter(|k| !kinds.iter().any(|x| x == **k))
+        .collect();
     assert!(analysis::ANALYSES.len() >= 10, "{} kinds", analysis::ANALYSES.len());
-    assert!(missing.is_empty(), "analysis kinds with no bundled case to fuzz: {missing:?}");
+    assert!(
+        missing.is_empty(),
+        "analysis kinds with no bundled case to fuzz: {missing:?}"
+    );
 }
 
 #[test]

@@ -40,12 +40,21 @@ fn static_displacements_list_the_case_nodes_unless_inner_nodes_are_asked_for() {
     }
     assert!(r["model"].to_string().contains("28 inner nodes"), "{}", r["model"]);
     // Asked for: all 37, the first 9 rows the same numbers.
-    let mut case: Value = serde_json::from_str(&std::fs::read_to_string(root().join("cases/parallelogram_guide.json")).unwrap()).unwrap();
+    let mut case: Value =
+        serde_json::from_str(&std::fs::read_to_string(root().join("cases/parallelogram_guide.json")).unwrap()).unwrap();
     case["mesh"] = json!(root().join("meshes/parallelogram_notch.json").to_str().unwrap());
     case["output"] = json!({"internal_nodes": true});
     let full = run(&parse(&case.to_string()).unwrap()).unwrap().json;
-    for (a, b) in r["load_cases"].as_array().unwrap().iter().zip(full["load_cases"].as_array().unwrap()) {
-        let (a, b) = (a["displacements"].as_array().unwrap(), b["displacements"].as_array().unwrap());
+    for (a, b) in r["load_cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip(full["load_cases"].as_array().unwrap())
+    {
+        let (a, b) = (
+            a["displacements"].as_array().unwrap(),
+            b["displacements"].as_array().unwrap(),
+        );
         assert_eq!((a.len(), b.len()), (9, 37));
         assert_eq!(a[..], b[..9]);
     }
@@ -58,7 +67,9 @@ fn hinge_mass_is_lumped_on_every_chain_node_with_rotary_inertia() {
     // m (w² + h²)/12 (J. L. Meriam, L. G. Kraige, Engineering Mechanics: Dynamics, Table D/4),
     // so the chain's total about x is ρV (25 + 64)/12 whatever the lumping.
     let c = leaf_case("transient", 4, json!({"dt": 1e-5, "steps": 1}));
-    let Case::Transient(t) = parse(&c.to_string()).unwrap() else { panic!("a transient case") };
+    let Case::Transient(t) = parse(&c.to_string()).unwrap() else {
+        panic!("a transient case")
+    };
     let model = t.model.build_model(false).unwrap();
     assert_eq!(model.nodes.len(), 5, "two case nodes and three inner nodes");
     let hinge: Vec<_> = model.masses.iter().filter(|m| m.mass != 1e-6).collect();
@@ -74,7 +85,11 @@ fn hinge_mass_is_lumped_on_every_chain_node_with_rotary_inertia() {
     let inner = hinge.iter().find(|m| m.node == 2).unwrap();
     let about_y = mass / 4.0 * (25.0 / 12.0 + 89.0 / 24.0);
     for i in [1, 2] {
-        assert!((inner.inertia[i] - about_y).abs() < 1e-12 * about_y, "{:?}", inner.inertia);
+        assert!(
+            (inner.inertia[i] - about_y).abs() < 1e-12 * about_y,
+            "{:?}",
+            inner.inertia
+        );
     }
     assert!(hinge.iter().all(|m| m.inertia.iter().all(|v| *v > 0.0)));
 }
@@ -90,21 +105,37 @@ fn transient_of_a_segmented_hinge_has_a_regular_mass_matrix() {
                "loads": [{"node": 1, "force": [0, 0, 0.01, 0, 0, 0], "history": {"type": "step"}}]}),
     );
     let out = run(&parse(&c.to_string()).unwrap()).unwrap();
-    assert!(out.warnings.iter().all(|w| !w.contains("singular")), "{:?}", out.warnings);
+    assert!(
+        out.warnings.iter().all(|w| !w.contains("singular")),
+        "{:?}",
+        out.warnings
+    );
 }
 
 #[test]
 fn a_mechanism_through_inner_nodes_names_their_hinge() {
     // Node 0 held in translation only: the hinge chain spins about it, and the solver's message
     // lists the inner nodes 2, 3, 4 the user never wrote.
-    let mut c = leaf_case("static", 4, json!({"load_cases": [{"name": "push", "forces": [{"node": 1, "F": [0, 0, 1, 0, 0, 0]}]}]}));
+    let mut c = leaf_case(
+        "static",
+        4,
+        json!({"load_cases": [{"name": "push", "forces": [{"node": 1, "F": [0, 0, 1, 0, 0, 0]}]}]}),
+    );
     c["supports"] = json!([{"node": 0, "fix": ["ux", "uy", "uz"]}]);
     c["elements"].as_array_mut().unwrap().truncate(1);
     let d = tempdir("inner_mechanism");
     let p = d.join("case.json");
     std::fs::write(&p, c.to_string()).unwrap();
     let o = run_in(&d, &["run", p.to_str().unwrap()]);
-    exits(&o, 1, &["mechanism", "node 2 uy", "nodes 2, 3, 4 are inner nodes of the segmented hinge elements[0]"]);
+    exits(
+        &o,
+        1,
+        &[
+            "mechanism",
+            "node 2 uy",
+            "nodes 2, 3, 4 are inner nodes of the segmented hinge elements[0]",
+        ],
+    );
 }
 
 #[test]

@@ -66,7 +66,15 @@ fn craig_bampton_over_the_memory_limit_is_refused_at_check() {
     let c = chain(201, json!({"analysis": "craig_bampton", "interface": all, "modes": 0}));
     for cmd in ["check", "run"] {
         let o = flexfem(&format!("cb_mem_{cmd}"), cmd, &c, Some("memory_gib=0.05"));
-        exits_2(&o, &["`interface`", "1206 boundary equations", "memory_gib", "over the limit of"]);
+        exits_2(
+            &o,
+            &[
+                "`interface`",
+                "1206 boundary equations",
+                "memory_gib",
+                "over the limit of",
+            ],
+        );
     }
 }
 
@@ -76,7 +84,10 @@ fn craig_bampton_over_the_dense_size_is_refused_at_check() {
     // allocation), over the 3000 coordinates the dense superelement takes.
     let all: Vec<usize> = (0..3001).collect();
     let c = chain(3001, json!({"analysis": "craig_bampton", "interface": all, "modes": 0}));
-    exits_2(&flexfem("cb_size", "check", &c, None), &["`interface`", "18006 boundary equations", "at most 3000"]);
+    exits_2(
+        &flexfem("cb_size", "check", &c, None),
+        &["`interface`", "18006 boundary equations", "at most 3000"],
+    );
 }
 
 #[test]
@@ -100,7 +111,10 @@ fn craig_bampton_interface_node_without_equations_is_refused_at_check() {
         json!({"analysis": "craig_bampton", "interface": [3, 0], "modes": 0,
                "supports": [{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}]}),
     );
-    exits_2(&flexfem("cb_bare", "check", &c, None), &["`interface[1]`", "has no equations"]);
+    exits_2(
+        &flexfem("cb_bare", "check", &c, None),
+        &["`interface[1]`", "has no equations"],
+    );
 }
 
 #[test]
@@ -137,7 +151,13 @@ fn an_absurd_shard_count_runs_the_first_design() {
     let out = d.join("s.jsonl");
     let o = sweep(
         &d,
-        &[case.to_str().unwrap(), "--shard", "1/18446744073709551615", "--out", out.to_str().unwrap()],
+        &[
+            case.to_str().unwrap(),
+            "--shard",
+            "1/18446744073709551615",
+            "--out",
+            out.to_str().unwrap(),
+        ],
     );
     exits(&o, 0, &[]);
     assert_eq!(summary(&o), [1, 0, 1, 0]);
@@ -146,7 +166,10 @@ fn an_absurd_shard_count_runs_the_first_design() {
     assert_eq!(lines[0]["index"], json!(0));
     // Shard K holds design K − 1 alone: 56 holds none of the 55.
     for (k, count) in [(55, 1), (56, 0)] {
-        let o = sweep(&d, &[case.to_str().unwrap(), "--shard", &format!("{k}/18446744073709551615")]);
+        let o = sweep(
+            &d,
+            &[case.to_str().unwrap(), "--shard", &format!("{k}/18446744073709551615")],
+        );
         exits(&o, 0, &[]);
         assert_eq!(summary(&o)[2], count, "shard {k}");
     }
@@ -187,8 +210,11 @@ fn more_modes_than_the_model_has_are_computed_with_a_warning() {
     // (the modes were cut silently). The lowest is the rz mode, √(6000/3)/2π = 7.1176 Hz.
     for (analysis, extra) in [
         ("modal", json!({"modes": 20})),
-        ("frf", json!({"modes": 20, "frequencies": {"from_hz": 10, "to_hz": 400, "points": 3},
-                       "inputs": [{"node": 0, "force": [1, 0, 0]}], "outputs": [{"node": 0, "dofs": ["ux"]}]})),
+        (
+            "frf",
+            json!({"modes": 20, "frequencies": {"from_hz": 10, "to_hz": 400, "points": 3},
+                       "inputs": [{"node": 0, "force": [1, 0, 0]}], "outputs": [{"node": 0, "dofs": ["ux"]}]}),
+        ),
     ] {
         let o = flexfem(&format!("modes_{analysis}"), "run", &sdof(analysis, extra), None);
         exits(&o, 0, &[]);
@@ -208,11 +234,17 @@ fn frf_ports_on_fixed_dofs_are_refused_at_check() {
     let fixed = json!([{"node": 0, "fix": ["ux", "uy"]}]);
     // The input pushes only along the fixed ux: a silent zero response before.
     let c = frf_ports(json!({"supports": fixed, "outputs": [{"node": 0, "dofs": ["uz"]}]}));
-    exits_2(&flexfem("frf_in_fixed", "check", &c, None), &["`inputs[0].node`", "supports fix"]);
+    exits_2(
+        &flexfem("frf_in_fixed", "check", &c, None),
+        &["`inputs[0].node`", "supports fix"],
+    );
     // The second output DOF, uy, is fixed.
     let c = frf_ports(json!({"supports": [{"node": 0, "fix": ["uy"]}]}));
     for cmd in ["check", "run"] {
-        exits_2(&flexfem(&format!("frf_out_fixed_{cmd}"), cmd, &c, None), &["`outputs[0].dofs[1]`", "value uy"]);
+        exits_2(
+            &flexfem(&format!("frf_out_fixed_{cmd}"), cmd, &c, None),
+            &["`outputs[0].dofs[1]`", "value uy"],
+        );
     }
     // A free DOF is accepted.
     exits(&flexfem("frf_ok", "check", &frf_ports(json!({})), None), 0, &[]);

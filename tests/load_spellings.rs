@@ -44,7 +44,9 @@ fn transient_load_as_f_or_force_gives_the_same_response() {
     let f = run(&case(json!({"node": 0, "F": [2, 0, 0, 0, 0, 0], "history": step})));
     let alias = run(&case(json!({"node": 0, "force": [2, 0, 0, 0, 0, 0], "history": step})));
     assert_eq!(f, alias);
-    let peak = f["records"][0]["max"].as_f64().unwrap_or_else(|| panic!("{}", f["records"][0]));
+    let peak = f["records"][0]["max"]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{}", f["records"][0]));
     assert!((peak / 4e-3 - 1.0).abs() < 2e-3, "peak {peak} mm vs 2·F/k = 0.004 mm");
 }
 
@@ -78,9 +80,8 @@ fn frf_input_as_f_or_force_and_moment_gives_the_same_response() {
 /// Both spellings at once, or none, is refused naming the load (exit 2).
 #[test]
 fn both_spellings_are_refused_naming_the_load() {
-    let transient = |load: Value| {
-        spring_mass(json!({"analysis": "transient", "dt": 1e-4, "steps": 5, "loads": [load]}))
-    };
+    let transient =
+        |load: Value| spring_mass(json!({"analysis": "transient", "dt": 1e-4, "steps": 5, "loads": [load]}));
     let frf = |input: Value| {
         spring_mass(json!({
             "analysis": "frf", "modes": 6,
@@ -90,9 +91,15 @@ fn both_spellings_are_refused_naming_the_load() {
     };
     let step = json!({"type": "step"});
     let cases = [
-        ("loads[0]", transient(json!({"node": 0, "F": [1, 0, 0, 0, 0, 0], "force": [1, 0, 0, 0, 0, 0], "history": step}))),
+        (
+            "loads[0]",
+            transient(json!({"node": 0, "F": [1, 0, 0, 0, 0, 0], "force": [1, 0, 0, 0, 0, 0], "history": step})),
+        ),
         ("loads[0]", transient(json!({"node": 0, "history": step}))),
-        ("inputs[0]", frf(json!({"node": 0, "F": [1, 0, 0, 0, 0, 0], "moment": [0, 0, 1]}))),
+        (
+            "inputs[0]",
+            frf(json!({"node": 0, "F": [1, 0, 0, 0, 0, 0], "moment": [0, 0, 1]})),
+        ),
         ("inputs[0].F", frf(json!({"node": 0, "F": [0, 0, 0, 0, 0, 0]}))),
     ];
     for (path, v) in cases {

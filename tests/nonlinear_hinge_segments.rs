@@ -131,11 +131,17 @@ fn parallelogram_default_segments_match_sixteen() {
     assert!(peak.abs() < 0.01 && peak.abs() < 3e-4, "peak stress {peak}");
     assert!((def.main - 1.0).abs() < 1e-9, "stroke {}", def.main);
     assert!(
-        def.notes.iter().any(|n| n.contains("split into 4 co-rotational segments")),
+        def.notes
+            .iter()
+            .any(|n| n.contains("split into 4 co-rotational segments")),
         "no model note on the default segmentation: {:?}",
         def.notes
     );
-    assert!(!fine.notes.iter().any(|n| n.contains("no \"segments\" given")), "{:?}", fine.notes);
+    assert!(
+        !fine.notes.iter().any(|n| n.contains("no \"segments\" given")),
+        "{:?}",
+        fine.notes
+    );
 }
 
 #[test]
@@ -157,7 +163,9 @@ fn lever_default_segments_match_sixteen() {
     assert!(rot.abs() < 0.01 && rot.abs() < 1e-5, "rotation {rot}");
     assert!(peak.abs() < 0.01 && peak.abs() < 3e-3, "peak stress {peak}");
     assert!(
-        def.notes.iter().any(|n| n.contains("split into 4 co-rotational segments")),
+        def.notes
+            .iter()
+            .any(|n| n.contains("split into 4 co-rotational segments")),
         "{:?}",
         def.notes
     );
@@ -190,5 +198,10 @@ fn linear_run_keeps_single_element_hinges() {
     let rows = r["load_cases"][0]["displacements"].as_array().unwrap().len();
     assert_eq!(rows, 9);
     let notes = r["model"].as_array().unwrap();
-    assert!(!notes.iter().any(|n| n.as_str().unwrap().contains("co-rotational segments")), "{notes:?}");
+    assert!(
+        !notes
+            .iter()
+            .any(|n| n.as_str().unwrap().contains("co-rotational segments")),
+        "{notes:?}"
+    );
 }

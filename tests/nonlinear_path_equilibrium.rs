@@ -23,7 +23,10 @@ fn with_short_root_beam(mut case: Value, len: f64) -> (Value, usize) {
         .position(|e| e["type"] == "beam")
         .unwrap();
     let el = case["elements"][first].clone();
-    let (a, b) = (el["nodes"][0].as_u64().unwrap() as usize, el["nodes"][1].as_u64().unwrap() as usize);
+    let (a, b) = (
+        el["nodes"][0].as_u64().unwrap() as usize,
+        el["nodes"][1].as_u64().unwrap() as usize,
+    );
     let x = |n: usize, k: usize| case["nodes"][n][k].as_f64().unwrap();
     let d: Vec<f64> = (0..3).map(|k| x(b, k) - x(a, k)).collect();
     let l = d.iter().map(|v| v * v).sum::<f64>().sqrt();
@@ -47,7 +50,10 @@ fn with_short_root_beam(mut case: Value, len: f64) -> (Value, usize) {
 /// (2.1e6 N), accepted them. Now `check` and `run` refuse them (exit 2) at the short element.
 #[test]
 fn near_zero_length_beam_is_refused_not_returned_unbalanced() {
-    for (name, size) in [("shallow_arch_arc_length.json", "2.000e2 mm"), ("leaf_guide_track.json", "5.385e1 mm")] {
+    for (name, size) in [
+        ("shallow_arch_arc_length.json", "2.000e2 mm"),
+        ("leaf_guide_track.json", "5.385e1 mm"),
+    ] {
         let (case, short) = with_short_root_beam(read_case(name), 1e-6);
         let d = tempdir("nl_short_beam");
         let p = d.join("case.json");
@@ -80,11 +86,11 @@ fn stiff_short_beam_above_the_limit_reports_its_floor() {
     let e = r["load_cases"][0]["path_equilibrium_residual"].as_f64().unwrap();
     eprintln!("arch with a 0.02 mm beam: path equilibrium residual {e:.3e}");
     assert!(e > 1e-6 && e < 1e-4, "{e}");
-    let warned = r["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .any(|w| w.as_str().unwrap().starts_with("load case \"crown\": equilibrium verified only to"));
+    let warned = r["warnings"].as_array().unwrap().iter().any(|w| {
+        w.as_str()
+            .unwrap()
+            .starts_with("load case \"crown\": equilibrium verified only to")
+    });
     assert!(warned, "{:?}", r["warnings"]);
     common::cleanup(&d);
 }

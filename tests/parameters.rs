@@ -49,7 +49,10 @@ fn parameterised_case_is_the_literal_case_bit_for_bit() {
         "hinge": {"type": "circular_notch", "R": "$R", "t": "$t", "w": "$w", "h": "$w", "blank_length": "10*$t"}
     });
     let mut got = result_of(parameterised);
-    assert_eq!(got.as_object_mut().unwrap().remove("parameters"), Some(json!({"R": 8.0, "t": 2.0, "w": 10.0})));
+    assert_eq!(
+        got.as_object_mut().unwrap().remove("parameters"),
+        Some(json!({"R": 8.0, "t": 2.0, "w": 10.0}))
+    );
     assert_eq!(got.to_string(), result_of(literal).to_string());
 }
 
@@ -123,10 +126,15 @@ fn sweep_over_a_mesh_parameter_equals_plain_runs() {
         let want = result_of(plain);
         assert_eq!(row.value["result"].to_string(), want.to_string(), "design {i}");
         assert_eq!(row.value["result"]["parameters"]["t"], json!(t));
-        let ux = row.value["result"]["load_cases"][0]["displacements"][8][0].as_f64().unwrap();
+        let ux = row.value["result"]["load_cases"][0]["displacements"][8][0]
+            .as_f64()
+            .unwrap();
         stiffness.push(1.0 / ux);
     }
-    assert!(stiffness.windows(2).all(|w| w[1] > w[0]), "a thicker notch is stiffer: {stiffness:?}");
+    assert!(
+        stiffness.windows(2).all(|w| w[1] > w[0]),
+        "a thicker notch is stiffer: {stiffness:?}"
+    );
 }
 
 /// (c) The design hash covers the mesh file: editing a default in the mesh file changes every
@@ -171,13 +179,55 @@ fn parameter_errors_exit_2_naming_path_and_expression() {
         .to_string()
     };
     let cases = [
-        ("unknown", hinge(json!({"t": 2}), "$tt"), "`hinge.t`", "\"$tt\"", "unknown parameter `$tt`"),
-        ("cycle", hinge(json!({"a": "$b", "b": "2*$a"}), "$a"), "`parameters.a`", "\"$b\"", "cycle: $a → $b → $a"),
-        ("division", hinge(json!({"a": 2, "b": 2}), "1/($a - $b)"), "`hinge.t`", "\"1/($a - $b)\"", "division by zero"),
-        ("non_finite", hinge(json!({"a": 1e300}), "$a*$a"), "`hinge.t`", "\"$a*$a\"", "not a finite number"),
-        ("syntax", hinge(json!({"R": 4}), "2*$R +"), "`hinge.t`", "\"2*$R +\"", "syntax error at character 7"),
-        ("sqrt", hinge(json!({"R": 4}), "sqrt(1 - $R)"), "`hinge.t`", "\"sqrt(1 - $R)\"", "sqrt of the negative"),
-        ("hinge_type", json!({"analysis": "hinge", "material": "Al7075", "hinge": "flex"}).to_string(), "`hinge`", "\"flex\"", "hinge_types"),
+        (
+            "unknown",
+            hinge(json!({"t": 2}), "$tt"),
+            "`hinge.t`",
+            "\"$tt\"",
+            "unknown parameter `$tt`",
+        ),
+        (
+            "cycle",
+            hinge(json!({"a": "$b", "b": "2*$a"}), "$a"),
+            "`parameters.a`",
+            "\"$b\"",
+            "cycle: $a → $b → $a",
+        ),
+        (
+            "division",
+            hinge(json!({"a": 2, "b": 2}), "1/($a - $b)"),
+            "`hinge.t`",
+            "\"1/($a - $b)\"",
+            "division by zero",
+        ),
+        (
+            "non_finite",
+            hinge(json!({"a": 1e300}), "$a*$a"),
+            "`hinge.t`",
+            "\"$a*$a\"",
+            "not a finite number",
+        ),
+        (
+            "syntax",
+            hinge(json!({"R": 4}), "2*$R +"),
+            "`hinge.t`",
+            "\"2*$R +\"",
+            "syntax error at character 7",
+        ),
+        (
+            "sqrt",
+            hinge(json!({"R": 4}), "sqrt(1 - $R)"),
+            "`hinge.t`",
+            "\"sqrt(1 - $R)\"",
+            "sqrt of the negative",
+        ),
+        (
+            "hinge_type",
+            json!({"analysis": "hinge", "material": "Al7075", "hinge": "flex"}).to_string(),
+            "`hinge`",
+            "\"flex\"",
+            "hinge_types",
+        ),
     ];
     for (name, text, path, expr, why) in cases {
         let d = tempdir(&format!("param_err_{name}"));
@@ -186,8 +236,14 @@ fn parameter_errors_exit_2_naming_path_and_expression() {
             let out = run_in(&d, &[cmd, "c.json"]);
             let err = stderr(&out);
             assert_eq!(out.status.code(), Some(2), "{name} {cmd}: {err}");
-            assert!(err.contains(&format!("case file error at {path}")), "{name} {cmd}: path {path} in {err}");
-            assert!(err.contains(expr) && err.contains(why), "{name} {cmd}: {expr} / {why} in {err}");
+            assert!(
+                err.contains(&format!("case file error at {path}")),
+                "{name} {cmd}: path {path} in {err}"
+            );
+            assert!(
+                err.contains(expr) && err.contains(why),
+                "{name} {cmd}: {expr} / {why} in {err}"
+            );
             assert!(!err.contains("panicked"), "{name}: {err}");
         }
     }

@@ -43,7 +43,10 @@ fn parse_label(s: &str) -> f64 {
         .chars()
         .map(|c| match c {
             '⁻' => '-',
-            c => "⁰¹²³⁴⁵⁶⁷⁸⁹".chars().position(|d| d == c).map_or('x', |d| char::from(b'0' + d as u8)),
+            c => "⁰¹²³⁴⁵⁶⁷⁸⁹"
+                .chars()
+                .position(|d| d == c)
+                .map_or('x', |d| char::from(b'0' + d as u8)),
         })
         .collect();
     exp.parse::<i32>().map_or(f64::NAN, |k| 10f64.powi(k))
@@ -84,11 +87,21 @@ fn check_axis(panel: &str, axis: &str, what: &str) -> (Vec<(f64, f64)>, bool) {
     for (tag, text) in &ticks {
         let v = num(tag, "data-value");
         let shown = parse_label(text.trim());
-        let pos = if axis == "x" { num(tag, "x") } else { num(tag, "y") - 4.0 };
+        let pos = if axis == "x" {
+            num(tag, "x")
+        } else {
+            num(tag, "y") - 4.0
+        };
         out.push((pos, v));
         if log {
-            assert!((v.log10() - v.log10().round()).abs() < 1e-9, "{what}: {axis} tick {v} not a power of ten");
-            assert!((shown / v - 1.0).abs() < 1e-9, "{what}: {axis} tick label {text:?} ≠ {v}");
+            assert!(
+                (v.log10() - v.log10().round()).abs() < 1e-9,
+                "{what}: {axis} tick {v} not a power of ten"
+            );
+            assert!(
+                (shown / v - 1.0).abs() < 1e-9,
+                "{what}: {axis} tick label {text:?} ≠ {v}"
+            );
         }
     }
     let steps: Vec<f64> = out.windows(2).map(|w| w[1].1 - w[0].1).collect();
@@ -101,10 +114,19 @@ fn check_axis(panel: &str, axis: &str, what: &str) -> (Vec<(f64, f64)>, bool) {
             "{what}: {axis} step {step} is not 1, 2 or 5 × 10^k"
         );
         for (s, (tag, text)) in steps.iter().zip(&ticks) {
-            assert!((s / step - 1.0).abs() < 1e-9, "{what}: {axis} ticks unevenly spaced: {steps:?}");
+            assert!(
+                (s / step - 1.0).abs() < 1e-9,
+                "{what}: {axis} ticks unevenly spaced: {steps:?}"
+            );
             let v = num(tag, "data-value");
-            assert!(((v / step) - (v / step).round()).abs() < 1e-6, "{what}: {axis} tick {v} off the step {step}");
-            assert!((parse_label(text.trim()) - v).abs() < 1e-6 * step, "{what}: {axis} label {text:?} ≠ {v}");
+            assert!(
+                ((v / step) - (v / step).round()).abs() < 1e-6,
+                "{what}: {axis} tick {v} off the step {step}"
+            );
+            assert!(
+                (parse_label(text.trim()) - v).abs() < 1e-6 * step,
+                "{what}: {axis} label {text:?} ≠ {v}"
+            );
         }
     } else {
         assert!(steps.iter().all(|&s| s > 0.0), "{what}: {axis} log ticks not ascending");
@@ -167,20 +189,33 @@ fn check_panel(panel: &str, what: &str) -> bool {
         }
     }
     // Log axes where the data spans more than two decades (one pixel resolves zero).
-    let vertices: Vec<(f64, f64)> = lines.iter().flatten().copied().chain(marks.iter().map(|m| (m.0, m.1))).collect();
+    let vertices: Vec<(f64, f64)> = lines
+        .iter()
+        .flatten()
+        .copied()
+        .chain(marks.iter().map(|m| (m.0, m.1)))
+        .collect();
     for (ticks, log, screen, axis) in [(&xt, xlog, 0, "x"), (&yt, ylog, 1, "y")] {
         let vals: Vec<f64> = vertices
             .iter()
             .map(|p| value_at(ticks, log, if screen == 0 { p.0 } else { p.1 }))
             .collect();
         let px = (value_at(ticks, false, ticks[0].0 + 1.0) - ticks[0].1).abs();
-        let (lo, hi) = vals.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+        let (lo, hi) = vals
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
         if !log {
-            assert!(!(lo > px && hi / lo > 100.0), "{what}: {axis} data {lo}..{hi} spans more than two decades on a linear axis");
+            assert!(
+                !(lo > px && hi / lo > 100.0),
+                "{what}: {axis} data {lo}..{hi} spans more than two decades on a linear axis"
+            );
         }
     }
     // The legend covers no point of any line and no marker.
-    if let Some((t, _)) = elements(panel, "rect").into_iter().find(|(t, _)| attr(t, "class") == Some("legend-box")) {
+    if let Some((t, _)) = elements(panel, "rect")
+        .into_iter()
+        .find(|(t, _)| attr(t, "class") == Some("legend-box"))
+    {
         let (x, y, w, h) = (num(t, "x"), num(t, "y"), num(t, "width"), num(t, "height"));
         let inside = |px: f64, py: f64, r: f64| px > x - r && px < x + w + r && py > y - r && py < y + h + r;
         for l in &lines {
@@ -189,15 +224,26 @@ fn check_panel(panel: &str, what: &str) -> bool {
                 for k in 0..=n {
                     let a = k as f64 / n as f64;
                     let (px, py) = (s[0].0 + a * (s[1].0 - s[0].0), s[0].1 + a * (s[1].1 - s[0].1));
-                    assert!(!inside(px, py, 0.0), "{what}: legend box covers the line at ({px:.1}, {py:.1})");
+                    assert!(
+                        !inside(px, py, 0.0),
+                        "{what}: legend box covers the line at ({px:.1}, {py:.1})"
+                    );
                 }
             }
             for &(px, py) in l {
-                assert!(!inside(px, py, 0.0), "{what}: legend box covers the point ({px:.1}, {py:.1})");
+                assert!(
+                    !inside(px, py, 0.0),
+                    "{what}: legend box covers the point ({px:.1}, {py:.1})"
+                );
             }
         }
         for m in &marks {
-            assert!(!inside(m.0, m.1, m.2), "{what}: legend box covers the marker at ({}, {})", m.0, m.1);
+            assert!(
+                !inside(m.0, m.1, m.2),
+                "{what}: legend box covers the marker at ({}, {})",
+                m.0,
+                m.1
+            );
         }
     }
     xlog || ylog
@@ -253,10 +299,18 @@ fn every_bundled_plot_has_round_ticks_units_and_a_clear_legend() {
     }
     // The Bode magnitude is on log axes (frequency and |H| span decades); its phase in 90° steps.
     let bode = std::fs::read_to_string(d.join("ruiz2019_stage_frf/o/bode_magnitude.svg")).unwrap();
-    assert!(bode.contains("class=\"axis-x\" data-scale=\"log\"") && bode.contains("class=\"axis-y\" data-scale=\"log\""));
+    assert!(
+        bode.contains("class=\"axis-x\" data-scale=\"log\"") && bode.contains("class=\"axis-y\" data-scale=\"log\"")
+    );
     let phase = std::fs::read_to_string(d.join("ruiz2019_stage_frf/o/bode_phase.svg")).unwrap();
-    assert!(phase.contains("class=\"tick-y\" data-value=\"9e1\""), "phase ticks not at multiples of 90°");
-    assert!(panels >= files.len() && logs >= 2, "{panels} panels, {logs} with a log axis");
+    assert!(
+        phase.contains("class=\"tick-y\" data-value=\"9e1\""),
+        "phase ticks not at multiples of 90°"
+    );
+    assert!(
+        panels >= files.len() && logs >= 2,
+        "{panels} panels, {logs} with a log axis"
+    );
     cleanup(&d);
 }
 
@@ -267,11 +321,17 @@ fn synthetic(yticks: &[(f64, &str)], ylabel: &str, lx: f64, ly: f64) -> String {
     s += "<line class=\"axis-x\" data-scale=\"linear\" x1=\"75\" y1=\"365\" x2=\"620\" y2=\"365\"/>\n";
     s += "<line class=\"axis-y\" data-scale=\"linear\" x1=\"75\" y1=\"40\" x2=\"75\" y2=\"365\"/>\n";
     for (i, v) in [0.0, 0.5, 1.0].iter().enumerate() {
-        s += &format!("<text class=\"tick-x\" data-value=\"{v}\" x=\"{}\" y=\"383\">{v}</text>\n", 75.0 + 272.5 * i as f64);
+        s += &format!(
+            "<text class=\"tick-x\" data-value=\"{v}\" x=\"{}\" y=\"383\">{v}</text>\n",
+            75.0 + 272.5 * i as f64
+        );
     }
     let n = yticks.len() as f64 - 1.0;
     for (i, (v, l)) in yticks.iter().enumerate() {
-        s += &format!("<text class=\"tick-y\" data-value=\"{v}\" x=\"69\" y=\"{}\">{l}</text>\n", 369.0 - 325.0 * i as f64 / n);
+        s += &format!(
+            "<text class=\"tick-y\" data-value=\"{v}\" x=\"69\" y=\"{}\">{l}</text>\n",
+            369.0 - 325.0 * i as f64 / n
+        );
     }
     s += "<text class=\"label-x\" x=\"347\" y=\"405\">time (s)</text>\n";
     s += &format!("<text class=\"label-y\" x=\"16\" y=\"200\">{ylabel}</text>\n");
@@ -290,7 +350,12 @@ fn the_plot_checks_refuse_the_plots_of_the_issue() {
     let round = [(0.0, "0"), (0.5, "0.5"), (1.0, "1.0")];
     assert!(!check_panel(&synthetic(&round, "uz (mm)", 80.0, 45.0), "round"));
     let fails = |svg: String| std::panic::catch_unwind(|| check_panel(&svg, "bad")).is_err();
-    assert!(fails(synthetic(&[(-0.135, "-0.135"), (0.459, "0.459"), (1.05, "1.05")], "uz (mm)", 80.0, 45.0)));
+    assert!(fails(synthetic(
+        &[(-0.135, "-0.135"), (0.459, "0.459"), (1.05, "1.05")],
+        "uz (mm)",
+        80.0,
+        45.0
+    )));
     assert!(fails(synthetic(&round, "uz", 80.0, 45.0)));
     // Legend box over the middle of the line.
     assert!(fails(synthetic(&round, "uz (mm)", 300.0, 190.0)));

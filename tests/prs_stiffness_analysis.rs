@@ -127,7 +127,11 @@ fn unreachable_pose_is_an_error() {
 #[test]
 fn sprint_case_platform_is_above_the_revolute_joints() {
     let v = load("prs_stiffness_sprint_z3");
-    assert_eq!(v["mechanism"]["branch"], json!("minus"), "the case must state its IKP branch");
+    assert_eq!(
+        v["mechanism"]["branch"],
+        json!("minus"),
+        "the case must state its IKP branch"
+    );
     let case = parse(v);
     let layout = case.validate().unwrap().model.layout;
     let m = case.map.as_ref().unwrap();
@@ -143,7 +147,13 @@ fn sprint_case_platform_is_above_the_revolute_joints() {
         for (i, c) in st.c_pts.iter().enumerate() {
             // Home pose: z(P) = 250 mm, z(Cᵢ) = 250 − √(500² − 76.923²) = −244.0 mm (branch
             // `plus`: +744.0 mm, the platform hanging below the joints).
-            assert!(st.pz > c.z, "pose ({pz}, {psi}°, {theta}°): z(P) = {} mm, z(C{}) = {} mm", st.pz, i + 1, c.z);
+            assert!(
+                st.pz > c.z,
+                "pose ({pz}, {psi}°, {theta}°): z(P) = {} mm, z(C{}) = {} mm",
+                st.pz,
+                i + 1,
+                c.z
+            );
         }
     }
 }

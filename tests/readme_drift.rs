@@ -93,7 +93,13 @@ fn figures(text: &str, line: usize) -> Vec<Figure> {
         if let Some((f, kind, m)) = unit(&text[j..]).filter(|_| !unit_name) {
             let before = text[..i].trim_end();
             let approx = before.ends_with('≈') || before.ends_with('~');
-            out.push(Figure { lo: lo * f, hi: hi * f, kind, approx, line });
+            out.push(Figure {
+                lo: lo * f,
+                hi: hi * f,
+                kind,
+                approx,
+                line,
+            });
             j += m;
         }
         i = j;
@@ -130,7 +136,10 @@ fn agrees(p: &Figure, t: &Figure) -> bool {
 
 #[test]
 fn figure_scanner_reads_ranges_units_and_approximations() {
-    let f = figures("≈ 36 µs, 27,000–30,300 stage designs per second, 7.53 ms, 2,556/s, 384 s, α (1/s), L2 5 ms", 1);
+    let f = figures(
+        "≈ 36 µs, 27,000–30,300 stage designs per second, 7.53 ms, 2,556/s, 384 s, α (1/s), L2 5 ms",
+        1,
+    );
     assert_eq!(f.len(), 5, "{f:?}");
     assert!((f[0].lo - 36e-6).abs() < 1e-15 && f[0].approx && f[0].kind == Kind::Time);
     assert!(f[1].lo == 27_000.0 && f[1].hi == 30_300.0 && f[1].kind == Kind::Rate && !f[1].approx);
@@ -138,11 +147,23 @@ fn figure_scanner_reads_ranges_units_and_approximations() {
     assert_eq!(f[3].lo, 2_556.0);
     assert!((f[4].lo - 5e-3).abs() < 1e-15);
     // A figure outside the table's range, or of another kind, does not agree.
-    let t = Figure { lo: 15.6e-6, hi: 15.6e-6, kind: Kind::Time, approx: false, line: 0 };
+    let t = Figure {
+        lo: 15.6e-6,
+        hi: 15.6e-6,
+        kind: Kind::Time,
+        approx: false,
+        line: 0,
+    };
     assert!(agrees(&figures("15.6 µs", 1)[0], &t));
     assert!(!agrees(&figures("0.35 ms", 1)[0], &t));
     assert!(!agrees(&figures("16 µs", 1)[0], &t));
-    let neck = Figure { lo: 36.0e-6, hi: 36.0e-6, kind: Kind::Time, approx: false, line: 0 };
+    let neck = Figure {
+        lo: 36.0e-6,
+        hi: 36.0e-6,
+        kind: Kind::Time,
+        approx: false,
+        line: 0,
+    };
     assert!(agrees(&figures("≈ 36 µs", 1)[0], &neck) && !agrees(&figures("≈ 35 µs", 1)[0], &neck));
 }
 
@@ -152,18 +173,30 @@ fn figure_scanner_reads_ranges_units_and_approximations() {
 fn prose_performance_figures_agree_with_the_performance_table() {
     let (table, prose) = table_and_prose();
     // The tables quote ~60 such figures; the prose (intro, nonlinear bench, FRF bench) several.
-    assert!(table.len() >= 40, "performance table parsed to only {} figures", table.len());
+    assert!(
+        table.len() >= 40,
+        "performance table parsed to only {} figures",
+        table.len()
+    );
     assert!(prose.len() >= 6, "prose has only {} figures: {prose:?}", prose.len());
     let stale: Vec<String> = prose
         .iter()
         .filter(|p| !table.iter().any(|t| agrees(p, t)))
         .map(|p| format!("README.md:{}: {}–{} {:?}", p.line, p.lo, p.hi, p.kind))
         .collect();
-    assert!(stale.is_empty(), "figures quoted in prose that the performance table does not hold:\n{}", stale.join("\n"));
+    assert!(
+        stale.is_empty(),
+        "figures quoted in prose that the performance table does not hold:\n{}",
+        stale.join("\n")
+    );
 }
 
 fn help(args: &[&str]) -> String {
-    let out = Command::new(env!("CARGO_BIN_EXE_flexfem")).args(args).arg("--help").output().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_flexfem"))
+        .args(args)
+        .arg("--help")
+        .output()
+        .unwrap();
     assert!(out.status.success(), "flexfem {args:?} --help failed");
     String::from_utf8(out.stdout).unwrap()
 }
@@ -184,7 +217,10 @@ fn declared(help: &str) -> BTreeSet<String> {
 fn flags(text: &str) -> BTreeSet<String> {
     let mut out = BTreeSet::new();
     for (i, _) in text.match_indices("--") {
-        let name: String = text[i + 2..].chars().take_while(|c| c.is_ascii_lowercase() || *c == '-').collect();
+        let name: String = text[i + 2..]
+            .chars()
+            .take_while(|c| c.is_ascii_lowercase() || *c == '-')
+            .collect();
         let before = text[..i].chars().next_back();
         if !name.is_empty() && before.is_none_or(|c| !c.is_alphanumeric() && c != '-') {
             out.insert(format!("--{name}"));
@@ -209,7 +245,11 @@ fn subcommands(top: &str) -> Vec<String> {
 fn command_rows() -> Vec<&'static str> {
     let section = README.split("\n## Command line\n").nth(1).unwrap();
     let section = section.split("\n## ").next().unwrap();
-    section.lines().skip_while(|l| !l.starts_with('|')).take_while(|l| l.starts_with('|')).collect()
+    section
+        .lines()
+        .skip_while(|l| !l.starts_with('|'))
+        .take_while(|l| l.starts_with('|'))
+        .collect()
 }
 
 /// Each subcommand has a row of the command table, and the row names exactly the flags of that
@@ -232,12 +272,18 @@ fn command_table_names_every_cli_flag() {
         let listed = flags(row);
         assert_eq!(listed, own, "README row of `flexfem {c}` vs `flexfem {c} --help`");
     }
-    let row = rows.iter().find(|r| r.starts_with("| `flexfem --")).expect("a row for the global flags");
+    let row = rows
+        .iter()
+        .find(|r| r.starts_with("| `flexfem --"))
+        .expect("a row for the global flags");
     assert_eq!(flags(row), global);
     // Every subcommand must have its own row: the table holds no command the program lacks.
     for r in rows.iter().skip(2) {
         let name = r.trim_start_matches("| `flexfem ").split([' ', '`']).next().unwrap();
-        assert!(name.starts_with("--") || commands.iter().any(|c| c == name), "README command `{name}` is not a subcommand");
+        assert!(
+            name.starts_with("--") || commands.iter().any(|c| c == name),
+            "README command `{name}` is not a subcommand"
+        );
     }
 }
 
@@ -250,19 +296,37 @@ fn command_table_names_every_cli_flag() {
 /// cantilever; e.g. S. Timoshenko, J. Gere, Mechanics of Materials, §9).
 #[test]
 fn transient_and_frf_reference_examples_run() {
-    let section = README.split("### `transient` and `frf`").nth(1).unwrap().split("\n## ").next().unwrap();
-    let blocks: Vec<&str> = section.split("```json\n").skip(1).map(|b| b.split("```").next().unwrap()).collect();
+    let section = README
+        .split("### `transient` and `frf`")
+        .nth(1)
+        .unwrap()
+        .split("\n## ")
+        .next()
+        .unwrap();
+    let blocks: Vec<&str> = section
+        .split("```json\n")
+        .skip(1)
+        .map(|b| b.split("```").next().unwrap())
+        .collect();
     assert_eq!(blocks.len(), 2, "a transient and an frf example");
     let root = std::env::temp_dir().join(format!("flexfem-readme-examples-{}", std::process::id()));
     std::fs::create_dir_all(root.join("cases")).unwrap();
     std::fs::create_dir_all(root.join("meshes")).unwrap();
-    std::fs::copy(concat!(env!("CARGO_MANIFEST_DIR"), "/meshes/cantilever.json"), root.join("meshes/cantilever.json")).unwrap();
+    std::fs::copy(
+        concat!(env!("CARGO_MANIFEST_DIR"), "/meshes/cantilever.json"),
+        root.join("meshes/cantilever.json"),
+    )
+    .unwrap();
     let mut results = Vec::new();
     for (k, b) in blocks.iter().enumerate() {
         let path = root.join(format!("cases/example_{k}.json"));
         std::fs::write(&path, b).unwrap();
         let case = flexfem::analysis::load(&path).unwrap_or_else(|e| panic!("README example {k}: {e}"));
-        results.push(flexfem::analysis::run(&case).unwrap_or_else(|e| panic!("README example {k}: {e}")).json);
+        results.push(
+            flexfem::analysis::run(&case)
+                .unwrap_or_else(|e| panic!("README example {k}: {e}"))
+                .json,
+        );
     }
     let _ = std::fs::remove_dir_all(&root);
     let (l, a, e, nu, i, area) = (100.0, 50.0, 72_000.0, 0.33, 10.0 * 125.0 / 12.0, 50.0);
@@ -270,10 +334,16 @@ fn transient_and_frf_reference_examples_run() {
     let settled = a * a * (3.0 * l - a) / (6.0 * e * i) + a / kga;
     let record = &results[0]["records"][0];
     let last = record["final_value"].as_f64().unwrap_or_else(|| panic!("{record}"));
-    assert!((-last / settled - 1.0).abs() < 1e-3, "tip uz settles at {last} mm vs −{settled} mm");
+    assert!(
+        (-last / settled - 1.0).abs() < 1e-3,
+        "tip uz settles at {last} mm vs −{settled} mm"
+    );
     let compliance = l * l * l / (3.0 * e * i) + l / kga;
     let gain = results[1]["static_gain"][0][0].as_f64().unwrap();
-    assert!((gain / compliance - 1.0).abs() < 1e-3, "static gain {gain} vs {compliance} mm/N");
+    assert!(
+        (gain / compliance - 1.0).abs() < 1e-3,
+        "static gain {gain} vs {compliance} mm/N"
+    );
 }
 
 /// `key="value"` of an XML start tag.
@@ -292,7 +362,11 @@ fn hinge_axes_svg_labels_are_inside_the_view_box() {
     assert!(README.contains("docs/hinge_axes.svg"));
     let root = &svg[svg.find("<svg").unwrap()..];
     let root = &root[..root.find('>').unwrap()];
-    let view: Vec<f64> = attr(root, "viewBox").unwrap().split_whitespace().map(|v| v.parse().unwrap()).collect();
+    let view: Vec<f64> = attr(root, "viewBox")
+        .unwrap()
+        .split_whitespace()
+        .map(|v| v.parse().unwrap())
+        .collect();
     assert_eq!(view.len(), 4);
     let size: f64 = attr(root, "font-size").unwrap().parse().unwrap();
     let mut boxes: Vec<(String, [f64; 4])> = Vec::new();
@@ -310,7 +384,11 @@ fn hinge_axes_svg_labels_are_inside_the_view_box() {
         };
         let b = [left, y - 0.8 * fs, left + w, y + 0.25 * fs];
         let inside = b[0] >= view[0] && b[1] >= view[1] && b[2] <= view[0] + view[2] && b[3] <= view[1] + view[3];
-        assert!(inside, "label {label:?} spans x {:.0}–{:.0}, y {:.0}–{:.0}: outside the view box {view:?}", b[0], b[2], b[1], b[3]);
+        assert!(
+            inside,
+            "label {label:?} spans x {:.0}–{:.0}, y {:.0}–{:.0}: outside the view box {view:?}",
+            b[0], b[2], b[1], b[3]
+        );
         for (other, o) in &boxes {
             let apart = b[2] <= o[0] || o[2] <= b[0] || b[3] <= o[1] || o[3] <= b[1];
             assert!(apart, "labels {label:?} and {other:?} overlap");

@@ -102,7 +102,8 @@ fn an_unknown_key_inside_a_vary_range() {
 fn a_rigid_link_master_as_its_own_slave_in_a_constraints_case() {
     // The `constraints` analysis builds no stiffness, so nothing refused it; `static` did.
     let mesh: Value =
-        serde_json::from_str(&std::fs::read_to_string(root().join("meshes/parallelogram_notch.json")).unwrap()).unwrap();
+        serde_json::from_str(&std::fs::read_to_string(root().join("meshes/parallelogram_notch.json")).unwrap())
+            .unwrap();
     let mut d = bundled("constraints_parallelogram_guide");
     let m = d.as_object_mut().unwrap();
     m.remove("mesh");
@@ -141,15 +142,29 @@ fn elements_shorter_than_1e_9_of_the_model_size() {
     }
     let hinge = json!({"type": "hinge", "nodes": [2, 3], "material": "al", "up": [0, 0, 1],
         "hinge": {"type": "circular_notch", "R": 5.0, "t": 1.0, "w": 10.0, "h": 10.0}});
-    refused(with_short_element(1e-8, hinge), &cases(), "elements[2].nodes", &["1e-9 of the model size"]);
+    refused(
+        with_short_element(1e-8, hinge),
+        &cases(),
+        "elements[2].nodes",
+        &["1e-9 of the model size"],
+    );
     // A shell4 with one edge 1e-8 mm long.
     let mut d = bundled("static_cantilever");
-    d["nodes"].as_array_mut().unwrap().extend([json!([100.0, 1e-8, 0.0]), json!([50.0, 20.0, 0.0])]);
+    d["nodes"]
+        .as_array_mut()
+        .unwrap()
+        .extend([json!([100.0, 1e-8, 0.0]), json!([50.0, 20.0, 0.0])]);
     d["sections"]["skin"] = json!({"shape": "shell", "t": 1.0});
-    d["elements"].as_array_mut().unwrap().push(json!({"type": "shell4", "nodes": [1, 2, 3, 4], "section": "skin", "material": "al"}));
+    d["elements"]
+        .as_array_mut()
+        .unwrap()
+        .push(json!({"type": "shell4", "nodes": [1, 2, 3, 4], "section": "skin", "material": "al"}));
     refused(d, &cases(), "elements[2].nodes", &["1e-9 of the model size"]);
     // At 1e-6 of the size (1e-4 mm) a beam is accepted: the limit is not an absolute length.
-    let ok = with_short_element(1e-4, json!({"type": "beam", "nodes": [2, 3], "section": "leg", "material": "al", "up": [0, 0, 1]}));
+    let ok = with_short_element(
+        1e-4,
+        json!({"type": "beam", "nodes": [2, 3], "section": "leg", "material": "al", "up": [0, 0, 1]}),
+    );
     let case = analysis::parse_value(ok, Some(&cases())).unwrap();
     analysis::check(&case).expect("a 1e-4 mm beam in a 100 mm model is accepted");
 }

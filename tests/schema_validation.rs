@@ -105,8 +105,7 @@ fn every_bundled_case_validates() {
         // Parameters, expressions and hinge types are resolved before validation (the schema
         // describes the resolved case: numbers where numbers go).
         if case.get("analysis").and_then(Value::as_str) != Some("sweep") {
-            flexfem::case::params::resolve_case(&mut case, f.parent())
-                .unwrap_or_else(|e| panic!("{}: {e}", name(f)));
+            flexfem::case::params::resolve_case(&mut case, f.parent()).unwrap_or_else(|e| panic!("{}: {e}", name(f)));
         }
         let errors: Vec<String> = v
             .iter_errors(&case)
@@ -320,8 +319,14 @@ fn load_cases_description_is_the_analysis_own() {
     let s = schema();
     let arms = s["oneOf"].as_array().unwrap();
     let described = |kind: &str| -> String {
-        let arm = arms.iter().find(|a| a["properties"]["analysis"]["const"] == kind).unwrap();
-        arm["properties"]["load_cases"]["description"].as_str().unwrap().to_string()
+        let arm = arms
+            .iter()
+            .find(|a| a["properties"]["analysis"]["const"] == kind)
+            .unwrap();
+        arm["properties"]["load_cases"]["description"]
+            .as_str()
+            .unwrap()
+            .to_string()
     };
     let mut texts = std::collections::BTreeSet::new();
     for (kind, needle) in [
@@ -342,7 +347,11 @@ fn load_cases_description_is_the_analysis_own() {
     let defs = &s["$defs"];
     let with_alias = defs.as_object().unwrap().values().filter(|d| {
         let p = &d["properties"];
-        p.get("F").is_some() && p.get("force").is_some() && p["force"]["description"].as_str().is_some_and(|t| t.contains("Alias of `F`"))
+        p.get("F").is_some()
+            && p.get("force").is_some()
+            && p["force"]["description"]
+                .as_str()
+                .is_some_and(|t| t.contains("Alias of `F`"))
     });
     assert_eq!(with_alias.count(), 2, "the transient load and the frf input");
 }

@@ -9,7 +9,8 @@ use serde_json::{json, Value};
 /// The parallelogram guide (`cases/parallelogram_guide.json`): load case 0 pushes node 8 along x
 /// with F = 1, 2 N; load case 1 prescribes ux = 1 mm at node 8.
 fn guide_sweep() -> String {
-    let mut base: Value = serde_json::from_str(&std::fs::read_to_string(root().join("cases/parallelogram_guide.json")).unwrap()).unwrap();
+    let mut base: Value =
+        serde_json::from_str(&std::fs::read_to_string(root().join("cases/parallelogram_guide.json")).unwrap()).unwrap();
     base["mesh"] = json!(root().join("meshes/parallelogram_notch.json").to_str().unwrap());
     json!({"analysis": "sweep", "base": base, "vary": {"load_cases.0.forces.0.F.0": [1, 2]}}).to_string()
 }
@@ -31,7 +32,10 @@ fn cells(line: &str) -> Vec<String> {
 /// The CSV cell of `column` in data row `row`.
 fn cell(csv: &str, row: usize, column: &str) -> f64 {
     let head = cells(csv.lines().next().unwrap());
-    let k = head.iter().position(|h| h == column).unwrap_or_else(|| panic!("no column {column} in {head:?}"));
+    let k = head
+        .iter()
+        .position(|h| h == column)
+        .unwrap_or_else(|| panic!("no column {column} in {head:?}"));
     let line = cells(csv.lines().nth(row + 1).unwrap());
     assert_eq!(line.len(), head.len());
     line[k].parse().unwrap()
@@ -62,18 +66,27 @@ fn static_sweep_keeps_the_loaded_nodes_displacements() {
         let line = lines.iter().find(|l| l["index"] == row).unwrap();
         let whole = full.iter().find(|l| l["index"] == row).unwrap();
         for (k, node_row) in whole["result"]["load_cases"].as_array().unwrap().iter().enumerate() {
-            assert_eq!(line["result"]["load_cases"][k]["displacements"], json!({"8": node_row["displacements"][8]}));
+            assert_eq!(
+                line["result"]["load_cases"][k]["displacements"],
+                json!({"8": node_row["displacements"][8]})
+            );
         }
         let stroke = cell(&csv, row, "load_cases.1.displacements.8.0");
         assert!((stroke - 1.0).abs() < 1e-12, "prescribed ux(8) = {stroke}");
         let lc = &line["result"]["load_cases"][0];
         assert!(lc.get("element_von_mises").is_none() && lc["hinges"][0].get("end_forces").is_none());
-        assert_eq!(lc["hinges"][0]["utilisation"], whole["result"]["load_cases"][0]["hinges"][0]["utilisation"]);
+        assert_eq!(
+            lc["hinges"][0]["utilisation"],
+            whole["result"]["load_cases"][0]["hinges"][0]["utilisation"]
+        );
         let (short, long) = (line.to_string().len(), whole.to_string().len());
         // Measured 3,884 B against 6,529 B (0.59): the full line no longer carries the hinges'
         // inner segment nodes (hidden by default), so the gap is the per-element stress lists and
         // hinge end forces the default line leaves out.
-        assert!((short as f64) < 0.62 * long as f64, "default line {short} B vs full {long} B");
+        assert!(
+            (short as f64) < 0.62 * long as f64,
+            "default line {short} B vs full {long} B"
+        );
     }
     cleanup(&d);
 }

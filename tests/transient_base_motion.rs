@@ -128,7 +128,10 @@ fn cli(args: &[&str], case: &Value, name: &str) -> (i32, String) {
         .output()
         .unwrap();
     let _ = std::fs::remove_dir_all(&dir);
-    (out.status.code().unwrap_or(-1), String::from_utf8_lossy(&out.stderr).into_owned())
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
 }
 
 #[test]
@@ -150,5 +153,9 @@ fn unusable_time_step_is_refused_at_check() {
         assert!(err.contains("`dt`") && err.contains("1e-12"), "{err}");
     }
     c["dt"] = json!(1e-12);
-    assert_eq!(cli(&["check"], &c, "smallest").0, 0, "the smallest allowed step is accepted");
+    assert_eq!(
+        cli(&["check"], &c, "smallest").0,
+        0,
+        "the smallest allowed step is accepted"
+    );
 }

@@ -237,15 +237,30 @@ fn parse_shaped(mut value: Value, base: &Source<'_>) -> Result<Case, CaseError> 
 /// it: the field's doc comment is written once, on the mesh.
 const LOAD_CASES: [(&str, &str); 7] = [
     ("static", "Load cases (at least one, inline or in the mesh file)."),
-    ("buckling", "Exactly one load case: the reference load whose multipliers λ are the results."),
-    ("constraints", "Load cases: their prescribed displacements (drives) count as constraints; forces are not used."),
-    ("modal", "Not used by `modal` (accepted, so a `static` model runs unchanged)."),
+    (
+        "buckling",
+        "Exactly one load case: the reference load whose multipliers λ are the results.",
+    ),
+    (
+        "constraints",
+        "Load cases: their prescribed displacements (drives) count as constraints; forces are not used.",
+    ),
+    (
+        "modal",
+        "Not used by `modal` (accepted, so a `static` model runs unchanged).",
+    ),
     (
         "transient",
         "Not used by `transient`: its loads are `loads` and `motions` (accepted, so a `static` model runs unchanged).",
     ),
-    ("frf", "Not used by `frf`: its loads are `inputs` (accepted, so a `static` model runs unchanged)."),
-    ("craig_bampton", "Not used by `craig_bampton` (accepted, so a `static` model runs unchanged)."),
+    (
+        "frf",
+        "Not used by `frf`: its loads are `inputs` (accepted, so a `static` model runs unchanged).",
+    ),
+    (
+        "craig_bampton",
+        "Not used by `craig_bampton` (accepted, so a `static` model runs unchanged).",
+    ),
 ];
 
 /// Sets the `load_cases` description of each analysis' schema from [`LOAD_CASES`].
@@ -254,7 +269,10 @@ fn describe_load_cases(schema: &mut Value) {
         return;
     };
     for arm in arms {
-        let kind = arm.pointer("/properties/analysis/const").and_then(Value::as_str).map(str::to_string);
+        let kind = arm
+            .pointer("/properties/analysis/const")
+            .and_then(Value::as_str)
+            .map(str::to_string);
         let Some((_, text)) = kind.and_then(|k| LOAD_CASES.iter().find(|(a, _)| *a == k)) else {
             continue;
         };

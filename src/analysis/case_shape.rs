@@ -232,7 +232,11 @@ impl<'a> Compiler<'a> {
             .unwrap_or(0);
         let items = |n: &'a Value| n.get("items").filter(|x| x.is_object());
         let prefix: Vec<Id> = (0..prefix_len)
-            .map(|i| child(self, &|n| n.get("prefixItems").and_then(|p| p.get(i)).or_else(|| items(n))))
+            .map(|i| {
+                child(self, &|n| {
+                    n.get("prefixItems").and_then(|p| p.get(i)).or_else(|| items(n))
+                })
+            })
             .collect();
         let rest = child(self, &items);
         let additional = |n: &'a Value| n.get("additionalProperties").filter(|x| x.is_object());

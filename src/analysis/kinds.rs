@@ -326,9 +326,15 @@ impl Analysis for Modal {
             r.modes.iter_mut().for_each(|row| row.shape = None);
         }
         let shapes = r.modes.iter_mut().filter_map(|row| row.shape.as_mut());
-        r.model.extend(fem_static::inner_nodes::hide_in_shapes(shapes, &model, &hinges, case.model.nodes.len()));
+        r.model.extend(fem_static::inner_nodes::hide_in_shapes(
+            shapes,
+            &model,
+            &hinges,
+            case.model.nodes.len(),
+        ));
         ctx.warnings = modal::drilling_warnings(&model, &raw);
-        ctx.warnings.extend(warn::fewer_modes(case.modes, raw.modes.len(), Some(raw.n_eq)));
+        ctx.warnings
+            .extend(warn::fewer_modes(case.modes, raw.modes.len(), Some(raw.n_eq)));
         if ctx.with_files {
             ctx.files = vec![("modes.vtu".to_string(), modal::vtu(&model, &raw)?)];
         }

@@ -261,7 +261,11 @@ pub fn plot(name: &str, t: &TrackRow) -> String {
     let panel = |title: &str, ylabel: &str, series: &[(String, Vec<(f64, f64)>)]| {
         let s: Vec<(&str, &[(f64, f64)])> = series.iter().map(|(n, p)| (n.as_str(), p.as_slice())).collect();
         // The stroke is a node's displacement with its unit, or the dimensionless load factor.
-        let xlabel = if t.stroke.ends_with(')') { t.stroke.clone() } else { format!("{} (–)", t.stroke) };
+        let xlabel = if t.stroke.ends_with(')') {
+            t.stroke.clone()
+        } else {
+            format!("{} (–)", t.stroke)
+        };
         svg::scatter(title, &xlabel, ylabel, &s)
     };
     let mut panels = Vec::new();

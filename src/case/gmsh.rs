@@ -291,7 +291,11 @@ pub fn parse_msh_traced(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, 
         if let Some(first) = index.insert(t, i) {
             return Err(CaseError::new(
                 "mesh",
-                format!(".msh $Nodes defines node tag {t} twice (the {}th and the {}th node): each node tag must be unique", first + 1, i + 1),
+                format!(
+                    ".msh $Nodes defines node tag {t} twice (the {}th and the {}th node): each node tag must be unique",
+                    first + 1,
+                    i + 1
+                ),
             ));
         }
     }

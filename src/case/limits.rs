@@ -195,7 +195,12 @@ pub fn craig_bampton_memory(equations: usize, boundary: usize, modes: usize) -> 
 
 /// Refuses a Craig–Bampton reduction whose memory estimate exceeds the memory limit (the JSON
 /// path is `interface`, whose size drives it).
-pub fn check_craig_bampton(equations: usize, boundary: usize, modes: usize, interface_nodes: usize) -> Result<(), CaseError> {
+pub fn check_craig_bampton(
+    equations: usize,
+    boundary: usize,
+    modes: usize,
+    interface_nodes: usize,
+) -> Result<(), CaseError> {
     let limits = Limits::current()?;
     let need = craig_bampton_memory(equations, boundary, modes);
     if need > limits.memory_bytes {

@@ -164,7 +164,11 @@ impl SweepCase {
         let mut specs = Vec::with_capacity(self.vary.len());
         for (path, spec) in &self.vary {
             let p = format!("vary.{path}");
-            if let Some(inner) = self.vary.keys().find(|q| path.starts_with(q.as_str()) && path[q.len()..].starts_with('.')) {
+            if let Some(inner) = self
+                .vary
+                .keys()
+                .find(|q| path.starts_with(q.as_str()) && path[q.len()..].starts_with('.'))
+            {
                 return Err(CaseError::value(
                     &p,
                     format!("\"{path}\""),

@@ -89,12 +89,18 @@ impl Frame {
         );
         for v in self.x.minor() {
             if let Some(x) = self.sx(v) {
-                out += &format!("<line x1=\"{x:.1}\" y1=\"{t}\" x2=\"{x:.1}\" y2=\"{}\" stroke=\"#f0f0f0\"/>\n", h - b);
+                out += &format!(
+                    "<line x1=\"{x:.1}\" y1=\"{t}\" x2=\"{x:.1}\" y2=\"{}\" stroke=\"#f0f0f0\"/>\n",
+                    h - b
+                );
             }
         }
         for v in self.y.minor() {
             if let Some(y) = self.sy(v) {
-                out += &format!("<line x1=\"{l}\" y1=\"{y:.1}\" x2=\"{}\" y2=\"{y:.1}\" stroke=\"#f0f0f0\"/>\n", w - r);
+                out += &format!(
+                    "<line x1=\"{l}\" y1=\"{y:.1}\" x2=\"{}\" y2=\"{y:.1}\" stroke=\"#f0f0f0\"/>\n",
+                    w - r
+                );
             }
         }
         for &v in &self.x.ticks {
@@ -145,7 +151,18 @@ impl Frame {
 /// A scatter plot with connecting lines per series (points sorted by x, markers on every
 /// point, y from zero), axes with round ticks, title, labels and a legend.
 pub fn scatter(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])]) -> String {
-    plot(title, xlabel, ylabel, series, Style { all_markers: true, sort: true, y_from_zero: true }, (Scale::Auto, Scale::Auto))
+    plot(
+        title,
+        xlabel,
+        ylabel,
+        series,
+        Style {
+            all_markers: true,
+            sort: true,
+            y_from_zero: true,
+        },
+        (Scale::Auto, Scale::Auto),
+    )
 }
 
 /// Like [`scatter`] for long time histories: lines, markers only on sparse series (at most
@@ -163,13 +180,35 @@ pub fn lines_scaled(
     series: &[(&str, &[(f64, f64)])],
     scales: (Scale, Scale),
 ) -> String {
-    plot(title, xlabel, ylabel, series, Style { all_markers: false, sort: true, y_from_zero: false }, scales)
+    plot(
+        title,
+        xlabel,
+        ylabel,
+        series,
+        Style {
+            all_markers: false,
+            sort: true,
+            y_from_zero: false,
+        },
+        scales,
+    )
 }
 
 /// Curves through each series' points in their given order (a path that may turn back in x),
 /// axes with ticks, title, labels and a legend.
 pub fn curve(title: &str, xlabel: &str, ylabel: &str, series: &[(&str, &[(f64, f64)])]) -> String {
-    plot(title, xlabel, ylabel, series, Style { all_markers: true, sort: false, y_from_zero: true }, (Scale::Auto, Scale::Auto))
+    plot(
+        title,
+        xlabel,
+        ylabel,
+        series,
+        Style {
+            all_markers: true,
+            sort: false,
+            y_from_zero: true,
+        },
+        (Scale::Auto, Scale::Auto),
+    )
 }
 
 /// How [`plot`] draws its series.
@@ -207,7 +246,10 @@ fn plot(
     // The legend goes into the plot corner that holds no data, else to the right of the plot.
     let names: Vec<&str> = series.iter().map(|s| s.0).collect();
     let (lw, lh) = legend_size(&names);
-    let screen: Vec<Vec<(f64, f64)>> = drawn.iter().map(|s| s.iter().filter_map(|&q| f.pt(q)).collect()).collect();
+    let screen: Vec<Vec<(f64, f64)>> = drawn
+        .iter()
+        .map(|s| s.iter().filter_map(|&q| f.pt(q)).collect())
+        .collect();
     let (lx, ly) = match free_corner(&f, &screen, lw, lh) {
         Some(c) => c,
         None => {
@@ -334,7 +376,13 @@ pub fn scatter_coloured(
     let cs: Vec<f64> = pts.iter().map(|p| p.2).collect();
     let ca = Axis::new(&cs, Scale::Linear, 6);
     let [c0, c1] = ca.range;
-    let frac = |c: f64| if c1 > c0 { ((c - c0) / (c1 - c0)).clamp(0.0, 1.0) } else { 0.5 };
+    let frac = |c: f64| {
+        if c1 > c0 {
+            ((c - c0) / (c1 - c0)).clamp(0.0, 1.0)
+        } else {
+            0.5
+        }
+    };
     let colour = |c: f64| {
         let s = frac(c);
         format!(

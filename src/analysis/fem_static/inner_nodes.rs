@@ -82,8 +82,15 @@ pub fn label(e: AnalysisError, hinges: &[BuiltHinge]) -> AnalysisError {
         .iter()
         .map(|(el, nodes)| {
             let list: Vec<String> = nodes.iter().map(usize::to_string).collect();
-            let (word, verb) = if nodes.len() == 1 { ("node", "is an inner node") } else { ("nodes", "are inner nodes") };
-            format!("{word} {} {verb} of the segmented hinge elements[{el}]", list.join(", "))
+            let (word, verb) = if nodes.len() == 1 {
+                ("node", "is an inner node")
+            } else {
+                ("nodes", "are inner nodes")
+            };
+            format!(
+                "{word} {} {verb} of the segmented hinge elements[{el}]",
+                list.join(", ")
+            )
         })
         .collect();
     AnalysisError::new(e.context, format!("{}\n({})", e.message, parts.join("; ")))

@@ -5,10 +5,10 @@ use crate::fem::{self, Model};
 
 pub use super::compliance::{compliance_row, ComplianceRow};
 
+mod equilibrium;
 mod headline;
 pub mod inner_nodes;
 pub mod metrics;
-mod equilibrium;
 mod report;
 mod rows;
 mod summary;

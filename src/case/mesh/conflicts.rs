@@ -116,7 +116,11 @@ pub(super) fn constraint_conflicts(
         let here = format!("{}.nodes", at(tie_paths, it));
         for node in [t.a, t.b] {
             if slave_of.contains_key(&node) {
-                return Err(CaseError::value(here, format!("[{}, {}]", t.a, t.b), slave_rule(node, "join")));
+                return Err(CaseError::value(
+                    here,
+                    format!("[{}, {}]", t.a, t.b),
+                    slave_rule(node, "join"),
+                ));
             }
         }
         for d in (0..6).filter(|&d| t.dofs[d]) {
@@ -152,7 +156,11 @@ pub(super) fn constraint_conflicts(
                 slave_rule(s.node, "support"),
             ));
         }
-        if let Some(g) = (0..6).filter(|&d| s.fix[d]).map(|d| 6 * s.node + d).find(|g| tied_by.contains_key(g)) {
+        if let Some(g) = (0..6)
+            .filter(|&d| s.fix[d])
+            .map(|d| 6 * s.node + d)
+            .find(|g| tied_by.contains_key(g))
+        {
             return Err(CaseError::value(format!("supports[{i}].node"), s.node, tied_rule(g)));
         }
     }
@@ -161,12 +169,19 @@ pub(super) fn constraint_conflicts(
             let here = format!("load_cases[{ic}].displacements[{k}]");
             let g = 6 * d.node + d.dof.index();
             if slave_of.contains_key(&d.node) {
-                return Err(CaseError::value(format!("{here}.node"), d.node, slave_rule(d.node, "prescribe")));
+                return Err(CaseError::value(
+                    format!("{here}.node"),
+                    d.node,
+                    slave_rule(d.node, "prescribe"),
+                ));
             }
             if tied_by.contains_key(&g) {
                 return Err(CaseError::value(format!("{here}.node"), d.node, tied_rule(g)));
             }
-            if let Some(j) = c.displacements[..k].iter().position(|e| e.node == d.node && e.dof == d.dof) {
+            if let Some(j) = c.displacements[..k]
+                .iter()
+                .position(|e| e.node == d.node && e.dof == d.dof)
+            {
                 return Err(CaseError::value(
                     format!("{here}.dof"),
                     d.dof,

@@ -8,8 +8,8 @@
 pub mod build;
 mod build_body_loads;
 mod build_loads;
-pub mod corot_length;
 mod conflicts;
+pub mod corot_length;
 mod frames;
 pub mod hinge;
 mod joint;

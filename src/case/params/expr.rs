@@ -94,7 +94,10 @@ pub fn is_name(s: &str) -> bool {
 impl Expr {
     /// Parses `text` (see the module docs).
     pub fn parse(text: &str) -> Result<Expr, ExprError> {
-        let mut p = Parser { s: text.as_bytes(), i: 0 };
+        let mut p = Parser {
+            s: text.as_bytes(),
+            i: 0,
+        };
         let e = p.sum()?;
         p.skip_space();
         if p.i < p.s.len() {
@@ -213,7 +216,11 @@ impl Parser<'_> {
 
     fn word(&mut self) -> &str {
         let start = self.i;
-        while self.s.get(self.i).is_some_and(|c| c.is_ascii_alphanumeric() || *c == b'_') {
+        while self
+            .s
+            .get(self.i)
+            .is_some_and(|c| c.is_ascii_alphanumeric() || *c == b'_')
+        {
             self.i += 1;
         }
         std::str::from_utf8(&self.s[start..self.i]).unwrap_or("")
@@ -222,7 +229,9 @@ impl Parser<'_> {
     fn primary(&mut self) -> Result<Expr, ExprError> {
         self.skip_space();
         let Some(&c) = self.s.get(self.i) else {
-            return Err(self.error("the expression ends where a number, `$NAME`, `(` or a function was expected".into()));
+            return Err(
+                self.error("the expression ends where a number, `$NAME`, `(` or a function was expected".into())
+            );
         };
         match c {
             b'(' => {
@@ -237,7 +246,10 @@ impl Parser<'_> {
                 let name = self.word().to_string();
                 if !is_name(&name) {
                     self.i = at;
-                    return Err(self.error("`$` must be followed by a parameter name (a letter or `_`, then letters, digits or `_`)".into()));
+                    return Err(self.error(
+                        "`$` must be followed by a parameter name (a letter or `_`, then letters, digits or `_`)"
+                            .into(),
+                    ));
                 }
                 Ok(Expr::Param(name))
             }
@@ -314,7 +326,11 @@ mod tests {
     fn eval(text: &str, vars: &[(&str, f64)]) -> Result<f64, ExprError> {
         let e = Expr::parse(text)?;
         e.eval(&mut |n: &str| -> Result<f64, ExprError> {
-            Ok(vars.iter().find(|(k, _)| *k == n).map(|(_, v)| *v).expect("test names its parameters"))
+            Ok(vars
+                .iter()
+                .find(|(k, _)| *k == n)
+                .map(|(_, v)| *v)
+                .expect("test names its parameters"))
         })
     }
 

@@ -20,9 +20,9 @@ pub mod template;
 
 use crate::case::{short, CaseError};
 use expr::{Expr, ExprError};
+pub use origin::Origins;
 use serde_json::{Map, Value};
 use std::collections::BTreeMap;
-pub use origin::Origins;
 pub use template::Template;
 
 /// Resolved parameter values by name (no `$`), in the units of wherever they are used.
@@ -97,9 +97,11 @@ pub fn resolve_table(declared: &BTreeMap<String, Declared>) -> Result<Parameters
     for (name, d) in declared {
         let e = match &d.raw {
             Value::String(s) => Expr::parse(s).map_err(|e| d.error(expr_error(&d.path, s, &e)))?,
-            v => Expr::Num(v.as_f64().filter(|x| x.is_finite()).ok_or_else(|| {
-                d.error(CaseError::value(&d.path, short(v), "must be a finite number"))
-            })?),
+            v => Expr::Num(
+                v.as_f64()
+                    .filter(|x| x.is_finite())
+                    .ok_or_else(|| d.error(CaseError::value(&d.path, short(v), "must be a finite number")))?,
+            ),
         };
         exprs.insert(name, (e, d));
     }
@@ -325,7 +327,9 @@ pub fn resolve_case(value: &mut Value, base: Option<&std::path::Path>) -> Result
     }
     let template = Template::new(std::mem::take(value))?;
     for (at, text, first) in template.sites() {
-        let in_use = used.iter().any(|(u, _)| at.strip_prefix(u.as_str()).is_some_and(|r| r.starts_with('.')));
+        let in_use = used
+            .iter()
+            .any(|(u, _)| at.strip_prefix(u.as_str()).is_some_and(|r| r.starts_with('.')));
         if in_use {
             origins.add(at, text, param_target(first), None, false);
         }
@@ -353,7 +357,10 @@ pub fn resolve_case(value: &mut Value, base: Option<&std::path::Path>) -> Result
 
 /// An error inside mesh file `name`, reported at `mesh` as the model reader does.
 fn in_mesh_file(name: &str, e: CaseError) -> CaseError {
-    CaseError::new("mesh", format!("in mesh file \"{name}\" at `{}`: {}", e.path, e.message))
+    CaseError::new(
+        "mesh",
+        format!("in mesh file \"{name}\" at `{}`: {}", e.path, e.message),
+    )
 }
 
 #[cfg(test)]
@@ -392,18 +399,25 @@ mod tests {
         assert!(e.message.contains("unknown parameter `$zz`"), "{}", e.message);
         assert_eq!(table(serde_json::json!({"2a": 1})).unwrap_err().path, "parameters.2a");
         assert_eq!(table(serde_json::json!({"a": [1]})).unwrap_err().path, "parameters.a");
-        assert_eq!(table(serde_json::json!({"a": "1/($b - 1)", "b": 1})).unwrap_err().path, "parameters.a");
+        assert_eq!(
+            table(serde_json::json!({"a": "1/($b - 1)", "b": 1})).unwrap_err().path,
+            "parameters.a"
+        );
     }
 
     /// A hinge field given by name becomes the hinge type's object; an unknown name is refused.
     #[test]
     fn hinge_types_expand() {
-        let types: Map<String, Value> = serde_json::from_value(serde_json::json!({"flex": {"type": "leaf", "t": "$t"}})).unwrap();
+        let types: Map<String, Value> =
+            serde_json::from_value(serde_json::json!({"flex": {"type": "leaf", "t": "$t"}})).unwrap();
         let mut v = serde_json::json!({"elements": [{"hinge": "flex"}, {"hinge": {"type": "leaf"}}]});
         let mut used = Vec::new();
         expand_hinge_types(&mut v, &types, &mut String::new(), &mut used).unwrap();
         assert_eq!(used, [("elements[0].hinge".to_string(), "flex".to_string())]);
-        assert_eq!(v["elements"][0]["hinge"], serde_json::json!({"type": "leaf", "t": "$t"}));
+        assert_eq!(
+            v["elements"][0]["hinge"],
+            serde_json::json!({"type": "leaf", "t": "$t"})
+        );
         let mut w = serde_json::json!({"elements": [{"hinge": "flx"}]});
         let e = expand_hinge_types(&mut w, &types, &mut String::new(), &mut Vec::new()).unwrap_err();
         assert_eq!(e.path, "elements[0].hinge");

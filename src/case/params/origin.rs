@@ -44,13 +44,24 @@ impl Origins {
     pub fn locate(&self, e: CaseError) -> CaseError {
         let inside = |o: &Origin| {
             e.path == o.at
-                || (o.hinge && e.path.strip_prefix(o.at.as_str()).is_some_and(|r| r.starts_with(['.', '['])))
+                || (o.hinge
+                    && e.path
+                        .strip_prefix(o.at.as_str())
+                        .is_some_and(|r| r.starts_with(['.', '['])))
         };
-        let Some(o) = self.all.iter().find(|o| !o.hinge && e.path == o.at).or_else(|| self.all.iter().find(|o| inside(o)))
+        let Some(o) = self
+            .all
+            .iter()
+            .find(|o| !o.hinge && e.path == o.at)
+            .or_else(|| self.all.iter().find(|o| inside(o)))
         else {
             return e;
         };
-        let file = o.file.as_ref().map(|f| format!(" of mesh file \"{f}\"")).unwrap_or_default();
+        let file = o
+            .file
+            .as_ref()
+            .map(|f| format!(" of mesh file \"{f}\""))
+            .unwrap_or_default();
         let what = if o.hinge { "hinge type" } else { "expression" };
         CaseError::new(
             o.target.clone(),

@@ -215,7 +215,12 @@ impl Failure {
 
 /// The value of `expr` with the parameters `params`.
 pub(super) fn evaluate(expr: &Expr, params: &Parameters) -> Result<f64, Failure> {
-    expr.eval(&mut |name: &str| params.get(name).copied().ok_or_else(|| Failure::Unknown(name.to_string())))
+    expr.eval(&mut |name: &str| {
+        params
+            .get(name)
+            .copied()
+            .ok_or_else(|| Failure::Unknown(name.to_string()))
+    })
 }
 
 #[cfg(test)]
@@ -236,7 +241,10 @@ mod tests {
         let p: Parameters = [("L".into(), 16.0), ("t".into(), 0.75), ("n".into(), 3.0)].into();
         let out = t.instantiate(&p).unwrap();
         assert_eq!(out["nodes"], serde_json::json!([[0, 8, 0], [-16, 0, 4]]));
-        assert_eq!(out["hinge"], serde_json::json!({"type": "circular_notch", "t": 0.75, "R": 2.5}));
+        assert_eq!(
+            out["hinge"],
+            serde_json::json!({"type": "circular_notch", "t": 0.75, "R": 2.5})
+        );
         assert_eq!(out["node"], serde_json::json!(2));
         assert!(out["node"].is_u64());
         assert_eq!(out["description"], "costs $5");
@@ -251,14 +259,26 @@ mod tests {
     fn errors_name_path_and_expression() {
         let e = Template::new(serde_json::json!({"a": [1, {"b": "2*$R +"}]})).unwrap_err();
         assert_eq!(e.path, "a[1].b");
-        assert!(e.message.contains("\"2*$R +\"") && e.message.contains("syntax error"), "{}", e.message);
+        assert!(
+            e.message.contains("\"2*$R +\"") && e.message.contains("syntax error"),
+            "{}",
+            e.message
+        );
         let t = Template::new(serde_json::json!({"x": {"y": "$q/$z"}})).unwrap();
         let p: Parameters = [("z".into(), 0.0)].into();
         let e = t.instantiate(&p).unwrap_err();
         assert_eq!(e.path, "x.y");
-        assert!(e.message.contains("unknown parameter `$q`") && e.message.contains("$z"), "{}", e.message);
+        assert!(
+            e.message.contains("unknown parameter `$q`") && e.message.contains("$z"),
+            "{}",
+            e.message
+        );
         let p: Parameters = [("z".into(), 0.0), ("q".into(), 1.0)].into();
         let e = t.instantiate(&p).unwrap_err();
-        assert!(e.message.contains("division by zero") && e.message.contains("\"$q/$z\""), "{}", e.message);
+        assert!(
+            e.message.contains("division by zero") && e.message.contains("\"$q/$z\""),
+            "{}",
+            e.message
+        );
     }
 }

@@ -37,7 +37,10 @@ pub fn loaded_nodes(model: &MeshSpec) -> LoadedNodes {
         .map(|c| {
             let forces = c.forces.iter().map(|f| f.node);
             let groups = c.group_forces.iter().flat_map(|g| g.nodes.iter().copied());
-            let mut nodes: Vec<usize> = forces.chain(groups).chain(c.displacements.iter().map(|d| d.node)).collect();
+            let mut nodes: Vec<usize> = forces
+                .chain(groups)
+                .chain(c.displacements.iter().map(|d| d.node))
+                .collect();
             nodes.sort_unstable();
             nodes.dedup();
             nodes
@@ -52,10 +55,14 @@ fn keep_loaded_displacements(result: &mut Value, nodes: &[Vec<usize>]) {
         return;
     };
     for (case, keep) in cases.iter_mut().zip(nodes) {
-        let Some(rows) = case.get_mut("displacements") else { continue };
+        let Some(rows) = case.get_mut("displacements") else {
+            continue;
+        };
         let Value::Array(all) = rows.take() else { continue };
-        let kept: Map<String, Value> =
-            keep.iter().filter_map(|&n| all.get(n).map(|row| (n.to_string(), row.clone()))).collect();
+        let kept: Map<String, Value> = keep
+            .iter()
+            .filter_map(|&n| all.get(n).map(|row| (n.to_string(), row.clone())))
+            .collect();
         *rows = Value::Object(kept);
     }
 }

@@ -87,7 +87,15 @@ pub(super) fn arc_length(
         .x
         .into_iter()
         .next()
-        .ok_or_else(|| fail(name, 1, 0.0, norm(&ev0.r), "arc length: the tangent solve returned no solution"))?;
+        .ok_or_else(|| {
+            fail(
+                name,
+                1,
+                0.0,
+                norm(&ev0.r),
+                "arc length: the tangent solve returned no solution",
+            )
+        })?;
     let qref = norm(&t0);
     if !(qref > 0.0 && qref.is_finite()) {
         return Err(fail(name, 1, 0.0, norm(&ev0.r), "arc length: no load to follow"));

@@ -110,9 +110,15 @@ pub(super) const EQUILIBRIUM_TOL: f64 = 1e-6;
 /// path (load control, arc length, tracked steps) is balanced or the solve fails naming it.
 /// Returns the relative residual ([`PathPoint::equilibrium`]).
 pub(super) fn verify_point(ctx: &CaseCtx, st: &State, name: &str, step: usize, lambda: f64) -> Result<f64, FemError> {
-    let (ev, _) = ctx
-        .residual(st, lambda)
-        .ok_or_else(|| fail(name, step, lambda, f64::NAN, "degenerate element or non-finite internal force"))?;
+    let (ev, _) = ctx.residual(st, lambda).ok_or_else(|| {
+        fail(
+            name,
+            step,
+            lambda,
+            f64::NAN,
+            "degenerate element or non-finite internal force",
+        )
+    })?;
     let f_app: Vec<f64> = ctx.f_ext.iter().map(|v| v * lambda).collect();
     let f_int: Vec<f64> = ev.net.iter().zip(&f_app).map(|(a, b)| a + b).collect();
     let gi = ctx.to_independent(&ev.arms, &ev.net);
@@ -197,7 +203,9 @@ pub(super) fn verify_equilibrium(
     let moment_ok = msum <= EQUILIBRIUM_TOL * moment_scale + round * lever;
     if nodal_ok && force_ok && moment_ok {
         let rel = |r: f64, scale: f64| if r == 0.0 { 0.0 } else { r / scale };
-        return Ok(rel(rn, nodal_scale).max(rel(fsum, force_scale)).max(rel(msum, moment_scale)));
+        return Ok(rel(rn, nodal_scale)
+            .max(rel(fsum, force_scale))
+            .max(rel(msum, moment_scale)));
     }
     Err(fail(
         name,
