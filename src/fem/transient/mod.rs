@@ -202,10 +202,11 @@ fn couplings(
     prescribed
         .iter()
         .map(|p| {
-            // A supported DOF has no equation even with every prescribed DOF free.
+            // Supports of prescribed DOFs are released above, so a DOF without an equation here is
+            // a rigid-link slave or a tied DOF (the case reader refuses those; kept as a backstop).
             let Some(&eq) = all.eq.get(p.global()).filter(|&&q| q < all.n_eq()) else {
                 return Err(FemError::OverConstrained(format!(
-                    "{p} has a prescribed motion but is fixed by a support: free it in the support or drop the motion"
+                    "{p} has a prescribed motion but no equation of its own (a rigid-link slave or a tied DOF): prescribe the master's motion instead"
                 )));
             };
             let mut e = vec![0.0; all.n_eq()];
