@@ -43,6 +43,7 @@ pub mod section;
 pub mod shell;
 pub mod shell_loads;
 pub mod shell_recovery;
+pub mod shell_spr;
 pub mod solve;
 pub mod state_space;
 pub mod superelement;

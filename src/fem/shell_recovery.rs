@@ -83,14 +83,14 @@ pub fn principal(s: &[f64; 6]) -> [f64; 3] {
 /// Strains at the 2×2 Gauss points (order of the nodes: (−,−), (+,−), (+,+), (−,+)/√3) from
 /// the local element DOFs: membrane ε (with the condensed incompatible modes), curvatures κ,
 /// MITC4 shear strains γ, and det J.
-struct GaussStrains {
-    eps: [Vector3<f64>; 4],
-    kap: [Vector3<f64>; 4],
-    gam: [Vector2<f64>; 4],
-    det: [f64; 4],
+pub(crate) struct GaussStrains {
+    pub(crate) eps: [Vector3<f64>; 4],
+    pub(crate) kap: [Vector3<f64>; 4],
+    pub(crate) gam: [Vector2<f64>; 4],
+    pub(crate) det: [f64; 4],
 }
 
-fn gauss_strains(xy: &[[f64; 2]; 4], t: f64, c: &Matrix3<f64>, d: &Vec24) -> Option<GaussStrains> {
+pub(crate) fn gauss_strains(xy: &[[f64; 2]; 4], t: f64, c: &Matrix3<f64>, d: &Vec24) -> Option<GaussStrains> {
     let (dm, dp) = split(d);
     let ct = c * t;
     // Incompatible-mode amplitudes, as condensed in the stiffness.

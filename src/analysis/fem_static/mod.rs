@@ -38,9 +38,10 @@ pub fn solve_with(
         .map(|c| {
             equilibrium::check(model, c)?;
             let mut r = row(c);
-            let field = fem::shell_recovery::shell_field(model, &c.displacements)
-                .map_err(|e| AnalysisError::new(format!("load case `{}`", c.name), e.to_string()))?;
-            add_shell_field(&mut r, field);
+            let in_case = |e: fem::FemError| AnalysisError::new(format!("load case `{}`", c.name), e.to_string());
+            let field = fem::shell_recovery::shell_field(model, &c.displacements).map_err(in_case)?;
+            let spr = fem::shell_spr::spr_field(model, &c.displacements, &field).map_err(in_case)?;
+            add_shell_field(&mut r, field, spr);
             Ok(r)
         })
         .collect::<Result<_, AnalysisError>>()?;
@@ -160,7 +161,7 @@ pub fn shell_orientation_warnings(model: &Model) -> Vec<String> {
 }
 
 /// Puts a model's shell stresses into its load-case row (nothing without shells).
-fn add_shell_field(r: &mut StaticCaseRow, f: fem::shell_recovery::ShellField) {
+fn add_shell_field(r: &mut StaticCaseRow, f: fem::shell_recovery::ShellField, spr: fem::shell_spr::SprField) {
     if f.forces.is_empty() {
         return;
     }
@@ -179,6 +180,7 @@ fn add_shell_field(r: &mut StaticCaseRow, f: fem::shell_recovery::ShellField) {
         top: f.top,
         mid: f.mid,
         bottom: f.bottom,
+        recovered: rows::ShellRecoveredRow::of(spr),
     });
 }
 

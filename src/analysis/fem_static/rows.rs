@@ -170,6 +170,65 @@ pub struct ShellStressRow {
     pub mid: Vec<Option<[f64; 6]>>,
     /// Bottom surface (z = −t/2).
     pub bottom: Vec<Option<[f64; 6]>>,
+    /// The same stresses by superconvergent patch recovery, with the error indicator per
+    /// element ([`crate::fem::shell_spr`]).
+    pub recovered: ShellRecoveredRow,
+}
+
+/// Nodal shell stresses by superconvergent patch recovery (Zienkiewicz & Zhu 1992): per node
+/// [sxx, syy, szz, sxy, syz, szx] (MPa, global axes) from a least-squares fit of the Gauss-point
+/// stresses over the patch of shells around each interior node; nodes on the mesh boundary take
+/// the fits of the interior patches that contain them (the clamped-edge and leaf-root values).
+/// With the Zienkiewicz–Zhu error indicator of each shell.
+#[derive(Debug, Clone, Serialize)]
+pub struct ShellRecoveredRow {
+    /// `"SPR"`, the method.
+    pub method: &'static str,
+    /// Top surface, recovered.
+    pub top: Vec<Option<[f64; 6]>>,
+    /// Mid-surface, recovered.
+    pub mid: Vec<Option<[f64; 6]>>,
+    /// Bottom surface, recovered.
+    pub bottom: Vec<Option<[f64; 6]>>,
+    /// Global relative error η = √(Σ‖e‖²/(‖u‖² + Σ‖e‖²)) in the energy norm of the membrane and
+    /// bending stresses (0…1).
+    pub relative_error: f64,
+    /// One row per shell element.
+    pub error: Vec<ShellErrorRow>,
+}
+
+/// The Zienkiewicz–Zhu error of one shell element.
+#[derive(Debug, Clone, Serialize)]
+pub struct ShellErrorRow {
+    /// Element index (model order).
+    pub element: usize,
+    /// ‖σ* − σ_h‖ in the energy norm over the element, √(N·mm).
+    pub norm: f64,
+    /// Indicator ξ = norm / √((‖u‖² + Σ‖e‖²)/m), m shells: above a target relative error η̄,
+    /// the element is where the recovery (and the solution) is least reliable; refine there.
+    pub indicator: f64,
+}
+
+impl ShellRecoveredRow {
+    /// The row of a recovered field.
+    pub fn of(f: crate::fem::shell_spr::SprField) -> ShellRecoveredRow {
+        ShellRecoveredRow {
+            method: "SPR",
+            top: f.top,
+            mid: f.mid,
+            bottom: f.bottom,
+            relative_error: f.relative_error,
+            error: f
+                .elements
+                .into_iter()
+                .map(|(element, norm, indicator)| ShellErrorRow {
+                    element,
+                    norm,
+                    indicator,
+                })
+                .collect(),
+        }
+    }
 }
 
 /// Stress resultants at the centre of one shell element, in its axes.
