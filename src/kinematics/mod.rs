@@ -3,6 +3,7 @@
 
 pub mod exact;
 pub mod pantilt;
+pub mod pivot;
 pub mod prs;
 pub mod prs_stiffness;
 pub mod workspace;
