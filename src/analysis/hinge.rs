@@ -18,6 +18,9 @@ pub struct HingeOut {
     /// Large-rotation response (`"nonlinear": true` only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub large_rotation: Option<LargeRotation>,
+    /// Pivot shift along the large-rotation curve (`"nonlinear": true` only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pivot_shift: Option<super::hinge_pivot::PivotShift>,
     /// Identified joint damping (`"damping"` only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub damping: Option<DampingOut>,
@@ -89,9 +92,12 @@ pub fn solve(case: &HingeCase) -> Result<HingeOut, super::RunError> {
         let ce: CaseError = hinge_error(&e, "hinge", "material");
         super::RunError::Case(ce)
     })?;
-    let large_rotation = match (case.nonlinear, case.steps) {
-        (true, steps) => Some(large_rotation(case, &m, &result, steps.unwrap_or(20))?),
-        _ => None,
+    let (large_rotation, pivot_shift) = match (case.nonlinear, case.steps) {
+        (true, steps) => {
+            let (lr, ps) = large_rotation(case, &m, &result, steps.unwrap_or(20))?;
+            (Some(lr), Some(ps))
+        }
+        _ => (None, None),
     };
     let damping = match &case.damping {
         Some(spec) => {
@@ -135,6 +141,7 @@ pub fn solve(case: &HingeCase) -> Result<HingeOut, super::RunError> {
     Ok(HingeOut {
         result,
         large_rotation,
+        pivot_shift,
         damping,
         fatigue,
     })
@@ -184,7 +191,7 @@ fn large_rotation(
     m: &Material,
     r: &HingeResult,
     steps: usize,
-) -> Result<LargeRotation, super::RunError> {
+) -> Result<(LargeRotation, super::hinge_pivot::PivotShift), super::RunError> {
     let err = |e: crate::fem::FemError| super::RunError::Analysis(super::AnalysisError::new("hinge", e.to_string()));
     let profile = case
         .hinge
@@ -272,9 +279,15 @@ fn large_rotation(
         }
         None
     };
+    let mut poses = vec![([xs[tip], 0.0, 0.0], [0.0; 3])];
+    for c in &nl.load_cases {
+        let d = &c.fe.displacements[tip];
+        poses.push(([xs[tip] + d[0], d[1], d[2]], [d[3], d[4], d[5]]));
+    }
+    let pivot = super::hinge_pivot::pivot_shift(xs[centre], &poses);
     let rotation_at_allowable_deg = at_allowable(&|p| p.rotation_deg, &|p| p.max_stress);
     let linear_rotation_at_allowable_deg = at_allowable(&|p| p.linear_rotation_deg, &|p| p.force * sig1);
-    Ok(LargeRotation {
+    Ok((LargeRotation {
         load: format!(
             "transverse end force (fixed direction) at the blank end face, {:.3} mm from the notch centre; clamped opposite face; 16 co-rotational flexibility elements over the notch",
             profile.half_length()
@@ -282,7 +295,7 @@ fn large_rotation(
         points,
         rotation_at_allowable_deg,
         linear_rotation_at_allowable_deg,
-    })
+    }, pivot))
 }
 
 /// Markdown/CSV views.

@@ -13,6 +13,7 @@ pub mod frf_files;
 pub mod frf_result;
 pub mod hinge;
 pub mod hinge_fatigue;
+pub mod hinge_pivot;
 pub mod kind;
 pub mod kinds;
 pub mod kinds_list;
