@@ -160,7 +160,7 @@ impl PatchFit {
 
     fn new(centre: Vector3<f64>, normal: Vector3<f64>, pts: &[(Vector3<f64>, &Sample)]) -> Option<PatchFit> {
         let h = pts.iter().map(|(p, _)| (p - centre).norm()).fold(0.0, f64::max);
-        if !(h > 0.0) {
+        if h.is_nan() || h <= 0.0 {
             return None;
         }
         let trial = if normal.x.abs() < 0.9 {

@@ -43,7 +43,7 @@ pub fn screw_between(p1: [f64; 3], r1: [f64; 3], p2: [f64; 3], r2: [f64; 3], ref
     let rel = rot(r2) * rot(r1).inverse();
     let sa = rel.scaled_axis();
     let phi = sa.norm();
-    if !(phi > 1e-12) {
+    if phi.is_nan() || phi <= 1e-12 {
         return None;
     }
     let n = sa / phi;
@@ -69,7 +69,7 @@ pub fn axis_crossing(root: [f64; 3], along: [f64; 3], end: [f64; 3], dir: [f64; 
     let w = a - b;
     let (uu, uv, vv) = (u.dot(&u), u.dot(&v), v.dot(&v));
     let den = uu * vv - uv * uv;
-    if !(den > 1e-14 * uu * vv) {
+    if den.is_nan() || den <= 1e-14 * uu * vv {
         return None;
     }
     // Closest points a + s u, b + t v: s = (uv·(v·w) − vv·(u·w)) / den.
