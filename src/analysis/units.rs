@@ -92,6 +92,9 @@ impl Units for HingeOut {
                 _ => return None,
             },
             ["large_rotation", "rotation_at_allowable_deg" | "linear_rotation_at_allowable_deg"] => "deg",
+            ["pivot_shift", "points", _, "rotation_deg"] => "deg",
+            ["pivot_shift", "points", _, "centre", _] | ["pivot_shift", "points", _, "axis_crossing"] => "mm",
+            ["pivot_shift", "drift"] => "mm",
             ["damping", field] => match *field {
                 "k_nmm_per_rad" => K_ROT,
                 "k_nmm_per_deg" => "N*mm/deg",
