@@ -205,12 +205,11 @@ fn parallelogram_stroke_at_allowable_matches_central_differences() {
     let g = grads(&case, &none, s0, &params, &q);
     assert!((g.values[0] - s0).abs() < 1e-12 * s0, "stroke {} vs {s0}", g.values[0]);
     assert_eq!(g.gradients[0].len(), params.len());
-    for k in 0..params.len() {
+    for (k, name) in params.iter().enumerate() {
         let (ds, dl) = (g.gradients[0][k], g.gradients[1][k]);
         assert!(
             (ds - s0 * dl).abs() <= 1e-12 * ds.abs().max(1e-9),
-            "{}: {ds} vs {}",
-            params[k],
+            "{name}: {ds} vs {}",
             s0 * dl
         );
     }
