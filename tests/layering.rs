@@ -6,6 +6,7 @@
 //! ```text
 //! cli, main                      command line (and the sweep's files, resume, exit codes)
 //! design                         the batch driver (sweeps over any analysis kind), sweep tables
+//! gradient                       design sensitivities (rebuilds parameterised cases)
 //! analysis                       validated case → typed result → JSON/Markdown/CSV views
 //! case                           case files → validated inputs (the only place with JSON paths)
 //! stage                          the 3-PRS stage FE model, its sizing and sensitivities
@@ -33,6 +34,8 @@ const LAYERS: &[(&str, u32)] = &[
     ("main", 90),
     ("cli", 90),
     ("design", 85),
+    // Gradients rebuild a parameterised case (through the analysis layer's case parsing).
+    ("gradient", 85),
     ("analysis", 80),
     ("case", 70),
     ("stage", 50),

@@ -62,6 +62,7 @@ mod dynamic;
 mod load_case;
 mod newton;
 mod path;
+pub mod probe;
 mod recover;
 mod residual;
 mod state;

@@ -1,0 +1,3 @@
+//! Design sensitivities (gradients with respect to case parameters).
+
+pub mod nonlinear;
