@@ -75,3 +75,24 @@ fn peak_utilisation_scales_as_one_over_t_squared() {
         );
     }
 }
+
+/// Regression (found by `tests/fuzz.rs` on the bundled sweep with `parameters.H` = 2⁶⁴ − 1): an
+/// element of the mesh file's model made too short for the model's size by parameter-driven
+/// node coordinates was reported at `elements[0].nodes`, a path the case file does not have; it
+/// is reported at `mesh`, naming the file and the path inside it.
+#[test]
+fn mesh_model_error_from_parameters_is_reported_at_mesh() {
+    let mut case = sweep().base.clone();
+    case["parameters"]["H"] = json!(1.8446744073709552e19);
+    let parsed = analysis::case_file::parse_resolved(case, Some(&root().join("cases")), true).unwrap();
+    let e = match parsed.locate_run(analysis::run(&parsed.case).map(|_| ()).unwrap_err()) {
+        analysis::RunError::Case(e) => e,
+        other => panic!("a case error, not {other}"),
+    };
+    assert_eq!(e.path, "mesh");
+    assert!(
+        e.message.contains("pantilt_8r_parameters.json") && e.message.contains("`elements[0].nodes`"),
+        "{}",
+        e.message
+    );
+}
