@@ -20,6 +20,7 @@ const SKIPPED: &[&str] = &[
     "ruiz2019_hinge_sweep.json",
     "ruiz2019_stage_sweep.json",
     "parallelogram_parameters_sweep.json",
+    "pantilt_8r_parameters_sweep.json",
 ];
 
 fn root() -> PathBuf {

@@ -90,3 +90,91 @@ fn static_sweep_keeps_the_loaded_nodes_displacements() {
     }
     cleanup(&d);
 }
+
+/// The nodes a case names as outputs are kept too: with a `compliance` request at node 5 and a
+/// displacement metric at node 3, every load case's line keeps the rows of nodes 3, 5 and 8
+/// (the loaded one), each equal to the full result's row; the `compliance` block and `metrics`
+/// stay whole and the echo of the materials goes.
+#[test]
+fn static_sweep_keeps_the_nodes_named_as_outputs() {
+    let d = tempdir("static_named_nodes");
+    let mut s: Value = serde_json::from_str(&guide_sweep()).unwrap();
+    s["base"]["compliance"] = json!([{"node": 5}]);
+    s["base"]["metrics"] =
+        json!([{"name": "d3", "kind": "displacement", "node": 3, "dof": "ux", "load_case": "push_x_1N"}]);
+    let case = write(&d, "sweep.json", &s.to_string());
+    let o = sweep(&d, &[case.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let lines = parse_lines(&stdout(&o));
+    let full = parse_lines(&stdout(&sweep(&d, &[case.to_str().unwrap(), "--full"])));
+    assert_eq!((lines.len(), full.len()), (2, 2));
+    for line in &lines {
+        let whole = full.iter().find(|l| l["index"] == line["index"]).unwrap();
+        let (r, w) = (&line["result"], &whole["result"]);
+        let cases = w["load_cases"].as_array().unwrap();
+        assert_eq!(cases.len(), 2);
+        for (k, case) in cases.iter().enumerate() {
+            let rows = &case["displacements"];
+            assert_eq!(
+                r["load_cases"][k]["displacements"],
+                json!({"3": rows[3], "5": rows[5], "8": rows[8]}),
+                "load case {k}"
+            );
+        }
+        assert_eq!(r["compliance"], w["compliance"]);
+        assert_eq!(r["metrics"], w["metrics"]);
+        let d3 = r["metrics"]["d3"].as_f64().unwrap();
+        assert!((d3 - w["load_cases"][0]["displacements"][3][0].as_f64().unwrap()).abs() <= 1e-15 * d3.abs());
+        assert!(r.get("materials").is_none() && w.get("materials").is_some());
+    }
+    cleanup(&d);
+}
+
+/// A modal sweep's default line keeps every mode's frequency (the first one of a clamped
+/// steel bar, 10 Euler–Bernoulli elements, within 0.1 % of f₁ = (1.8751²/2π)·√(EI/(ρAL⁴)),
+/// S. P. Timoshenko, D. H. Young, W. Weaver, Vibration Problems in Engineering, 4th ed., Wiley
+/// 1974, §5.3) and leaves out the mode shapes and the echo of the materials (`--full` keeps them).
+#[test]
+fn modal_sweep_line_keeps_frequencies_not_shapes() {
+    let d = tempdir("modal_lines");
+    let nodes: Vec<Value> = (0..=10).map(|i| json!([20.0 * i as f64, 0, 0])).collect();
+    let elements: Vec<Value> = (0..10)
+        .map(|i| json!({"type": "beam", "nodes": [i, i + 1], "section": "bar", "material": "steel", "up": [0, 0, 1], "shear": false}))
+        .collect();
+    let s = json!({"analysis": "sweep",
+        "base": {"analysis": "modal", "modes": 2, "shapes": true, "materials": {"steel": "steel"},
+                 "sections": {"bar": {"shape": "rect", "w": 10, "h": 2}},
+                 "nodes": nodes, "elements": elements,
+                 "supports": [{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}]},
+        "vary": {"sections.bar.h": [2, 3]}});
+    let case = write(&d, "sweep.json", &s.to_string());
+    let o = sweep(&d, &[case.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let lines = parse_lines(&stdout(&o));
+    let full = parse_lines(&stdout(&sweep(&d, &[case.to_str().unwrap(), "--full"])));
+    assert_eq!((lines.len(), full.len()), (2, 2));
+    for line in &lines {
+        let h = line["params"]["sections.bar.h"].as_f64().unwrap();
+        let whole = full.iter().find(|l| l["index"] == line["index"]).unwrap();
+        let (r, w) = (&line["result"], &whole["result"]);
+        let modes = r["modes"].as_array().unwrap();
+        assert_eq!(modes.len(), 2);
+        for (k, m) in modes.iter().enumerate() {
+            assert!(m.get("shape").is_none() && w["modes"][k].get("shape").is_some());
+            assert_eq!(m["frequency_hz"], w["modes"][k]["frequency_hz"]);
+        }
+        assert!(r.get("materials").is_none());
+        let steel = &w["materials"]["steel"];
+        let (e, rho) = (steel["E"].as_f64().unwrap(), steel["density"].as_f64().unwrap());
+        // Bending about the weaker axis (thickness h along the `up` axis z).
+        let (b, l) = (10.0, 200.0f64);
+        let (area, i) = (b * h, b * h * h * h / 12.0);
+        let f1 = 1.8751f64.powi(2) / (2.0 * std::f64::consts::PI) * (e * i / (rho * area * l.powi(4))).sqrt();
+        let got = modes[0]["frequency_hz"].as_f64().unwrap();
+        assert!(
+            (got / f1 - 1.0).abs() < 1e-3,
+            "h = {h}: f1 = {got} Hz, Euler–Bernoulli {f1} Hz"
+        );
+    }
+    cleanup(&d);
+}

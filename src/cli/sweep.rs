@@ -65,8 +65,9 @@ pub struct SweepArgs {
     pub fields: Option<String>,
     /// Keep every result field in each line. By default a stage sweep's lines leave out the
     /// 6×6 platform compliance, the material echo and the per-hinge stresses (their maximum
-    /// stays), and a static sweep's keep the displacements of the loaded and prescribed nodes
-    /// only, without per-element stress lists: see `flexfem::design::sweep::omitted_fields`.
+    /// stays), a static sweep's keep the displacements of the loaded, prescribed and named
+    /// (`compliance`, `metrics`) nodes only, without per-element stress lists, and a modal
+    /// sweep's leave out the mode shapes: see `flexfem::design::sweep::omitted_fields`.
     #[arg(long, conflicts_with = "fields")]
     pub full: bool,
 }

@@ -24,10 +24,8 @@ pub const NONLINEAR_SEGMENTS: usize = 4;
 /// sub-intervals of the region; returns the index of the last one (the first keeps index `el`,
 /// the others and the `n − 1` inner nodes are appended to the model).
 ///
-/// Segment compliances from [`segment_compliance`]; their Saint-Venant torsion compliance is
-/// scaled so the chain keeps the torsion compliance of the single element (warping-restrained
-/// for rectangular notches), so the linear response is that of the single element. `None`
-/// when `el` is not a flexibility element.
+/// Segment compliances from [`chain_compliances`]. `None` when `el` is not a flexibility
+/// element.
 pub fn split_flex(
     model: &mut Model,
     el: usize,
@@ -36,13 +34,16 @@ pub fn split_flex(
     single: &Stiffness,
     n: usize,
 ) -> Option<usize> {
-    let Some(fem::Element::Flex(f)) = model.elements.get(el).cloned() else {
-        return None;
-    };
-    let (a, b) = (
-        Vector3::from(model.nodes[f.nodes[0]]),
-        Vector3::from(model.nodes[f.nodes[1]]),
-    );
+    let cs = chain_compliances(profile, material, single, n);
+    split_flex_with(model, el, &cs)
+}
+
+/// The 6×6 compliances (hinge axes, mm/N, rad/(N·mm)) of `n` flexibility elements over equal
+/// sub-intervals of the hinge region `profile` (one element of compliance `single`), from
+/// [`segment_compliance`]; their Saint-Venant torsion compliance is scaled so the chain keeps
+/// the torsion compliance of the single element (warping-restrained for rectangular notches),
+/// so the linear response is that of the single element.
+pub fn chain_compliances(profile: &Profile, material: &Material, single: &Stiffness, n: usize) -> Vec<[[f64; 6]; 6]> {
     let half = profile.half_length();
     let xs: Vec<f64> = (0..=n).map(|k| -half + 2.0 * half * k as f64 / n as f64).collect();
     let cs: Vec<Matrix6<f64>> = xs
@@ -51,24 +52,42 @@ pub fn split_flex(
         .collect();
     let sv: f64 = cs.iter().map(|c| c[(3, 3)]).sum();
     let scale = single.compliance[3][3] / sv;
+    cs.iter()
+        .map(|c| {
+            let mut cm = [[0.0; 6]; 6];
+            for (i, row) in cm.iter_mut().enumerate() {
+                for (j, v) in row.iter_mut().enumerate() {
+                    *v = c[(i, j)] * if i == 3 && j == 3 { scale } else { 1.0 };
+                }
+            }
+            cm
+        })
+        .collect()
+}
+
+/// [`split_flex`] with the chain's compliances given ([`chain_compliances`]: one element per
+/// entry, in order from the element's first node).
+pub fn split_flex_with(model: &mut Model, el: usize, compliances: &[[[f64; 6]; 6]]) -> Option<usize> {
+    let Some(fem::Element::Flex(f)) = model.elements.get(el).cloned() else {
+        return None;
+    };
+    let (a, b) = (
+        Vector3::from(model.nodes[f.nodes[0]]),
+        Vector3::from(model.nodes[f.nodes[1]]),
+    );
+    let n = compliances.len();
     let mut prev = f.nodes[0];
     let mut last = el;
-    for (k, c) in cs.iter().enumerate() {
+    for (k, cm) in compliances.iter().enumerate() {
         let next = if k + 1 == n {
             f.nodes[1]
         } else {
             let x = a + (b - a) * ((k + 1) as f64 / n as f64);
             model.add_node([x[0], x[1], x[2]])
         };
-        let mut cm = [[0.0; 6]; 6];
-        for (i, row) in cm.iter_mut().enumerate() {
-            for (j, v) in row.iter_mut().enumerate() {
-                *v = c[(i, j)] * if i == 3 && j == 3 { scale } else { 1.0 };
-            }
-        }
         let e = fem::Element::Flex(fem::FlexElement {
             nodes: [prev, next],
-            compliance: cm,
+            compliance: *cm,
             up: f.up,
         });
         if k == 0 {

@@ -50,7 +50,7 @@ use nalgebra::Matrix6;
 use serde::Serialize;
 
 use crate::material::Material;
-pub use chain::{split_flex, NONLINEAR_SEGMENTS};
+pub use chain::{chain_compliances, split_flex, split_flex_with, NONLINEAR_SEGMENTS};
 pub use element::{
     flex_chain, flex_region, hinge_element, hinge_peak_stress, spreading_region, HingeRegion, PeakStressTable,
 };

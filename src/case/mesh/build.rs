@@ -82,6 +82,7 @@ impl MeshSpec {
             hinges: Vec::new(),
             nonlinear,
             tie_paths: Vec::new(),
+            regions: Vec::new(),
         };
         for (i, x) in self.nodes.iter().enumerate() {
             for (k, v) in x.iter().enumerate() {
@@ -123,20 +124,36 @@ impl MeshSpec {
         // Hinges of several segments: inner nodes and further elements after the case's own,
         // so node and element indices of the case stay those of the model.
         // Then every hinge's mass on its chain of nodes.
-        for h in cx.hinges.iter_mut() {
+        // Identical hinges (one region, material and segment count: a `hinge_types` entry at
+        // equal node distances) share their chain's compliances, integrated once.
+        let mut chains: Vec<(usize, Vec<[[f64; 6]; 6]>)> = Vec::new();
+        for k in 0..cx.hinges.len() {
             let first_inner = cx.model.nodes.len();
-            if h.segments > 1 {
-                if let Some(last) = crate::hinge::split_flex(
-                    &mut cx.model,
-                    h.element,
-                    &h.region.profile,
-                    &h.material,
-                    &h.region.stiffness,
-                    h.segments,
-                ) {
-                    h.last = last;
+            let element = cx.hinges[k].element;
+            if cx.hinges[k].segments > 1 {
+                let h = &cx.hinges[k];
+                let same = |j: usize| {
+                    let g = &cx.hinges[j];
+                    g.region == h.region && g.material == h.material && g.segments == h.segments
+                };
+                let at = match chains.iter().position(|&(j, _)| same(j)) {
+                    Some(at) => at,
+                    None => {
+                        let cs = crate::hinge::chain_compliances(
+                            &h.region.profile,
+                            &h.material,
+                            &h.region.stiffness,
+                            h.segments,
+                        );
+                        chains.push((k, cs));
+                        chains.len() - 1
+                    }
+                };
+                if let Some(last) = crate::hinge::split_flex_with(&mut cx.model, element, &chains[at].1) {
+                    cx.hinges[k].last = last;
                 }
             }
+            let h = &mut cx.hinges[k];
             let ends = |ie: usize| match cx.model.elements.get(ie) {
                 Some(fem::Element::Flex(f)) => Some(f.nodes),
                 _ => None,

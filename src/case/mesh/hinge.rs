@@ -51,7 +51,19 @@ pub(super) fn hinge_element(
             format!("the node distance {len} mm is shorter than the notch length {notch_len} mm of the hinge"),
         ));
     }
-    let region = hinge::hinge_element(&spec, &mat, len.max(notch_len)).map_err(herr)?;
+    let length = len.max(notch_len);
+    // Identical hinges (one `hinge_types` entry at equal node distances) are integrated once.
+    let same = |(s, m, l, _): &&(HingeSpec, crate::material::Material, f64, hinge::HingeRegion)| {
+        *s == spec && *m == mat && *l == length
+    };
+    let region = match cx.regions.iter().find(same) {
+        Some((.., r)) => r.clone(),
+        None => {
+            let r = hinge::hinge_element(&spec, &mat, length).map_err(herr)?;
+            cx.regions.push((spec, mat, length, r.clone()));
+            r
+        }
+    };
     let element = cx.model.add_element(fem::Element::Flex(fem::FlexElement {
         nodes: [a, b],
         compliance: region.compliance(),

@@ -104,6 +104,8 @@ pub(super) struct Ctx<'a> {
     pub nonlinear: bool,
     /// The JSON path of the element that made each model tie (`model.ties` order).
     pub tie_paths: Vec<String>,
+    /// The hinge regions integrated so far, by hinge spec, material and node distance (mm).
+    pub regions: Vec<(crate::hinge::HingeSpec, Material, f64, crate::hinge::HingeRegion)>,
 }
 
 impl Ctx<'_> {

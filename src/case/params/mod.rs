@@ -286,10 +286,12 @@ pub fn resolve_case(value: &mut Value, base: Option<&std::path::Path>) -> Result
         .map(str::to_string);
     let mut mesh = mesh_name.and_then(|n| super::read_json("mesh", &n, base).ok().map(|v| (n, v)));
     let (mut all, mut types) = (BTreeMap::new(), Map::new());
+    let mut mesh_parameterised = false;
     if let Some((name, mv)) = &mut mesh {
         let in_mesh = |e: CaseError| in_mesh_file(name, e);
         all = take_declared(mv).map_err(in_mesh)?;
         types = take_hinge_types(mv).map_err(in_mesh)?;
+        mesh_parameterised = !(all.is_empty() && types.is_empty());
         for d in all.values_mut() {
             d.file = Some(name.clone());
         }
@@ -336,6 +338,11 @@ pub fn resolve_case(value: &mut Value, base: Option<&std::path::Path>) -> Result
     }
     *value = template.fill(&parameters)?;
     if let Some((name, mv)) = &mut mesh {
+        if mesh_parameterised {
+            let written = value.as_object().into_iter().flat_map(|m| m.keys().cloned());
+            let taken = ["parameters", "hinge_types"].map(str::to_string);
+            origins.set_mesh(name, written.chain(taken).collect());
+        }
         let in_mesh = |e: CaseError| in_mesh_file(name, e);
         let mut used = Vec::new();
         expand_hinge_types(mv, &types, &mut String::new(), &mut used).map_err(in_mesh)?;

@@ -25,6 +25,10 @@ struct Origin {
 #[derive(Debug, Clone, Default)]
 pub struct Origins {
     all: Vec<Origin>,
+    /// The JSON mesh file, when it declares parameters or hinge types (its model then changes
+    /// with the case's parameter values), and the top-level keys of the case as written: an
+    /// error at a path under another key is in the mesh file's model and is reported at `mesh`.
+    mesh: Option<(String, Vec<String>)>,
 }
 
 impl Origins {
@@ -39,8 +43,16 @@ impl Origins {
         });
     }
 
+    /// Errors under the model of the parameterised mesh file `name` (the case as written has
+    /// the top-level keys `case_keys`) are reported at `mesh` ([`Self::locate`]).
+    pub(super) fn set_mesh(&mut self, name: &str, case_keys: Vec<String>) {
+        self.mesh = Some((name.to_string(), case_keys));
+    }
+
     /// `e` moved to where the value at its path is set, if that path is one recorded (an
-    /// expression site first, else inside a hinge-type use); otherwise `e` unchanged.
+    /// expression site first, else inside a hinge-type use), or to `mesh` if it lies in the
+    /// model of a parameterised mesh file (e.g. an element made too short by node coordinates
+    /// written as expressions); otherwise `e` unchanged.
     pub fn locate(&self, e: CaseError) -> CaseError {
         let inside = |o: &Origin| {
             e.path == o.at
@@ -55,7 +67,7 @@ impl Origins {
             .find(|o| !o.hinge && e.path == o.at)
             .or_else(|| self.all.iter().find(|o| inside(o)))
         else {
-            return e;
+            return self.in_mesh(e);
         };
         let file = o
             .file
@@ -66,6 +78,22 @@ impl Origins {
         CaseError::new(
             o.target.clone(),
             format!("at `{}`{file} ({what} \"{}\"): {}", e.path, o.written, e.message),
+        )
+    }
+
+    /// `e` at `mesh` when its path is in the model of the parameterised mesh file (its first
+    /// key is not one of the case as written); otherwise `e` unchanged.
+    fn in_mesh(&self, e: CaseError) -> CaseError {
+        let Some((name, case_keys)) = &self.mesh else {
+            return e;
+        };
+        let first = e.path.split(['.', '[']).next().unwrap_or_default();
+        if first.is_empty() || case_keys.iter().any(|k| k == first) {
+            return e;
+        }
+        CaseError::new(
+            "mesh",
+            format!("in mesh file \"{name}\" at `{}`: {}", e.path, e.message),
         )
     }
 }

@@ -19,7 +19,8 @@ pub struct LineFormat {
     /// which `*` matches any key or array index (see [`omitted_fields`]).
     pub omit: Vec<String>,
     /// When [`Self::fields`] is `None`: each load case's `displacements` keeps only the nodes
-    /// its loads and prescribed displacements act on ([`loaded_nodes`]), as an object keyed by
+    /// its loads and prescribed displacements act on and the nodes the case names in
+    /// `compliance` and `metrics` ([`line_nodes`]), as an object keyed by
     /// node index (`load_cases.0.displacements.8`, the path of that row in the full result).
     /// For `static` sweeps by default.
     pub loaded_displacements: bool,
@@ -29,8 +30,15 @@ pub struct LineFormat {
 pub type LoadedNodes = Vec<Vec<usize>>;
 
 /// The nodes each load case of a static model loads (`forces`, `group_forces` given by node)
-/// or prescribes (`displacements`), sorted: the displacements a sweep line keeps by default.
+/// or prescribes (`displacements`), sorted: the displacements a sweep line keeps by default
+/// (with the nodes the case names as outputs: [`line_nodes`]).
 pub fn loaded_nodes(model: &MeshSpec) -> LoadedNodes {
+    line_nodes(model, &[])
+}
+
+/// [`loaded_nodes`] of every load case with the `named` nodes added (the nodes of the case's
+/// `compliance` requests and `metrics`), sorted, without repeats.
+pub fn line_nodes(model: &MeshSpec, named: &[usize]) -> LoadedNodes {
     model
         .load_cases
         .iter()
@@ -40,6 +48,7 @@ pub fn loaded_nodes(model: &MeshSpec) -> LoadedNodes {
             let mut nodes: Vec<usize> = forces
                 .chain(groups)
                 .chain(c.displacements.iter().map(|d| d.node))
+                .chain(named.iter().copied())
                 .collect();
             nodes.sort_unstable();
             nodes.dedup();
@@ -73,16 +82,21 @@ fn keep_loaded_displacements(result: &mut Value, nodes: &[Vec<usize>]) {
 /// stay), the echoes of the case (material, its allowable stress under `at_allowable`, the
 /// actuator forces, the `nonlinear` flag) and the per-hinge stresses (their maximum,
 /// `max_von_mises`, stays): ~2,100 → ~940 bytes a line. A static line leaves out the
-/// per-element von Mises lists (`max_von_mises` and each hinge's peak stress and utilisation
-/// stay) and the hinges' end forces, and keeps the displacements of the loaded nodes only
-/// ([`LineFormat::loaded_displacements`]).
+/// per-element von Mises lists (`max_von_mises`, `max_utilisation` with its element, and each
+/// hinge's peak stress and utilisation stay), the hinges' end forces and the echo of the
+/// materials, and keeps the displacements of the loaded nodes and of the nodes the case names
+/// in `compliance` and `metrics` only ([`LineFormat::loaded_displacements`]); the `compliance`
+/// blocks and `metrics` stay. A modal line keeps every mode's frequency, eigenvalue and
+/// effective mass fractions and leaves out the mode shapes and the echo of the materials.
 pub fn omitted_fields(kind: &str) -> &'static [&'static str] {
     match kind {
         "static" => &[
             "load_cases.*.element_von_mises",
             "load_cases.*.shell_von_mises",
             "load_cases.*.hinges.*.end_forces",
+            "materials",
         ],
+        "modal" => &["modes.*.shape", "materials"],
         "stage" => &[
             "platform_stiffness.compliance",
             "material",

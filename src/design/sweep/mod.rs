@@ -21,7 +21,7 @@ mod shard;
 mod typed;
 
 pub use check::{check, load, with_suffix};
-pub use format::{loaded_nodes, omitted_fields, LineFormat};
+pub use format::{line_nodes, loaded_nodes, omitted_fields, LineFormat};
 pub use hash::{design_hash, hash_design};
 pub use shard::Shard;
 
@@ -138,7 +138,15 @@ fn evaluate(
     let parsed = shapes.parse(design, base_dir).map_err(|e| case_text(&e))?;
     let loaded = match &parsed.case {
         Case::Sweep(_) => return Err("analysis: a sweep cannot vary another sweep".into()),
-        Case::Static(c) if format.loaded_displacements => Some(format::loaded_nodes(&c.model)),
+        Case::Static(c) if format.loaded_displacements => {
+            let named: Vec<usize> = c
+                .compliance
+                .iter()
+                .map(|r| r.node)
+                .chain(c.metrics.iter().filter_map(|m| m.node))
+                .collect();
+            Some(format::line_nodes(&c.model, &named))
+        }
         _ => None,
     };
     let mut ctx = Ctx::new(cache, false);
