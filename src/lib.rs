@@ -9,6 +9,7 @@ pub mod cli;
 pub mod design;
 pub mod fatigue;
 pub mod fem;
+pub mod gradient;
 pub mod hinge;
 pub mod kinematics;
 pub mod material;
