@@ -19,7 +19,7 @@
 //! along the exact tangent of its numbers; the reduced stiffness, mass and loads (element
 //! matrices — beams, shells and the hinges' flexibility integrals with their calibration
 //! factors —, the rigid-link transforms that node coordinates move, loads) and the recovery of
-//! the metrics are differentiated by fourth-order central differences at element level (no
+//! the metrics are differentiated by sixth-order central differences at element level (no
 //! solve is differenced): exact to ≈ 1e-10 relative ([`linear::RELATIVE_STEP`]). The direct
 //! method is used rather than the adjoint one (one solve per metric) because its right-hand
 //! sides need no ∂m/∂q; a triangular solve costs little beside the factorisation and the
