@@ -12,6 +12,7 @@
 use super::frequency;
 use super::point::Point;
 use super::{GradientError, Gradients, Target};
+use crate::analysis::RunError;
 use crate::case::mesh::MetricKind;
 use crate::case::params::{tangent::Written, Along, Parameters};
 use crate::fem::{self, analysis::prescribed_dofs, assembly::MatrixKind, constraints::DofMap, NodeDof, System};
@@ -110,19 +111,40 @@ impl Linear {
         let mut values0 = base.evaluate(&self.targets, &maps, &q, Some(free.dof_map()), &qu)?;
         let modes = frequency::Modes::new(&base.model, free, &self.targets)?;
         modes.fill_values(&self.targets, &mut values0);
-        let mut jacobian = vec![vec![0.0; names.len()]; self.targets.len()];
-        for (j, name) in names.iter().enumerate() {
-            let p = base.parameters[name];
-            let h = self.step * p.abs().max(1.0);
-            let d = self.column(values, &base, &sys, &q, &units, &qu, &modes, name, h)?;
-            for (row, dj) in jacobian.iter_mut().zip(d) {
-                row[j] = dj;
-            }
-        }
         let mut model = vec![format!(
             "gradients: direct method on the factorised stiffness (one extra right-hand side per parameter and load case); dK/dp and df/dp of the reduced system (elements, rigid-link transforms, loads) by 6th-order central differences at element level, step {:e}·max(|p|, 1), along the exact tangent of the case's expressions",
             self.step
         )];
+        let mut columns = Vec::with_capacity(names.len());
+        for name in &names {
+            let p = base.parameters[name];
+            let h = self.step * p.abs().max(1.0);
+            match self.column(values, &base, &sys, &q, &units, &qu, &modes, name, h) {
+                Ok(d) => columns.push((name.clone(), d)),
+                // A parameter that is an index or a count (a step along it makes the case
+                // invalid) has no gradient: left out when not asked for by name.
+                Err(GradientError(RunError::Case(e))) if self.parameters.is_none() => model.push(format!(
+                    "no gradient with respect to `{name}`: a step along it makes the case invalid ({e})"
+                )),
+                Err(e) => return Err(e),
+            }
+        }
+        let jacobian: Vec<Vec<f64>> = (0..self.targets.len())
+            .map(|i| columns.iter().map(|(_, d)| d[i]).collect())
+            .collect();
+        for (t, row) in self.targets.iter().zip(&jacobian) {
+            if let Some(j) = row.iter().position(|v| !v.is_finite()) {
+                return Err(GradientError(RunError::Analysis(crate::analysis::AnalysisError::new(
+                    "gradients",
+                    format!(
+                        "d {} / d {} is not finite (the metric is unbounded or undefined nearby)",
+                        t.name(),
+                        columns[j].0
+                    ),
+                ))));
+            }
+        }
+        let names: Vec<String> = columns.into_iter().map(|(n, _)| n).collect();
         model.extend(modes.notes);
         Ok(Gradients {
             parameters: names,

@@ -32,6 +32,9 @@ pub enum Expr {
     Call(Func, Box<Expr>),
 }
 
+/// A value and its derivative along a direction ([`Expr::eval_tangent`]).
+pub type Dual = (f64, f64);
+
 /// A binary operator.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Op {
@@ -146,10 +149,7 @@ impl Expr {
     /// derivative. d sin(x°) = (π/180) cos(x°) dx; d sqrt(x) = dx / (2 sqrt x), refused at
     /// x = 0 when dx ≠ 0 (an infinite derivative, [`ExprError::NonFinite`]). Errors as
     /// [`Self::eval`].
-    pub fn eval_tangent<E: From<ExprError>>(
-        &self,
-        lookup: &mut dyn FnMut(&str) -> Result<(f64, f64), E>,
-    ) -> Result<(f64, f64), E> {
+    pub fn eval_tangent<E: From<ExprError>>(&self, lookup: &mut dyn FnMut(&str) -> Result<Dual, E>) -> Result<Dual, E> {
         let (v, d) = match self {
             Expr::Num(x) => (*x, 0.0),
             Expr::Param(name) => lookup(name)?,
