@@ -6,8 +6,8 @@
 //! ```text
 //! cli, main                      command line (and the sweep's files, resume, exit codes)
 //! design                         the batch driver (sweeps over any analysis kind), sweep tables
-//! gradient                       design sensitivities (rebuilds parameterised cases)
-//! analysis                       validated case → typed result → JSON/Markdown/CSV views
+//! analysis, gradient             validated case → typed result → JSON/Markdown/CSV views;
+//!                                gradients of a case's metrics
 //! case                           case files → validated inputs (the only place with JSON paths)
 //! stage                          the 3-PRS stage FE model, its sizing and sensitivities
 //! hinge, kinematics              flexure-hinge models, parallel kinematics
@@ -35,8 +35,8 @@ const LAYERS: &[(&str, u32)] = &[
     ("cli", 90),
     ("design", 85),
     // Gradients rebuild a parameterised case (through the analysis layer's case parsing).
-    ("gradient", 85),
     ("analysis", 80),
+    ("gradient", 80),
     ("case", 70),
     ("stage", 50),
     ("hinge", 40),

@@ -182,11 +182,37 @@ pub fn parse_resolved(mut value: Value, base: Option<&Path>, check_arrays: bool)
     let resolved = if value.get("analysis").and_then(Value::as_str) == Some("sweep") {
         params::Resolved::default()
     } else {
-        params::resolve_case(&mut value, base)?
+        let mesh = params::read_mesh(&value, base);
+        let written = (value.get("gradients") == Some(&Value::Bool(true))).then(|| params::tangent::Written {
+            value: value.clone(),
+            mesh: mesh.clone(),
+            dir: base.map(Path::to_path_buf),
+        });
+        let resolved = params::resolve_case_in(&mut value, mesh, None)?;
+        if check_arrays && value.is_object() {
+            check_shape(&value)?;
+        }
+        let mut parsed = parse_with(value, base, resolved)?;
+        if let (Case::Static(s), Some(w)) = (&mut parsed.case, written) {
+            if parsed.parameters.is_empty() {
+                return Err(CaseError::value(
+                    "gradients",
+                    true,
+                    "needs \"parameters\" (in the case or its mesh file): the gradients are with respect to them",
+                ));
+            }
+            s.written = Some(std::sync::Arc::new(w));
+        }
+        return Ok(parsed);
     };
     if check_arrays && value.is_object() {
         check_shape(&value)?;
     }
+    parse_with(value, base, resolved)
+}
+
+/// The typed parse of a case value resolved as `resolved` says ([`params::resolve_case_in`]).
+pub fn parse_with(value: Value, base: Option<&Path>, resolved: params::Resolved) -> Result<Parsed, CaseError> {
     let source = Source::with_mesh(base, resolved.mesh);
     let case = parse_shaped(value, &source).map_err(|e| resolved.origins.locate(e))?;
     Ok(Parsed {

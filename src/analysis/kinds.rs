@@ -257,6 +257,17 @@ impl Analysis for Static {
         }
         r.compliance = fem_static::node_compliances(&model, &case.compliance)?;
         r.metrics = fem_static::metrics::evaluate(&model, &case.model, &case.metrics, &r)?;
+        if case.gradients {
+            let written = case.written.clone().ok_or_else(|| {
+                CaseError::new(
+                    "gradients",
+                    "the case as written was not kept (read the case with analysis::parse_value or from its file)",
+                )
+            })?;
+            let g = crate::gradient::linear(written)?;
+            r.gradients = Some(g.table());
+            r.model.extend(g.model);
+        }
         if !case.output.internal_nodes {
             fem_static::inner_nodes::hide(&mut r, &model, &hinges, case.model.nodes.len());
         }

@@ -85,6 +85,16 @@ case_struct! {
         /// its documentation names).
         #[serde(default)]
         pub metrics: Vec<super::mesh::MetricRequest>,
+        /// `true`: the result also lists `"gradients": {"METRIC": {"PARAM": d metric / d param}}`,
+        /// the derivative of every metric with respect to every parameter declared as a number
+        /// (in the units of the metric per unit of the parameter), by the direct method (linear
+        /// runs only; needs `metrics` and `parameters`). Default false.
+        #[serde(default)]
+        pub gradients: bool,
+        /// The case as written (parameters unresolved), kept when `gradients` asks for it.
+        #[serde(skip)]
+        #[schemars(skip)]
+        pub written: Option<std::sync::Arc<super::params::tangent::Written>>,
     }
 }
 
@@ -149,6 +159,8 @@ struct StaticOptions {
     track: Option<super::mesh::TrackRequest>,
     #[serde(default)]
     metrics: Vec<super::mesh::MetricRequest>,
+    #[serde(default)]
+    gradients: bool,
 }
 
 /// The options of a `modal` (or `buckling`) case besides its model, as in the case file (each
@@ -177,7 +189,7 @@ pub const MODEL_FIELDS: [&str; 8] = [
     "ordering",
 ];
 
-const STATIC_OWN: [&str; 10] = [
+const STATIC_OWN: [&str; 11] = [
     "analysis",
     "description",
     "mesh",
@@ -188,6 +200,7 @@ const STATIC_OWN: [&str; 10] = [
     "compliance",
     "track",
     "metrics",
+    "gradients",
 ];
 const MODAL_OWN: [&str; 6] = ["analysis", "mesh", "gmsh", "modes", "shift_hz", "shapes"];
 
@@ -217,6 +230,7 @@ pub fn parse_static(value: Value, base: &crate::case::Source<'_>) -> Result<Stat
     super::mesh::requests::check_compliance(&o.compliance, model.nodes.len())?;
     super::mesh::requests::check_track(o.track.as_ref(), nonlinear, model.nodes.len())?;
     super::mesh::metrics::check_metrics(&o.metrics, &model, nonlinear)?;
+    check_gradients(o.gradients, nonlinear, &o.metrics)?;
     for (i, c) in model.load_cases.iter().enumerate() {
         super::mesh::path_control::check(&format!("load_cases[{i}]"), c, steps, model.nodes.len())?;
     }
@@ -231,7 +245,32 @@ pub fn parse_static(value: Value, base: &crate::case::Source<'_>) -> Result<Stat
         compliance: o.compliance,
         track: o.track,
         metrics: o.metrics,
+        gradients: o.gradients,
+        written: None,
     })
+}
+
+/// `"gradients": true` needs a linear run with metrics (the parameters are checked where the
+/// case is read: [`crate::case::params::tangent::Written`]).
+fn check_gradients(gradients: bool, nonlinear: bool, metrics: &[super::mesh::MetricRequest]) -> Result<(), CaseError> {
+    if !gradients {
+        return Ok(());
+    }
+    if nonlinear {
+        return Err(CaseError::value(
+            "gradients",
+            true,
+            "gradients are computed for linear runs only: remove \"nonlinear\": true or \"gradients\"",
+        ));
+    }
+    if metrics.is_empty() {
+        return Err(CaseError::value(
+            "gradients",
+            true,
+            "needs \"metrics\": the gradients are those of the metrics",
+        ));
+    }
+    Ok(())
 }
 
 /// Parses a `modal` case, as [`parse_static`].

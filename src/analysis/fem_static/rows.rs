@@ -279,6 +279,10 @@ pub struct StaticResult {
     /// omitted when none was asked.
     #[serde(skip_serializing_if = "super::metrics::Metrics::is_empty")]
     pub metrics: super::metrics::Metrics,
+    /// `{"METRIC": {"PARAM": d metric / d param}}` when the case asks (`"gradients": true`),
+    /// in the metric's units per unit of the parameter; omitted otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gradients: Option<crate::gradient::Table>,
 }
 
 /// Units of the `static` result.

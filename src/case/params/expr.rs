@@ -32,6 +32,9 @@ pub enum Expr {
     Call(Func, Box<Expr>),
 }
 
+/// A value and its derivative along a direction ([`Expr::eval_tangent`]).
+pub type Dual = (f64, f64);
+
 /// A binary operator.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Op {
@@ -136,6 +139,48 @@ impl Expr {
         };
         if v.is_finite() {
             Ok(v)
+        } else {
+            Err(ExprError::NonFinite.into())
+        }
+    }
+
+    /// The value and its derivative along a direction in parameter space (forward-mode
+    /// automatic differentiation, dual numbers): `lookup` gives each parameter's value and
+    /// derivative. d sin(x°) = (π/180) cos(x°) dx; d sqrt(x) = dx / (2 sqrt x), refused at
+    /// x = 0 when dx ≠ 0 (an infinite derivative, [`ExprError::NonFinite`]). Errors as
+    /// [`Self::eval`].
+    pub fn eval_tangent<E: From<ExprError>>(&self, lookup: &mut dyn FnMut(&str) -> Result<Dual, E>) -> Result<Dual, E> {
+        let (v, d) = match self {
+            Expr::Num(x) => (*x, 0.0),
+            Expr::Param(name) => lookup(name)?,
+            Expr::Neg(x) => {
+                let (v, d) = x.eval_tangent(lookup)?;
+                (-v, -d)
+            }
+            Expr::Bin(op, a, b) => {
+                let ((a, da), (b, db)) = (a.eval_tangent(lookup)?, b.eval_tangent(lookup)?);
+                match op {
+                    Op::Add => (a + b, da + db),
+                    Op::Sub => (a - b, da - db),
+                    Op::Mul => (a * b, da * b + a * db),
+                    Op::Div if b == 0.0 => return Err(ExprError::DivisionByZero.into()),
+                    Op::Div => (a / b, (da * b - a * db) / (b * b)),
+                }
+            }
+            Expr::Call(f, x) => {
+                let (x, dx) = x.eval_tangent(lookup)?;
+                let rad = std::f64::consts::PI / 180.0;
+                match f {
+                    Func::Sqrt if x < 0.0 => return Err(ExprError::NegativeSqrt(x).into()),
+                    Func::Sqrt if dx == 0.0 => (x.sqrt(), 0.0),
+                    Func::Sqrt => (x.sqrt(), dx / (2.0 * x.sqrt())),
+                    Func::Sin => (x.to_radians().sin(), rad * x.to_radians().cos() * dx),
+                    Func::Cos => (x.to_radians().cos(), -rad * x.to_radians().sin() * dx),
+                }
+            }
+        };
+        if v.is_finite() && d.is_finite() {
+            Ok((v, d))
         } else {
             Err(ExprError::NonFinite.into())
         }

@@ -16,6 +16,7 @@
 
 pub mod expr;
 pub mod origin;
+pub mod tangent;
 pub mod template;
 
 use crate::case::{short, CaseError};
@@ -23,6 +24,7 @@ use expr::{Expr, ExprError};
 pub use origin::Origins;
 use serde_json::{Map, Value};
 use std::collections::BTreeMap;
+pub use tangent::Along;
 pub use template::Template;
 
 /// Resolved parameter values by name (no `$`), in the units of wherever they are used.
@@ -262,6 +264,8 @@ pub fn expand_hinge_types(
 pub struct Resolved {
     /// Every declared parameter's value (echoed in results as `parameters`).
     pub parameters: Parameters,
+    /// The parameters declared as numbers (the others are expressions of them), by name.
+    pub independent: Vec<String>,
     /// The JSON mesh file the case names, read and resolved: (name as written, content).
     pub mesh: Option<(String, Value)>,
     /// Where the values outside the case as written came from (for errors found later).
@@ -274,17 +278,33 @@ pub struct Resolved {
 /// override the mesh file's) and replaces every hinge-type name and expression by its value.
 /// Errors in the mesh file are reported at `mesh`, naming the file and the path inside it.
 pub fn resolve_case(value: &mut Value, base: Option<&std::path::Path>) -> Result<Resolved, CaseError> {
+    let mesh = read_mesh(value, base);
+    resolve_case_in(value, mesh, None)
+}
+
+/// The JSON mesh file a case object names, read as written (`None` when it names none, or a
+/// `.msh` file, or when it cannot be read: the model reader reports that).
+pub fn read_mesh(value: &Value, base: Option<&std::path::Path>) -> Option<(String, Value)> {
+    let name = value
+        .get("mesh")
+        .and_then(Value::as_str)
+        .filter(|n| !n.ends_with(".msh"))?;
+    super::read_json("mesh", name, base).ok().map(|v| (name.to_string(), v))
+}
+
+/// [`resolve_case`] with the mesh file already read ([`read_mesh`]), optionally a step
+/// `along` an independent parameter: every number the parameters set moves by the step times
+/// its exact derivative ([`tangent`]).
+pub fn resolve_case_in(
+    value: &mut Value,
+    mut mesh: Option<(String, Value)>,
+    along: Option<Along<'_>>,
+) -> Result<Resolved, CaseError> {
     if !value.is_object() {
         return Ok(Resolved::default());
     }
     let declared = take_declared(value)?;
     let case_types = take_hinge_types(value)?;
-    let mesh_name = value
-        .get("mesh")
-        .and_then(Value::as_str)
-        .filter(|n| !n.ends_with(".msh"))
-        .map(str::to_string);
-    let mut mesh = mesh_name.and_then(|n| super::read_json("mesh", &n, base).ok().map(|v| (n, v)));
     let (mut all, mut types) = (BTreeMap::new(), Map::new());
     let mut mesh_parameterised = false;
     if let Some((name, mv)) = &mut mesh {
@@ -300,6 +320,11 @@ pub fn resolve_case(value: &mut Value, base: Option<&std::path::Path>) -> Result
     let case_type_names: Vec<String> = case_types.keys().cloned().collect();
     types.extend(case_types);
     let parameters = resolve_table(&all)?;
+    let tangent = along.map(|a| tangent::table(&all, &parameters, a.name)).transpose()?;
+    let fill = |t: Template| match (&tangent, along) {
+        (Some(d), Some(a)) => t.fill_along(&parameters, d, a.step),
+        _ => t.fill(&parameters),
+    };
     if !types.is_empty() {
         // Each definition's expressions checked where it is written.
         for (name, spec) in &types {
@@ -336,7 +361,7 @@ pub fn resolve_case(value: &mut Value, base: Option<&std::path::Path>) -> Result
             origins.add(at, text, param_target(first), None, false);
         }
     }
-    *value = template.fill(&parameters)?;
+    *value = fill(template)?;
     if let Some((name, mv)) = &mut mesh {
         if mesh_parameterised {
             let written = value.as_object().into_iter().flat_map(|m| m.keys().cloned());
@@ -353,9 +378,10 @@ pub fn resolve_case(value: &mut Value, base: Option<&std::path::Path>) -> Result
         for (at, text, first) in template.sites() {
             origins.add(at, text, param_target(first), Some(name), false);
         }
-        *mv = template.fill(&parameters).map_err(in_mesh)?;
+        *mv = fill(template).map_err(in_mesh)?;
     }
     Ok(Resolved {
+        independent: tangent::independent(&all),
         parameters,
         mesh,
         origins,

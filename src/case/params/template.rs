@@ -76,6 +76,29 @@ impl Template {
         set_all(&mut v, &self.sites, params)?;
         Ok(v)
     }
+
+    /// The value with every site set to x + `step`·dx, x its number for `params` and dx its
+    /// derivative when the parameters move by `tangent` (per unit of the direction; see
+    /// [`super::tangent`]): the case a step along the exact tangent of its numbers.
+    pub fn fill_along(mut self, params: &Parameters, tangent: &Parameters, step: f64) -> Result<Value, CaseError> {
+        for site in &self.sites {
+            let (x, dx) = site
+                .expr
+                .eval_tangent(&mut |name: &str| {
+                    let v = params.get(name).copied();
+                    v.map(|v| (v, tangent.get(name).copied().unwrap_or(0.0)))
+                        .ok_or_else(|| Failure::Unknown(name.to_string()))
+                })
+                .map_err(|e| e.at(&path_of(borrowed(&site.steps)), &site.text, params))?;
+            // Sites that do not move keep their plain number (integers stay integers: indices).
+            *site_mut(&mut self.value, site) = if dx == 0.0 {
+                number(x)
+            } else {
+                Value::from(x + step * dx)
+            };
+        }
+        Ok(self.value)
+    }
 }
 
 /// A step while walking: keys borrowed from the value (owned only for the sites found).
@@ -152,18 +175,23 @@ fn collect<'v>(v: &'v Value, steps: &mut Vec<StepRef<'v>>, sites: &mut Vec<Site>
 fn set_all(root: &mut Value, sites: &[Site], params: &Parameters) -> Result<(), CaseError> {
     for site in sites {
         let x = evaluate(&site.expr, params).map_err(|e| e.at(&path_of(borrowed(&site.steps)), &site.text, params))?;
-        let mut cur = &mut *root;
-        for s in &site.steps {
-            cur = match (s, cur) {
-                (Step::Key(k), Value::Object(m)) => m.get_mut(k),
-                (Step::Index(i), Value::Array(a)) => a.get_mut(*i),
-                _ => None,
-            }
-            .expect("a site's steps lead to the string they were found at");
-        }
-        *cur = number(x);
+        *site_mut(root, site) = number(x);
     }
     Ok(())
+}
+
+/// The value at `site` inside `root`.
+fn site_mut<'v>(root: &'v mut Value, site: &Site) -> &'v mut Value {
+    let mut cur = root;
+    for s in &site.steps {
+        cur = match (s, cur) {
+            (Step::Key(k), Value::Object(m)) => m.get_mut(k),
+            (Step::Index(i), Value::Array(a)) => a.get_mut(*i),
+            _ => None,
+        }
+        .expect("a site's steps lead to the string they were found at");
+    }
+    cur
 }
 
 /// The JSON number of `x`: an integer-valued result as an integer (node indices, counts), so
