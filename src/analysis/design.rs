@@ -97,7 +97,7 @@ pub struct DesignResult {
     /// Constraint values and violations.
     pub constraints: Vec<stage_design::Constraint>,
     /// Active or violated constraints.
-    pub binding: Vec<&'static str>,
+    pub binding: Vec<String>,
     /// Explanation when no design meets the requirements.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub message: Option<String>,
