@@ -136,6 +136,7 @@ fn stage_sensitivity_matches_the_numbers_before_the_generic_machinery() {
     let out = run(&["run", "cases/ruiz2019_sensitivity.json"]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    // zip-checked: both are [_; 7] constants (the compiler checks their lengths).
     for (k, want) in RESPONSE_KEYS.iter().zip(SENS_BASE) {
         close(num(&v["base"][k], k), want, &format!("base.{k}"));
     }
@@ -172,6 +173,7 @@ fn stage_design_matches_the_numbers_before_the_generic_machinery() {
     for (k, want) in DESIGN {
         close(num(&v["design"][k], k), want, &format!("design.{k}"));
     }
+    // zip-checked: both are [_; 7] constants (the compiler checks their lengths).
     for (k, want) in RESPONSE_KEYS.iter().zip(DESIGN_RESPONSES) {
         close(num(&v["responses"][k], k), want, &format!("responses.{k}"));
     }

@@ -2,7 +2,7 @@
 //! generic Table-1 sensitivity and requirement-driven optimiser of [`crate::problem`] on the
 //! case's metrics ([`super::design_problem::MeshProblem`]).
 
-use super::design_problem::{validate, MeshProblem, Validated};
+use super::design_problem::{validate, MeshProblem, StaticAnalysis, Validated};
 use super::{AnalysisError, Report, RunError};
 use crate::case::design_mesh::{MeshDesignCase, MeshSensitivityCase, ObjectiveSpec};
 use crate::case::CaseError;
@@ -55,14 +55,14 @@ fn case_error(e: CaseError) -> RunError {
 }
 
 /// Validates a mesh sensitivity case.
-pub fn check_sensitivity(c: &MeshSensitivityCase) -> Result<Validated, CaseError> {
+pub fn check_sensitivity<A: StaticAnalysis>(c: &MeshSensitivityCase) -> Result<Validated<A>, CaseError> {
     c.check_fields()?;
     validate(&c.inner, &c.parameters, None)
 }
 
 /// Runs a mesh sensitivity case.
-pub fn run_sensitivity(c: &MeshSensitivityCase) -> Result<MeshSensitivityResult, RunError> {
-    let v = check_sensitivity(c).map_err(case_error)?;
+pub fn run_sensitivity<A: StaticAnalysis>(c: &MeshSensitivityCase) -> Result<MeshSensitivityResult, RunError> {
+    let v = check_sensitivity::<A>(c).map_err(case_error)?;
     let names = v.problem.responses().to_vec();
     let (r0, rows) =
         problem::sensitivity(&v.problem, &v.base, c.increment).map_err(|m| AnalysisError::new("sensitivity", m))?;
@@ -203,7 +203,10 @@ pub struct MeshDesignResult {
 
 /// The requirements and objective of a design case as indices into the problem's responses
 /// (errors at `requirements[i].metric`, `objective.…`).
-fn goals(c: &MeshDesignCase, p: &MeshProblem) -> Result<(Vec<Requirement>, Objective), CaseError> {
+fn goals<A: StaticAnalysis>(
+    c: &MeshDesignCase,
+    p: &MeshProblem<A>,
+) -> Result<(Vec<Requirement>, Objective), CaseError> {
     let metrics = &p.responses()[..p.metrics];
     let index = |at: String, name: &str| {
         metrics.iter().position(|m| m == name).ok_or_else(|| {
@@ -255,16 +258,16 @@ fn compliance_node(c: &MeshDesignCase) -> Option<usize> {
 }
 
 /// Validates a mesh design case.
-pub fn check_design(c: &MeshDesignCase) -> Result<(), CaseError> {
+pub fn check_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<(), CaseError> {
     c.check_fields()?;
-    let v = validate(&c.inner, &c.parameters, compliance_node(c))?;
+    let v = validate::<A>(&c.inner, &c.parameters, compliance_node(c))?;
     goals(c, &v.problem).map(|_| ())
 }
 
 /// Runs a mesh design case.
-pub fn run_design(c: &MeshDesignCase) -> Result<MeshDesignResult, RunError> {
+pub fn run_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<MeshDesignResult, RunError> {
     c.check_fields()?;
-    let v = validate(&c.inner, &c.parameters, compliance_node(c))?;
+    let v = validate::<A>(&c.inner, &c.parameters, compliance_node(c))?;
     let (reqs, objective) = goals(c, &v.problem)?;
     let p = &v.problem;
     let bounds: Vec<[f64; 2]> = c.parameters.values().filter_map(|r| r.bounds).collect();

@@ -8,7 +8,7 @@
 //! topology of the previous one are refactorised numerically only.
 
 use super::case_file::{self, Case};
-use super::kinds::Static;
+use super::fem_static::StaticResult;
 use super::{Analysis, Ctx, RunError};
 use crate::case::design_mesh::{Inner, ParameterRange};
 use crate::case::mesh::{ComplianceRequest, StaticCase};
@@ -19,8 +19,9 @@ use crate::problem::Problem;
 use serde_json::Value;
 use std::collections::BTreeMap;
 
-/// The mesh case and what the problem reads from it.
-pub struct MeshProblem {
+/// The mesh case and what the problem reads from it; `A` is the `static` analysis that runs
+/// each design (handed in by the caller, so this file does not depend on the list of kinds).
+pub struct MeshProblem<A> {
     inner: Inner,
     parameters: Vec<String>,
     responses: Vec<String>,
@@ -28,12 +29,18 @@ pub struct MeshProblem {
     pub metrics: usize,
     /// Node of the compliance entries after the metrics, if any.
     compliance_node: Option<usize>,
+    analysis: std::marker::PhantomData<fn() -> A>,
 }
 
+/// The `static` analysis: a case shape and typed result.
+pub trait StaticAnalysis: Analysis<Case = StaticCase, Result = StaticResult> {}
+
+impl<A: Analysis<Case = StaticCase, Result = StaticResult>> StaticAnalysis for A {}
+
 /// The validated problem with the inner case's base design.
-pub struct Validated {
+pub struct Validated<A> {
     /// The problem.
-    pub problem: MeshProblem,
+    pub problem: MeshProblem<A>,
     /// Declared value of each varied parameter.
     pub base: Vec<f64>,
     /// Every parameter the inner case declares, with its value.
@@ -50,11 +57,11 @@ pub fn compliance_names() -> Vec<String> {
 /// Checks the inner case and the varied parameters against it (errors under `case.…` and
 /// `parameters.NAME`): a static case with metrics that parses, each parameter declared, its
 /// declared value inside its bounds.
-pub fn validate(
+pub fn validate<A: StaticAnalysis>(
     inner: &Inner,
     ranges: &BTreeMap<String, ParameterRange>,
     compliance_node: Option<usize>,
-) -> Result<Validated, CaseError> {
+) -> Result<Validated<A>, CaseError> {
     let kind = inner.value.get("analysis").and_then(Value::as_str);
     if kind != Some("static") {
         return Err(CaseError::value(
@@ -68,7 +75,7 @@ pub fn validate(
     let Case::Static(case) = parsed.case else {
         unreachable!("`analysis` is \"static\"");
     };
-    <Static as Analysis>::check(&case).map_err(|e| parsed.origins.locate(e).under("case"))?;
+    A::check(&case).map_err(|e| parsed.origins.locate(e).under("case"))?;
     if case.metrics.is_empty() {
         return Err(CaseError::new(
             "case.metrics",
@@ -120,6 +127,7 @@ pub fn validate(
             responses,
             metrics,
             compliance_node,
+            analysis: std::marker::PhantomData,
         },
         base,
         declared: parsed.parameters,
@@ -127,7 +135,7 @@ pub fn validate(
     })
 }
 
-impl MeshProblem {
+impl<A: StaticAnalysis> MeshProblem<A> {
     /// The inner case value with the parameters set to `p`.
     pub fn design_value(&self, p: &[f64]) -> Value {
         let mut v = self.inner.value.clone();
@@ -145,7 +153,7 @@ impl MeshProblem {
     }
 
     /// Runs design `p` as a static case.
-    fn run(&self, w: &mut SolverCache, p: &[f64]) -> Result<super::fem_static::StaticResult, String> {
+    fn run(&self, w: &mut SolverCache, p: &[f64]) -> Result<StaticResult, String> {
         let at = |e: CaseError| format!("{}: {}", e.path, e.message);
         let parsed = case_file::parse_resolved(self.design_value(p), self.inner.dir.as_deref(), false).map_err(at)?;
         let origins = parsed.origins;
@@ -157,14 +165,14 @@ impl MeshProblem {
         }
         let mut ctx = Ctx::new(w, false);
         ctx.with_report = false;
-        <Static as Analysis>::run(&case, &mut ctx).map_err(|e| match e {
+        A::run(&case, &mut ctx).map_err(|e| match e {
             RunError::Case(c) => at(origins.locate(c)),
             RunError::Analysis(a) => a.to_string(),
         })
     }
 }
 
-impl Problem for MeshProblem {
+impl<A: StaticAnalysis> Problem for MeshProblem<A> {
     type Worker = SolverCache;
 
     fn parameters(&self) -> &[String] {

@@ -193,7 +193,7 @@ impl Analysis for Sensitivity {
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         match case {
             case::design_mesh::SensitivitySpec::Stage(c) => c.validate().map(|_| ()),
-            case::design_mesh::SensitivitySpec::Mesh(c) => design_mesh::check_sensitivity(c).map(|_| ()),
+            case::design_mesh::SensitivitySpec::Mesh(c) => design_mesh::check_sensitivity::<Static>(c).map(|_| ()),
         }
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
@@ -204,7 +204,7 @@ impl Analysis for Sensitivity {
                 Ok(design::SensitivityOut::Stage(r))
             }
             case::design_mesh::SensitivitySpec::Mesh(c) => {
-                design_mesh::run_sensitivity(c).map(design::SensitivityOut::Mesh)
+                design_mesh::run_sensitivity::<Static>(c).map(design::SensitivityOut::Mesh)
             }
         }
     }
@@ -232,7 +232,7 @@ impl Analysis for Design {
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         match case {
             case::design_mesh::DesignSpec::Stage(c) => c.validate().map(|_| ()),
-            case::design_mesh::DesignSpec::Mesh(c) => design_mesh::check_design(c),
+            case::design_mesh::DesignSpec::Mesh(c) => design_mesh::check_design::<Static>(c),
         }
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
@@ -242,7 +242,7 @@ impl Analysis for Design {
                 ctx.warnings = warnings;
                 Ok(design::DesignOut::Stage(r))
             }
-            case::design_mesh::DesignSpec::Mesh(c) => design_mesh::run_design(c).map(design::DesignOut::Mesh),
+            case::design_mesh::DesignSpec::Mesh(c) => design_mesh::run_design::<Static>(c).map(design::DesignOut::Mesh),
         }
     }
     fn report(r: &Self::Result) -> Report {
