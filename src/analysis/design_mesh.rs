@@ -117,10 +117,9 @@ pub fn sensitivity_report(r: &MeshSensitivityResult) -> Report {
         .collect();
     let header: Vec<&str> = header.iter().map(String::as_str).collect();
     let mut t = Table::new(&header);
-    let mut csv = format!(
-        "parameter,base,increased,{}\n",
-        names.iter().map(|n| format!("{n}_ratio")).collect::<Vec<_>>().join(",")
-    );
+    // Long format: every column a label or dimensionless (the case's parameters and metrics
+    // carry the case's own units, which the CSV cannot name).
+    let mut csv = String::from("parameter,metric,ratio,bin,elasticity\n");
     for row in &r.rows {
         let mut cells = vec![format!(
             "{} ({} → {})",
@@ -128,7 +127,6 @@ pub fn sensitivity_report(r: &MeshSensitivityResult) -> Report {
             sig(row.base, 3),
             sig(row.increased, 3)
         )];
-        let mut line = format!("{},{},{}", row.parameter, row.base, row.increased);
         for n in &names {
             let ratio = row.ratios[*n].as_f64();
             let el = row.elasticity[*n].as_f64();
@@ -138,11 +136,15 @@ pub fn sensitivity_report(r: &MeshSensitivityResult) -> Report {
                 row.bins[*n].as_str().unwrap_or("—"),
                 el.map_or("—".into(), |x| format!("{x:+.2}"))
             ));
-            line += &format!(",{}", ratio.map_or(String::new(), |x| x.to_string()));
+            csv += &format!(
+                "{},{n},{},{},{}\n",
+                row.parameter,
+                ratio.map_or(String::new(), |x| x.to_string()),
+                row.bins[*n].as_str().unwrap_or_default(),
+                el.map_or(String::new(), |x| x.to_string())
+            );
         }
         t.row(cells);
-        csv += &line;
-        csv.push('\n');
     }
     md += &t.render();
     Report { markdown: md, csv }
@@ -349,6 +351,8 @@ pub fn run_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<MeshDesignRes
 }
 
 /// Markdown/CSV of a mesh design.
+/// No CSV: the parameters and metrics carry the case's own units, which a CSV header cannot
+/// name; the history is in the JSON result.
 pub fn design_report(r: &MeshDesignResult) -> Report {
     let mut md = String::from("# Design of the mechanism\n\n");
     md += if r.meets {
@@ -385,22 +389,8 @@ pub fn design_report(r: &MeshDesignResult) -> Report {
         md += &c.render();
     }
     md += &format!("\n{} designs evaluated.\n", r.evaluations);
-    let pnames: Vec<&String> = r.design.keys().collect();
-    let mnames: Vec<&String> = r.metrics.keys().collect();
-    let mut csv = format!(
-        "phase,{},{},max_violation\n",
-        pnames.iter().map(|s| s.as_str()).collect::<Vec<_>>().join(","),
-        mnames.iter().map(|s| s.as_str()).collect::<Vec<_>>().join(",")
-    );
-    for h in &r.history {
-        let cell = |m: &Map<String, Value>, k: &String| {
-            m.get(k)
-                .and_then(Value::as_f64)
-                .map_or(String::new(), |x| x.to_string())
-        };
-        let ps: Vec<String> = pnames.iter().map(|k| cell(&h.params, k)).collect();
-        let ms: Vec<String> = mnames.iter().map(|k| cell(&h.metrics, k)).collect();
-        csv += &format!("{},{},{},{}\n", h.phase, ps.join(","), ms.join(","), h.max_violation);
+    Report {
+        markdown: md,
+        csv: String::new(),
     }
-    Report { markdown: md, csv }
 }

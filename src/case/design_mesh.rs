@@ -143,8 +143,7 @@ fn default_samples() -> usize {
 }
 
 /// `sensitivity`: the stage form or the mesh form (with `case`).
-#[derive(Debug, Clone, schemars::JsonSchema)]
-#[serde(untagged)]
+#[derive(Debug, Clone)]
 pub enum SensitivitySpec {
     /// Table 1 of the 3-PRS stage.
     Stage(SensitivityCase),
@@ -153,13 +152,48 @@ pub enum SensitivitySpec {
 }
 
 /// `design`: the stage form or the mesh form (with `case`).
-#[derive(Debug, Clone, schemars::JsonSchema)]
-#[serde(untagged)]
+#[derive(Debug, Clone)]
 pub enum DesignSpec {
     /// Sizing of the 3-PRS stage hinges.
     Stage(DesignCase),
     /// Any static mesh case with parameters and metrics.
     Mesh(MeshDesignCase),
+}
+
+/// The inline schema of `T` with the `analysis` tag among its properties (each form refuses
+/// unknown fields, and the tag is one of the case's fields).
+fn tagged<T: schemars::JsonSchema>(g: &mut schemars::SchemaGenerator) -> Value {
+    let mut s = serde_json::to_value(T::json_schema(g)).unwrap_or(Value::Null);
+    if let Some(props) = s.get_mut("properties").and_then(Value::as_object_mut) {
+        props.insert("analysis".into(), serde_json::json!({"type": "string"}));
+    }
+    s
+}
+
+impl schemars::JsonSchema for SensitivitySpec {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "SensitivitySpec".into()
+    }
+    fn json_schema(g: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        let (stage, mesh) = (tagged::<SensitivityCase>(g), tagged::<MeshSensitivityCase>(g));
+        schemars::json_schema!({
+            "description": "The 3-PRS stage (`stage`) or a static mesh case with parameters and metrics (`case`).",
+            "anyOf": [stage, mesh]
+        })
+    }
+}
+
+impl schemars::JsonSchema for DesignSpec {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "DesignSpec".into()
+    }
+    fn json_schema(g: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        let (stage, mesh) = (tagged::<DesignCase>(g), tagged::<MeshDesignCase>(g));
+        schemars::json_schema!({
+            "description": "The 3-PRS stage (`stage`) or a static mesh case with parameters and metrics (`case`).",
+            "anyOf": [stage, mesh]
+        })
+    }
 }
 
 /// True for the mesh form of a `sensitivity`/`design` case value (it has `case`); such a case
