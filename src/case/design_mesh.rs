@@ -66,7 +66,7 @@ pub enum ObjectiveSpec {
     /// Minimise a metric (positive at every design).
     Minimise(String),
     /// Least squares on a node compliance: minimise Σ w (C − C_target)² / Σ w C_target².
-    MatchCompliance(MatchCompliance),
+    MatchCompliance(Box<MatchCompliance>),
 }
 
 /// The mechanism: an inline static case, or the path of a case file (relative to this case).
