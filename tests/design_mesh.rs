@@ -199,3 +199,30 @@ fn sensitivity_of_an_unknown_parameter_is_refused() {
     let o = run_case_text("design_mesh_sens_unknown", &case.to_string());
     exits_2(&o, &["parameters.thickness", "declared: B, L, R, s, t, w"]);
 }
+
+/// Relative tolerance on the thickness recovered by `match_compliance`: the target is the
+/// guide's own compliance at t = 0.8 mm, so the least-squares optimum is t = 0.8 exactly; the
+/// search stops within its finite-difference and line-search resolution.
+const MATCH_TOL: f64 = 0.01;
+
+/// `match_compliance` recovers the notch thickness whose 6×6 compliance at the stage is the
+/// target (computed by a plain static run at t = 0.8 mm).
+#[test]
+fn match_compliance_recovers_the_thickness_of_the_target() {
+    let mut probe = guide_case(0.8);
+    probe["compliance"] = json!([{"node": 8}]);
+    let r = run_value("design_mesh_match_probe", &probe);
+    let target = r["compliance"][0]["matrix"].clone();
+    assert_eq!(target.as_array().map(Vec::len), Some(6));
+    let case = json!({
+        "analysis": "design",
+        "case": guide_case(1.0),
+        "parameters": {"t": {"bounds": [0.5, 1.5]}},
+        "objective": {"match_compliance": {"node": 8, "target": target}},
+        "samples": 8
+    });
+    let d = run_value("design_mesh_match", &case);
+    let t = num(&d["design"]["t"]);
+    assert!((t / 0.8 - 1.0).abs() < MATCH_TOL, "t = {t} mm, target made at 0.8 mm");
+    assert!(num(&d["compliance_error"]) < 1e-3, "J = {}", d["compliance_error"]);
+}

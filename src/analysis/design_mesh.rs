@@ -240,7 +240,18 @@ fn goals<A: StaticAnalysis>(
             let t: Vec<f64> = m.target.iter().flatten().copied().collect();
             let w: Vec<f64> = match &m.weights {
                 Some(w) => w.iter().flatten().copied().collect(),
-                None => t.iter().map(|x| if *x != 0.0 { 1.0 / (x * x) } else { 0.0 }).collect(),
+                // The natural scale of entry ij of an SPD matrix, |C_ij| ≤ √(C_ii C_jj): each
+                // entry counts relative to it (1/target² would let round-off entries dominate).
+                None => (0..36)
+                    .map(|k| {
+                        let (a, b) = (m.target[k / 6][k / 6], m.target[k % 6][k % 6]);
+                        if a > 0.0 && b > 0.0 {
+                            1.0 / (a * b)
+                        } else {
+                            0.0
+                        }
+                    })
+                    .collect(),
             };
             Objective::LeastSquares {
                 responses: (p.metrics..p.metrics + 36).collect(),

@@ -51,8 +51,8 @@ pub struct MatchCompliance {
     /// Target compliance, rows [ux, uy, uz, rx, ry, rz] × columns [Fx, Fy, Fz, Mx, My, Mz]:
     /// mm/N, mm/(N·mm), rad/N, rad/(N·mm).
     pub target: [[f64; 6]; 6],
-    /// Weight of each entry, ≥ 0 (default: 1 / target² for each non-zero target entry, 0 for
-    /// zero entries, so each entry counts by its relative error).
+    /// Weight of each entry, ≥ 0 (default: w_ij = 1/(C_ii C_jj) of the target, 0 where a
+    /// diagonal entry is 0: each entry counts relative to its natural scale √(C_ii C_jj)).
     #[serde(default)]
     pub weights: Option<[[f64; 6]; 6]>,
 }
