@@ -14,5 +14,6 @@ pub mod hinge;
 pub mod kinematics;
 pub mod material;
 pub mod output;
+pub mod problem;
 pub mod report;
 pub mod stage;

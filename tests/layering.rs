@@ -42,6 +42,7 @@ const LAYERS: &[(&str, u32)] = &[
     ("hinge", 40),
     ("kinematics", 40),
     ("fem", 30),
+    ("problem", 20),
     ("material", 10),
     ("report", 10),
     ("output", 10),

@@ -515,6 +515,10 @@ fn has_unit(col: &str) -> bool {
         "stress_ratio_ratio",
         "load_factor",
         "reversed",
+        "metric",
+        "ratio",
+        "bin",
+        "elasticity",
     ];
     UNITS.iter().any(|u| col.ends_with(u)) || PLAIN.contains(&col) || col.starts_with("mef_")
 }

@@ -177,9 +177,12 @@ pub fn parse_value_shaped(value: Value, base: Option<&Path>) -> Result<Case, Cas
 /// Parses a case already read as JSON, with its parameter values: resolves parameters,
 /// hinge types and expressions ([`params::resolve_case`]), checks the arrays of the resolved
 /// value if `check_arrays` ([`check_shape`]) and deserialises it into its kind's shape. A
-/// `sweep` case is not resolved: each of its designs is, as a case of its own.
+/// `sweep` case is not resolved: each of its designs is, as a case of its own; nor is a
+/// `sensitivity`/`design` of a mesh case (its inner case is resolved per design).
 pub fn parse_resolved(mut value: Value, base: Option<&Path>, check_arrays: bool) -> Result<Parsed, CaseError> {
-    let resolved = if value.get("analysis").and_then(Value::as_str) == Some("sweep") {
+    let resolved = if value.get("analysis").and_then(Value::as_str) == Some("sweep")
+        || crate::case::design_mesh::is_mesh_form(&value)
+    {
         params::Resolved::default()
     } else {
         let mesh = params::read_mesh(&value, base);

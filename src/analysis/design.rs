@@ -97,7 +97,7 @@ pub struct DesignResult {
     /// Constraint values and violations.
     pub constraints: Vec<stage_design::Constraint>,
     /// Active or violated constraints.
-    pub binding: Vec<&'static str>,
+    pub binding: Vec<String>,
     /// Explanation when no design meets the requirements.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub message: Option<String>,
@@ -208,4 +208,24 @@ pub fn design_report(r: &DesignResult) -> Report {
         );
     }
     Report { markdown: md, csv }
+}
+
+/// Result of `sensitivity`: the stage's Table 1 or a mesh case's.
+#[derive(Debug, Clone, Serialize)]
+#[serde(untagged)]
+pub enum SensitivityOut {
+    /// The 3-PRS stage.
+    Stage(SensitivityResult),
+    /// A static mesh case.
+    Mesh(super::design_mesh::MeshSensitivityResult),
+}
+
+/// Result of `design`: the stage sizing or a mesh case's design.
+#[derive(Debug, Clone, Serialize)]
+#[serde(untagged)]
+pub enum DesignOut {
+    /// The 3-PRS stage.
+    Stage(DesignResult),
+    /// A static mesh case.
+    Mesh(super::design_mesh::MeshDesignResult),
 }

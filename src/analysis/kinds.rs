@@ -3,7 +3,9 @@
 
 use super::kind::{named_materials, Analysis, Ctx, SweepFile, UsedMaterial};
 use super::units::{self, UnitOf};
-use super::{design, fem_static, fem_vs_fkp, hinge, kinematics, modal, stage, stage_report, warn, Report, RunError};
+use super::{
+    design, design_mesh, fem_static, fem_vs_fkp, hinge, kinematics, modal, stage, stage_report, warn, Report, RunError,
+};
 use crate::case::{self, CaseError, MaterialSpec};
 
 fn one_material(spec: &MaterialSpec) -> Vec<UsedMaterial> {
@@ -180,49 +182,80 @@ impl Analysis for FemVsFkp {
     }
 }
 
-/// `sensitivity`: sensitivities of the stage design to its hinge parameters.
+/// `sensitivity`: sensitivities of the stage design to its hinge parameters, or of a static
+/// mesh case's metrics to its parameters.
 pub struct Sensitivity;
 
 impl Analysis for Sensitivity {
-    type Case = case::design::SensitivityCase;
-    type Result = design::SensitivityResult;
+    type Case = case::design_mesh::SensitivitySpec;
+    type Result = design::SensitivityOut;
 
     fn check(case: &Self::Case) -> Result<(), CaseError> {
-        case.validate().map(|_| ())
+        match case {
+            case::design_mesh::SensitivitySpec::Stage(c) => c.validate().map(|_| ()),
+            case::design_mesh::SensitivitySpec::Mesh(c) => design_mesh::check_sensitivity::<Static>(c).map(|_| ()),
+        }
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        let (r, warnings) = design::run_sensitivity_warned(case)?;
-        ctx.warnings = warnings;
-        Ok(r)
+        match case {
+            case::design_mesh::SensitivitySpec::Stage(c) => {
+                let (r, warnings) = design::run_sensitivity_warned(c)?;
+                ctx.warnings = warnings;
+                Ok(design::SensitivityOut::Stage(r))
+            }
+            case::design_mesh::SensitivitySpec::Mesh(c) => {
+                design_mesh::run_sensitivity::<Static>(c).map(design::SensitivityOut::Mesh)
+            }
+        }
     }
     fn report(r: &Self::Result) -> Report {
-        design::sensitivity_report(r)
+        match r {
+            design::SensitivityOut::Stage(r) => design::sensitivity_report(r),
+            design::SensitivityOut::Mesh(r) => design_mesh::sensitivity_report(r),
+        }
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
-        one_material(&case.material)
+        match case {
+            case::design_mesh::SensitivitySpec::Stage(c) => one_material(&c.material),
+            case::design_mesh::SensitivitySpec::Mesh(_) => Vec::new(),
+        }
     }
 }
 
-/// `design`: requirement-driven sizing of the stage hinges.
+/// `design`: requirement-driven sizing of the stage hinges, or of a static mesh case's parameters.
 pub struct Design;
 
 impl Analysis for Design {
-    type Case = case::design::DesignCase;
-    type Result = design::DesignResult;
+    type Case = case::design_mesh::DesignSpec;
+    type Result = design::DesignOut;
 
     fn check(case: &Self::Case) -> Result<(), CaseError> {
-        case.validate().map(|_| ())
+        match case {
+            case::design_mesh::DesignSpec::Stage(c) => c.validate().map(|_| ()),
+            case::design_mesh::DesignSpec::Mesh(c) => design_mesh::check_design::<Static>(c),
+        }
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        let (r, warnings) = design::run_design_warned(case)?;
-        ctx.warnings = warnings;
-        Ok(r)
+        match case {
+            case::design_mesh::DesignSpec::Stage(c) => {
+                let (r, warnings) = design::run_design_warned(c)?;
+                ctx.warnings = warnings;
+                Ok(design::DesignOut::Stage(r))
+            }
+            case::design_mesh::DesignSpec::Mesh(c) => design_mesh::run_design::<Static>(c).map(design::DesignOut::Mesh),
+        }
     }
     fn report(r: &Self::Result) -> Report {
-        design::design_report(r)
+        match r {
+            design::DesignOut::Stage(r) => design::design_report(r),
+            design::DesignOut::Mesh(r) => design_mesh::design_report(r),
+        }
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
-        one_material(&case.material)
+        match case {
+            case::design_mesh::DesignSpec::Stage(c) => one_material(&c.material),
+            case::design_mesh::DesignSpec::Mesh(_) => Vec::new(),
+        }
     }
 }
 

@@ -49,10 +49,12 @@ macro_rules! analyses {
             /// FEM versus rigid-body forward kinematics.
             FemVsFkp = "fem_vs_fkp" #3, analysis kinds::FemVsFkp;
             /// Sensitivities of the stage design to its hinge parameters (the design guidelines of
-            /// Table 1 of Ruiz et al. (2019), 3-PRS compliant parallel stage).
-            Sensitivity = "sensitivity" #4, analysis kinds::Sensitivity;
-            /// Requirement-driven sizing of the stage hinges.
-            Design = "design" #5, analysis kinds::Design;
+            /// Table 1 of Ruiz et al. (2019), 3-PRS compliant parallel stage), or of the metrics
+            /// of any static mesh case to its parameters (`case`).
+            Sensitivity = "sensitivity" #4, analysis kinds::Sensitivity, parse crate::case::design_mesh::parse_sensitivity;
+            /// Requirement-driven sizing of the stage hinges, or of the parameters of any static
+            /// mesh case against requirements on its metrics (`case`).
+            Design = "design" #5, analysis kinds::Design, parse crate::case::design_mesh::parse_design;
             /// Natural frequencies and mode shapes of a generic beam/shell model.
             Modal = "modal" #7, analysis kinds::Modal, parse crate::case::fem_case::parse_modal;
             /// Pseudo-rigid-body model of the 8R compliant parallel pan-tilt (Yu, Lu and Hao (2016)).

@@ -4,6 +4,8 @@ pub mod case_file;
 mod case_shape;
 pub mod compliance;
 pub mod design;
+pub mod design_mesh;
+pub mod design_problem;
 pub mod export;
 pub mod fem_path;
 pub mod fem_static;

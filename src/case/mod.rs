@@ -5,6 +5,7 @@
 //! carries its JSON path, with unknown fields refused.
 
 pub mod design;
+pub mod design_mesh;
 pub mod error;
 pub mod fatigue;
 pub mod fem_case;

@@ -12,9 +12,11 @@
 //! βl over z = ±z_travel, ψ, θ = ±tilt) below the allowable stress.
 
 mod optimise;
+mod problem;
 mod sensitivity;
 
-pub use optimise::{constraints, optimise, Constraint, DesignOutcome, HistoryEntry, Requirements};
+pub use optimise::{constraints, optimise, requirements, Constraint, DesignOutcome, HistoryEntry, Requirements};
+pub use problem::{StageProblem, RESPONSES};
 pub use sensitivity::{bin, sensitivity, Bins, SensitivityRow};
 
 use crate::fem::SolverCache;

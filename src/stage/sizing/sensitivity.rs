@@ -1,23 +1,13 @@
 //! Table 1 of Ruiz et al. (2019): each design parameter increased in turn, the ratios of the
-//! responses binned as in the paper, and local elasticities.
+//! responses binned as in the paper, and local elasticities — the generic
+//! [`crate::problem::sensitivity`] on the [`StageProblem`], reported for η, d and T.
 
-use super::{evaluate, evaluate_with, params_of, with_params, Responses, RotationDemand, PARAMETERS};
-use crate::fem::SolverCache;
+use super::{params_of, Responses, RotationDemand, StageProblem, PARAMETERS};
+use crate::problem;
 use crate::stage::StageDesign;
-use rayon::prelude::*;
 use serde::Serialize;
 
-/// Table 1 bins of a ratio.
-pub fn bin(ratio: f64) -> &'static str {
-    match ratio {
-        r if r < 0.5 => "< 0.5",
-        r if r < 0.8 => "0.5-0.8",
-        r if r < 1.0 => "0.8-1",
-        r if r < 1.2 => "1-1.2",
-        r if r <= 1.5 => "1.2-1.5",
-        _ => "> 1.5",
-    }
-}
+pub use crate::problem::bin;
 
 /// Table-1 bins of the three ratios.
 #[derive(Debug, Clone, Serialize)]
@@ -58,43 +48,25 @@ pub fn sensitivity(
     demand: &RotationDemand,
 ) -> Result<(Responses, Vec<SensitivityRow>), String> {
     let p0 = params_of(base)?;
-    let r0 = evaluate(base, demand).map_err(|e| format!("base design: {e}"))?;
-    let rows: Result<Vec<SensitivityRow>, String> = (0..5)
-        .into_par_iter()
-        .map_init(SolverCache::new, |cache, k| {
-            let name = PARAMETERS[k];
-            let mut eval = |f: f64| {
-                let mut p = p0;
-                p[k] *= f;
-                evaluate_with(cache, &with_params(base, &p), demand).map_err(|e| format!("{name} × {f}: {e}"))
-            };
-            let r1 = eval(1.0 + increment)?;
-            let (rp, rm) = (eval(1.01)?, eval(0.99)?);
-            let el = |a: f64, b: f64| (a.ln() - b.ln()) / (1.01f64.ln() - 0.99f64.ln());
-            let ratios = [
-                r1.eta / r0.eta,
-                r1.z_at_allowable / r0.z_at_allowable,
-                r1.t_ratio / r0.t_ratio,
-            ];
-            Ok(SensitivityRow {
-                parameter: name,
-                base: p0[k],
-                increased: p0[k] * (1.0 + increment),
-                stiffness_ratio: ratios[0],
-                displacement_ratio: ratios[1],
-                stress_ratio_ratio: ratios[2],
-                bins: Bins {
-                    stiffness: bin(ratios[0]),
-                    displacement: bin(ratios[1]),
-                    stress_ratio: bin(ratios[2]),
-                },
-                elasticity: [
-                    el(rp.eta, rm.eta),
-                    el(rp.z_at_allowable, rm.z_at_allowable),
-                    el(rp.t_ratio, rm.t_ratio),
-                ],
-            })
+    let (r0, rows) = problem::sensitivity(&StageProblem::new(base, *demand), &p0, increment)?;
+    // Responses 0, 1, 2 are η, d, T (`super::RESPONSES`).
+    let rows = rows
+        .into_iter()
+        .zip(PARAMETERS)
+        .map(|(row, name)| SensitivityRow {
+            parameter: name,
+            base: row.base,
+            increased: row.increased,
+            stiffness_ratio: row.ratios[0],
+            displacement_ratio: row.ratios[1],
+            stress_ratio_ratio: row.ratios[2],
+            bins: Bins {
+                stiffness: row.bins[0],
+                displacement: row.bins[1],
+                stress_ratio: row.bins[2],
+            },
+            elasticity: [row.elasticity[0], row.elasticity[1], row.elasticity[2]],
         })
         .collect();
-    Ok((r0, rows?))
+    Ok((Responses::from_slice(&r0), rows))
 }
