@@ -256,7 +256,15 @@ impl Analysis for Static {
             fem_static::add_beam_forces(&mut r, &model, &raw);
         }
         r.compliance = fem_static::node_compliances(&model, &case.compliance)?;
-        r.metrics = fem_static::metrics::evaluate(&model, &case.model, &case.metrics, &r)?;
+        let run = case
+            .steps
+            .filter(|_| case.nonlinear)
+            .map(|steps| fem_static::metrics::NonlinearRun {
+                steps,
+                hinges: &hinges,
+                case_index: &case_index,
+            });
+        r.metrics = fem_static::metrics::evaluate_in(&model, &case.model, &case.metrics, &r, run)?;
         if !case.output.internal_nodes {
             fem_static::inner_nodes::hide(&mut r, &model, &hinges, case.model.nodes.len());
         }

@@ -1,0 +1,235 @@
+//! `stroke_at_allowable`: the stroke (displacement of the driven DOF) and load at which a load
+//! case, scaled by s, brings the largest utilisation (von Mises / allowable over every
+//! stressed element, [`super::super::add_headlines`]) to 1.
+//!
+//! Linear runs: the utilisation is proportional to s, so s = 1 / u(1) exactly.
+//!
+//! Nonlinear runs: u(s) along the equilibrium path is found by independent nonlinear solves of
+//! the load case scaled by s (elastic, path-independent: each from the unloaded state, in the
+//! case's nominal load steps, every accepted state checked for equilibrium by the solver). The
+//! search starts from the linear estimate s₀ = 1 / u_lin(1), takes s₁ = s₀ / u(s₀) (the
+//! secant through the origin), then secant steps on u(s) − 1, which march outwards (×2 at
+//! most a step) until u crosses 1 and from then on stay inside the bracket (Illinois
+//! regula falsi: Dowell & Jarratt, BIT 11 (1971) 168–174), until two successive scales agree
+//! to [`STROKE_TOL`] (relative) or |u − 1| ≤ [`STROKE_TOL`].
+
+use super::super::{add_headlines, add_hinges, solve_nonlinear_each, solve_with, StaticCaseRow};
+use super::{NonlinearRun, StrokeAtAllowable};
+use crate::analysis::AnalysisError;
+use crate::case::mesh::{path_control, MeshSpec};
+use crate::fem::{self, Dof, Model};
+
+/// Relative tolerance of the nonlinear search: on the scale between successive iterates, or
+/// on the utilisation.
+pub const STROKE_TOL: f64 = 1e-8;
+
+/// Nonlinear solves a search may take before it fails.
+const MAX_SOLVES: usize = 40;
+
+/// The load case (index `ic` in the model) and the DOF it drives.
+#[derive(Debug, Clone, Copy)]
+pub struct Drive {
+    pub ic: usize,
+    pub node: usize,
+    pub dof: Dof,
+}
+
+/// One point of the search: the load case scaled by `s`.
+#[derive(Debug, Clone, Copy)]
+struct Point {
+    s: f64,
+    /// Largest utilisation and its element (index in the case's `elements`).
+    u: f64,
+    element: usize,
+    /// Displacement of the driven DOF, mm (degrees).
+    stroke: f64,
+    /// Reaction of the prescribed DOF or the applied force, N (N·mm).
+    load: f64,
+}
+
+/// Whether `spec`'s load case of `d` prescribes the DOF (else it applies a force along it).
+fn prescribed(model: &Model, d: &Drive) -> bool {
+    model.load_cases[d.ic]
+        .displacements
+        .iter()
+        .any(|p| p.node == d.node && p.dof == d.dof)
+}
+
+/// The point of row `c` (load case scaled by `s`; `base_force`: the force of the unscaled case
+/// along the DOF).
+fn point(c: &StaticCaseRow, d: &Drive, s: f64, prescribed: bool, base_force: f64) -> Option<Point> {
+    let u = c.max_utilisation.as_ref()?;
+    let load = if prescribed {
+        let k = c.reaction_nodes.iter().position(|&n| n == d.node)?;
+        c.reactions[k][d.dof.index()]
+    } else {
+        base_force * s
+    };
+    Some(Point {
+        s,
+        u: u.value,
+        element: u.element,
+        stroke: c.displacements.get(d.node)?[d.dof.index()],
+        load,
+    })
+}
+
+/// The force of load case `d.ic` along the DOF at the node, N (N·mm).
+fn base_force(model: &Model, d: &Drive) -> f64 {
+    model.load_cases[d.ic]
+        .forces
+        .iter()
+        .filter(|f| f.node == d.node)
+        .map(|f| f.f[d.dof.index()])
+        .sum()
+}
+
+/// Linear runs: the load case scaled by 1 / its utilisation (`c`: its solved row). `None`
+/// when nothing is stressed or no element has an allowable stress.
+pub fn linear(
+    model: &Model,
+    _spec: &MeshSpec,
+    d: &Drive,
+    c: &StaticCaseRow,
+) -> Result<Option<StrokeAtAllowable>, AnalysisError> {
+    let missing = || AnalysisError::new("load case", "the driven node has no result (checked when parsed)");
+    if c.max_utilisation.as_ref().is_none_or(|u| u.value <= 0.0) {
+        return Ok(None);
+    }
+    let p = point(c, d, 1.0, prescribed(model, d), base_force(model, d)).ok_or_else(missing)?;
+    let stroke = p.stroke / p.u;
+    Ok(Some(StrokeAtAllowable {
+        stroke,
+        load: p.load / p.u,
+        element: p.element,
+        linear_estimate: stroke,
+        utilisation: 1.0,
+        solves: 0,
+    }))
+}
+
+/// The model with only load case `d.ic`, unscaled.
+fn single_case(model: &Model, d: &Drive) -> Model {
+    Model {
+        load_cases: vec![model.load_cases[d.ic].clone()],
+        ..model.clone()
+    }
+}
+
+/// Sets load case 0 of `m` to `base` scaled by `s` (forces and prescribed displacements).
+fn scale_into(m: &mut Model, base: &fem::model::LoadCase, s: f64) {
+    let lc = &mut m.load_cases[0];
+    for (f, b) in lc.forces.iter_mut().zip(&base.forces) {
+        f.f = b.f.map(|v| v * s);
+    }
+    for (p, b) in lc.displacements.iter_mut().zip(&base.displacements) {
+        p.value = b.value * s;
+    }
+}
+
+/// Nonlinear runs: the search of the module documentation. `None` when the linear run
+/// stresses nothing with an allowable stress.
+pub fn nonlinear(
+    model: &Model,
+    spec: &MeshSpec,
+    d: &Drive,
+    run: &NonlinearRun<'_>,
+) -> Result<Option<StrokeAtAllowable>, AnalysisError> {
+    let name = model.load_cases[d.ic].name.clone();
+    let ctx = |s: f64| format!("load case \"{name}\" scaled by {s:.9e}");
+    let missing = || AnalysisError::new(name.clone(), "the driven node has no result");
+    let mut m = single_case(model, d);
+    let base = model.load_cases[d.ic].clone();
+    let (pres, force) = (prescribed(model, d), base_force(model, d));
+    let one = Drive { ic: 0, ..*d };
+
+    // The linear estimate.
+    let (mut lin, raw) = solve_with(&m, &mut fem::SolverCache::new())?;
+    add_hinges(&mut lin, &m, &raw, run.hinges, false)?;
+    add_headlines(&mut lin, &m, run.case_index, run.hinges);
+    let Some(p_lin) = point(&lin.load_cases[0], &one, 1.0, pres, force).filter(|p| p.u > 0.0) else {
+        return Ok(None);
+    };
+    let linear_estimate = p_lin.stroke / p_lin.u;
+
+    let spec_lc = spec.load_cases.iter().find(|c| c.name == name).ok_or_else(missing)?;
+    let opts = fem::NonlinearOptions {
+        locate_critical: false,
+        track: Vec::new(),
+        ..path_control::options(spec_lc, run.steps)
+    };
+    let mut solves = 0;
+    let mut probe = |s: f64| -> Result<Point, AnalysisError> {
+        solves += 1;
+        scale_into(&mut m, &base, s);
+        let (mut r, raw, _) = solve_nonlinear_each(&m, std::slice::from_ref(&opts), None)
+            .map_err(|e| AnalysisError::new(ctx(s), format!("{}: {}", e.context, e.message)))?;
+        add_hinges(&mut r, &m, &raw, run.hinges, true)?;
+        add_headlines(&mut r, &m, run.case_index, run.hinges);
+        let c = &r.load_cases[0];
+        if c.stable == Some(false) {
+            return Err(AnalysisError::new(
+                ctx(s),
+                "the equilibrium path lost stability before the largest utilisation reached 1 (buckling or snap-through): the stroke at the allowable is not on a stable path",
+            ));
+        }
+        point(c, &one, s, pres, force)
+            .filter(|p| p.u.is_finite())
+            .ok_or_else(|| AnalysisError::new(ctx(s), "no utilisation along the path"))
+    };
+    let found = search(1.0 / p_lin.u, &mut probe)?;
+    Ok(Some(StrokeAtAllowable {
+        stroke: found.stroke,
+        load: found.load,
+        element: found.element,
+        linear_estimate,
+        utilisation: found.u,
+        solves,
+    }))
+}
+
+/// The bracketed secant search of u(s) = 1 from `s0` (module documentation).
+fn search(s0: f64, probe: &mut impl FnMut(f64) -> Result<Point, AnalysisError>) -> Result<Point, AnalysisError> {
+    let first = probe(s0)?;
+    if (first.u - 1.0).abs() <= STROKE_TOL {
+        return Ok(first);
+    }
+    let mut pts = vec![first, probe(first.s / first.u)?];
+    while pts.len() < MAX_SOLVES {
+        let (a, b) = (pts[pts.len() - 2], pts[pts.len() - 1]);
+        if (b.u - 1.0).abs() <= STROKE_TOL || (b.s - a.s).abs() <= STROKE_TOL * b.s.abs() {
+            return Ok(b);
+        }
+        // The tightest bracket so far: the largest scale below 1, the smallest above.
+        let lo = pts.iter().filter(|p| p.u < 1.0).max_by(|p, q| p.s.total_cmp(&q.s));
+        let hi = pts.iter().filter(|p| p.u > 1.0).min_by(|p, q| p.s.total_cmp(&q.s));
+        let slope = (b.u - a.u) / (b.s - a.s);
+        let secant = b.s + (1.0 - b.u) / slope;
+        let next = match (lo, hi) {
+            (Some(lo), Some(hi)) => {
+                let inside = secant > lo.s.min(hi.s) && secant < lo.s.max(hi.s);
+                // A secant step that leaves the bracket, or one that did not halve the error
+                // of the step before, falls back to regula falsi on the bracket.
+                let slow = (b.u - 1.0).abs() > 0.5 * (a.u - 1.0).abs();
+                if inside && !slow && slope.is_finite() {
+                    secant
+                } else {
+                    let t = (1.0 - lo.u) / (hi.u - lo.u);
+                    // Keep off the ends so a curved u(s) cannot stall regula falsi.
+                    lo.s + t.clamp(0.1, 0.9) * (hi.s - lo.s)
+                }
+            }
+            _ if slope > 0.0 && slope.is_finite() => secant.clamp(0.5 * b.s, 2.0 * b.s),
+            _ => b.s / b.u,
+        };
+        pts.push(probe(next)?);
+    }
+    let b = pts[pts.len() - 1];
+    Err(AnalysisError::new(
+        "stroke_at_allowable",
+        format!(
+            "the search for utilisation 1 did not converge in {MAX_SOLVES} nonlinear solves (last: scale {:.9e}, utilisation {:.9})",
+            b.s, b.u
+        ),
+    ))
+}
