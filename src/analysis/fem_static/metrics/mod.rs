@@ -171,7 +171,7 @@ pub fn evaluate_in(
                 let drive = stroke::Drive { ic, node, dof };
                 let s = match nonlinear {
                     None => stroke::linear(model, spec, &drive, c),
-                    Some(run) => stroke::nonlinear(model, spec, &drive, &run),
+                    Some(run) => stroke::nonlinear(model, spec, &drive, c, &run),
                 };
                 s.map_err(|e| within(at(), e))?
                     .map_or(MetricValue::Number(None), MetricValue::Stroke)

@@ -5,10 +5,10 @@
 //! Linear runs: the utilisation is proportional to s, so s = 1 / u(1) exactly.
 //!
 //! Nonlinear runs: u(s) along the equilibrium path is found by independent nonlinear solves of
-//! the load case scaled by s (elastic, path-independent: each from the unloaded state, in the
-//! case's nominal load steps, every accepted state checked for equilibrium by the solver). The
-//! search starts from the linear estimate s₀ = 1 / u_lin(1), takes s₁ = s₀ / u(s₀) (the
-//! secant through the origin), then secant steps on u(s) − 1, which march outwards (×2 at
+//! the load case scaled by s (elastic, path-independent: each from the unloaded state, in a
+//! quarter of the case's nominal load steps — all of them if that fails — every accepted state
+//! checked for equilibrium by the solver). The search starts from the run's own point u(1),
+//! takes s₁ = 1 / u(1) (the secant through the origin), then secant steps on u(s) − 1, which march outwards (×2 at
 //! most a step) until u crosses 1 and from then on stay inside the bracket (Illinois
 //! regula falsi: Dowell & Jarratt, BIT 11 (1971) 168–174), until two successive scales agree
 //! to [`STROKE_TOL`] (relative) or |u − 1| ≤ [`STROKE_TOL`].
@@ -21,7 +21,10 @@ use crate::fem::{self, Dof, Model};
 
 /// Relative tolerance of the nonlinear search: on the scale between successive iterates, or
 /// on the utilisation.
-pub const STROKE_TOL: f64 = 1e-8;
+pub const STROKE_TOL: f64 = 1e-7;
+
+/// The probes' nominal load steps are the case's divided by this.
+const PROBE_STEP_DIVISOR: usize = 4;
 
 /// Nonlinear solves a search may take before it fails.
 const MAX_SOLVES: usize = 40;
@@ -127,12 +130,14 @@ fn scale_into(m: &mut Model, base: &fem::model::LoadCase, s: f64) {
     }
 }
 
-/// Nonlinear runs: the search of the module documentation. `None` when the linear run
-/// stresses nothing with an allowable stress.
+/// Nonlinear runs: the search of the module documentation, from `c`, the run's own row of the
+/// load case (its point at scale 1). `None` when the linear run stresses nothing with an
+/// allowable stress.
 pub fn nonlinear(
     model: &Model,
     spec: &MeshSpec,
     d: &Drive,
+    c: &StaticCaseRow,
     run: &NonlinearRun<'_>,
 ) -> Result<Option<StrokeAtAllowable>, AnalysisError> {
     let name = model.load_cases[d.ic].name.clone();
@@ -153,16 +158,23 @@ pub fn nonlinear(
     let linear_estimate = p_lin.stroke / p_lin.u;
 
     let spec_lc = spec.load_cases.iter().find(|c| c.name == name).ok_or_else(missing)?;
-    let opts = fem::NonlinearOptions {
+    let full = fem::NonlinearOptions {
         locate_critical: false,
         track: Vec::new(),
         ..path_control::options(spec_lc, run.steps)
+    };
+    // The equilibrium at the end of an elastic path does not depend on the steps taken to it:
+    // a quarter of the case's steps, and all of them if that fails.
+    let quick = fem::NonlinearOptions {
+        steps: (run.steps / PROBE_STEP_DIVISOR).max(1),
+        ..full.clone()
     };
     let mut solves = 0;
     let mut probe = |s: f64| -> Result<Point, AnalysisError> {
         solves += 1;
         scale_into(&mut m, &base, s);
-        let (mut r, raw, _) = solve_nonlinear_each(&m, std::slice::from_ref(&opts), None)
+        let (mut r, raw, _) = solve_nonlinear_each(&m, std::slice::from_ref(&quick), None)
+            .or_else(|_| solve_nonlinear_each(&m, std::slice::from_ref(&full), None))
             .map_err(|e| AnalysisError::new(ctx(s), format!("{}: {}", e.context, e.message)))?;
         add_hinges(&mut r, &m, &raw, run.hinges, true)?;
         add_headlines(&mut r, &m, run.case_index, run.hinges);
@@ -177,7 +189,10 @@ pub fn nonlinear(
             .filter(|p| p.u.is_finite())
             .ok_or_else(|| AnalysisError::new(ctx(s), "no utilisation along the path"))
     };
-    let found = search(1.0 / p_lin.u, &mut probe)?;
+    let start = point(c, d, 1.0, pres, force)
+        .filter(|p| p.u > 0.0 && p.u.is_finite())
+        .ok_or_else(|| AnalysisError::new(name.clone(), "no utilisation along the path of the run"))?;
+    let found = search(start, &mut probe)?;
     Ok(Some(StrokeAtAllowable {
         stroke: found.stroke,
         load: found.load,
@@ -188,9 +203,8 @@ pub fn nonlinear(
     }))
 }
 
-/// The bracketed secant search of u(s) = 1 from `s0` (module documentation).
-fn search(s0: f64, probe: &mut impl FnMut(f64) -> Result<Point, AnalysisError>) -> Result<Point, AnalysisError> {
-    let first = probe(s0)?;
+/// The bracketed secant search of u(s) = 1 from the point `first` (module documentation).
+fn search(first: Point, probe: &mut impl FnMut(f64) -> Result<Point, AnalysisError>) -> Result<Point, AnalysisError> {
     if (first.u - 1.0).abs() <= STROKE_TOL {
         return Ok(first);
     }
