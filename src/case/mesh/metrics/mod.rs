@@ -50,7 +50,7 @@ pub enum MetricKind {
 pub struct MetricRequest {
     /// Key of the value in the result's `metrics` (unique). Optional: by default the kind and
     /// its fields joined by `_`, e.g. `frequency_1`, `stiffness_8_ux`,
-    /// `parasitic_8_uy_drive` ([`MetricRequest::default_name`]).
+    /// `parasitic_8_uy_drive`.
     #[serde(default)]
     pub name: String,
     /// What it measures.
@@ -71,6 +71,7 @@ pub struct MetricRequest {
     pub element: Option<usize>,
     /// Mode number, 1 = the lowest (frequency).
     #[serde(default)]
+    #[schemars(range(min = 1))]
     pub mode: Option<usize>,
 }
 
