@@ -7,11 +7,15 @@
 //! Nonlinear runs: u(s) along the equilibrium path is found by independent nonlinear solves of
 //! the load case scaled by s (elastic, path-independent: each from the unloaded state, in a
 //! quarter of the case's nominal load steps — all of them if that fails — every accepted state
-//! checked for equilibrium by the solver). The search starts from the run's own point u(1),
-//! takes s₁ = 1 / u(1) (the secant through the origin), then secant steps on u(s) − 1, which march outwards (×2 at
-//! most a step) until u crosses 1 and from then on stay inside the bracket (Illinois
-//! regula falsi: Dowell & Jarratt, BIT 11 (1971) 168–174), until two successive scales agree
-//! to [`STROKE_TOL`] (relative) or |u − 1| ≤ [`STROKE_TOL`].
+//! checked for equilibrium by the solver, a path that loses stability first an error). The
+//! search starts from the run's own point u(1) and takes for s₁ the root of the parabola
+//! through u(0) = 0 with the linear utilisation as its slope and through u(1); then steps to
+//! the root of the parabola through the origin and the last two points (a secant step that
+//! knows u(0) = 0; the plain secant where that fails), marching outwards at most ×2 a step
+//! until u crosses 1; from then on a step that leaves the bracket (largest scale below 1,
+//! smallest above) or does not halve the error falls back to regula falsi inside it (kept 10 %
+//! off its ends). It stops when |u − 1| ≤ [`STROKE_TOL`] or two successive scales agree to it
+//! (relative).
 
 use super::super::{add_headlines, add_hinges, solve_nonlinear_each, solve_with, StaticCaseRow};
 use super::{NonlinearRun, StrokeAtAllowable};
@@ -192,7 +196,7 @@ pub fn nonlinear(
     let start = point(c, d, 1.0, pres, force)
         .filter(|p| p.u > 0.0 && p.u.is_finite())
         .ok_or_else(|| AnalysisError::new(name.clone(), "no utilisation along the path of the run"))?;
-    let found = search(start, &mut probe)?;
+    let found = search(start, quadratic_root(p_lin.u, start.u), &mut probe)?;
     Ok(Some(StrokeAtAllowable {
         stroke: found.stroke,
         load: found.load,
@@ -203,12 +207,51 @@ pub fn nonlinear(
     }))
 }
 
-/// The bracketed secant search of u(s) = 1 from the point `first` (module documentation).
-fn search(first: Point, probe: &mut impl FnMut(f64) -> Result<Point, AnalysisError>) -> Result<Point, AnalysisError> {
+/// The first trial scale: the root of u(s) = u₀·s + (u₁ − u₀)·s² = 1, the parabola through
+/// u(0) = 0 with the linear slope u₀ (the tangent of the path at the unloaded state) and the
+/// run's point u(1) = u₁; the secant 1/u₁ when it has no positive root.
+fn quadratic_root(u0: f64, u1: f64) -> f64 {
+    let c = u1 - u0;
+    let disc = u0 * u0 + 4.0 * c;
+    if c.abs() <= 1e-12 * u0 || disc < 0.0 {
+        return 1.0 / u1;
+    }
+    // The root continuous in c → 0 (no cancellation): 2 / (u₀ + √(u₀² + 4c)).
+    let s = 2.0 / (u0 + disc.sqrt());
+    if s.is_finite() && s > 0.0 {
+        s
+    } else {
+        1.0 / u1
+    }
+}
+
+/// The root nearest `b.s` of u(s) = α·s + β·s² = 1, the parabola through the origin (u(0) = 0)
+/// and the points `a` and `b`: a secant step that also knows the unloaded state, exact for a
+/// quadratic u(s). `None` when the points do not determine it or it has no root near `b`.
+fn through_origin(a: Point, b: Point) -> Option<f64> {
+    // α·s + β·s² = u at a and b: Cramer's rule.
+    let det = a.s * b.s * b.s - b.s * a.s * a.s;
+    if det.abs() <= 1e-12 * (a.s * b.s * b.s).abs() {
+        return None;
+    }
+    let alpha = (a.u * b.s * b.s - b.u * a.s * a.s) / det;
+    let beta = (a.s * b.u - b.s * a.u) / det;
+    let disc = alpha * alpha + 4.0 * beta;
+    let s = 2.0 / (alpha + disc.sqrt());
+    (disc >= 0.0 && s.is_finite() && s > 0.0 && (s - b.s).abs() <= b.s.abs()).then_some(s)
+}
+
+/// The bracketed secant search of u(s) = 1 from the point `first` and the trial scale `s1`
+/// (module documentation).
+fn search(
+    first: Point,
+    s1: f64,
+    probe: &mut impl FnMut(f64) -> Result<Point, AnalysisError>,
+) -> Result<Point, AnalysisError> {
     if (first.u - 1.0).abs() <= STROKE_TOL {
         return Ok(first);
     }
-    let mut pts = vec![first, probe(first.s / first.u)?];
+    let mut pts = vec![first, probe(s1)?];
     while pts.len() < MAX_SOLVES {
         let (a, b) = (pts[pts.len() - 2], pts[pts.len() - 1]);
         if (b.u - 1.0).abs() <= STROKE_TOL || (b.s - a.s).abs() <= STROKE_TOL * b.s.abs() {
@@ -218,7 +261,7 @@ fn search(first: Point, probe: &mut impl FnMut(f64) -> Result<Point, AnalysisErr
         let lo = pts.iter().filter(|p| p.u < 1.0).max_by(|p, q| p.s.total_cmp(&q.s));
         let hi = pts.iter().filter(|p| p.u > 1.0).min_by(|p, q| p.s.total_cmp(&q.s));
         let slope = (b.u - a.u) / (b.s - a.s);
-        let secant = b.s + (1.0 - b.u) / slope;
+        let secant = through_origin(a, b).unwrap_or(b.s + (1.0 - b.u) / slope);
         let next = match (lo, hi) {
             (Some(lo), Some(hi)) => {
                 let inside = secant > lo.s.min(hi.s) && secant < lo.s.max(hi.s);
