@@ -31,6 +31,14 @@ const NOT_EXPRESSIBLE: &[(&str, &str)] = &[
         "`up` must not be parallel to the axis between two nodes' coordinates",
     ),
     (
+        "static_metric_parasitic_on_driven_dof.json",
+        "whether the load case drives a node's DOF relates a metric to a load case",
+    ),
+    (
+        "static_metric_buckling_margin_missing_load_case.json",
+        "a load case name must be the name of one of `load_cases`",
+    ),
+    (
         "kinematics_fkp_stroke_exceeds_L.json",
         "|s| <= L relates a query to the mechanism",
     ),

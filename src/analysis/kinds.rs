@@ -289,7 +289,15 @@ impl Analysis for Static {
             fem_static::add_beam_forces(&mut r, &model, &raw);
         }
         r.compliance = fem_static::node_compliances(&model, &case.compliance)?;
-        r.metrics = fem_static::metrics::evaluate(&model, &case.model, &case.metrics, &r)?;
+        let run = case
+            .steps
+            .filter(|_| case.nonlinear)
+            .map(|steps| fem_static::metrics::NonlinearRun {
+                steps,
+                hinges: &hinges,
+                case_index: &case_index,
+            });
+        r.metrics = fem_static::metrics::evaluate_in(&model, &case.model, &case.metrics, &r, run)?;
         if case.gradients {
             let written = case.written.clone().ok_or_else(|| {
                 CaseError::new(

@@ -81,8 +81,9 @@ case_struct! {
         pub track: Option<super::mesh::TrackRequest>,
         /// Named scalar results, listed in the result's `metrics` as `{"NAME": value}`:
         /// `[{"name", "kind": "stiffness" | "compliance" | "displacement" | "hinge_rotation" |
-        /// "max_utilisation", "node", "dof", "load_case", "element"}]` (each kind takes the fields
-        /// its documentation names).
+        /// "max_utilisation" | "stroke_at_allowable" | "parasitic" | "frequency" |
+        /// "buckling_margin", "node", "dof", "load_case", "element", "mode"}]` (each kind takes
+        /// the fields its documentation names; `name` defaults to the kind and its fields).
         #[serde(default)]
         pub metrics: Vec<super::mesh::MetricRequest>,
         /// `true`: the result also lists `"gradients": {"METRIC": {"PARAM": d metric / d param}}`,
@@ -223,7 +224,8 @@ pub fn split(mut value: Value, own: &[&str]) -> (Value, Value) {
 pub fn parse_static(value: Value, base: &crate::case::Source<'_>) -> Result<StaticCase, CaseError> {
     unknown_model_field(&value, "static")?;
     let (options, model) = split(value, &STATIC_OWN);
-    let o: StaticOptions = from_value(options, "")?;
+    let mut o: StaticOptions = from_value(options, "")?;
+    super::mesh::metrics::name_metrics(&mut o.metrics);
     let nonlinear = o.nonlinear.unwrap_or(false);
     let steps = stage::check_steps("steps", o.steps, nonlinear)?;
     let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;

@@ -1,23 +1,38 @@
 //! The `"metrics"` of a `static` result: the named scalars a case asks for
 //! ([`crate::case::mesh::MetricRequest`]), evaluated from the solved load cases and, for
-//! stiffness and compliance, the node compliance with the model's supports.
+//! stiffness and compliance, the node compliance with the model's supports; natural
+//! frequencies and buckling margins from a modal and a linear buckling solve of the model
+//! ([`eigen`]); the stroke at the allowable along the nonlinear path by a bracketed secant
+//! search over independent nonlinear solves ([`stroke`]).
+
+mod eigen;
+mod stroke;
 
 use super::{AnalysisError, StaticResult};
-use crate::case::mesh::{MetricKind, MetricRequest};
+use crate::case::mesh::{BuiltHinge, MetricKind, MetricRequest};
 use crate::fem::{self, Model};
 use serde::ser::SerializeMap;
+
+pub use stroke::STROKE_TOL;
 
 /// Where a load case, scaled, brings the largest utilisation to 1 (`stroke_at_allowable`).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct StrokeAtAllowable {
-    /// Displacement of the node along the DOF, mm (degrees for rx, ry, rz).
+    /// Displacement of the node along the DOF, mm (degrees for rx, ry, rz; nonlinear runs: the
+    /// rotation-vector component).
     pub stroke: f64,
     /// The load there: the reaction of the prescribed DOF, or the applied force, N (N·mm).
     pub load: f64,
     /// Index in the case's `elements` of the element that reaches its allowable first.
     pub element: usize,
-    /// The linear estimate of `stroke` (the load case scaled by 1 / its utilisation), mm (degrees).
+    /// The linear estimate of `stroke` (the load case scaled by 1 / its linear utilisation),
+    /// mm (degrees).
     pub linear_estimate: f64,
+    /// The largest utilisation at the reported point (1 to [`STROKE_TOL`] in nonlinear runs;
+    /// exactly 1 in linear ones).
+    pub utilisation: f64,
+    /// Nonlinear solves of the search (0 in linear runs).
+    pub solves: usize,
 }
 
 /// One metric's value.
@@ -32,11 +47,11 @@ pub enum MetricValue {
 }
 
 impl MetricValue {
-    /// The number of a scalar metric (`None` for a stroke or a `null`).
+    /// The number of the metric: a scalar's value, a stroke's `stroke` (`None` for a `null`).
     pub fn number(&self) -> Option<f64> {
         match self {
             MetricValue::Number(v) => *v,
-            MetricValue::Stroke(_) => None,
+            MetricValue::Stroke(s) => Some(s.stroke),
         }
     }
 }
@@ -67,12 +82,36 @@ impl serde::Serialize for Metrics {
     }
 }
 
-/// Evaluates `reqs` (validated when the case was parsed, against `spec`) on the result `r` of `model`.
+/// What the metrics of a nonlinear run need to solve the model again: the nominal load steps
+/// and the hinge and element maps of the build ([`crate::case::mesh::MeshSpec::build_indexed`]).
+#[derive(Debug, Clone, Copy)]
+pub struct NonlinearRun<'a> {
+    /// Nominal load steps of the case (`steps`).
+    pub steps: usize,
+    /// The model's hinge elements.
+    pub hinges: &'a [BuiltHinge],
+    /// The model element of each case element.
+    pub case_index: &'a [Option<usize>],
+}
+
+/// Evaluates `reqs` (validated when the case was parsed, against `spec`) on the linear result
+/// `r` of `model`.
 pub fn evaluate(
     model: &Model,
     spec: &crate::case::mesh::MeshSpec,
     reqs: &[MetricRequest],
     r: &StaticResult,
+) -> Result<Metrics, AnalysisError> {
+    evaluate_in(model, spec, reqs, r, None)
+}
+
+/// [`evaluate`] on the result of a linear (`nonlinear: None`) or nonlinear run.
+pub fn evaluate_in(
+    model: &Model,
+    spec: &crate::case::mesh::MeshSpec,
+    reqs: &[MetricRequest],
+    r: &StaticResult,
+    nonlinear: Option<NonlinearRun<'_>>,
 ) -> Result<Metrics, AnalysisError> {
     let needs_system = reqs
         .iter()
@@ -85,6 +124,7 @@ pub fn evaluate(
     } else {
         None
     };
+    let frequencies = eigen::frequencies(model, reqs)?;
     let mut out = Vec::with_capacity(reqs.len());
     for (i, m) in reqs.iter().enumerate() {
         let at = || format!("metrics[{i}]");
@@ -110,7 +150,7 @@ pub fn evaluate(
                     _ => (c > 0.0).then(|| 1.0 / c),
                 })
             }
-            MetricKind::Displacement => {
+            MetricKind::Displacement | MetricKind::Parasitic => {
                 let (node, dof) = node_dof()?;
                 let d = case()?.displacements.get(node).ok_or_else(missing)?;
                 MetricValue::Number(Some(d[dof.index()]))
@@ -123,31 +163,31 @@ pub fn evaluate(
             MetricKind::StrokeAtAllowable => {
                 let (node, dof) = node_dof()?;
                 let c = case()?;
-                let lc = spec.load_cases.iter().find(|l| l.name == c.name).ok_or_else(missing)?;
-                match c.max_utilisation.as_ref().filter(|u| u.value > 0.0) {
-                    None => MetricValue::Number(None),
-                    Some(u) => {
-                        let d = c.displacements.get(node).ok_or_else(missing)?[dof.index()];
-                        let prescribed = lc.displacements.iter().any(|p| p.node == node && p.dof.dof() == dof);
-                        let load = if prescribed {
-                            let k = c.reaction_nodes.iter().position(|&n| n == node).ok_or_else(missing)?;
-                            c.reactions[k][dof.index()]
-                        } else {
-                            lc.forces
-                                .iter()
-                                .filter(|f| f.node == node)
-                                .map(|f| f.f[dof.index()])
-                                .sum()
-                        };
-                        let stroke = d / u.value;
-                        MetricValue::Stroke(StrokeAtAllowable {
-                            stroke,
-                            load: load / u.value,
-                            element: u.element,
-                            linear_estimate: stroke,
-                        })
-                    }
-                }
+                let ic = model
+                    .load_cases
+                    .iter()
+                    .position(|l| l.name == c.name)
+                    .ok_or_else(missing)?;
+                let drive = stroke::Drive { ic, node, dof };
+                let s = match nonlinear {
+                    None => stroke::linear(model, spec, &drive, c),
+                    Some(run) => stroke::nonlinear(model, spec, &drive, c, &run),
+                };
+                s.map_err(|e| within(at(), e))?
+                    .map_or(MetricValue::Number(None), MetricValue::Stroke)
+            }
+            MetricKind::Frequency => {
+                let f = m.mode.and_then(|n| frequencies.get(n - 1).copied());
+                MetricValue::Number(Some(f.ok_or_else(missing)?))
+            }
+            MetricKind::BucklingMargin => {
+                let name = m.load_case.as_deref().ok_or_else(missing)?;
+                let ic = model
+                    .load_cases
+                    .iter()
+                    .position(|l| l.name == name)
+                    .ok_or_else(missing)?;
+                MetricValue::Number(Some(eigen::buckling_margin(model, ic).map_err(|e| within(at(), e))?))
             }
         };
         let numbers = match value {
@@ -157,7 +197,12 @@ pub fn evaluate(
         if let Some(v) = numbers.into_iter().flatten().find(|v| !v.is_finite()) {
             return Err(AnalysisError::new(at(), format!("evaluates to {v}")));
         }
-        out.push((m.name.clone(), value));
+        out.push((m.key().into_owned(), value));
     }
     Ok(Metrics(out))
+}
+
+/// `e` under the metric's path.
+fn within(at: String, e: AnalysisError) -> AnalysisError {
+    AnalysisError::new(at, format!("{}: {}", e.context, e.message))
 }

@@ -1,0 +1,292 @@
+//! `stroke_at_allowable`: the stroke (displacement of the driven DOF) and load at which a load
+//! case, scaled by s, brings the largest utilisation (von Mises / allowable over every
+//! stressed element, [`super::super::add_headlines`]) to 1.
+//!
+//! Linear runs: the utilisation is proportional to s, so s = 1 / u(1) exactly.
+//!
+//! Nonlinear runs: u(s) along the equilibrium path is found by independent nonlinear solves of
+//! the load case scaled by s (elastic, path-independent: each from the unloaded state, in a
+//! quarter of the case's nominal load steps — all of them if that fails — every accepted state
+//! checked for equilibrium by the solver, a path that loses stability first an error). The
+//! search starts from the run's own point u(1) and takes for s₁ the root of the parabola
+//! through u(0) = 0 with the linear utilisation as its slope and through u(1); then steps to
+//! the root of the parabola through the origin and the last two points (a secant step that
+//! knows u(0) = 0; the plain secant where that fails), marching outwards at most ×2 a step
+//! until u crosses 1; from then on a step that leaves the bracket (largest scale below 1,
+//! smallest above) or does not halve the error falls back to regula falsi inside it (kept 10 %
+//! off its ends). It stops when |u − 1| ≤ [`STROKE_TOL`] or two successive scales agree to it
+//! (relative).
+
+use super::super::{add_headlines, add_hinges, solve_nonlinear_each, solve_with, StaticCaseRow};
+use super::{NonlinearRun, StrokeAtAllowable};
+use crate::analysis::AnalysisError;
+use crate::case::mesh::{path_control, MeshSpec};
+use crate::fem::{self, Dof, Model};
+
+/// Relative tolerance of the nonlinear search: on the scale between successive iterates, or
+/// on the utilisation.
+pub const STROKE_TOL: f64 = 1e-7;
+
+/// The probes' nominal load steps are the case's divided by this.
+const PROBE_STEP_DIVISOR: usize = 4;
+
+/// Nonlinear solves a search may take before it fails.
+const MAX_SOLVES: usize = 40;
+
+/// The load case (index `ic` in the model) and the DOF it drives.
+#[derive(Debug, Clone, Copy)]
+pub struct Drive {
+    pub ic: usize,
+    pub node: usize,
+    pub dof: Dof,
+}
+
+/// One point of the search: the load case scaled by `s`.
+#[derive(Debug, Clone, Copy)]
+struct Point {
+    s: f64,
+    /// Largest utilisation and its element (index in the case's `elements`).
+    u: f64,
+    element: usize,
+    /// Displacement of the driven DOF, mm (degrees).
+    stroke: f64,
+    /// Reaction of the prescribed DOF or the applied force, N (N·mm).
+    load: f64,
+}
+
+/// Whether `spec`'s load case of `d` prescribes the DOF (else it applies a force along it).
+fn prescribed(model: &Model, d: &Drive) -> bool {
+    model.load_cases[d.ic]
+        .displacements
+        .iter()
+        .any(|p| p.node == d.node && p.dof == d.dof)
+}
+
+/// The point of row `c` (load case scaled by `s`; `base_force`: the force of the unscaled case
+/// along the DOF).
+fn point(c: &StaticCaseRow, d: &Drive, s: f64, prescribed: bool, base_force: f64) -> Option<Point> {
+    let u = c.max_utilisation.as_ref()?;
+    let load = if prescribed {
+        let k = c.reaction_nodes.iter().position(|&n| n == d.node)?;
+        c.reactions[k][d.dof.index()]
+    } else {
+        base_force * s
+    };
+    Some(Point {
+        s,
+        u: u.value,
+        element: u.element,
+        stroke: c.displacements.get(d.node)?[d.dof.index()],
+        load,
+    })
+}
+
+/// The force of load case `d.ic` along the DOF at the node, N (N·mm).
+fn base_force(model: &Model, d: &Drive) -> f64 {
+    model.load_cases[d.ic]
+        .forces
+        .iter()
+        .filter(|f| f.node == d.node)
+        .map(|f| f.f[d.dof.index()])
+        .sum()
+}
+
+/// Linear runs: the load case scaled by 1 / its utilisation (`c`: its solved row). `None`
+/// when nothing is stressed or no element has an allowable stress.
+pub fn linear(
+    model: &Model,
+    _spec: &MeshSpec,
+    d: &Drive,
+    c: &StaticCaseRow,
+) -> Result<Option<StrokeAtAllowable>, AnalysisError> {
+    let missing = || AnalysisError::new("load case", "the driven node has no result (checked when parsed)");
+    if c.max_utilisation.as_ref().is_none_or(|u| u.value <= 0.0) {
+        return Ok(None);
+    }
+    let p = point(c, d, 1.0, prescribed(model, d), base_force(model, d)).ok_or_else(missing)?;
+    let stroke = p.stroke / p.u;
+    Ok(Some(StrokeAtAllowable {
+        stroke,
+        load: p.load / p.u,
+        element: p.element,
+        linear_estimate: stroke,
+        utilisation: 1.0,
+        solves: 0,
+    }))
+}
+
+/// The model with only load case `d.ic`, unscaled.
+fn single_case(model: &Model, d: &Drive) -> Model {
+    Model {
+        load_cases: vec![model.load_cases[d.ic].clone()],
+        ..model.clone()
+    }
+}
+
+/// Sets load case 0 of `m` to `base` scaled by `s` (forces and prescribed displacements).
+fn scale_into(m: &mut Model, base: &fem::model::LoadCase, s: f64) {
+    let lc = &mut m.load_cases[0];
+    for (f, b) in lc.forces.iter_mut().zip(&base.forces) {
+        f.f = b.f.map(|v| v * s);
+    }
+    for (p, b) in lc.displacements.iter_mut().zip(&base.displacements) {
+        p.value = b.value * s;
+    }
+}
+
+/// Nonlinear runs: the search of the module documentation, from `c`, the run's own row of the
+/// load case (its point at scale 1). `None` when the linear run stresses nothing with an
+/// allowable stress.
+pub fn nonlinear(
+    model: &Model,
+    spec: &MeshSpec,
+    d: &Drive,
+    c: &StaticCaseRow,
+    run: &NonlinearRun<'_>,
+) -> Result<Option<StrokeAtAllowable>, AnalysisError> {
+    let name = model.load_cases[d.ic].name.clone();
+    let ctx = |s: f64| format!("load case \"{name}\" scaled by {s:.9e}");
+    let missing = || AnalysisError::new(name.clone(), "the driven node has no result");
+    let mut m = single_case(model, d);
+    let base = model.load_cases[d.ic].clone();
+    let (pres, force) = (prescribed(model, d), base_force(model, d));
+    let one = Drive { ic: 0, ..*d };
+
+    // The linear estimate.
+    let (mut lin, raw) = solve_with(&m, &mut fem::SolverCache::new())?;
+    add_hinges(&mut lin, &m, &raw, run.hinges, false)?;
+    add_headlines(&mut lin, &m, run.case_index, run.hinges);
+    let Some(p_lin) = point(&lin.load_cases[0], &one, 1.0, pres, force).filter(|p| p.u > 0.0) else {
+        return Ok(None);
+    };
+    let linear_estimate = p_lin.stroke / p_lin.u;
+
+    let spec_lc = spec.load_cases.iter().find(|c| c.name == name).ok_or_else(missing)?;
+    let full = fem::NonlinearOptions {
+        locate_critical: false,
+        track: Vec::new(),
+        ..path_control::options(spec_lc, run.steps)
+    };
+    // The equilibrium at the end of an elastic path does not depend on the steps taken to it:
+    // a quarter of the case's steps, and all of them if that fails.
+    let quick = fem::NonlinearOptions {
+        steps: (run.steps / PROBE_STEP_DIVISOR).max(1),
+        ..full.clone()
+    };
+    let mut solves = 0;
+    let mut probe = |s: f64| -> Result<Point, AnalysisError> {
+        solves += 1;
+        scale_into(&mut m, &base, s);
+        let (mut r, raw, _) = solve_nonlinear_each(&m, std::slice::from_ref(&quick), None)
+            .or_else(|_| solve_nonlinear_each(&m, std::slice::from_ref(&full), None))
+            .map_err(|e| AnalysisError::new(ctx(s), format!("{}: {}", e.context, e.message)))?;
+        add_hinges(&mut r, &m, &raw, run.hinges, true)?;
+        add_headlines(&mut r, &m, run.case_index, run.hinges);
+        let c = &r.load_cases[0];
+        if c.stable == Some(false) {
+            return Err(AnalysisError::new(
+                ctx(s),
+                "the equilibrium path lost stability before the largest utilisation reached 1 (buckling or snap-through): the stroke at the allowable is not on a stable path",
+            ));
+        }
+        point(c, &one, s, pres, force)
+            .filter(|p| p.u.is_finite())
+            .ok_or_else(|| AnalysisError::new(ctx(s), "no utilisation along the path"))
+    };
+    let start = point(c, d, 1.0, pres, force)
+        .filter(|p| p.u > 0.0 && p.u.is_finite())
+        .ok_or_else(|| AnalysisError::new(name.clone(), "no utilisation along the path of the run"))?;
+    let found = search(start, quadratic_root(p_lin.u, start.u), &mut probe)?;
+    Ok(Some(StrokeAtAllowable {
+        stroke: found.stroke,
+        load: found.load,
+        element: found.element,
+        linear_estimate,
+        utilisation: found.u,
+        solves,
+    }))
+}
+
+/// The first trial scale: the root of u(s) = u₀·s + (u₁ − u₀)·s² = 1, the parabola through
+/// u(0) = 0 with the linear slope u₀ (the tangent of the path at the unloaded state) and the
+/// run's point u(1) = u₁; the secant 1/u₁ when it has no positive root.
+fn quadratic_root(u0: f64, u1: f64) -> f64 {
+    let c = u1 - u0;
+    let disc = u0 * u0 + 4.0 * c;
+    if c.abs() <= 1e-12 * u0 || disc < 0.0 {
+        return 1.0 / u1;
+    }
+    // The root continuous in c → 0 (no cancellation): 2 / (u₀ + √(u₀² + 4c)).
+    let s = 2.0 / (u0 + disc.sqrt());
+    if s.is_finite() && s > 0.0 {
+        s
+    } else {
+        1.0 / u1
+    }
+}
+
+/// The root nearest `b.s` of u(s) = α·s + β·s² = 1, the parabola through the origin (u(0) = 0)
+/// and the points `a` and `b`: a secant step that also knows the unloaded state, exact for a
+/// quadratic u(s). `None` when the points do not determine it or it has no root near `b`.
+fn through_origin(a: Point, b: Point) -> Option<f64> {
+    // α·s + β·s² = u at a and b: Cramer's rule.
+    let det = a.s * b.s * b.s - b.s * a.s * a.s;
+    if det.abs() <= 1e-12 * (a.s * b.s * b.s).abs() {
+        return None;
+    }
+    let alpha = (a.u * b.s * b.s - b.u * a.s * a.s) / det;
+    let beta = (a.s * b.u - b.s * a.u) / det;
+    let disc = alpha * alpha + 4.0 * beta;
+    let s = 2.0 / (alpha + disc.sqrt());
+    (disc >= 0.0 && s.is_finite() && s > 0.0 && (s - b.s).abs() <= b.s.abs()).then_some(s)
+}
+
+/// The bracketed secant search of u(s) = 1 from the point `first` and the trial scale `s1`
+/// (module documentation).
+fn search(
+    first: Point,
+    s1: f64,
+    probe: &mut impl FnMut(f64) -> Result<Point, AnalysisError>,
+) -> Result<Point, AnalysisError> {
+    if (first.u - 1.0).abs() <= STROKE_TOL {
+        return Ok(first);
+    }
+    let mut pts = vec![first, probe(s1)?];
+    while pts.len() < MAX_SOLVES {
+        let (a, b) = (pts[pts.len() - 2], pts[pts.len() - 1]);
+        if (b.u - 1.0).abs() <= STROKE_TOL || (b.s - a.s).abs() <= STROKE_TOL * b.s.abs() {
+            return Ok(b);
+        }
+        // The tightest bracket so far: the largest scale below 1, the smallest above.
+        let lo = pts.iter().filter(|p| p.u < 1.0).max_by(|p, q| p.s.total_cmp(&q.s));
+        let hi = pts.iter().filter(|p| p.u > 1.0).min_by(|p, q| p.s.total_cmp(&q.s));
+        let slope = (b.u - a.u) / (b.s - a.s);
+        let secant = through_origin(a, b).unwrap_or(b.s + (1.0 - b.u) / slope);
+        let next = match (lo, hi) {
+            (Some(lo), Some(hi)) => {
+                let inside = secant > lo.s.min(hi.s) && secant < lo.s.max(hi.s);
+                // A secant step that leaves the bracket, or one that did not halve the error
+                // of the step before, falls back to regula falsi on the bracket.
+                let slow = (b.u - 1.0).abs() > 0.5 * (a.u - 1.0).abs();
+                if inside && !slow && slope.is_finite() {
+                    secant
+                } else {
+                    let t = (1.0 - lo.u) / (hi.u - lo.u);
+                    // Keep off the ends so a curved u(s) cannot stall regula falsi.
+                    lo.s + t.clamp(0.1, 0.9) * (hi.s - lo.s)
+                }
+            }
+            _ if slope > 0.0 && slope.is_finite() => secant.clamp(0.5 * b.s, 2.0 * b.s),
+            _ => b.s / b.u,
+        };
+        pts.push(probe(next)?);
+    }
+    let b = pts[pts.len() - 1];
+    Err(AnalysisError::new(
+        "stroke_at_allowable",
+        format!(
+            "the search for utilisation 1 did not converge in {MAX_SOLVES} nonlinear solves (last: scale {:.9e}, utilisation {:.9})",
+            b.s, b.u
+        ),
+    ))
+}
