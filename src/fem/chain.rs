@@ -52,10 +52,9 @@ pub struct Chain {
     pub nodes: Vec<usize>,
     /// Elements from a to b (original numbering).
     pub elements: Vec<usize>,
-    /// Per element, its ends in chain order and its axes.
-    links: Vec<Link>,
-    /// Per element, its compliance at its far node (towards b), global axes.
-    flex: Vec<Matrix6<f64>>,
+    /// Per element, its ends in chain order and axes, and its compliance at its far node
+    /// (towards b), global axes (one vector: one allocation per chain).
+    links: Vec<(Link, Matrix6<f64>)>,
     /// Per element, a beam's section properties (for its stresses).
     props: Vec<Option<SectionProps>>,
     /// The chain condensed onto a and b.
@@ -202,7 +201,6 @@ impl Chain {
     fn new(model: &Model, nodes: Vec<usize>, elements: Vec<usize>) -> Result<Chain, FemError> {
         let mut sum = Summation::new(x(model, *nodes.last().expect("chain end")));
         let mut links = Vec::with_capacity(elements.len());
-        let mut flex = Vec::with_capacity(elements.len());
         let mut props: Vec<Option<BeamProps>> = Vec::with_capacity(elements.len());
         for (k, &ie) in elements.iter().enumerate() {
             let prev = k
@@ -218,8 +216,7 @@ impl Chain {
             };
             let c_q = link.compliance(&local, model.elements[ie].end_nodes()[1] != q);
             sum.add(&link.q, &c_q);
-            links.push(link);
-            flex.push(c_q);
+            links.push((link, c_q));
         }
         let ends = sum.ends(x(model, nodes[0])).ok_or_else(|| FemError::BadElement {
             element: elements[0],
@@ -229,7 +226,6 @@ impl Chain {
             nodes,
             elements,
             links,
-            flex,
             props: props.into_iter().map(|p| p.map(|p| p.0)).collect(),
             ends,
         })
@@ -248,9 +244,9 @@ impl Chain {
         let f_b = self.ends.end_force(&get(u, a), &get(u, b));
         for k in 1..self.nodes.len() - 1 {
             let (p, q) = (self.nodes[k - 1], self.nodes[k]);
-            let link = &self.links[k - 1];
+            let (link, c_q) = &self.links[k - 1];
             let f_q = rigid_arm(&(self.ends.xb - link.q)).transpose() * f_b;
-            let uq = link.carry(&get(u, p), &self.flex[k - 1], &f_q);
+            let uq = link.carry(&get(u, p), c_q, &f_q);
             u[6 * q..6 * q + 6].copy_from_slice(uq.as_slice());
         }
         f_b
@@ -262,7 +258,7 @@ impl Chain {
     pub fn element_results(&self, model: &Model, f_b: &Vector6<f64>) -> Vec<ElementResult> {
         let mut out = Vec::with_capacity(self.elements.len());
         for (k, &ie) in self.elements.iter().enumerate() {
-            let link = &self.links[k];
+            let (link, c_q) = &self.links[k];
             let (f_p, f_q) = link.end_forces(&self.ends.xb, f_b);
             let (l_p, l_q) = (link.t * f_p, link.t * f_q);
             let (f1, f2) = if model.elements[ie].end_nodes()[1] == self.nodes[k + 1] {
@@ -271,7 +267,7 @@ impl Chain {
                 (l_q, l_p)
             };
             let f: [f64; 12] = std::array::from_fn(|i| if i < 6 { f1[i] } else { f2[i - 6] });
-            let energy = 0.5 * f_q.dot(&(self.flex[k] * f_q));
+            let energy = 0.5 * f_q.dot(&(c_q * f_q));
             out.push(recovery::from_local_end_forces_with(
                 &model.elements[ie],
                 &f,
