@@ -357,6 +357,11 @@ mod tests {
                 );
                 let (mesh, own) = (chain.ends().c_b, leg.ends.c_b);
                 let diff = (mesh - own).amax();
+                eprintln!(
+                    "leg {} ({leg_elements} beams): |ΔC_b| {diff:e} of {:e}",
+                    leg.i,
+                    own.amax()
+                );
                 assert!(
                     diff <= 1e-12 * own.amax(),
                     "leg {} ({leg_elements} beams): |ΔC_b| {diff:e} of {:e}",

@@ -8,7 +8,9 @@
 //! gives every link's end forces from f_b ([`Link::end_forces`]) and the motion of each inner
 //! node from the one before ([`Link::carry`]) (J. S. Przemieniecki, Theory of Matrix Structural
 //! Analysis, 1968, §6.5 and §9.6). Lengths mm, forces N and N·mm, compliances mm/N, rad/N,
-//! rad/(N·mm), all in global axes unless named local.
+//! rad/(N·mm), all in global axes unless named local. The functions are `#[inline]`: the
+//! stage calls them per leg piece and design, and a call across codegen units cost its linear
+//! solve ~10 % more instructions.
 
 use crate::fem::transform::{beam_frame, rigid_arm, t6};
 use nalgebra::{Matrix6, Vector3, Vector6};
@@ -16,6 +18,7 @@ use nalgebra::{Matrix6, Vector3, Vector6};
 /// A flexibility element's compliance as a matrix if it is finite, symmetric (relative 1e-9)
 /// and positive definite: the element's own acceptance test
 /// ([`crate::fem::element::flex_tip_stiffness`]), without inverting it.
+#[inline]
 pub fn checked_compliance(c: &[[f64; 6]; 6]) -> Option<Matrix6<f64>> {
     let c = Matrix6::from_fn(|i, j| c[i][j]);
     let scale = c.amax();
@@ -37,6 +40,7 @@ pub struct Link {
 impl Link {
     /// The link of an element from node 1 at `p` to node 2 at `q` with orientation vector
     /// `up` ([`beam_frame`]); `None` if the ends coincide or `up` is parallel to the axis.
+    #[inline]
     pub fn along(p: Vector3<f64>, q: Vector3<f64>, up: Vector3<f64>) -> Option<Link> {
         let (lam, _) = beam_frame(p.into(), q.into(), up.into())?;
         Some(Link { p, q, t: t6(&lam) })
@@ -45,6 +49,7 @@ impl Link {
     /// C_q: the element's cantilever compliance `local` (at its node 2 relative to clamped
     /// node 1, local axes) in global axes, Tᵀ C T; for an element pointing back towards a
     /// (`reversed`: node 2 at p) carried from p to q, R(x_q − x_p) Tᵀ C T R(x_q − x_p)ᵀ.
+    #[inline]
     pub fn compliance(&self, local: &Matrix6<f64>, reversed: bool) -> Matrix6<f64> {
         let c_t = self.t.transpose() * local * self.t;
         if reversed {
@@ -57,6 +62,7 @@ impl Link {
 
     /// The forces on the element at p and at q (global axes) for the chain's end force `f_b`
     /// at `xb`: f_q = R(x_b − x_q)ᵀ f_b and f_p = −R(x_q − x_p)ᵀ f_q.
+    #[inline]
     pub fn end_forces(&self, xb: &Vector3<f64>, f_b: &Vector6<f64>) -> (Vector6<f64>, Vector6<f64>) {
         let f_q = rigid_arm(&(xb - self.q)).transpose() * f_b;
         let f_p = -(rigid_arm(&(self.q - self.p)).transpose() * f_q);
@@ -64,6 +70,7 @@ impl Link {
     }
 
     /// The motion of q from that of p and the force f_q at q: u_q = R(x_q − x_p) u_p + C_q f_q.
+    #[inline]
     pub fn carry(&self, u_p: &Vector6<f64>, c_q: &Matrix6<f64>, f_q: &Vector6<f64>) -> Vector6<f64> {
         rigid_arm(&(self.q - self.p)) * u_p + c_q * f_q
     }
@@ -78,6 +85,7 @@ pub struct Summation {
 
 impl Summation {
     /// An empty sum for a chain ending at `xb`, mm.
+    #[inline]
     pub fn new(xb: Vector3<f64>) -> Summation {
         Summation {
             xb,
@@ -86,12 +94,14 @@ impl Summation {
     }
 
     /// Adds a link's compliance `c_q` (global axes) at its far end `q`.
+    #[inline]
     pub fn add(&mut self, q: &Vector3<f64>, c_q: &Matrix6<f64>) {
         let r = rigid_arm(&(self.xb - q));
         self.c += r * c_q * r.transpose();
     }
 
     /// The condensed chain from `xa` to the sum's end; `None` if C_b is not positive definite.
+    #[inline]
     pub fn ends(self, xa: Vector3<f64>) -> Option<Ends> {
         let c_b = (self.c + self.c.transpose()) * 0.5;
         let k_b = c_b.cholesky()?.inverse();
@@ -120,6 +130,7 @@ pub struct Ends {
 impl Ends {
     /// The chain's force at b (global axes) for end motions `u_a`, `u_b`:
     /// f_b = C_b⁻¹ (u_b − R(x_b − x_a) u_a).
+    #[inline]
     pub fn end_force(&self, u_a: &Vector6<f64>, u_b: &Vector6<f64>) -> Vector6<f64> {
         let delta = u_b - rigid_arm(&(self.xb - self.xa)) * u_a;
         self.k_b * delta

@@ -53,6 +53,10 @@ fn l_shaped_cantilever_chain_matches_closed_form() {
     ];
     for (what, k, expected) in cases {
         let got = chain.ends().c_b[(k, k)];
+        eprintln!(
+            "{what}: chain {got:e}, closed form {expected:e}, relative {:e}",
+            (got - expected).abs() / expected
+        );
         assert!(
             (got - expected).abs() <= 1e-12 * expected,
             "{what}: chain {got:e}, closed form {expected:e}"
@@ -88,6 +92,11 @@ fn recovered_corner_of_l_shaped_cantilever_matches_closed_form() {
     let back = chain.recover(&mut u);
     let i = PI * d.powi(4) / 64.0;
     let expected = f * a.powi(3) / (3.0 * m.e * i);
+    eprintln!(
+        "corner w {:e} vs {expected:e}; end force back {:e}",
+        u[8],
+        (back - f_b).amax()
+    );
     assert!(
         (u[8] - expected).abs() <= 1e-12 * expected,
         "corner w {} vs {expected}",
