@@ -26,9 +26,9 @@
 //! results then come from their own recovery on the full displacement vector.
 //!
 //! This file finds the chains and holds one [`Chain`] (its compliance, the recovery of its inner
-//! nodes and its elements' results); `chain/link.rs` holds the fixed-size arithmetic of one
-//! chain ([`Link`], [`Summation`], [`Ends`]), which the stage's legs (`stage::LinearStage`) use
-//! too, without building a model; `chain/condensed.rs` builds the condensed model,
+//! nodes and its elements' results); `chain/link.rs` holds the fixed-size, allocation-free
+//! arithmetic of one chain ([`Link`], [`Summation`], [`Ends`]), usable without a model (a
+//! caller generating its pieces on the fly); `chain/condensed.rs` builds the condensed model,
 //! [`Condensed`], and maps results back.
 
 use super::element::cantilever_compliance;

@@ -5,21 +5,19 @@
 //! (the platform motion u_P and the three strokes sᵢ). Leg i's end force at its neck top Tᵢ is
 //! f = K (u_T − R(x_T − x_S) u_S), with u_T = R(x_T − x_P) u_P and u_S = (sᵢ eᵢ, 0); the
 //! stiffness is the sum of those energies (the same equations as the FE path's condensed model,
-//! to roundoff). Element forces then follow from statics along each chain
-//! ([`Link::end_forces`]).
+//! to roundoff). Element forces then follow from statics along each chain, as in
+//! [`crate::fem::chain::Chain::element_results`].
 //!
-//! The chain arithmetic is [`crate::fem::chain`]'s own ([`Link`], [`Summation`], [`Ends`]: the
-//! code that condenses a mesh's serial chains), fed with the leg's pieces as they are generated
-//! instead of a model's elements. Everything is fixed-size (nalgebra static matrices, arrays): a
-//! design costs no heap allocation. Ideal joints (exact releases) are not covered: [`ValidStage::linear`] returns
+//! Everything is fixed-size (nalgebra static matrices, arrays): a design costs no heap
+//! allocation. Ideal joints (exact releases) are not covered: [`ValidStage::linear`] returns
 //! `None` and the caller uses the FE model.
 
+use super::build::arr;
 use super::*;
-use crate::fem::chain::{checked_compliance, Ends, Link, Summation};
 use crate::fem::element::cantilever_compliance;
 use crate::fem::recovery::point_von_mises;
 use crate::fem::section::{rect_stress_points, Section, SectionProps, StressPoint};
-use crate::fem::transform::rigid_arm;
+use crate::fem::transform::{beam_frame, rigid_arm, t6};
 use crate::hinge;
 use nalgebra::Vector3;
 use nalgebra::{Matrix6, SMatrix, SVector, Vector6};
@@ -71,13 +69,16 @@ struct Piece {
     hinge: usize,
 }
 
-/// One leg condensed: the chain from the slider to the neck top and its couplings.
+/// One leg condensed: end points, stiffness of the chain and its couplings.
 #[derive(Debug, Clone, Copy)]
 struct Leg {
     i: usize,
     e: Vector3<f64>,
-    /// The chain from the slider node (a) to the neck top (b, platform side).
-    ends: Ends,
+    /// Slider node, neck top (platform side).
+    xs: Vector3<f64>,
+    xt: Vector3<f64>,
+    /// C_b⁻¹ of the chain (global axes).
+    k: Matrix6<f64>,
     /// R(x_T − x_P): platform motion → neck-top motion.
     a: Matrix6<f64>,
     /// R(x_T − x_S)·(eᵢ, 0): unit stroke → neck-top motion carried rigidly.
@@ -105,6 +106,15 @@ pub struct LinearStage<'a> {
     flex: [Matrix6<f64>; 2],
 }
 
+/// The compliance of a flexibility element, if it is finite, symmetric and positive definite
+/// (the FE element's own check; otherwise the FE path reports the error).
+fn flex(c: [[f64; 6]; 6]) -> Option<Matrix6<f64>> {
+    let c = Matrix6::from_fn(|i, j| c[i][j]);
+    let scale = c.amax();
+    let ok = scale > 0.0 && scale.is_finite() && (c - c.transpose()).amax() <= 1e-9 * scale;
+    (ok && c.cholesky().is_some()).then_some(c)
+}
+
 impl ValidStage {
     /// The stage condensed for linear load cases ([`LinearStage`], no heap allocation); `None`
     /// with ideal joints, or when a hinge flexibility, a leg chain or the stage stiffness is not
@@ -118,20 +128,16 @@ impl ValidStage {
             h: self.leg_h,
         };
         section.validate().ok()?;
-        // The FE element's own check: otherwise the FE path reports the error.
-        let rev = checked_compliance(&self.revolute.compliance())?;
-        let sph = checked_compliance(&self.spherical.compliance())?;
+        let rev = flex(self.revolute.compliance())?;
+        let sph = flex(self.spherical.compliance())?;
         let mut s = LinearStage {
             stage: self,
             legs: [0, 1, 2].map(|i| Leg {
                 i,
                 e: Vector3::zeros(),
-                ends: Ends {
-                    xa: Vector3::zeros(),
-                    xb: Vector3::zeros(),
-                    c_b: Matrix6::zeros(),
-                    k_b: Matrix6::zeros(),
-                },
+                xs: Vector3::zeros(),
+                xt: Vector3::zeros(),
+                k: Matrix6::zeros(),
                 a: Matrix6::zeros(),
                 g: Vector6::zeros(),
             }),
@@ -147,34 +153,44 @@ impl ValidStage {
         };
         let xp = self.prs.p_home();
         for i in 0..3 {
-            let (mut xs, mut xt) = (Vector3::zeros(), Vector3::zeros());
+            let (mut c_b, mut xs, mut xt) = (Matrix6::zeros(), Vector3::zeros(), Vector3::zeros());
             // The neck top first (C_b sums the pieces carried to it).
             s.pieces(i, |pc| xt = pc.q);
-            let mut sum = Some(Summation::new(xt));
+            let mut ok = true;
             s.pieces(i, |pc| {
                 if !pc.beam && pc.hinge == 0 {
                     xs = pc.p;
                 }
-                match (Link::along(pc.p, pc.q, pc.up), sum.as_mut()) {
-                    (Some(link), Some(sum)) => sum.add(&link.q, &link.compliance(&s.local_compliance(&pc), false)),
-                    _ => sum = None,
+                match beam_frame(arr(pc.p), arr(pc.q), arr(pc.up)) {
+                    Some((lam, _)) => {
+                        let t = t6(&lam);
+                        let r = rigid_arm(&(xt - pc.q));
+                        c_b += r * (t.transpose() * s.local_compliance(&pc) * t) * r.transpose();
+                    }
+                    None => ok = false,
                 }
             });
-            let ends = sum?.ends(xs)?;
+            if !ok {
+                return None;
+            }
+            let c_b = (c_b + c_b.transpose()) * 0.5;
+            let k = c_b.cholesky()?.inverse();
             let e = self.prs.e(i);
             let mut ue = Vector6::zeros();
             ue.fixed_rows_mut::<3>(0).copy_from(&e);
             s.legs[i] = Leg {
                 i,
                 e,
-                ends,
+                xs,
+                xt,
+                k,
                 a: rigid_arm(&(xt - xp)),
                 g: rigid_arm(&(xt - xs)) * ue,
             };
         }
         for leg in &s.legs {
-            let ka = leg.ends.k_b * leg.a;
-            let kg = leg.ends.k_b * leg.g;
+            let ka = leg.k * leg.a;
+            let kg = leg.k * leg.g;
             let mut pp = s.k.fixed_view_mut::<6, 6>(0, 0);
             pp += leg.a.transpose() * ka;
             let b = -(leg.a.transpose() * kg);
@@ -284,15 +300,18 @@ impl LinearStage<'_> {
             r.strokes[i] = leg.e.dot(&slider);
             let mut u_s = Vector6::zeros();
             u_s.fixed_rows_mut::<3>(0).copy_from(&slider);
-            let f_b = leg.ends.end_force(&u_s, &(leg.a * u_p));
+            let delta = leg.a * u_p - rigid_arm(&(leg.xt - leg.xs)) * u_s;
+            let f_b = leg.k * delta;
             // Reaction of the stroke DOF: the chain's force on the slider along eᵢ.
             r.forces[i] = applied.map_or(-leg.e.dot(&f_b.fixed_rows::<3>(0)), |f| f[i]);
             self.pieces(i, |pc| {
-                let Some(link) = Link::along(pc.p, pc.q, pc.up) else {
+                let f_q = rigid_arm(&(leg.xt - pc.q)).transpose() * f_b;
+                let f_p = -(rigid_arm(&(pc.q - pc.p)).transpose() * f_q);
+                let Some((lam, _)) = beam_frame(arr(pc.p), arr(pc.q), arr(pc.up)) else {
                     return;
                 };
-                let (f_p, f_q) = link.end_forces(&leg.ends.xb, &f_b);
-                let (l_p, l_q) = (link.t * f_p, link.t * f_q);
+                let t = t6(&lam);
+                let (l_p, l_q) = (t * f_p, t * f_q);
                 let s1: [f64; 6] = std::array::from_fn(|k| -l_p[k]);
                 let s2: [f64; 6] = std::array::from_fn(|k| l_q[k]);
                 if pc.beam {
@@ -320,12 +339,13 @@ mod tests {
     use crate::hinge::{Contour, HingeSpec};
     use crate::kinematics::Prs;
 
-    /// The stage's legs condensed without a model ([`ValidStage::linear`]) and the same legs
-    /// found as serial chains of the stage's FE model ([`Condensed`]) go through the one code
-    /// path of [`crate::fem::chain`]: the same C_b to roundoff (1e-12 of its largest entry,
-    /// per leg), for 1 and 4 leg beams and two notch families.
+    /// The stage's legs condensed without a model ([`ValidStage::linear`], its own fixed-size
+    /// copy of the chain arithmetic) and the same legs found as serial chains of the stage's FE
+    /// model and condensed by [`crate::fem::chain`] (J. S. Przemieniecki, Theory of Matrix
+    /// Structural Analysis, 1968, §6.5 and §9.6): the same C_b⁻¹ to roundoff (1e-12 of its
+    /// largest entry, per leg), for 1 and 4 leg beams and two notch families.
     #[test]
-    fn stage_leg_and_mesh_chain_have_the_same_compliance() {
+    fn stage_leg_and_mesh_chain_have_the_same_stiffness() {
         for (leg_elements, notch) in [
             (1, Contour::Circular { r: 5.0, t: 1.5 }),
             (4, Contour::Leaf { l: 8.0, t: 1.0 }),
@@ -355,16 +375,16 @@ mod tests {
                     "leg {}: hinge, beams, neck",
                     leg.i
                 );
-                let (mesh, own) = (chain.ends().c_b, leg.ends.c_b);
+                let (mesh, own) = (chain.ends().k_b, leg.k);
                 let diff = (mesh - own).amax();
                 eprintln!(
-                    "leg {} ({leg_elements} beams): |ΔC_b| {diff:e} of {:e}",
+                    "leg {} ({leg_elements} beams): |ΔK_b| {diff:e} of {:e}",
                     leg.i,
                     own.amax()
                 );
                 assert!(
                     diff <= 1e-12 * own.amax(),
-                    "leg {} ({leg_elements} beams): |ΔC_b| {diff:e} of {:e}",
+                    "leg {} ({leg_elements} beams): |ΔK_b| {diff:e} of {:e}",
                     leg.i,
                     own.amax()
                 );

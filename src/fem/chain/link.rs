@@ -1,5 +1,6 @@
 //! The arithmetic of one serial chain, fixed-size and allocation-free: what a mesh's chains
-//! ([`super::Chain`]) and the stage's legs (`stage::LinearStage`) both condense with.
+//! ([`super::Chain`]) condense with, and what a caller without a model (generating a chain's
+//! pieces on the fly, as the stage's legs are) can condense with.
 //!
 //! A chain from a to b is walked link by link (element from p to q, q towards b). Its
 //! compliance at b relative to clamped a sums the links' compliances carried rigidly to b,
@@ -8,9 +9,9 @@
 //! gives every link's end forces from f_b ([`Link::end_forces`]) and the motion of each inner
 //! node from the one before ([`Link::carry`]) (J. S. Przemieniecki, Theory of Matrix Structural
 //! Analysis, 1968, §6.5 and §9.6). Lengths mm, forces N and N·mm, compliances mm/N, rad/N,
-//! rad/(N·mm), all in global axes unless named local. The functions are `#[inline]`: the
-//! stage calls them per leg piece and design, and a call across codegen units cost its linear
-//! solve ~10 % more instructions.
+//! rad/(N·mm), all in global axes unless named local. The functions are `#[inline]`: called
+//! per piece and design, a call across codegen units cost the stage's linear solve ~10 % more
+//! instructions when it used them.
 
 use crate::fem::transform::{beam_frame, rigid_arm, t6};
 use nalgebra::{Matrix6, Vector3, Vector6};
