@@ -159,14 +159,13 @@ pub fn find_chains(model: &Model, cases: &[&LoadCase], keep: &[usize]) -> Vec<(V
 /// A beam's section properties, E and G ([`super::Beam::props`]).
 type BeamProps = (SectionProps, f64, f64);
 
+/// An element's local compliance at node 2, T = diag(Λ, Λ), and a beam's [`BeamProps`].
+type ElementFlex = (Matrix6<f64>, Matrix6<f64>, Option<BeamProps>);
+
 /// Element `ie`'s cantilever tip compliance at node 2 relative to node 1, local axes, its
 /// frame, and a beam's section properties, E and G (`prev`: those of the previous beam, reused
 /// when the section and material are the same).
-fn element_compliance(
-    model: &Model,
-    ie: usize,
-    prev: Option<(&Element, &BeamProps)>,
-) -> Result<(Matrix6<f64>, Matrix6<f64>, Option<BeamProps>), FemError> {
+fn element_compliance(model: &Model, ie: usize, prev: Option<(&Element, &BeamProps)>) -> Result<ElementFlex, FemError> {
     let (lam, l) = model.element_frame(ie)?;
     let (local, props) = match &model.elements[ie] {
         Element::Beam(b) => {
