@@ -26,7 +26,9 @@
 //! results then come from their own recovery on the full displacement vector.
 //!
 //! This file finds the chains and holds one [`Chain`] (its compliance, the recovery of its inner
-//! nodes and its elements' results); `chain/condensed.rs` builds the condensed model,
+//! nodes and its elements' results); `chain/link.rs` holds the fixed-size, allocation-free
+//! arithmetic of one chain ([`Link`], [`Summation`], [`Ends`]), usable without a model (a
+//! caller generating its pieces on the fly); `chain/condensed.rs` builds the condensed model,
 //! [`Condensed`], and maps results back.
 
 use super::element::cantilever_compliance;
@@ -39,7 +41,9 @@ use super::transform::{rigid_arm, t6};
 use nalgebra::{Matrix6, Vector3, Vector6};
 
 mod condensed;
+mod link;
 pub use condensed::Condensed;
+pub use link::{checked_compliance, Ends, Link, Summation};
 
 /// One serial chain: its nodes from end a to end b and its elements in order.
 #[derive(Debug, Clone, PartialEq)]
@@ -48,14 +52,13 @@ pub struct Chain {
     pub nodes: Vec<usize>,
     /// Elements from a to b (original numbering).
     pub elements: Vec<usize>,
-    /// Per element, its compliance at its far node (towards b), global axes.
-    flex: Vec<Matrix6<f64>>,
+    /// Per element, its ends in chain order and axes, and its compliance at its far node
+    /// (towards b), global axes (one vector: one allocation per chain).
+    links: Vec<(Link, Matrix6<f64>)>,
     /// Per element, a beam's section properties (for its stresses).
     props: Vec<Option<SectionProps>>,
-    /// C_b: compliance of b relative to clamped a, global axes.
-    c_b: Matrix6<f64>,
-    /// C_b⁻¹.
-    k_b: Matrix6<f64>,
+    /// The chain condensed onto a and b.
+    ends: Ends,
 }
 
 /// Nodes that must stay: anything attached to them besides two chain elements.
@@ -156,14 +159,13 @@ pub fn find_chains(model: &Model, cases: &[&LoadCase], keep: &[usize]) -> Vec<(V
 /// A beam's section properties, E and G ([`super::Beam::props`]).
 type BeamProps = (SectionProps, f64, f64);
 
-/// Element `ie`'s cantilever tip compliance at node 2 relative to node 1, global axes, and a
-/// beam's section properties, E and G (`prev`: those of the previous beam, reused when the
-/// section and material are the same).
-fn element_compliance(
-    model: &Model,
-    ie: usize,
-    prev: Option<(&Element, &BeamProps)>,
-) -> Result<(Matrix6<f64>, Option<BeamProps>), FemError> {
+/// An element's local compliance at node 2, T = diag(Λ, Λ), and a beam's [`BeamProps`].
+type ElementFlex = (Matrix6<f64>, Matrix6<f64>, Option<BeamProps>);
+
+/// Element `ie`'s cantilever tip compliance at node 2 relative to node 1, local axes, its
+/// frame, and a beam's section properties, E and G (`prev`: those of the previous beam, reused
+/// when the section and material are the same).
+fn element_compliance(model: &Model, ie: usize, prev: Option<(&Element, &BeamProps)>) -> Result<ElementFlex, FemError> {
     let (lam, l) = model.element_frame(ie)?;
     let (local, props) = match &model.elements[ie] {
         Element::Beam(b) => {
@@ -175,22 +177,19 @@ fn element_compliance(
             (cantilever_compliance(*e, *g, p, l, b.shear), Some(props))
         }
         Element::Flex(f) => {
-            let c = Matrix6::from_fn(|i, j| f.compliance[i][j]);
-            // The element's own check (flex_tip_stiffness): finite, symmetric, positive definite.
-            let scale = c.amax();
-            if !(scale > 0.0
-                && scale.is_finite()
-                && (c - c.transpose()).amax() <= 1e-9 * scale
-                && c.cholesky().is_some())
-            {
+            if checked_compliance(&f.compliance).is_none() {
+                // The element's own check and error (flex_tip_stiffness).
                 f.tip_stiffness(ie)?;
             }
-            (c, None)
+            (Matrix6::from_fn(|i, j| f.compliance[i][j]), None)
         }
-        _ => return Err(FemError::BadInput(format!("element {ie} is not a beam"))),
+        _ => return Err(not_serial(ie)),
     };
-    let t = t6(&lam);
-    Ok((t.transpose() * local * t, props))
+    Ok((local, t6(&lam), props))
+}
+
+fn not_serial(ie: usize) -> FemError {
+    FemError::BadInput(format!("element {ie} is not a beam"))
 }
 
 fn x(model: &Model, n: usize) -> Vector3<f64> {
@@ -199,59 +198,54 @@ fn x(model: &Model, n: usize) -> Vector3<f64> {
 
 impl Chain {
     fn new(model: &Model, nodes: Vec<usize>, elements: Vec<usize>) -> Result<Chain, FemError> {
-        let b = x(model, *nodes.last().expect("chain end"));
-        let mut c_b = Matrix6::zeros();
-        let mut flex = Vec::with_capacity(elements.len());
+        let mut sum = Summation::new(x(model, *nodes.last().expect("chain end")));
+        let mut links = Vec::with_capacity(elements.len());
         let mut props: Vec<Option<BeamProps>> = Vec::with_capacity(elements.len());
         for (k, &ie) in elements.iter().enumerate() {
             let prev = k
                 .checked_sub(1)
                 .and_then(|j| props[j].as_ref().map(|p| (&model.elements[elements[j]], p)));
-            let (c_t, p) = element_compliance(model, ie, prev)?;
+            let (local, t, p) = element_compliance(model, ie, prev)?;
             props.push(p);
-            let [s, t] = model.elements[ie].end_nodes();
             let q = nodes[k + 1];
-            let c_q = if q == t {
-                c_t
-            } else {
-                let r = rigid_arm(&(x(model, s) - x(model, t)));
-                r * c_t * r.transpose()
+            let link = Link {
+                p: x(model, nodes[k]),
+                q: x(model, q),
+                t,
             };
-            let r = rigid_arm(&(b - x(model, q)));
-            c_b += r * c_q * r.transpose();
-            flex.push(c_q);
+            let c_q = link.compliance(&local, model.elements[ie].end_nodes()[1] != q);
+            sum.add(&link.q, &c_q);
+            links.push((link, c_q));
         }
-        let c_b = (c_b + c_b.transpose()) * 0.5;
-        let k_b = c_b
-            .cholesky()
-            .map(|ch| ch.inverse())
-            .ok_or_else(|| FemError::BadElement {
-                element: elements[0],
-                reason: "the serial chain starting here has no positive definite compliance".into(),
-            })?;
+        let ends = sum.ends(x(model, nodes[0])).ok_or_else(|| FemError::BadElement {
+            element: elements[0],
+            reason: "the serial chain starting here has no positive definite compliance".into(),
+        })?;
         Ok(Chain {
             nodes,
             elements,
-            flex,
+            links,
             props: props.into_iter().map(|p| p.map(|p| p.0)).collect(),
-            c_b,
-            k_b,
+            ends,
         })
+    }
+
+    /// The chain condensed onto its end nodes (C_b, C_b⁻¹, global axes).
+    pub fn ends(&self) -> &Ends {
+        &self.ends
     }
 
     /// Writes the displacements of the inner nodes into `u` (6 per original node) from those of
     /// the two ends; returns the chain's end force at b, f_b = C_b⁻¹ δ (global axes).
-    pub fn recover(&self, model: &Model, u: &mut [f64]) -> Vector6<f64> {
+    pub fn recover(&self, u: &mut [f64]) -> Vector6<f64> {
         let get = |u: &[f64], n: usize| Vector6::from_column_slice(&u[6 * n..6 * n + 6]);
         let (a, b) = (self.nodes[0], *self.nodes.last().expect("chain end"));
-        let xb = x(model, b);
-        let delta = get(u, b) - rigid_arm(&(xb - x(model, a))) * get(u, a);
-        let f_b = self.k_b * delta;
+        let f_b = self.ends.end_force(&get(u, a), &get(u, b));
         for k in 1..self.nodes.len() - 1 {
             let (p, q) = (self.nodes[k - 1], self.nodes[k]);
-            let xq = x(model, q);
-            let f_q = rigid_arm(&(xb - xq)).transpose() * f_b;
-            let uq = rigid_arm(&(xq - x(model, p))) * get(u, p) + self.flex[k - 1] * f_q;
+            let (link, c_q) = &self.links[k - 1];
+            let f_q = rigid_arm(&(self.ends.xb - link.q)).transpose() * f_b;
+            let uq = link.carry(&get(u, p), c_q, &f_q);
             u[6 * q..6 * q + 6].copy_from_slice(uq.as_slice());
         }
         f_b
@@ -259,25 +253,20 @@ impl Chain {
 
     /// The results of the chain's elements (in chain order) for the end force `f_b` of
     /// [`Chain::recover`]: element from p to q carries f_q = R(x_b − x_q)ᵀ f_b at q and
-    /// f_p = −R(x_q − x_p)ᵀ f_q at p, strain energy ½ f_qᵀ C_q f_q.
-    pub fn element_results(&self, model: &Model, f_b: &Vector6<f64>) -> Result<Vec<ElementResult>, FemError> {
-        let xb = x(model, *self.nodes.last().expect("chain end"));
+    /// f_p = −R(x_q − x_p)ᵀ f_q at p ([`Link::end_forces`]), strain energy ½ f_qᵀ C_q f_q.
+    pub fn element_results(&self, model: &Model, f_b: &Vector6<f64>) -> Vec<ElementResult> {
         let mut out = Vec::with_capacity(self.elements.len());
         for (k, &ie) in self.elements.iter().enumerate() {
-            let (p, q) = (self.nodes[k], self.nodes[k + 1]);
-            let xq = x(model, q);
-            let f_q = rigid_arm(&(xb - xq)).transpose() * f_b;
-            let f_p = -(rigid_arm(&(xq - x(model, p))).transpose() * f_q);
-            let (lam, _) = model.element_frame(ie)?;
-            let t = t6(&lam);
-            let (l_p, l_q) = (t * f_p, t * f_q);
-            let (f1, f2) = if model.elements[ie].end_nodes()[1] == q {
+            let (link, c_q) = &self.links[k];
+            let (f_p, f_q) = link.end_forces(&self.ends.xb, f_b);
+            let (l_p, l_q) = (link.t * f_p, link.t * f_q);
+            let (f1, f2) = if model.elements[ie].end_nodes()[1] == self.nodes[k + 1] {
                 (l_p, l_q)
             } else {
                 (l_q, l_p)
             };
             let f: [f64; 12] = std::array::from_fn(|i| if i < 6 { f1[i] } else { f2[i - 6] });
-            let energy = 0.5 * f_q.dot(&(self.flex[k] * f_q));
+            let energy = 0.5 * f_q.dot(&(c_q * f_q));
             out.push(recovery::from_local_end_forces_with(
                 &model.elements[ie],
                 &f,
@@ -285,6 +274,9 @@ impl Chain {
                 self.props[k].as_ref(),
             ));
         }
-        Ok(out)
+        out
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -331,3 +331,64 @@ impl LinearStage<'_> {
         r
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fem::chain::Condensed;
+    use crate::hinge::{Contour, HingeSpec};
+    use crate::kinematics::Prs;
+
+    /// The stage's legs condensed without a model ([`ValidStage::linear`], its own fixed-size
+    /// copy of the chain arithmetic) and the same legs found as serial chains of the stage's FE
+    /// model and condensed by [`crate::fem::chain`] (J. S. Przemieniecki, Theory of Matrix
+    /// Structural Analysis, 1968, §6.5 and §9.6): the same C_b⁻¹ to roundoff (1e-12 of its
+    /// largest entry, per leg), for 1 and 4 leg beams and two notch families.
+    #[test]
+    fn stage_leg_and_mesh_chain_have_the_same_stiffness() {
+        for (leg_elements, notch) in [
+            (1, Contour::Circular { r: 5.0, t: 1.5 }),
+            (4, Contour::Leaf { l: 8.0, t: 1.0 }),
+        ] {
+            let design = StageDesign {
+                prs: Prs::new(100.0, 45.0, 50f64.to_radians(), 10f64.to_radians()).unwrap(),
+                leg_w: 8.0,
+                leg_h: 9.0,
+                revolute: HingeSpec::in_blank(notch, 8.0, 9.0, 0.0),
+                spherical: HingeSpec::in_blank(Contour::SphericalNeck { l: 4.0, t: 3.0, r: 2.0 }, 8.0, 8.0, 0.0),
+                material: crate::material::Material::AL7075,
+                ideal_joints: false,
+                leg_elements,
+            };
+            let valid = design.validate().unwrap();
+            let lin = valid.linear().unwrap();
+            let stage = valid.build();
+            let c = Condensed::new(&stage.model, &[], &[stage.platform]).unwrap();
+            assert_eq!(c.chains.len(), 3, "one chain per leg");
+            // zip-checked: both are [_; 3].
+            for (leg, ids) in lin.legs.iter().zip(&stage.legs) {
+                let chain = c.chains.iter().find(|ch| ch.nodes[0] == ids.slider).unwrap();
+                assert_eq!(*chain.nodes.last().unwrap(), ids.sph_top, "leg {}: chain ends", leg.i);
+                assert_eq!(
+                    chain.elements.len(),
+                    leg_elements + 2,
+                    "leg {}: hinge, beams, neck",
+                    leg.i
+                );
+                let (mesh, own) = (chain.ends().k_b, leg.k);
+                let diff = (mesh - own).amax();
+                eprintln!(
+                    "leg {} ({leg_elements} beams): |ΔK_b| {diff:e} of {:e}",
+                    leg.i,
+                    own.amax()
+                );
+                assert!(
+                    diff <= 1e-12 * own.amax(),
+                    "leg {} ({leg_elements} beams): |ΔK_b| {diff:e} of {:e}",
+                    leg.i,
+                    own.amax()
+                );
+            }
+        }
+    }
+}

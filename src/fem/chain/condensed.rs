@@ -75,7 +75,7 @@ impl Condensed {
                 }
             })?;
             let t = t6(&lam);
-            let local = t * c.c_b * t.transpose();
+            let local = t * c.ends().c_b * t.transpose();
             let local = (local + local.transpose()) * 0.5;
             out.add_element(Element::Flex(FlexElement {
                 nodes: [map(a), map(b)],
@@ -166,8 +166,9 @@ impl Condensed {
         }
         let mut elements: Vec<Option<ElementResult>> = vec![None; original.elements.len()];
         for c in &self.chains {
-            let f_b = c.recover(original, &mut u);
-            for (&ie, res) in c.elements.iter().zip(c.element_results(original, &f_b)?) {
+            let f_b = c.recover(&mut u);
+            // zip-checked: element_results gives one result per chain element.
+            for (&ie, res) in c.elements.iter().zip(c.element_results(original, &f_b)) {
                 elements[ie] = Some(res);
             }
         }
