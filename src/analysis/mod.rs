@@ -1,41 +1,30 @@
 //! Analyses: validated case → typed result → JSON/Markdown/CSV views.
 
-pub mod case_file;
-mod case_shape;
-pub mod compliance;
+pub mod common;
 pub mod design;
-pub mod export;
-pub mod fem_path;
+pub mod dispatch;
 pub mod fem_static;
 pub mod fem_vs_fkp;
-pub mod finite;
-pub mod frf_files;
-pub mod frf_result;
 pub mod hinge;
-pub mod hinge_fatigue;
-pub mod kind;
-pub mod kinds;
-pub mod kinds_list;
 pub mod kinematics;
-pub mod line;
 pub mod modal;
-pub mod path_rows;
-pub mod registry;
 pub mod stage;
-mod stage_modes;
-pub mod stage_report;
-pub mod sweep_plot;
-pub mod track;
-pub mod units;
-pub mod vtu;
-pub mod warn;
 
-use registry::analysis_modules;
-kinds_list::analyses!(analysis_modules);
+use dispatch::registry::analysis_modules;
+dispatch::kinds_list::analyses!(analysis_modules);
 
-pub use case_file::{load, load_resolved, parse, parse_in, parse_value, schema, Case, Parsed, ANALYSES};
-pub use kind::{Analysis, Ctx, DynAnalysis};
-pub use warn::{hinge_warnings, SMALL_STRAIN};
+pub use common::kind::{Analysis, Ctx, DynAnalysis};
+pub use common::warn::{hinge_warnings, SMALL_STRAIN};
+pub use dispatch::case_file::{load, load_resolved, parse, parse_in, parse_value, schema, Case, Parsed, ANALYSES};
+
+// The module paths of the flat layout (before one folder per kind), kept for code written
+// against them; new code names the folders.
+pub use common::{finite, kind, line, units, vtu, warn};
+pub use dispatch::{case_file, export, kinds, kinds_list, registry};
+pub use fem_static::{compliance, nonlinear_path as fem_path, path_rows, track};
+pub use frf::{files as frf_files, result as frf_result};
+pub use hinge::fatigue as hinge_fatigue;
+pub use stage::{report as stage_report, sweep_plot};
 
 use crate::case::{CaseError, MaterialSpec};
 use crate::fem::SolverCache;
@@ -155,7 +144,7 @@ pub fn to_checked_json<T: serde::Serialize>(v: &T) -> Result<serde_json::Value, 
 
 /// The check of [`to_checked_json`] alone (no allocation when every number is finite).
 pub fn check_finite<T: serde::Serialize>(v: &T) -> Result<(), AnalysisError> {
-    finite::first_non_finite(v).map_err(|(path, msg)| {
+    common::finite::first_non_finite(v).map_err(|(path, msg)| {
         AnalysisError::new(
             if path.is_empty() || path == "." { "output".to_string() } else { path },
             format!("the computed number is not finite ({msg}): the input is outside the range the model can represent (overflow) or the model is degenerate"),
@@ -190,7 +179,7 @@ pub(crate) fn kind_refused(case: &Case, rule: &str) -> CaseError {
 
 /// Validates a case (everything checked before solving).
 pub fn check(case: &Case) -> Result<(), CaseError> {
-    registry::find(case.analysis())
+    dispatch::registry::find(case.analysis())
         .and_then(|e| e.check(case))
         .unwrap_or_else(|| Err(unregistered(case)))
 }
@@ -209,7 +198,7 @@ pub fn run_with_files(case: &Case) -> Result<Outcome, RunError> {
 
 /// [`run`] with the caller's context (a batch driver passes its worker's solver cache).
 pub fn run_with(case: &Case, ctx: &mut Ctx) -> Result<Outcome, RunError> {
-    let Some(e) = registry::find(case.analysis()) else {
+    let Some(e) = dispatch::registry::find(case.analysis()) else {
         return Err(unregistered(case).into());
     };
     let mut out = e.run(case, ctx).unwrap_or_else(|| Err(unregistered(case).into()))?;
@@ -238,7 +227,7 @@ pub fn run_with(case: &Case, ctx: &mut Ctx) -> Result<Outcome, RunError> {
 /// "yield" (MPa), "allowable" (MPa)}`; `name` is the built-in name or `"custom"`; an unlimited
 /// yield or allowable stress is `null`.
 fn material_json(spec: &MaterialSpec, m: &Material) -> serde_json::Value {
-    serde_json::to_value(line::MaterialEcho::of(spec, m)).unwrap_or(serde_json::Value::Null)
+    serde_json::to_value(common::line::MaterialEcho::of(spec, m)).unwrap_or(serde_json::Value::Null)
 }
 
 /// One Markdown line per material used.

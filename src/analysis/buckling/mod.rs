@@ -4,8 +4,8 @@
 //! and their mode shapes, reports, VTK file of the shapes.
 
 use crate::case::fields::case_struct;
-use super::kind::{Analysis, Ctx, UsedMaterial};
-use super::kind::named_materials;
+use crate::analysis::common::kind::{Analysis, Ctx, UsedMaterial};
+use crate::analysis::common::kind::named_materials;
 use super::{AnalysisError, Report, RunError};
 use crate::case::fem_case::{modes_of, read_model, shapes_default, split, ModalOptions};
 use crate::case::{from_value, CaseError};
@@ -204,7 +204,7 @@ fn warnings(model: &Model, r: &BucklingResult) -> Vec<String> {
 /// VTK file of the mode shapes (`load_factor` per mode).
 pub fn vtu(model: &Model, r: &BucklingResults) -> Result<Vec<u8>, AnalysisError> {
     let modes: Vec<(f64, &[[f64; 6]])> = r.modes.iter().map(|m| (m.load_factor, m.shape.as_slice())).collect();
-    super::vtu::modes_vtu_named(model, &modes, &Default::default(), "load_factor")
+    crate::analysis::common::vtu::modes_vtu_named(model, &modes, &Default::default(), "load_factor")
 }
 
 /// Markdown/CSV views.
@@ -246,7 +246,7 @@ impl Analysis for Buckling {
         let user = case.model.nodes.len();
         r.model.extend(super::fem_static::inner_nodes::hide_in_shapes(shapes, &model, &hinges, user));
         ctx.warnings = warnings(&model, &r);
-        ctx.warnings.extend(super::warn::fewer_modes(case.modes, raw.modes.len(), Some(raw.n_eq)));
+        ctx.warnings.extend(crate::analysis::common::warn::fewer_modes(case.modes, raw.modes.len(), Some(raw.n_eq)));
         if ctx.with_files {
             ctx.files = vec![("buckling_modes.vtu".to_string(), vtu(&model, &raw)?)];
         }

@@ -6,10 +6,10 @@
 //! Adding an analysis kind: one module implementing [`Analysis`] and one line in the list of
 //! kinds, [`super::kinds_list`].
 
-use super::case_file::{Case, CaseOf};
 use super::line::{Echoed, LineTarget, MaterialEcho};
 use super::units::UnitOf;
-use super::{Files, Report, RunError};
+use crate::analysis::dispatch::case_file::{Case, CaseOf};
+use crate::analysis::{Files, Report, RunError};
 use crate::case::{CaseError, MaterialSpec};
 use crate::fem::SolverCache;
 use crate::material::Material;
@@ -145,7 +145,7 @@ pub fn run_typed<A: Analysis>(case: &A::Case, ctx: &mut Ctx) -> Result<Typed<A::
         report: if ctx.with_report {
             A::report(&result)
         } else {
-            super::Report::default()
+            crate::analysis::Report::default()
         },
         warnings,
         files: std::mem::take(&mut ctx.files),
@@ -183,7 +183,7 @@ pub trait DynAnalysis: Sync {
     /// [`Analysis::check`] of a parsed case of this kind (`None` if the case is another kind).
     fn check(&self, case: &Case) -> Option<Result<(), CaseError>>;
     /// Runs a parsed case of this kind into its outcome (`None` if the case is another kind).
-    fn run(&self, case: &Case, ctx: &mut Ctx) -> Option<Result<super::Outcome, RunError>>;
+    fn run(&self, case: &Case, ctx: &mut Ctx) -> Option<Result<crate::analysis::Outcome, RunError>>;
     /// [`Analysis::materials`].
     fn materials(&self, case: &Case) -> Vec<UsedMaterial>;
     /// [`Analysis::sweep_files`].
@@ -224,11 +224,11 @@ impl<A: CaseOf> DynAnalysis for Entry<A> {
     fn check(&self, case: &Case) -> Option<Result<(), CaseError>> {
         A::case_of(case).map(A::check)
     }
-    fn run(&self, case: &Case, ctx: &mut Ctx) -> Option<Result<super::Outcome, RunError>> {
+    fn run(&self, case: &Case, ctx: &mut Ctx) -> Option<Result<crate::analysis::Outcome, RunError>> {
         let c = A::case_of(case)?;
         Some(run_typed::<A>(c, ctx).and_then(|t| {
-            Ok(super::Outcome {
-                json: super::to_checked_json(&t.result)?,
+            Ok(crate::analysis::Outcome {
+                json: crate::analysis::to_checked_json(&t.result)?,
                 warnings: t.warnings,
                 report: t.report,
                 files: t.files,
@@ -259,7 +259,7 @@ impl<A: CaseOf> DynAnalysis for Entry<A> {
         let mut run = || -> Result<(), RunError> {
             // The sweep's context renders no report and no files: only the result and warnings.
             let Typed { result, warnings, .. } = run_typed::<A>(c, ctx)?;
-            super::check_finite(&result)?;
+            crate::analysis::check_finite(&result)?;
             let material = match spec_material {
                 Some(spec) => Some((spec, spec.resolve("material")?)),
                 None => None,
@@ -271,7 +271,7 @@ impl<A: CaseOf> DynAnalysis for Entry<A> {
             };
             to.line
                 .write(&echoed, to.spec)
-                .map_err(|e| super::AnalysisError::new("output", e.to_string()).into())
+                .map_err(|e| crate::analysis::AnalysisError::new("output", e.to_string()).into())
         };
         Some(run())
     }

@@ -9,8 +9,8 @@
 //! ([`Analysis::column_units`](crate::analysis::Analysis::column_units)); a path the type does not declare has no unit
 //! (text, flags and identifiers).
 
-use super::hinge::HingeOut;
-use super::stage::StageResult;
+use crate::analysis::hinge::HingeOut;
+use crate::analysis::stage::StageResult;
 
 /// The unit of a number by its path in the JSON (object keys and array indices as text).
 pub type UnitOf = fn(&[&str]) -> Option<&'static str>;

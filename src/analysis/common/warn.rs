@@ -1,7 +1,7 @@
 //! Warnings of the analyses: hinge calibration ranges, the small-strain and small-displacement
 //! assumptions, stresses above the allowable (unit slips of materials: [`crate::case::material::plausibility_warnings`]).
 
-use super::fem_static::{StaticCaseRow, Utilisation};
+use crate::analysis::fem_static::{StaticCaseRow, Utilisation};
 
 /// Calibration-range warnings of a hinge, prefixed with where it sits in the case file.
 pub fn hinge_warnings(at: &str, spec: &crate::hinge::HingeSpec) -> Vec<String> {
@@ -187,7 +187,7 @@ pub fn single_segment_hinge_warnings(hinges: &[crate::case::mesh::BuiltHinge]) -
 /// `stage` load case `ic`: a warning when its peak stress is above the allowable
 /// (`factor_at_allowable` < 1), naming the hinge (kind and leg) or the leg beams that carry it.
 /// Nothing is formatted (nor allocated) when the case is within its allowable.
-pub fn stage_allowable_warning(ic: usize, c: &super::stage::StageRow) -> Option<String> {
+pub fn stage_allowable_warning(ic: usize, c: &crate::analysis::stage::StageRow) -> Option<String> {
     if !(0.0..1.0).contains(&c.factor_at_allowable) || c.max_von_mises <= 0.0 {
         return None;
     }

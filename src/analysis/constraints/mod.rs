@@ -6,7 +6,7 @@ mod report;
 mod text;
 
 use crate::case::fields::case_struct;
-use super::kind::{Analysis, Ctx, UsedMaterial};
+use crate::analysis::common::kind::{Analysis, Ctx, UsedMaterial};
 use super::{AnalysisError, Report, RunError};
 use crate::case::fem_case::{model_rules, parse_with_model};
 use crate::case::gmsh::GmshMapping;
@@ -195,7 +195,7 @@ impl Analysis for ConstraintsAnalysis {
         report::report(r)
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
-        super::kind::named_materials(&case.model.materials)
+        crate::analysis::common::kind::named_materials(&case.model.materials)
     }
 }
 

@@ -5,7 +5,7 @@
 //! The result JSON (`result.json`) is the superelement file a host mesh case attaches with a
 //! `superelement` element ([`crate::case::mesh::superelement`]).
 
-use super::kind::{named_materials, Analysis, Ctx, UsedMaterial};
+use crate::analysis::common::kind::{named_materials, Analysis, Ctx, UsedMaterial};
 use super::{AnalysisError, Report, RunError};
 use crate::case::fem_case::{mesh_rules, read_model, split, MODEL_FIELDS};
 use crate::case::mesh::MeshSpec;

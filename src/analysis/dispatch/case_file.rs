@@ -4,14 +4,14 @@
 
 use super::kinds_list::analyses;
 #[allow(unused_imports)]
-use super::*; // the modules the list's paths start from
+use crate::analysis::*; // the modules the list's paths start from
 use crate::case::params::{self, Parameters};
 use crate::case::{from_value, limits, short, CaseError, Source};
 use serde_json::Value;
 use std::path::Path;
 
 /// The analysis `Self` of one line of the list of kinds: its case inside a parsed [`Case`].
-pub trait CaseOf: super::Analysis {
+pub trait CaseOf: crate::analysis::Analysis {
     /// The `analysis` name in case files (the line's `"name"`).
     const KIND: &'static str;
     /// The case of this kind inside a parsed case file, if it is one.
@@ -118,9 +118,9 @@ impl Parsed {
     }
 
     /// [`Self::locate`] for the error of a run.
-    pub fn locate_run(&self, e: super::RunError) -> super::RunError {
+    pub fn locate_run(&self, e: crate::analysis::RunError) -> crate::analysis::RunError {
         match e {
-            super::RunError::Case(c) => super::RunError::Case(self.locate(c)),
+            crate::analysis::RunError::Case(c) => crate::analysis::RunError::Case(self.locate(c)),
             other => other,
         }
     }
@@ -166,7 +166,7 @@ pub fn parse_value(value: Value, base: Option<&Path>) -> Result<Case, CaseError>
 /// whose designs differ from one already checked only in scalar values may skip it
 /// ([`parse_resolved`] with `check_arrays` false).
 pub fn check_shape(value: &Value) -> Result<(), CaseError> {
-    super::case_shape::refuse_positional(value, schema)
+    crate::analysis::common::case_shape::refuse_positional(value, schema)
 }
 
 /// [`parse_value`] without [`check_shape`], for a value whose arrays were checked already.

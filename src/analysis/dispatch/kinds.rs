@@ -1,9 +1,11 @@
 //! The [`Analysis`] implementations of the built-in kinds: each wires a case shape of
 //! [`crate::case`] to the run and report functions of its analysis module.
 
-use super::kind::{named_materials, Analysis, Ctx, SweepFile, UsedMaterial};
-use super::units::{self, UnitOf};
-use super::{design, fem_static, fem_vs_fkp, hinge, kinematics, modal, stage, stage_report, warn, Report, RunError};
+use crate::analysis::common::kind::{named_materials, Analysis, Ctx, SweepFile, UsedMaterial};
+use crate::analysis::common::units::{self, UnitOf};
+use crate::analysis::common::warn;
+use crate::analysis::stage::report as stage_report;
+use crate::analysis::{design, fem_static, fem_vs_fkp, hinge, kinematics, modal, stage, Report, RunError};
 use crate::case::{self, CaseError, MaterialSpec};
 
 fn one_material(spec: &MaterialSpec) -> Vec<UsedMaterial> {
@@ -64,7 +66,7 @@ impl Analysis for Hinge {
             report.markdown += &hinge::damping_report(d);
         }
         if let Some(f) = &r.fatigue {
-            report.markdown += &super::hinge_fatigue::report(f);
+            report.markdown += &crate::analysis::hinge::fatigue::report(f);
         }
         report
     }
@@ -125,7 +127,7 @@ impl Analysis for Stage {
         &STAGE_SWEEP_FILES
     }
     fn render_sweep_file(_file: &SweepFile, lines: &[String]) -> Option<String> {
-        super::sweep_plot::stage_sweep_svg(lines)
+        crate::analysis::stage::sweep_plot::stage_sweep_svg(lines)
     }
     fn column_units() -> Option<(UnitOf, UnitOf)> {
         Some(units::of::<stage::StageResult>())
@@ -245,10 +247,12 @@ impl Analysis for Static {
         }
         let (model, hinges, case_index) = case.model.build_indexed(true, case.nonlinear)?;
         let (mut r, raw, path_files) = match case.steps.filter(|_| case.nonlinear) {
-            Some(steps) => super::fem_path::solve(&model, case, steps, ctx.with_files),
+            Some(steps) => crate::analysis::fem_static::nonlinear_path::solve(&model, case, steps, ctx.with_files),
             None => fem_static::solve_with(&model, ctx.cache).map(|(r, raw)| (r, raw, Vec::new())),
         }
-        .map_err(|e| fem_static::inner_nodes::label(super::constraints::singular_hint(e, &case.model), &hinges))?;
+        .map_err(|e| {
+            fem_static::inner_nodes::label(crate::analysis::constraints::singular_hint(e, &case.model), &hinges)
+        })?;
         fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
         fem_static::add_headlines(&mut r, &model, &case_index, &hinges);
         r.model.extend(warn::default_segments_note(&hinges));
@@ -266,7 +270,7 @@ impl Analysis for Static {
                 .load_cases
                 .iter()
                 .filter_map(|c| Some((c.name.as_str(), c.track.as_ref()?)));
-            ctx.files.extend(super::track::files(tracked));
+            ctx.files.extend(crate::analysis::fem_static::track::files(tracked));
             ctx.files.extend(path_files);
         }
         for (ic, row) in r.load_cases.iter_mut().enumerate() {

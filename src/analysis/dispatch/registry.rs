@@ -1,9 +1,9 @@
 //! The analysis kinds this build runs, generated from the one list of kinds,
 //! [`super::kinds_list`] (a line there registers a kind for parsing and running).
 
-use super::kind::{DynAnalysis, Entry};
+use crate::analysis::common::kind::{DynAnalysis, Entry};
 #[allow(unused_imports)]
-use super::*;
+use crate::analysis::*;
 
 /// Expands the list of kinds on the `analysis` side: the registry.
 macro_rules! analysis_side {

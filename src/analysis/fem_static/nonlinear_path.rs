@@ -2,9 +2,9 @@
 //! (result `trace`, `NAME_path.csv`, `NAME_path.svg`) and the located critical points (result
 //! `critical_points`, `NAME_critical.vtu`).
 
-use super::fem_static::{self, file_stem, StaticResult};
 pub use super::path_rows::{CriticalPointRow, TraceRow};
-use super::{AnalysisError, Files};
+use crate::analysis::fem_static::{self, file_stem, StaticResult};
+use crate::analysis::{AnalysisError, Files};
 use crate::case::mesh::{path_control, StaticCase};
 use crate::fem::{self, CriticalKind, CriticalPoint, Model, PathPoint};
 
@@ -68,7 +68,8 @@ pub fn solve(
             if !critical.is_empty() {
                 let modes: Vec<(f64, &[[f64; 6]])> =
                     critical.iter().map(|c| (c.load_factor, c.mode.as_slice())).collect();
-                let vtu = super::vtu::modes_vtu_named(model, &modes, &Default::default(), "load_factor")?;
+                let vtu =
+                    crate::analysis::common::vtu::modes_vtu_named(model, &modes, &Default::default(), "load_factor")?;
                 files.push((format!("{stem}_critical.vtu"), vtu));
             }
         }

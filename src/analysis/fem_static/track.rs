@@ -288,7 +288,7 @@ pub fn plot(name: &str, t: &TrackRow) -> String {
 
 /// The CSV and SVG files of the tracked load cases `(name, rows)` (`track_<case>.csv`,
 /// `.svg`).
-pub fn files<'a>(cases: impl Iterator<Item = (&'a str, &'a TrackRow)>) -> super::Files {
+pub fn files<'a>(cases: impl Iterator<Item = (&'a str, &'a TrackRow)>) -> crate::analysis::Files {
     let mut out = Vec::new();
     for (name, t) in cases {
         let stem = crate::report::vtk::file_stem(name);

@@ -2,20 +2,20 @@
 //! `bode_phase.svg`), the state-space model as `state_space.json` and in Matrix Market
 //! (`A.mtx`, `B.mtx`, `C.mtx`, `D.mtx`, by `sprs::io`).
 
-use super::frf_result::FrfResult;
-use super::{AnalysisError, Files, RunError};
+use super::result::FrfResult;
+use crate::analysis::{AnalysisError, Files, RunError};
 use crate::fem::state_space::StateSpace;
 use crate::report::axis::Scale;
 use crate::report::svg;
 
 /// The files of a run.
 pub fn files(r: &FrfResult, ss: &StateSpace) -> Result<Files, RunError> {
-    let mut out: Files = vec![("frf.csv".to_string(), super::frf_result::csv(r).into_bytes())];
+    let mut out: Files = vec![("frf.csv".to_string(), super::result::csv(r).into_bytes())];
     // Pairs whose response is roundoff (e.g. zero by symmetry: peak below 1e-9 of the largest)
     // are left out of the plots, which would otherwise span fifteen decades of noise.
-    let peak = |p: &super::frf_result::Pair| p.magnitude.iter().fold(0.0f64, |a, &b| a.max(b));
+    let peak = |p: &super::result::Pair| p.magnitude.iter().fold(0.0f64, |a, &b| a.max(b));
     let top = r.response.iter().map(peak).fold(0.0f64, f64::max);
-    let shown: Vec<&super::frf_result::Pair> = r.response.iter().filter(|p| peak(p) > 1e-9 * top).collect();
+    let shown: Vec<&super::result::Pair> = r.response.iter().filter(|p| peak(p) > 1e-9 * top).collect();
     let names: Vec<String> = shown.iter().map(|p| format!("{} → {}", p.input, p.output)).collect();
     let f = &r.frequencies_hz;
     let mag: Vec<Vec<(f64, f64)>> = shown

@@ -7,7 +7,7 @@
 //! Units: inputs in N (N·mm for moments); outputs in mm and degrees, so H is in mm/N, °/N,
 //! mm/(N·mm) or °/(N·mm); the state-space model's time unit is the second.
 
-use super::Report;
+use crate::analysis::Report;
 use crate::report::markdown::Table;
 use nalgebra::DMatrix;
 use serde::Serialize;

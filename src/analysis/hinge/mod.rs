@@ -9,6 +9,8 @@ use crate::material::Material;
 use crate::report::markdown::{sig, Table};
 use serde::Serialize;
 
+pub mod fatigue;
+
 /// Result of the `hinge` analysis: the characterisation, plus the large-rotation curve when
 /// the case asks for it.
 #[derive(Debug, Clone, Serialize)]
@@ -23,7 +25,7 @@ pub struct HingeOut {
     pub damping: Option<DampingOut>,
     /// Fatigue assessment (`"fatigue"` only).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub fatigue: Option<super::hinge_fatigue::FatigueOut>,
+    pub fatigue: Option<fatigue::FatigueOut>,
 }
 
 /// The joint damping identified from a simulated step response (Yu, Lu and Hao (2016), §4.1).
@@ -128,7 +130,7 @@ pub fn solve(case: &HingeCase) -> Result<HingeOut, super::RunError> {
                 .hinge
                 .profile()
                 .map_err(|e| super::RunError::Case(hinge_error(&e, "hinge", "material")))?;
-            Some(super::hinge_fatigue::assess(spec, &m, &f, &profile, &result))
+            Some(fatigue::assess(spec, &m, &f, &profile, &result))
         }
         None => None,
     };

@@ -230,7 +230,7 @@ pub fn mark_rigid_body(model: &Model, raw: &ModalResults, r: &mut ModalResult) {
 /// (field data `frequency_hz`); see [`super::vtu`].
 pub fn vtu(model: &Model, r: &ModalResults) -> Result<Vec<u8>, AnalysisError> {
     let modes: Vec<(f64, &[[f64; 6]])> = r.modes.iter().map(|m| (m.frequency_hz, m.shape.as_slice())).collect();
-    super::vtu::modes_vtu(model, &modes, &Default::default())
+    crate::analysis::common::vtu::modes_vtu(model, &modes, &Default::default())
 }
 
 /// Markdown/CSV views.

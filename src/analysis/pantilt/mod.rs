@@ -9,7 +9,7 @@
 mod report;
 mod solve;
 
-use super::kind::{Analysis, Ctx};
+use crate::analysis::common::kind::{Analysis, Ctx};
 use super::{Report, RunError};
 use crate::case::pantilt::PanTiltCase;
 use crate::case::CaseError;

@@ -11,7 +11,7 @@
 mod report;
 mod solve;
 
-use super::kind::{Analysis, Ctx};
+use crate::analysis::common::kind::{Analysis, Ctx};
 use super::{Report, RunError};
 use crate::case::prs_stiffness::PrsStiffnessCase;
 use crate::case::CaseError;

@@ -1,12 +1,16 @@
 //! The `stage` analysis (the `fem_vs_fkp` comparison is [`super::fem_vs_fkp`]).
 
-pub use super::stage_modes::stage_modes;
-use super::stage_modes::stage_modes_with_model;
+mod modes;
+pub mod report;
+pub mod sweep_plot;
+
 use super::{AnalysisError, RunError};
 use crate::case::stage::{stage_error, StageCase};
 use crate::fem::inline_vec::InlineVec;
 use crate::kinematics::Pose;
 use crate::stage::{self, Drive, StageCaseResult, StageModel, StageResponse};
+pub use modes::stage_modes;
+use modes::stage_modes_with_model;
 use serde::Serialize;
 use std::sync::Arc;
 
@@ -419,7 +423,7 @@ pub fn run_stage_with(
                 // The nonlinear solve splits each hinge into co-rotational segments (nodes added
                 // after the model's own): the file shows the model's nodes, a hinge as one line.
                 let vm = super::fem_static::von_mises_of(&c.fe, &cell);
-                let text = super::vtu::static_vtu(&s.model, &c.fe.displacements, &vm, &drawn)?;
+                let text = crate::analysis::common::vtu::static_vtu(&s.model, &c.fe.displacements, &vm, &drawn)?;
                 out_files.push((
                     format!("stage_{}.vtu", super::fem_static::file_stem(&c.name)),
                     text.into_bytes(),
@@ -437,7 +441,10 @@ pub fn run_stage_with(
             if files {
                 let modes: Vec<(f64, &[[f64; 6]])> =
                     raw.modes.iter().map(|m| (m.frequency_hz, m.shape.as_slice())).collect();
-                out_files.push(("modes.vtu".to_string(), super::vtu::modes_vtu(&model, &modes, &drawn)?));
+                out_files.push((
+                    "modes.vtu".to_string(),
+                    crate::analysis::common::vtu::modes_vtu(&model, &modes, &drawn)?,
+                ));
             }
             modes = Some(rows);
         }
@@ -459,16 +466,16 @@ pub fn run_stage_with(
 /// (it also has the rigid-link lines from its centre) and each slider as a line from its node
 /// along −eᵢ, two leg heights long (the slider is a rigid body guided along eᵢ with its
 /// rotations fixed, so the whole line translates with its node).
-fn drawn_bodies(s: &StageModel) -> super::vtu::Drawn {
+fn drawn_bodies(s: &StageModel) -> crate::analysis::common::vtu::Drawn {
     let tops = s.legs.map(|leg| leg.sph_top);
-    super::vtu::Drawn {
+    crate::analysis::common::vtu::Drawn {
         cells: vec![crate::report::vtk::Cell::Triangle(tops)],
         lines: s
             .legs
             .iter()
             .map(|leg| {
                 let x = nalgebra::Vector3::from(s.model.nodes[leg.slider]) - 2.0 * s.design.leg_h * leg.e;
-                super::vtu::BodyLine {
+                crate::analysis::common::vtu::BodyLine {
                     node: leg.slider,
                     point: [x[0], x[1], x[2]],
                 }

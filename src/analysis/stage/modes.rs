@@ -1,13 +1,17 @@
 //! Natural modes of the stage (the `modes` of a `stage` case), actuators locked.
 
-use super::RunError;
+use crate::analysis::RunError;
 use crate::case::stage::StageCase;
 use crate::stage;
 
 /// Modes of the stage with the actuators locked. Platform: point mass at P, a disc of radius
 /// b and thickness t (default 10 mm) unless `platform_mass` is given: m = ρπb²t,
 /// Ixx = Iyy = m(3b² + t²)/12, Izz = mb²/2 (platform normal = global z at home).
-pub fn stage_modes(case: &StageCase, s: &stage::StageModel, n: usize) -> Result<Vec<super::modal::ModeRow>, RunError> {
+pub fn stage_modes(
+    case: &StageCase,
+    s: &stage::StageModel,
+    n: usize,
+) -> Result<Vec<crate::analysis::modal::ModeRow>, RunError> {
     Ok(stage_modes_with_model(case, s, n)?.0)
 }
 
@@ -19,7 +23,7 @@ pub(super) fn stage_modes_with_model(
     n: usize,
 ) -> Result<
     (
-        Vec<super::modal::ModeRow>,
+        Vec<crate::analysis::modal::ModeRow>,
         crate::fem::Model,
         crate::fem::modal::ModalResults,
     ),
@@ -39,6 +43,6 @@ pub(super) fn stage_modes_with_model(
         mass,
         inertia: [ixx, ixx, mass * b * b / 2.0],
     });
-    let (r, raw) = super::modal::solve(&model, n, None)?;
+    let (r, raw) = crate::analysis::modal::solve(&model, n, None)?;
     Ok((r.modes, model, raw))
 }

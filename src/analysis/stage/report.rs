@@ -1,7 +1,7 @@
 //! Markdown and CSV views of a `stage` result.
 
-use super::stage::StageResult;
-use super::Report;
+use super::StageResult;
+use crate::analysis::Report;
 use crate::report::markdown::{dms, sig, Table};
 
 /// Markdown/CSV of a stage result.
@@ -15,7 +15,7 @@ pub fn stage_report(r: &StageResult) -> Report {
         }
     );
     for c in &r.load_cases {
-        if let Some(w) = super::fem_static::stability_warning(&c.name, c.stable, c.critical_load_factor) {
+        if let Some(w) = crate::analysis::fem_static::stability_warning(&c.name, c.stable, c.critical_load_factor) {
             md += &w;
         }
     }
