@@ -9,9 +9,6 @@
 //! ([`Analysis::column_units`](crate::analysis::Analysis::column_units)); a path the type does not declare has no unit
 //! (text, flags and identifiers).
 
-use crate::analysis::hinge::HingeOut;
-use crate::analysis::stage::StageResult;
-
 /// The unit of a number by its path in the JSON (object keys and array indices as text).
 pub type UnitOf = fn(&[&str]) -> Option<&'static str>;
 
@@ -31,10 +28,10 @@ pub fn of<U: Units>() -> (UnitOf, UnitOf) {
 }
 
 /// A rotational stiffness (moment per radian).
-const K_ROT: &str = "N*mm/rad";
+pub const K_ROT: &str = "N*mm/rad";
 
 /// Entry (i, j) of a 6×6 compliance, rows/columns (ux, uy, uz, rx, ry, rz).
-fn compliance_unit(i: &str, j: &str) -> Option<&'static str> {
+pub fn compliance_unit(i: &str, j: &str) -> Option<&'static str> {
     let rot = |k: &str| k.parse::<usize>().ok().filter(|&k| k < 6).map(|k| k >= 3);
     Some(match (rot(i)?, rot(j)?) {
         (false, false) => "mm/N",
@@ -46,7 +43,7 @@ fn compliance_unit(i: &str, j: &str) -> Option<&'static str> {
 }
 
 /// The material echoed in a result (`material.E`, …) or given in a case.
-fn material_unit(field: &str) -> Option<&'static str> {
+pub fn material_unit(field: &str) -> Option<&'static str> {
     Some(match field {
         "E" | "yield" | "allowable" => "MPa",
         "nu" => "-",
@@ -56,7 +53,7 @@ fn material_unit(field: &str) -> Option<&'static str> {
 }
 
 /// A hinge's stiffness set ([`crate::hinge::Stiffness`]): the hinge and its notch alone.
-fn stiffness_unit(path: &[&str]) -> Option<&'static str> {
+pub fn stiffness_unit(path: &[&str]) -> Option<&'static str> {
     Some(match path {
         ["k_bend" | "k_bend_off" | "k_torsion" | "k_torsion_saint_venant"] => K_ROT,
         ["k_axial"] => "N/mm",
@@ -69,103 +66,6 @@ fn stiffness_unit(path: &[&str]) -> Option<&'static str> {
 }
 
 /// Every number of a hinge specification is a length (R, t, w, h, l, ax, ay, blank_length).
-fn hinge_spec_unit(path: &[&str]) -> Option<&'static str> {
+pub fn hinge_spec_unit(path: &[&str]) -> Option<&'static str> {
     matches!(path, [field] if *field != "type").then_some("mm")
-}
-
-impl Units for HingeOut {
-    fn result_unit(path: &[&str]) -> Option<&'static str> {
-        Some(match path {
-            ["notch_only", rest @ ..] => return stiffness_unit(rest),
-            // Compliant-axis rotational stiffness of the notch alone.
-            ["closed_form", _] => K_ROT,
-            ["stress_concentration"] => "-",
-            ["calibration", "short_notch_g" | "plane_strain_p"] => "-",
-            ["calibration", "load_spreading", "slope"] => "-",
-            ["calibration", "load_spreading", "from_mm" | "to_mm"] => "mm",
-            ["material", field] => return material_unit(field),
-            ["large_rotation", "points", _, field] => match *field {
-                "force" => "N",
-                "moment" => "N*mm",
-                "rotation_deg" | "linear_rotation_deg" => "deg",
-                "max_stress" => "MPa",
-                _ => return None,
-            },
-            ["large_rotation", "rotation_at_allowable_deg" | "linear_rotation_at_allowable_deg"] => "deg",
-            ["damping", field] => match *field {
-                "k_nmm_per_rad" => K_ROT,
-                "k_nmm_per_deg" => "N*mm/deg",
-                "d_nmm_s_per_rad" => "N*mm*s/rad",
-                "d_nmm_s_per_deg" => "N*mm*s/deg",
-                "d_over_k_s" | "dt_s" => "s",
-                "j_t_mm2" => "t*mm^2",
-                "fit_residual" | "steps" => "-",
-                _ => return None,
-            },
-            ["fatigue", field] => match *field {
-                "fatigue_utilisation" | "kt" | "notch_sensitivity" | "kf" | "marin_surface" | "marin_size" => "-",
-                "life_cycles" => "cycles",
-                "infinite_life" => "-",
-                "stroke_infinite_life" => "deg",
-                "notch_radius_mm" => "mm",
-                "endurance_corrected" | "stress_alternating" | "stress_mean" => "MPa",
-                "stress_per_rad" => "MPa/rad",
-                _ => return None,
-            },
-            _ => return stiffness_unit(path),
-        })
-    }
-
-    fn input_unit(path: &[&str]) -> Option<&'static str> {
-        match path {
-            ["hinge", rest @ ..] => hinge_spec_unit(rest),
-            ["material", field] => material_unit(field),
-            ["fatigue", "stroke" | "mean"] => Some("deg"),
-            ["fatigue", "cycles"] => Some("cycles"),
-            _ => None,
-        }
-    }
-}
-
-impl Units for StageResult {
-    fn result_unit(path: &[&str]) -> Option<&'static str> {
-        Some(match path {
-            ["load_cases", _, field, ..] => match (*field, &path[3..]) {
-                ("strokes", [_]) => "mm",
-                ("forces", [_]) => "N",
-                ("platform", ["x" | "y" | "z"]) => "mm",
-                ("platform", ["psi_deg" | "theta_deg" | "phi_deg"]) => "deg",
-                ("max_von_mises", []) | ("hinge_stress", [_, _]) => "MPa",
-                ("T" | "factor_at_allowable", []) | ("critical_load_factor", [_]) => "-",
-                _ => return None,
-            },
-            ["stiffness_z"] => "N/mm",
-            ["at_allowable", "allowable"] => "MPa",
-            ["at_allowable", "force"] => "N",
-            ["at_allowable", "stroke" | "z"] => "mm",
-            ["platform_stiffness", "compliance", i, j] => return compliance_unit(i, j),
-            ["platform_stiffness", "translational_eigen", _] => "N/mm",
-            ["platform_stiffness", "rotational_eigen", _] => K_ROT,
-            ["modes", _, "mode"] | ["modes", _, "effective_mass_fraction", _] => "-",
-            ["modes", _, "frequency_hz"] => "Hz",
-            ["modes", _, "eigenvalue"] => "(rad/s)^2",
-            ["material", field] => return material_unit(field),
-            _ => return None,
-        })
-    }
-
-    fn input_unit(path: &[&str]) -> Option<&'static str> {
-        Some(match path {
-            ["stage", "L" | "b" | "a"] | ["stage", "leg", "w" | "h"] => "mm",
-            ["stage", "alpha0_deg" | "gamma_deg"] => "deg",
-            ["stage", "leg_elements"] | ["steps" | "modes"] => "-",
-            ["stage", "revolute" | "spherical", rest @ ..] => return hinge_spec_unit(rest),
-            ["load_cases", _, "actuator_forces", _] => "N",
-            ["load_cases", _, "actuator_strokes", _] => "mm",
-            ["platform_mass"] => "t",
-            ["platform_thickness"] => "mm",
-            ["material", field] => return material_unit(field),
-            _ => return None,
-        })
-    }
 }

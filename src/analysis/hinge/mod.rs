@@ -10,6 +10,7 @@ use crate::report::markdown::{sig, Table};
 use serde::Serialize;
 
 pub mod fatigue;
+mod units;
 
 /// Result of the `hinge` analysis: the characterisation, plus the large-rotation curve when
 /// the case asks for it.

@@ -3,6 +3,7 @@
 mod modes;
 pub mod report;
 pub mod sweep_plot;
+mod units;
 
 use super::{AnalysisError, RunError};
 use crate::case::stage::{stage_error, StageCase};
