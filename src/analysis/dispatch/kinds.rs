@@ -116,7 +116,7 @@ impl Analysis for Stage {
             r.load_cases
                 .iter()
                 .enumerate()
-                .filter_map(|(ic, c)| warn::stage_allowable_warning(ic, c)),
+                .filter_map(|(ic, c)| stage::warnings::stage_allowable_warning(ic, c)),
         );
         w
     }
@@ -275,7 +275,7 @@ impl Analysis for Static {
         }
         for (ic, row) in r.load_cases.iter_mut().enumerate() {
             let w = if case.nonlinear {
-                let stretch = warn::stretch_warning(&model, ic, row);
+                let stretch = fem_static::warnings::stretch_warning(&model, ic, row);
                 let floor = warn::equilibrium_floor_warning(
                     &format!("load case \"{}\"", row.name),
                     row.path_equilibrium_residual,
@@ -290,7 +290,7 @@ impl Analysis for Static {
                     ))
                     .collect()
             } else {
-                Vec::from_iter(warn::linear_range_warning(&model, ic, row))
+                Vec::from_iter(fem_static::warnings::linear_range_warning(&model, ic, row))
             };
             row.warnings.extend(w);
         }

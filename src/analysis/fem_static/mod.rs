@@ -16,6 +16,7 @@ mod report;
 mod rows;
 mod summary;
 pub mod track;
+pub mod warnings;
 
 pub use headline::add_headlines;
 pub use report::{file_stem, report, von_mises_of, vtu, vtu_files};

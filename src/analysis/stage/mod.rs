@@ -4,6 +4,7 @@ mod modes;
 pub mod report;
 pub mod sweep_plot;
 mod units;
+pub mod warnings;
 
 use super::{AnalysisError, RunError};
 use crate::case::stage::{stage_error, StageCase};
