@@ -13,9 +13,10 @@ pub mod stage;
 use dispatch::registry::analysis_modules;
 dispatch::kinds_list::analyses!(analysis_modules);
 
-pub use common::kind::{Analysis, Ctx, DynAnalysis};
+pub use common::kind::{Analysis, Ctx};
 pub use common::warn::{hinge_warnings, SMALL_STRAIN};
 pub use dispatch::case_file::{load, load_resolved, parse, parse_in, parse_value, schema, Case, Parsed, ANALYSES};
+pub use dispatch::entry::DynAnalysis;
 
 // The module paths of the flat layout (before one folder per kind), kept for code written
 // against them; new code names the folders.

@@ -2,6 +2,7 @@
 //! the registry, the wiring of the built-in kinds, the case-file reader.
 
 pub mod case_file;
+pub mod entry;
 pub mod export;
 pub mod kinds;
 pub mod kinds_list;

@@ -1,7 +1,7 @@
 //! The analysis kinds this build runs, generated from the one list of kinds,
 //! [`super::kinds_list`] (a line there registers a kind for parsing and running).
 
-use crate::analysis::common::kind::{DynAnalysis, Entry};
+use super::entry::{DynAnalysis, Entry};
 #[allow(unused_imports)]
 use crate::analysis::*;
 
