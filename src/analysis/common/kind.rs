@@ -1,13 +1,13 @@
 //! The typed analysis layer: one [`Analysis`] implementation per `analysis` kind (its case
 //! type, validation, run, typed result, reports and files), registered once in
-//! [`super::registry::REGISTRY`]. Drivers (`flexfem run`, `flexfem check`, sweeps) reach every
+//! [`crate::analysis::dispatch::registry::REGISTRY`]. Drivers (`flexfem run`, `flexfem check`, sweeps) reach every
 //! kind through the object-safe [`DynAnalysis`] view of the registry and never name a kind.
 //!
 //! Adding an analysis kind: one module implementing [`Analysis`] and one line in the list of
-//! kinds, [`super::kinds_list`].
+//! kinds, [`crate::analysis::dispatch::kinds_list`].
 
+use super::outcome::{Files, Report, RunError};
 use super::units::UnitOf;
-use crate::analysis::{Files, Report, RunError};
 use crate::case::{CaseError, MaterialSpec};
 use crate::fem::SolverCache;
 use crate::material::Material;
@@ -55,7 +55,7 @@ pub fn named_materials(specs: &std::collections::BTreeMap<String, MaterialSpec>)
 /// One analysis kind.
 ///
 /// Its `analysis` name is given once, by its line in the list of kinds
-/// ([`CaseOf::KIND`](super::case_file::CaseOf::KIND)).
+/// ([`CaseOf::KIND`](crate::analysis::dispatch::case_file::CaseOf::KIND)).
 pub trait Analysis: 'static {
     /// The parsed case (a serde shape, one variant of [`Case`]).
     type Case;
@@ -143,7 +143,7 @@ pub fn run_typed<A: Analysis>(case: &A::Case, ctx: &mut Ctx) -> Result<Typed<A::
         report: if ctx.with_report {
             A::report(&result)
         } else {
-            crate::analysis::Report::default()
+            Report::default()
         },
         warnings,
         files: std::mem::take(&mut ctx.files),

@@ -4,6 +4,7 @@ pub(crate) mod case_shape;
 pub mod finite;
 pub mod kind;
 pub mod line;
+pub mod outcome;
 pub mod units;
 pub mod vtu;
 pub mod warn;

@@ -9,7 +9,7 @@
 //! ([`Part`]). Rigid bodies that are no elements (e.g. the stage's platform and sliders)
 //! may be drawn as extra cells ([`Drawn`]).
 
-use crate::analysis::AnalysisError;
+use super::outcome::AnalysisError;
 use crate::fem::{Element, Model};
 use crate::report::vtk::{self, Cell, VtuMesh};
 
