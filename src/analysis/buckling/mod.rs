@@ -244,7 +244,7 @@ impl Analysis for Buckling {
         let (mut r, raw) = solve(&model, case.modes, case.shapes)?;
         let shapes = r.buckling.iter_mut().filter_map(|row| row.shape.as_mut());
         let user = case.model.nodes.len();
-        r.model.extend(super::fem_static::inner_nodes::hide_in_shapes(shapes, &model, &hinges, user));
+        r.model.extend(super::fem_static::hide_in_shapes(shapes, &model, &hinges, user));
         ctx.warnings = warnings(&model, &r);
         ctx.warnings.extend(crate::analysis::common::warn::fewer_modes(case.modes, raw.modes.len(), Some(raw.n_eq)));
         if ctx.with_files {

@@ -19,6 +19,7 @@ pub mod track;
 pub mod warnings;
 
 pub use headline::add_headlines;
+pub use inner_nodes::hide_in_shapes;
 pub use report::{file_stem, report, von_mises_of, vtu, vtu_files};
 pub use rows::{
     BeamForcesRow, HingeRow, ShellForcesRow, ShellStressRow, ShellVonMises, StaticCaseRow, StaticResult, StressAt,
@@ -99,7 +100,7 @@ pub fn solve_nonlinear_tracked(
 pub type Paths = Vec<(Vec<fem::PathPoint>, Vec<fem::CriticalPoint>)>;
 
 /// [`solve_nonlinear`] with options per load case (their `step_track` and `track` as
-/// [`super::track::options`] gives them when `track` is asked for; the stroke DOFs may follow
+/// [`track::options`] gives them when `track` is asked for; the stroke DOFs may follow
 /// other tracked DOFs); also returns each case's path and critical points.
 pub fn solve_nonlinear_each(
     model: &Model,
