@@ -1,4 +1,39 @@
 //! Analyses: validated case → typed result → JSON/Markdown/CSV views.
+//!
+//! One room per analysis kind; the folder reads top-down:
+//!
+//! ```text
+//! mod.rs        the drivers: run, check (through the registry), the material echo
+//! dispatch/     the list of kinds (kinds_list.rs) and what it generates: the Case enum and the
+//!               case-file reader (case_file.rs), the registry (registry.rs) of DynAnalysis
+//!               entries (entry.rs), the Analysis impls of the older kinds (kinds.rs),
+//!               --export-matrices over any case (export.rs)
+//! kinematics/ hinge/ stage/ fem_vs_fkp/ design/ fem_static/ modal/ pantilt/ prs_stiffness/
+//! transient/ buckling/ constraints/ frf/ craig_bampton/
+//!               one folder per kind: its run, typed result, report and files
+//! common/       the shared floor: the Analysis trait and Ctx (kind.rs), errors, reports and the
+//!               finiteness check (outcome.rs, finite.rs), units of sweep columns (units.rs),
+//!               warnings (warn.rs), sweep lines (line.rs), .vtu files (vtu.rs), the array
+//!               check of case files (case_shape.rs)
+//! ```
+//!
+//! Kinds use the floor; the floor names no kind and nothing above it; a kind names neither the
+//! dispatch nor the drivers, and from another kind only what that kind names at its root
+//! (`K/mod.rs`), never a file inside it (`tests/layering.rs`, `analysis_reads_top_down`). The
+//! arrows between kinds, each through the other kind's root:
+//!
+//! - `stage` → `modal`: the stage's natural modes are a modal solve of the stage model
+//!   ([`modal::solve`], [`modal::ModeRow`]).
+//! - `stage` → `fem_static`: the stage's `.vtu` files and load-case file names reuse the static
+//!   ones ([`fem_static::von_mises_of`], [`fem_static::file_stem`]); its report the stability
+//!   warning of nonlinear cases ([`fem_static::stability_warning`]).
+//! - `fem_vs_fkp` → `stage`: the comparison runs the stage model ([`stage::fem_err`],
+//!   [`stage::model_notes`], [`stage::PoseOut`]).
+//! - `buckling` → `fem_static`: buckling shapes hide the inner nodes of segmented hinges as static
+//!   results do ([`fem_static::hide_in_shapes`]).
+//!
+//! The module paths of the flat layout that preceded the folders (`analysis::warn`,
+//! `analysis::stage_report`, `analysis::fem_path`, …) are kept as re-exports below.
 
 pub mod common;
 pub mod design;

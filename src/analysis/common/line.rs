@@ -21,7 +21,7 @@ pub struct LineSpec<'a> {
     pub notes_by_ref: bool,
 }
 
-/// Where [`super::DynAnalysis::write_result`] writes: a worker's line and what it keeps.
+/// Where [`crate::analysis::DynAnalysis::write_result`] writes: a worker's line and what it keeps.
 #[derive(Debug)]
 pub struct LineTarget<'a> {
     /// The worker's buffers.
@@ -307,7 +307,7 @@ pub struct Echoed<'a, R: Serialize> {
     pub warnings: &'a [String],
 }
 
-/// The material as echoed in a result (see [`super::run_with`]).
+/// The material as echoed in a result (see [`crate::analysis::run_with`]).
 #[derive(Serialize)]
 pub struct MaterialEcho<'a> {
     pub name: &'a str,
@@ -321,7 +321,7 @@ pub struct MaterialEcho<'a> {
 }
 
 impl<'a> MaterialEcho<'a> {
-    /// The echo of material `m` given as `spec` (the same numbers as [`super::run_with`]).
+    /// The echo of material `m` given as `spec` (the same numbers as [`crate::analysis::run_with`]).
     pub fn of(spec: &'a crate::case::MaterialSpec, m: &crate::material::Material) -> Self {
         MaterialEcho {
             name: match spec {

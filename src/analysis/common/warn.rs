@@ -1,5 +1,7 @@
-//! Warnings of the analyses: hinge calibration ranges, the small-strain and small-displacement
-//! assumptions, stresses above the allowable (unit slips of materials: [`crate::case::material::plausibility_warnings`]).
+//! Warnings shared by the analyses: hinge calibration ranges, the small-strain and
+//! small-displacement limits, modes fewer than asked, segmented hinges (unit slips of materials:
+//! [`crate::case::material::plausibility_warnings`]). The warnings that read one kind's result
+//! rows live with that kind (`fem_static/warnings.rs`, `stage/warnings.rs`).
 
 /// Calibration-range warnings of a hinge, prefixed with where it sits in the case file.
 pub fn hinge_warnings(at: &str, spec: &crate::hinge::HingeSpec) -> Vec<String> {

@@ -162,7 +162,7 @@ pub fn parse_value(value: Value, base: Option<&Path>) -> Result<Case, CaseError>
 }
 
 /// The check of [`parse_value`] that refuses an array given where the schema wants an object
-/// (see [`super::case_shape`]). It depends only on where the case has arrays, so a batch driver
+/// (see [`crate::analysis::common::case_shape`]). It depends only on where the case has arrays, so a batch driver
 /// whose designs differ from one already checked only in scalar values may skip it
 /// ([`parse_resolved`] with `check_arrays` false).
 pub fn check_shape(value: &Value) -> Result<(), CaseError> {

@@ -1,16 +1,16 @@
 //! The analysis kinds of case files: the one list every dispatch over kinds is generated from.
 //!
 //! [`analyses!`] hands the list to a callback macro. [`super::case_file`] expands it into the
-//! [`Case`](super::Case) enum (one variant per line, documented by the line's doc comment; the
-//! variant order is the order of the JSON Schema's alternatives), [`ANALYSES`](super::ANALYSES)
+//! [`Case`](crate::analysis::Case) enum (one variant per line, documented by the line's doc comment; the
+//! variant order is the order of the JSON Schema's alternatives), [`ANALYSES`](crate::analysis::ANALYSES)
 //! (ordered by each line's `#n`, the order messages list the kinds in), the parse dispatch and
 //! [`CaseOf`](super::case_file::CaseOf) for each kind; [`super::registry`] expands it into the
-//! registry; [`super`] into the declarations of the modules the `mod` lines name.
+//! registry; [`crate::analysis`] into the declarations of the modules the `mod` lines name.
 //!
 //! A line reads `Variant = "name" #n, [mod NAME,] analysis PATH [, parse PATH];`:
-//! - `analysis PATH`: the [`Analysis`](super::Analysis) implementation; its `Case` type is the
+//! - `analysis PATH`: the [`Analysis`](crate::analysis::Analysis) implementation; its `Case` type is the
 //!   case shape of the kind (the `Variant`'s payload).
-//! - `mod NAME` declares the module `analysis::NAME` (`src/analysis/NAME.rs`).
+//! - `mod NAME` declares the module `analysis::NAME` (`src/analysis/NAME/mod.rs`, the kind's folder).
 //! - `parse PATH`: a parser `fn(Value, Option<&Path>) -> Result<Shape, CaseError>` for shapes
 //!   that read other files (meshes); without it the shape is read by serde with unknown fields
 //!   refused and errors under their JSON path.
@@ -19,10 +19,10 @@
 //!
 //! # Adding an analysis kind
 //!
-//! One module and one line. Write `src/analysis/NAME.rs` with the case shape (a serde struct
+//! One module and one line. Write `src/analysis/NAME/mod.rs` (its folder: see [`crate::analysis`]) with the case shape (a serde struct
 //! deriving `Debug, Clone, Deserialize, JsonSchema` with `#[serde(deny_unknown_fields)]`,
 //! validated with [`CaseError`](crate::case::CaseError)s that name JSON paths), the typed
-//! result, and the [`Analysis`](super::Analysis) implementation; then add its line here, e.g.
+//! result, and the [`Analysis`](crate::analysis::Analysis) implementation; then add its line here, e.g.
 //!
 //! ```text
 //! /// What the analysis does (the schema's description of the kind).

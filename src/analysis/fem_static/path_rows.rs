@@ -1,4 +1,4 @@
-//! The result rows of a nonlinear path ([`super::fem_path`]): the traced load–displacement
+//! The result rows of a nonlinear path ([`super::nonlinear_path`]): the traced load–displacement
 //! curve and the located critical points, and their Markdown section.
 
 use crate::report::markdown::Table;

@@ -2,7 +2,7 @@
 //! nodal DOFs, by modal superposition with static correction, checked by a direct solve, with a
 //! state-space model of the same inputs and outputs — the run and the [`Analysis`]
 //! implementation; the case shape, its parser and its validation are in [`case`], the result
-//! and report in [`super::frf_result`], the files in [`super::frf_files`].
+//! and report in [`result`], the files in [`files`].
 
 use result::{rows, DirectCheck, FrfMode, FrfResult, OutputInfo, Pair, StateSpaceOut};
 use crate::analysis::common::kind::{Analysis, Ctx, UsedMaterial};

@@ -1,4 +1,4 @@
-//! The result of the `frf` analysis ([`super::frf`]) and its report: frequency response of a mesh model from nodal loads (inputs) to nodal
+//! The result of the `frf` analysis ([`super`]) and its report: frequency response of a mesh model from nodal loads (inputs) to nodal
 //! DOFs (outputs) by modal superposition with static correction ([`crate::fem::frf`]), checked
 //! by the direct solve of (K − ω²M + iωC), and the state-space model of the same inputs and
 //! outputs ([`crate::fem::state_space`]). Files: `frf.csv`, `bode_magnitude.svg`,
