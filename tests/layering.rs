@@ -22,6 +22,9 @@
 //! items) are left out of the file-cycle check: a child naming an item through its parent's
 //! re-export is not a cycle of ideas.
 //!
+//! Inside `analysis`, [`analysis_reads_top_down`] checks the rooms: one folder per analysis kind
+//! above the shared floor `analysis/common/`, below the list of kinds `analysis/dispatch/`.
+//!
 //! Known violations that are not yet fixed are listed in [`ALLOWED`] with the reason; the test
 //! fails on any violation not listed there, and on a listed one that no longer occurs (so the
 //! list shrinks as they are fixed).
@@ -333,5 +336,153 @@ fn imports_follow_the_layers_and_files_form_no_cycle() {
             .map(|(f, t)| format!("  {f} → {t}"))
             .collect::<Vec<_>>()
             .join("\n"),
+    );
+}
+
+/// Where a file of `src/analysis/` sits (see [`analysis_reads_top_down`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum Room {
+    /// `analysis/mod.rs`: the façade and the drivers (`run`, `check`).
+    Top,
+    /// `analysis/dispatch/`: the list of kinds and what it generates (the `Case` enum, the
+    /// registry, the wiring of the built-in kinds).
+    Dispatch,
+    /// `analysis/common/`: the shared floor.
+    Floor,
+    /// `analysis/K/` or `analysis/K.rs`: the room of analysis kind `K`.
+    Kind(String),
+}
+
+fn room_of(rel: &str) -> Option<Room> {
+    let rest = rel.strip_prefix("analysis/")?;
+    Some(match rest.split('/').next()? {
+        "mod.rs" => Room::Top,
+        "dispatch" => Room::Dispatch,
+        "common" => Room::Floor,
+        k => Room::Kind(k.trim_end_matches(".rs").to_string()),
+    })
+}
+
+/// The names `analysis/mod.rs` brings in with `use` (re-exports such as `analysis::AnalysisError`
+/// or the old path `analysis::stage_report`), each with the absolute path it stands for.
+fn top_aliases(code: &str) -> BTreeMap<String, Vec<String>> {
+    let mut out = BTreeMap::new();
+    for stmt in code.split(';') {
+        let Some(i) = stmt.find("use ") else { continue };
+        if !stmt[..i].trim().is_empty() && stmt[..i].trim() != "pub" {
+            continue;
+        }
+        for leaf in expand(&stmt[i + 4..].replace(" as ", "@")) {
+            let (target, name) = match leaf.split_once('@') {
+                Some((t, n)) => (t.to_string(), n.to_string()),
+                None => (leaf.clone(), leaf.rsplit("::").next().unwrap_or("").to_string()),
+            };
+            let mut segs: Vec<String> = target.split("::").map(str::to_string).collect();
+            if segs.last().is_some_and(|s| s == "self") {
+                segs.pop();
+            }
+            let name = if name == "self" {
+                segs.last().cloned().unwrap_or_default()
+            } else {
+                name
+            };
+            let abs = match segs.first().map(String::as_str) {
+                Some("crate") => segs[1..].to_vec(),
+                Some("*") | None => continue,
+                _ => std::iter::once("analysis".to_string()).chain(segs).collect(),
+            };
+            out.insert(name, abs);
+        }
+    }
+    out
+}
+
+/// `analysis/` reads top-down, one room per analysis kind:
+///
+/// - the shared floor, `analysis/common/`, imports nothing else of `analysis` (no kind, no
+///   dispatch, not the drivers of `analysis/mod.rs`);
+/// - a kind's room, `analysis/K/` (or `analysis/K.rs`), imports neither the dispatch nor the
+///   drivers, and from another kind `J` only what `J` names at its root (`analysis/J/mod.rs`,
+///   defined or re-exported there: its documented interface), never a file inside `J`;
+/// - every arrow from a kind to another is listed in the module docs of `analysis/mod.rs`
+///   (as `` `K` → `J` ``).
+///
+/// Paths are resolved as in [`imports_follow_the_layers_and_files_form_no_cycle`], after the
+/// names `analysis/mod.rs` re-exports are replaced by what they stand for (so
+/// `analysis::AnalysisError` is the floor's and the old path `analysis::stage_report` is inside
+/// the `stage` kind). `analysis/dispatch/` sits above the kinds and may name any of them.
+#[test]
+fn analysis_reads_top_down() {
+    let src = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut paths = Vec::new();
+    rust_files(&src, &mut paths);
+    let rels: BTreeSet<String> = paths
+        .iter()
+        .map(|p| p.strip_prefix(&src).unwrap().to_string_lossy().replace('\\', "/"))
+        .collect();
+    let top = std::fs::read_to_string(src.join("analysis/mod.rs")).expect("readable analysis/mod.rs");
+    let aliases = top_aliases(&code_of(&top));
+    assert!(
+        aliases
+            .get("AnalysisError")
+            .is_some_and(|p| p.starts_with(&["analysis".into(), "common".into()])),
+        "expected analysis::AnalysisError re-exported from the floor, aliases: {aliases:?}"
+    );
+
+    let mut violations = BTreeSet::new();
+    let mut arrows: BTreeSet<(String, String)> = BTreeSet::new();
+    let mut kinds = BTreeSet::new();
+    for rel in rels.iter().filter(|r| r.starts_with("analysis/")) {
+        let from = room_of(rel).expect("a file of analysis/");
+        if let Room::Kind(k) = &from {
+            kinds.insert(k.clone());
+        }
+        let text = std::fs::read_to_string(src.join(rel)).expect("readable source");
+        for mut path in imported_paths(&code_of(&text), &module_of(rel)) {
+            if path.len() >= 2 && path[0] == "analysis" {
+                if let Some(abs) = aliases.get(&path[1]) {
+                    path.splice(..2, abs.iter().cloned());
+                }
+            }
+            // `analysis` alone is the prefix of a `use` group (`super::{A, B}`), whose leaves
+            // are checked one by one.
+            if path.len() < 2 || path[0] != "analysis" {
+                continue;
+            }
+            let Some(file) = file_of(&path, &rels) else { continue };
+            let Some(to) = room_of(&file) else { continue };
+            let why = match (&from, &to) {
+                (Room::Floor, t) if *t != Room::Floor => Some("the shared floor imports above itself"),
+                (Room::Kind(_), Room::Dispatch | Room::Top) => Some("a kind imports the dispatch or the drivers"),
+                (Room::Kind(k), Room::Kind(j)) if k != j => {
+                    arrows.insert((k.clone(), j.clone()));
+                    let root = [format!("analysis/{j}/mod.rs"), format!("analysis/{j}.rs")];
+                    (!root.contains(&file)).then_some("a kind reaches into another kind's files")
+                }
+                _ => None,
+            };
+            if let Some(why) = why {
+                violations.insert(format!("  src/{rel} → {} (src/{file}): {why}", path.join("::")));
+            }
+        }
+    }
+    assert!(
+        kinds.len() >= 10,
+        "expected the kind folders of analysis/, found {kinds:?}"
+    );
+    assert!(
+        violations.is_empty(),
+        "analysis/ must read top-down (see the doc comment of analysis_reads_top_down):\n{}",
+        violations.into_iter().collect::<Vec<_>>().join("\n")
+    );
+    let undocumented: Vec<String> = arrows
+        .iter()
+        .filter(|(k, j)| !top.contains(&format!("`{k}` → `{j}`")))
+        .map(|(k, j)| format!("`{k}` → `{j}`"))
+        .collect();
+    assert!(
+        undocumented.is_empty(),
+        "arrows between kinds missing from the module docs of src/analysis/mod.rs: {}",
+        undocumented.join(", ")
     );
 }

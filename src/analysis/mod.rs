@@ -1,182 +1,75 @@
 //! Analyses: validated case → typed result → JSON/Markdown/CSV views.
+//!
+//! One room per analysis kind; the folder reads top-down:
+//!
+//! ```text
+//! mod.rs        the drivers: run, check (through the registry), the material echo
+//! dispatch/     the list of kinds (kinds_list.rs) and what it generates: the Case enum and the
+//!               case-file reader (case_file.rs), the registry (registry.rs) of DynAnalysis
+//!               entries (entry.rs), the Analysis impls of the older kinds (kinds.rs),
+//!               --export-matrices over any case (export.rs)
+//! kinematics/ hinge/ stage/ fem_vs_fkp/ design/ fem_static/ modal/ pantilt/ prs_stiffness/
+//! transient/ buckling/ constraints/ frf/ craig_bampton/
+//!               one folder per kind: its run, typed result, report and files
+//! common/       the shared floor: the Analysis trait and Ctx (kind.rs), errors, reports and the
+//!               finiteness check (outcome.rs, finite.rs), units of sweep columns (units.rs),
+//!               warnings (warn.rs), sweep lines (line.rs), .vtu files (vtu.rs), the array
+//!               check of case files (case_shape.rs)
+//! ```
+//!
+//! Kinds use the floor; the floor names no kind and nothing above it; a kind names neither the
+//! dispatch nor the drivers, and from another kind only what that kind names at its root
+//! (`K/mod.rs`), never a file inside it (`tests/layering.rs`, `analysis_reads_top_down`). The
+//! arrows between kinds, each through the other kind's root:
+//!
+//! - `stage` → `modal`: the stage's natural modes are a modal solve of the stage model
+//!   ([`modal::solve`], [`modal::ModeRow`]).
+//! - `stage` → `fem_static`: the stage's `.vtu` files and load-case file names reuse the static
+//!   ones ([`fem_static::von_mises_of`], [`fem_static::file_stem`]); its report the stability
+//!   warning of nonlinear cases ([`fem_static::stability_warning`]).
+//! - `fem_vs_fkp` → `stage`: the comparison runs the stage model ([`stage::fem_err`],
+//!   [`stage::model_notes`], [`stage::PoseOut`]).
+//! - `design` → `fem_static`: a design of a mesh mechanism runs its static case and reads the
+//!   metrics ([`fem_static::StaticResult`], [`fem_static::MetricValue`]).
+//! - `buckling` → `fem_static`: buckling shapes hide the inner nodes of segmented hinges as static
+//!   results do ([`fem_static::hide_in_shapes`]).
+//!
+//! The module paths of the flat layout that preceded the folders (`analysis::warn`,
+//! `analysis::stage_report`, `analysis::fem_path`, …) are kept as re-exports below.
 
-pub mod case_file;
-mod case_shape;
-pub mod compliance;
+pub mod common;
 pub mod design;
-pub mod design_mesh;
-pub mod design_problem;
-pub mod export;
-pub mod fem_path;
+pub mod dispatch;
 pub mod fem_static;
 pub mod fem_vs_fkp;
-pub mod finite;
-pub mod frf_files;
-pub mod frf_result;
 pub mod hinge;
-pub mod hinge_fatigue;
-pub mod hinge_pivot;
-pub mod kind;
-pub mod kinds;
-pub mod kinds_list;
 pub mod kinematics;
-pub mod line;
 pub mod modal;
-pub mod path_rows;
-pub mod registry;
 pub mod stage;
-mod stage_modes;
-pub mod stage_report;
-pub mod sweep_plot;
-pub mod track;
-pub mod units;
-pub mod vtu;
-pub mod warn;
 
-use registry::analysis_modules;
-kinds_list::analyses!(analysis_modules);
+use dispatch::registry::analysis_modules;
+dispatch::kinds_list::analyses!(analysis_modules);
 
-pub use case_file::{load, load_resolved, parse, parse_in, parse_value, schema, Case, Parsed, ANALYSES};
-pub use kind::{Analysis, Ctx, DynAnalysis};
-pub use warn::{hinge_warnings, SMALL_STRAIN};
+pub use common::kind::{Analysis, Ctx};
+pub use common::outcome::{
+    check_finite, to_checked_json, warnings_markdown, AnalysisError, Files, Outcome, Report, RunError,
+};
+pub use common::warn::{hinge_warnings, SMALL_STRAIN};
+pub use dispatch::case_file::{load, load_resolved, parse, parse_in, parse_value, schema, Case, Parsed, ANALYSES};
+pub use dispatch::entry::DynAnalysis;
+
+// The module paths of the flat layout (before one folder per kind), kept for code written
+// against them; new code names the folders.
+pub use common::{finite, kind, line, units, vtu, warn};
+pub use dispatch::{case_file, export, kinds, kinds_list, registry};
+pub use fem_static::{compliance, nonlinear_path as fem_path, path_rows, track};
+pub use frf::{files as frf_files, result as frf_result};
+pub use hinge::fatigue as hinge_fatigue;
+pub use stage::{report as stage_report, sweep_plot};
 
 use crate::case::{CaseError, MaterialSpec};
 use crate::fem::SolverCache;
 use crate::material::Material;
-use std::fmt;
-
-/// A failed analysis (exit code 1): where it failed and why.
-#[derive(Debug, Clone, PartialEq)]
-pub struct AnalysisError {
-    /// Which query or load case failed, e.g. `fkp[2]`.
-    pub context: String,
-    /// What went wrong.
-    pub message: String,
-}
-
-impl AnalysisError {
-    /// An error in `context`.
-    pub fn new(context: impl Into<String>, message: impl Into<String>) -> Self {
-        AnalysisError {
-            context: context.into(),
-            message: message.into(),
-        }
-    }
-}
-
-impl fmt::Display for AnalysisError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "analysis failed at `{}`: {}", self.context, self.message)
-    }
-}
-
-impl std::error::Error for AnalysisError {}
-
-/// Why a case did not produce a result.
-#[derive(Debug, Clone, PartialEq)]
-pub enum RunError {
-    /// The case file is wrong (exit 2).
-    Case(CaseError),
-    /// The analysis failed (exit 1).
-    Analysis(AnalysisError),
-}
-
-impl fmt::Display for RunError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            RunError::Case(e) => e.fmt(f),
-            RunError::Analysis(e) => e.fmt(f),
-        }
-    }
-}
-
-impl std::error::Error for RunError {}
-
-impl From<CaseError> for RunError {
-    fn from(e: CaseError) -> Self {
-        RunError::Case(e)
-    }
-}
-impl From<AnalysisError> for RunError {
-    fn from(e: AnalysisError) -> Self {
-        RunError::Analysis(e)
-    }
-}
-
-/// Human-readable views of a result.
-#[derive(Debug, Clone, Default)]
-pub struct Report {
-    /// Markdown report.
-    pub markdown: String,
-    /// CSV table of the main rows.
-    pub csv: String,
-}
-
-/// Extra output files: (file name, contents).
-pub type Files = Vec<(String, Vec<u8>)>;
-
-/// A finished analysis: the JSON result plus its reports and extra files (name, contents).
-#[derive(Debug, Clone)]
-pub struct Outcome {
-    /// The JSON result; its top-level `warnings` holds [`Outcome::warnings`].
-    pub json: serde_json::Value,
-    /// Things the user must know about the result (e.g. a hinge outside the range its solid
-    /// calibration covers); also listed in the JSON (`warnings`) and the Markdown report.
-    pub warnings: Vec<String>,
-    /// Markdown and CSV views.
-    pub report: Report,
-    /// Extra output files (e.g. `.vtu`, `.svg`), written by `--out`.
-    pub files: Files,
-}
-
-impl Outcome {
-    /// Echoes the case's resolved parameters (name → value) in the result as `parameters` and
-    /// in the Markdown report; nothing when the case declares none.
-    pub fn echo_parameters(&mut self, parameters: &crate::case::params::Parameters) {
-        if parameters.is_empty() {
-            return;
-        }
-        if let serde_json::Value::Object(m) = &mut self.json {
-            let echo = parameters.iter().map(|(k, v)| (k.clone(), serde_json::Value::from(*v)));
-            m.insert("parameters".into(), serde_json::Value::Object(echo.collect()));
-        }
-        if !self.report.markdown.is_empty() {
-            let list: Vec<String> = parameters.iter().map(|(k, v)| format!("`{k}` = {v}")).collect();
-            self.report.markdown += &format!("\nParameters: {}.\n", list.join(", "));
-        }
-    }
-}
-
-/// The JSON value of a result, refusing any non-finite number: serde_json would write NaN and
-/// ±∞ as `null` silently. The error's context is the JSON path of the first offending number
-/// (e.g. `load_cases[0].max_von_mises`). Every analysis result goes through it; batch drivers
-/// (sweeps) call it on each row.
-pub fn to_checked_json<T: serde::Serialize>(v: &T) -> Result<serde_json::Value, AnalysisError> {
-    check_finite(v)?;
-    serde_json::to_value(v).map_err(|e| AnalysisError::new("output", e.to_string()))
-}
-
-/// The check of [`to_checked_json`] alone (no allocation when every number is finite).
-pub fn check_finite<T: serde::Serialize>(v: &T) -> Result<(), AnalysisError> {
-    finite::first_non_finite(v).map_err(|(path, msg)| {
-        AnalysisError::new(
-            if path.is_empty() || path == "." { "output".to_string() } else { path },
-            format!("the computed number is not finite ({msg}): the input is outside the range the model can represent (overflow) or the model is degenerate"),
-        )
-    })
-}
-
-/// The `## Warnings` section of the Markdown report (empty when there are none).
-pub fn warnings_markdown(warnings: &[String]) -> String {
-    if warnings.is_empty() {
-        return String::new();
-    }
-    let mut md = String::from("\n## Warnings\n\n");
-    for w in warnings {
-        md += &format!("- {w}\n");
-    }
-    md
-}
 
 /// Refuses a case whose kind has no registered analysis (a build error caught by the tests).
 fn unregistered(case: &Case) -> CaseError {
@@ -193,7 +86,7 @@ pub(crate) fn kind_refused(case: &Case, rule: &str) -> CaseError {
 
 /// Validates a case (everything checked before solving).
 pub fn check(case: &Case) -> Result<(), CaseError> {
-    registry::find(case.analysis())
+    dispatch::registry::find(case.analysis())
         .and_then(|e| e.check(case))
         .unwrap_or_else(|| Err(unregistered(case)))
 }
@@ -212,7 +105,7 @@ pub fn run_with_files(case: &Case) -> Result<Outcome, RunError> {
 
 /// [`run`] with the caller's context (a batch driver passes its worker's solver cache).
 pub fn run_with(case: &Case, ctx: &mut Ctx) -> Result<Outcome, RunError> {
-    let Some(e) = registry::find(case.analysis()) else {
+    let Some(e) = dispatch::registry::find(case.analysis()) else {
         return Err(unregistered(case).into());
     };
     let mut out = e.run(case, ctx).unwrap_or_else(|| Err(unregistered(case).into()))?;
@@ -241,7 +134,7 @@ pub fn run_with(case: &Case, ctx: &mut Ctx) -> Result<Outcome, RunError> {
 /// "yield" (MPa), "allowable" (MPa)}`; `name` is the built-in name or `"custom"`; an unlimited
 /// yield or allowable stress is `null`.
 fn material_json(spec: &MaterialSpec, m: &Material) -> serde_json::Value {
-    serde_json::to_value(line::MaterialEcho::of(spec, m)).unwrap_or(serde_json::Value::Null)
+    serde_json::to_value(common::line::MaterialEcho::of(spec, m)).unwrap_or(serde_json::Value::Null)
 }
 
 /// One Markdown line per material used.

@@ -69,7 +69,7 @@ pub fn add_headlines(r: &mut StaticResult, model: &Model, case_index: &[Option<u
     for (ic, (row, lc)) in r.load_cases.iter_mut().zip(&model.load_cases).enumerate() {
         let over = set_headline(row, &sites);
         row.warnings
-            .extend(crate::analysis::warn::allowable_warning(ic, &row.name, &over));
+            .extend(super::warnings::allowable_warning(ic, &row.name, &over));
         let mut nodes: Vec<usize> = lc
             .forces
             .iter()

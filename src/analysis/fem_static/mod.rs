@@ -3,17 +3,24 @@
 use super::AnalysisError;
 use crate::fem::{self, Model};
 
-pub use super::compliance::{compliance_row, ComplianceRow};
+pub use compliance::{compliance_row, ComplianceRow};
 
+pub mod compliance;
 mod equilibrium;
 mod headline;
 pub mod inner_nodes;
 pub mod metrics;
+pub mod nonlinear_path;
+pub mod path_rows;
 mod report;
 mod rows;
 mod summary;
+pub mod track;
+pub mod warnings;
 
 pub use headline::add_headlines;
+pub use inner_nodes::hide_in_shapes;
+pub use metrics::MetricValue;
 pub use report::{file_stem, report, von_mises_of, vtu, vtu_files};
 pub use rows::{
     BeamForcesRow, HingeRow, ShellForcesRow, ShellStressRow, ShellVonMises, StaticCaseRow, StaticResult, StressAt,
@@ -95,7 +102,7 @@ pub fn solve_nonlinear_tracked(
     steps: usize,
     track: Option<&crate::case::mesh::TrackRequest>,
 ) -> Result<(StaticResult, fem::StaticResults), AnalysisError> {
-    let (step_track, strokes) = track.map(|t| super::track::options(model, t)).unwrap_or_default();
+    let (step_track, strokes) = track.map(|t| track::options(model, t)).unwrap_or_default();
     let opts = fem::NonlinearOptions {
         steps,
         track: strokes.clone(),
@@ -109,7 +116,7 @@ pub fn solve_nonlinear_tracked(
 pub type Paths = Vec<(Vec<fem::PathPoint>, Vec<fem::CriticalPoint>)>;
 
 /// [`solve_nonlinear`] with options per load case (their `step_track` and `track` as
-/// [`super::track::options`] gives them when `track` is asked for; the stroke DOFs may follow
+/// [`track::options`] gives them when `track` is asked for; the stroke DOFs may follow
 /// other tracked DOFs); also returns each case's path and critical points.
 pub fn solve_nonlinear_each(
     model: &Model,
@@ -127,7 +134,7 @@ pub fn solve_nonlinear_each(
             stable: Some(c.stable),
             path_equilibrium_residual: Some(c.equilibrium),
             critical_load_factor: c.critical_load_factor,
-            track: track.map(|t| super::track::row(t, lc, c, &o.track)),
+            track: track.map(|t| track::row(t, lc, c, &o.track)),
             ..row(&c.fe)
         })
         .collect();

@@ -21,11 +21,8 @@ pub fn report(r: &StaticResult) -> Report {
     md += &summary::section(r);
     for c in &r.load_cases {
         let details = hinge_table(c)
-            + &c.track
-                .as_ref()
-                .map(crate::analysis::track::markdown)
-                .unwrap_or_default()
-            + &crate::analysis::path_rows::markdown(&c.name, &c.critical_points, c.trace.as_ref());
+            + &c.track.as_ref().map(super::track::markdown).unwrap_or_default()
+            + &super::path_rows::markdown(&c.name, &c.critical_points, c.trace.as_ref());
         if !details.is_empty() {
             md += &format!("## Load case `{}`\n\n{details}", c.name);
         }
@@ -120,13 +117,13 @@ fn hinge_table(c: &StaticCaseRow) -> String {
 
 /// A `.vtu` of one load case (see [`crate::analysis::vtu`]): the undeformed model with displacement and
 /// rotation point data, shell stresses and stress resultants
-/// ([`crate::analysis::vtu::static_vtu_with_shells`]) and von Mises per cell (the element's maximum over its ends / shell
+/// ([`crate::analysis::common::vtu::static_vtu_with_shells`]) and von Mises per cell (the element's maximum over its ends / shell
 /// surfaces; `cell_stress` overrides it for given elements, e.g. hinge peak stresses; 0 where
 /// none).
 pub fn vtu(model: &Model, case: &fem::CaseResult, cell_stress: &[(usize, f64)]) -> Result<String, AnalysisError> {
     let shells = fem::shell_recovery::shell_field(model, &case.displacements)
         .map_err(|e| AnalysisError::new(format!("load case `{}`", case.name), e.to_string()))?;
-    crate::analysis::vtu::static_vtu_with_shells(
+    crate::analysis::common::vtu::static_vtu_with_shells(
         model,
         &case.displacements,
         &von_mises_of(case, cell_stress),

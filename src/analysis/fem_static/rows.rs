@@ -53,10 +53,10 @@ pub struct StaticCaseRow {
     pub critical_load_factor: Option<[f64; 2]>,
     /// Nonlinear: the located changes of stability along the path (omitted when none).
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub critical_points: Vec<crate::analysis::path_rows::CriticalPointRow>,
+    pub critical_points: Vec<super::path_rows::CriticalPointRow>,
     /// Nonlinear with `trace`: the load–displacement curve of the traced DOF.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub trace: Option<crate::analysis::path_rows::TraceRow>,
+    pub trace: Option<super::path_rows::TraceRow>,
     /// Shells only: nodal surface stresses (omitted for models without shells).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub shell_stress: Option<ShellStressRow>,
@@ -75,7 +75,7 @@ pub struct StaticCaseRow {
     /// Nonlinear with `"track"`: frequencies and node compliances at every accepted load step
     /// (omitted otherwise).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub track: Option<crate::analysis::track::TrackRow>,
+    pub track: Option<super::track::TrackRow>,
     /// The nodes with applied nodal loads or prescribed displacements, ascending (for the
     /// report's summary; not written to the JSON).
     #[serde(skip)]

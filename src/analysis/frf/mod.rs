@@ -2,10 +2,10 @@
 //! nodal DOFs, by modal superposition with static correction, checked by a direct solve, with a
 //! state-space model of the same inputs and outputs — the run and the [`Analysis`]
 //! implementation; the case shape, its parser and its validation are in [`case`], the result
-//! and report in [`super::frf_result`], the files in [`super::frf_files`].
+//! and report in [`result`], the files in [`files`].
 
-use super::frf_result::{self, rows, DirectCheck, FrfMode, FrfResult, OutputInfo, Pair, StateSpaceOut};
-use super::kind::{Analysis, Ctx, UsedMaterial};
+use result::{rows, DirectCheck, FrfMode, FrfResult, OutputInfo, Pair, StateSpaceOut};
+use crate::analysis::common::kind::{Analysis, Ctx, UsedMaterial};
 use super::{AnalysisError, Report, RunError};
 use crate::case::error::CaseError;
 use crate::fem::frf::{modal_frf, relative_difference, Damping, DirectFrf, ModalFrf, Ports, C64};
@@ -14,6 +14,8 @@ use crate::fem::Model;
 use nalgebra::DMatrix;
 
 pub mod case;
+pub mod files;
+pub mod result;
 
 pub use case::{parse_frf, DampingSpec, FrequencySpec, FrfCase, InputSpec, OutputSpec, Spacing, ValidFrf};
 
@@ -232,16 +234,16 @@ impl Analysis for FrfKind {
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         let (r, ss) = run(&validated(case)?, ctx.cache)?;
-        ctx.warnings.extend(super::warn::fewer_modes(case.modes, r.modes.len(), None));
+        ctx.warnings.extend(crate::analysis::common::warn::fewer_modes(case.modes, r.modes.len(), None));
         if ctx.with_files {
-            ctx.files = super::frf_files::files(&r, &ss)?;
+            ctx.files = files::files(&r, &ss)?;
         }
         Ok(r)
     }
     fn report(r: &Self::Result) -> Report {
-        frf_result::report(r)
+        result::report(r)
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
-        super::kind::named_materials(&case.model.materials)
+        crate::analysis::common::kind::named_materials(&case.model.materials)
     }
 }

@@ -8,8 +8,8 @@ mod history;
 mod output;
 
 use crate::case::fields::case_struct;
-use super::kind::{Analysis, Ctx, UsedMaterial};
-use super::kind::named_materials;
+use crate::analysis::common::kind::{Analysis, Ctx, UsedMaterial};
+use crate::analysis::common::kind::named_materials;
 use super::{Report, RunError};
 use crate::case::fem_case::{mesh_rules, parse_with_model};
 use crate::case::mesh::{DofName, ElementSpec, GmshMapping};
@@ -441,12 +441,12 @@ impl Analysis for TransientKind {
         }
         .map_err(|e| RunError::Analysis(super::AnalysisError::new("transient", e.to_string())))?;
         ctx.warnings.extend(raw.warnings.iter().cloned());
-        ctx.warnings.extend(super::warn::equilibrium_floor_warning("nonlinear transient", raw.equilibrium));
+        ctx.warnings.extend(crate::analysis::common::warn::equilibrium_floor_warning("nonlinear transient", raw.equilibrium));
         if ctx.with_files {
             ctx.files.extend(output::files(&model, &inputs.opts, &raw)?);
         }
         let mut r = output::result(case, &inputs.opts, &raw);
-        let segments = super::warn::default_segments_note(&hinges);
+        let segments = crate::analysis::common::warn::default_segments_note(&hinges);
         for note in crate::fem::superelement::notes(&model).into_iter().chain(segments) {
             r.model = format!("{}; {note}", r.model);
         }

@@ -217,7 +217,7 @@ pub fn files(model: &Model, opts: &TransientOptions, raw: &TransientResults) -> 
                         .unwrap_or(0.0)
                 })
                 .collect();
-            let vtu = crate::analysis::vtu::static_vtu(model, u, &|ie| vm[ie], &Default::default())?;
+            let vtu = crate::analysis::common::vtu::static_vtu(model, u, &|ie| vm[ie], &Default::default())?;
             pvd += &format!("    <DataSet timestep=\"{t}\" group=\"\" part=\"0\" file=\"{name}\"/>\n");
             out.push((name, vtu.into_bytes()));
         }
