@@ -51,7 +51,9 @@ pub trait Problem: Sync {
 pub enum GradientMethod {
     /// Central differences of the responses, one-sided at a bound (see [`jacobian`]).
     CentralDifferences,
-    /// The problem's own [`Problem::gradient`].
+    /// The problem's own [`Problem::gradient`]: for a mesh mechanism, the direct method through
+    /// the element matrices ([`crate::gradient::Linear`]); serialised `"direct"`.
+    #[serde(rename = "direct")]
     Problem,
 }
 

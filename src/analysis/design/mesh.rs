@@ -155,8 +155,10 @@ pub fn sensitivity_report(r: &MeshSensitivityResult) -> Report {
 pub struct Gradients {
     /// How they were obtained.
     pub method: GradientMethod,
-    /// Step of the differences: this fraction of each parameter's bound width.
-    pub relative_step: f64,
+    /// Step of the central differences: this fraction of each parameter's bound width (absent
+    /// for the direct method, whose element-level step is in `crate::gradient::linear`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub relative_step: Option<f64>,
     /// d metric / d parameter: `{"METRIC": {"PARAMETER": value}}`.
     pub values: Map<String, Value>,
 }
@@ -339,7 +341,7 @@ pub fn run_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<MeshDesignRes
         message,
         gradients: Gradients {
             method,
-            relative_step: problem::JACOBIAN_STEP,
+            relative_step: (method == GradientMethod::CentralDifferences).then_some(problem::JACOBIAN_STEP),
             values: mnames
                 .iter()
                 .zip(&jac)

@@ -29,6 +29,10 @@ pub struct MeshProblem<A> {
     pub metrics: usize,
     /// Node of the compliance entries after the metrics, if any.
     compliance_node: Option<usize>,
+    /// The case as written, when the responses have gradients by the direct method
+    /// ([`crate::gradient::Linear`]): a linear case, no compliance responses, and metrics of the
+    /// kinds whose recovery needs no solve of its own (not `frequency`, `buckling_margin`).
+    direct: Option<std::sync::Arc<crate::case::params::tangent::Written>>,
     analysis: std::marker::PhantomData<fn() -> A>,
 }
 
@@ -132,6 +136,20 @@ pub fn validate<A: StaticAnalysis>(
     if compliance_node.is_some() {
         responses.extend(compliance_names());
     }
+    use crate::case::mesh::MetricKind;
+    let direct = (!case.nonlinear
+        && compliance_node.is_none()
+        && case
+            .metrics
+            .iter()
+            .all(|m| !matches!(m.kind, MetricKind::Frequency | MetricKind::BucklingMargin)))
+    .then(|| {
+        std::sync::Arc::new(crate::case::params::tangent::Written {
+            value: inner.value.clone(),
+            mesh: crate::case::params::read_mesh(&inner.value, inner.dir.as_deref()),
+            dir: inner.dir.clone(),
+        })
+    });
     Ok(Validated {
         problem: MeshProblem {
             inner: inner.clone(),
@@ -139,6 +157,7 @@ pub fn validate<A: StaticAnalysis>(
             responses,
             metrics,
             compliance_node,
+            direct,
             analysis: std::marker::PhantomData,
         },
         base,
@@ -208,5 +227,20 @@ impl<A: StaticAnalysis> Problem for MeshProblem<A> {
             out.extend(c.matrix.iter().flatten());
         }
         Ok(out)
+    }
+
+    /// The direct-method gradients of the metrics ([`crate::gradient::Linear`]) where the case
+    /// allows them (see `direct`); central differences otherwise.
+    fn gradient(&self, w: &mut SolverCache, p: &[f64]) -> Option<Result<crate::problem::Jacobian, String>> {
+        let written = self.direct.as_ref()?;
+        let targets = self.responses[..self.metrics]
+            .iter()
+            .map(|n| crate::gradient::Target::Metric(n.clone()))
+            .collect();
+        let values: Parameters = self.parameters.iter().cloned().zip(p.iter().copied()).collect();
+        let g = crate::gradient::Linear::new(written.clone(), targets)
+            .with_parameters(self.parameters.clone())
+            .evaluate(&values, w);
+        Some(g.map(|g| g.jacobian).map_err(|e| e.to_string()))
     }
 }
