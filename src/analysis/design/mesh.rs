@@ -367,15 +367,7 @@ pub fn run_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<MeshDesignRes
 /// No CSV: the parameters and metrics carry the case's own units, which a CSV header cannot
 /// name; the history is in the JSON result.
 pub fn design_report(r: &MeshDesignResult) -> Report {
-    let mut md = String::from("# Design of the mechanism\n\n");
-    md += if r.meets {
-        "**The design meets every requirement.**\n\n"
-    } else {
-        "**No design meets the requirements.**\n\n"
-    };
-    if let Some(m) = &r.message {
-        md += &format!("{m}\n\n");
-    }
+    let mut md = super::verdict("# Design of the mechanism", r.meets, r.message.as_deref());
     let num = |v: &Value| v.as_f64().map_or("—".to_string(), |x| sig(x, 5));
     let mut t = Table::new(&["parameter", "value"]);
     for (k, v) in &r.design {

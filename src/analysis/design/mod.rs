@@ -167,17 +167,28 @@ pub fn run_design_warned(c: &DesignCase) -> Result<(DesignResult, Vec<String>), 
     Ok((r, warnings))
 }
 
-/// Markdown/CSV of a design result.
-pub fn design_report(r: &DesignResult) -> Report {
-    let mut md = String::from("# Stage sizing (Ruiz et al. (2019) Fig. 11 loop)\n\n");
-    md += if r.meets {
+/// The opening of a design report (stage or mesh): the title, whether the design meets every
+/// requirement, and the optimiser's message if any.
+fn verdict(title: &str, meets: bool, message: Option<&str>) -> String {
+    let mut md = format!("{title}\n\n");
+    md += if meets {
         "**The design meets every requirement.**\n\n"
     } else {
         "**No design meets the requirements.**\n\n"
     };
-    if let Some(m) = &r.message {
+    if let Some(m) = message {
         md += &format!("{m}\n\n");
     }
+    md
+}
+
+/// Markdown/CSV of a design result.
+pub fn design_report(r: &DesignResult) -> Report {
+    let mut md = verdict(
+        "# Stage sizing (Ruiz et al. (2019) Fig. 11 loop)",
+        r.meets,
+        r.message.as_deref(),
+    );
     let mut t = Table::new(&["parameter", "value (mm)"]);
     for (k, v) in &r.design {
         t.row(vec![k.to_string(), format!("{:.4}", v.as_f64().unwrap_or(f64::NAN))]);

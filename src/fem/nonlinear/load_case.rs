@@ -25,16 +25,7 @@ pub(super) fn solve_case(
     model.validate_case(case)?;
     let prescribed = prescribed_dofs(case);
     let nn = model.nodes.len();
-    let mut f_ext = vec![0.0; 6 * nn];
-    for l in &case.forces {
-        for d in 0..6 {
-            f_ext[6 * l.node + d] += l.f[d];
-        }
-    }
-    let mut u_c = vec![0.0; 6 * nn];
-    for p in &case.displacements {
-        u_c[6 * p.node + p.dof.index()] = p.value;
-    }
+    let (f_ext, u_c) = case_vectors(nn, case);
     let ctx = case_ctx(model, elems, &prescribed, &case.name, f_ext, u_c, opts, &[])?;
     let mut st = State {
         u: vec![Vector3::zeros(); nn],
@@ -172,4 +163,20 @@ pub(super) fn case_ctx<'a>(
         par: opts.parallelism,
         tracker,
     })
+}
+
+/// The applied forces and the prescribed displacements of `case` as full vectors (6 per node of
+/// a model of `nn` nodes): N, N·mm; mm, rad.
+pub(super) fn case_vectors(nn: usize, case: &LoadCase) -> (Vec<f64>, Vec<f64>) {
+    let mut f_ext = vec![0.0; 6 * nn];
+    for l in &case.forces {
+        for d in 0..6 {
+            f_ext[6 * l.node + d] += l.f[d];
+        }
+    }
+    let mut u_c = vec![0.0; 6 * nn];
+    for p in &case.displacements {
+        u_c[6 * p.node + p.dof.index()] = p.value;
+    }
+    (f_ext, u_c)
 }

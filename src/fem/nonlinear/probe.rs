@@ -9,7 +9,7 @@
 //! re-derives the rigid-link slaves from them ([`Probe::rebase`]), so a residual of the other
 //! model at the same configuration is the residual "at fixed displacements".
 
-use super::load_case::case_ctx;
+use super::load_case::{case_ctx, case_vectors};
 use super::residual::norm;
 use super::state::{element_data, Assemble, CaseCtx, ElemData, State};
 use super::{NonlinearCase, NonlinearOptions, Tangent};
@@ -66,17 +66,7 @@ impl<'a> Probe<'a> {
             .get(load_case)
             .ok_or_else(|| FemError::BadInput(format!("load case {load_case} does not exist")))?;
         model.validate_case(case)?;
-        let nn = model.nodes.len();
-        let mut f_ext = vec![0.0; 6 * nn];
-        for l in &case.forces {
-            for d in 0..6 {
-                f_ext[6 * l.node + d] += l.f[d];
-            }
-        }
-        let mut u_c = vec![0.0; 6 * nn];
-        for p in &case.displacements {
-            u_c[6 * p.node + p.dof.index()] = p.value;
-        }
+        let (f_ext, u_c) = case_vectors(model.nodes.len(), case);
         let opts = NonlinearOptions {
             tangent: Tangent::Full,
             ..Default::default()
