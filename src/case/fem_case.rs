@@ -230,6 +230,7 @@ pub fn parse_static(value: Value, base: &crate::case::Source<'_>) -> Result<Stat
     let steps = stage::check_steps("steps", o.steps, nonlinear)?;
     let model = read_model(model, o.mesh.as_deref(), o.gmsh.as_ref(), base)?;
     super::mesh::requests::check_compliance(&o.compliance, model.nodes.len())?;
+    super::mesh::requests::check_picture(&o.output.picture, &model.load_cases)?;
     super::mesh::requests::check_track(o.track.as_ref(), nonlinear, model.nodes.len())?;
     super::mesh::metrics::check_metrics(&o.metrics, &model, nonlinear)?;
     check_gradients(o.gradients, nonlinear, &o.metrics)?;

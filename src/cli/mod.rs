@@ -170,7 +170,8 @@ fn write_outputs(dir: &Path, outcome: &analysis::Outcome) -> std::io::Result<()>
     std::fs::create_dir_all(dir)?;
     let json = crate::report::json::pretty(&outcome.json);
     write_atomic(&dir.join("result.json"), json.as_bytes())?;
-    write_atomic(&dir.join("report.md"), outcome.report.markdown.as_bytes())?;
+    let markdown = with_picture(&outcome.report.markdown, &outcome.files);
+    write_atomic(&dir.join("report.md"), markdown.as_bytes())?;
     if !outcome.report.csv.is_empty() {
         write_atomic(&dir.join("result.csv"), outcome.report.csv.as_bytes())?;
     }
@@ -178,6 +179,19 @@ fn write_outputs(dir: &Path, outcome: &analysis::Outcome) -> std::io::Result<()>
         write_atomic(&dir.join(name), bytes)?;
     }
     Ok(())
+}
+
+/// The report with the picture of the model (`model.svg`, when the run wrote one) embedded
+/// under its title line.
+fn with_picture(markdown: &str, files: &analysis::Files) -> String {
+    if !files.iter().any(|(name, _)| name == "model.svg") {
+        return markdown.to_string();
+    }
+    let image = "![The model: undeformed in grey, deformed on top (model.svg)](model.svg)\n";
+    match markdown.split_once('\n') {
+        Some((title, rest)) if title.starts_with('#') => format!("{title}\n\n{image}{rest}"),
+        _ => format!("{image}\n{markdown}"),
+    }
 }
 
 /// Writes `bytes` to `path` atomically, through a safely created temporary file

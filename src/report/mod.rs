@@ -3,6 +3,7 @@
 pub mod axis;
 pub mod json;
 pub mod markdown;
+pub mod model_svg;
 pub mod numbers;
 pub mod svg;
 pub mod vtk;

@@ -5,6 +5,7 @@ pub mod finite;
 pub mod kind;
 pub mod line;
 pub mod outcome;
+pub mod picture;
 pub mod units;
 pub mod vtu;
 pub mod warn;

@@ -335,6 +335,7 @@ impl Analysis for Static {
         }
         if ctx.with_files {
             ctx.files = fem_static::vtu_files(&model, &raw)?;
+            ctx.files.push(fem_static::picture::file(&model, &raw, &r, &hinges, &case.output.picture)?);
             let tracked = r
                 .load_cases
                 .iter()
@@ -410,6 +411,7 @@ impl Analysis for Modal {
             .extend(warn::fewer_modes(case.modes, raw.modes.len(), Some(raw.n_eq)));
         if ctx.with_files {
             ctx.files = vec![("modes.vtu".to_string(), modal::vtu(&model, &raw)?)];
+            ctx.files.extend(modal::picture(&model, &raw, &hinges));
         }
         Ok(r)
     }

@@ -12,6 +12,7 @@ pub mod inner_nodes;
 pub mod metrics;
 pub mod nonlinear_path;
 pub mod path_rows;
+pub mod picture;
 mod report;
 mod rows;
 mod summary;

@@ -268,3 +268,35 @@ pub fn report(r: &ModalResult) -> Report {
     }
     Report { markdown: md, csv }
 }
+
+/// `model.svg` of a modal run: the first mode shape (its amplitude scaled to about 8 % of the
+/// model's size) over the undeformed ghost, hinges drawn as grey notch symbols (a mode has no
+/// stress level); nothing when no mode was found.
+pub fn picture(model: &Model, r: &ModalResults, hinges: &[crate::case::mesh::BuiltHinge]) -> Option<(String, Vec<u8>)> {
+    use crate::analysis::common::picture::{self, HingeMark, Scene};
+    let m = r.modes.first()?;
+    let marks = hinges
+        .iter()
+        .filter_map(|b| match (&model.elements[b.element], &model.elements[b.last]) {
+            (crate::fem::Element::Flex(f), crate::fem::Element::Flex(g)) => Some(HingeMark {
+                label: format!("element {}", b.case_element),
+                nodes: [f.nodes[0], g.nodes[1]],
+                utilisation: None,
+            }),
+            _ => None,
+        })
+        .collect();
+    let scene = Scene {
+        model,
+        displacements: Some(&m.shape),
+        marks,
+        drawn: &Default::default(),
+        load_case: None,
+        title: "flexfem modal: the first mode".to_string(),
+        name: "mode 1".to_string(),
+        what: format!("mode 1, {} Hz", crate::report::markdown::sig(m.frequency_hz, 5)),
+        mode: true,
+    };
+    let text = picture::render(&scene, &Default::default());
+    Some(("model.svg".to_string(), text.into_bytes()))
+}

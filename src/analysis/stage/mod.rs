@@ -431,6 +431,9 @@ pub fn run_stage_with(
                     text.into_bytes(),
                 ));
             }
+            if let Some(c) = results.first() {
+                out_files.push(stage_picture(s, c, &drawn, allowable));
+            }
             // The same model as a `static` case (none with ideal joints, see StageModel::mesh_case).
             if let Some(mesh) = s.mesh_case(&user, nonlinear) {
                 let text = serde_json::to_string_pretty(&mesh)
@@ -462,6 +465,48 @@ pub fn run_stage_with(
         calibration_warnings: crate::case::stage::stage_warnings(&design),
     };
     Ok((result, out_files))
+}
+
+/// `model.svg` of the stage: load case `c` deformed over the undeformed ghost (isometric, like
+/// Fig. 1 of Ruiz et al. 2019), the platform and sliders shaded, each leg's revolute and
+/// spherical hinge coloured by its peak stress over `allowable` (the `hinge_stress` of the
+/// result's load case).
+fn stage_picture(
+    s: &StageModel,
+    c: &StageCaseResult,
+    drawn: &crate::analysis::common::vtu::Drawn,
+    allowable: f64,
+) -> (String, Vec<u8>) {
+    use crate::analysis::common::picture::{self, HingeMark, Scene};
+    let mut marks = Vec::new();
+    for (i, leg) in s.legs.iter().enumerate() {
+        let hinges = [
+            (leg.rev_element, c.revolute_stress[i], "revolute"),
+            (leg.sph_element, c.spherical_stress[i], "spherical"),
+        ];
+        for (el, stress, kind) in hinges {
+            if let Some(crate::fem::Element::Flex(f)) = el.map(|e| &s.model.elements[e]) {
+                marks.push(HingeMark {
+                    label: format!("leg {} {kind}", i + 1),
+                    nodes: f.nodes,
+                    utilisation: allowable.is_finite().then(|| stress / allowable),
+                });
+            }
+        }
+    }
+    let scene = Scene {
+        model: &s.model,
+        displacements: Some(&c.fe.displacements),
+        marks,
+        drawn,
+        load_case: s.model.load_cases.iter().find(|l| l.name == c.name),
+        title: "flexfem stage: the 3-PRS stage".to_string(),
+        what: format!("load case \"{}\"", c.name),
+        name: c.name.to_string(),
+        mode: false,
+    };
+    let text = picture::render(&scene, &Default::default());
+    ("model.svg".to_string(), text.into_bytes())
 }
 
 /// Rigid bodies drawn in `.vtu` files: the platform as the triangle through the three neck tops

@@ -30,7 +30,7 @@ pub use load_shapes::{
     PressureSpec,
 };
 pub use metrics::{MetricKind, MetricRequest};
-pub use requests::{ComplianceRequest, StaticOutput, TrackRequest};
+pub use requests::{ComplianceRequest, PictureRequest, StaticOutput, TrackRequest, ViewRequest};
 pub use shapes::{
     ElementSpec, GmshMapping, GroupSpec, JointKind, MeshSpec, PlacementSpec, RigidSpec, SectionSpec, SupportSpec,
 };

@@ -17,6 +17,111 @@ pub struct StaticOutput {
     /// the case's nodes) in `displacements`. Default false: one row per node of the case.
     #[serde(default)]
     pub internal_nodes: bool,
+    /// How `model.svg` (written by `run --out`) draws the model: view, deformation scale, load
+    /// case, numbers. Default: isometric view, automatic scale, the first load case.
+    #[serde(default)]
+    pub picture: PictureRequest,
+}
+
+/// `"output": {"picture": …}` of a `static` case: how `model.svg` draws the model.
+#[derive(Debug, Clone, Default, PartialEq, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PictureRequest {
+    /// The viewing direction: `"iso"` (default, from the +x +y +z octant), `"front"` (from −y: x
+    /// right, z up), `"side"` (from +x: y right, z up), `"top"` (from +z: x right, y up), or
+    /// `{"azimuth": deg, "elevation": deg}` (the viewer's direction: azimuth about z from +x,
+    /// elevation above the x–y plane).
+    #[serde(default)]
+    pub view: Option<ViewRequest>,
+    /// Deformation scale (drawn displacement / computed displacement), > 0; default automatic:
+    /// 1 when the largest displacement is at least 5 % of the model's size, else a round
+    /// number that draws it as about 8 % of the model's size.
+    #[serde(default)]
+    pub scale: Option<f64>,
+    /// The load case drawn deformed (its name); default the first.
+    #[serde(default)]
+    pub load_case: Option<String>,
+    /// Write node numbers beside the nodes. Default false.
+    #[serde(default)]
+    pub numbers: bool,
+}
+
+/// A viewing direction of `model.svg`.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, schemars::JsonSchema)]
+#[serde(untagged)]
+pub enum ViewRequest {
+    /// A named view.
+    Named(NamedView),
+    /// The viewer's direction, degrees.
+    Angles {
+        /// Azimuth about global z from +x, degrees.
+        azimuth: f64,
+        /// Elevation above the x–y plane, −90 … 90 degrees.
+        elevation: f64,
+    },
+}
+
+/// Named views of `model.svg`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, schemars::JsonSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum NamedView {
+    /// From the +x +y +z octant.
+    Iso,
+    /// From −y: x right, z up.
+    Front,
+    /// From +x: y right, z up.
+    Side,
+    /// From +z: x right, y up.
+    Top,
+}
+
+impl ViewRequest {
+    /// (azimuth, elevation) of the view, degrees.
+    pub fn angles(&self) -> (f64, f64) {
+        match *self {
+            ViewRequest::Named(NamedView::Iso) => (45.0, 35.264_389_682_754_654),
+            ViewRequest::Named(NamedView::Front) => (-90.0, 0.0),
+            ViewRequest::Named(NamedView::Side) => (0.0, 0.0),
+            ViewRequest::Named(NamedView::Top) => (0.0, 90.0),
+            ViewRequest::Angles { azimuth, elevation } => (azimuth, elevation),
+        }
+    }
+}
+
+/// Validates `output.picture` (paths `output.picture.…`) against the model's load cases.
+pub fn check_picture(p: &PictureRequest, load_cases: &[super::LoadCaseSpec]) -> Result<(), CaseError> {
+    if let Some(ViewRequest::Angles { azimuth, elevation }) = p.view {
+        if !azimuth.is_finite() {
+            return Err(CaseError::new(
+                "output.picture.view.azimuth",
+                format!("{azimuth} is not a finite angle (degrees)"),
+            ));
+        }
+        if !(elevation.is_finite() && (-90.0..=90.0).contains(&elevation)) {
+            return Err(CaseError::new(
+                "output.picture.view.elevation",
+                format!("{elevation} is outside −90 … 90 degrees"),
+            ));
+        }
+    }
+    if let Some(s) = p.scale {
+        if !(s.is_finite() && s > 0.0) {
+            return Err(CaseError::new(
+                "output.picture.scale",
+                format!("{s} is not a deformation scale: give a number > 0 (or leave it out for automatic)"),
+            ));
+        }
+    }
+    if let Some(name) = &p.load_case {
+        if !load_cases.iter().any(|c| &c.name == name) {
+            let names: Vec<&str> = load_cases.iter().map(|c| c.name.as_str()).collect();
+            return Err(CaseError::new(
+                "output.picture.load_case",
+                format!("\"{name}\" is no load case of the model (load cases: {})", names.join(", ")),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// One entry of `"compliance"`: the 6×6 compliance of a node with the model's supports.
