@@ -87,7 +87,11 @@ fn parallelogram_picture_marks_every_hinge_with_its_utilisation() {
     let lc = &r["load_cases"][0];
     let hinges = lc["hinges"].as_array().unwrap();
     let m = marks(&svg);
-    assert_eq!(m.len(), hinges.len(), "one notch symbol per hinge of the first load case");
+    assert_eq!(
+        m.len(),
+        hinges.len(),
+        "one notch symbol per hinge of the first load case"
+    );
     assert!(m.len() >= 4);
     for h in hinges {
         let label = format!("element {}", h["element"]);
@@ -105,7 +109,10 @@ fn parallelogram_picture_marks_every_hinge_with_its_utilisation() {
         [1.0, 2.0, 5.0].iter().any(|m| (mantissa - m).abs() < 1e-9),
         "scale {scale} is not 1, 2 or 5 × 10ⁿ"
     );
-    assert!(svg.contains(&format!("deformation × {scale} (largest displacement")), "scale stated");
+    assert!(
+        svg.contains(&format!("deformation × {scale} (largest displacement")),
+        "scale stated"
+    );
     assert!(svg.contains("class=\"ghost\"") && svg.contains("class=\"support\"") && svg.contains("class=\"load\""));
     // The report embeds the picture.
     assert!(read(&out, "report.md").contains("](model.svg)"));
@@ -165,7 +172,10 @@ fn picture_options_change_the_view_and_bad_ones_are_refused() {
     let d = tempdir("model_svg_options");
     let p = write(&d, "case.json", &case.to_string());
     let mesh_dir = d.clone();
-    let o = run_in(&mesh_dir, &["run", p.to_str().unwrap(), "--out", d.join("o").to_str().unwrap()]);
+    let o = run_in(
+        &mesh_dir,
+        &["run", p.to_str().unwrap(), "--out", d.join("o").to_str().unwrap()],
+    );
     assert!(o.status.success(), "{}", stderr(&o));
     let svg = read(&d.join("o"), "model.svg");
     assert_eq!(attr(&svg, "data-scale"), Some("10"));
@@ -181,7 +191,10 @@ fn picture_options_change_the_view_and_bad_ones_are_refused() {
             &["output.picture.view.elevation", "100"][..],
         ),
         (serde_json::json!({"scale": -1}), &["output.picture.scale", "-1"][..]),
-        (serde_json::json!({"load_case": "nope"}), &["output.picture.load_case", "nope"][..]),
+        (
+            serde_json::json!({"load_case": "nope"}),
+            &["output.picture.load_case", "nope"][..],
+        ),
         (serde_json::json!({"view": "diagonal"}), &["output.picture.view"][..]),
     ] {
         case["output"] = serde_json::json!({ "picture": picture });

@@ -47,7 +47,11 @@ impl View {
 }
 
 fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
 }
 
 fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
@@ -162,7 +166,10 @@ fn hex(c: [u8; 3]) -> String {
 }
 
 fn esc(s: &str) -> String {
-    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
 }
 
 /// The projection onto the canvas: pixels per mm and the offset.
@@ -222,7 +229,10 @@ impl Projector {
 }
 
 fn points_attr(pts: &[(f64, f64)]) -> String {
-    pts.iter().map(|(x, y)| format!("{x:.1},{y:.1}")).collect::<Vec<_>>().join(" ")
+    pts.iter()
+        .map(|(x, y)| format!("{x:.1},{y:.1}"))
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 /// Convex hull (screen points) by the monotone chain.
@@ -287,8 +297,15 @@ pub fn render(pic: &Picture) -> String {
         pic.scale,
         esc(pic.load_case)
     );
-    let _ = writeln!(s, r##"<rect x="0" y="0" width="{WIDTH:.0}" height="{height:.0}" fill="#ffffff"/>"##);
-    let _ = writeln!(s, r#"<text class="title" x="{MARGIN}" y="24" font-size="16">{}</text>"#, esc(pic.title));
+    let _ = writeln!(
+        s,
+        r##"<rect x="0" y="0" width="{WIDTH:.0}" height="{height:.0}" fill="#ffffff"/>"##
+    );
+    let _ = writeln!(
+        s,
+        r#"<text class="title" x="{MARGIN}" y="24" font-size="16">{}</text>"#,
+        esc(pic.title)
+    );
     let _ = writeln!(
         s,
         r##"<text class="caption" x="{MARGIN}" y="44" font-size="12" fill="#444444">{}</text>"##,
@@ -297,7 +314,10 @@ pub fn render(pic: &Picture) -> String {
 
     // The ghost: every item undeformed, thin and light.
     if pic.deformed.is_some() {
-        let _ = writeln!(s, r##"<g class="ghost" stroke="#c8c8c8" fill="none" stroke-width="1">"##);
+        let _ = writeln!(
+            s,
+            r##"<g class="ghost" stroke="#c8c8c8" fill="none" stroke-width="1">"##
+        );
         for it in pic.items {
             let pts: Vec<(f64, f64)> = it.points.iter().map(|&i| proj.at(pic.points[i])).collect();
             draw_outline(&mut s, &pts, matches!(it.shape, Shape::Shell { .. } | Shape::Rigid));
@@ -508,7 +528,12 @@ fn draw_legend(s: &mut String, height: f64) {
         );
     }
     for (u, label) in [(1.0, "1"), (0.5, "0.5"), (0.0, "0")] {
-        let _ = writeln!(s, r#"<text x="{:.1}" y="{:.1}">{label}</text>"#, x + 24.0, top + h * (1.0 - u) + 4.0);
+        let _ = writeln!(
+            s,
+            r#"<text x="{:.1}" y="{:.1}">{label}</text>"#,
+            x + 24.0,
+            top + h * (1.0 - u) + 4.0
+        );
     }
     let over = top + h + 12.0;
     let _ = writeln!(

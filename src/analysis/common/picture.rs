@@ -93,7 +93,11 @@ pub fn render(scene: &Scene, req: &PictureRequest) -> String {
             Element::Matrix(_) => {}
             Element::Shell4(s) => {
                 let n = s.nodes;
-                let pts = if n[3] == n[2] { vec![n[0], n[1], n[2]] } else { n.to_vec() };
+                let pts = if n[3] == n[2] {
+                    vec![n[0], n[1], n[2]]
+                } else {
+                    n.to_vec()
+                };
                 items.push(Item {
                     shape: Shape::Shell { utilisation: None },
                     points: pts,

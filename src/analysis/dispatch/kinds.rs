@@ -335,7 +335,13 @@ impl Analysis for Static {
         }
         if ctx.with_files {
             ctx.files = fem_static::vtu_files(&model, &raw)?;
-            ctx.files.push(fem_static::picture::file(&model, &raw, &r, &hinges, &case.output.picture)?);
+            ctx.files.push(fem_static::picture::file(
+                &model,
+                &raw,
+                &r,
+                &hinges,
+                &case.output.picture,
+            )?);
             let tracked = r
                 .load_cases
                 .iter()

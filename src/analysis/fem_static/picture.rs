@@ -19,7 +19,8 @@ pub fn hinge_marks(model: &Model, r: &StaticResult, ic: usize, hinges: &[BuiltHi
         .iter()
         .filter_map(|h| {
             let b = hinges.iter().find(|b| b.case_element == h.element)?;
-            let (Element::Flex(first), Element::Flex(last)) = (&model.elements[b.element], &model.elements[b.last]) else {
+            let (Element::Flex(first), Element::Flex(last)) = (&model.elements[b.element], &model.elements[b.last])
+            else {
                 return None;
             };
             Some(HingeMark {
@@ -40,9 +41,11 @@ pub fn file(
     req: &PictureRequest,
 ) -> Result<(String, Vec<u8>), AnalysisError> {
     let ic = match &req.load_case {
-        Some(name) => r.load_cases.iter().position(|c| &c.name == name).ok_or_else(|| {
-            AnalysisError::new("output.picture.load_case", format!("no load case \"{name}\""))
-        })?,
+        Some(name) => r
+            .load_cases
+            .iter()
+            .position(|c| &c.name == name)
+            .ok_or_else(|| AnalysisError::new("output.picture.load_case", format!("no load case \"{name}\"")))?,
         None => 0,
     };
     let case = raw.load_cases.get(ic);

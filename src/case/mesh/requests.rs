@@ -117,7 +117,10 @@ pub fn check_picture(p: &PictureRequest, load_cases: &[super::LoadCaseSpec]) -> 
             let names: Vec<&str> = load_cases.iter().map(|c| c.name.as_str()).collect();
             return Err(CaseError::new(
                 "output.picture.load_case",
-                format!("\"{name}\" is no load case of the model (load cases: {})", names.join(", ")),
+                format!(
+                    "\"{name}\" is no load case of the model (load cases: {})",
+                    names.join(", ")
+                ),
             ));
         }
     }
