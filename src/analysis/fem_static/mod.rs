@@ -13,6 +13,7 @@ pub mod metrics;
 pub mod nonlinear_path;
 pub mod path_rows;
 pub mod picture;
+pub mod pivot;
 mod report;
 mod rows;
 mod summary;
@@ -136,6 +137,11 @@ pub fn solve_nonlinear_each(
             path_equilibrium_residual: Some(c.equilibrium),
             critical_load_factor: c.critical_load_factor,
             track: track.map(|t| track::row(t, lc, c, &o.track)),
+            centre_of_rotation: if o.track.ends_with(&pivot::tracks(model)) {
+                pivot::rows(model, &c.path)
+            } else {
+                Vec::new()
+            },
             ..row(&c.fe)
         })
         .collect();
@@ -237,6 +243,7 @@ fn row(c: &fem::CaseResult) -> StaticCaseRow {
         critical_load_factor: None,
         critical_points: Vec::new(),
         trace: None,
+        centre_of_rotation: Vec::new(),
         shell_stress: None,
         shell_forces: Vec::new(),
         hinges: Vec::new(),

@@ -23,6 +23,8 @@ pub fn options(model: &Model, case: &StaticCase, steps: usize) -> Vec<fem::Nonli
             let mut o = path_control::options(c, steps);
             o.track.extend(strokes.iter().copied());
             o.step_track = step_track.clone();
+            // Last: the rigid bodies' poses, for their centres of rotation (super::pivot).
+            o.track.extend(super::pivot::tracks(model));
             o
         })
         .collect()
@@ -51,6 +53,9 @@ pub fn solve(
         "changes of stability along the path located by bisection in the load factor to {:e} (relative), with the critical mode",
             fem::nonlinear::CRITICAL_TOL
         ));
+    }
+    if r.load_cases.iter().any(|c| !c.centre_of_rotation.is_empty()) {
+        r.model.push(super::pivot::NOTE.to_string());
     }
     let mut files = Files::new();
     for ((row, spec), (path, critical)) in r.load_cases.iter_mut().zip(&case.model.load_cases).zip(&paths) {

@@ -76,6 +76,10 @@ pub struct StaticCaseRow {
     /// (omitted otherwise).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub track: Option<super::track::TrackRow>,
+    /// Nonlinear runs with rigid bodies: each body's instantaneous centre of rotation per step
+    /// of the path and its drift ([`super::pivot`]; omitted otherwise).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub centre_of_rotation: Vec<super::pivot::BodyPivotRow>,
     /// The nodes with applied nodal loads or prescribed displacements, ascending (for the
     /// report's summary; not written to the JSON).
     #[serde(skip)]
