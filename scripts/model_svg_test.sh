@@ -6,11 +6,14 @@
 #
 # Exit 0: passed, or skipped because Chromium cannot be installed here (said on stdout);
 # exit 1: a wrong picture. Needs target/release/flexfem (built by `cargo test --release`).
+# `--install-only`: just install Chromium if missing (.ci/run does this in the background first).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 bin=target/release/flexfem
-[ -x "$bin" ] || { echo "model_svg_test: $bin missing (run cargo build --release first)"; exit 1; }
-command -v python3 >/dev/null || { echo "model_svg_test: SKIPPED (no python3)"; exit 0; }
+if [ "${1:-}" != "--install-only" ]; then
+    [ -x "$bin" ] || { echo "model_svg_test: $bin missing (run cargo build --release first)"; exit 1; }
+    command -v python3 >/dev/null || { echo "model_svg_test: SKIPPED (no python3)"; exit 0; }
+fi
 
 browser=$(command -v chromium || command -v chromium-browser || true)
 if [ -z "$browser" ]; then
@@ -20,6 +23,11 @@ if [ -z "$browser" ]; then
             >/tmp/model_svg_chromium_install.log 2>&1
         browser=$(command -v chromium || true)
     fi
+fi
+if [ "${1:-}" = "--install-only" ]; then
+    # .ci/run starts this in the background while Rust builds (the download is the slow part).
+    [ -n "$browser" ] && echo "model_svg_test: chromium ready ($browser)"
+    exit 0
 fi
 if [ -z "$browser" ]; then
     echo "model_svg_test: SKIPPED (Chromium cannot be installed here; see /tmp/model_svg_chromium_install.log)"
