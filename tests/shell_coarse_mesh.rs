@@ -133,3 +133,21 @@ fn clamped_square_plate_under_pressure_8x8() {
     );
     assert!(err.abs() < 0.01, "w = {c} q a^4/D");
 }
+
+/// The tile rotary inertia in closed form: square element of side h, node 0's tile [0, h/2]²
+/// has ∫Δx² = ∫Δy² = h⁴/48 and ∫ΔxΔy = h⁴/64, so m(θx, θx) = ρt³/12·h²/4 + ρt·h⁴/48 and
+/// m(θx, θy) = −ρt·h⁴/64; four such tiles around an interior node give ρt·h²·h²/12, the
+/// second moment of its tributary square (the value that balances the s²/3 stiffness excess).
+#[test]
+fn tile_rotary_inertia_of_a_square_element() {
+    let (h, t, rho) = (5.0, 0.4, 2.7e-9);
+    let xy = [[0.0, 0.0], [h, 0.0], [h, h], [0.0, h]];
+    let m = flexfem::fem::shell::shell_local_mass(&xy, t, rho).unwrap();
+    let rel = |got: f64, want: f64| ((got - want) / want).abs();
+    let diag = rho * t.powi(3) / 12.0 * h * h / 4.0 + rho * t * h.powi(4) / 48.0;
+    assert!(rel(m[(3, 3)], diag) < 1e-12, "{} vs {diag}", m[(3, 3)]);
+    assert!(rel(m[(4, 4)], diag) < 1e-12, "{} vs {diag}", m[(4, 4)]);
+    assert!(rel(m[(3, 4)], -rho * t * h.powi(4) / 64.0) < 1e-12, "{}", m[(3, 4)]);
+    assert!(rel(m[(2, 2)], rho * t * h * h / 4.0) < 1e-12, "{}", m[(2, 2)]);
+    assert!(m[(5, 5)] == 0.0, "no drilling inertia");
+}
