@@ -3,8 +3,14 @@
 //! applies: the Reissner–Mindlin shift of these six modes is below 0.01 %), Al 7075.
 //! Frequency parameter λ = ωa²√(ρt/D), D = Et³/(12(1−ν²)).
 //!
-//! Before the stabilized shear and the lumped mass (pure MITC4, consistent mass), 8×8 gave
-//! +4…+28 % on the square (modes 5–6 +28 %) and +7…+47 % on the skew plate.
+//! With the consistent mass, 8×8 gave +4…+28 % on the square (modes 5–6 +28 %) and +7…+47 % on
+//! the skew plate; with the lumped mass alone −0.4…+11 % and +3…+20 %. The lumped mass with the
+//! tiles' rotary inertia (`flexfem::fem::shell::shell_local_mass`) balances the stiffness excess
+//! of waves along one direction (square modes 5–6, +0.8 %) but over-corrects waves along both
+//! (square mode 4, −7.1 %; skew mode 6, +7.1 %): no direction-blind mass can balance both, so
+//! 8×8 is held to ±7.5 % and 12×12 to ±5 %. (The shear stabilization with α = 0.05, tuned on
+//! these plates, had 8×8 within ±5 % at the price of the statics of thin folded and curved
+//! shells; see `tests/shell_opensees.rs`.)
 
 use flexfem::fem::modal::{solve_modal, ModalOptions};
 use flexfem::fem::{self, LoadCase, Model, Support};
@@ -73,29 +79,29 @@ fn check(name: &str, n: usize, skew_deg: f64, reference: &[f64; 6], tol: f64) {
     }
 }
 
-/// Errors per mode, measured: square 8×8 −0.74 +0.51 +0.51 −4.46 +4.60 +4.85 %, 12×12 −0.37
-/// +0.09 +0.09 −2.14 +1.62 +1.74 %, 32×32 −0.07 −0.02 −0.02 −0.36 +0.15 +0.18 %.
+/// Errors per mode, measured: square 8×8 −0.75 −0.73 −0.73 −7.07 +0.58 +0.77 %, 12×12 −0.33
+/// −0.32 −0.32 −3.05 +0.27 +0.37 %, 32×32 −0.06 −0.07 −0.07 −0.46 −0.00 +0.03 %.
 #[test]
-fn clamped_square_plate_within_5_percent_coarse_and_half_a_percent_fine() {
-    for (n, tol) in [(8, 0.05), (12, 0.05), (32, 0.005)] {
+fn clamped_square_plate_within_5_percent_at_12x12_and_half_a_percent_fine() {
+    for (n, tol) in [(8, 0.075), (12, 0.05), (32, 0.005)] {
         check("clamped square", n, 0.0, &SQUARE, tol);
     }
 }
 
-/// Errors per mode, measured: 45° skew 8×8 −2.42 +0.02 −0.91 −4.67 −0.55 −0.76 %, 12×12 −1.14
-/// −0.02 −0.42 −2.10 −0.29 +0.09 %, 32×32 −0.17 −0.01 −0.08 −0.31 −0.08 +0.03 %.
+/// Errors per mode, measured: 45° skew 8×8 +0.65 +3.40 +1.56 +1.37 +1.57 +7.08 %, 12×12 +0.30
+/// +1.34 +0.53 +0.58 +0.03 +2.86 %, 32×32 +0.04 +0.18 +0.07 +0.08 −0.02 +0.37 %.
 #[test]
-fn clamped_skew_plate_within_5_percent_coarse_and_half_a_percent_fine() {
-    for (n, tol) in [(8, 0.05), (12, 0.05), (32, 0.005)] {
+fn clamped_skew_plate_within_5_percent_at_12x12_and_half_a_percent_fine() {
+    for (n, tol) in [(8, 0.075), (12, 0.05), (32, 0.005)] {
         check("clamped 45° skew", n, 45.0, &SKEW45, tol);
     }
 }
 
-/// The shear stabilization must not trade the frequencies for static accuracy: clamped square
-/// plate (a = 100, t = 0.1, Al 7075) under uniform pressure q, centre deflection
-/// w = 0.00126 q a⁴/D (S. Timoshenko, S. Woinowsky-Krieger, Theory of Plates and Shells, 2nd
-/// ed., 1959, Table 35). 8×8: 0.001291 (+2.5 %; pure MITC4 without the stabilization gave
-/// −0.7 % at ν = 0.3). Nodal loads: tributary areas (consistent for bilinear w on rectangles).
+/// The coarse-mesh frequencies must not be bought with static accuracy: clamped square plate
+/// (a = 100, t = 0.1, Al 7075) under uniform pressure q, centre deflection w = 0.00126 q a⁴/D
+/// (S. Timoshenko, S. Woinowsky-Krieger, Theory of Plates and Shells, 2nd ed., 1959, Table 35).
+/// 8×8: 0.001251 (−0.72 %, plain MITC4; the stabilized shear gave +2.5 %). Nodal loads:
+/// tributary areas (consistent for bilinear w on rectangles).
 #[test]
 fn clamped_square_plate_under_pressure_8x8() {
     let (n, q) = (8, 1e-3);
@@ -125,5 +131,23 @@ fn clamped_square_plate_under_pressure_8x8() {
         "clamped plate 8x8 under pressure: w = {c:.6} q a^4/D ({:+.2} %)",
         100.0 * err
     );
-    assert!(err.abs() < 0.03, "w = {c} q a^4/D");
+    assert!(err.abs() < 0.01, "w = {c} q a^4/D");
+}
+
+/// The tile rotary inertia in closed form: square element of side h, node 0's tile [0, h/2]²
+/// has ∫Δx² = ∫Δy² = h⁴/48 and ∫ΔxΔy = h⁴/64, so m(θx, θx) = ρt³/12·h²/4 + ρt·h⁴/48 and
+/// m(θx, θy) = −ρt·h⁴/64; four such tiles around an interior node give ρt·h²·h²/12, the
+/// second moment of its tributary square (the value that balances the s²/3 stiffness excess).
+#[test]
+fn tile_rotary_inertia_of_a_square_element() {
+    let (h, t, rho) = (5.0, 0.4, 2.7e-9);
+    let xy = [[0.0, 0.0], [h, 0.0], [h, h], [0.0, h]];
+    let m = flexfem::fem::shell::shell_local_mass(&xy, t, rho).unwrap();
+    let rel = |got: f64, want: f64| ((got - want) / want).abs();
+    let diag = rho * t.powi(3) / 12.0 * h * h / 4.0 + rho * t * h.powi(4) / 48.0;
+    assert!(rel(m[(3, 3)], diag) < 1e-12, "{} vs {diag}", m[(3, 3)]);
+    assert!(rel(m[(4, 4)], diag) < 1e-12, "{} vs {diag}", m[(4, 4)]);
+    assert!(rel(m[(3, 4)], -rho * t * h.powi(4) / 64.0) < 1e-12, "{}", m[(3, 4)]);
+    assert!(rel(m[(2, 2)], rho * t * h * h / 4.0) < 1e-12, "{}", m[(2, 2)]);
+    assert!(m[(5, 5)] == 0.0, "no drilling inertia");
 }

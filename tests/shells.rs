@@ -3,6 +3,7 @@
 //! "Stress projection for membrane and shear locking in shell finite elements", CMAME 51 (1985)
 //! 221–258), and Timoshenko's clamped plate. Meshes and errors are stated per test.
 
+use common::meshes::{area_load, with_loads};
 use flexfem::fem::{self, Dof, Element, LoadCase, Model, Support};
 use flexfem::material::Material;
 
@@ -26,35 +27,6 @@ fn grid(m: &mut Model, nx: usize, ny: usize, t: f64, mat: Material, f: impl Fn(f
         f(i as f64 / nx as f64, j as f64 / ny as f64)
     });
     (0..=ny).flat_map(|j| (0..=nx).map(move |i| id(i, j))).collect()
-}
-
-/// Consistent nodal loads of a uniform pressure/traction `q` (vector per unit area) on every
-/// shell: ¼ of each element's area to each node.
-fn area_load(m: &Model, q: [f64; 3]) -> Vec<[f64; 6]> {
-    let mut f = vec![[0.0; 6]; m.nodes.len()];
-    for e in &m.elements {
-        if let Element::Shell4(s) = e {
-            let p: Vec<nalgebra::Vector3<f64>> = s.nodes.iter().map(|&n| nalgebra::Vector3::from(m.nodes[n])).collect();
-            let area = 0.5 * (p[2] - p[0]).cross(&(p[3] - p[1])).norm();
-            for &n in &s.nodes {
-                for d in 0..3 {
-                    f[n][d] += q[d] * area / 4.0;
-                }
-            }
-        }
-    }
-    f
-}
-
-fn with_loads(mut m: Model, f: &[[f64; 6]]) -> Model {
-    let mut lc = LoadCase::new("load");
-    for (n, v) in f.iter().enumerate() {
-        if v.iter().any(|x| *x != 0.0) {
-            lc = lc.force(n, *v);
-        }
-    }
-    m.load_cases.push(lc);
-    m
 }
 
 fn fix(m: &mut Model, node: usize, dofs: &[Dof]) {
@@ -89,10 +61,11 @@ fn clamped_plate(n: usize) -> f64 {
 
 /// Clamped square plate, uniform pressure: w_max = 0.00126 q a⁴/D (S. Timoshenko,
 /// S. Woinowsky-Krieger, Theory of Plates and Shells, 2nd ed., 1959, Table 35: 0.00126).
-/// Full plate, 16×16 mesh, a/t = 1000: 0.001271 (+0.91 %); 8×8 0.001289, 32×32 0.001267.
+/// Full plate, 16×16 mesh, a/t = 1000: 0.0012617 (+0.13 %; the stabilized shear, α = 0.05, gave
+/// 0.001271, +0.91 %).
 #[test]
 fn clamped_square_plate_timoshenko() {
-    within("clamped plate 16x16: w / (q a^4/D)", clamped_plate(16), 0.00126, 0.02);
+    within("clamped plate 16x16: w / (q a^4/D)", clamped_plate(16), 0.00126, 0.004);
 }
 
 /// Scordelis–Lo roof: R = 25, L = 50, 2×40° arc, t = 0.25, E = 4.32e8, ν = 0, gravity 90 per
@@ -120,9 +93,9 @@ fn scordelis_lo(n: usize) -> f64 {
 
 #[test]
 fn scordelis_lo_roof() {
-    // 16×16 elements on the full roof (an 8×8 quarter): 0.30586 (+1.14 %); 8×8 0.32100,
-    // 32×32 0.30253 (+0.04 %).
-    within("Scordelis-Lo 16x16: w", scordelis_lo(16), 0.3024, 0.02);
+    // 16×16 elements on the full roof (an 8×8 quarter): 0.30385 (+0.48 %; the stabilized shear,
+    // α = 0.05, gave 0.30586, +1.14 %); 8×8 0.31597, 32×32 0.30165.
+    within("Scordelis-Lo 16x16: w", scordelis_lo(16), 0.3024, 0.007);
 }
 
 /// Pinched cylinder with rigid end diaphragms: R = 300, L = 600, t = 3, E = 3e6, ν = 0.3,
@@ -153,7 +126,8 @@ fn pinched_cylinder(n: usize) -> f64 {
 
 #[test]
 fn pinched_cylinder_with_diaphragms() {
-    // Octant 32×32: 1.8325e-5 (+0.42 %); 16×16 gives 1.7799e-5 (−2.5 %), so 32×32 is needed.
+    // Octant 32×32: 1.8054e-5 (−1.06 %; OpenSees ASDShellQ4 on the same mesh 1.8054e-5); MITC4
+    // converges from below under the point load, 16×16 is −7 %, so 32×32 is needed.
     within(
         "pinched cylinder octant 32x32: w",
         pinched_cylinder(32),
@@ -190,15 +164,17 @@ fn pinched_hemisphere(n: usize) -> (f64, f64) {
 
 #[test]
 fn pinched_hemisphere_18deg_hole() {
-    // Quarter 16×16: 0.09389 (−0.12 %); 8×8 0.0950, 32×32 0.0937.
+    // Quarter 16×16: 0.09309 (−0.97 %; OpenSees ASDShellQ4 on the same mesh 0.09309; the
+    // stabilized shear, α = 0.05, gave 0.09389). MITC4 converges to 0.0936 (0.4 % below the
+    // reference; `curved_shells_extrapolated_match_opensees`).
     let (ux, uy) = pinched_hemisphere(16);
     let err = (ux - 0.094) / 0.094;
     eprintln!(
         "pinched hemisphere 16x16: ux = {ux:.5}, uy = {uy:.5}, error {:.2} %",
         100.0 * err
     );
-    // The reference is printed to two digits (±0.5 %): 0.6 % asserted.
-    assert!(err.abs() < 0.006, "ux = {ux}");
+    // The reference is printed to two digits (±0.5 %), the mesh 0.6 % from converged: 1.2 %.
+    assert!(err.abs() < 0.012, "ux = {ux}");
     assert!((ux - uy).abs() < 1e-3 * ux);
 }
 
@@ -247,11 +223,13 @@ fn twisted_beam_thick() {
     assert!(e1.abs() < 0.02 && e2.abs() < 0.02);
 }
 
-/// Relative error of the 32×32 Scordelis–Lo roof allowed (measured +0.04 %).
-const ROOF_32_TOL: f64 = 1.3e-3;
+/// Relative error of the 32×32 Scordelis–Lo roof allowed (measured −0.25 %: the element
+/// converges to 0.30127, as OpenSees does, 0.37 % below the reference's 0.3024; see
+/// `curved_shells_extrapolated_match_opensees`).
+const ROOF_32_TOL: f64 = 3e-3;
 
-/// Scordelis–Lo roof under refinement, full roof 8×8 → 16×16 → 32×32: +6.15 %, +1.14 %,
-/// +0.04 % against 0.3024 (MacNeal & Harder 1985): the error falls at each refinement and the
+/// Scordelis–Lo roof under refinement, full roof 8×8 → 16×16 → 32×32: +4.49 %, +0.48 %,
+/// −0.25 % against 0.3024 (MacNeal & Harder 1985): the error falls at each refinement and the
 /// finest mesh is within `ROOF_32_TOL`.
 #[test]
 fn scordelis_lo_roof_converges() {
@@ -416,4 +394,41 @@ fn mixed_shell_beam_spring_rigid_statics() {
     assert!(c.statics.is_balanced(1e-8, 60.0), "{:?}", c.statics);
     assert!(c.elements.iter().filter(|e| e.shell.is_some()).count() == n * n);
     assert!(c.max_von_mises.unwrap() > 0.0);
+}
+
+/// OpenSees 3.7.1 (openseespy 3.7.1.2; `tools/opensees_shell.py`, the same meshes, supports and
+/// nodal loads): the displacement each builder above returns, on the meshes n = 32 and 64, for
+/// ShellMITC4 and ASDShellQ4.
+const OPENSEES: [(&str, [f64; 2], [f64; 2]); 3] = [
+    (
+        "Scordelis-Lo",
+        [0.298_337_609_0, 0.300_521_302_7],
+        [0.301_655_885_4, 0.301_370_510_5],
+    ),
+    (
+        "pinched cylinder",
+        [1.802_466_65e-5, 1.836_510_03e-5],
+        [1.805_388_03e-5, 1.837_231_09e-5],
+    ),
+    (
+        "pinched hemisphere",
+        [0.093_080_466_8, 0.093_472_415_5],
+        [0.093_388_202_9, 0.093_526_679_6],
+    ),
+];
+
+/// The curved benchmarks converged: Richardson (4u₆₄ − u₃₂)/3 of `scordelis_lo` (full roof),
+/// `pinched_cylinder` (octant) and `pinched_hemisphere` (quarter) against the same extrapolation
+/// of both OpenSees elements, within 0.3 % (measured: roof 0.301273, +0.01 % / −0.00 %;
+/// cylinder 1.84784e-5, −0.00 % / −0.00 %; hemisphere 0.093573, −0.03 % / −0.00 %).
+#[test]
+fn curved_shells_extrapolated_match_opensees() {
+    let ours: [fn(usize) -> f64; 3] = [scordelis_lo, pinched_cylinder, |n| pinched_hemisphere(n).0];
+    let ext = |u: [f64; 2]| (4.0 * u[1] - u[0]) / 3.0;
+    // zip-checked: both are arrays of 3, fixed by their types.
+    for ((name, mitc4, asdq4), f) in OPENSEES.iter().zip(ours) {
+        let e = ext([f(32), f(64)]);
+        within(&format!("{name} extrapolated vs ShellMITC4"), e, ext(*mitc4), 3e-3);
+        within(&format!("{name} extrapolated vs ASDShellQ4"), e, ext(*asdq4), 3e-3);
+    }
 }

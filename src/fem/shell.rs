@@ -10,27 +10,32 @@
 //! * **Bending and transverse shear**: MITC4 (E. N. Dvorkin, K.-J. Bathe, Eng. Comput. 1 (1984)
 //!   77): Reissner–Mindlin curvatures from bilinear rotations, 2×2 Gauss; covariant transverse
 //!   shear strains tied at the edge midpoints (γ_ξ at (0, ±1), γ_η at (±1, 0)), shear factor 5/6,
-//!   with the shear stiffness stabilized as κGt·t²/(t² + α h_K²), α = 0.05, h_K the longer
-//!   diagonal (M. Lyly, R. Stenberg, T. Vihinen, CMAME 110 (1993) 343).
-//! * **Mass**: lumped (row sums of ρt∫NᵢNⱼ dA on u v w and of ρt³/12∫NᵢNⱼ dA on θx θy), none on
-//!   the drilling rotation.
+//!   shear stiffness κGt (no stabilization).
+//! * **Mass**: lumped (row sums of ρt∫NᵢNⱼ dA on u v w and of ρt³/12∫NᵢNⱼ dA on θx θy) plus the
+//!   rotary inertia of each node's tributary tile on θx θy ([`shell_local_mass`]), none on the
+//!   drilling rotation.
 //!
-//! Why the stabilization and the lumped mass (coarse meshes). With bilinear w and θ and the
-//! shear tied to zero along each edge in the thin limit, an edge's mean rotation equals its chord
-//! slope. For a wave w = sin qx on elements of length h this makes the rotations tan(s)/s times
-//! too large (s = qh/2) and the strain energy tan²s·sin²s/s⁴ ≈ 1 + s²/3 times too high; the
-//! consistent bilinear mass underestimates the kinetic energy by (2 + cos 2s)/3 ≈ 1 − 2s²/3.
-//! Together the frequency is ≈ (1 + s²/2) too high: at 8×8 on a clamped square plate
-//! (modes 5–6, about 2.7 elements per half wave) +28 %, and up to +48 % on a 45° skew plate.
-//! Both errors are of the discretization, not of an implementation defect (pure MITC4 with
-//! consistent mass converges to Leissa's values from above at O(h²)). A shear compliance that
-//! grows with h² (MacNeal's residual bending flexibility; in the stabilized form above) counters
-//! the stiffness excess — for a Timoshenko beam of linear elements, 1/(κGt) + h²/(12D) makes the
-//! element exact; α = 0.05 on h_K² is about a third of that on square elements — and a diagonal
-//! mass keeps the nodal kinetic energy of the sampled wave.
+//! Coarse meshes in free vibration. With bilinear w and θ and the shear tied to zero along each
+//! edge in the thin limit, an edge's mean rotation equals its chord slope. For a wave w = sin qx
+//! on elements of length h this makes the rotations tan(s)/s times too large (s = qh/2) and the
+//! strain energy tan²s·sin²s/s⁴ ≈ 1 + s²/3 times too high; the consistent bilinear mass
+//! underestimates the kinetic energy by (2 + cos 2s)/3 ≈ 1 − 2s²/3. Together the frequency is
+//! ≈ (1 + s²/2) too high: at 8×8 on a clamped square plate (modes 5–6, about 2.7 elements per
+//! half wave) +28 %, and up to +48 % on a 45° skew plate. Both errors are of the discretization,
+//! not of an implementation defect (MITC4 with consistent mass converges to Leissa's values
+//! from above at O(h²)). The lumped mass keeps the kinetic energy of the sampled wave and the
+//! tiles add the ≈ s²/3 that balances the stiffness excess of a wave along one direction. A wave
+//! along both directions (sin qx·sin qy) has less excess (its curvatures are integrated over the
+//! bilinear interpolant across the wave, ≈ 1 − 2s²/3 of the energy), so the same tiles make it
+//! soft: no mass, being the same for every wave direction, balances both to O(s²).
 //! Measured, λ = ωa²√(ρt/D), modes 1–6 at 8×8, error against converged values: clamped square
-//! consistent MITC4 +4…+28 %, lumped MITC4 −0.4…+11 %, stabilized + lumped −4.5…+4.9 %;
-//! clamped 45° skew +7…+47 %, +3…+20 %, −4.7…+0.0 % (`tests/shell_coarse_mesh.rs`).
+//! consistent MITC4 +4…+28 %, lumped −0.4…+11 %, lumped + tiles −7.1…+0.8 % (12×12 −3.1…+0.4 %);
+//! clamped 45° skew +7…+47 %, +3…+20 %, +0.6…+7.1 % (12×12 +0.0…+2.9 %)
+//! (`tests/shell_coarse_mesh.rs`). A shear stabilization κGt·t²/(t² + α h_K²) (M. Lyly,
+//! R. Stenberg, T. Vihinen, CMAME 110 (1993) 343) with α = 0.05 chosen on these plates put them
+//! within ±5 % at 8×8 but made thin folded and curved shells 0.4–0.7 % too flexible even after
+//! extrapolation, and 5 % off plain MITC4 on a distorted plate mesh: the statics are plain MITC4
+//! again (`tests/shell_opensees.rs`).
 //! * **Warped quads**: the element works on the mean plane through the node centroid (normal
 //!   g₁ × g₂ of the diagonals' mid-lines); each node is joined to its projection by a rigid arm
 //!   of length z_i (MacNeal's rigid-link warping correction), d_proj = R(−z_i n) d_node.
@@ -56,7 +61,7 @@ use membrane::membrane;
 pub(crate) use membrane::membrane_rows;
 pub use membrane::shell_drilling_stiffness;
 use plate::plate_k;
-pub use plate::stabilized_shear_stiffness;
+pub use plate::transverse_shear_stiffness;
 pub(crate) use plate::{curvature_b, mitc_shear_b};
 pub use stress::{shell_stress, von_mises_plane, ShellStress};
 
@@ -200,13 +205,27 @@ pub fn shell_local_stiffness(xy: &[[f64; 2]; 4], t: f64, mat: &Material) -> Opti
     Some(k)
 }
 
-/// Lumped local mass: row sums of ρt∫NᵢNⱼ dA on u v w and of ρt³/12∫NᵢNⱼ dA on θx θy (for the
-/// bilinear element these equal the HRZ diagonal on parallelograms and stay positive on any
-/// convex quadrilateral), none on the drilling rotation θz. tonne, tonne·mm².
+/// Lumped local mass with the rotary inertia of each node's tributary tile, tonne, tonne·mm².
 ///
-/// Lumped rather than consistent: with the stabilized shear the consistent mass would put the
-/// coarse-mesh error back (the module notes; clamped square 8×8 modes 5–6 +8 %, 45° skew up to
-/// +12 %, against ±5 % lumped).
+/// * u v w: row sums ρt∫NᵢNⱼ dA (for the bilinear element the HRZ diagonal on parallelograms,
+///   positive on any convex quadrilateral).
+/// * θx θy: ρt³/12∫NᵢNⱼ dA (the plate's own rotary inertia) plus the second moments of the
+///   node's tile Ωᵢ, the quarter of the element nearest node i (the image of the natural
+///   quadrant between ξ = 0 and ξᵢ, η = 0 and ηᵢ), about the node: the lumped mass ρt|Ωᵢ| is
+///   not a point but the tile, and a tile that tilts with the normal (w − wᵢ = θx·Δy − θy·Δx in
+///   the thin limit) carries the kinetic energy ½ρt∫(θx·Δy − θy·Δx)² dA, i.e. the 2×2 block
+///   ρt [[∫Δy², −∫ΔxΔy], [−∫ΔxΔy, ∫Δx²]] on (θx, θy) (positive semi-definite). It vanishes as
+///   O(h²) under refinement, so the converged frequencies are those of the consistent mass.
+/// * θz: none (below).
+///
+/// Why the tiles (coarse meshes). For a wave w = sin qx on elements of length h (s = qh/2) the
+/// thin-limit MITC4 rotation is tan(s)/s times the slope and the strain energy
+/// tan²s·sin²s/s⁴ ≈ 1 + s²/3 times too high (module notes); the translational lumped mass keeps
+/// the kinetic energy of the sampled wave, and the tiles (∫Δx² = h²/12 per unit area on a
+/// uniform mesh) add tan²s/3 ≈ s²/3 to it: stiffness and mass excess cancel to O(s⁴), with no
+/// constant to choose. The same idea as the rotary inertia of lumped shell masses in
+/// K. S. Surana, "Lumped mass matrices with non-zero inertia for general shell and axisymmetric
+/// shell elements", IJNME 12 (1978) 1635–1650.
 ///
 /// θz is not a degree of freedom of Reissner–Mindlin shell theory: it only ties to the membrane's
 /// in-plane rotation through the drilling penalty. Rotary inertia on it made the θz patterns
@@ -233,8 +252,33 @@ pub fn shell_local_mass(xy: &[[f64; 2]; 4], t: f64, rho: f64) -> Option<Mat24> {
         for d in 0..5 {
             m[(6 * i + d, 6 * i + d)] = share * if d < 3 { mt } else { mr };
         }
+        let [jxx, jyy, jxy] = tile_moments(xy, i)?;
+        m[(6 * i + 3, 6 * i + 3)] += mt * jyy;
+        m[(6 * i + 4, 6 * i + 4)] += mt * jxx;
+        m[(6 * i + 3, 6 * i + 4)] -= mt * jxy;
+        m[(6 * i + 4, 6 * i + 3)] -= mt * jxy;
     }
     Some(m)
+}
+
+/// Second moments [∫Δx², ∫Δy², ∫ΔxΔy] (mm⁴) about node `i` of its tile: the image of the natural
+/// quadrant ξ ∈ [0, ξᵢ], η ∈ [0, ηᵢ]. 2×2 Gauss on the quadrant is exact (bilinear map).
+fn tile_moments(xy: &[[f64; 2]; 4], i: usize) -> Option<[f64; 3]> {
+    let mut out = [0.0; 3];
+    for &a in &[-G2, G2] {
+        for &b in &[-G2, G2] {
+            let (xi, eta) = (0.5 * XI[i] * (1.0 + a), 0.5 * ETA[i] * (1.0 + b));
+            let (n, _, _, det, _) = cartesian(xy, xi, eta)?;
+            let x: f64 = (0..4).map(|k| n[k] * xy[k][0]).sum::<f64>() - xy[i][0];
+            let y: f64 = (0..4).map(|k| n[k] * xy[k][1]).sum::<f64>() - xy[i][1];
+            // Quadrant → element: dξ dη = ¼ da db.
+            let w = 0.25 * det;
+            out[0] += w * x * x;
+            out[1] += w * y * y;
+            out[2] += w * x * y;
+        }
+    }
+    Some(out)
 }
 
 /// Global stiffness K = Tᵀ k T of a shell element with nodes at `x`.

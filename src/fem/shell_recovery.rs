@@ -21,7 +21,7 @@
 use super::error::FemError;
 use super::model::{Element, Model};
 use super::shell::{
-    cartesian, curvature_b, membrane_rows, mitc_shear_b, plane_stress, shell_geometry, stabilized_shear_stiffness,
+    cartesian, curvature_b, membrane_rows, mitc_shear_b, plane_stress, shell_geometry, transverse_shear_stiffness,
     Vec24, ETA, G2, XI,
 };
 use crate::material::Material;
@@ -130,9 +130,9 @@ pub fn shell_recovery(x: &[[f64; 3]; 4], t: f64, mat: &Material, d_global: &Vec2
     let (dm, dp) = split(&d);
     let c = plane_stress(mat.e, mat.nu);
     let ct = c * t;
-    // Transverse shear stiffness per unit width, N/mm: the element's own (stabilised MITC4),
+    // Transverse shear stiffness per unit width, N/mm: the element's own (MITC4),
     // so that Q balances the nodal forces; the shear stress is its parabolic peak 1.5·Q/t.
-    let ds = stabilized_shear_stiffness(&g.xy, t, mat);
+    let ds = transverse_shear_stiffness(t, mat);
     let GaussStrains {
         eps: eps_g,
         kap: kap_g,
@@ -304,7 +304,7 @@ mod tests {
         let c = plane_stress(mat.e, mat.nu);
         let energy = |xy: &[[f64; 2]; 4], d: &Vec24| {
             let s = gauss_strains(xy, t, &c, d).unwrap();
-            let gs = stabilized_shear_stiffness(xy, t, &mat);
+            let gs = transverse_shear_stiffness(t, &mat);
             (0..4)
                 .map(|g| {
                     (s.eps[g].dot(&(c * t * s.eps[g]))

@@ -36,7 +36,7 @@
 
 use super::error::FemError;
 use super::model::{Element, Model};
-use super::shell::{plane_stress, shell_geometry, stabilized_shear_stiffness, Vec24, ETA, G2, XI};
+use super::shell::{plane_stress, shell_geometry, transverse_shear_stiffness, Vec24, ETA, G2, XI};
 use super::shell_recovery::{gauss_strains, ShellField};
 use nalgebra::{Matrix3, SMatrix, Vector3};
 use std::collections::HashMap;
@@ -94,7 +94,7 @@ fn samples(model: &Model, ie: usize, u: &[[f64; 6]]) -> Option<ShellSamples> {
     let c = plane_stress(sh.material.e, sh.material.nu);
     let t = sh.t;
     let s = gauss_strains(&g.xy, t, &c, &d)?;
-    let ds = stabilized_shear_stiffness(&g.xy, t, &sh.material);
+    let ds = transverse_shear_stiffness(t, &sh.material);
     let mut out = ShellSamples {
         nodes: sh.nodes,
         pos: [Vector3::zeros(); 4],

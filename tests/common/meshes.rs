@@ -4,7 +4,7 @@
 //! joins (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1).
 #![allow(dead_code)]
 
-use flexfem::fem::{Beam, Element, Model, Section, Shell4, Support};
+use flexfem::fem::{Beam, Element, LoadCase, Model, Section, Shell4, Support};
 use flexfem::material::Material;
 use serde_json::{json, Value};
 
@@ -121,4 +121,34 @@ pub fn clamped_leaves(
         m.supports.push(Support::clamp(base));
         base + n
     })
+}
+
+/// Nodal loads of a uniform pressure/traction `q` (vector per unit area) on every shell: ¼ of
+/// each element's area to each node (consistent on parallelograms).
+pub fn area_load(m: &Model, q: [f64; 3]) -> Vec<[f64; 6]> {
+    let mut f = vec![[0.0; 6]; m.nodes.len()];
+    for e in &m.elements {
+        if let Element::Shell4(s) = e {
+            let p: Vec<nalgebra::Vector3<f64>> = s.nodes.iter().map(|&n| nalgebra::Vector3::from(m.nodes[n])).collect();
+            let area = 0.5 * (p[2] - p[0]).cross(&(p[3] - p[1])).norm();
+            for &n in &s.nodes {
+                for d in 0..3 {
+                    f[n][d] += q[d] * area / 4.0;
+                }
+            }
+        }
+    }
+    f
+}
+
+/// `m` with one load case "load" of the nodal forces `f` (one 6-vector per node; zeros skipped).
+pub fn with_loads(mut m: Model, f: &[[f64; 6]]) -> Model {
+    let mut lc = LoadCase::new("load");
+    for (n, v) in f.iter().enumerate() {
+        if v.iter().any(|x| *x != 0.0) {
+            lc = lc.force(n, *v);
+        }
+    }
+    m.load_cases.push(lc);
+    m
 }

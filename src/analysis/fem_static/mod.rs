@@ -71,7 +71,7 @@ pub fn result_of(
         "linear statics, small displacements".to_string(),
         "beams: 2-node exact Timoshenko (Euler–Bernoulli where \"shear\": false); stresses at section critical points"
             .to_string(),
-        "shells: 4-node flat shell (membrane with drilling rotation, MITC4 bending with stabilized shear); von Mises at the element centre, max of top/mid/bottom"
+        "shells: 4-node flat shell (membrane with drilling rotation, MITC4 bending and transverse shear); von Mises at the element centre, max of top/mid/bottom"
             .to_string(),
     ];
     notes.extend(fem::superelement::notes(model));

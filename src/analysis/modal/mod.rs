@@ -103,7 +103,7 @@ pub fn solve_with(
         })
         .collect();
     let mut notes = vec![
-        "mass: beams consistent (Hermite, with rotary inertia), shells lumped (row sums of the bilinear ρt and ρt³/12 mass), point masses".to_string(),
+        "mass: beams consistent (Hermite, with rotary inertia), shells lumped (row sums of the bilinear ρt and ρt³/12 mass, plus the rotary inertia of each node's tributary tile), point masses".to_string(),
         format!(
             "block shift-invert Lanczos on {} equations, shift {:.4e} (rad/s)², {} solves",
             r.n_eq, r.shift, r.lanczos_steps

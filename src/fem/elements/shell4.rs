@@ -6,7 +6,7 @@ use crate::fem::shell::{shell_stiffness, Mat24};
 use crate::material::Material;
 
 /// Four-node flat shell (see [`crate::fem::shell`]): membrane with drilling rotation + MITC4
-/// bending/shear (stabilized shear), lumped mass. Nodes in order around the element (the normal follows the right-hand rule).
+/// bending/shear, lumped mass with tile rotary inertia. Nodes in order around the element (the normal follows the right-hand rule).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Shell4 {
     pub nodes: [usize; 4],

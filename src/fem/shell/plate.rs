@@ -1,17 +1,9 @@
 //! Plate part of the shell element: Reissner–Mindlin curvature rows and the MITC4 transverse
-//! shear with the Lyly–Stenberg–Vihinen stabilization (see the module documentation of
-//! [`crate::fem::shell`]).
+//! shear (see the module documentation of [`crate::fem::shell`]).
 
 use super::{cartesian, jacobian, plane_stress, shape, G2, KAPPA};
 use crate::material::Material;
 use nalgebra::{Matrix2, SMatrix};
-
-/// Shear stabilization α of the MITC4 plate part: transverse shear stiffness
-/// κGt·t²/(t² + α h_K²) (M. Lyly, R. Stenberg, T. Vihinen, CMAME 110 (1993) 343). Chosen with
-/// numbers on clamped square and 45° skew plates with the lumped mass (see the module notes):
-/// α = 0.05 puts modes 1–6 of both within ±5 % at 8×8 and ±2.5 % at 12×12; 0.04 leaves the
-/// square's modes 5–6 above +5 %, 0.06 puts the skew plate's mode 4 below −6 %.
-const SHEAR_STAB: f64 = 0.05;
 
 /// MITC4 covariant shear rows at a tying point: (γ_ξ, γ_η) as rows over (w θx θy) × 4.
 fn covariant_shear(xy: &[[f64; 2]; 4], xi: f64, eta: f64) -> SMatrix<f64, 2, 12> {
@@ -56,22 +48,15 @@ pub(crate) fn mitc_shear_b(xy: &[[f64; 2]; 4], xi: f64, eta: f64, ji: &Matrix2<f
     ji * cov
 }
 
-/// Element diameter h_K: the longer diagonal of the projected quadrilateral, mm.
-fn diameter(xy: &[[f64; 2]; 4]) -> f64 {
-    let d = |a: usize, b: usize| (xy[a][0] - xy[b][0]).hypot(xy[a][1] - xy[b][1]);
-    d(0, 2).max(d(1, 3))
+/// Transverse shear stiffness of the MITC4 plate part per unit width, N/mm: κGt.
+pub fn transverse_shear_stiffness(t: f64, mat: &Material) -> f64 {
+    KAPPA * mat.shear_modulus() * t
 }
 
-/// Transverse shear stiffness of the stabilized MITC4, N/mm: κGt · t²/(t² + α h_K²).
-pub fn stabilized_shear_stiffness(xy: &[[f64; 2]; 4], t: f64, mat: &Material) -> f64 {
-    let hk = diameter(xy);
-    KAPPA * mat.shear_modulus() * t * t * t / (t * t + SHEAR_STAB * hk * hk)
-}
-
-/// Plate stiffness (bending + stabilized MITC4 shear) over (w θx θy) × 4.
+/// Plate stiffness (bending + MITC4 shear) over (w θx θy) × 4.
 pub(super) fn plate_k(xy: &[[f64; 2]; 4], t: f64, mat: &Material) -> Option<SMatrix<f64, 12, 12>> {
     let db = plane_stress(mat.e, mat.nu) * (t * t * t / 12.0);
-    let ds = stabilized_shear_stiffness(xy, t, mat);
+    let ds = transverse_shear_stiffness(t, mat);
     let mut k = SMatrix::<f64, 12, 12>::zeros();
     for &xi in &[-G2, G2] {
         for &eta in &[-G2, G2] {

@@ -1,0 +1,192 @@
+#!/usr/bin/env python3
+"""Independent references for the four-node shell's statics (validation only; nothing in the
+build or the tests runs this). OpenSees (openseespy 3.7.1.2, `pip install openseespy`):
+ShellMITC4 (Dvorkin-Bathe MITC4 bending/shear, Hughes-Brezzi drilling membrane) and ASDShellQ4
+(MITC4 shear, enhanced membrane) on the meshes that `tests/shell_opensees.rs` builds node for
+node, with the same nodal loads (each element's area / 4 to each node for surface loads).
+Prints one JSON line per model and mesh, plus the Richardson extrapolation (4 u_2n - u_n) / 3
+of the two finest meshes (the tests extrapolate the folded angle section with its observed order).
+
+    python3 tools/opensees_shell.py            # all problems
+    python3 tools/opensees_shell.py scordelis_lo   # one
+"""
+import json
+import math
+import sys
+
+import openseespy.opensees as ops
+
+
+def grid(nx, ny, at):
+    """Nodes of an (nx+1) x (ny+1) grid at at(i, j); node (i, j) has tag j(nx+1)+i+1."""
+    nodes = {}
+    for j in range(ny + 1):
+        for i in range(nx + 1):
+            nodes[(i, j)] = at(i, j)
+    quads = [((i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)) for j in range(ny) for i in range(nx)]
+    return nodes, quads
+
+
+def solve(element, nodes, quads, nx, t, e, nu, fixes, loads, out):
+    """Builds and solves a linear static model; returns the displacement `out` = (node, dof)."""
+    ops.wipe()
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    tag = lambda ij: ij[1] * (nx + 1) + ij[0] + 1
+    for ij, x in nodes.items():
+        ops.node(tag(ij), *x)
+    ops.section("ElasticMembranePlateSection", 1, e, nu, t, 0.0)
+    for k, q in enumerate(quads):
+        ops.element(element, k + 1, *[tag(ij) for ij in q], 1)
+    for ij, dofs in fixes.items():
+        ops.fix(tag(ij), *[1 if d in dofs else 0 for d in range(6)])
+    ops.timeSeries("Constant", 1)
+    ops.pattern("Plain", 1, 1)
+    for ij, f in loads.items():
+        ops.load(tag(ij), *f)
+    ops.constraints("Plain")
+    ops.numberer("RCM")
+    ops.system("UmfPack")
+    ops.test("NormDispIncr", 1e-12, 10)
+    ops.algorithm("Linear")
+    ops.integrator("LoadControl", 1.0)
+    ops.analysis("Static")
+    if ops.analyze(1) != 0:
+        raise RuntimeError("analysis failed")
+    return ops.nodeDisp(tag(out[0]), out[1] + 1)
+
+
+def area_loads(nodes, quads, q):
+    """Each element's area / 4 times the traction q (per unit area) to each of its nodes."""
+    f = {}
+    for qd in quads:
+        p = [nodes[ij] for ij in qd]
+        d1 = [p[2][k] - p[0][k] for k in range(3)]
+        d2 = [p[3][k] - p[1][k] for k in range(3)]
+        c = [d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]]
+        area = 0.5 * math.sqrt(sum(v * v for v in c))
+        for ij in qd:
+            acc = f.setdefault(ij, [0.0] * 6)
+            for k in range(3):
+                acc[k] += q[k] * area / 4.0
+    return f
+
+
+def angle_section(nb):
+    """Equal-angle cantilever: legs b = 20 (mid-surface), t = 1.8, length L = 100, steel
+    E = 210000, nu = 0.3; clamped at x = 0; P = 100 N in -z along the tip edge of the
+    horizontal leg (line load P/b, nodal shares of the tributary lengths). Section coordinate
+    s = 2b j/(2 nb): leg A (x, b - s, 0) for s <= b, leg B (x, 0, s - b). Output: uz at the
+    free tip corner of leg A (i = nl, j = 0)."""
+    b, t, l, p = 20.0, 1.8, 100.0, 100.0
+    nl, ny = 5 * nb, 2 * nb
+
+    def at(i, j):
+        s, x = 2.0 * b * j / ny, l * i / nl
+        return (x, b - s, 0.0) if s <= b else (x, 0.0, s - b)
+
+    nodes, quads = grid(nl, ny, at)
+    fixes = {(0, j): range(6) for j in range(ny + 1)}
+    h = b / nb
+    loads = {(nl, j): [0, 0, -p / b * h * (0.5 if j in (0, nb) else 1.0), 0, 0, 0] for j in range(nb + 1)}
+    return nodes, quads, nl, t, 210000.0, 0.3, fixes, loads, ((nl, 0), 2)
+
+
+def roof(n):
+    """Scordelis-Lo roof, full, n x n: R = 25, L = 50, 2 x 40 deg, t = 0.25, E = 4.32e8,
+    nu = 0, 90 per unit area downwards; ends uy = uz = 0, node (0, 0) also ux. Output: -uz at
+    the midside of the free edge (i = n/2, j = 0)."""
+    r, l, t, phi0 = 25.0, 50.0, 0.25, math.radians(40.0)
+
+    def at(i, j):
+        phi = -phi0 + 2.0 * phi0 * j / n
+        return (l * i / n, r * math.sin(phi), r * math.cos(phi))
+
+    nodes, quads = grid(n, n, at)
+    fixes = {}
+    for j in range(n + 1):
+        fixes[(0, j)] = {1, 2}
+        fixes[(n, j)] = {1, 2}
+    fixes[(0, 0)] = {0, 1, 2}
+    loads = area_loads(nodes, quads, (0.0, 0.0, -90.0))
+    return nodes, quads, n, t, 4.32e8, 0.0, fixes, loads, ((n // 2, 0), 2)
+
+
+def distorted_plate(n):
+    """Clamped square plate a = 100, t = 1, E = 210000, nu = 0.3, pressure 0.01 MPa (-z),
+    n x n mesh with the interior nodes moved by 0.2 h ((-1)^(i+j), (-1)^i) (h = a/n): every
+    element a general convex quadrilateral. Output: uz at the centre node (n/2, n/2)."""
+    a, t, q = 100.0, 1.0, 0.01
+    h = a / n
+
+    def at(i, j):
+        x, y = a * i / n, a * j / n
+        if 0 < i < n and 0 < j < n:
+            x += 0.2 * h * (-1) ** (i + j)
+            y += 0.2 * h * (-1) ** i
+        return (x, y, 0.0)
+
+    nodes, quads = grid(n, n, at)
+    fixes = {ij: range(6) for ij in nodes if ij[0] in (0, n) or ij[1] in (0, n)}
+    loads = area_loads(nodes, quads, (0.0, 0.0, -q))
+    return nodes, quads, n, t, 210000.0, 0.3, fixes, loads, ((n // 2, n // 2), 2)
+
+
+def pinched_cylinder(n):
+    """Pinched cylinder with rigid diaphragms, one octant n x n: R = 300, L = 600, t = 3,
+    E = 3e6, nu = 0.3, P/4 = 0.25 at (n, n). Output: -uz under the load."""
+    r, l, t = 300.0, 600.0, 3.0
+
+    def at(i, j):
+        phi = 0.5 * math.pi * j / n
+        return (0.5 * l * i / n, r * math.cos(phi), r * math.sin(phi))
+
+    nodes, quads = grid(n, n, at)
+    fixes = {}
+    for j in range(n + 1):
+        fixes.setdefault((0, j), set()).update({1, 2, 3})
+        fixes.setdefault((n, j), set()).update({0, 4, 5})
+    for i in range(n + 1):
+        fixes.setdefault((i, 0), set()).update({2, 3, 4})
+        fixes.setdefault((i, n), set()).update({1, 3, 5})
+    loads = {(n, n): [0, 0, -0.25, 0, 0, 0]}
+    return nodes, quads, n, t, 3e6, 0.3, fixes, loads, ((n, n), 2)
+
+
+def pinched_hemisphere(n):
+    """Pinched hemisphere with an 18 deg hole, quarter n x n: R = 10, t = 0.04, E = 6.825e7,
+    nu = 0.3, +1 along x at (0, 0), -1 along y at (n, 0). Output: ux under the load."""
+    r, t = 10.0, 0.04
+
+    def at(i, j):
+        polar = 0.5 * math.pi - math.radians(72.0) * j / n
+        az = 0.5 * math.pi * i / n
+        return (r * math.sin(polar) * math.cos(az), r * math.sin(polar) * math.sin(az), r * math.cos(polar))
+
+    nodes, quads = grid(n, n, at)
+    fixes = {}
+    for j in range(n + 1):
+        fixes.setdefault((0, j), set()).update({1, 3, 5})
+        fixes.setdefault((n, j), set()).update({0, 4, 5})
+    fixes.setdefault((0, 0), set()).add(2)
+    loads = {(0, 0): [1.0, 0, 0, 0, 0, 0], (n, 0): [0, -1.0, 0, 0, 0, 0]}
+    return nodes, quads, n, t, 6.825e7, 0.3, fixes, loads, ((0, 0), 0)
+
+
+PROBLEMS = {
+    "angle_section": (angle_section, [4, 8, 16, 32, 64]),
+    "scordelis_lo": (roof, [8, 16, 32, 64]),
+    "distorted_plate": (distorted_plate, [8, 16, 32, 64]),
+    "pinched_cylinder": (pinched_cylinder, [16, 32, 64]),
+    "pinched_hemisphere": (pinched_hemisphere, [8, 16, 32, 64]),
+}
+
+if __name__ == "__main__":
+    which = sys.argv[1:] or list(PROBLEMS)
+    for name in which:
+        build, meshes = PROBLEMS[name]
+        for element in ("ShellMITC4", "ASDShellQ4"):
+            u = []
+            for n in meshes:
+                u.append(solve(element, *build(n)))
+                print(json.dumps({"problem": name, "element": element, "n": n, "u": u[-1]}), flush=True)
+            print(json.dumps({"problem": name, "element": element, "richardson": (4 * u[-1] - u[-2]) / 3}), flush=True)
