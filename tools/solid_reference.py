@@ -141,7 +141,11 @@ def geometry(kind, p, half, big):
     return X, out
 
 
-def run(kind, p, n, nu, e=72000.0, hmax=None):
+def mesh_hinge(kind, p, n, hmax=None):
+    """Meshes the hinge with 10-node tetrahedra of size thickness(x)/n (at most hmax, default h/3).
+
+    Returns (X, node coordinates (N, 3), connectivity (nel, 10) in gmsh's node order: the four
+    corners, then the mid-side nodes of the edges 01, 12, 20, 30, 32, 31)."""
     half, thick = profile(kind, p)
     gmsh.initialize()
     gmsh.option.setNumber("General.Terminal", 0)
@@ -170,8 +174,13 @@ def run(kind, p, n, nu, e=72000.0, hmax=None):
     idx = np.zeros(int(tags.max()) + 1, dtype=np.int64)
     idx[tags.astype(np.int64)] = np.arange(len(tags))
     conn = idx[enodes[k].astype(np.int64)].reshape(-1, 10)
+    return X, pts_all, conn
+
+
+def run(kind, p, n, nu, e=72000.0, hmax=None):
+    X, pts_all, conn = mesh_hinge(kind, p, n, hmax)
     corners = np.unique(conn[:, :4])
-    cidx = np.full(len(tags), -1, dtype=np.int64)
+    cidx = np.full(len(pts_all), -1, dtype=np.int64)
     cidx[corners] = np.arange(len(corners))
     t1 = cidx[conn[:, :4]].T.copy()
     m1 = skfem.MeshTet1(pts_all[corners].T.copy(), t1)
