@@ -114,6 +114,10 @@ def geometry(kind, p, half, big):
             r, t = p["R"], p["t"]
             zc = sgn * (t / 2 + r)
             tools.append(occ.addCylinder(0, -w, zc, 0, 2 * w, 0, r))
+            # A blank thicker than t + 2R: flexfem's profile is the arc below the centre and
+            # the full blank from |x| = R on (a slot with a round bottom). The cylinder alone
+            # would leave a closed hole under a bridge of material.
+            tools.append(occ.addBox(-r, -w, zc if sgn > 0 else zc - big, 2 * r, 2 * w, big))
         elif kind == "elliptical_notch":
             ax, ay, t = p["ax"], p["ay"], p["t"]
             zc = sgn * (t / 2 + ay)
@@ -121,6 +125,7 @@ def geometry(kind, p, half, big):
             occ.dilate([(3, cyl)], 0, 0, 0, ax, 1, ay)
             occ.translate([(3, cyl)], 0, 0, zc)
             tools.append(cyl)
+            tools.append(occ.addBox(-ax, -w, zc if sgn > 0 else zc - big, 2 * ax, 2 * w, big))
         elif kind == "corner_filleted":
             l, r, t = p["l"], p["R"], p["t"]
             s = l / 2 - r
