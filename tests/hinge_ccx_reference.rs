@@ -237,15 +237,15 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 // misses a target the tolerance below is the measured worst case rounded up (a pin that shows a
 // change), and the comment says by how much the target is missed.
 
-/// 16 held-out circular notchs. Measured (bending / torsion / axial / peak σ/M, %):
-/// -0.60 … +0.96 / -11.44 … +3.28 / +1.05 … +3.89 / -1.36 … +3.62.
+/// 20 held-out circular notches. Measured (bending / torsion / axial / peak σ/M, %):
+/// -0.60 … +0.96 / -11.44 … +3.28 / -0.04 … +4.06 / -1.36 … +3.62.
 /// torsion misses the 10 % target (worst 11.44 %): pinned at the worst case rounded up.
 const CIRCULAR_TOL: [f64; 4] = [3.0, 12.5, 5.0, 5.0];
-/// 5 held-out corner filleteds. Measured (bending / torsion / axial / peak σ/M, %):
-/// -0.16 … +3.49 / -16.22 … -8.12 / -1.01 … +1.88 / +5.64 … +10.27.
+/// 7 held-out corner-filleted hinges. Measured (bending / torsion / axial / peak σ/M, %):
+/// -0.16 … +3.49 / -16.22 … -2.27 / -1.01 … +1.88 / +5.64 … +10.27.
 /// bending misses the 3 % target (worst 3.49 %); torsion misses the 10 % target (worst 16.22 %); peak σ/M misses the 5 % target (worst 10.27 %): pinned at the worst case rounded up.
 const CORNER_TOL: [f64; 4] = [4.0, 17.5, 5.0, 11.0];
-/// 3 held-out spherical necks. Measured (bending / torsion / axial / peak σ/M, %):
+/// 3 held-out turned necks. Measured (bending / torsion / axial / peak σ/M, %):
 /// -0.83 … +0.84 / -2.25 … -0.28 / -1.16 … -0.26 / -2.41 … +0.74.
 const NECK_TOL: [f64; 4] = [3.0, 5.0, 3.0, 3.0];
 
@@ -253,7 +253,7 @@ const NECK_TOL: [f64; 4] = [3.0, 5.0, 3.0, 3.0];
 fn circular_notches_held_out() {
     let all = rows(HELD_OUT);
     let rows = family(&all, circular);
-    assert_eq!(rows.len(), 16);
+    assert_eq!(rows.len(), 20);
     check(
         "held-out circular notches",
         report("circular notches vs CalculiX, HELD OUT", &rows),
@@ -265,7 +265,7 @@ fn circular_notches_held_out() {
 fn corner_filleted_held_out() {
     let all = rows(HELD_OUT);
     let rows = family(&all, corner);
-    assert_eq!(rows.len(), 5);
+    assert_eq!(rows.len(), 7);
     check(
         "held-out corner-filleted hinges",
         report("corner-filleted hinges vs CalculiX, HELD OUT", &rows),
@@ -285,6 +285,10 @@ fn turned_necks_held_out() {
     );
 }
 
+/// Fit-residual pins of [`rows_used_in_the_fits`] (bending, torsion, axial, peak stress, %): about
+/// 1.2× the measured worst case, at least 1 %.
+const FIT_TOL: [f64; 4] = [1.0, 10.0, 3.5, 2.0];
+
 /// The rows whose geometry was among the scikit-fem rows the beam model's laws were fitted on
 /// (the Ruiz et al. notch and neck, the pan-tilt corner-filleted hinge): fit residuals against a
 /// second solver. Measured: +0.00 … +0.58 / -8.17 … -0.31 / +0.19 … +2.55 / +1.12 … +1.42 % (bending / torsion / axial / peak σ/M).
@@ -296,6 +300,6 @@ fn rows_used_in_the_fits() {
     check(
         "fitted geometries",
         report("geometries used in the fits, vs CalculiX", &refs),
-        [1.0, 10.0, 3.5, 2.0],
+        FIT_TOL,
     );
 }
