@@ -114,6 +114,10 @@ def geometry(kind, p, half, big):
             r, t = p["R"], p["t"]
             zc = sgn * (t / 2 + r)
             tools.append(occ.addCylinder(0, -w, zc, 0, 2 * w, 0, r))
+            # A blank thicker than t + 2R: flexfem's profile is the arc below the centre and
+            # the full blank from |x| = R on (a slot with a round bottom). The cylinder alone
+            # would leave a closed hole under a bridge of material.
+            tools.append(occ.addBox(-r, -w, zc if sgn > 0 else zc - big, 2 * r, 2 * w, big))
         elif kind == "elliptical_notch":
             ax, ay, t = p["ax"], p["ay"], p["t"]
             zc = sgn * (t / 2 + ay)
@@ -121,6 +125,7 @@ def geometry(kind, p, half, big):
             occ.dilate([(3, cyl)], 0, 0, 0, ax, 1, ay)
             occ.translate([(3, cyl)], 0, 0, zc)
             tools.append(cyl)
+            tools.append(occ.addBox(-ax, -w, zc if sgn > 0 else zc - big, 2 * ax, 2 * w, big))
         elif kind == "corner_filleted":
             l, r, t = p["l"], p["R"], p["t"]
             s = l / 2 - r
@@ -141,7 +146,14 @@ def geometry(kind, p, half, big):
     return X, out
 
 
-def run(kind, p, n, nu, e=72000.0, hmax=None):
+def mesh_hinge(kind, p, n, hmax=None, ho_optimize=0):
+    """Meshes the hinge with 10-node tetrahedra of size thickness(x)/n (at most hmax, default h/3).
+
+    `ho_optimize` is gmsh's Mesh.HighOrderOptimize (0: the curved mid-side nodes as placed on the
+    surface, which can leave an element with a non-positive Jacobian; 2: gmsh untangles them).
+
+    Returns (X, node coordinates (N, 3), connectivity (nel, 10) in gmsh's node order: the four
+    corners, then the mid-side nodes of the edges 01, 12, 20, 30, 32, 31)."""
     half, thick = profile(kind, p)
     gmsh.initialize()
     gmsh.option.setNumber("General.Terminal", 0)
@@ -159,7 +171,7 @@ def run(kind, p, n, nu, e=72000.0, hmax=None):
     gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
     gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
     gmsh.option.setNumber("Mesh.ElementOrder", 2)
-    gmsh.option.setNumber("Mesh.HighOrderOptimize", 0)
+    gmsh.option.setNumber("Mesh.HighOrderOptimize", ho_optimize)
     gmsh.option.setNumber("Mesh.SecondOrderLinear", 0)
     gmsh.model.mesh.generate(3)
     tags, coords, _ = gmsh.model.mesh.getNodes()
@@ -170,8 +182,13 @@ def run(kind, p, n, nu, e=72000.0, hmax=None):
     idx = np.zeros(int(tags.max()) + 1, dtype=np.int64)
     idx[tags.astype(np.int64)] = np.arange(len(tags))
     conn = idx[enodes[k].astype(np.int64)].reshape(-1, 10)
+    return X, pts_all, conn
+
+
+def run(kind, p, n, nu, e=72000.0, hmax=None):
+    X, pts_all, conn = mesh_hinge(kind, p, n, hmax)
     corners = np.unique(conn[:, :4])
-    cidx = np.full(len(tags), -1, dtype=np.int64)
+    cidx = np.full(len(pts_all), -1, dtype=np.int64)
     cidx[corners] = np.arange(len(corners))
     t1 = cidx[conn[:, :4]].T.copy()
     m1 = skfem.MeshTet1(pts_all[corners].T.copy(), t1)
@@ -217,9 +234,14 @@ def run(kind, p, n, nu, e=72000.0, hmax=None):
     right = np.where(np.abs(loc[0] - X) < tol)[0]
     fixed = np.concatenate([left, right])
     free = np.setdiff1d(np.arange(ndof), fixed)
-    from sksparse.cholmod import cholesky
+    try:
+        from sksparse.cholmod import cholesky
 
-    chol = cholesky(K[free][:, free])
+        chol = cholesky(K[free][:, free])
+    except ImportError:  # scikit-sparse does not build against every SuiteSparse: sparse LU
+        from scipy.sparse.linalg import factorized
+
+        chol = factorized(K[free][:, free].tocsc())
     x0 = np.array([X, 0.0, 0.0])
     rel = loc[:, right] - x0[:, None]
     cr = comp[right]
