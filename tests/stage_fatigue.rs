@@ -169,3 +169,42 @@ fn stage_fatigue_block_errors_name_the_path() {
         common::cleanup(&dir);
     }
 }
+
+/// A sweep over the revolute notch thickness lists the fatigue quantities as columns, each
+/// design's equal to its own run (same code path, to the last bit: `TOL` 1e-12 relative).
+#[test]
+fn sweep_lines_carry_the_fatigue_limit_of_each_design() {
+    const TOL: f64 = 1e-12;
+    let d = common::tempdir("stage_fatigue_sweep");
+    let fatigue = r#"{"cycles": 1e7, "load_ratio": 0}"#;
+    let base = stage_case(fatigue, "\"Al7075\"", "");
+    let sweep = format!(r#"{{"analysis": "sweep", "base": {base}, "vary": {{"stage.revolute.t": [1.5, 2]}}}}"#);
+    let case = common::write(&d, "sweep.json", &sweep);
+    let o = common::sweep(&d, &[case.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", common::stderr(&o));
+    let lines = common::parse_lines(&common::stdout(&o));
+    assert_eq!(lines.len(), 2);
+    let single = run_stage(fatigue);
+    let line = lines
+        .iter()
+        .find(|l| l["params"]["stage.revolute.t"].as_f64() == Some(2.0))
+        .expect("the t = 2 design");
+    for path in [
+        ["at_fatigue_limit", "stroke"],
+        ["at_fatigue_limit", "stroke_infinite_life"],
+    ] {
+        let (got, want) = (num(&line["result"][path[0]][path[1]]), num(&single[path[0]][path[1]]));
+        assert!(rel(got, want) < TOL, "{path:?}: sweep {got} vs run {want}");
+    }
+    let u = num(&line["result"]["load_cases"][1]["fatigue"]["max_utilisation"]);
+    let want = num(&single["load_cases"][1]["fatigue"]["max_utilisation"]);
+    assert!(rel(u, want) < TOL, "F40 utilisation: sweep {u} vs run {want}");
+    // The thinner notch (t = 1.5) is more compliant and less stressed per mm: a longer
+    // fatigue-limited stroke.
+    let thin = lines
+        .iter()
+        .find(|l| l["params"]["stage.revolute.t"].as_f64() == Some(1.5))
+        .unwrap();
+    assert!(num(&thin["result"]["at_fatigue_limit"]["stroke"]) > num(&line["result"]["at_fatigue_limit"]["stroke"]));
+    common::cleanup(&d);
+}
