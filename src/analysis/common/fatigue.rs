@@ -142,3 +142,16 @@ impl FatigueChain {
         )
     }
 }
+
+/// A predicted life for results: a number of cycles, or `"infinite"` within the endurance limit.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Life(pub Option<f64>);
+
+impl serde::Serialize for Life {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self.0 {
+            Some(n) => s.serialize_f64(n),
+            None => s.serialize_str("infinite"),
+        }
+    }
+}

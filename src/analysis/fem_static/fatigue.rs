@@ -40,7 +40,7 @@ pub fn add(r: &mut StaticResult, hinges: &[BuiltHinge], spec: &CyclicSpec) {
             let (sa, sm) = (a * s, m * s);
             h.fatigue = Some(HingeFatigue {
                 utilisation: c.utilisation(sa, sm),
-                life_cycles: c.life(sa, sm),
+                life_cycles: crate::analysis::common::fatigue::Life(c.life(sa, sm)),
                 stress_alternating: sa,
                 stress_mean: sm,
                 kf: c.kf,

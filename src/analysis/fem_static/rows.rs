@@ -133,8 +133,8 @@ pub struct BeamForcesRow {
 pub struct HingeFatigue {
     /// Fatigue utilisation σ_a/S_f(N) + σ_m/S_mean at the required cycles; ≤ 1 passes.
     pub utilisation: f64,
-    /// Predicted life, cycles (`null`: infinite life, within the endurance limit).
-    pub life_cycles: Option<f64>,
+    /// Predicted life, cycles (`"infinite"` within the endurance limit).
+    pub life_cycles: crate::analysis::common::fatigue::Life,
     /// Alternating and mean fatigue stresses (peak stress × K_f/K_t), MPa.
     pub stress_alternating: f64,
     pub stress_mean: f64,

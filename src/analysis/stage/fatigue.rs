@@ -12,7 +12,7 @@
 //! `at_allowable`.
 
 use super::{HingeStress, StageRow};
-use crate::analysis::common::fatigue::FatigueChain;
+use crate::analysis::common::fatigue::{FatigueChain, Life};
 use crate::case::fatigue::CyclicSpec;
 use crate::fatigue::MaterialFatigue;
 use crate::stage::{StageResponse, ValidStage};
@@ -32,8 +32,8 @@ pub struct PerHinge<T> {
 pub struct CaseFatigue {
     /// Fatigue utilisation σ_a/S_f(N) + σ_m/S_mean at the required cycles; ≤ 1 passes.
     pub utilisation: PerHinge<f64>,
-    /// Predicted life, cycles (`null`: infinite life, within the endurance limit).
-    pub life_cycles: PerHinge<Option<f64>>,
+    /// Predicted life, cycles (`"infinite"` within the endurance limit).
+    pub life_cycles: PerHinge<Life>,
     /// The largest utilisation.
     pub max_utilisation: f64,
     /// Load factor on this case that brings the first hinge to utilisation 1 (stress
@@ -147,7 +147,7 @@ impl StageFatigue {
                     _ => (&mut out.utilisation.spherical, &mut out.life_cycles.spherical),
                 };
                 us[i] = u;
-                ls[i] = life;
+                ls[i] = Life(life);
                 out.max_utilisation = out.max_utilisation.max(u);
             }
         }
