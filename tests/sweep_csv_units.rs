@@ -75,6 +75,7 @@ fn every_number_of_stage_and_hinge_results_has_a_unit() {
         "ruiz2019_stage.json",
         "ruiz2019_stage_modal.json",
         "ruiz2019_stage_nonlinear.json",
+        "ruiz2019_stage_fatigue.json",
         "ruiz2019_hinge_revolute.json",
         "ruiz2019_hinge_spherical.json",
         "pantilt_hinge_damping.json",

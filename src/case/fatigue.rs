@@ -42,23 +42,102 @@ impl FatigueSpec {
         check::within("fatigue.cycles", self.cycles, 1.0, 1e15, "cycles")?;
         check::non_negative("fatigue.stroke", self.stroke, "degrees")?;
         check::finite("fatigue.mean", self.mean)?;
-        let f = m.fatigue.ok_or_else(|| {
-            CaseError::value(
-                format!("{material_path}.fatigue"),
-                "none",
-                "a \"fatigue\" block needs material fatigue data {\"endurance\", \"ultimate\"} (MPa); built-in materials with fatigue data: Al7075, steel",
-            )
-        })?;
-        validate_material_fatigue(material_path, &f)?;
-        if self.method == MeanStressMethod::Soderberg && !m.yield_strength.is_finite() {
+        material_fatigue(material_path, m, self.method)
+    }
+}
+
+/// `"fatigue"` of a `stage` or `static` case: every load case is the peak of a load cycle of
+/// stress ratio `load_ratio`, repeated `cycles` times (stress proportional to the load: linear
+/// runs; nonlinear runs assess each solved peak as it stands).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CyclicSpec {
+    /// Required life, cycles, ≥ 1.
+    #[schemars(range(min = 1))]
+    pub cycles: f64,
+    /// Stress ratio R = minimum / maximum load of the cycle, −1 ≤ R < 1 (default −1: fully
+    /// reversed; 0: from zero to the load case). Alternating = (1 − R)/2 × peak, mean =
+    /// (1 + R)/2 × peak.
+    #[serde(default = "fully_reversed")]
+    #[schemars(extend("minimum" = -1, "exclusiveMaximum" = 1))]
+    pub load_ratio: f64,
+    /// Mean-stress criterion (default `"goodman"`).
+    #[serde(default)]
+    pub method: MeanStressMethod,
+}
+
+fn fully_reversed() -> f64 {
+    -1.0
+}
+
+impl CyclicSpec {
+    /// Checks the block (`path`: its JSON path) and the fatigue data of material `m` (at
+    /// `material_path`); returns the fatigue data.
+    pub fn validate(&self, path: &str, material_path: &str, m: &Material) -> Result<MaterialFatigue, CaseError> {
+        self.check(path)?;
+        material_fatigue(material_path, m, self.method)
+    }
+
+    /// Checks the block's own fields (`path`: its JSON path).
+    pub fn check(&self, path: &str) -> Result<(), CaseError> {
+        check::within(format_args!("{path}.cycles"), self.cycles, 1.0, 1e15, "cycles")?;
+        if !(self.load_ratio >= -1.0 && self.load_ratio < 1.0) {
             return Err(CaseError::value(
-                format!("{material_path}.yield"),
-                "none",
-                "\"method\": \"soderberg\" needs a yield strength (MPa)",
+                format!("{path}.load_ratio"),
+                self.load_ratio,
+                "must lie in [−1, 1) (minimum / maximum load of the cycle)",
             ));
         }
-        Ok(f)
+        Ok(())
     }
+
+    /// Checks that a `static` model has hinge elements and that each one's material has
+    /// fatigue data (paths `elements[i].material`).
+    pub fn check_hinges(&self, hinges: &[super::mesh::BuiltHinge]) -> Result<(), CaseError> {
+        if hinges.is_empty() {
+            return Err(CaseError::new(
+                "fatigue",
+                "the model has no `hinge` element to assess (fatigue is assessed on hinge elements)",
+            ));
+        }
+        for h in hinges {
+            material_fatigue(
+                &format!("elements[{}].material", h.case_element),
+                &h.material,
+                self.method,
+            )?;
+        }
+        Ok(())
+    }
+
+    /// (alternating, mean) share of the peak load: ((1 − R)/2, (1 + R)/2).
+    pub fn shares(&self) -> (f64, f64) {
+        (0.5 * (1.0 - self.load_ratio), 0.5 * (1.0 + self.load_ratio))
+    }
+}
+
+/// The fatigue data of material `m` (at `material_path`), checked, for `method`.
+pub fn material_fatigue(
+    material_path: &str,
+    m: &Material,
+    method: MeanStressMethod,
+) -> Result<MaterialFatigue, CaseError> {
+    let f = m.fatigue.ok_or_else(|| {
+        CaseError::value(
+            format!("{material_path}.fatigue"),
+            "none",
+            "a \"fatigue\" block needs material fatigue data {\"endurance\", \"ultimate\"} (MPa); built-in materials with fatigue data: Al7075, steel",
+        )
+    })?;
+    validate_material_fatigue(material_path, &f)?;
+    if method == MeanStressMethod::Soderberg && !m.yield_strength.is_finite() {
+        return Err(CaseError::value(
+            format!("{material_path}.yield"),
+            "none",
+            "\"method\": \"soderberg\" needs a yield strength (MPa)",
+        ));
+    }
+    Ok(f)
 }
 
 /// Checks fatigue data under `{material_path}.fatigue`.

@@ -92,6 +92,12 @@ case_struct! {
         /// runs only; needs `metrics` and `parameters`). Default false.
         #[serde(default)]
         pub gradients: bool,
+        /// High-cycle fatigue of the `hinge` elements (their materials need `"fatigue"` data):
+        /// every load case is the peak of a load cycle `{"cycles", "load_ratio", "method"}`;
+        /// each hinge row gets its fatigue utilisation and life, and `fatigue_stroke` metrics
+        /// become available (linear runs).
+        #[serde(default)]
+        pub fatigue: Option<super::fatigue::CyclicSpec>,
         /// The case as written (parameters unresolved), kept when `gradients` asks for it.
         #[serde(skip)]
         #[schemars(skip)]
@@ -162,6 +168,8 @@ struct StaticOptions {
     metrics: Vec<super::mesh::MetricRequest>,
     #[serde(default)]
     gradients: bool,
+    #[serde(default)]
+    fatigue: Option<super::fatigue::CyclicSpec>,
 }
 
 /// The options of a `modal` (or `buckling`) case besides its model, as in the case file (each
@@ -190,7 +198,7 @@ pub const MODEL_FIELDS: [&str; 8] = [
     "ordering",
 ];
 
-const STATIC_OWN: [&str; 11] = [
+const STATIC_OWN: [&str; 12] = [
     "analysis",
     "description",
     "mesh",
@@ -202,6 +210,7 @@ const STATIC_OWN: [&str; 11] = [
     "track",
     "metrics",
     "gradients",
+    "fatigue",
 ];
 const MODAL_OWN: [&str; 6] = ["analysis", "mesh", "gmsh", "modes", "shift_hz", "shapes"];
 
@@ -234,6 +243,10 @@ pub fn parse_static(value: Value, base: &crate::case::Source<'_>) -> Result<Stat
     super::mesh::requests::check_track(o.track.as_ref(), nonlinear, model.nodes.len())?;
     super::mesh::metrics::check_metrics(&o.metrics, &model, nonlinear)?;
     check_gradients(o.gradients, nonlinear, &o.metrics)?;
+    if let Some(f) = &o.fatigue {
+        f.check("fatigue")?;
+    }
+    super::mesh::metrics::check_fatigue_metrics(&o.metrics, o.fatigue.is_some(), nonlinear)?;
     for (i, c) in model.load_cases.iter().enumerate() {
         super::mesh::path_control::check(&format!("load_cases[{i}]"), c, steps, model.nodes.len())?;
     }
@@ -249,6 +262,7 @@ pub fn parse_static(value: Value, base: &crate::case::Source<'_>) -> Result<Stat
         track: o.track,
         metrics: o.metrics,
         gradients: o.gradients,
+        fatigue: o.fatigue,
         written: None,
     })
 }

@@ -117,6 +117,11 @@ case_struct! {
         #[serde(default)]
         #[schemars(extend("exclusiveMinimum" = 0))]
         pub platform_thickness: Option<f64>,
+        /// High-cycle fatigue of the hinges (the material needs `"fatigue"` data): every load
+        /// case is the peak of a load cycle; per hinge the fatigue utilisation and life, and the
+        /// stage's fatigue-limited stroke beside `at_allowable`.
+        #[serde(default)]
+        pub fatigue: Option<super::fatigue::CyclicSpec>,
     }
 }
 
@@ -269,6 +274,15 @@ impl StageCase {
         }
         if let Some(t) = self.platform_thickness {
             super::error::check::positive("platform_thickness", t, "mm")?;
+        }
+        if let Some(f) = &self.fatigue {
+            if d.ideal_joints {
+                return Err(CaseError::new(
+                    "fatigue",
+                    "with \"ideal_joints\": true the stage has no hinges to assess: drop `fatigue` or `ideal_joints`",
+                ));
+            }
+            f.validate("fatigue", "material", &d.material)?;
         }
         if self.load_cases.is_empty() {
             return Err(CaseError::new("load_cases", "at least one load case is needed"));

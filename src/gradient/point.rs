@@ -108,6 +108,9 @@ impl Point {
         let raw = fem::StaticResults { load_cases: cases };
         let (mut r, raw) = fem_static::result_of(&self.model, raw, false)?;
         fem_static::add_hinges(&mut r, &self.model, &raw, &self.hinges, false)?;
+        if let Some(f) = &self.case.fatigue {
+            fem_static::fatigue::add(&mut r, &self.hinges, f);
+        }
         fem_static::add_headlines(&mut r, &self.model, &self.case_index, &self.hinges);
         let reqs: Vec<_> = self
             .case

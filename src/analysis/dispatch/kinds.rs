@@ -289,7 +289,8 @@ impl Analysis for Static {
         if case.nonlinear {
             case::mesh::superelement::refuse_in(&case.model, "geometrically nonlinear statics")?;
         }
-        case.model.build_with_hinges(true, case.nonlinear).map(|_| ())
+        let (_, hinges) = case.model.build_with_hinges(true, case.nonlinear)?;
+        case.fatigue.as_ref().map_or(Ok(()), |f| f.check_hinges(&hinges))
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         if case.nonlinear {
@@ -304,6 +305,10 @@ impl Analysis for Static {
             fem_static::inner_nodes::label(crate::analysis::constraints::singular_hint(e, &case.model), &hinges)
         })?;
         fem_static::add_hinges(&mut r, &model, &raw, &hinges, case.nonlinear)?;
+        if let Some(f) = &case.fatigue {
+            f.check_hinges(&hinges)?;
+            fem_static::fatigue::add(&mut r, &hinges, f);
+        }
         fem_static::add_headlines(&mut r, &model, &case_index, &hinges);
         r.model.extend(warn::default_segments_note(&hinges));
         if case.output.section_forces {

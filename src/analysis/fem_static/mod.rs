@@ -7,6 +7,7 @@ pub use compliance::{compliance_row, ComplianceRow};
 
 pub mod compliance;
 mod equilibrium;
+pub mod fatigue;
 mod headline;
 pub mod inner_nodes;
 pub mod metrics;
@@ -360,6 +361,7 @@ pub fn hinge_row(
         peak_von_mises: peak,
         utilisation: peak / h.allowable,
         remaining_rotation_deg: rotation_deg * (h.allowable / peak - 1.0),
+        fatigue: None,
     })
 }
 

@@ -132,6 +132,23 @@ pub struct BeamForcesRow {
     pub section_forces: [[f64; 6]; 2],
 }
 
+/// Fatigue of one hinge element in one load case (the case is the peak of the cycle).
+#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+pub struct HingeFatigue {
+    /// Fatigue utilisation σ_a/S_f(N) + σ_m/S_mean at the required cycles; ≤ 1 passes.
+    pub utilisation: f64,
+    /// Predicted life, cycles (`"infinite"` within the endurance limit).
+    pub life_cycles: crate::analysis::common::fatigue::Life,
+    /// Alternating and mean fatigue stresses (peak stress × K_f/K_t), MPa.
+    pub stress_alternating: f64,
+    pub stress_mean: f64,
+    /// Fatigue notch factor K_f = 1 + q (K_t − 1) of the hinge.
+    pub kf: f64,
+    /// Corrected endurance limit S_e, MPa, and fatigue strength at the required cycles S_f, MPa.
+    pub endurance_corrected: f64,
+    pub strength_at_cycles: f64,
+}
+
 /// Results of one `hinge` element in one load case.
 #[derive(Debug, Clone, Serialize)]
 pub struct HingeRow {
@@ -159,6 +176,9 @@ pub struct HingeRow {
     /// when unbounded (no allowable, or no stress).
     #[serde(serialize_with = "crate::report::numbers::ratio_or_null")]
     pub remaining_rotation_deg: f64,
+    /// Fatigue of the hinge, the load case as the peak of its cycle (`"fatigue"` only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fatigue: Option<HingeFatigue>,
 }
 
 /// Nodal stresses of the shells: per node [sxx, syy, szz, sxy, syz, szx] (MPa, global axes),

@@ -1,9 +1,10 @@
 //! High-cycle fatigue of a `hinge` under a cyclic rotation about its compliant axis (stress-life
 //! approach of Budynas & Nisbett, Shigley's Mechanical Engineering Design, 10th ed. (2015), ch. 6).
 
-use crate::case::fatigue::{FatigueSpec, MeanStressMethod};
-use crate::fatigue::{notch_sensitivity, size_factor, surface_factor_machined, MaterialFatigue};
-use crate::hinge::{Contour, HingeResult, Profile};
+use crate::analysis::common::fatigue::FatigueChain;
+use crate::case::fatigue::FatigueSpec;
+use crate::fatigue::MaterialFatigue;
+use crate::hinge::{HingeResult, Profile};
 use crate::material::Material;
 use crate::report::markdown::{sig, Table};
 use serde::Serialize;
@@ -44,80 +45,30 @@ pub struct FatigueOut {
     pub method: String,
 }
 
-/// Notch root radius of the contour for Peterson's q, mm (`None`: no notch).
-pub fn notch_radius(c: &Contour) -> Option<f64> {
-    match *c {
-        Contour::Circular { r, .. } | Contour::CornerFilleted { r, .. } | Contour::SphericalNeck { r, .. } => Some(r),
-        // Curvature radius of the ellipse at its vertex: a_x²/a_y.
-        Contour::Elliptical { ax, ay, .. } => Some(ax * ax / ay),
-        Contour::Leaf { .. } => None,
-    }
-}
-
-/// Equivalent diameter d_e of the waist in non-rotating bending, mm (Shigley 10th ed.
-/// eqs. (6-24): round, 0.370 d; (6-25): rectangle, 0.808 √(h b)).
-fn equivalent_diameter(p: &Profile) -> f64 {
-    match p.contour {
-        Contour::SphericalNeck { t, .. } => 0.370 * t,
-        _ => 0.808 * (p.thickness(0.0) * p.w).sqrt(),
-    }
-}
-
 /// Assesses the case's stroke on the hinge characterised in `r`.
 pub fn assess(spec: &FatigueSpec, m: &Material, f: &MaterialFatigue, p: &Profile, r: &HingeResult) -> FatigueOut {
-    let kt = r.stress_concentration;
-    let radius = notch_radius(&p.contour);
-    let q = radius.map_or(1.0, |rr| notch_sensitivity(f.peterson_a(), rr));
-    let kf = 1.0 + q * (kt - 1.0);
-    let ka = surface_factor_machined(f.ultimate);
-    let kb = size_factor(equivalent_diameter(p));
-    let se = ka * kb * f.endurance;
+    let ch = FatigueChain::new(spec.cycles, spec.method, m, f, p, r.stress_concentration);
     // Peak stress per radian is stress_per_moment × k_bend (it includes K_t); nominal × K_f.
-    let c = r.hinge.stress_per_moment * r.hinge.k_bend / kt * kf;
+    let c = r.hinge.stress_per_moment * r.hinge.k_bend / ch.kt * ch.kf;
     let sa = c * spec.stroke.to_radians();
     let sm = c * spec.mean.abs().to_radians();
-    let s_mean_limit = match spec.method {
-        MeanStressMethod::Goodman => f.ultimate,
-        MeanStressMethod::Soderberg => m.yield_strength,
-    };
-    let b = f.basquin_exponent();
-    // Fatigue strength at the required cycles: S_e (N/N_e)^b below the knee, S_e beyond.
-    let sf = se * (spec.cycles / f.sn_cycles).min(1.0).powf(b);
-    let fatigue_utilisation = sa / sf + sm / s_mean_limit;
-    // Fully reversed equivalent amplitude (Shigley eq. (6-59)) and Basquin life.
-    let ratio = 1.0 - sm / s_mean_limit;
-    let life_cycles = if ratio <= 0.0 {
-        Some(0.0)
-    } else {
-        let s_ar = sa / ratio;
-        (s_ar > se).then(|| f.sn_cycles * (s_ar / se).powf(1.0 / b))
-    };
-    let stroke_infinite_life = (se * ratio.max(0.0) / c).to_degrees();
+    let life_cycles = ch.life(sa, sm);
     FatigueOut {
-        fatigue_utilisation,
+        fatigue_utilisation: ch.utilisation(sa, sm),
         infinite_life: life_cycles.is_none(),
         life_cycles,
-        stroke_infinite_life,
-        kt,
-        notch_sensitivity: q,
-        kf,
-        notch_radius_mm: radius,
-        marin_surface: ka,
-        marin_size: kb,
-        endurance_corrected: se,
+        stroke_infinite_life: (ch.infinite_life_amplitude(sm) / c).to_degrees(),
+        kt: ch.kt,
+        notch_sensitivity: ch.q,
+        kf: ch.kf,
+        notch_radius_mm: ch.notch_radius,
+        marin_surface: ch.ka,
+        marin_size: ch.kb,
+        endurance_corrected: ch.se,
         stress_per_rad: c,
         stress_alternating: sa,
         stress_mean: sm,
-        method: format!(
-            "stress-life (Shigley 10th ed. ch. 6): K_f = 1 + q (K_t − 1), Peterson q = 1/(1 + a/r) with a = {:.4} mm; S_e = k_a k_b S_e' with k_a machined (eq. 6-19), k_b bending size factor (eq. 6-20, d_e from eqs. 6-24/6-25, clamped to 2.79…51 mm), k_c = k_d = k_e = 1 (bending, room temperature, 50 % reliability); K_f on alternating and mean stress; {} mean-stress line; Basquin exponent b = {:.4} from S_e at N_e = {:e} cycles",
-            f.peterson_a(),
-            match spec.method {
-                MeanStressMethod::Goodman => "modified Goodman",
-                MeanStressMethod::Soderberg => "Soderberg",
-            },
-            b,
-            f.sn_cycles
-        ),
+        method: ch.describe(),
     }
 }
 

@@ -1,5 +1,6 @@
 //! The `stage` analysis (the `fem_vs_fkp` comparison is [`super::fem_vs_fkp`]).
 
+pub mod fatigue;
 mod modes;
 pub mod report;
 pub mod sweep_plot;
@@ -84,6 +85,9 @@ pub struct StageRow {
     /// Nonlinear and not stable: load factors [lo, hi] bracketing the first loss of stability.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub critical_load_factor: Option<[f64; 2]>,
+    /// Fatigue of the hinges, the case as the peak of the load cycle (`"fatigue"` only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fatigue: Option<fatigue::CaseFatigue>,
 }
 
 /// What the stage reaches at the allowable stress under equal actuator forces (pure z).
@@ -127,6 +131,9 @@ pub struct StageResult {
     pub stiffness_z: f64,
     /// Reach at the allowable stress under equal forces.
     pub at_allowable: AtAllowable,
+    /// Reach at the fatigue limit under equal forces (`"fatigue"` only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub at_fatigue_limit: Option<fatigue::AtFatigueLimit>,
     /// Platform stiffness.
     pub platform_stiffness: PlatformStiffness,
     /// Idealisations (text made when written or iterated).
@@ -165,6 +172,7 @@ fn row_of(name: Arc<str>, r: &StageResponse, stability: Option<(bool, Option<[f6
         },
         stable: stability.map(|s| s.0),
         critical_load_factor: stability.and_then(|s| s.1),
+        fatigue: None,
     }
 }
 
@@ -391,7 +399,7 @@ pub fn run_stage_with(
         (Some(steps), Some(s)) => Some(s.solve_nonlinear(&user, steps).map_err(fem_err)?),
         _ => None,
     };
-    let load_cases = match &nonlinear_cases {
+    let mut load_cases: InlineVec<StageRow, 4> = match &nonlinear_cases {
         Some(cases) => cases.iter().map(|r| row(r, allowable)).collect(),
         None => case
             .load_cases
@@ -399,6 +407,15 @@ pub fn run_stage_with(
             .zip(responses.iter())
             .map(|(lc, r)| row_of(lc.name.clone(), r, None, allowable))
             .collect(),
+    };
+    // Fatigue: checked with the case (material data, no ideal joints).
+    let at_fatigue_limit = match (&case.fatigue, design.material.fatigue) {
+        (Some(spec), Some(f)) if !design.ideal_joints => {
+            let sf = fatigue::StageFatigue::new(spec, &design, &f);
+            sf.add_to(&mut load_cases);
+            Some(sf.at_limit(&responses[n]))
+        }
+        _ => None,
     };
     let model = StageNotes {
         nonlinear_steps: nonlinear,
@@ -458,6 +475,7 @@ pub fn run_stage_with(
         load_cases,
         stiffness_z,
         at_allowable,
+        at_fatigue_limit,
         platform_stiffness: platform_stiffness(compliance),
         model,
         nonlinear: case.nonlinear,

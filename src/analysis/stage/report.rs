@@ -75,6 +75,20 @@ pub fn stage_report(r: &StageResult) -> Report {
     } else {
         "No allowable stress bounds the stroke (the material has none, or equal forces stress no hinge).".to_string()
     };
+    let reach = match &r.at_fatigue_limit {
+        Some(f) => format!(
+            "{reach}\n\nAt the fatigue limit ({:e} cycles, R = {}) under equal forces: F = {} N per actuator, stroke {} mm, Δz = {} mm (first: {} hinge of leg {}); infinite life: stroke {} mm.",
+            f.cycles,
+            f.load_ratio,
+            sig(f.force, 5),
+            sig(f.stroke, 5),
+            sig(f.z, 5),
+            f.hinge,
+            f.leg,
+            sig(f.stroke_infinite_life, 5)
+        ),
+        None => reach,
+    };
     md += &format!(
         "\nStructural stiffness (total actuator force per mm of pure-z stroke): **{} N/mm**.\n\n{reach}\n\nPlatform stiffness at P (sliders held): translational eigenvalues {}…{} N/mm, rotational {}…{} N·mm/rad.\n",
         sig(r.stiffness_z, 5),

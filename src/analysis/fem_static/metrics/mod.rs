@@ -176,6 +176,18 @@ pub fn evaluate_in(
                 s.map_err(|e| within(at(), e))?
                     .map_or(MetricValue::Number(None), MetricValue::Stroke)
             }
+            MetricKind::FatigueStroke => {
+                let (node, dof) = node_dof()?;
+                let c = case()?;
+                let ic = model
+                    .load_cases
+                    .iter()
+                    .position(|l| l.name == c.name)
+                    .ok_or_else(missing)?;
+                stroke::fatigue_linear(model, &stroke::Drive { ic, node, dof }, c)
+                    .map_err(|e| within(at(), e))?
+                    .map_or(MetricValue::Number(None), MetricValue::Stroke)
+            }
             MetricKind::Frequency => {
                 let f = m.mode.and_then(|n| frequencies.get(n - 1).copied());
                 MetricValue::Number(Some(f.ok_or_else(missing)?))

@@ -66,19 +66,51 @@ fn prescribed(model: &Model, d: &Drive) -> bool {
 /// along the DOF).
 fn point(c: &StaticCaseRow, d: &Drive, s: f64, prescribed: bool, base_force: f64) -> Option<Point> {
     let u = c.max_utilisation.as_ref()?;
+    let (stroke, load) = stroke_and_load(c, d, s, prescribed, base_force)?;
+    Some(Point {
+        s,
+        u: u.value,
+        element: u.element,
+        stroke,
+        load,
+    })
+}
+
+/// The displacement of the driven DOF (mm, degrees) and the load along it (N, N·mm) in row `c`.
+fn stroke_and_load(c: &StaticCaseRow, d: &Drive, s: f64, prescribed: bool, base_force: f64) -> Option<(f64, f64)> {
     let load = if prescribed {
         let k = c.reaction_nodes.iter().position(|&n| n == d.node)?;
         c.reactions[k][d.dof.index()]
     } else {
         base_force * s
     };
-    Some(Point {
-        s,
-        u: u.value,
-        element: u.element,
-        stroke: c.displacements.get(d.node)?[d.dof.index()],
-        load,
-    })
+    Some((c.displacements.get(d.node)?[d.dof.index()], load))
+}
+
+/// `fatigue_stroke` in linear runs: the load case scaled by 1 / its largest hinge fatigue
+/// utilisation (`c`: its solved row, hinge fatigue added). `None` when no hinge is stressed.
+pub fn fatigue_linear(model: &Model, d: &Drive, c: &StaticCaseRow) -> Result<Option<StrokeAtAllowable>, AnalysisError> {
+    let missing = || AnalysisError::new("load case", "the driven node has no result (checked when parsed)");
+    let worst = c
+        .hinges
+        .iter()
+        .filter_map(|h| Some((h.fatigue?.utilisation, h.element)))
+        .fold(None, |w: Option<(f64, usize)>, (u, e)| match w {
+            Some((wu, _)) if wu >= u => w,
+            _ => Some((u, e)),
+        });
+    let Some((u, element)) = worst.filter(|(u, _)| *u > 0.0) else {
+        return Ok(None);
+    };
+    let (stroke, load) = stroke_and_load(c, d, 1.0, prescribed(model, d), base_force(model, d)).ok_or_else(missing)?;
+    Ok(Some(StrokeAtAllowable {
+        stroke: stroke / u,
+        load: load / u,
+        element,
+        linear_estimate: stroke / u,
+        utilisation: 1.0,
+        solves: 0,
+    }))
 }
 
 /// The force of load case `d.ic` along the DOF at the node, N (N·mm).

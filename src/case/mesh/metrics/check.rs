@@ -15,6 +15,29 @@ pub fn check_metrics(reqs: &[MetricRequest], model: &MeshSpec, _nonlinear: bool)
     (0..reqs.len()).try_for_each(|i| check_one(reqs, i, model))
 }
 
+/// A `fatigue_stroke` metric needs the case's `"fatigue"` block (`fatigue`: given) and a
+/// linear run (`nonlinear`: the run is geometrically nonlinear).
+pub fn check_fatigue_metrics(reqs: &[MetricRequest], fatigue: bool, nonlinear: bool) -> Result<(), CaseError> {
+    let Some(i) = reqs.iter().position(|m| m.kind == MetricKind::FatigueStroke) else {
+        return Ok(());
+    };
+    if !fatigue {
+        return Err(CaseError::value(
+            format!("metrics[{i}].kind"),
+            "\"fatigue_stroke\"",
+            "needs the case's \"fatigue\" block {\"cycles\", \"load_ratio\", \"method\"}",
+        ));
+    }
+    if nonlinear {
+        return Err(CaseError::value(
+            format!("metrics[{i}].kind"),
+            "\"fatigue_stroke\"",
+            "is evaluated in linear runs only (the load factor to the fatigue limit scales the stress); nonlinear runs report each hinge's fatigue at the solved load case: drop the metric or \"nonlinear\"",
+        ));
+    }
+    Ok(())
+}
+
 fn check_one(reqs: &[MetricRequest], i: usize, model: &MeshSpec) -> Result<(), CaseError> {
     let m = &reqs[i];
     let at = |f: &str| format!("metrics[{i}].{f}");
@@ -76,7 +99,7 @@ fn check_one(reqs: &[MetricRequest], i: usize, model: &MeshSpec) -> Result<(), C
     }
     let under = |e: CaseError| e.under(&format!("metrics[{i}]"));
     match m.kind {
-        MetricKind::StrokeAtAllowable => check_stroke(m, model).map_err(under)?,
+        MetricKind::StrokeAtAllowable | MetricKind::FatigueStroke => check_stroke(m, model).map_err(under)?,
         MetricKind::Parasitic => check_parasitic(m, model).map_err(under)?,
         MetricKind::BucklingMargin => check_buckling(model).map_err(under)?,
         _ => {}

@@ -8,7 +8,7 @@ use crate::fem::Dof;
 use serde::Deserialize;
 use std::borrow::Cow;
 
-pub use check::check_metrics;
+pub use check::{check_fatigue_metrics, check_metrics};
 
 /// What a metric measures.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, schemars::JsonSchema)]
@@ -36,6 +36,12 @@ pub enum MetricKind {
     /// drives other DOFs (it neither prescribes nor loads this one): the drift of a guided
     /// platform, along the nonlinear path in nonlinear runs.
     Parasitic,
+    /// The displacement of `node` along `dof` (mm; degrees for rx, ry, rz) at which the load
+    /// case, scaled, brings the largest hinge fatigue utilisation (the case's `"fatigue"`
+    /// block: the load case as the peak of its load cycle) to 1; `load_case` drives that DOF as
+    /// for `stroke_at_allowable`. Linear runs only (the utilisation is proportional to the
+    /// scale). Reports `{stroke, load, element, ...}` like `stroke_at_allowable`.
+    FatigueStroke,
     /// Natural frequency of mode `mode` (1 = the lowest) of the case's model with its
     /// supports, undeformed, Hz (the mass model of the `modal` analysis).
     Frequency,
@@ -55,7 +61,7 @@ pub struct MetricRequest {
     pub name: String,
     /// What it measures.
     pub kind: MetricKind,
-    /// Node (stiffness, compliance, displacement, stroke_at_allowable, parasitic).
+    /// Node (stiffness, compliance, displacement, stroke_at_allowable, fatigue_stroke, parasitic).
     #[serde(default)]
     pub node: Option<usize>,
     /// `"ux"`, `"uy"`, `"uz"`, `"rx"`, `"ry"` or `"rz"`, global axes (stiffness, compliance,
@@ -85,6 +91,7 @@ impl MetricKind {
             MetricKind::HingeRotation => "hinge_rotation",
             MetricKind::MaxUtilisation => "max_utilisation",
             MetricKind::StrokeAtAllowable => "stroke_at_allowable",
+            MetricKind::FatigueStroke => "fatigue_stroke",
             MetricKind::Parasitic => "parasitic",
             MetricKind::Frequency => "frequency",
             MetricKind::BucklingMargin => "buckling_margin",
@@ -95,9 +102,10 @@ impl MetricKind {
     fn fields(self) -> [bool; 5] {
         match self {
             MetricKind::Stiffness | MetricKind::Compliance => [true, true, false, false, false],
-            MetricKind::Displacement | MetricKind::StrokeAtAllowable | MetricKind::Parasitic => {
-                [true, true, true, false, false]
-            }
+            MetricKind::Displacement
+            | MetricKind::StrokeAtAllowable
+            | MetricKind::FatigueStroke
+            | MetricKind::Parasitic => [true, true, true, false, false],
             MetricKind::HingeRotation => [false, false, true, true, false],
             MetricKind::MaxUtilisation | MetricKind::BucklingMargin => [false, false, true, false, false],
             MetricKind::Frequency => [false, false, false, false, true],
