@@ -52,14 +52,15 @@ pub(super) fn hinge_element(
         ));
     }
     let length = len.max(notch_len);
-    // Identical hinges (one `hinge_types` entry at equal node distances) are integrated once.
+    // Identical hinges (one `hinge_types` entry at equal node distances) are integrated once,
+    // and once per thread for designs of a sweep that repeat them ([`super::hinge_memo`]).
     let same = |(s, m, l, _): &&(HingeSpec, crate::material::Material, f64, hinge::HingeRegion)| {
         *s == spec && *m == mat && *l == length
     };
     let region = match cx.regions.iter().find(same) {
         Some((.., r)) => r.clone(),
         None => {
-            let r = hinge::hinge_element(&spec, &mat, length).map_err(herr)?;
+            let r = super::hinge_memo::region(&spec, &mat, length).map_err(herr)?;
             cx.regions.push((spec, mat, length, r.clone()));
             r
         }
