@@ -118,7 +118,7 @@ pub(super) fn chain_masses(model: &mut fem::Model, nodes: &[usize], region: &hin
     let (b1, b2) = if region.is_neck() { (p.h, p.h) } else { (p.w, p.h) };
     let section = b1 * b1 + b2 * b2;
     let segments = (nodes.len() - 1) as f64;
-    let (mass, seg) = (density * region.volume(), len / segments);
+    let (mass, seg) = (density * super::hinge_memo::volume(region), len / segments);
     for (k, &node) in nodes.iter().enumerate() {
         let end = k == 0 || k + 1 == nodes.len();
         let (m, i_t) = if end {

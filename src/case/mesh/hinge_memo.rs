@@ -10,7 +10,7 @@
 //! is never found and is computed again).
 
 use crate::fem::memo::{remembered, Ring};
-use crate::hinge::{self, HingeError, HingeRegion, HingeSpec};
+use crate::hinge::{self, HingeError, HingeRegion, HingeSpec, Profile};
 use crate::material::Material;
 use std::cell::RefCell;
 
@@ -20,6 +20,8 @@ type Chain = Vec<[[f64; 6]; 6]>;
 thread_local! {
     /// Regions remembered per thread (replaced oldest first).
     static REGIONS: RefCell<Ring<(HingeSpec, Material, u64), HingeRegion, 16>> = const { RefCell::new(Ring::new()) };
+    /// Region volumes remembered per thread (replaced oldest first).
+    static VOLUMES: RefCell<Ring<Profile, f64, 16>> = const { RefCell::new(Ring::new()) };
     /// Segment chains remembered per thread (replaced oldest first).
     static CHAINS: RefCell<Ring<(HingeRegion, Material, usize), Chain, 16>> = const { RefCell::new(Ring::new()) };
 }
@@ -30,6 +32,15 @@ pub(super) fn region(spec: &HingeSpec, material: &Material, length: f64) -> Resu
     remembered(&REGIONS, (*spec, *material, length.to_bits()), || {
         hinge::hinge_element(spec, material, length)
     })
+}
+
+/// [`HingeRegion::volume`] (mm³), remembered.
+pub(super) fn volume(region: &HingeRegion) -> f64 {
+    let computed: Result<f64, std::convert::Infallible> = remembered(&VOLUMES, region.profile, || Ok(region.volume()));
+    match computed {
+        Ok(v) => v,
+        Err(never) => match never {},
+    }
 }
 
 /// [`hinge::chain_compliances`] of `region` split into `segments`, remembered.
@@ -72,6 +83,7 @@ mod tests {
                     let fresh = hinge::hinge_element(&spec, &m, length).unwrap();
                     let got = region(&spec, &m, length).unwrap();
                     assert_eq!(got, fresh, "round {round}, hinge {k}, length {length}");
+                    assert_eq!(volume(&got).to_bits(), fresh.volume().to_bits());
                     for n in [2, 4] {
                         let cs = hinge::chain_compliances(&fresh.profile, &m, &fresh.stiffness, n);
                         assert_eq!(cs.len(), n);
