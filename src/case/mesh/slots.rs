@@ -30,7 +30,7 @@ impl NumberSlot<'_> {
     }
 }
 
-fn key<'s>(s: &'s Step) -> Option<&'s str> {
+fn key(s: &Step) -> Option<&str> {
     match s {
         Step::Key(k) => Some(k),
         Step::Index(_) => None,

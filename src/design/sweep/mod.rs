@@ -133,14 +133,7 @@ fn evaluate(
     shapes: &Shapes,
     format: &LineFormat,
     hash: &mut Option<String>,
-    route: RouteWorker,
 ) -> Result<(Value, Option<format::LoadedNodes>), String> {
-    if let Some((r, w)) = route {
-        if let Some((json, loaded, h)) = r.design(w, index, cache) {
-            *hash = Some(h);
-            return Ok((json, loaded));
-        }
-    }
     let design = sweep.design(index).map_err(|e| case_text(&e))?;
     *hash = Some(hash_design(&design, base_dir));
     let parsed = shapes.parse(design, base_dir).map_err(|e| case_text(&e))?;
@@ -241,7 +234,12 @@ fn run_design_in(
 ) -> Row {
     let mut hash = None;
     let outcome = panic::catch_unwind(AssertUnwindSafe(|| {
-        evaluate(sweep, base_dir, index, cache, shapes, format, &mut hash, route)
+        // The compiled route first, where the sweep has one; the value route for the rest.
+        if let Some((json, loaded, h)) = route.and_then(|(r, w)| r.design(w, index, cache)) {
+            hash = Some(h);
+            return Ok((json, loaded));
+        }
+        evaluate(sweep, base_dir, index, cache, shapes, format, &mut hash)
     }))
     .unwrap_or_else(|p| {
         // A panic may have left the cache half-updated: start the worker afresh.
