@@ -4,11 +4,15 @@
 //! 256-design stage sweep with the lines `flexfem sweep --out` writes (compact stage line,
 //! notes by reference). And 10,000 parameterised pan-tilt designs (`meshes/pantilt_8r_parameters.json`:
 //! 8 corner-filleted hinges of one `hinge_types` entry driven by `$t`, `$R`, the platform height
-//! `$H` moving 4 nodes; linear static) with the lines `flexfem sweep --out` writes, into a file.
+//! `$H` moving 4 nodes; linear static) with the lines `flexfem sweep --out` writes, into a file:
+//! the compiled route of parameterised cases (case and mesh file resolved and parsed once,
+//! each design's parameter values set in a parsed case; see `flexfem::design::sweep`).
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use flexfem::analysis::{self, Case};
-use flexfem::design::sweep::{load, omitted_fields, run_design, run_sweep, run_sweep_formatted, LineFormat, Shard};
+use flexfem::design::sweep::{
+    load, omitted_fields, run_design, run_sweep, run_sweep_formatted, takes_compiled_route, LineFormat, Shard,
+};
 use std::collections::HashSet;
 use std::hint::black_box;
 use std::io::Write;
@@ -103,6 +107,10 @@ fn pantilt(c: &mut Criterion, none: &HashSet<usize>) {
         omit: omitted_fields("static").iter().map(|p| p.to_string()).collect(),
         loaded_displacements: true,
     };
+    assert!(
+        takes_compiled_route(&sweep, None, &format),
+        "the compiled route is taken"
+    );
     let out = std::env::temp_dir().join(format!("flexfem-bench-pantilt-{}.jsonl", std::process::id()));
     let tally = run_sweep_formatted(&sweep, None, Shard::ALL, none, &format, false, |_| Ok(())).expect("no sink error");
     assert_eq!((tally.run, tally.failed), (10_000, 0), "every design runs");

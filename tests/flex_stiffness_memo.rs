@@ -25,9 +25,9 @@ fn element(k: usize) -> FlexElement {
 
 #[test]
 fn remembered_flex_stiffness_equals_the_fresh_one() {
-    // 20 compliances (more than the memo's slots) at two lengths, twice over.
+    // 30 compliances at two lengths (more than the memo's 48 slots), twice over.
     for round in 0..2 {
-        for k in 0..20 {
+        for k in 0..30 {
             let e = element(k);
             let c = Matrix6::from_fn(|i, j| e.compliance[i][j]);
             for l in [5.0, 7.5] {

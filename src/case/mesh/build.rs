@@ -139,12 +139,7 @@ impl MeshSpec {
                 let at = match chains.iter().position(|&(j, _)| same(j)) {
                     Some(at) => at,
                     None => {
-                        let cs = crate::hinge::chain_compliances(
-                            &h.region.profile,
-                            &h.material,
-                            &h.region.stiffness,
-                            h.segments,
-                        );
+                        let cs = super::hinge_memo::chain(&h.region, &h.material, h.segments);
                         chains.push((k, cs));
                         chains.len() - 1
                     }

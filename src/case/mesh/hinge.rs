@@ -52,14 +52,15 @@ pub(super) fn hinge_element(
         ));
     }
     let length = len.max(notch_len);
-    // Identical hinges (one `hinge_types` entry at equal node distances) are integrated once.
+    // Identical hinges (one `hinge_types` entry at equal node distances) are integrated once,
+    // and once per thread for designs of a sweep that repeat them ([`super::hinge_memo`]).
     let same = |(s, m, l, _): &&(HingeSpec, crate::material::Material, f64, hinge::HingeRegion)| {
         *s == spec && *m == mat && *l == length
     };
     let region = match cx.regions.iter().find(same) {
         Some((.., r)) => r.clone(),
         None => {
-            let r = hinge::hinge_element(&spec, &mat, length).map_err(herr)?;
+            let r = super::hinge_memo::region(&spec, &mat, length).map_err(herr)?;
             cx.regions.push((spec, mat, length, r.clone()));
             r
         }
@@ -117,7 +118,7 @@ pub(super) fn chain_masses(model: &mut fem::Model, nodes: &[usize], region: &hin
     let (b1, b2) = if region.is_neck() { (p.h, p.h) } else { (p.w, p.h) };
     let section = b1 * b1 + b2 * b2;
     let segments = (nodes.len() - 1) as f64;
-    let (mass, seg) = (density * region.volume(), len / segments);
+    let (mass, seg) = (density * super::hinge_memo::volume(region), len / segments);
     for (k, &node) in nodes.iter().enumerate() {
         let end = k == 0 || k + 1 == nodes.len();
         let (m, i_t) = if end {

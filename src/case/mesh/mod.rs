@@ -12,6 +12,7 @@ mod conflicts;
 pub mod corot_length;
 mod frames;
 pub mod hinge;
+mod hinge_memo;
 mod joint;
 pub mod load_shapes;
 mod lookup;
@@ -19,6 +20,7 @@ pub mod metrics;
 pub mod path_control;
 pub mod requests;
 pub mod shapes;
+pub mod slots;
 pub mod superelement;
 pub mod superelement_file;
 

@@ -14,6 +14,7 @@
 //! had been written with literal numbers (identical, bit for bit); `parameters` and
 //! `hinge_types` are taken out before validation.
 
+pub mod compiled;
 pub mod expr;
 pub mod origin;
 pub mod tangent;

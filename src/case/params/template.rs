@@ -8,10 +8,12 @@ use super::{expr_error, Parameters};
 use crate::case::CaseError;
 use serde_json::Value;
 
-/// One step of the way to a site.
+/// One step of the way to a site: an object key or an array index.
 #[derive(Debug, Clone, PartialEq)]
-enum Step {
+pub enum Step {
+    /// An object key.
     Key(String),
+    /// An array index.
     Index(usize),
 }
 
@@ -57,6 +59,11 @@ impl Template {
             s.expr.names(&mut names);
             (path_of(borrowed(&s.steps)), s.text.as_str(), names.first().copied())
         })
+    }
+
+    /// Each site's way from the root and its expression, in the order [`Self::fill`] sets them.
+    pub fn expressions(&self) -> impl Iterator<Item = (&[Step], &Expr)> + '_ {
+        self.sites.iter().map(|s| (s.steps.as_slice(), &s.expr))
     }
 
     /// True when the value holds no expression.
@@ -196,7 +203,7 @@ fn site_mut<'v>(root: &'v mut Value, site: &Site) -> &'v mut Value {
 
 /// The JSON number of `x`: an integer-valued result as an integer (node indices, counts), so
 /// `"$n - 1"` is read where an index is expected; any other as a float.
-fn number(x: f64) -> Value {
+pub fn number(x: f64) -> Value {
     if x.fract() == 0.0 && x.abs() < 9.0e15 {
         // Exact: |x| < 2^53, no fraction.
         Value::from(x as i64)
@@ -206,7 +213,7 @@ fn number(x: f64) -> Value {
 }
 
 /// Why a site's expression has no value.
-pub(super) enum Failure {
+pub(crate) enum Failure {
     /// A `$NAME` that is not declared.
     Unknown(String),
     /// Division by zero, sqrt of a negative number, overflow.
@@ -242,7 +249,7 @@ impl Failure {
 }
 
 /// The value of `expr` with the parameters `params`.
-pub(super) fn evaluate(expr: &Expr, params: &Parameters) -> Result<f64, Failure> {
+pub(crate) fn evaluate(expr: &Expr, params: &Parameters) -> Result<f64, Failure> {
     expr.eval(&mut |name: &str| {
         params
             .get(name)

@@ -3,7 +3,7 @@
 
 use crate::analysis::line::{fnv128, FNV128_OFFSET};
 use crate::case;
-use crate::case::sweep::Sweep;
+use crate::case::sweep::{set_path, Sweep};
 use serde_json::Value;
 use std::fs;
 use std::io;
@@ -75,13 +75,77 @@ pub fn hash_design(design: &Value, base_dir: Option<&Path>) -> String {
     let mut h = Fnv128::new();
     canonical(design, &mut h);
     if let Some(name) = design.get("mesh").and_then(Value::as_str) {
-        h.write(b"\0mesh\0");
-        match fs::read(case::resolve_file(name, base_dir)) {
-            Ok(bytes) => h.write(&bytes),
-            Err(_) => h.write(b"unreadable"),
-        }
+        h.0 = with_mesh(h.0, fs::read(case::resolve_file(name, base_dir)).ok().as_deref());
     }
     format!("{:032x}", h.0)
+}
+
+/// The canonical text of a sweep's base case split at the varied values: the hash of a design
+/// continues the state of the text before the first varied value over each value's text and
+/// the text after it, without building the design.
+#[derive(Debug, Clone, Default)]
+pub(super) struct HashTemplate {
+    /// The hash state after the text before the first varied value.
+    head: u128,
+    /// (axis whose value comes next, the canonical text after it), in the text's order.
+    parts: Vec<(usize, Vec<u8>)>,
+}
+
+impl HashTemplate {
+    /// The template of `sweep`'s base case; `None` when a varied path is not found exactly once.
+    pub(super) fn new(sweep: &Sweep) -> Option<Self> {
+        let mark = |k: usize| format!("\u{1}flexfem-axis-{k}\u{1}");
+        let mut base = sweep.base.clone();
+        for (k, (path, _)) in sweep.axes.iter().enumerate() {
+            set_path(&mut base, path, Value::String(mark(k))).ok()?;
+        }
+        let mut text = Vec::new();
+        canonical(&base, &mut text);
+        let marks: Vec<Vec<u8>> = (0..sweep.axes.len())
+            .map(|k| serde_json::to_vec(&mark(k)).ok())
+            .collect::<Option<_>>()?;
+        let mut at: Vec<(usize, usize)> = Vec::new();
+        for (k, m) in marks.iter().enumerate() {
+            let hits: Vec<usize> = text
+                .windows(m.len())
+                .enumerate()
+                .filter(|(_, w)| w == m)
+                .map(|(i, _)| i)
+                .collect();
+            let [i] = hits[..] else { return None };
+            at.push((i, k));
+        }
+        at.sort_unstable();
+        let mut end = at.first().map_or(text.len(), |&(i, _)| i);
+        let mut t = HashTemplate {
+            head: fnv128(FNV128_OFFSET, &text[..end]),
+            parts: Vec::new(),
+        };
+        for (n, &(i, k)) in at.iter().enumerate() {
+            let from = i + marks[k].len();
+            end = at.get(n + 1).map_or(text.len(), |&(j, _)| j);
+            t.parts.push((k, text[from..end].to_vec()));
+        }
+        Some(t)
+    }
+
+    /// The hash state after the canonical text of the design whose value on axis k is
+    /// `texts[k][picks[k]]` (each value's JSON text).
+    pub(super) fn state(&self, texts: &[Vec<Vec<u8>>], picks: &[usize]) -> u128 {
+        let mut h = self.head;
+        for (k, after) in &self.parts {
+            h = fnv128(h, &texts[*k][picks[*k]]);
+            h = fnv128(h, after);
+        }
+        h
+    }
+}
+
+/// [`hash_design`]'s tail for a design naming a mesh file, after its canonical text: the
+/// file's bytes (`None`: unreadable).
+pub(super) fn with_mesh(mut h: u128, bytes: Option<&[u8]>) -> u128 {
+    h = fnv128(h, b"\0mesh\0");
+    fnv128(h, bytes.unwrap_or(b"unreadable"))
 }
 
 /// The `design_hash` of design `index`, or `None` when the design cannot be built.

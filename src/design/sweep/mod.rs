@@ -15,6 +15,7 @@
 //! progress, exit codes) is [`crate::cli::sweep`]'s.
 
 mod check;
+mod compiled;
 mod format;
 mod hash;
 mod shard;
@@ -136,19 +137,10 @@ fn evaluate(
     let design = sweep.design(index).map_err(|e| case_text(&e))?;
     *hash = Some(hash_design(&design, base_dir));
     let parsed = shapes.parse(design, base_dir).map_err(|e| case_text(&e))?;
-    let loaded = match &parsed.case {
-        Case::Sweep(_) => return Err("analysis: a sweep cannot vary another sweep".into()),
-        Case::Static(c) if format.loaded_displacements => {
-            let named: Vec<usize> = c
-                .compliance
-                .iter()
-                .map(|r| r.node)
-                .chain(c.metrics.iter().filter_map(|m| m.node))
-                .collect();
-            Some(format::line_nodes(&c.model, &named))
-        }
-        _ => None,
-    };
+    if let Case::Sweep(_) = &parsed.case {
+        return Err("analysis: a sweep cannot vary another sweep".into());
+    }
+    let loaded = loaded_nodes_of(&parsed.case, format.loaded_displacements);
     let mut ctx = Ctx::new(cache, false);
     // Only the JSON goes into the line: no Markdown/CSV report.
     ctx.with_report = false;
@@ -159,6 +151,26 @@ fn evaluate(
         })
         .map_err(|e| error_text(&parsed.locate_run(e)))
 }
+
+/// With `loaded_displacements` ([`LineFormat::loaded_displacements`]): the nodes whose
+/// displacements the line of a static case keeps ([`format::line_nodes`]).
+fn loaded_nodes_of(case: &Case, loaded_displacements: bool) -> Option<format::LoadedNodes> {
+    match case {
+        Case::Static(c) if loaded_displacements => {
+            let named: Vec<usize> = c
+                .compliance
+                .iter()
+                .map(|r| r.node)
+                .chain(c.metrics.iter().filter_map(|m| m.node))
+                .collect();
+            Some(format::line_nodes(&c.model, &named))
+        }
+        _ => None,
+    }
+}
+
+/// The compiled route and a worker's state on it ([`compiled`]).
+type RouteWorker<'a, 's> = Option<(&'a compiled::Route<'s>, &'a mut compiled::Worker)>;
 
 /// The array check of a sweep's designs ([`analysis::case_file::check_shape`]), done once per
 /// run when every varied value is a scalar: the designs then differ only in scalar values,
@@ -208,7 +220,7 @@ pub fn run_design_formatted(
     cache: &mut SolverCache,
     format: &LineFormat,
 ) -> Row {
-    run_design_in(sweep, base_dir, index, cache, format, &Shapes::new(sweep))
+    run_design_in(sweep, base_dir, index, cache, format, &Shapes::new(sweep), None)
 }
 
 fn run_design_in(
@@ -218,9 +230,15 @@ fn run_design_in(
     cache: &mut SolverCache,
     format: &LineFormat,
     shapes: &Shapes,
+    route: RouteWorker,
 ) -> Row {
     let mut hash = None;
     let outcome = panic::catch_unwind(AssertUnwindSafe(|| {
+        // The compiled route first, where the sweep has one; the value route for the rest.
+        if let Some((json, loaded, h)) = route.and_then(|(r, w)| r.design(w, index, cache)) {
+            hash = Some(h);
+            return Ok((json, loaded));
+        }
         evaluate(sweep, base_dir, index, cache, shapes, format, &mut hash)
     }))
     .unwrap_or_else(|p| {
@@ -303,6 +321,11 @@ where
     let typed = (!want_values)
         .then(|| typed::Typed::new(sweep, base_dir, format, &shapes))
         .flatten();
+    // Parameterised cases, which the typed route leaves to the value route: compiled once.
+    let route = match typed {
+        None => compiled::Route::new(sweep, base_dir, format, &shapes),
+        Some(_) => None,
+    };
     // One worker per thread (its solver cache, its parsed case and line buffers), taking the
     // next design from a shared counter until none is left: a worker is set up once per thread,
     // not once per piece of a split range, and designs finish roughly in index order.
@@ -311,6 +334,7 @@ where
     rayon::broadcast(|_| {
         let mut cache = SolverCache::new();
         let mut worker = typed.as_ref().map(typed::Typed::worker);
+        let mut route_worker = route.as_ref().map(compiled::Route::worker);
         loop {
             let j = next.fetch_add(1, Ordering::Relaxed);
             if j >= count || stop.load(Ordering::Relaxed) {
@@ -334,7 +358,8 @@ where
             let (line, row_failed) = match (fast, worker.as_ref()) {
                 (true, Some(w)) => (w.finished(i), false),
                 _ => {
-                    row = run_design_in(sweep, base_dir, i, &mut cache, format, &shapes);
+                    let on_route = route.as_ref().zip(route_worker.as_mut());
+                    row = run_design_in(sweep, base_dir, i, &mut cache, format, &shapes, on_route);
                     (row.as_line(), row.failed)
                 }
             };
@@ -360,4 +385,12 @@ where
         run: run.into_inner(),
         failed: failed.into_inner(),
     })
+}
+
+/// True when the designs of `sweep` written in `format` take the compiled route of
+/// parameterised cases ([`compiled`]; the value route otherwise): for tests and benches.
+pub fn takes_compiled_route(sweep: &Sweep, base_dir: Option<&Path>, format: &LineFormat) -> bool {
+    let shapes = Shapes::new(sweep);
+    typed::Typed::new(sweep, base_dir, format, &shapes).is_none()
+        && compiled::Route::new(sweep, base_dir, format, &shapes).is_some()
 }

@@ -13,11 +13,11 @@
 //! error rows are the value route's too.
 
 use super::format::pointer;
-use super::hash::canonical;
+use super::hash::HashTemplate;
 use super::{Line, LineFormat, Shapes};
-use crate::analysis::line::{fnv128, LineSpec, LineTarget, ResultLine, FNV128_OFFSET};
+use crate::analysis::line::{LineSpec, LineTarget, ResultLine};
 use crate::analysis::{self, Case, Ctx, DynAnalysis};
-use crate::case::sweep::{set_path, Sweep};
+use crate::case::sweep::Sweep;
 use crate::fem::SolverCache;
 use serde_json::Value;
 use std::io::Write;
@@ -36,10 +36,8 @@ pub(super) struct Typed<'s> {
     texts: Vec<Vec<Vec<u8>>>,
     /// Each axis's `"path":` in the line's `params`.
     keys: Vec<Vec<u8>>,
-    /// The hash state after the canonical text before the first varied value, then (axis whose
-    /// value comes next, the canonical text after it), in the text's order.
-    hash_head: u128,
-    hash_parts: Vec<(usize, Vec<u8>)>,
+    /// The design hash around the varied values.
+    hash: HashTemplate,
     omit: Vec<Vec<String>>,
     notes_by_ref: bool,
 }
@@ -88,8 +86,7 @@ impl<'s> Typed<'s> {
                 })
                 .collect::<Option<_>>()?,
             numbers,
-            hash_head: 0,
-            hash_parts: Vec::new(),
+            hash: HashTemplate::default(),
             omit: format
                 .omit
                 .iter()
@@ -98,7 +95,10 @@ impl<'s> Typed<'s> {
             notes_by_ref: format.notes_by_ref,
             base,
         };
-        let typed = typed.with_hash_template()?;
+        let typed = Typed {
+            hash: HashTemplate::new(sweep)?,
+            ..typed
+        };
         // The numbers set in the parsed case must give the parsed design.
         let mut w = typed.worker();
         for i in [0, sweep.len() / 2, sweep.len() - 1] {
@@ -109,41 +109,6 @@ impl<'s> Typed<'s> {
             }
         }
         Some(typed)
-    }
-
-    /// Splits the canonical text of the base case at the varied values.
-    fn with_hash_template(mut self) -> Option<Self> {
-        let sweep = self.sweep;
-        let mark = |k: usize| format!("\u{1}flexfem-axis-{k}\u{1}");
-        let mut base = sweep.base.clone();
-        for (k, (path, _)) in sweep.axes.iter().enumerate() {
-            set_path(&mut base, path, Value::String(mark(k))).ok()?;
-        }
-        let mut text = Vec::new();
-        canonical(&base, &mut text);
-        let marks: Vec<Vec<u8>> = (0..sweep.axes.len())
-            .map(|k| serde_json::to_vec(&mark(k)).ok())
-            .collect::<Option<_>>()?;
-        let mut at: Vec<(usize, usize)> = Vec::new();
-        for (k, m) in marks.iter().enumerate() {
-            let hits: Vec<usize> = text
-                .windows(m.len())
-                .enumerate()
-                .filter(|(_, w)| w == m)
-                .map(|(i, _)| i)
-                .collect();
-            let [i] = hits[..] else { return None };
-            at.push((i, k));
-        }
-        at.sort_unstable();
-        let mut end = at.first().map_or(text.len(), |&(i, _)| i);
-        self.hash_head = fnv128(FNV128_OFFSET, &text[..end]);
-        for (n, &(i, k)) in at.iter().enumerate() {
-            let from = i + marks[k].len();
-            end = at.get(n + 1).map_or(text.len(), |&(j, _)| j);
-            self.hash_parts.push((k, text[from..end].to_vec()));
-        }
-        Some(self)
     }
 
     /// A worker's state.
@@ -177,7 +142,6 @@ impl<'s> Typed<'s> {
         out.clear();
         out.extend_from_slice(b"{\"index\":");
         write!(out, "{index},\"params\":{{").ok()?;
-        let mut h = self.hash_head;
         for (k, key) in self.keys.iter().enumerate() {
             if k > 0 {
                 out.push(b',');
@@ -185,10 +149,7 @@ impl<'s> Typed<'s> {
             out.extend_from_slice(key);
             out.extend_from_slice(&self.texts[k][w.picks[k]]);
         }
-        for (k, after) in &self.hash_parts {
-            h = fnv128(h, &self.texts[*k][w.picks[*k]]);
-            h = fnv128(h, after);
-        }
+        let h = self.hash.state(&self.texts, &w.picks);
         write!(out, "}},\"design_hash\":\"{h:032x}\",\"result\":").ok()?;
         let mut ctx = Ctx::new(cache, false);
         ctx.with_report = false;

@@ -63,8 +63,11 @@ impl FlexElement {
 // Stiffnesses already computed from a compliance, remembered per thread (keyed by the exact
 // bits of the input). Validation, assembly and recovery each ask for every element's
 // stiffness, and a model's flex elements repeat few compliances (a stage's three legs share
-// theirs): the inverse is computed once.
+// theirs): the inverse is computed once. The local stiffness is keyed by the length too, and
+// node distances that are equal on paper differ in their last bits (a pan-tilt mechanism's 8
+// hinges of 4 segments each hold 32 (compliance, length) pairs): 48 slots keep a model's pairs
+// from evicting each other between validation, assembly and recovery.
 thread_local! {
-    static LOCAL: RefCell<Ring<[u64; 37], Mat12, 8>> = const { RefCell::new(Ring::new()) };
+    static LOCAL: RefCell<Ring<[u64; 37], Mat12, 48>> = const { RefCell::new(Ring::new()) };
     static TIP: RefCell<Ring<[u64; 36], Matrix6<f64>, 8>> = const { RefCell::new(Ring::new()) };
 }
