@@ -128,7 +128,8 @@ pub(super) fn arc_length(
             Ok(s) if lambda + s.dlam >= 1.0 => {
                 // λ = 1 lies on this step: reach it by load control from the last point.
                 *st = saved;
-                let (it, n, c, l) = load_control(ctx, st, lambda, &one_step(opts), name, path, steps, stab)?;
+                let (it, n, c, l) =
+                    load_control(ctx, st, [lambda, 1.0], 1.0, &one_step(opts), name, path, steps, stab)?;
                 return Ok((iterations + s.iterations + it, steps + n, cuts + c, l));
             }
             Ok(s) => {

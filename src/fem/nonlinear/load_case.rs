@@ -50,7 +50,17 @@ pub(super) fn solve_case(
         }
         arc_length(&ctx, &mut st, opts, &case.name, &mut path, &mut stab)?
     } else {
-        load_control(&ctx, &mut st, 0.0, opts, &case.name, &mut path, 0, &mut stab)?
+        load_control(
+            &ctx,
+            &mut st,
+            [0.0, 1.0],
+            1.0 / opts.steps as f64,
+            opts,
+            &case.name,
+            &mut path,
+            0,
+            &mut stab,
+        )?
     };
     let mut out = finish(&ctx, &st, &case.name, lambda, path, iterations, steps, cuts)?;
     out.stable = stab.bracket.is_none();

@@ -128,8 +128,9 @@ pub(super) fn max_rotation_change(a: &State, b: &State) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// Load (and prescribed-displacement) control from `lambda0` to 1. The load step starts at
-/// 1/steps (its largest value) and adapts: halved when Newton fails, when the converged
+/// Load (and prescribed-displacement) control from `span[0]` to `span[1]` (either way: a
+/// continuation may step back along the path). The load step starts at `dl0` (its largest
+/// value; 1/steps for a solve from the unloaded state) and adapts: halved when Newton fails, when the converged
 /// increment rotates a node by more than [`MAX_STEP_ROTATION`] or exceeds [`MAX_JUMP`] times
 /// its tangent predictor, or when an iteration met an indefinite tangent between two stable
 /// states (a jump over an unstable stretch); halved for the next step after a slow one (≥ 12
@@ -139,14 +140,16 @@ pub(super) fn max_rotation_change(a: &State, b: &State) -> f64 {
 pub(super) fn load_control(
     ctx: &CaseCtx,
     st: &mut State,
-    lambda0: f64,
+    span: [f64; 2],
+    dl0: f64,
     opts: &NonlinearOptions,
     name: &str,
     path: &mut Vec<PathPoint>,
     step0: usize,
     stab: &mut Stability,
 ) -> Result<(usize, usize, usize, f64), FemError> {
-    let dl0 = 1.0 / opts.steps as f64;
+    let [lambda0, end] = span;
+    let sense = if end < lambda0 { -1.0 } else { 1.0 };
     let dl_jump = dl0 / f64::from(1u32 << JUMP_CUTS);
     let dl_min = dl0 * 0.5f64.powi(opts.max_cuts.min(60) as i32);
     // Steps allowed: the nominal count 10 times over (slow convergence halves the step).
@@ -156,8 +159,12 @@ pub(super) fn load_control(
     let mut prev_stable = path.last().is_none_or(|p| p.stable);
     let mut internal = ctx.evaluate(st, lambda0, Assemble::None).map_or(0.0, |ev| ev.internal);
     let (mut iterations, mut steps, mut cuts, mut cut_run) = (0, 0, 0, 0);
-    while lambda < 1.0 - 1e-12 {
-        let target = if lambda + dl > 1.0 - 1e-9 { 1.0 } else { lambda + dl };
+    while sense * (end - lambda) > 1e-12 {
+        let target = if sense * (end - lambda) < dl + 1e-9 {
+            end
+        } else {
+            lambda + sense * dl
+        };
         let saved = st.clone();
         let outcome =
             load_step(ctx, st, lambda, target, opts, internal, prev_stable).and_then(|(nk, judged)| match judged {
@@ -173,7 +180,7 @@ pub(super) fn load_control(
                 iterations += nk.iterations;
                 steps += 1;
                 internal = nk.internal;
-                stab.record(&saved, st, lambda, target, stable, 1.0, None);
+                stab.record(&saved, st, lambda, target, stable, sense, None);
                 lambda = target;
                 cut_run = 0;
                 prev_stable = stable;
@@ -190,7 +197,7 @@ pub(super) fn load_control(
                         step0 + steps,
                         lambda,
                         path.last().and_then(|p| p.residuals.last()).copied().unwrap_or(f64::NAN),
-                        format!("{steps} load steps and {cuts} step cuts (Δλ = {dl:.3e}) without reaching λ = 1: Newton converges too slowly"),
+                        format!("{steps} load steps and {cuts} step cuts (Δλ = {dl:.3e}) without reaching λ = {end}: Newton converges too slowly"),
                     ));
                 }
             }
