@@ -4,8 +4,11 @@
 //! state. The case's fixed data (DOF map, sparsity pattern, symbolic factorisation) are built
 //! once for all of them.
 //!
-//! Each solve is load control from that state ([`super::path::load_control`]) with the same
-//! judgement of every step as a solve from zero: a step is cut when Newton fails, when a node
+//! Each solve is load control from that state ([`super::path::load_control`]), every step
+//! started from the linearised tangent predictor ([`super::path::Predictor::Linear`]: exact to
+//! first order however far the prescribed values move, so a smooth stretch of the path is one
+//! step of a few Newton iterations), with the same judgement of every step as a solve from
+//! zero: a step is cut when Newton fails, when a node
 //! rotates more than [`super::path::MAX_STEP_ROTATION`], when the increment jumps past
 //! [`super::path::MAX_JUMP`] times its tangent predictor, or when an iteration crosses an
 //! indefinite tangent; every accepted state is checked for equilibrium and stability. Only
@@ -13,7 +16,7 @@
 //! unloaded state by a chain of judged, stable steps.
 
 use super::load_case::{case_ctx, case_vectors};
-use super::path::{load_control, Stability};
+use super::path::{load_control, Predictor, Stability};
 use super::probe::Elements;
 use super::recover::finish;
 use super::state::{CaseCtx, State};
@@ -123,6 +126,7 @@ impl<'a> Continuation<'a> {
             &mut path,
             0,
             &mut stab,
+            Predictor::Linear,
         )?;
         let mut out = finish(&self.ctx, &st, &self.name, reached, path, iterations, steps, cuts)?;
         out.stable = stab.bracket.is_none();

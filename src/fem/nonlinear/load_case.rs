@@ -4,7 +4,7 @@
 
 use super::arc::arc_length;
 use super::critical::locate;
-use super::path::{load_control, Stability};
+use super::path::{load_control, Predictor, Stability};
 use super::recover::finish;
 use super::residual::for_each_pair_in;
 use super::state::{CaseCtx, ElemData, State};
@@ -60,6 +60,7 @@ pub(super) fn solve_case(
             &mut path,
             0,
             &mut stab,
+            Predictor::Moved,
         )?
     };
     let mut out = finish(&ctx, &st, &case.name, lambda, path, iterations, steps, cuts)?;

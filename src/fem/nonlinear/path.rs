@@ -1,7 +1,8 @@
 //! Path control: load (and prescribed-displacement) stepping with adaptive step size, and the
 //! stability of the converged points (arc length: [`super::arc`]).
 
-use super::newton::{newton, NewtonOk, StepFail};
+use super::newton::{newton, NewtonOk, Predicted, StepFail};
+use super::residual::{dot, norm};
 use super::state::{fail, Assemble, CaseCtx, State};
 use super::{NonlinearOptions, PathPoint};
 use crate::fem::corot;
@@ -81,10 +82,57 @@ pub(super) enum Judged {
     Suspicious(String),
 }
 
+/// How a load step starts its Newton iterations.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Predictor {
+    /// From the converged state with the prescribed DOFs moved: the first Newton correction is
+    /// the tangent predictor (with the residual of that state, nonlinear in the prescribed
+    /// move: the elements next to a prescribed DOF take all of it).
+    Moved,
+    /// From the linearised tangent predictor Δq = −K_T⁻¹ (∂r/∂λ) Δλ at the converged state
+    /// (∂r/∂λ by a one-sided difference of 10⁻⁵ Δλ): exact to first order in Δλ however
+    /// large the prescribed move, for long steps along a smooth path.
+    Linear,
+}
+
+/// Relative load-factor difference of the linearised predictor's ∂r/∂λ.
+const PREDICTOR_DIFFERENCE: f64 = 1e-5;
+
+/// The linearised predictor of a step from the converged state `st` at `lambda` by `dl`: the
+/// equation increment Δq = −K_T⁻¹ (∂r/∂λ) Δλ and its work |Δq·(∂r/∂λ) Δλ|.
+fn linear_predictor(ctx: &CaseCtx, st: &State, lambda: f64, dl: f64) -> Result<(Vec<f64>, f64), StepFail> {
+    let degenerate = || StepFail {
+        residual: f64::NAN,
+        reason: "degenerate element or non-finite internal force at the predictor".into(),
+    };
+    let ev = ctx.evaluate(st, lambda, ctx.newton_tangent()).ok_or_else(degenerate)?;
+    let eps = PREDICTOR_DIFFERENCE * dl;
+    let mut moved = st.clone();
+    let dc: Vec<f64> = ctx.u_c.iter().map(|v| v * eps).collect();
+    ctx.apply(&mut moved, &vec![0.0; ctx.n_eq()], Some(&dc));
+    let (ev_e, _) = ctx.residual(&moved, lambda + eps).ok_or_else(degenerate)?;
+    // −(∂r/∂λ) Δλ
+    let rhs: Vec<f64> = ev_e.r.iter().zip(&ev.r).map(|(a, b)| -(a - b) / eps * dl).collect();
+    let sol = ctx
+        .solve(&ev.values, std::slice::from_ref(&rhs))
+        .map_err(|reason| StepFail {
+            residual: norm(&ev.r),
+            reason,
+        })?;
+    let dq = sol.x.into_iter().next().unwrap_or_default();
+    if dq.iter().any(|v| !v.is_finite()) {
+        return Err(degenerate());
+    }
+    let work = dot(&dq, &rhs).abs();
+    Ok((dq, work))
+}
+
 /// One load-controlled step from the converged state `st` at `lambda` to `target` (prescribed
-/// values scaled alike), judged: suspicious when a node rotates more than
-/// [`MAX_STEP_ROTATION`], the increment exceeds [`MAX_JUMP`] times its tangent predictor, or
-/// the iterations met an indefinite tangent between two stable states (`prev_stable`).
+/// values scaled alike), started as `predictor` says, judged: suspicious when a node rotates
+/// more than [`MAX_STEP_ROTATION`], the increment exceeds [`MAX_JUMP`] times its tangent
+/// predictor, or the iterations met an indefinite tangent between two stable states
+/// (`prev_stable`).
+#[allow(clippy::too_many_arguments)]
 pub(super) fn load_step(
     ctx: &CaseCtx,
     st: &mut State,
@@ -93,11 +141,21 @@ pub(super) fn load_step(
     opts: &NonlinearOptions,
     internal: f64,
     prev_stable: bool,
+    predictor: Predictor,
 ) -> Result<(NewtonOk, Judged), StepFail> {
     let saved = st.clone();
     let dc: Vec<f64> = ctx.u_c.iter().map(|v| v * (target - lambda)).collect();
-    ctx.apply(st, &vec![0.0; ctx.n_eq()], Some(&dc));
-    let nk = newton(ctx, st, target, opts, internal)?;
+    let nk = match predictor {
+        Predictor::Moved => {
+            ctx.apply(st, &vec![0.0; ctx.n_eq()], Some(&dc));
+            newton(ctx, st, target, opts, internal, None)?
+        }
+        Predictor::Linear => {
+            let (dq, work) = linear_predictor(ctx, st, lambda, target - lambda)?;
+            ctx.apply(st, &dq, Some(&dc));
+            newton(ctx, st, target, opts, internal, Some(Predicted { dq: &dq, work }))?
+        }
+    };
     let pd = match nk.positive_definite {
         Some(p) => p,
         None => ctx.positive_definite(st, target),
@@ -135,7 +193,8 @@ pub(super) fn max_rotation_change(a: &State, b: &State) -> f64 {
 /// its tangent predictor, or when an iteration met an indefinite tangent between two stable
 /// states (a jump over an unstable stretch); halved for the next step after a slow one (≥ 12
 /// iterations), doubled back after a fast one (≤ 4). Every converged point is checked for
-/// stability (positive definite symmetric tangent). Returns (iterations, steps, cuts, λ).
+/// stability (positive definite symmetric tangent). Each step starts as `predictor` says.
+/// Returns (iterations, steps, cuts, λ).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn load_control(
     ctx: &CaseCtx,
@@ -147,6 +206,7 @@ pub(super) fn load_control(
     path: &mut Vec<PathPoint>,
     step0: usize,
     stab: &mut Stability,
+    predictor: Predictor,
 ) -> Result<(usize, usize, usize, f64), FemError> {
     let [lambda0, end] = span;
     let sense = if end < lambda0 { -1.0 } else { 1.0 };
@@ -167,13 +227,15 @@ pub(super) fn load_control(
         };
         let saved = st.clone();
         let outcome =
-            load_step(ctx, st, lambda, target, opts, internal, prev_stable).and_then(|(nk, judged)| match judged {
-                Judged::Suspicious(why) if dl > dl_jump * (1.0 + 1e-9) => Err(StepFail {
-                    residual: nk.residuals.last().copied().unwrap_or(f64::NAN),
-                    reason: format!("step too large: {why}"),
-                }),
-                Judged::Suspicious(_) => Ok((nk, false)),
-                Judged::Fine(pd) => Ok((nk, pd)),
+            load_step(ctx, st, lambda, target, opts, internal, prev_stable, predictor).and_then(|(nk, judged)| {
+                match judged {
+                    Judged::Suspicious(why) if dl > dl_jump * (1.0 + 1e-9) => Err(StepFail {
+                        residual: nk.residuals.last().copied().unwrap_or(f64::NAN),
+                        reason: format!("step too large: {why}"),
+                    }),
+                    Judged::Suspicious(_) => Ok((nk, false)),
+                    Judged::Fine(pd) => Ok((nk, pd)),
+                }
             });
         match outcome {
             Ok((nk, stable)) => {

@@ -4,10 +4,12 @@
 //!
 //! Linear runs: the utilisation is proportional to s, so s = 1 / u(1) exactly.
 //!
-//! Nonlinear runs: u(s) along the equilibrium path is found by independent nonlinear solves of
-//! the load case scaled by s (elastic, path-independent: each from the unloaded state, in a
-//! quarter of the case's nominal load steps — all of them if that fails — every accepted state
-//! checked for equilibrium by the solver, a path that loses stability first an error). The
+//! Nonlinear runs: u(s) along the equilibrium path is found by nonlinear solves of the load
+//! case scaled by s, each continuing the path ([`crate::fem::nonlinear::continuation`]) from
+//! the nearest converged stable state — the run's own final state at s = 1, then the earlier
+//! solves — in one load step from the linearised tangent predictor (cut as the solver judges;
+//! in steps of the case's nominal size s/steps if that fails), every accepted state checked for
+//! equilibrium and stability by the solver, a path that loses stability first an error. The
 //! search starts from the run's own point u(1) and takes for s₁ the root of the parabola
 //! through u(0) = 0 with the linear utilisation as its slope and through u(1); then steps to
 //! the root of the parabola through the origin and the last two points (a secant step that
