@@ -156,3 +156,65 @@ fn nonlinear_stroke_at_allowable_converges_with_hinge_segments() {
     assert!((s4 / s16 - 1.0).abs() < 2e-4, "4 segments {s4} mm vs 16 {s16} mm");
     assert!((s8 / s16 - 1.0).abs() < 1e-4, "8 segments {s8} mm vs 16 {s16} mm");
 }
+
+/// A continuation of the parallelogram's 1 mm stroke case from the run's final state to the
+/// stroke at the allowable (2.7874 mm) reaches the state of a solve from the unloaded state in
+/// 20 steps: node 8's reaction and every displacement agree to 1e-8 relative (measured: the
+/// two states differ by the Newton tolerance, ~1e-10). From the linearised tangent predictor
+/// the 1.79 mm move is one step of at most 4 Newton corrections (measured 3; from the state
+/// with only the prescribed DOF moved the same step needs a cut and 10 corrections).
+#[test]
+fn continuation_from_the_run_matches_a_solve_from_zero_in_one_step() {
+    use flexfem::fem::nonlinear::{continuation::Continuation, probe::Elements};
+    use flexfem::gradient::nonlinear::ParamCase;
+    let pc = ParamCase::new(parallelogram(true, json!([stroke_case("x1", 1.0)]), json!([])), None).unwrap();
+    let opts = flexfem::fem::NonlinearOptions {
+        locate_critical: false,
+        ..Default::default()
+    };
+    let s = 2.7874;
+    let (built, at_one) = pc.solve(&[], 0, 1.0, &opts).unwrap();
+    let (_, direct) = pc.solve(&[], 0, s, &opts).unwrap();
+    let elems = Elements::new(&built.model).unwrap();
+    let mut path = Continuation::new(&built.model, &elems, 0, &opts).unwrap();
+    path.add_state(&at_one.fe, 1.0);
+    let c = path.solve_at(s, None).unwrap();
+    assert!(c.stable, "{:?}", c.critical_load_factor);
+    assert_eq!((c.steps, c.cuts), (1, 0), "steps, cuts");
+    assert!(c.iterations <= 4, "{} Newton corrections", c.iterations);
+    let (a, b) = (&c.fe.displacements, &direct.fe.displacements);
+    assert_eq!(a.len(), b.len());
+    let scale = b.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+    // zip-checked: lengths asserted above.
+    let diff = a
+        .iter()
+        .zip(b)
+        .flat_map(|(p, q)| p.iter().zip(q).map(|(x, y)| (x - y).abs()))
+        .fold(0.0f64, f64::max);
+    assert!(
+        diff <= 1e-8 * scale,
+        "largest displacement difference {diff:e} of {scale}"
+    );
+    let reaction = |r: &flexfem::fem::CaseResult| {
+        r.reactions
+            .iter()
+            .find(|(n, _)| *n == 8)
+            .map(|(_, f)| f[0])
+            .expect("node 8 is prescribed")
+    };
+    let (ra, rb) = (reaction(&c.fe), reaction(&direct.fe));
+    assert!((ra / rb - 1.0).abs() < 1e-8, "reaction {ra} vs {rb} N");
+
+    // The metric's search: two continuation solves (1 → s₁ from the parabola through the
+    // linear slope and the run's point, then the through-origin secant), and a note saying so.
+    let out = run(parallelogram(
+        true,
+        json!([stroke_case("x1", 1.0)]),
+        json!([{"name": "s", "kind": "stroke_at_allowable", "node": 8, "dof": "ux", "load_case": "x1"}]),
+    ));
+    let m = &out["metrics"]["s"];
+    assert!(num(&m["solves"]) <= 3.0, "{m}");
+    assert!((num(&m["stroke"]) / 2.78741 - 1.0).abs() < 2e-6, "{m}");
+    let notes = out["model"].to_string();
+    assert!(notes.contains("continues the equilibrium path"), "{notes}");
+}

@@ -322,8 +322,10 @@ impl Analysis for Static {
                 steps,
                 hinges: &hinges,
                 case_index: &case_index,
+                raw: &raw,
             });
         r.metrics = fem_static::metrics::evaluate_in(&model, &case.model, &case.metrics, &r, run)?;
+        r.model.extend(fem_static::metrics::notes(&case.metrics, run.is_some()));
         if case.gradients {
             let written = case.written.clone().ok_or_else(|| {
                 CaseError::new(

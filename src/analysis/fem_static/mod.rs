@@ -126,8 +126,19 @@ pub fn solve_nonlinear_each(
     opts: &[fem::NonlinearOptions],
     track: Option<&crate::case::mesh::TrackRequest>,
 ) -> Result<(StaticResult, fem::StaticResults, Paths), AnalysisError> {
-    let steps = opts.first().map_or(0, |o| o.steps);
     let res = fem::solve_nonlinear_each(model, opts).map_err(|e| AnalysisError::new("model", e.to_string()))?;
+    Ok(nonlinear_result(model, res, opts, track))
+}
+
+/// The result of the nonlinear solves `res` of `model`'s load cases with `opts` (as
+/// [`solve_nonlinear_each`] returns it).
+pub fn nonlinear_result(
+    model: &Model,
+    res: fem::NonlinearResults,
+    opts: &[fem::NonlinearOptions],
+    track: Option<&crate::case::mesh::TrackRequest>,
+) -> (StaticResult, fem::StaticResults, Paths) {
+    let steps = opts.first().map_or(0, |o| o.steps);
     let rows = res
         .load_cases
         .iter()
@@ -172,7 +183,7 @@ pub fn solve_nonlinear_each(
         metrics: Default::default(),
         gradients: None,
     };
-    Ok((result, raw, paths))
+    (result, raw, paths)
 }
 
 /// A warning when shells sharing an edge have opposite normals (their top/bottom stresses mix

@@ -16,7 +16,7 @@
 //! within [min, max]). The path ends where λ first reaches 1: the last piece is load controlled.
 
 use super::convergence::{Convergence, Iterate, Verdict};
-use super::path::{load_control, max_rotation_change, one_step, Stability, MAX_STEP_ROTATION};
+use super::path::{load_control, max_rotation_change, one_step, Predictor, Stability, MAX_STEP_ROTATION};
 use super::residual::{dot, norm};
 use super::state::{fail, CaseCtx, State};
 use super::{ArcLength, NonlinearOptions, PathPoint};
@@ -128,7 +128,18 @@ pub(super) fn arc_length(
             Ok(s) if lambda + s.dlam >= 1.0 => {
                 // λ = 1 lies on this step: reach it by load control from the last point.
                 *st = saved;
-                let (it, n, c, l) = load_control(ctx, st, lambda, &one_step(opts), name, path, steps, stab)?;
+                let (it, n, c, l) = load_control(
+                    ctx,
+                    st,
+                    [lambda, 1.0],
+                    1.0,
+                    &one_step(opts),
+                    name,
+                    path,
+                    steps,
+                    stab,
+                    Predictor::Moved,
+                )?;
                 return Ok((iterations + s.iterations + it, steps + n, cuts + c, l));
             }
             Ok(s) => {

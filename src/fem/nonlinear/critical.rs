@@ -17,7 +17,7 @@
 //! points", IJNME 30 (1990) 155–176): a limit (turning) point where the mode works on the load,
 //! a bifurcation where it is orthogonal to it (below [`BIFURCATION_WORK`]).
 
-use super::path::{load_step, Change, Judged};
+use super::path::{load_step, Change, Judged, Predictor};
 use super::residual::{dot, norm};
 use super::state::{CaseCtx, State};
 use super::NonlinearOptions;
@@ -124,7 +124,16 @@ pub(super) fn locate(ctx: &CaseCtx, c: &Change, opts: &NonlinearOptions, track: 
             t = 0.5 * h;
         }
         let mut trial = base.clone();
-        let res = load_step(ctx, &mut trial, lb, lb + sense * t, opts, internal, true);
+        let res = load_step(
+            ctx,
+            &mut trial,
+            lb,
+            lb + sense * t,
+            opts,
+            internal,
+            true,
+            Predictor::Moved,
+        );
         let same = match res {
             Ok((nk, Judged::Fine(true))) if continuous(&trial) => Some(nk.internal),
             _ => None,

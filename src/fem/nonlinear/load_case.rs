@@ -4,7 +4,7 @@
 
 use super::arc::arc_length;
 use super::critical::locate;
-use super::path::{load_control, Stability};
+use super::path::{load_control, Predictor, Stability};
 use super::recover::finish;
 use super::residual::for_each_pair_in;
 use super::state::{CaseCtx, ElemData, State};
@@ -50,7 +50,18 @@ pub(super) fn solve_case(
         }
         arc_length(&ctx, &mut st, opts, &case.name, &mut path, &mut stab)?
     } else {
-        load_control(&ctx, &mut st, 0.0, opts, &case.name, &mut path, 0, &mut stab)?
+        load_control(
+            &ctx,
+            &mut st,
+            [0.0, 1.0],
+            1.0 / opts.steps as f64,
+            opts,
+            &case.name,
+            &mut path,
+            0,
+            &mut stab,
+            Predictor::Moved,
+        )?
     };
     let mut out = finish(&ctx, &st, &case.name, lambda, path, iterations, steps, cuts)?;
     out.stable = stab.bracket.is_none();

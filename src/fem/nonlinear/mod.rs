@@ -56,6 +56,7 @@ use crate::fem::results::CaseResult;
 use crate::fem::solve::Parallelism;
 
 mod arc;
+pub mod continuation;
 mod convergence;
 mod critical;
 mod dynamic;

@@ -30,14 +30,25 @@ pub(super) struct NewtonOk {
     pub(super) internal: f64,
 }
 
+/// A predictor the iterations start from: the equation increment already applied to the state
+/// and its work on the linearised residual of the step (the reference of the energy test, as
+/// the first correction's is without a predictor).
+pub(super) struct Predicted<'a> {
+    pub(super) dq: &'a [f64],
+    pub(super) work: f64,
+}
+
 /// Newton iterations at fixed λ from the current state.
 /// `converged_internal`: ‖f_int‖ (reactions included) of the last converged state.
+/// `predicted`: the predictor the state was moved by; then [`NewtonOk::first`] is its norm and
+/// [`NewtonOk::total`] that of the predictor plus the corrections.
 pub(super) fn newton(
     ctx: &CaseCtx,
     st: &mut State,
     lambda: f64,
     opts: &NonlinearOptions,
     converged_internal: f64,
+    predicted: Option<Predicted<'_>>,
 ) -> Result<NewtonOk, StepFail> {
     let mut test = Convergence::new(
         opts.tol_residual,
@@ -47,12 +58,17 @@ pub(super) fn newton(
         converged_internal,
     );
     let mut last_dq: Option<Vec<f64>> = None;
-    let mut acc = vec![0.0; ctx.n_eq()];
+    let mut acc = predicted
+        .as_ref()
+        .map_or_else(|| vec![0.0; ctx.n_eq()], |p| p.dq.to_vec());
+    if let Some(p) = &predicted {
+        test.first_correction(p.work);
+    }
     let mut out = NewtonOk {
         iterations: 0,
         positive_definite: None,
         met_indefinite: false,
-        first: 0.0,
+        first: predicted.as_ref().map_or(0.0, |p| norm(p.dq)),
         total: 0.0,
         residuals: Vec::new(),
         internal: 0.0,
@@ -111,7 +127,7 @@ pub(super) fn newton(
                 reason: "non-finite correction".into(),
             });
         }
-        if it == 0 {
+        if it == 0 && predicted.is_none() {
             test.first_correction(dot(&dq, &ev.r).abs());
             out.first = norm(&dq);
         }

@@ -1,7 +1,8 @@
 //! Path control: load (and prescribed-displacement) stepping with adaptive step size, and the
 //! stability of the converged points (arc length: [`super::arc`]).
 
-use super::newton::{newton, NewtonOk, StepFail};
+use super::newton::{newton, NewtonOk, Predicted, StepFail};
+use super::residual::{dot, norm};
 use super::state::{fail, Assemble, CaseCtx, State};
 use super::{NonlinearOptions, PathPoint};
 use crate::fem::corot;
@@ -81,10 +82,57 @@ pub(super) enum Judged {
     Suspicious(String),
 }
 
+/// How a load step starts its Newton iterations.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Predictor {
+    /// From the converged state with the prescribed DOFs moved: the first Newton correction is
+    /// the tangent predictor (with the residual of that state, nonlinear in the prescribed
+    /// move: the elements next to a prescribed DOF take all of it).
+    Moved,
+    /// From the linearised tangent predictor Δq = −K_T⁻¹ (∂r/∂λ) Δλ at the converged state
+    /// (∂r/∂λ by a one-sided difference of 10⁻⁵ Δλ): exact to first order in Δλ however
+    /// large the prescribed move, for long steps along a smooth path.
+    Linear,
+}
+
+/// Relative load-factor difference of the linearised predictor's ∂r/∂λ.
+const PREDICTOR_DIFFERENCE: f64 = 1e-5;
+
+/// The linearised predictor of a step from the converged state `st` at `lambda` by `dl`: the
+/// equation increment Δq = −K_T⁻¹ (∂r/∂λ) Δλ and its work |Δq·(∂r/∂λ) Δλ|.
+fn linear_predictor(ctx: &CaseCtx, st: &State, lambda: f64, dl: f64) -> Result<(Vec<f64>, f64), StepFail> {
+    let degenerate = || StepFail {
+        residual: f64::NAN,
+        reason: "degenerate element or non-finite internal force at the predictor".into(),
+    };
+    let ev = ctx.evaluate(st, lambda, ctx.newton_tangent()).ok_or_else(degenerate)?;
+    let eps = PREDICTOR_DIFFERENCE * dl;
+    let mut moved = st.clone();
+    let dc: Vec<f64> = ctx.u_c.iter().map(|v| v * eps).collect();
+    ctx.apply(&mut moved, &vec![0.0; ctx.n_eq()], Some(&dc));
+    let (ev_e, _) = ctx.residual(&moved, lambda + eps).ok_or_else(degenerate)?;
+    // −(∂r/∂λ) Δλ
+    let rhs: Vec<f64> = ev_e.r.iter().zip(&ev.r).map(|(a, b)| -(a - b) / eps * dl).collect();
+    let sol = ctx
+        .solve(&ev.values, std::slice::from_ref(&rhs))
+        .map_err(|reason| StepFail {
+            residual: norm(&ev.r),
+            reason,
+        })?;
+    let dq = sol.x.into_iter().next().unwrap_or_default();
+    if dq.iter().any(|v| !v.is_finite()) {
+        return Err(degenerate());
+    }
+    let work = dot(&dq, &rhs).abs();
+    Ok((dq, work))
+}
+
 /// One load-controlled step from the converged state `st` at `lambda` to `target` (prescribed
-/// values scaled alike), judged: suspicious when a node rotates more than
-/// [`MAX_STEP_ROTATION`], the increment exceeds [`MAX_JUMP`] times its tangent predictor, or
-/// the iterations met an indefinite tangent between two stable states (`prev_stable`).
+/// values scaled alike), started as `predictor` says, judged: suspicious when a node rotates
+/// more than [`MAX_STEP_ROTATION`], the increment exceeds [`MAX_JUMP`] times its tangent
+/// predictor, or the iterations met an indefinite tangent between two stable states
+/// (`prev_stable`).
+#[allow(clippy::too_many_arguments)]
 pub(super) fn load_step(
     ctx: &CaseCtx,
     st: &mut State,
@@ -93,11 +141,21 @@ pub(super) fn load_step(
     opts: &NonlinearOptions,
     internal: f64,
     prev_stable: bool,
+    predictor: Predictor,
 ) -> Result<(NewtonOk, Judged), StepFail> {
     let saved = st.clone();
     let dc: Vec<f64> = ctx.u_c.iter().map(|v| v * (target - lambda)).collect();
-    ctx.apply(st, &vec![0.0; ctx.n_eq()], Some(&dc));
-    let nk = newton(ctx, st, target, opts, internal)?;
+    let nk = match predictor {
+        Predictor::Moved => {
+            ctx.apply(st, &vec![0.0; ctx.n_eq()], Some(&dc));
+            newton(ctx, st, target, opts, internal, None)?
+        }
+        Predictor::Linear => {
+            let (dq, work) = linear_predictor(ctx, st, lambda, target - lambda)?;
+            ctx.apply(st, &dq, Some(&dc));
+            newton(ctx, st, target, opts, internal, Some(Predicted { dq: &dq, work }))?
+        }
+    };
     let pd = match nk.positive_definite {
         Some(p) => p,
         None => ctx.positive_definite(st, target),
@@ -128,25 +186,30 @@ pub(super) fn max_rotation_change(a: &State, b: &State) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// Load (and prescribed-displacement) control from `lambda0` to 1. The load step starts at
-/// 1/steps (its largest value) and adapts: halved when Newton fails, when the converged
+/// Load (and prescribed-displacement) control from `span[0]` to `span[1]` (either way: a
+/// continuation may step back along the path). The load step starts at `dl0` (its largest
+/// value; 1/steps for a solve from the unloaded state) and adapts: halved when Newton fails, when the converged
 /// increment rotates a node by more than [`MAX_STEP_ROTATION`] or exceeds [`MAX_JUMP`] times
 /// its tangent predictor, or when an iteration met an indefinite tangent between two stable
 /// states (a jump over an unstable stretch); halved for the next step after a slow one (≥ 12
 /// iterations), doubled back after a fast one (≤ 4). Every converged point is checked for
-/// stability (positive definite symmetric tangent). Returns (iterations, steps, cuts, λ).
+/// stability (positive definite symmetric tangent). Each step starts as `predictor` says.
+/// Returns (iterations, steps, cuts, λ).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn load_control(
     ctx: &CaseCtx,
     st: &mut State,
-    lambda0: f64,
+    span: [f64; 2],
+    dl0: f64,
     opts: &NonlinearOptions,
     name: &str,
     path: &mut Vec<PathPoint>,
     step0: usize,
     stab: &mut Stability,
+    predictor: Predictor,
 ) -> Result<(usize, usize, usize, f64), FemError> {
-    let dl0 = 1.0 / opts.steps as f64;
+    let [lambda0, end] = span;
+    let sense = if end < lambda0 { -1.0 } else { 1.0 };
     let dl_jump = dl0 / f64::from(1u32 << JUMP_CUTS);
     let dl_min = dl0 * 0.5f64.powi(opts.max_cuts.min(60) as i32);
     // Steps allowed: the nominal count 10 times over (slow convergence halves the step).
@@ -156,24 +219,30 @@ pub(super) fn load_control(
     let mut prev_stable = path.last().is_none_or(|p| p.stable);
     let mut internal = ctx.evaluate(st, lambda0, Assemble::None).map_or(0.0, |ev| ev.internal);
     let (mut iterations, mut steps, mut cuts, mut cut_run) = (0, 0, 0, 0);
-    while lambda < 1.0 - 1e-12 {
-        let target = if lambda + dl > 1.0 - 1e-9 { 1.0 } else { lambda + dl };
+    while sense * (end - lambda) > 1e-12 {
+        let target = if sense * (end - lambda) < dl + 1e-9 {
+            end
+        } else {
+            lambda + sense * dl
+        };
         let saved = st.clone();
         let outcome =
-            load_step(ctx, st, lambda, target, opts, internal, prev_stable).and_then(|(nk, judged)| match judged {
-                Judged::Suspicious(why) if dl > dl_jump * (1.0 + 1e-9) => Err(StepFail {
-                    residual: nk.residuals.last().copied().unwrap_or(f64::NAN),
-                    reason: format!("step too large: {why}"),
-                }),
-                Judged::Suspicious(_) => Ok((nk, false)),
-                Judged::Fine(pd) => Ok((nk, pd)),
+            load_step(ctx, st, lambda, target, opts, internal, prev_stable, predictor).and_then(|(nk, judged)| {
+                match judged {
+                    Judged::Suspicious(why) if dl > dl_jump * (1.0 + 1e-9) => Err(StepFail {
+                        residual: nk.residuals.last().copied().unwrap_or(f64::NAN),
+                        reason: format!("step too large: {why}"),
+                    }),
+                    Judged::Suspicious(_) => Ok((nk, false)),
+                    Judged::Fine(pd) => Ok((nk, pd)),
+                }
             });
         match outcome {
             Ok((nk, stable)) => {
                 iterations += nk.iterations;
                 steps += 1;
                 internal = nk.internal;
-                stab.record(&saved, st, lambda, target, stable, 1.0, None);
+                stab.record(&saved, st, lambda, target, stable, sense, None);
                 lambda = target;
                 cut_run = 0;
                 prev_stable = stable;
@@ -190,7 +259,7 @@ pub(super) fn load_control(
                         step0 + steps,
                         lambda,
                         path.last().and_then(|p| p.residuals.last()).copied().unwrap_or(f64::NAN),
-                        format!("{steps} load steps and {cuts} step cuts (Δλ = {dl:.3e}) without reaching λ = 1: Newton converges too slowly"),
+                        format!("{steps} load steps and {cuts} step cuts (Δλ = {dl:.3e}) without reaching λ = {end}: Newton converges too slowly"),
                     ));
                 }
             }

@@ -24,7 +24,7 @@ use nalgebra::{Matrix3, Vector3};
 /// The element data of a model for the nonlinear solver (co-rotational geometry and local
 /// stiffness of each beam and flexibility element, springs).
 #[derive(Debug, Clone)]
-pub struct Elements(Vec<ElemData>);
+pub struct Elements(pub(super) Vec<ElemData>);
 
 impl Elements {
     /// The element data of `model` (fails for shells and superelement pieces).

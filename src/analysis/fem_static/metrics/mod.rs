@@ -92,6 +92,8 @@ pub struct NonlinearRun<'a> {
     pub hinges: &'a [BuiltHinge],
     /// The model element of each case element.
     pub case_index: &'a [Option<usize>],
+    /// The run's final state of each load case (the searches continue from it).
+    pub raw: &'a fem::StaticResults,
 }
 
 /// Evaluates `reqs` (validated when the case was parsed, against `spec`) on the linear result
@@ -212,6 +214,18 @@ pub fn evaluate_in(
         out.push((m.key().into_owned(), value));
     }
     Ok(Metrics(out))
+}
+
+/// The `model` notes of the metrics `reqs` of a linear or (`nonlinear`) nonlinear run: how a
+/// nonlinear `stroke_at_allowable` was found.
+pub fn notes(reqs: &[MetricRequest], nonlinear: bool) -> Vec<String> {
+    let stroke = reqs.iter().any(|m| m.kind == MetricKind::StrokeAtAllowable);
+    if !(stroke && nonlinear) {
+        return Vec::new();
+    }
+    vec![format!(
+        "stroke_at_allowable: the load case scaled by s until the largest utilisation is 1 (|U - 1| <= {STROKE_TOL:e}), by a bracketed secant search on s from the linear estimate and the run's own point; each nonlinear solve continues the equilibrium path from the nearest converged stable state (the run's final state, then earlier solves) by load control in one step, cut as any step is, every state checked for equilibrium and stability"
+    )]
 }
 
 /// `e` under the metric's path.

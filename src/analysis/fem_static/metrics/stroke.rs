@@ -4,10 +4,12 @@
 //!
 //! Linear runs: the utilisation is proportional to s, so s = 1 / u(1) exactly.
 //!
-//! Nonlinear runs: u(s) along the equilibrium path is found by independent nonlinear solves of
-//! the load case scaled by s (elastic, path-independent: each from the unloaded state, in a
-//! quarter of the case's nominal load steps — all of them if that fails — every accepted state
-//! checked for equilibrium by the solver, a path that loses stability first an error). The
+//! Nonlinear runs: u(s) along the equilibrium path is found by nonlinear solves of the load
+//! case scaled by s, each continuing the path ([`crate::fem::nonlinear::continuation`]) from
+//! the nearest converged stable state — the run's own final state at s = 1, then the earlier
+//! solves — in one load step from the linearised tangent predictor (cut as the solver judges;
+//! in steps of the case's nominal size s/steps if that fails), every accepted state checked for
+//! equilibrium and stability by the solver, a path that loses stability first an error. The
 //! search starts from the run's own point u(1) and takes for s₁ the root of the parabola
 //! through u(0) = 0 with the linear utilisation as its slope and through u(1); then steps to
 //! the root of the parabola through the origin and the last two points (a secant step that
@@ -17,18 +19,17 @@
 //! off its ends). It stops when |u − 1| ≤ [`STROKE_TOL`] or two successive scales agree to it
 //! (relative).
 
-use super::super::{add_headlines, add_hinges, solve_nonlinear_each, solve_with, StaticCaseRow};
+use super::super::{add_headlines, add_hinges, nonlinear_result, solve_with, StaticCaseRow};
 use super::{NonlinearRun, StrokeAtAllowable};
 use crate::analysis::AnalysisError;
 use crate::case::mesh::{path_control, MeshSpec};
+use crate::fem::nonlinear::continuation::Continuation;
+use crate::fem::nonlinear::probe::Elements;
 use crate::fem::{self, Dof, Model};
 
 /// Relative tolerance of the nonlinear search: on the scale between successive iterates, or
 /// on the utilisation.
 pub const STROKE_TOL: f64 = 1e-7;
-
-/// The probes' nominal load steps are the case's divided by this.
-const PROBE_STEP_DIVISOR: usize = 4;
 
 /// Nonlinear solves a search may take before it fails.
 const MAX_SOLVES: usize = 40;
@@ -155,17 +156,6 @@ fn single_case(model: &Model, d: &Drive) -> Model {
     }
 }
 
-/// Sets load case 0 of `m` to `base` scaled by `s` (forces and prescribed displacements).
-fn scale_into(m: &mut Model, base: &fem::model::LoadCase, s: f64) {
-    let lc = &mut m.load_cases[0];
-    for (f, b) in lc.forces.iter_mut().zip(&base.forces) {
-        f.f = b.f.map(|v| v * s);
-    }
-    for (p, b) in lc.displacements.iter_mut().zip(&base.displacements) {
-        p.value = b.value * s;
-    }
-}
-
 /// Nonlinear runs: the search of the module documentation, from `c`, the run's own row of the
 /// load case (its point at scale 1). `None` when the linear run stresses nothing with an
 /// allowable stress.
@@ -179,8 +169,7 @@ pub fn nonlinear(
     let name = model.load_cases[d.ic].name.clone();
     let ctx = |s: f64| format!("load case \"{name}\" scaled by {s:.9e}");
     let missing = || AnalysisError::new(name.clone(), "the driven node has no result");
-    let mut m = single_case(model, d);
-    let base = model.load_cases[d.ic].clone();
+    let m = single_case(model, d);
     let (pres, force) = (prescribed(model, d), base_force(model, d));
     let one = Drive { ic: 0, ..*d };
 
@@ -194,24 +183,32 @@ pub fn nonlinear(
     let linear_estimate = p_lin.stroke / p_lin.u;
 
     let spec_lc = spec.load_cases.iter().find(|c| c.name == name).ok_or_else(missing)?;
-    let full = fem::NonlinearOptions {
+    let opts = fem::NonlinearOptions {
         locate_critical: false,
         track: Vec::new(),
+        step_track: Default::default(),
         ..path_control::options(spec_lc, run.steps)
     };
-    // The equilibrium at the end of an elastic path does not depend on the steps taken to it:
-    // a quarter of the case's steps, and all of them if that fails.
-    let quick = fem::NonlinearOptions {
-        steps: (run.steps / PROBE_STEP_DIVISOR).max(1),
-        ..full.clone()
-    };
+    let fem_err = |s: f64, e: fem::FemError| AnalysisError::new(ctx(s), e.to_string());
+    let elems = Elements::new(&m).map_err(|e| fem_err(1.0, e))?;
+    let mut path = Continuation::new(&m, &elems, 0, &opts).map_err(|e| fem_err(1.0, e))?;
+    // The run's final state is on the stable path: the nearest start for scales near 1.
+    if c.stable != Some(false) {
+        if let Some(state) = run.raw.load_cases.get(d.ic) {
+            path.add_state(state, 1.0);
+        }
+    }
     let mut solves = 0;
     let mut probe = |s: f64| -> Result<Point, AnalysisError> {
         solves += 1;
-        scale_into(&mut m, &base, s);
-        let (mut r, raw, _) = solve_nonlinear_each(&m, std::slice::from_ref(&quick), None)
-            .or_else(|_| solve_nonlinear_each(&m, std::slice::from_ref(&full), None))
-            .map_err(|e| AnalysisError::new(ctx(s), format!("{}: {}", e.context, e.message)))?;
+        // One step from the nearest converged state (cut as the solver judges); the nominal
+        // step of the case, s / steps, if that fails.
+        let nl = path
+            .solve_at(s, None)
+            .or_else(|_| path.solve_at(s, Some(s.abs() / run.steps.max(1) as f64)))
+            .map_err(|e| fem_err(s, e))?;
+        let res = fem::NonlinearResults { load_cases: vec![nl] };
+        let (mut r, raw, _) = nonlinear_result(&m, res, std::slice::from_ref(&opts), None);
         add_hinges(&mut r, &m, &raw, run.hinges, true)?;
         add_headlines(&mut r, &m, run.case_index, run.hinges);
         let c = &r.load_cases[0];
@@ -221,6 +218,8 @@ pub fn nonlinear(
                 "the equilibrium path lost stability before the largest utilisation reached 1 (buckling or snap-through): the stroke at the allowable is not on a stable path",
             ));
         }
+        // The scale the solve reached is the scale asked for (load control ends there); the
+        // load of a force-driven case scales with it.
         point(c, &one, s, pres, force)
             .filter(|p| p.u.is_finite())
             .ok_or_else(|| AnalysisError::new(ctx(s), "no utilisation along the path"))
