@@ -29,6 +29,7 @@
 //! N/mm per mm of `t`: N/mm²; a frequency in Hz per unit).
 
 pub mod frequency;
+mod hinges;
 pub mod linear;
 pub mod nonlinear;
 mod point;
