@@ -6,8 +6,9 @@
 //! matrices, the rigid-link transform Aᵀ K A (node coordinates move the links' arms) and loads
 //! that depend on the parameters. Each is differenced at element level with the sixth-order
 //! central stencil [−1, 9, −45, 45, −9, 1]/(60 h) over models moved along the exact tangent of the case's
-//! numbers (expressions differentiated analytically): no solve is differenced. Frequencies by
-//! [`super::frequency`].
+//! numbers (expressions differentiated analytically): no solve is differenced. Hinge elements
+//! are the exception: their compliance part of dK/dp is analytic ([`super::hinges`]), only their
+//! geometry is differenced. Frequencies by [`super::frequency`].
 
 use super::frequency;
 use super::hinges;
