@@ -86,6 +86,8 @@ pub(super) fn compliance_derivatives(
     hinges: &[(usize, Vec<usize>)],
 ) -> Vec<(usize, [[f64; 6]; 6])> {
     let mut out = Vec::new();
+    // Identical hinges moving identically (a mechanism's repeated hinge type) share one result.
+    let mut done: Vec<(usize, Tangent, Vec<[[f64; 6]; 6]>)> = Vec::new();
     let Some(&(step, _, ahead)) = points
         .iter()
         .filter(|(s, ..)| *s > 0.0)
@@ -125,12 +127,30 @@ pub(super) fn compliance_derivatives(
         if tangent.is_zero() {
             continue;
         }
-        let torsion: f64 = points
-            .iter()
-            .map(|(_, w, pt)| w * pt.hinges[*k].region.stiffness.compliance[3][3])
-            .sum();
-        let dc = region_compliance_derivatives(p0, &h0.material, &h0.region.stiffness, &tangent, torsion, h0.segments);
-        out.extend(els.iter().copied().zip(dc));
+        let same = |(j, t, _): &&(usize, Tangent, Vec<[[f64; 6]; 6]>)| {
+            let g = &base.hinges[*j];
+            *t == tangent && g.region == h0.region && g.material == h0.material && g.segments == h0.segments
+        };
+        let dc = match done.iter().find(same) {
+            Some((.., dc)) => dc.clone(),
+            None => {
+                let torsion: f64 = points
+                    .iter()
+                    .map(|(_, w, pt)| w * pt.hinges[*k].region.stiffness.compliance[3][3])
+                    .sum();
+                let dc = region_compliance_derivatives(
+                    p0,
+                    &h0.material,
+                    &h0.region.stiffness,
+                    &tangent,
+                    torsion,
+                    h0.segments,
+                );
+                done.push((*k, tangent, dc.clone()));
+                dc
+            }
+        };
+        out.extend(els.iter().copied().zip(dc)); // zip-checked: one derivative per segment
     }
     out
 }

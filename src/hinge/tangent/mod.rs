@@ -208,11 +208,15 @@ pub fn region_compliance_derivatives(
     let q = Quadrature::default();
     let half = p.half_length();
     let neck = matches!(profile.contour, Contour::SphericalNeck { .. });
-    let whole = integrate::flex_integrals(&p, &m, -half, half, q).compliance();
-    let d_single33 = if neck { whole[3][3].d } else { torsion };
     let to_array = |c: &[[Dual; 6]; 6]| c.map(|row| row.map(|x| x.d));
-    if segments <= 1 {
-        let mut out = to_array(&whole);
+    // The whole region: the single element, or the neck's torsion compliance of a chain.
+    let whole = (segments <= 1 || neck).then(|| integrate::flex_integrals(&p, &m, -half, half, q).compliance());
+    let d_single33 = match &whole {
+        Some(c) if neck => c[3][3].d,
+        _ => torsion,
+    };
+    if let (Some(c), true) = (&whole, segments <= 1) {
+        let mut out = to_array(c);
         out[3][3] = d_single33;
         return vec![out];
     }
