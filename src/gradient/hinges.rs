@@ -75,6 +75,10 @@ pub(super) fn freeze(
     Ok(())
 }
 
+/// A hinge (index in `Point::hinges`), its tangent and its elements' dC/dp, for the hinges that
+/// repeat it.
+type Shared = (usize, Tangent, Vec<[[f64; 6]; 6]>);
+
 /// dC/dp of every hinge element of `base` (in the order of `hinges`' elements), from the points
 /// of the stencil: `points[i]` = (step s_i, weight w_i, point), Σ wᵢ f(sᵢ) ≈ df/dp. The
 /// dimensions and material move on a straight path (the case's numbers do), so their
@@ -87,7 +91,7 @@ pub(super) fn compliance_derivatives(
 ) -> Vec<(usize, [[f64; 6]; 6])> {
     let mut out = Vec::new();
     // Identical hinges moving identically (a mechanism's repeated hinge type) share one result.
-    let mut done: Vec<(usize, Tangent, Vec<[[f64; 6]; 6]>)> = Vec::new();
+    let mut done: Vec<Shared> = Vec::new();
     let Some(&(step, _, ahead)) = points
         .iter()
         .filter(|(s, ..)| *s > 0.0)
@@ -127,7 +131,7 @@ pub(super) fn compliance_derivatives(
         if tangent.is_zero() {
             continue;
         }
-        let same = |(j, t, _): &&(usize, Tangent, Vec<[[f64; 6]; 6]>)| {
+        let same = |(j, t, _): &&Shared| {
             let g = &base.hinges[*j];
             *t == tangent && g.region == h0.region && g.material == h0.material && g.segments == h0.segments
         };
