@@ -11,7 +11,7 @@
 use super::constraints::{DofMap, NONE};
 use super::error::FemError;
 use super::mass::{element_mass, point_mass, shell_mass_matrix};
-use super::model::{Element, Model};
+use super::model::{Element, ElementMatrix, Model};
 use super::solve::{SparseMatrix, SparsePattern};
 use rayon::prelude::*;
 
@@ -238,6 +238,20 @@ impl Pattern {
             chunks.into_par_iter().enumerate().try_for_each(fill)?;
         }
         Ok(vals)
+    }
+
+    /// The triplet values [`Pattern::values`] puts in element `ie`'s range
+    /// ([`Pattern::element_values`]) when the two-node element's global matrix is `em`, written
+    /// to `out` (that range's length). Linear in `em.k`: a derivative of the element matrix
+    /// scatters into the derivative of the values.
+    pub fn element_values_of(&self, map: &DofMap, em: &ElementMatrix, out: &mut [f64]) {
+        let (reps, k) = map.element_on_independent(em);
+        let eqs = map.element_eqs(reps, em.n_nodes);
+        let mut p = 0;
+        for_each_pair(&eqs, 6 * em.n_nodes, |a, b, _, _| {
+            out[p] = k[(a, b)];
+            p += 1;
+        });
     }
 
     /// Sums triplet values into the reduced stiffness matrix.

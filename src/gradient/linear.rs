@@ -6,10 +6,12 @@
 //! matrices, the rigid-link transform Aᵀ K A (node coordinates move the links' arms) and loads
 //! that depend on the parameters. Each is differenced at element level with the sixth-order
 //! central stencil [−1, 9, −45, 45, −9, 1]/(60 h) over models moved along the exact tangent of the case's
-//! numbers (expressions differentiated analytically): no solve is differenced. Frequencies by
-//! [`super::frequency`].
+//! numbers (expressions differentiated analytically): no solve is differenced. Hinge elements
+//! are the exception: their compliance part of dK/dp is analytic ([`super::hinges`]), only their
+//! geometry is differenced. Frequencies by [`super::frequency`].
 
 use super::frequency;
+use super::hinges;
 use super::point::Point;
 use super::{GradientError, Gradients, Target};
 use crate::analysis::RunError;
@@ -112,7 +114,7 @@ impl Linear {
         let modes = frequency::Modes::new(&base.model, free, &self.targets)?;
         modes.fill_values(&self.targets, &mut values0);
         let mut model = vec![format!(
-            "gradients: direct method on the factorised stiffness (one extra right-hand side per parameter and load case); dK/dp and df/dp of the reduced system (elements, rigid-link transforms, loads) by 6th-order central differences at element level, step {:e}·max(|p|, 1), along the exact tangent of the case's expressions",
+            "gradients: direct method on the factorised stiffness (one extra right-hand side per parameter and load case); dK/dp and df/dp of the reduced system (elements, rigid-link transforms, loads) by 6th-order central differences at element level, step {:e}·max(|p|, 1), along the exact tangent of the case's expressions, except the hinges: hinge compliance analytic (forward-mode derivative of the flexibility integrals with their piece limits and calibration factors, dK = −K dC K on each hinge element; the warping-restrained torsion compliance of rectangular notches from the same stencil of the moved models' Vlasov solves)",
             self.step
         )];
         let mut columns = Vec::with_capacity(names.len());
@@ -185,6 +187,7 @@ impl Linear {
         ];
         let mut drhs: Vec<Vec<f64>> = q.iter().map(|x| vec![0.0; x.len()]).collect();
         let mut dunit: Vec<Vec<f64>> = qu.iter().map(|x| vec![0.0; x.len()]).collect();
+        let hinge_elements = hinges::hinge_elements(base);
         let mut points = Vec::with_capacity(STENCIL.len());
         for (s, w) in STENCIL {
             let w = w / (STENCIL_DIVISOR * h);
@@ -195,7 +198,15 @@ impl Linear {
                 .map(|k| DofMap::new(&pt.model, k, None))
                 .collect::<Result<_, _>>()?;
             for (g, system) in sys.systems.iter().enumerate() {
-                let v = system.pattern().values(&pt.model, &maps[g])?;
+                let mut v = system.pattern().values(&pt.model, &maps[g])?;
+                hinges::freeze(
+                    system.pattern(),
+                    &maps[g],
+                    &base.model,
+                    &pt.model,
+                    &hinge_elements,
+                    &mut v,
+                )?;
                 dvals[g].iter_mut().zip(&v).for_each(|(d, x)| *d += w * x);
             }
             if !dmass.is_empty() {
@@ -215,6 +226,12 @@ impl Linear {
                 dunit[k].iter_mut().zip(&r).for_each(|(d, x)| *d += w * x);
             }
             points.push((s * h, w, pt, maps));
+        }
+        // The hinges' compliance part of dK, analytic (their geometry part was differenced above).
+        let stencil: Vec<(f64, f64, &Point)> = points.iter().map(|(s, w, pt, _)| (*s, *w, pt)).collect();
+        let dc = hinges::compliance_derivatives(base, &stencil, &hinge_elements);
+        for (g, system) in sys.systems.iter().enumerate() {
+            hinges::add_analytic(system.pattern(), system.dof_map(), &base.model, &dc, &mut dvals[g])?;
         }
         let dk: Vec<fem::solve::SparseMatrix> = sys
             .systems

@@ -16,10 +16,13 @@
 //!
 //! What is exact and what is differenced: the expressions of the case are differentiated
 //! analytically ([`crate::case::params::expr::Expr::eval_tangent`]), and the model is moved
-//! along the exact tangent of its numbers; the reduced stiffness, mass and loads (element
-//! matrices — beams, shells and the hinges' flexibility integrals with their calibration
-//! factors —, the rigid-link transforms that node coordinates move, loads) and the recovery of
-//! the metrics are differentiated by sixth-order central differences at element level (no
+//! along the exact tangent of its numbers. The hinge elements' compliance is differentiated
+//! analytically too ([`crate::hinge::tangent`]: forward mode through the flexibility integrals,
+//! their limits and calibration factors; dK = −K dC K on each element, `hinges`), except the
+//! warping-restrained torsion compliance of rectangular notches (a Vlasov finite-element solve).
+//! The rest of the reduced stiffness, mass and loads (beams, shells, the hinges' Vlasov torsion
+//! and geometry, the rigid-link transforms that node coordinates move, loads) and the recovery
+//! of the metrics are differentiated by sixth-order central differences at element level (no
 //! solve is differenced): exact to ≈ 1e-10 relative ([`linear::RELATIVE_STEP`]). The direct
 //! method is used rather than the adjoint one (one solve per metric) because its right-hand
 //! sides need no ∂m/∂q; a triangular solve costs little beside the factorisation and the
@@ -29,6 +32,7 @@
 //! N/mm per mm of `t`: N/mm²; a frequency in Hz per unit).
 
 pub mod frequency;
+mod hinges;
 pub mod linear;
 pub mod nonlinear;
 mod point;

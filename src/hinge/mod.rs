@@ -44,6 +44,7 @@ pub mod section;
 pub mod solid_effects;
 pub mod spec;
 pub mod stress;
+pub mod tangent;
 pub mod torsion;
 
 use nalgebra::Matrix6;

@@ -28,14 +28,14 @@ pub struct Section {
 }
 
 /// Σ_{n odd} n^{-5} = (1 − 2⁻⁵) ζ(5).
-const LAMBDA5: f64 = 1.004_523_762_795_139_8;
+pub(crate) const LAMBDA5: f64 = 1.004_523_762_795_139_8;
 /// Σ_{n odd} n^{-6} = (1 − 2⁻⁶) ζ(6) = π⁶/960.
 const LAMBDA6: f64 = 1.001_447_077_927_100_8;
 /// Σ_{n odd} n^{-7} = (1 − 2⁻⁷) ζ(7).
 const LAMBDA7: f64 = 1.000_471_548_559_921_2;
 
 /// 1/n⁵, 1/n⁶, 1/n⁷ for n = 1, 3, …, 13.
-const INV_N5: [f64; 7] = inv_odd_powers(5);
+pub(crate) const INV_N5: [f64; 7] = inv_odd_powers(5);
 const INV_N6: [f64; 7] = inv_odd_powers(6);
 const INV_N7: [f64; 7] = inv_odd_powers(7);
 
@@ -121,7 +121,7 @@ fn long_short(b: f64, c: f64) -> (f64, f64) {
 }
 
 /// 64/π⁵.
-const C_J: f64 = 64.0 / (PI * PI * PI * PI * PI);
+pub(crate) const C_J: f64 = 64.0 / (PI * PI * PI * PI * PI);
 /// 32/π⁶.
 const C_GAMMA: f64 = 32.0 / (PI * PI * PI * PI * PI * PI);
 /// 3/π.
@@ -213,7 +213,7 @@ pub fn rectangle(width: f64, thickness: f64, nu: f64) -> Section {
 
 /// J of a square of side h divided by Saint-Venant's estimate A⁴/(4π² I_p) = 6h⁴/(4π²)
 /// (computed once).
-fn square_j_ratio() -> f64 {
+pub(crate) fn square_j_ratio() -> f64 {
     static RATIO: std::sync::OnceLock<f64> = std::sync::OnceLock::new();
     *RATIO.get_or_init(|| rect_torsion_constant(1.0, 1.0) / (6.0 / (4.0 * PI * PI)))
 }

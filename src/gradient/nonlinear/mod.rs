@@ -22,6 +22,10 @@
 //!   lever and pan-tilt: ≤ 4e-8 of the largest logarithmic sensitivity; h = 1e-3 leaves 1e-6
 //!   of truncation for a 70 mm coordinate moving 1 mm notches, h = 1e-4 leaves 6e-8 of
 //!   round-off; a second-order difference would need h ~ 1e-5 and leave ~1e-6).
+//!   Hinge elements included: the analytic compliance derivative of
+//!   [`crate::hinge::tangent`] serves the linear direct method ([`super::linear`]) only; here
+//!   it would enter through the co-rotational element's local force Bᵀ C⁻¹ δ
+//!   (∂/∂p = −Bᵀ C⁻¹ (dC/dp) C⁻¹ δ), which the rebuilt-residual difference still covers.
 //! * A quantity Q(u, p) (displacements, stresses, tangent stiffness) changes by
 //!   dQ/dp = ∂Q/∂p + ∂Q/∂u·du*/dp, taken as one directional central difference along
 //!   (du*/dp, 1) at the same step (the quantity is evaluated on the rebuilt model at the moved
