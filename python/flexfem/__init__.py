@@ -23,7 +23,6 @@ core (or ``RAYON_NUM_THREADS``).
 
 from __future__ import annotations
 
-import json
 import os
 from typing import Any, Dict, Iterator, List, Optional, Union
 
@@ -181,7 +180,6 @@ class Sweep:
     def __init__(self, native: Any):
         self._native = native
         self._rows: List[Dict[str, Any]] = []
-        self._lines: List[str] = []
 
     def __len__(self) -> int:
         """Number of designs."""
@@ -190,11 +188,9 @@ class Sweep:
     def __iter__(self) -> Iterator[Dict[str, Any]]:
         yield from self._rows
         while True:
-            line = self._native.next_line()
-            if line is None:
+            row = self._native.next_row()
+            if row is None:
                 return
-            row = json.loads(line)
-            self._lines.append(line)
             self._rows.append(row)
             yield row
 
@@ -218,7 +214,7 @@ class Sweep:
         """The table ``flexfem sweep --csv`` writes: one row per design, the varied parameters
         and the scalar results (with units in the column names)."""
         self.rows()
-        return self._native.table_csv(self._lines)
+        return self._native.table_csv()
 
     def to_pandas(self):
         """The table of :meth:`to_csv` as a ``pandas.DataFrame`` (pandas is optional:

@@ -1,7 +1,7 @@
 //! `flexfem.sweep`: the designs of a sweep run on a thread of their own through the batch
 //! driver `flexfem sweep` uses ([`flexfem::design::sweep::run_sweep_formatted`], rayon workers,
-//! the typed route where it applies); the iterator hands out their lines in index order as they
-//! finish, waiting without the GIL.
+//! each line with the JSON value it was written from); the iterator hands out their rows in index
+//! order as they finish, waiting without the GIL, as Python objects built from those values.
 
 use crate::errors;
 use crate::input::CaseInput;
@@ -19,8 +19,9 @@ use std::sync::mpsc::{channel, Receiver};
 use std::sync::Mutex;
 use std::thread::JoinHandle;
 
-/// One finished design: its index, whether it is an error row, its JSON line.
-type Finished = (usize, bool, String);
+/// One finished design: its index, whether it is an error row, its JSON line and the value
+/// the line was written from (turned into Python objects without parsing the text again).
+type Finished = (usize, bool, String, Value);
 
 /// A running sweep (the native half of `flexfem.Sweep`).
 #[pyclass(module = "flexfem._flexfem")]
@@ -35,6 +36,8 @@ pub struct SweepRun {
     len: usize,
     /// Error rows handed out so far.
     failed: usize,
+    /// The lines handed out, in index order (for the table).
+    lines: Vec<String>,
     /// The varied paths (the table's first columns).
     axes: Vec<String>,
     /// The analysis of the base case (the table's units).
@@ -122,9 +125,12 @@ impl SweepRun {
                     Shard::ALL,
                     &HashSet::new(),
                     &format,
-                    false,
+                    // The workers hand over each line's value: the rows become Python objects
+                    // without a second parse of the text on the interpreter's thread.
+                    true,
                     |line| {
-                        tx.send((line.index, line.failed, line.text.to_string()))
+                        let value = line.value.cloned().unwrap_or(Value::Null);
+                        tx.send((line.index, line.failed, line.text.to_string(), value))
                             .map_err(|_| io::Error::other("the sweep's iterator was dropped"))
                     },
                 )
@@ -144,6 +150,7 @@ impl SweepRun {
             next: 0,
             len,
             failed: 0,
+            lines: Vec::with_capacity(len),
             axes,
             kind,
             worker: Some(worker),
@@ -167,8 +174,8 @@ impl SweepRun {
         self.axes.clone()
     }
 
-    /// The next design's JSON line (index order), `None` after the last.
-    fn next_line(&mut self, py: Python<'_>) -> PyResult<Option<String>> {
+    /// The next design's row (index order) as a dict, `None` after the last.
+    fn next_row(&mut self, py: Python<'_>) -> PyResult<Option<Py<PyAny>>> {
         if self.next >= self.len {
             self.join(py)?;
             return Ok(None);
@@ -189,17 +196,18 @@ impl SweepRun {
                 }
             }
         }
-        let (_, failed, line) = self.early.remove(&self.next).unwrap_or_default();
+        let (_, failed, line, value) = self.early.remove(&self.next).unwrap_or_default();
         self.next += 1;
         self.failed += usize::from(failed);
-        Ok(Some(line))
+        self.lines.push(line);
+        errors::pythonize(py, &value).map(Some)
     }
 
     /// The CSV table `flexfem sweep --csv` writes (parameters and scalar results with units)
-    /// of the given lines, in index order.
-    fn table_csv(&self, lines: Vec<String>) -> String {
+    /// of the rows handed out so far, in index order.
+    fn table_csv(&self) -> String {
         let axes: Vec<&str> = self.axes.iter().map(String::as_str).collect();
-        let refs: Vec<&str> = lines.iter().map(String::as_str).collect();
+        let refs: Vec<&str> = self.lines.iter().map(String::as_str).collect();
         let units = self
             .kind
             .as_deref()

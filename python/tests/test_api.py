@@ -158,7 +158,8 @@ def test_threads_option_gives_the_same_result():
 def test_solves_release_the_gil():
     # A Python thread counts while another runs a long solve: with the GIL held through the
     # solve it could not count at all inside the solve's window.
-    case = CASES / "static_lattice.json"
+    # The stage FRF with its direct check (a complex sparse solve per frequency): about 1 s.
+    case = FRF
     window = {}
 
     def solve():
