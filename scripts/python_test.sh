@@ -34,7 +34,8 @@ echo "python_test: virtual environment ready ($((SECONDS - START)) s)"
 set -e
 cargo build --release --bin flexfem
 rm -rf target/wheels
-"$VENV/bin/maturin" build --release --manifest-path python/Cargo.toml --out target/wheels --compatibility linux --quiet
+"$VENV/bin/maturin" build --release --manifest-path python/Cargo.toml --out target/wheels --compatibility linux \
+    --interpreter "$PY"
 "$PY" -m pip install --quiet --disable-pip-version-check target/wheels/flexfem-*.whl
 echo "python_test: wheel built and installed ($((SECONDS - START)) s)"
 
