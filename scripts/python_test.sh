@@ -34,8 +34,10 @@ echo "python_test: virtual environment ready ($((SECONDS - START)) s)"
 set -e
 cargo build --release --bin flexfem
 rm -rf target/wheels
+# Built for the base interpreter (the same Python as the venv's): its path stays the same from
+# run to run, so PyO3's build configuration, and with it the compiled bindings, stay fresh.
 "$VENV/bin/maturin" build --release --manifest-path python/Cargo.toml --out target/wheels --compatibility linux \
-    --interpreter "$PY"
+    --interpreter "$PYTHON"
 "$PY" -m pip install --quiet --disable-pip-version-check target/wheels/flexfem-*.whl
 echo "python_test: wheel built and installed ($((SECONDS - START)) s)"
 
