@@ -236,16 +236,7 @@ fn execute(sweep: &Sweep, base_dir: Option<&Path>, shard: Shard, args: &SweepArg
         Some(Err(msg)) => return Err(Stop::Usage(format!("invalid --fields: {msg}"))),
     };
     let kind = sweep.base.get("analysis").and_then(Value::as_str);
-    let omit = match (&fields, args.full, kind) {
-        (None, false, Some(kind)) => crate::design::sweep::omitted_fields(kind),
-        _ => &[],
-    };
-    let format = LineFormat {
-        loaded_displacements: fields.is_none() && !args.full && kind == Some("static"),
-        fields,
-        notes_by_ref: notes.is_some(),
-        omit: omit.iter().map(|p| p.to_string()).collect(),
-    };
+    let format = LineFormat::of_sweep(kind, fields, args.full, notes.is_some());
     let state = Mutex::new(SinkState {
         kept: keep_for_csv.then(Vec::new),
         written: fresh.then(Written::default),

@@ -120,16 +120,30 @@ fn fem_err(e: crate::fem::FemError) -> RunError {
     RunError::from(AnalysisError::new("model", e.to_string()))
 }
 
+/// The damping of a case as the solver takes it.
+fn damping_of(case: &FrfCase) -> Damping {
+    let d = case.damping;
+    Damping {
+        alpha: d.alpha,
+        beta: d.beta,
+        zeta: d.zeta,
+    }
+}
+
+/// The state-space model of a validated `frf` case alone (modal solve only: no frequency
+/// sweep, no direct check), as [`run`] returns it.
+pub fn state_space_of(valid: &ValidFrf, cache: &mut crate::fem::SolverCache) -> Result<StateSpace, RunError> {
+    let (ports, _, _) = ports(valid.case, &valid.model);
+    let modal = modal_frf(&valid.model, &ports, valid.case.modes, cache).map_err(fem_err)?;
+    Ok(state_space(&modal, &damping_of(valid.case)))
+}
+
 /// Runs a validated `frf` case.
 pub fn run(valid: &ValidFrf, cache: &mut crate::fem::SolverCache) -> Result<(FrfResult, StateSpace), RunError> {
     let (case, model) = (valid.case, &valid.model);
     let (ports, in_names, out_info) = ports(case, model);
     let d = case.damping;
-    let damping = Damping {
-        alpha: d.alpha,
-        beta: d.beta,
-        zeta: d.zeta,
-    };
+    let damping = damping_of(case);
     let modal: ModalFrf = modal_frf(model, &ports, case.modes, cache).map_err(fem_err)?;
     let freqs = case.frequencies.values();
     let h: Vec<DMatrix<C64>> = freqs.iter().map(|&f| modal.response(f, &damping)).collect();

@@ -139,6 +139,22 @@ fn remove_path(v: &mut Value, path: &[&str]) {
 }
 
 impl LineFormat {
+    /// The lines of `flexfem sweep` for a base case of analysis `kind`: only `fields` when
+    /// given (`--fields`), else everything but [`omitted_fields`] of the kind unless `full`
+    /// (`--full`), and a static sweep's displacements at its loaded and named nodes only.
+    pub fn of_sweep(kind: Option<&str>, fields: Option<Vec<String>>, full: bool, notes_by_ref: bool) -> LineFormat {
+        let omit = match (&fields, full, kind) {
+            (None, false, Some(kind)) => omitted_fields(kind),
+            _ => &[],
+        };
+        LineFormat {
+            loaded_displacements: fields.is_none() && !full && kind == Some("static"),
+            fields,
+            notes_by_ref,
+            omit: omit.iter().map(|p| p.to_string()).collect(),
+        }
+    }
+
     /// Parses `--fields a,b.c` (empty names are refused).
     pub fn parse_fields(text: &str) -> Result<Vec<String>, String> {
         let fields: Vec<String> = text.split(',').map(|f| f.trim().to_string()).collect();
