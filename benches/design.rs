@@ -3,7 +3,8 @@
 //! requirements on the stroke at the allowable, the out-of-plane stiffness and the first
 //! frequency; least actuation stiffness), as `flexfem run` runs it: the case read, the Halton
 //! samples on rayon, the local search on direct-method gradients (the frequency by its
-//! eigenvalue derivative), the gradients at the design.
+//! eigenvalue derivative), the gradients at the design. Beside it, the three-parameter sizing
+//! of `cases/parallelogram_design.json` (no platform, no frequency).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use flexfem::analysis;
@@ -12,17 +13,23 @@ use std::path::Path;
 use std::time::Duration;
 
 fn bench(c: &mut Criterion) {
-    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/parallelogram_design_5.json");
+    let cases = Path::new(env!("CARGO_MANIFEST_DIR")).join("cases");
     let mut g = c.benchmark_group("design_parallelogram");
     g.sample_size(10)
         .measurement_time(Duration::from_secs(10))
         .warm_up_time(Duration::from_millis(200));
-    g.bench_function("5_parameters_end_to_end", |b| {
-        b.iter(|| {
-            let case = analysis::case_file::load(black_box(&file)).expect("case");
-            analysis::run(&case).expect("design")
-        })
-    });
+    for (name, file) in [
+        ("5_parameters_end_to_end", "parallelogram_design_5.json"),
+        ("3_parameters_end_to_end", "parallelogram_design.json"),
+    ] {
+        let file = cases.join(file);
+        g.bench_function(name, |b| {
+            b.iter(|| {
+                let case = analysis::case_file::load(black_box(&file)).expect("case");
+                analysis::run(&case).expect("design")
+            })
+        });
+    }
     g.finish();
 }
 

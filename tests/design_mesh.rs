@@ -360,3 +360,41 @@ fn parallelogram_design_5_beats_a_coarse_grid_search() {
     assert!(k_x <= grid_best, "design k_x {k_x} N/mm > grid best {grid_best} N/mm");
     cleanup(&dir);
 }
+
+/// A square cantilever's first two bending modes are one repeated eigenvalue: its frequency
+/// has no gradient (only one-sided derivatives), so the design's gradients fall back to central
+/// differences of full runs and a model note says why. Side a ∈ [5, 15] mm, f_1 ≥ 500 Hz, least
+/// tip compliance along x (its axis: any positive metric will do).
+#[test]
+fn repeated_mode_gradients_fall_back_to_central_differences() {
+    let beam = |n: [usize; 2]| json!({"type": "beam", "nodes": n, "section": "sq", "material": "al", "up": [0, 0, 1]});
+    let case = json!({
+        "analysis": "design",
+        "case": {
+            "analysis": "static",
+            "parameters": {"a": 10.0},
+            "materials": {"al": "Al7075"},
+            "sections": {"sq": {"shape": "rect", "w": "$a", "h": "$a"}},
+            "nodes": [[0, 0, 0], [50, 0, 0], [100, 0, 0]],
+            "elements": [beam([0, 1]), beam([1, 2])],
+            "supports": [{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}],
+            "load_cases": [{"name": "tip", "forces": [{"node": 2, "F": [0, 0, -10, 0, 0, 0]}]}],
+            "metrics": [
+                {"name": "f_1", "kind": "frequency", "mode": 1},
+                {"name": "k_ax", "kind": "stiffness", "node": 2, "dof": "ux"}
+            ]
+        },
+        "parameters": {"a": {"bounds": [5.0, 15.0]}},
+        "requirements": [{"metric": "f_1", "min": 500.0}],
+        "objective": {"minimise": "k_ax"},
+        "samples": 4
+    });
+    let d = run_value("design_mesh_repeated_mode", &case);
+    assert_eq!(d["gradients"]["method"], "central_differences", "{}", d["gradients"]);
+    let notes = d["model"].as_array().unwrap();
+    assert!(
+        notes.iter().any(|n| n.as_str().unwrap().contains("mode is repeated")),
+        "{notes:?}"
+    );
+    assert!(num(&d["metrics"]["f_1"]) >= 500.0, "{}", d["metrics"]);
+}

@@ -147,6 +147,7 @@ impl Linear {
             }
         }
         let names: Vec<String> = columns.into_iter().map(|(n, _)| n).collect();
+        let repeated_mode = !modes.notes.is_empty();
         model.extend(modes.notes);
         Ok(Gradients {
             parameters: names,
@@ -154,6 +155,7 @@ impl Linear {
             values: values0,
             jacobian,
             model,
+            repeated_mode,
         })
     }
 
