@@ -133,7 +133,7 @@ impl Point {
             .metrics
             .iter()
             .filter(|m| !matches!(m.kind, MetricKind::Stiffness | MetricKind::Compliance))
-            .filter(|m| !(m.kind == MetricKind::Frequency && !asks(targets, &m.name)))
+            .filter(|m| m.kind != MetricKind::Frequency || asks(targets, &m.name))
             .cloned()
             .collect();
         let m = metrics::evaluate(&self.model, &self.case.model, &reqs, &r)?;
