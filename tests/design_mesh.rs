@@ -228,3 +228,173 @@ fn match_compliance_recovers_the_thickness_of_the_target() {
     assert!((t / 0.8 - 1.0).abs() < MATCH_TOL, "t = {t} mm, target made at 0.8 mm");
     assert!(num(&d["compliance_error"]) < 1e-3, "J = {}", d["compliance_error"]);
 }
+
+/// The five parameters of `cases/parallelogram_design_5.json`, in its order.
+const DESIGN_5: [&str; 5] = ["t", "R", "w", "L", "B"];
+
+/// The guide of `meshes/parallelogram_platform.json` (a 0.1 kg platform on the stage, node 8)
+/// with the parameter values `params` and the metrics of `cases/parallelogram_design_5.json`.
+fn platform_case(params: Value) -> Value {
+    json!({
+        "analysis": "static",
+        "mesh": mesh("parallelogram_platform.json"),
+        "parameters": params,
+        "load_cases": [{"name": "stroke_1mm", "displacements": [{"node": 8, "dof": "ux", "value": 1}]}],
+        "metrics": [
+            {"name": "stroke", "kind": "stroke_at_allowable", "node": 8, "dof": "ux", "load_case": "stroke_1mm"},
+            {"name": "k_x", "kind": "stiffness", "node": 8, "dof": "ux"},
+            {"name": "k_z", "kind": "stiffness", "node": 8, "dof": "uz"},
+            {"name": "f_1", "kind": "frequency", "mode": 1}
+        ]
+    })
+}
+
+/// Relative agreement of the `frequency` metric with mode 1 of a `modal` run of the same
+/// model: two runs of the same eigen-solver at its convergence tolerance.
+const MODAL_TOL: f64 = 1e-6;
+
+/// `cases/parallelogram_design_5.json`: the reported design, rerun as a plain static case and as
+/// a modal case with its five parameter values, meets every requirement (stroke ≥ 2 mm at the
+/// allowable, k_z ≥ 250 N/mm, first frequency ≥ 40 Hz) and gives the metrics the design
+/// reports; the search was driven by the direct-method gradients (the frequency by its
+/// eigenvalue derivative).
+#[test]
+fn parallelogram_design_5_rerun_as_static_and_modal_cases_meets_every_requirement() {
+    let out = run(&["run", "cases/parallelogram_design_5.json"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let d: Value = serde_json::from_str(&stdout(&out)).unwrap();
+    assert_eq!(d["meets"], true, "{}", d["message"]);
+    assert_eq!(d["gradients"]["method"], "direct");
+    assert!(
+        d["gradients"]["values"]["f_1"]["L"].as_f64().is_some(),
+        "{}",
+        d["gradients"]
+    );
+    let params: serde_json::Map<String, Value> = DESIGN_5
+        .iter()
+        .map(|k| (k.to_string(), d["design"][k].clone()))
+        .collect();
+    let r = run_value("design_mesh_5_rerun", &platform_case(Value::Object(params.clone())));
+    let stroke = num(&r["metrics"]["stroke"]["stroke"]);
+    let (k_z, f_1) = (num(&r["metrics"]["k_z"]), num(&r["metrics"]["f_1"]));
+    assert!(stroke >= 2.0, "stroke {stroke} mm < 2 mm");
+    assert!(k_z >= 250.0, "k_z {k_z} N/mm < 250 N/mm");
+    assert!(f_1 >= 40.0, "f_1 {f_1} Hz < 40 Hz");
+    for (got, key) in [
+        (stroke, "stroke"),
+        (k_z, "k_z"),
+        (f_1, "f_1"),
+        (num(&r["metrics"]["k_x"]), "k_x"),
+    ] {
+        let want = num(&d["metrics"][key]);
+        assert!(
+            ((got - want) / want).abs() < RERUN_TOL,
+            "{key}: rerun {got} vs design {want}"
+        );
+    }
+    let modal = json!({
+        "analysis": "modal",
+        "mesh": mesh("parallelogram_platform.json"),
+        "parameters": params,
+        "modes": 2,
+        "shapes": false
+    });
+    let m = run_value("design_mesh_5_modal", &modal);
+    let f = num(&m["modes"][0]["frequency_hz"]);
+    assert!(f >= 40.0, "modal f_1 {f} Hz < 40 Hz");
+    assert!(((f - f_1) / f_1).abs() < MODAL_TOL, "modal {f} Hz vs metric {f_1} Hz");
+    let cons = d["constraints"].as_array().unwrap();
+    assert_eq!(cons.len(), 3);
+    for c in cons {
+        assert!(num(&c["violation"]) <= 0.0, "{c}");
+    }
+}
+
+/// Values per parameter of the grid search: the bounds and two interior points, 4⁵ = 1024
+/// designs.
+const GRID: usize = 4;
+
+/// The gradient-driven sizing of `cases/parallelogram_design_5.json` is at least as good as a
+/// coarse grid search over the same bounds (4 evenly spaced values per parameter, bounds
+/// included, run by `flexfem sweep`): its k_x is at most the least k_x among the grid designs
+/// that meet every requirement.
+#[test]
+fn parallelogram_design_5_beats_a_coarse_grid_search() {
+    let file: Value =
+        serde_json::from_str(&std::fs::read_to_string(root().join("cases/parallelogram_design_5.json")).unwrap())
+            .unwrap();
+    let mut vary = serde_json::Map::new();
+    for k in DESIGN_5 {
+        let b = &file["parameters"][k]["bounds"];
+        let (lo, hi) = (num(&b[0]), num(&b[1]));
+        let values: Vec<f64> = (0..GRID)
+            .map(|i| lo + (hi - lo) * i as f64 / (GRID - 1) as f64)
+            .collect();
+        vary.insert(format!("parameters.{k}"), json!(values));
+    }
+    let declared = json!({"t": 1.0, "R": 5.0, "w": 10.0, "L": 100.0, "B": 40.0});
+    let sweep_case = json!({"analysis": "sweep", "base": platform_case(declared), "vary": vary});
+    let dir = tempdir("design_mesh_5_grid");
+    let p = write(&dir, "grid.json", &sweep_case.to_string());
+    let o = sweep(&dir, &[p.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let lines = parse_lines(&stdout(&o));
+    assert_eq!(lines.len(), GRID.pow(5));
+    let feasible: Vec<f64> = lines
+        .iter()
+        .map(|l| &l["result"]["metrics"])
+        .filter(|m| num(&m["stroke"]["stroke"]) >= 2.0 && num(&m["k_z"]) >= 250.0 && num(&m["f_1"]) >= 40.0)
+        .map(|m| num(&m["k_x"]))
+        .collect();
+    assert!(!feasible.is_empty(), "no grid design meets the requirements");
+    let grid_best = feasible.iter().copied().fold(f64::INFINITY, f64::min);
+    let out = run(&["run", "cases/parallelogram_design_5.json"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let d: Value = serde_json::from_str(&stdout(&out)).unwrap();
+    let k_x = num(&d["metrics"]["k_x"]);
+    println!(
+        "design k_x {k_x} N/mm; grid: {} of {} designs feasible, best k_x {grid_best} N/mm",
+        feasible.len(),
+        lines.len()
+    );
+    assert!(k_x <= grid_best, "design k_x {k_x} N/mm > grid best {grid_best} N/mm");
+    cleanup(&dir);
+}
+
+/// A square cantilever's first two bending modes are one repeated eigenvalue: its frequency
+/// has no gradient (only one-sided derivatives), so the design's gradients fall back to central
+/// differences of full runs and a model note says why. Side a ∈ [5, 15] mm, f_1 ≥ 500 Hz, least
+/// tip compliance along x (its axis: any positive metric will do).
+#[test]
+fn repeated_mode_gradients_fall_back_to_central_differences() {
+    let beam = |n: [usize; 2]| json!({"type": "beam", "nodes": n, "section": "sq", "material": "al", "up": [0, 0, 1]});
+    let case = json!({
+        "analysis": "design",
+        "case": {
+            "analysis": "static",
+            "parameters": {"a": 10.0},
+            "materials": {"al": "Al7075"},
+            "sections": {"sq": {"shape": "rect", "w": "$a", "h": "$a"}},
+            "nodes": [[0, 0, 0], [50, 0, 0], [100, 0, 0]],
+            "elements": [beam([0, 1]), beam([1, 2])],
+            "supports": [{"node": 0, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}],
+            "load_cases": [{"name": "tip", "forces": [{"node": 2, "F": [0, 0, -10, 0, 0, 0]}]}],
+            "metrics": [
+                {"name": "f_1", "kind": "frequency", "mode": 1},
+                {"name": "k_ax", "kind": "stiffness", "node": 2, "dof": "ux"}
+            ]
+        },
+        "parameters": {"a": {"bounds": [5.0, 15.0]}},
+        "requirements": [{"metric": "f_1", "min": 500.0}],
+        "objective": {"minimise": "k_ax"},
+        "samples": 4
+    });
+    let d = run_value("design_mesh_repeated_mode", &case);
+    assert_eq!(d["gradients"]["method"], "central_differences", "{}", d["gradients"]);
+    let notes = d["model"].as_array().unwrap();
+    assert!(
+        notes.iter().any(|n| n.as_str().unwrap().contains("mode is repeated")),
+        "{notes:?}"
+    );
+    assert!(num(&d["metrics"]["f_1"]) >= 500.0, "{}", d["metrics"]);
+}

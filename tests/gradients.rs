@@ -337,3 +337,33 @@ fn pantilt_gradients_match_full_run_differences() {
     probes.extend([Probe::BeamVonMises(0, 8), Probe::Frequency(1)]);
     check(&g, &case, &dir, &probes, &params);
 }
+
+/// A `frequency` metric (mode 1 of the guide carrying a 0.1 kg platform,
+/// `meshes/parallelogram_platform.json`) has the eigenvalue derivative
+/// dω²/dp = φᵀ(dK − ω² dM)φ of its mode (R. L. Fox & M. P. Kapoor, "Rates of change of
+/// eigenvalues and eigenvectors", AIAA Journal 6(12), 1968): against full-run differences of the
+/// metric, with respect to the notch t, R, w, the leg length L, and the span B.
+#[test]
+fn frequency_metric_gradient_matches_full_run_differences() {
+    let dir = root().join("meshes");
+    let case = json!({
+        "analysis": "static",
+        "mesh": "parallelogram_platform.json",
+        "load_cases": [{"name": "stroke_1mm", "displacements": [{"node": 8, "dof": "ux", "value": 1}]}],
+        "metrics": [
+            {"name": "f_1", "kind": "frequency", "mode": 1},
+            {"name": "k_x", "kind": "stiffness", "node": 8, "dof": "ux"}
+        ],
+        "gradients": true
+    });
+    let targets = vec![Target::Metric("f_1".into()), Target::Metric("k_x".into())];
+    let params = [("B", 40.0), ("L", 100.0), ("R", 5.0), ("t", 1.0), ("w", 10.0)];
+    let g = Linear::new(written(&case, &dir), targets)
+        .with_parameters(params.iter().map(|(n, _)| n.to_string()).collect())
+        .evaluate(&Default::default(), &mut flexfem::fem::SolverCache::new())
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(g.model.iter().all(|n| !n.contains("repeated")), "{:?}", g.model);
+    let probes = [Probe::Metric("f_1".into()), Probe::Metric("k_x".into())];
+    let worst = check(&g, &case, &dir, &probes, &params);
+    println!("worst {worst:.2e} of the tolerance scale");
+}

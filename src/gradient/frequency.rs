@@ -20,7 +20,7 @@ pub const REPEATED: f64 = 1e-6;
 pub(crate) struct Modes {
     lambda: Vec<f64>,
     shapes: Vec<Vec<f64>>,
-    /// Notes for the result (repeated modes).
+    /// Notes for the result: one per repeated mode (none when every mode asked for is simple).
     pub notes: Vec<String>,
 }
 

@@ -105,14 +105,16 @@ impl Linear {
             }
         }
         let sys = systems(&base, cache)?;
-        let units = unit_loads(&base, &self.targets);
+        // A `frequency` metric is its mode's eigenvalue derivative (no modal solve per point).
+        let targets = base.eigen_targets(&self.targets);
+        let units = unit_loads(&base, &targets);
         let maps: Vec<&DofMap> = sys.of_case.iter().map(|&g| sys.systems[g].dof_map()).collect();
         let free = &sys.systems[sys.free];
         let q = solve_cases(&base, &sys, &maps)?;
         let qu = solve_units(&base, free, &units)?;
-        let mut values0 = base.evaluate(&self.targets, &maps, &q, Some(free.dof_map()), &qu)?;
-        let modes = frequency::Modes::new(&base.model, free, &self.targets)?;
-        modes.fill_values(&self.targets, &mut values0);
+        let mut values0 = base.evaluate(&targets, &maps, &q, Some(free.dof_map()), &qu)?;
+        let modes = frequency::Modes::new(&base.model, free, &targets)?;
+        modes.fill_values(&targets, &mut values0);
         let mut model = vec![format!(
             "gradients: direct method on the factorised stiffness (one extra right-hand side per parameter and load case); dK/dp and df/dp of the reduced system (elements, rigid-link transforms, loads) by 6th-order central differences at element level, step {:e}·max(|p|, 1), along the exact tangent of the case's expressions, except the hinges: hinge compliance analytic (forward-mode derivative of the flexibility integrals with their piece limits and calibration factors, dK = −K dC K on each hinge element; the warping-restrained torsion compliance of rectangular notches from the same stencil of the moved models' Vlasov solves)",
             self.step
@@ -121,7 +123,7 @@ impl Linear {
         for name in &names {
             let p = base.parameters[name];
             let h = self.step * p.abs().max(1.0);
-            match self.column(values, &base, &sys, &q, &units, &qu, &modes, name, h) {
+            match self.column(values, &targets, &base, &sys, &q, &units, &qu, &modes, name, h) {
                 Ok(d) => columns.push((name.clone(), d)),
                 // A parameter that is an index or a count (a step along it makes the case
                 // invalid) has no gradient: left out when not asked for by name.
@@ -147,6 +149,7 @@ impl Linear {
             }
         }
         let names: Vec<String> = columns.into_iter().map(|(n, _)| n).collect();
+        let repeated_mode = !modes.notes.is_empty();
         model.extend(modes.notes);
         Ok(Gradients {
             parameters: names,
@@ -154,6 +157,7 @@ impl Linear {
             values: values0,
             jacobian,
             model,
+            repeated_mode,
         })
     }
 
@@ -162,6 +166,7 @@ impl Linear {
     fn column(
         &self,
         values: &Parameters,
+        targets: &[Target],
         base: &Point,
         sys: &Systems,
         q: &[Vec<f64>],
@@ -249,7 +254,7 @@ impl Linear {
         for (k, qk) in qu.iter().enumerate() {
             dqu.push(direct(&sys.systems[sys.free], &dk[sys.free], &dunit[k], qk)?);
         }
-        let mut out = vec![0.0; self.targets.len()];
+        let mut out = vec![0.0; targets.len()];
         for (s, w, pt, maps) in &points {
             let along = |x: &[Vec<f64>], dx: &[Vec<f64>]| -> Vec<Vec<f64>> {
                 x.iter()
@@ -258,18 +263,12 @@ impl Linear {
                     .collect()
             };
             let m: Vec<&DofMap> = sys.of_case.iter().map(|&g| &maps[g]).collect();
-            let v = pt.evaluate(
-                &self.targets,
-                &m,
-                &along(q, &dq),
-                Some(&maps[sys.free]),
-                &along(qu, &dqu),
-            )?;
+            let v = pt.evaluate(targets, &m, &along(q, &dq), Some(&maps[sys.free]), &along(qu, &dqu))?;
             out.iter_mut().zip(&v).for_each(|(o, x)| *o += w * x);
         }
         if !modes.is_empty() {
             let dm = sys.systems[sys.free].pattern().matrix(&dmass)?;
-            modes.fill_derivatives(&self.targets, &dk[sys.free], &dm, &mut out);
+            modes.fill_derivatives(targets, &dk[sys.free], &dm, &mut out);
         }
         Ok(out)
     }

@@ -87,6 +87,9 @@ pub struct Gradients {
     pub jacobian: Vec<Vec<f64>>,
     /// How they were computed.
     pub model: Vec<String>,
+    /// A frequency target's mode is repeated: its derivative is one-sided
+    /// ([`frequency`], noted in `model`), not a gradient.
+    pub repeated_mode: bool,
 }
 
 impl Gradients {

@@ -60,6 +60,25 @@ impl Point {
         })
     }
 
+    /// `targets` with each `frequency` metric replaced by the [`Target::Frequency`] of its mode:
+    /// its value and derivative then come from the modes of the base design
+    /// ([`super::frequency`], dω²/dp = φᵀ(dK − ω² dM)φ) rather than from a modal solve of each
+    /// moved model.
+    pub fn eigen_targets(&self, targets: &[Target]) -> Vec<Target> {
+        targets
+            .iter()
+            .map(|t| match t {
+                Target::Metric(name) => match self.case.metrics.iter().find(|m| &m.name == name) {
+                    Some(m) if m.kind == MetricKind::Frequency => {
+                        m.mode.map_or_else(|| t.clone(), |mode| Target::Frequency { mode })
+                    }
+                    _ => t.clone(),
+                },
+                _ => t.clone(),
+            })
+            .collect()
+    }
+
     /// The load cases in model order.
     pub fn load_cases(&self) -> &[LoadCase] {
         &self.model.load_cases
@@ -117,6 +136,7 @@ impl Point {
             .metrics
             .iter()
             .filter(|m| !matches!(m.kind, MetricKind::Stiffness | MetricKind::Compliance))
+            .filter(|m| m.kind != MetricKind::Frequency || asks(targets, &m.name))
             .cloned()
             .collect();
         let m = metrics::evaluate(&self.model, &self.case.model, &reqs, &r)?;
@@ -170,4 +190,9 @@ impl Point {
         }
         Ok(out)
     }
+}
+
+/// True if `targets` asks for metric `name` by name.
+fn asks(targets: &[Target], name: &str) -> bool {
+    targets.iter().any(|t| matches!(t, Target::Metric(n) if n == name))
 }

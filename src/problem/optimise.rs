@@ -188,6 +188,7 @@ pub struct Outcome {
     pub history: Vec<HistoryEntry>,
 }
 
+#[derive(Clone)]
 struct Eval {
     p: Vec<f64>,
     r: Option<Vec<f64>>,
@@ -336,13 +337,14 @@ pub fn optimise<P: Problem>(
     }
     let mut u = pts[best_i].clone();
     let mut w = problem.worker();
-    let mut best = s.eval(&mut w, &to_p(&u));
+    // The design at `u`, kept from its evaluation (each design is evaluated once).
+    let mut cur = s.eval(&mut w, &to_p(&u));
     evaluations += 1;
+    let mut best = cur.clone();
     let h = 1e-3;
     for mu in [10.0, 100.0, 1e3, 1e4] {
         let mut step = 0.1;
         for _ in 0..15 {
-            let cur = s.eval(&mut w, &to_p(&u));
             let f0 = s.merit(&cur, mu);
             if !f0.is_finite() {
                 break;
@@ -389,8 +391,9 @@ pub fn optimise<P: Problem>(
                     u = trial;
                     history.push(entry("local", &e));
                     if better(&e, &best) {
-                        best = e;
+                        best = e.clone();
                     }
+                    cur = e;
                     step *= 1.5;
                     moved = true;
                     break;

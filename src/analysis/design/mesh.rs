@@ -326,6 +326,12 @@ pub fn run_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<MeshDesignRes
         "the optimiser: Halton samples over the bounds, then projected gradient descent on the objective plus a quadratic penalty of the normalised requirement violations (see the README)".to_string(),
         "a stroke_at_allowable metric enters through its `stroke`".to_string(),
     ];
+    if method == GradientMethod::CentralDifferences {
+        model.push(format!(
+            "gradients at the design: central differences of full runs, step {} of each bound width (a nonlinear case, a buckling_margin metric, match_compliance, or a frequency metric whose mode is repeated at the design: not differentiable)",
+            problem::JACOBIAN_STEP
+        ));
+    }
     if let Some(n) = compliance_node(c) {
         model.push(format!(
             "match_compliance: J = Σ w (C − C_target)² / Σ w C_target² over the 36 entries of node {n}'s compliance (global axes)"

@@ -4,7 +4,8 @@
 //!
 //! Each design is the inner case with the varied parameters set in its `parameters` (which
 //! override the mesh file's, and feed every expression that uses them), resolved, parsed and
-//! run as `flexfem run` would run it. Each rayon worker keeps a solver cache: designs with the
+//! run as `flexfem run` would run it; the case and its JSON mesh file are read and validated
+//! once per design run, not per design. Each rayon worker keeps a solver cache: designs with the
 //! topology of the previous one are refactorised numerically only.
 
 use crate::analysis::common::kind::{Analysis, Ctx};
@@ -12,27 +13,31 @@ use crate::analysis::fem_static::{MetricValue, StaticResult};
 use crate::analysis::RunError;
 use crate::case::design_mesh::{Inner, ParameterRange};
 use crate::case::mesh::{ComplianceRequest, StaticCase};
+use crate::case::params::tangent::Written;
 use crate::case::params::Parameters;
 use crate::case::CaseError;
 use crate::fem::SolverCache;
 use crate::problem::Problem;
 use serde_json::Value;
 use std::collections::BTreeMap;
+use std::sync::Arc;
 
 /// The mesh case and what the problem reads from it; `A` is the `static` analysis that runs
 /// each design (handed in by the caller, so this file does not depend on the list of kinds).
 pub struct MeshProblem<A> {
-    inner: Inner,
     parameters: Vec<String>,
     responses: Vec<String>,
     /// Number of metrics (the first responses).
     pub metrics: usize,
     /// Node of the compliance entries after the metrics, if any.
     compliance_node: Option<usize>,
-    /// The case as written, when the responses have gradients by the direct method
-    /// ([`crate::gradient::Linear`]): a linear case, no compliance responses, and metrics of the
-    /// kinds whose recovery needs no solve of its own (not `frequency`, `buckling_margin`).
-    direct: Option<std::sync::Arc<crate::case::params::tangent::Written>>,
+    /// The case as written with its JSON mesh file read once: each design is resolved from it
+    /// without reading any file again.
+    written: Arc<Written>,
+    /// Whether the responses have gradients by the direct method ([`crate::gradient::Linear`]):
+    /// a linear case, no compliance responses, and no `buckling_margin` metric (a `frequency`
+    /// metric by its eigenvalue derivative, [`crate::gradient::frequency`]).
+    direct: bool,
     analysis: std::marker::PhantomData<fn() -> A>,
 }
 
@@ -44,6 +49,14 @@ pub trait StaticAnalysis: Analysis<Case = StaticCase, Result = StaticResult> {
     /// the case as written came from.
     fn parse_static(value: Value, dir: Option<&std::path::Path>, check_arrays: bool)
         -> Result<ParsedStatic, CaseError>;
+
+    /// [`Self::parse_static`] of a case value whose JSON mesh file was read already (`mesh`,
+    /// [`crate::case::params::read_mesh`]): nothing is read from disk; arrays not re-checked.
+    fn parse_static_in(
+        value: Value,
+        mesh: Option<(String, Value)>,
+        dir: Option<&std::path::Path>,
+    ) -> Result<ParsedStatic, CaseError>;
 }
 
 /// A static case read by [`StaticAnalysis::parse_static`].
@@ -137,22 +150,17 @@ pub fn validate<A: StaticAnalysis>(
         responses.extend(compliance_names());
     }
     use crate::case::mesh::MetricKind;
-    let direct = (!case.nonlinear
+    let direct = !case.nonlinear
         && compliance_node.is_none()
-        && case
-            .metrics
-            .iter()
-            .all(|m| !matches!(m.kind, MetricKind::Frequency | MetricKind::BucklingMargin)))
-    .then(|| {
-        std::sync::Arc::new(crate::case::params::tangent::Written {
-            value: inner.value.clone(),
-            mesh: crate::case::params::read_mesh(&inner.value, inner.dir.as_deref()),
-            dir: inner.dir.clone(),
-        })
+        && case.metrics.iter().all(|m| m.kind != MetricKind::BucklingMargin);
+    let written = Arc::new(Written {
+        value: inner.value.clone(),
+        mesh: crate::case::params::read_mesh(&inner.value, inner.dir.as_deref()),
+        dir: inner.dir.clone(),
     });
     Ok(Validated {
         problem: MeshProblem {
-            inner: inner.clone(),
+            written,
             parameters: ranges.keys().cloned().collect(),
             responses,
             metrics,
@@ -169,7 +177,7 @@ pub fn validate<A: StaticAnalysis>(
 impl<A: StaticAnalysis> MeshProblem<A> {
     /// The inner case value with the parameters set to `p`.
     pub fn design_value(&self, p: &[f64]) -> Value {
-        let mut v = self.inner.value.clone();
+        let mut v = self.written.value.clone();
         if let Value::Object(m) = &mut v {
             let params = m
                 .entry("parameters")
@@ -186,8 +194,9 @@ impl<A: StaticAnalysis> MeshProblem<A> {
     /// Runs design `p` as a static case.
     fn run(&self, w: &mut SolverCache, p: &[f64]) -> Result<StaticResult, String> {
         let at = |e: CaseError| format!("{}: {}", e.path, e.message);
+        let wr = &self.written;
         let ParsedStatic { mut case, origins, .. } =
-            A::parse_static(self.design_value(p), self.inner.dir.as_deref(), false).map_err(at)?;
+            A::parse_static_in(self.design_value(p), wr.mesh.clone(), wr.dir.as_deref()).map_err(at)?;
         if let Some(node) = self.compliance_node {
             case.compliance.push(ComplianceRequest { node, frame: None });
         }
@@ -230,17 +239,26 @@ impl<A: StaticAnalysis> Problem for MeshProblem<A> {
     }
 
     /// The direct-method gradients of the metrics ([`crate::gradient::Linear`]) where the case
-    /// allows them (see `direct`); central differences otherwise.
+    /// allows them (see `direct`) and no `frequency` metric's mode is repeated at `p`; central
+    /// differences otherwise.
     fn gradient(&self, w: &mut SolverCache, p: &[f64]) -> Option<Result<crate::problem::Jacobian, String>> {
-        let written = self.direct.as_ref()?;
+        if !self.direct {
+            return None;
+        }
         let targets = self.responses[..self.metrics]
             .iter()
             .map(|n| crate::gradient::Target::Metric(n.clone()))
             .collect();
         let values: Parameters = self.parameters.iter().cloned().zip(p.iter().copied()).collect();
-        let g = crate::gradient::Linear::new(written.clone(), targets)
+        let g = crate::gradient::Linear::new(self.written.clone(), targets)
             .with_parameters(self.parameters.clone())
             .evaluate(&values, w);
-        Some(g.map(|g| g.jacobian).map_err(|e| e.to_string()))
+        match g {
+            // A repeated mode has no gradient (only one-sided derivatives): central differences
+            // of full runs there, reported as such.
+            Ok(g) if g.repeated_mode => None,
+            Ok(g) => Some(Ok(g.jacobian)),
+            Err(e) => Some(Err(e.to_string())),
+        }
     }
 }

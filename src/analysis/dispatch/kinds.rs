@@ -279,6 +279,23 @@ impl design::problem::StaticAnalysis for Static {
             _ => Err(CaseError::new("analysis", "must be \"static\"")),
         }
     }
+
+    fn parse_static_in(
+        mut value: serde_json::Value,
+        mesh: Option<(String, serde_json::Value)>,
+        dir: Option<&std::path::Path>,
+    ) -> Result<design::problem::ParsedStatic, CaseError> {
+        let resolved = crate::case::params::resolve_case_in(&mut value, mesh, None)?;
+        let parsed = super::case_file::parse_with(value, dir, resolved)?;
+        match parsed.case {
+            super::case_file::Case::Static(case) => Ok(design::problem::ParsedStatic {
+                case,
+                parameters: parsed.parameters,
+                origins: parsed.origins,
+            }),
+            _ => Err(CaseError::new("analysis", "must be \"static\"")),
+        }
+    }
 }
 
 impl Analysis for Static {
