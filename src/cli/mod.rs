@@ -184,7 +184,7 @@ fn write_outputs(dir: &Path, outcome: &analysis::Outcome) -> std::io::Result<()>
 /// The report with the picture of the model (`model.svg`, when the run wrote one) embedded
 /// under its title line.
 fn with_picture(markdown: &str, files: &analysis::Files) -> String {
-    if !files.iter().any(|(name, _)| name == "model.svg") {
+    if markdown.contains("](model.svg)") || !files.iter().any(|(name, _)| name == "model.svg") {
         return markdown.to_string();
     }
     let image = "![The model: undeformed in grey, deformed on top (model.svg)](model.svg)\n";
@@ -287,6 +287,8 @@ pub fn run(cli: Cli) -> ExitCode {
                 }
             }
             if let Some(dir) = &out {
+                // report.md and `--format md` both show the picture the folder holds.
+                outcome.report.markdown = with_picture(&outcome.report.markdown, &outcome.files);
                 for (name, _) in &outcome.files {
                     if let Err(msg) = refuse_case_file(&dir.join(name), &case) {
                         eprintln!("error: {msg}");

@@ -20,11 +20,14 @@ pub struct BodyPivotPoint {
     /// The body's rotation angle from the undeformed state at the end of the step, degrees.
     pub rotation_deg: f64,
     /// The point of the step's screw axis nearest the body's master node as first placed, mm
-    /// (global); `null` when the body turned less than 1e-9 rad over the step (it translates).
+    /// (global); absent when the body turned less than 1e-9 rad over the step (it translates).
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub centre: Option<[f64; 3]>,
-    /// Unit direction of the screw axis (global); `null` with `centre`.
+    /// Unit direction of the screw axis (global); absent with `centre`.
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub axis: Option<[f64; 3]>,
-    /// Slide along the axis over the step, mm; `null` with `centre`.
+    /// Slide along the axis over the step, mm; absent with `centre`.
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub slide: Option<f64>,
 }
 
@@ -37,8 +40,9 @@ pub struct BodyPivotRow {
     pub slaves: Vec<usize>,
     /// One point per step of the path.
     pub points: Vec<BodyPivotPoint>,
-    /// Largest distance of an instantaneous centre from the first one, mm; `null` with fewer
+    /// Largest distance of an instantaneous centre from the first one, mm; absent with fewer
     /// than two centres.
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub drift: Option<f64>,
 }
 
@@ -106,4 +110,4 @@ pub fn rows(model: &Model, path: &[PathPoint]) -> Vec<BodyPivotRow> {
 }
 
 /// The `model` note of the rows.
-pub const NOTE: &str = "centre_of_rotation: per rigid body (a `rigid` element, by its master node) and step of the path, the screw axis of the body between consecutive converged points (Chasles; the instantaneous axis at the step's middle to O(Δλ²)), given as its point nearest the master node's undeformed position; null while the body only translates (< 1e-9 rad per step)";
+pub const NOTE: &str = "centre_of_rotation: per rigid body (a `rigid` element, by its master node) and step of the path, the screw axis of the body between consecutive converged points (Chasles; the instantaneous axis at the step's middle to O(Δλ²)), given as its point nearest the master node's undeformed position; centre absent while the body only translates (< 1e-9 rad per step)";
