@@ -129,7 +129,7 @@ pub fn render(scene: &Scene, req: &PictureRequest) -> String {
         });
     }
 
-    let size = diagonal(&model.nodes);
+    let size = crate::fem::model::model_size(&model.nodes);
     let u_max = scene.displacements.map_or(0.0, |u| {
         u.iter()
             .take(model.nodes.len())
@@ -236,22 +236,6 @@ pub fn render(scene: &Scene, req: &PictureRequest) -> String {
         view,
         numbers: req.numbers,
     })
-}
-
-/// The diagonal of the bounding box of `nodes`, mm (0 for none).
-fn diagonal(nodes: &[[f64; 3]]) -> f64 {
-    if nodes.is_empty() {
-        return 0.0;
-    }
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    for p in nodes {
-        for k in 0..3 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    ((hi[0] - lo[0]).powi(2) + (hi[1] - lo[1]).powi(2) + (hi[2] - lo[2]).powi(2)).sqrt()
 }
 
 #[cfg(test)]

@@ -336,15 +336,9 @@ pub fn hinge_row(
     let err = |e: fem::FemError| AnalysisError::new(format!("elements[{}]", h.case_element), e.to_string());
     let (lam, _) = model.element_frame(h.element).map_err(err)?;
     // A hinge of several segments runs from the first segment's node a to the last one's b.
-    let nodes = match (&model.elements[h.element], &model.elements[h.last]) {
-        (fem::Element::Flex(f), fem::Element::Flex(g)) => [f.nodes[0], g.nodes[1]],
-        _ => {
-            return Err(AnalysisError::new(
-                format!("elements[{}]", h.case_element),
-                "not a hinge element",
-            ))
-        }
-    };
+    let nodes = h
+        .end_nodes(model)
+        .ok_or_else(|| AnalysisError::new(format!("elements[{}]", h.case_element), "not a hinge element"))?;
     let rot = |n: usize| {
         let d = &c.displacements[n];
         Vector3::new(d[3], d[4], d[5])

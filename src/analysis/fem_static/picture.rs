@@ -6,7 +6,7 @@ use super::StaticResult;
 use crate::analysis::common::picture::{self, HingeMark, Scene};
 use crate::analysis::AnalysisError;
 use crate::case::mesh::{BuiltHinge, PictureRequest};
-use crate::fem::{self, Element, Model};
+use crate::fem::{self, Model};
 
 /// The hinge marks of load case `ic`: one per hinge element of the case (from its first
 /// segment's first node to its last segment's second node), labelled `element N` with N the
@@ -19,13 +19,9 @@ pub fn hinge_marks(model: &Model, r: &StaticResult, ic: usize, hinges: &[BuiltHi
         .iter()
         .filter_map(|h| {
             let b = hinges.iter().find(|b| b.case_element == h.element)?;
-            let (Element::Flex(first), Element::Flex(last)) = (&model.elements[b.element], &model.elements[b.last])
-            else {
-                return None;
-            };
             Some(HingeMark {
                 label: format!("element {}", h.element),
-                nodes: [first.nodes[0], last.nodes[1]],
+                nodes: b.end_nodes(model)?,
                 utilisation: b.allowable.is_finite().then_some(h.utilisation),
             })
         })

@@ -277,13 +277,12 @@ pub fn picture(model: &Model, r: &ModalResults, hinges: &[crate::case::mesh::Bui
     let m = r.modes.first()?;
     let marks = hinges
         .iter()
-        .filter_map(|b| match (&model.elements[b.element], &model.elements[b.last]) {
-            (crate::fem::Element::Flex(f), crate::fem::Element::Flex(g)) => Some(HingeMark {
+        .filter_map(|b| {
+            Some(HingeMark {
                 label: format!("element {}", b.case_element),
-                nodes: [f.nodes[0], g.nodes[1]],
+                nodes: b.end_nodes(model)?,
                 utilisation: None,
-            }),
-            _ => None,
+            })
         })
         .collect();
     let scene = Scene {

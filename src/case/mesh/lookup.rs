@@ -86,6 +86,17 @@ pub struct BuiltHinge {
     pub allowable: f64,
 }
 
+impl BuiltHinge {
+    /// The hinge's end nodes in `model`: the first segment's first node and the last segment's
+    /// second node (`None` when those elements are no hinge elements).
+    pub fn end_nodes(&self, model: &fem::Model) -> Option<[usize; 2]> {
+        match (model.elements.get(self.element)?, model.elements.get(self.last)?) {
+            (fem::Element::Flex(f), fem::Element::Flex(g)) => Some([f.nodes[0], g.nodes[1]]),
+            _ => None,
+        }
+    }
+}
+
 /// A model being built: the validated named items, the model so far and what each case element
 /// became.
 pub(super) struct Ctx<'a> {
