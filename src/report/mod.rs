@@ -5,5 +5,6 @@ pub mod json;
 pub mod markdown;
 pub mod model_svg;
 pub mod numbers;
+pub mod projection;
 pub mod svg;
 pub mod vtk;
