@@ -44,6 +44,59 @@ pub struct BodyPivotRow {
     /// than two centres.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub drift: Option<f64>,
+    /// The point nearest all of the path's screw axes (least squares): the fixed point of a
+    /// spherical motion (a pan-tilt's remote centre); absent when fewer than two axes turn or
+    /// they are (nearly) parallel, as in planar motion (see [`fixed_point`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fixed_point: Option<FixedPoint>,
+}
+
+/// The point the screw axes of a path pass nearest to.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FixedPoint {
+    /// The point minimising the sum of squared distances to the axes, mm (global).
+    pub point: [f64; 3],
+    /// Largest distance of an axis from it, mm: 0 for a motion about a fixed point.
+    pub scatter: f64,
+}
+
+/// Axes must spread by at least this much for their common point to be defined: the smallest
+/// eigenvalue of the mean of (I − n nᵀ) over the axes, about sin² of their spread (1e-2: about
+/// 6°). The point's position along nearly parallel axes is their perpendicular scatter divided
+/// by the spread's sine, so below this it is not worth reporting; planar motion (parallel axes)
+/// and a rotation about a nearly fixed axis have none.
+pub const AXIS_SPREAD_BELOW: f64 = 1e-2;
+
+/// The least-squares common point of lines (point `c`, unit direction `n`): the solution of
+/// Σ(I − n nᵀ) x = Σ(I − n nᵀ) c, with the largest distance of a line from it; `None` with
+/// fewer than two lines or when they spread less than [`AXIS_SPREAD_BELOW`].
+pub fn fixed_point(lines: &[([f64; 3], [f64; 3])]) -> Option<FixedPoint> {
+    use nalgebra::{Matrix3, Vector3};
+    if lines.len() < 2 {
+        return None;
+    }
+    let (mut a, mut b) = (Matrix3::zeros(), Vector3::zeros());
+    for (c, n) in lines {
+        let p = Matrix3::identity() - Vector3::from(*n) * Vector3::from(*n).transpose();
+        a += p;
+        b += p * Vector3::from(*c);
+    }
+    let eig = a.symmetric_eigen();
+    if eig.eigenvalues.min() / (lines.len() as f64) < AXIS_SPREAD_BELOW {
+        return None;
+    }
+    let x = a.cholesky()?.solve(&b);
+    let scatter = lines
+        .iter()
+        .map(|(c, n)| {
+            let d = x - Vector3::from(*c);
+            (d - Vector3::from(*n) * Vector3::from(*n).dot(&d)).norm()
+        })
+        .fold(0.0, f64::max);
+    Some(FixedPoint {
+        point: [x[0], x[1], x[2]],
+        scatter,
+    })
 }
 
 /// The master-node DOFs to track along the path: six per rigid link, in link order.
@@ -99,15 +152,17 @@ pub fn rows(model: &Model, path: &[PathPoint]) -> Vec<BodyPivotRow> {
                     })
                     .fold(0.0, f64::max)
             });
+            let axes: Vec<([f64; 3], [f64; 3])> = points.iter().filter_map(|p| Some((p.centre?, p.axis?))).collect();
             BodyPivotRow {
                 body: link.master,
                 slaves: link.slaves.clone(),
                 points,
                 drift,
+                fixed_point: fixed_point(&axes),
             }
         })
         .collect()
 }
 
 /// The `model` note of the rows.
-pub const NOTE: &str = "centre_of_rotation: per rigid body (a `rigid` element, by its master node) and step of the path, the screw axis of the body between consecutive converged points (Chasles; the instantaneous axis at the step's middle to O(Δλ²)), given as its point nearest the master node's undeformed position; centre absent while the body only translates (< 1e-9 rad per step)";
+pub const NOTE: &str = "centre_of_rotation: per rigid body (a `rigid` element, by its master node) and step of the path, the screw axis of the body between consecutive converged points (Chasles; the instantaneous axis at the step's middle to O(Δλ²)), given as its point nearest the master node's undeformed position; centre absent while the body only translates (< 1e-9 rad per step); fixed_point: the least-squares point nearest all the body's axes along the path (a spherical motion's centre) and the largest distance of an axis from it, given when the axes spread by more than about 6° (a nearly fixed axis leaves the point along it undetermined)";
