@@ -140,7 +140,7 @@ fn stage_fatigue_block_errors_name_the_path() {
     let goodman = r#"{"cycles": 1e7}"#;
     for (text, needles) in [
         (
-            stage_case(goodman, "\"nylon66\"", ""),
+            stage_case(goodman, r#"{"E": 3300, "nu": 0.33, "yield": 80, "allowable": 50}"#, ""),
             vec!["material.fatigue", "fatigue data"],
         ),
         (
