@@ -318,4 +318,8 @@ fn nylon66_finite_life_follows_the_basquin_line_by_hand() {
     let u = sa / (se * (1e5_f64 / 1e7).powf(-0.0323)) + sm / 85.0;
     let got_u = r["fatigue"]["fatigue_utilisation"].as_f64().unwrap();
     assert!(rel(got_u, u) < HAND_TOL, "utilisation {got_u} vs hand {u}");
+    // Nylon has no true endurance limit: the method says "infinite" means at least N_e = 1e7.
+    let method = r["fatigue"]["method"].as_str().unwrap_or_default();
+    assert!(method.contains("N_e = 1e7 cycles"), "{method}");
+    assert!(method.contains("at least N_e cycles"), "{method}");
 }
