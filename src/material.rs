@@ -62,14 +62,54 @@ impl Material {
         }),
     };
     /// Nylon 66 as used for the 8R pan-tilt mechanism (8R pan-tilt paper): E = 3.3 GPa, ν = 0.33, ρ = 1.15 g/cm³.
-    /// Yield 80 MPa (typical datasheet value, dry), allowable 50 MPa. No fatigue data built in.
+    /// Yield 80 MPa (typical datasheet value, dry), allowable 50 MPa.
+    ///
+    /// Fatigue (unnotched specimens; a polymer has no true endurance limit, so the "endurance"
+    /// is the strength at the stated 10⁷ cycles, and the Basquin line is not continued beyond):
+    /// S_e' = 5200 psi = 35.85 MPa at 10⁷ cycles, nylon 6/6 unreinforced, ASTM D671 flexural
+    /// fatigue (constant force amplitude) at 1800 cycles/min, room temperature (Plasco Inc.,
+    /// "Fatigue endurance of reinforced thermoplastics", design archive table: 6500, 5900,
+    /// 5300, 5200 psi at 10⁴, 10⁵, 10⁶, 10⁷ cycles); b = log₁₀(5200/6500)/3 = −0.0323, the
+    /// line through the 10⁴ and 10⁷ points. Dry as moulded: Toray Amilan technical data
+    /// (nylon 66 tension–compression fatigue, 30 Hz, Table 9) gives 35 MPa at 0 % water and
+    /// 21 MPa at 2.5 % (conditioned): conditioned parts need a material object. S_ut 85 MPa:
+    /// the dry ISO 527 yield stress of DuPont Zytel 103HSL NC010 (PA66) datasheet, the largest
+    /// engineering stress of the tensile test of unreinforced PA66. Peterson's a: no published
+    /// value for nylon; the default (Shigley eq. (6-35a), a fit to steels) is extrapolated.
     pub const NYLON66: Material = Material {
         e: 3_300.0,
         nu: 0.33,
         density: 1.15e-9,
         yield_strength: 80.0,
         allowable: 50.0,
-        fatigue: None,
+        fatigue: Some(MaterialFatigue {
+            endurance: 35.85,
+            ultimate: 85.0,
+            sn_cycles: 1e7,
+            basquin_b: Some(-0.0323),
+            peterson_a_mm: None,
+        }),
+    };
+    /// Titanium Ti-6Al-4V, ASTM grade 5, annealed (ASM Aerospace Specification Metals / MatWeb,
+    /// "Titanium Ti-6Al-4V (Grade 5), Annealed", ASM Material Data Sheet): E = 113.8 GPa,
+    /// ν = 0.342, ρ = 4.43 g/cm³, yield 880 MPa, S_ut 950 MPa; allowable 700 MPa (0.8 × yield
+    /// rounded down to 10 MPa, the rule that gives Al 7075-T6's 400 MPa from 503). Fatigue: S_e' = 510 MPa, unnotched, 10⁷ cycles (same
+    /// sheet); Basquin b and Peterson's a not published there: the defaults (Shigley 10th ed.
+    /// §6-7 line from 0.9 S_ut at 10³ cycles; eq. (6-35a), a fit to steels, S_ut within its
+    /// range).
+    pub const TI6AL4V: Material = Material {
+        e: 113_800.0,
+        nu: 0.342,
+        density: 4.43e-9,
+        yield_strength: 880.0,
+        allowable: 700.0,
+        fatigue: Some(MaterialFatigue {
+            endurance: 510.0,
+            ultimate: 950.0,
+            sn_cycles: 1e7,
+            basquin_b: None,
+            peterson_a_mm: None,
+        }),
     };
     /// Generic structural steel: E = 210 GPa (Han et al.), ν = 0.3, ρ = 7.85 g/cm³, yield 355 MPa, allowable 235 MPa.
     /// Fatigue: S_ut 470 MPa (minimum of EN 10025-2 S355), S_e' = 0.5 S_ut at 10⁶ cycles
@@ -90,7 +130,7 @@ impl Material {
     };
 
     /// Names accepted for built-in materials.
-    pub const BUILTIN_NAMES: [&'static str; 3] = ["Al7075", "nylon66", "steel"];
+    pub const BUILTIN_NAMES: [&'static str; 4] = ["Al7075", "nylon66", "steel", "Ti6Al4V"];
 
     /// Looks up a built-in material by name (case-insensitive).
     pub fn builtin(name: &str) -> Option<Material> {
@@ -99,6 +139,7 @@ impl Material {
             ("al7075", Self::AL7075),
             ("nylon66", Self::NYLON66),
             ("steel", Self::STEEL),
+            ("ti6al4v", Self::TI6AL4V),
         ]
         .into_iter()
         .find(|(n, _)| n.eq_ignore_ascii_case(name))

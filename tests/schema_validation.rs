@@ -242,7 +242,7 @@ fn material_names_are_enumerated() {
             "hinge": {"type": "circular_notch", "R": 8, "t": 2, "w": 10, "h": 10, "blank_length": 20}
         })
     };
-    for ok in ["Al7075", "nylon66", "steel", "AL7075", "Steel"] {
+    for ok in ["Al7075", "nylon66", "steel", "AL7075", "Steel", "Ti6Al4V", "ti6al4v"] {
         assert!(v.is_valid(&hinge(ok.into())), "{ok} refused");
         assert!(
             flexfem::analysis::parse(&hinge(ok.into()).to_string()).is_ok(),
@@ -256,7 +256,7 @@ fn material_names_are_enumerated() {
     }
     let s = schema().to_string();
     assert!(
-        s.contains(r#""enum":["Al7075","nylon66","steel"]"#),
+        s.contains(r#""enum":["Al7075","nylon66","steel","Ti6Al4V"]"#),
         "no enum of built-in names"
     );
 }

@@ -140,7 +140,7 @@ fn stage_fatigue_block_errors_name_the_path() {
     let goodman = r#"{"cycles": 1e7}"#;
     for (text, needles) in [
         (
-            stage_case(goodman, "\"nylon66\"", ""),
+            stage_case(goodman, r#"{"E": 3300, "nu": 0.33, "yield": 80, "allowable": 50}"#, ""),
             vec!["material.fatigue", "fatigue data"],
         ),
         (
@@ -207,4 +207,148 @@ fn sweep_lines_carry_the_fatigue_limit_of_each_design() {
         .unwrap();
     assert!(num(&thin["result"]["at_fatigue_limit"]["stroke"]) > num(&line["result"]["at_fatigue_limit"]["stroke"]));
     common::cleanup(&d);
+}
+
+/// The Ruiz stage with the hinge dimensions `d` (keys t_rev, R_rev, t_sph, R_sph, l_sph, as a
+/// `design` result lists them) and a fatigue block, as a `stage` case: one unit-force load case.
+fn stage_with_design(d: &serde_json::Value, fatigue: &str) -> serde_json::Value {
+    let text = format!(
+        r#"{{"analysis": "stage", "material": "Al7075",
+            "stage": {{"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": 0,
+                "leg": {{"w": 10, "h": 10}},
+                "revolute": {{"type": "circular_notch", "R": {}, "t": {}}},
+                "spherical": {{"type": "spherical_neck", "l": {}, "t": {}, "R": {}}}}},
+            "load_cases": [{{"name": "unit", "actuator_forces": [1, 1, 1]}}],
+            "fatigue": {fatigue}}}"#,
+        d["R_rev"], d["t_rev"], d["l_sph"], d["t_sph"], d["R_sph"]
+    );
+    let o = common::run_case_text("stage_fatigue_design", &text);
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+/// `cases/ruiz2019_design_fatigue.json`: the stage sizing with a fatigue requirement (Ruiz et
+/// al. (2019) §4 requirements, here
+/// Δz ≥ ±1.5 mm, plus the same Δz at the fatigue limit of 10⁷ cycles of R = 0): the sized
+/// stage, rerun as a plain `stage` case with that fatigue block, reaches z_travel at its
+/// fatigue limit (to the 1e-6 at which the sizing's pure-z unit stroke and the stage's equal
+/// unit forces agree for this symmetric stage), and the fatigue requirement is the binding
+/// one — fatigue, not the 400 MPa static limit, sizes the hinges (measured: d_f = 1.5001 mm,
+/// d = 1.936 mm at 400 MPa).
+#[test]
+fn sizing_with_a_fatigue_requirement_reaches_z_travel_at_the_fatigue_limit() {
+    const AGREE: f64 = 1e-6;
+    // `cases/ruiz2019_design_fatigue.json`'s cycle.
+    let fatigue = r#"{"cycles": 1e7, "load_ratio": 0, "method": "goodman"}"#;
+    let o = common::run(&["run", "cases/ruiz2019_design_fatigue.json"]);
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["meets"], true, "{}", v["message"]);
+    let zf = num(&v["responses"]["z_at_fatigue_limit"]);
+    assert!(zf >= 1.5, "sized d_f {zf} mm");
+    let binding: Vec<&str> = v["binding"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|b| b.as_str())
+        .collect();
+    assert!(binding.contains(&"z_travel_fatigue"), "binding {binding:?}");
+    assert!(!binding.contains(&"z_travel"), "binding {binding:?}");
+    let d_static = num(&v["responses"]["z_at_allowable"]);
+    assert!(d_static > 1.5 * 1.01, "static d {d_static} mm is not binding");
+    // The design rerun as a `stage` case with the fatigue block.
+    let s = stage_with_design(&v["design"], fatigue);
+    let z = num(&s["at_fatigue_limit"]["z"]);
+    assert!(
+        rel(z, zf) < AGREE,
+        "stage run z at the fatigue limit {z} vs sizing {zf}"
+    );
+    assert!(z >= 1.5 * (1.0 - AGREE), "stage run z at the fatigue limit {z} mm");
+    assert!(rel(num(&s["at_allowable"]["z"]), d_static) < AGREE);
+}
+
+/// The stage sensitivity with a fatigue block: the base design's d_f is the `stage` case's
+/// `at_fatigue_limit.z`, and the t_rev row's d_f ratio is that of two `stage` runs (base and
+/// t_rev × 1.5), to the 1e-6 at which pure z and equal forces agree for this symmetric stage.
+#[test]
+fn sensitivity_fatigue_column_matches_stage_runs() {
+    const AGREE: f64 = 1e-6;
+    let fatigue = r#"{"cycles": 1e7, "load_ratio": 0}"#;
+    let text = format!(
+        r#"{{"analysis": "sensitivity", "material": "Al7075",
+            "stage": {{"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": 0,
+                "leg": {{"w": 10, "h": 10}},
+                "revolute": {{"type": "circular_notch", "R": 8, "t": 2}},
+                "spherical": {{"type": "spherical_neck", "l": 5, "t": 3, "R": 4}}}},
+            "increment": 0.5, "fatigue": {fatigue}}}"#
+    );
+    let o = common::run_case_text("stage_sensitivity_fatigue", &text);
+    assert!(o.status.success(), "{}", common::stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let base = serde_json::json!({"t_rev": 2, "R_rev": 8, "t_sph": 3, "R_sph": 4, "l_sph": 5});
+    let z0 = num(&stage_with_design(&base, fatigue)["at_fatigue_limit"]["z"]);
+    let got = num(&v["base"]["z_at_fatigue_limit"]);
+    assert!(rel(got, z0) < AGREE, "base d_f {got} vs stage run {z0}");
+    let thick = serde_json::json!({"t_rev": 3, "R_rev": 8, "t_sph": 3, "R_sph": 4, "l_sph": 5});
+    let z1 = num(&stage_with_design(&thick, fatigue)["at_fatigue_limit"]["z"]);
+    let rows = v["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 5);
+    let row = rows.iter().find(|r| r["parameter"] == "t_rev").unwrap();
+    let ratio = num(&row["fatigue_displacement_ratio"]);
+    assert!(rel(ratio, z1 / z0) < AGREE, "t_rev d_f ratio {ratio} vs {}", z1 / z0);
+    assert!(row["bins"]["fatigue_displacement"].is_string(), "{row}");
+    // Without the block the rows carry no fatigue column.
+    let plain = common::run_case_text(
+        "stage_sensitivity_plain",
+        &text.replace(&format!(", \"fatigue\": {fatigue}"), ""),
+    );
+    assert!(plain.status.success(), "{}", common::stderr(&plain));
+    let p: serde_json::Value = serde_json::from_slice(&plain.stdout).unwrap();
+    assert!(
+        p["rows"][0].get("fatigue_displacement_ratio").is_none(),
+        "{}",
+        p["rows"][0]
+    );
+    assert!(p["base"].get("z_at_fatigue_limit").is_none(), "{}", p["base"]);
+}
+
+/// A fatigue requirement of the sizing, and a sensitivity's fatigue block, are checked like the
+/// stage's block: exit 2 naming the path, by `run` and `check` alike.
+#[test]
+fn sizing_fatigue_errors_name_the_path() {
+    let stage = r#""stage": {"L": 109.215, "b": 47.91, "alpha0_deg": 45, "gamma_deg": 0,
+        "leg": {"w": 10, "h": 10}, "revolute": {"type": "circular_notch", "R": 8, "t": 2},
+        "spherical": {"type": "spherical_neck", "l": 5, "t": 3, "R": 4}}"#;
+    let bounds = r#""bounds": {"t_rev": [1, 3], "R_rev": [3, 12], "t_sph": [2, 4], "R_sph": [2, 6], "l_sph": [2, 10]}"#;
+    let no_data = r#"{"E": 72000, "nu": 0.33, "yield": 503, "allowable": 400}"#;
+    for (text, needles) in [
+        (
+            format!(
+                r#"{{"analysis": "design", "material": "Al7075", {stage}, {bounds},
+                    "requirements": {{"z_travel": 1.5, "fatigue": {{"cycles": 0.5}}}}}}"#
+            ),
+            vec!["requirements.fatigue.cycles"],
+        ),
+        (
+            format!(
+                r#"{{"analysis": "design", "material": {no_data}, {stage}, {bounds},
+                    "requirements": {{"z_travel": 1.5, "fatigue": {{"cycles": 1e7}}}}}}"#
+            ),
+            vec!["material.fatigue", "fatigue data"],
+        ),
+        (
+            format!(
+                r#"{{"analysis": "sensitivity", "material": "Al7075", {stage},
+                    "fatigue": {{"cycles": 1e7, "load_ratio": 1}}}}"#
+            ),
+            vec!["fatigue.load_ratio", "[−1, 1)"],
+        ),
+    ] {
+        let dir = common::tempdir("sizing_fatigue_errors");
+        let path = common::write(&dir, "case.json", &text);
+        let p = path.to_str().unwrap();
+        common::exits_2(&common::run(&["run", p]), &needles);
+        common::exits_2(&common::run(&["check", p]), &needles);
+        common::cleanup(&dir);
+    }
 }

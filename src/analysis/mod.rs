@@ -31,6 +31,8 @@
 //!   [`stage::model_notes`], [`stage::PoseOut`]).
 //! - `design` → `fem_static`: a design of a mesh mechanism runs its static case and reads the
 //!   metrics ([`fem_static::StaticResult`], [`fem_static::MetricValue`]).
+//! - `design` → `stage`: the stage sizing and sensitivity with a `fatigue` block assess each
+//!   design's hinges as the stage's `at_fatigue_limit` does ([`stage::SizingFatigue`]).
 //! - `buckling` → `fem_static`: buckling shapes hide the inner nodes of segmented hinges as static
 //!   results do ([`fem_static::hide_in_shapes`]).
 //!

@@ -3,6 +3,7 @@
 //! parallel stage).
 
 use super::error::{check, CaseError};
+use super::fatigue::CyclicSpec;
 use super::fields::case_struct;
 use super::stage::StageSpec;
 use crate::stage::sizing::{self as stage_design, Requirements, PARAMETERS};
@@ -39,6 +40,11 @@ case_struct! {
         #[serde(default = "default_tilt")]
         #[schemars(range(min = 0, max = 10))]
         pub tilt_deg: f64,
+        /// The load cycle of the stage's `"fatigue"` block (the material needs fatigue data):
+        /// adds the fatigue-limited Δz d_f to the responses and its ratio, bin and elasticity
+        /// to each row.
+        #[serde(default)]
+        pub fatigue: Option<CyclicSpec>,
     }
 }
 
@@ -71,6 +77,11 @@ pub struct RequirementsSpec {
     #[serde(default = "default_tilt")]
     #[schemars(range(min = 0, max = 10))]
     pub tilt_deg: f64,
+    /// Fatigue: the load cycle of the stage's `"fatigue"` block (the material needs fatigue
+    /// data); the platform Δz at which the first hinge reaches fatigue utilisation 1 under pure
+    /// z (the peak of the cycle) must reach `z_travel` too (constraint `z_travel_fatigue`).
+    #[serde(default)]
+    pub fatigue: Option<CyclicSpec>,
 }
 
 fn default_t() -> [f64; 2] {
@@ -137,6 +148,19 @@ fn check_loop_design(d: &StageDesign) -> Result<(), CaseError> {
     Ok(())
 }
 
+/// Checks a `fatigue` block (at `path`) of a sizing or sensitivity on design `d`: its fields,
+/// the material's fatigue data, and hinges to assess.
+fn check_fatigue(f: Option<&CyclicSpec>, path: &str, d: &StageDesign) -> Result<(), CaseError> {
+    let Some(f) = f else { return Ok(()) };
+    if d.ideal_joints {
+        return Err(CaseError::new(
+            path,
+            "with \"ideal_joints\": true the stage has no hinges to assess: drop the fatigue block or `ideal_joints`",
+        ));
+    }
+    f.validate(path, "material", &d.material).map(|_| ())
+}
+
 impl SensitivityCase {
     /// Validates before solving.
     pub fn validate(&self) -> Result<StageDesign, CaseError> {
@@ -176,6 +200,7 @@ impl SensitivityCase {
         }
         check::positive("z_travel", self.z_travel, "mm")?;
         check::within("tilt_deg", self.tilt_deg, 0.0, 10.0, "degrees")?;
+        check_fatigue(self.fatigue.as_ref(), "fatigue", d)?;
         Ok(v)
     }
 }
@@ -197,6 +222,7 @@ impl DesignCase {
         check::range("requirements.T", r.t)?;
         check::positive("requirements.T[0]", r.t[0], "")?;
         check::within("requirements.tilt_deg", r.tilt_deg, 0.0, 10.0, "degrees")?;
+        check_fatigue(r.fatigue.as_ref(), "requirements.fatigue", &d)?;
         let b = &self.bounds;
         let bounds = [b.t_rev, b.r_rev, b.t_sph, b.r_sph, b.l_sph];
         let names = [
@@ -221,6 +247,7 @@ impl DesignCase {
                 allowable,
                 t_range: r.t,
                 tilt: r.tilt_deg.to_radians(),
+                fatigue: r.fatigue.is_some(),
             },
         ))
     }

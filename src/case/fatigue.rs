@@ -126,7 +126,7 @@ pub fn material_fatigue(
         CaseError::value(
             format!("{material_path}.fatigue"),
             "none",
-            "a \"fatigue\" block needs material fatigue data {\"endurance\", \"ultimate\"} (MPa); built-in materials with fatigue data: Al7075, steel",
+            "a \"fatigue\" block needs material fatigue data {\"endurance\", \"ultimate\"} (MPa); built-in materials with fatigue data: Al7075, nylon66, steel, Ti6Al4V",
         )
     })?;
     validate_material_fatigue(material_path, &f)?;

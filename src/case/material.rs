@@ -4,12 +4,13 @@ use super::error::{check, CaseError};
 use crate::material::Material;
 use serde::{Deserialize, Deserializer};
 
-/// A built-in material by name (`"Al7075"`, `"nylon66"`, `"steel"`; case-insensitive) or an
+/// A built-in material by name (`"Al7075"`, `"nylon66"`, `"steel"`, `"Ti6Al4V"`; case-insensitive) or an
 /// object `{"E", "nu", "density", "yield", "allowable"}`.
 #[derive(Debug, Clone, PartialEq, schemars::JsonSchema)]
 #[serde(untagged)]
 pub enum MaterialSpec {
-    /// A built-in material name (case-insensitive): Al7075 (aluminium 7075-T6), nylon66, steel.
+    /// A built-in material name (case-insensitive): Al7075 (aluminium 7075-T6), nylon66, steel,
+    /// Ti6Al4V (titanium grade 5, annealed).
     #[schemars(schema_with = "builtin_name_schema")]
     Name(String),
     /// Explicit properties (mm–N–MPa–tonne).

@@ -4,7 +4,9 @@ pub mod mesh;
 pub mod problem;
 
 use super::{AnalysisError, Report, RunError};
+use crate::analysis::stage::SizingFatigue;
 use crate::case::design::{DesignCase, SensitivityCase};
+use crate::case::fatigue::CyclicSpec;
 use crate::case::stage::stage_warnings;
 use crate::report::markdown::{sig, Table};
 use crate::stage::sizing::{self as stage_design, DesignOutcome, Responses, SensitivityRow, PARAMETERS};
@@ -35,19 +37,34 @@ pub fn run_sensitivity_warned(c: &SensitivityCase) -> Result<(SensitivityResult,
     Ok((sensitivity_of(c, v.design())?, stage_warnings(&v)))
 }
 
+/// The fatigue assessment of a sizing or sensitivity with a `fatigue` block (validated with
+/// the case: the material has fatigue data).
+fn sizing_fatigue(spec: Option<&CyclicSpec>, d: &StageDesign) -> Option<SizingFatigue> {
+    spec.zip(d.material.fatigue)
+        .map(|(&spec, data)| SizingFatigue { spec, data })
+}
+
+/// The model note of d_f.
+const FATIGUE_NOTE: &str = "d_f (z_at_fatigue_limit) = platform z at which the first hinge reaches fatigue utilisation 1 under pure z, the peak of the load cycle: the chain of the `stage` analysis's `at_fatigue_limit` (hinge fatigue stress = peak stress × K_f/K_t, Shigley 10th ed. ch. 6), rebuilt for each design";
+
 fn sensitivity_of(c: &SensitivityCase, d: &StageDesign) -> Result<SensitivityResult, RunError> {
     let demand = stage_design::rotation_demand(d, c.z_travel, c.tilt_deg.to_radians())
         .map_err(|e| AnalysisError::new("stage", e.to_string()))?;
-    let (base, rows) =
-        stage_design::sensitivity(d, c.increment, &demand).map_err(|m| AnalysisError::new("sensitivity", m))?;
+    let fatigue = sizing_fatigue(c.fatigue.as_ref(), d);
+    let (base, rows) = stage_design::sensitivity(d, c.increment, &demand, fatigue.as_ref().map(|f| f as _))
+        .map_err(|m| AnalysisError::new("sensitivity", m))?;
+    let mut model = vec![
+        "responses from the linear full-stage FE model under a pure-z stroke set (see `stage`)".to_string(),
+        "d = platform z at which the peak hinge stress reaches the allowable; T = σ_sph,max/σ_rev,max".into(),
+    ];
+    if fatigue.is_some() {
+        model.push(FATIGUE_NOTE.into());
+    }
     Ok(SensitivityResult {
         base,
         increment: c.increment,
         rows,
-        model: vec![
-            "responses from the linear full-stage FE model under a pure-z stroke set (see `stage`)".into(),
-            "d = platform z at which the peak hinge stress reaches the allowable; T = σ_sph,max/σ_rev,max".into(),
-        ],
+        model,
     })
 }
 
@@ -63,6 +80,7 @@ pub fn sensitivity_report(r: &SensitivityResult) -> Report {
     let mut t = Table::columns("positive increase | η_{i+1}/η_i | d_{i+1}/d_i | T_{i+1}/T_i | elasticities (η, d, T)");
     let mut csv =
         String::from("parameter,base_mm,increased_mm,stiffness_ratio,displacement_ratio,stress_ratio_ratio\n");
+    let mut md_fatigue = String::new();
     for row in &r.rows {
         t.row(vec![
             format!(
@@ -79,12 +97,21 @@ pub fn sensitivity_report(r: &SensitivityResult) -> Report {
                 row.elasticity[0], row.elasticity[1], row.elasticity[2]
             ),
         ]);
+        if let (Some(ratio), Some(b)) = (row.fatigue_displacement_ratio, row.bins.fatigue_displacement) {
+            md_fatigue += &format!("- {}: d_f ratio {ratio:.3} ({b})\n", row.parameter);
+        }
         csv += &format!(
             "{},{},{},{},{},{}\n",
             row.parameter, row.base, row.increased, row.stiffness_ratio, row.displacement_ratio, row.stress_ratio_ratio
         );
     }
     md += &t.render();
+    if let Some(zf) = r.base.z_at_fatigue_limit {
+        md += &format!(
+            "\nFatigue-limited Δz of the base design d_f = {} mm; d_f_(i+1)/d_f_i per parameter:\n\n{md_fatigue}",
+            sig(zf, 4)
+        );
+    }
     Report { markdown: md, csv }
 }
 
@@ -121,8 +148,9 @@ pub fn run_design(c: &DesignCase) -> Result<DesignResult, RunError> {
 /// (derived from the validated base design with the found parameters).
 pub fn run_design_warned(c: &DesignCase) -> Result<(DesignResult, Vec<String>), RunError> {
     let (d, bounds, req) = c.validated()?;
-    let out: DesignOutcome =
-        stage_design::optimise(&d, &bounds, &req, c.samples).map_err(|m| AnalysisError::new("design", m))?;
+    let fatigue = sizing_fatigue(c.requirements.fatigue.as_ref(), d.design());
+    let out: DesignOutcome = stage_design::optimise(&d, &bounds, &req, c.samples, fatigue.as_ref().map(|f| f as _))
+        .map_err(|m| AnalysisError::new("design", m))?;
     let message = if out.meets {
         None
     } else {
@@ -200,6 +228,12 @@ pub fn design_report(r: &DesignResult) -> Report {
         sig(r.responses.z_at_allowable, 4),
         sig(r.responses.t_ratio, 4)
     );
+    if let Some(zf) = r.responses.z_at_fatigue_limit {
+        md += &format!(
+            "d_f = {} mm at the fatigue limit (first hinge at fatigue utilisation 1).\n\n",
+            sig(zf, 4)
+        );
+    }
     let mut c = Table::new(&["constraint", "value", "limit", "violation"]);
     for k in &r.constraints {
         c.row(vec![

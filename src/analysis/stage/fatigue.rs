@@ -15,6 +15,7 @@ use super::{HingeStress, StageRow};
 use crate::analysis::common::fatigue::{FatigueChain, Life};
 use crate::case::fatigue::CyclicSpec;
 use crate::fatigue::MaterialFatigue;
+use crate::stage::sizing::FatigueLimit;
 use crate::stage::{StageResponse, ValidStage};
 use serde::Serialize;
 
@@ -159,6 +160,18 @@ impl StageFatigue {
         out
     }
 
+    /// The largest hinge fatigue utilisation under the response `u` (the peak of the cycle).
+    pub fn max_utilisation(&self, u: &StageResponse) -> f64 {
+        let mut worst = 0.0_f64;
+        for (k, peaks) in u.hinge_stress.iter().enumerate() {
+            for &p in peaks {
+                let (sa, sm) = self.stresses(k, p);
+                worst = worst.max(self.chains[k].utilisation(sa, sm));
+            }
+        }
+        worst
+    }
+
     /// The fatigue limit from the response `u` to a unit force on every actuator.
     pub fn at_limit(&self, u: &StageResponse) -> AtFatigueLimit {
         let (mut worst, mut hinge, mut leg, mut worst_inf) = (0.0_f64, "revolute", 1, 0.0_f64);
@@ -206,5 +219,22 @@ impl StageFatigue {
             self.spec.cycles,
             self.chains[0].describe()
         )
+    }
+}
+
+/// The fatigue of the stage sizing and sensitivity (`"fatigue"` of their requirements or
+/// case): the chains rebuilt for each design's hinges (K_t, notch radius and size factor change
+/// with the parameters), the same assessment as a `stage` case's `at_fatigue_limit`.
+#[derive(Debug, Clone, Copy)]
+pub struct SizingFatigue {
+    /// The load cycle.
+    pub spec: CyclicSpec,
+    /// The material's fatigue data.
+    pub data: MaterialFatigue,
+}
+
+impl FatigueLimit for SizingFatigue {
+    fn max_utilisation(&self, v: &ValidStage, unit: &StageResponse) -> f64 {
+        StageFatigue::new(&self.spec, v, &self.data).max_utilisation(unit)
     }
 }

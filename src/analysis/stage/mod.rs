@@ -12,6 +12,7 @@ use crate::case::stage::{stage_error, StageCase};
 use crate::fem::inline_vec::InlineVec;
 use crate::kinematics::Pose;
 use crate::stage::{self, Drive, StageCaseResult, StageModel, StageResponse};
+pub use fatigue::SizingFatigue;
 pub use modes::stage_modes;
 use modes::stage_modes_with_model;
 use serde::Serialize;

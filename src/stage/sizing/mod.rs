@@ -9,20 +9,22 @@
 //!
 //! Requirements (Ruiz et al. 2019, §4): d ≥ z_travel, T ∈ [T_lo, T_hi], and each hinge able to
 //! reach the joint rotations of the kinematic requirement sweep (revolute Δα, spherical βm, βn,
-//! βl over z = ±z_travel, ψ, θ = ±tilt) below the allowable stress.
+//! βl over z = ±z_travel, ψ, θ = ±tilt) below the allowable stress. With a [`FatigueLimit`]
+//! (a `fatigue` block), a fourth response d_f — the platform Δz at which the first hinge reaches
+//! fatigue utilisation 1 — and the requirement d_f ≥ z_travel.
 
 mod optimise;
 mod problem;
 mod sensitivity;
 
 pub use optimise::{constraints, optimise, requirements, Constraint, DesignOutcome, HistoryEntry, Requirements};
-pub use problem::{StageProblem, RESPONSES};
+pub use problem::{StageProblem, FATIGUE_RESPONSE, RESPONSES};
 pub use sensitivity::{bin, sensitivity, Bins, SensitivityRow};
 
 use crate::fem::SolverCache;
 use crate::hinge::HingeSpec;
 use crate::kinematics::{workspace, PoseBox};
-use crate::stage::{Drive, StageDesign, StageError};
+use crate::stage::{Drive, StageDesign, StageError, StageResponse, ValidStage};
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -95,6 +97,15 @@ pub fn rotation_demand(d: &StageDesign, z_travel: f64, tilt: f64) -> Result<Rota
     })
 }
 
+/// The hinges' fatigue, handed in from above the stage layer (the stress-life chain belongs to
+/// the cases' `fatigue` block): the largest hinge fatigue utilisation of the validated design
+/// `v` under the response `unit`, the peak of the load cycle. The stage is linear, so the
+/// utilisation is proportional to the load and 1 / it scales `unit` to the fatigue limit.
+pub trait FatigueLimit: Sync {
+    /// Largest hinge fatigue utilisation under `unit` (dimensionless).
+    fn max_utilisation(&self, v: &ValidStage, unit: &StageResponse) -> f64;
+}
+
 /// Responses of one design (pure-z motion, linear).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Responses {
@@ -113,20 +124,27 @@ pub struct Responses {
     pub revolute_stress_at_demand: f64,
     /// Spherical-neck von Mises stress at the demanded βm, βn, βl (taken together), MPa.
     pub spherical_stress_at_demand: f64,
+    /// d_f: platform Δz (pure z, the peak of the load cycle) at which the first hinge reaches
+    /// fatigue utilisation 1, mm; only with a [`FatigueLimit`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub z_at_fatigue_limit: Option<f64>,
 }
 
 /// Evaluates a design: one linear solve of a unit pure-z stroke set.
 pub fn evaluate(d: &StageDesign, demand: &RotationDemand) -> Result<Responses, StageError> {
-    evaluate_with(&mut SolverCache::new(), d, demand)
+    evaluate_with(&mut SolverCache::new(), d, demand, None)
 }
 
-/// [`evaluate`] with the caller's solver cache (designs of one loop share the topology).
+/// [`evaluate`] with the caller's solver cache (designs of one loop share the topology), and
+/// d_f when `fatigue` is given.
 pub fn evaluate_with(
     cache: &mut SolverCache,
     d: &StageDesign,
     demand: &RotationDemand,
+    fatigue: Option<&dyn FatigueLimit>,
 ) -> Result<Responses, StageError> {
-    let stage = d.build()?;
+    let valid = d.validate()?;
+    let stage = valid.build();
     let j = d
         .prs
         .actuation_jacobian(0.0, 0.0, 0.0)
@@ -161,5 +179,6 @@ pub fn evaluate_with(
         spherical_stress_per_mm: sph,
         revolute_stress_at_demand: rev_demand,
         spherical_stress_at_demand: (sigma_b * sigma_b + 3.0 * tau * tau).sqrt(),
+        z_at_fatigue_limit: fatigue.map(|f| z.abs() / f.max_utilisation(&valid, &r.response())),
     })
 }

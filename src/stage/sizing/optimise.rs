@@ -2,7 +2,7 @@
 //! as constraints on the [`StageProblem`]'s responses, solved by the generic
 //! [`crate::problem::optimise`] maximising η.
 
-use super::{params_of, rotation_demand, Params, Responses, RotationDemand, StageProblem};
+use super::{params_of, rotation_demand, FatigueLimit, Params, Responses, RotationDemand, StageProblem};
 use crate::problem::{self, Objective, Requirement, Sense};
 use crate::stage::StageDesign;
 use serde::Serialize;
@@ -21,6 +21,9 @@ pub struct Requirements {
     pub t_range: [f64; 2],
     /// Platform tilt range of the kinematic sweep (±), rad.
     pub tilt: f64,
+    /// Whether the fatigue-limited Δz d_f must reach `z_travel` too (`"fatigue"` requirement;
+    /// the [`FatigueLimit`] is handed to [`optimise`]).
+    pub fatigue: bool,
 }
 
 /// The requirements as constraints on the responses (indices of [`super::RESPONSES`]).
@@ -31,13 +34,18 @@ pub fn requirements(req: &Requirements) -> Vec<Requirement> {
         sense,
         limit,
     };
-    vec![
+    let mut out = vec![
         c("z_travel", 1, req.z_travel, Sense::AtLeast),
         c("T_min", 2, req.t_range[0], Sense::AtLeast),
         c("T_max", 2, req.t_range[1], Sense::AtMost),
         c("revolute_rotation_stress", 5, req.allowable, Sense::AtMost),
         c("spherical_rotation_stress", 6, req.allowable, Sense::AtMost),
-    ]
+    ];
+    if req.fatigue {
+        // Response 7: d_f, after the seven of `super::RESPONSES`.
+        out.push(c("z_travel_fatigue", 7, req.z_travel, Sense::AtLeast));
+    }
+    out
 }
 
 /// The constraints of `r` (normalised so that ≤ 0 is met).
@@ -90,19 +98,24 @@ fn params(p: &[f64]) -> Params {
 
 /// Requirement-driven sizing: maximise η subject to the requirements within `bounds` (mm), by
 /// [`crate::problem::optimise`] (Halton samples, then projected gradient descent on
-/// −ln η + μ·Σ max(0, g)² with central finite differences).
+/// −ln η + μ·Σ max(0, g)² with central finite differences). `fatigue` gives d_f; it is needed
+/// (and used) when `req.fatigue` is set.
 pub fn optimise(
     base: &StageDesign,
     bounds: &[[f64; 2]; 5],
     req: &Requirements,
     samples: usize,
+    fatigue: Option<&dyn FatigueLimit>,
 ) -> Result<DesignOutcome, String> {
+    if req.fatigue && fatigue.is_none() {
+        return Err("a fatigue requirement needs the hinges' fatigue chain".into());
+    }
     let mut base = base.clone();
     base.material.allowable = req.allowable;
     params_of(&base)?;
     let demand = rotation_demand(&base, req.z_travel, req.tilt).map_err(|e| e.to_string())?;
     let out = problem::optimise(
-        &StageProblem::new(&base, demand),
+        &StageProblem::new(&base, demand).with_fatigue(fatigue),
         bounds,
         &requirements(req),
         &Objective::Maximise(0),

@@ -1,7 +1,7 @@
 //! The stage sizing as a design problem of [`crate::problem`]: the five hinge dimensions of
 //! [`super::PARAMETERS`] in, the [`Responses`] of a unit pure-z stroke out.
 
-use super::{evaluate_with, with_params, Responses, RotationDemand, PARAMETERS};
+use super::{evaluate_with, with_params, FatigueLimit, Responses, RotationDemand, PARAMETERS};
 use crate::fem::SolverCache;
 use crate::problem::Problem;
 use crate::stage::StageDesign;
@@ -17,10 +17,13 @@ pub const RESPONSES: [&str; 7] = [
     "spherical_stress_at_demand",
 ];
 
+/// Name of the response after [`RESPONSES`] when the problem has a [`FatigueLimit`].
+pub const FATIGUE_RESPONSE: &str = "z_at_fatigue_limit";
+
 impl Responses {
-    /// The responses in [`RESPONSES`] order.
+    /// The responses in [`RESPONSES`] order, then [`FATIGUE_RESPONSE`] if computed.
     pub fn to_vec(&self) -> Vec<f64> {
-        vec![
+        let mut v = vec![
             self.eta,
             self.z_at_allowable,
             self.t_ratio,
@@ -28,10 +31,12 @@ impl Responses {
             self.spherical_stress_per_mm,
             self.revolute_stress_at_demand,
             self.spherical_stress_at_demand,
-        ]
+        ];
+        v.extend(self.z_at_fatigue_limit);
+        v
     }
 
-    /// The responses from a vector in [`RESPONSES`] order.
+    /// The responses from a vector in [`Self::to_vec`] order.
     pub fn from_slice(r: &[f64]) -> Responses {
         Responses {
             eta: r[0],
@@ -41,6 +46,7 @@ impl Responses {
             spherical_stress_per_mm: r[4],
             revolute_stress_at_demand: r[5],
             spherical_stress_at_demand: r[6],
+            z_at_fatigue_limit: r.get(7).copied(),
         }
     }
 }
@@ -49,6 +55,7 @@ impl Responses {
 pub struct StageProblem<'a> {
     base: &'a StageDesign,
     demand: RotationDemand,
+    fatigue: Option<&'a dyn FatigueLimit>,
     parameters: Vec<String>,
     responses: Vec<String>,
 }
@@ -59,9 +66,19 @@ impl<'a> StageProblem<'a> {
         StageProblem {
             base,
             demand,
+            fatigue: None,
             parameters: PARAMETERS.map(String::from).to_vec(),
             responses: RESPONSES.map(String::from).to_vec(),
         }
+    }
+
+    /// The problem with the fatigue-limited Δz d_f as a further response ([`FATIGUE_RESPONSE`]).
+    pub fn with_fatigue(mut self, fatigue: Option<&'a dyn FatigueLimit>) -> Self {
+        if fatigue.is_some() {
+            self.responses.push(FATIGUE_RESPONSE.to_string());
+        }
+        self.fatigue = fatigue;
+        self
     }
 }
 
@@ -81,12 +98,15 @@ impl Problem for StageProblem<'_> {
         let p: super::Params = p
             .try_into()
             .map_err(|_| format!("the stage has {} parameters, {} given", PARAMETERS.len(), p.len()))?;
-        let r = evaluate_with(w, &with_params(self.base, &p), &self.demand).map_err(|e| e.to_string())?;
+        let r = evaluate_with(w, &with_params(self.base, &p), &self.demand, self.fatigue).map_err(|e| e.to_string())?;
         if !(r.eta.is_finite() && r.z_at_allowable.is_finite() && r.t_ratio.is_finite()) {
             return Err(format!(
                 "the design gives η = {}, d = {}, T = {} (not finite)",
                 r.eta, r.z_at_allowable, r.t_ratio
             ));
+        }
+        if let Some(zf) = r.z_at_fatigue_limit.filter(|z| !z.is_finite()) {
+            return Err(format!("the design gives a fatigue-limited Δz d_f = {zf} (not finite)"));
         }
         Ok(r.to_vec())
     }
