@@ -218,3 +218,84 @@ fn continuation_from_the_run_matches_a_solve_from_zero_in_one_step() {
     let notes = out["model"].to_string();
     assert!(notes.contains("continues the equilibrium path"), "{notes}");
 }
+
+/// One design of a design loop (`sensitivity`/`design` over the parallelogram with t varied):
+/// evaluated for its metrics only, the 1 mm stroke case is continued from the unloaded state
+/// in one load step instead of its 20 nominal ones (an elastic state does not depend on the
+/// stable path reaching it), and the stroke at the allowable is the full run's 2.78741 mm to
+/// 1e-9 relative (measured 4e-14: the two 1 mm states differ by the Newton tolerance, the
+/// reaction at node 8 by 1e-11, and the searches take the same steps from them). The model
+/// notes say how the state was reached.
+#[test]
+fn design_evaluation_without_the_nominal_steps_matches_the_full_run() {
+    use flexfem::analysis::design::problem::validate;
+    use flexfem::analysis::kinds::Static;
+    use flexfem::analysis::{Analysis, Ctx};
+    use flexfem::case::design_mesh::{Inner, ParameterRange};
+    use flexfem::problem::Problem;
+    let case = parallelogram(
+        true,
+        json!([stroke_case("x1", 1.0)]),
+        json!([{"name": "s", "kind": "stroke_at_allowable", "node": 8, "dof": "ux", "load_case": "x1"}]),
+    );
+    let full = run(case.clone());
+    let stroke = num(&full["metrics"]["s"]["stroke"]);
+
+    // Through the design problem, as `sensitivity` and `design` evaluate each design.
+    let inner = Inner {
+        value: case.clone(),
+        dir: None,
+    };
+    let ranges = std::collections::BTreeMap::from([(
+        "t".to_string(),
+        ParameterRange {
+            bounds: Some([0.8, 1.2]),
+        },
+    )]);
+    let v = validate::<Static>(&inner, &ranges, None).unwrap_or_else(|e| panic!("{e}"));
+    let values = v.problem.evaluate(&mut v.problem.worker(), &v.base).unwrap();
+    assert_eq!(values.len(), 1);
+    let e = values[0] / stroke - 1.0;
+    assert!(
+        e.abs() < 1e-9,
+        "design evaluation {} mm vs full run {stroke} mm ({e:e})",
+        values[0]
+    );
+
+    // The same evaluation with its result: the state reached in one step, and said so.
+    let analysis::Case::Static(c) = analysis::parse_value(case, None).unwrap() else {
+        panic!("not a static case");
+    };
+    let mut cache = flexfem::fem::SolverCache::new();
+    let mut ctx = Ctx::new(&mut cache, false);
+    ctx.metrics_only = true;
+    let r = Static::run(&c, &mut ctx).unwrap_or_else(|e| panic!("{e:?}"));
+    let m = r.metrics.get("s").and_then(|m| m.number()).unwrap();
+    assert_eq!(m, values[0]);
+    let notes = r.model.join("\n");
+    assert!(
+        notes.contains("in one load step") && notes.contains("instead of the case's 20 nominal steps"),
+        "{notes}"
+    );
+    let row = &r.load_cases[0];
+    assert_eq!(row.stable, Some(true));
+    // The 1 mm end state itself: node 8's reaction is the full run's to 1e-9 (measured 1e-11).
+    ctx.metrics_only = false;
+    let f = Static::run(&c, &mut ctx).unwrap_or_else(|e| panic!("{e:?}"));
+    let reaction = |row: &flexfem::analysis::fem_static::StaticCaseRow| {
+        let k = row
+            .reaction_nodes
+            .iter()
+            .position(|&n| n == 8)
+            .expect("node 8 is prescribed");
+        row.reactions[k][0]
+    };
+    let (ra, rb) = (reaction(row), reaction(&f.load_cases[0]));
+    eprintln!(
+        "design evaluation: stroke {} mm vs full run {stroke} mm ({e:e}); reaction {ra} vs {rb} N ({:e})",
+        values[0],
+        ra / rb - 1.0
+    );
+    assert!((ra / rb - 1.0).abs() < 1e-9, "reaction {ra} vs {rb} N");
+    assert_eq!(f.metrics.get("s").and_then(|m| m.number()), Some(stroke));
+}

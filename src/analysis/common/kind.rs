@@ -25,6 +25,10 @@ pub struct Ctx<'a> {
     pub warnings: Vec<String>,
     /// Render the Markdown/CSV report (a sweep, which writes only the JSON, turns it off).
     pub with_report: bool,
+    /// Only the result's `metrics` and `compliance` are read (a design loop's evaluation of one
+    /// design): a nonlinear `static` case may then reach each load case's final state without
+    /// its nominal load steps (the model notes say how).
+    pub metrics_only: bool,
 }
 
 impl<'a> Ctx<'a> {
@@ -36,6 +40,7 @@ impl<'a> Ctx<'a> {
             files: Vec::new(),
             warnings: Vec::new(),
             with_report: true,
+            metrics_only: false,
         }
     }
 }

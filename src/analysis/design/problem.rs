@@ -202,6 +202,7 @@ impl<A: StaticAnalysis> MeshProblem<A> {
         }
         let mut ctx = Ctx::new(w, false);
         ctx.with_report = false;
+        ctx.metrics_only = true;
         A::run(&case, &mut ctx).map_err(|e| match e {
             RunError::Case(c) => at(origins.locate(c)),
             RunError::Analysis(a) => a.to_string(),

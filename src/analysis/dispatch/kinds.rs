@@ -315,6 +315,9 @@ impl Analysis for Static {
         }
         let (model, hinges, case_index) = case.model.build_indexed(true, case.nonlinear)?;
         let (mut r, raw, path_files) = match case.steps.filter(|_| case.nonlinear) {
+            Some(steps) if ctx.metrics_only && fem_static::nonlinear_path::direct_allowed(case) => {
+                fem_static::nonlinear_path::solve_direct(&model, case, steps)
+            }
             Some(steps) => crate::analysis::fem_static::nonlinear_path::solve(&model, case, steps, ctx.with_files),
             None => fem_static::solve_with(&model, ctx.cache).map(|(r, raw)| (r, raw, Vec::new())),
         }

@@ -83,6 +83,55 @@ pub fn solve(
     Ok((r, raw, files))
 }
 
+/// Whether [`solve_direct`] may stand for [`solve`] when only the metrics are read: every load
+/// case under load control, and nothing recorded along the path (no `trace`, no `track`).
+pub fn direct_allowed(case: &StaticCase) -> bool {
+    case.track.is_none()
+        && case
+            .model
+            .load_cases
+            .iter()
+            .all(|c| c.control != Some(path_control::Control::ArcLength) && c.trace.is_none())
+}
+
+/// Nonlinear statics of `case` when only the final states are read (the metrics of a design
+/// loop, [`crate::analysis::Ctx::metrics_only`]): each load case continued from the unloaded
+/// state to λ = 1 in one load step from the linearised tangent predictor
+/// ([`fem::nonlinear::continuation`]: cut as the solver judges; in the case's nominal steps of
+/// 1/`steps` if that fails), every accepted state checked for equilibrium and stability. The
+/// state of an elastic model under proportional loads does not depend on the stable path
+/// that reaches it, so only the path's resolution is given up (`path` has its end points).
+pub fn solve_direct(
+    model: &Model,
+    case: &StaticCase,
+    steps: usize,
+) -> Result<(StaticResult, fem::StaticResults, Files), AnalysisError> {
+    let err = |e: fem::FemError| AnalysisError::new("model", e.to_string());
+    let opts: Vec<fem::NonlinearOptions> = case
+        .model
+        .load_cases
+        .iter()
+        .map(|c| fem::NonlinearOptions {
+            locate_critical: false,
+            ..path_control::options(c, steps)
+        })
+        .collect();
+    let elems = fem::nonlinear::probe::Elements::new(model).map_err(err)?;
+    let load_cases = (0..model.load_cases.len())
+        .map(|ic| {
+            let mut path = fem::nonlinear::continuation::Continuation::new(model, &elems, ic, &opts[ic])?;
+            path.solve_at(1.0, None)
+                .or_else(|_| path.solve_at(1.0, Some(1.0 / steps.max(1) as f64)))
+        })
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(err)?;
+    let (mut r, raw, _) = fem_static::nonlinear_result(model, fem::NonlinearResults { load_cases }, &opts, None);
+    if let Some(first) = r.model.first_mut() {
+        *first = format!("geometrically nonlinear statics (large displacements and rotations, small strains), evaluated for the metrics only: each load case solved from the unloaded state by Newton-Raphson in one load step from the linearised tangent predictor (cut as needed; in steps of 1/{steps} of the load if that fails) instead of the case's {steps} nominal steps, which set only the resolution of the reported path; loads fixed in direction; every state checked for equilibrium and stability");
+    }
+    Ok((r, raw, Files::new()))
+}
+
 fn is_rotation(dof: fem::Dof) -> bool {
     dof.index() >= 3
 }
