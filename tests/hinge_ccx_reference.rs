@@ -14,11 +14,13 @@
 //! −0.19 % axial, −0.69 % torsion, −0.57 % bending from n = 3 to 4; with P2 elements the energy
 //! error falls as h⁴, so n = 4 is within about 0.3 % of the converged stiffnesses. The peak
 //! stresses converge more slowly, and the nodal-averaged peak faster than the integration-point
-//! one: on the corner-filleted hinge n = 3 → 4 → 5 moves the nodal peak +2.1 %, then +0.63 %, the
-//! integration-point peak +3.8 %, then +1.24 % (stiffnesses −0.28 … −0.32 % from n = 4 to 5).
+//! one: n = 3 → 4 → 5 moves the nodal peak +1.35 %, then +0.39 % on the Ruiz et al. notch
+//! R8/t2 (+2.1 %, then +0.63 % on the corner-filleted hinge), the integration-point peak
+//! +2.69 %, then +2.29 % (+3.8 %, then +1.24 %); stiffnesses move by at most 0.32 % from n = 4
+//! to 5 (the R8/t2 notch at n = 5 is within 0.01 % of the scikit-fem n = 5 model).
 //! So the nodal-averaged peak at n = 4 is within about 1 % of its converged value (Richardson
-//! extrapolation of the three meshes), while the integration-point peak stays 6–8 % below it at
-//! every mesh (its points lie inside the elements, the peak on the surface): the
+//! extrapolation of the three meshes), while the integration-point peak stays below it at
+//! every mesh (4.9–6.8 % at n = 5: its points lie inside the elements, the peak on the surface): the
 //! nodal-averaged peak is the converged stress definition and the one compared here
 //! ([`peak_stress_mesh_convergence`]).
 //!
@@ -278,7 +280,12 @@ const CORNER_TOL: [f64; 4] = [5.0, 11.0, 5.0, 5.0];
 /// 0.07: pinned at 3.5), torsion −9.51 … +3.72, axial −0.59 … +1.77, peak σ/M −1.65 … +1.91 %.
 const CORNER_FIT_TOL: [f64; 4] = [3.5, 10.0, 5.0, 5.0];
 /// Peak-stress convergence pins, % (nodal-averaged, integration point), n = 4 → 5.
-const CONV_TOL: [(&str, f64, f64, f64); 1] = [("corner_filleted", 2.0, 0.8, 1.5)];
+/// (family, R mm, nodal-averaged tolerance %, integration-point tolerance %, measured gap %).
+#[allow(clippy::type_complexity)]
+const CONV_TOL: [(&str, f64, f64, f64, f64); 2] = [
+    ("circular_notch", 8.0, 0.6, 2.8, 4.85),
+    ("corner_filleted", 2.0, 0.8, 1.5, 6.82),
+];
 /// 3 held-out turned necks. Measured (bending / torsion / axial / peak σ/M, %):
 /// -0.83 … +0.84 / -2.25 … -0.28 / -1.16 … -0.26 / -2.41 … +0.74.
 const NECK_TOL: [f64; 4] = [3.0, 5.0, 3.0, 3.0];
@@ -349,8 +356,9 @@ fn rows_used_in_the_fits() {
 
 /// Which peak stress of the solid models is converged: the rows of
 /// `tools/ccx_reference_convergence.jsonl` at n = 3, 4, 5 elements across the local thickness
-/// (the corner-filleted l6/R2/t1.5 hinge). Measured, n = 4 → 5: nodal-averaged peak +0.63 %,
-/// integration-point peak +1.24 %, stiffnesses ≤ 0.32 %.
+/// (the Ruiz et al. notch R8/t2 and the corner-filleted l6/R2/t1.5 hinge). Measured, n = 4 → 5:
+/// nodal-averaged peak +0.39 % / +0.63 %, integration-point peak +2.29 % / +1.24 %, stiffnesses
+/// ≤ 0.21 % / ≤ 0.32 %; at n = 5 the integration-point peak lies 4.85 % / 6.82 % below the nodal one.
 #[test]
 fn peak_stress_mesh_convergence() {
     let text = std::fs::read_to_string(concat!(
@@ -368,7 +376,7 @@ fn peak_stress_mesh_convergence() {
         assert_eq!(hits.len(), 1, "{kind} R = {r}, n = {n}");
         hits[0]
     };
-    for (kind, r, tol_nodal, tol_ip) in CONV_TOL {
+    for (kind, r, tol_nodal, tol_ip, gap) in CONV_TOL {
         let pct = |key: &str| 100.0 * (at(kind, r, 5.0, key) / at(kind, r, 4.0, key) - 1.0);
         let (nodal, ip) = (pct("stress_per_moment_nodal"), pct("stress_per_moment_ip"));
         let stiff = pct("k_bend")
@@ -385,11 +393,11 @@ fn peak_stress_mesh_convergence() {
             nodal.abs() < ip.abs(),
             "{kind}: the nodal-averaged peak converges faster"
         );
-        // The integration-point peak stays below the surface (nodal) peak: measured 6.82 % at n = 5.
+        // The integration-point peak stays below the surface (nodal) peak (measured at n = 5).
         let below =
             100.0 * (1.0 - at(kind, r, 5.0, "stress_per_moment_ip") / at(kind, r, 5.0, "stress_per_moment_nodal"));
         assert!(
-            (below - 6.82).abs() < 0.5,
+            (below - gap).abs() < 0.5,
             "{kind}: integration-point peak {below:.2} % below the nodal one"
         );
     }
