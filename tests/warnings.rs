@@ -56,13 +56,15 @@ const KNOWN: [(&str, &[&str]); 6] = [
         ],
     ),
     ("pantilt_8r.json", &["element 4 (hinge) is above its allowable stress"]),
+    // Equal actuator forces load the three legs alike: the leg named is the one whose stress is
+    // largest by rounding (it moved with the torsion recalibration of the hinges).
     (
         "ruiz2019_stage.json",
-        &["load_cases[2] (\"F60\"): the revolute hinge of leg 2 is above the allowable stress"],
+        &["load_cases[2] (\"F60\"): the revolute hinge of leg 3 is above the allowable stress"],
     ),
     (
         "ruiz2019_stage_nonlinear.json",
-        &["load_cases[2] (\"F60\"): the revolute hinge of leg 3 is above the allowable stress"],
+        &["load_cases[2] (\"F60\"): the revolute hinge of leg 1 is above the allowable stress"],
     ),
     (
         "pendulum_nonlinear_transient.json",

@@ -15,7 +15,9 @@
 //!
 //! * **Torsion** of rectangular notches: Saint-Venant is far too soft because the blanks
 //!   restrain warping; k_torsion comes from a Vlasov warping-torsion FE ([`torsion`]) on the
-//!   geometric section in the notch and the load-spreading effective section in the blank. The turned
+//!   geometric section in the notch and the load-spreading effective section in the blank, with
+//!   plate-mode warping of wide waists and torsional spreading at slope 0.55 measured against
+//!   CalculiX solid models ([`torsion::solid_torsion_stiffness`]). The turned
 //!   neck has a circular waist (no warping) and uses plain ∫1/GJ.
 //! * **Three-dimensional effects**, calibrated against converged quadratic-tetrahedron solid
 //!   models (`tools/solid_reference.py`, tests/hinge_solid_reference.rs): load spreading out of
@@ -165,12 +167,7 @@ fn stiffness_of(profile: &Profile, material: &Material, kt: f64) -> Stiffness {
 fn stiffness_from(profile: &Profile, material: &Material, kt: f64, c: Matrix6<f64>) -> Stiffness {
     let k_torsion = match profile.contour {
         Contour::SphericalNeck { .. } => 1.0 / c[(3, 3)],
-        _ => torsion::vlasov_torsion_stiffness(
-            profile,
-            material.e,
-            material.shear_modulus(),
-            torsion::TorsionMesh::default(),
-        ),
+        _ => torsion::solid_torsion_stiffness(profile, material.e, material.nu),
     };
     with_torsion(profile, material, kt, c, k_torsion)
 }
@@ -210,13 +207,7 @@ fn stiffness_pair(profile: &Profile, notch: &Profile, material: &Material, kt: f
     let (c, cn) = (whole.compliance(), alone.compliance());
     let (kt_whole, kt_notch) = match profile.contour {
         Contour::SphericalNeck { .. } => (1.0 / c[(3, 3)], 1.0 / cn[(3, 3)]),
-        _ => torsion::vlasov_torsion_pair(
-            profile,
-            notch,
-            material.e,
-            material.shear_modulus(),
-            torsion::TorsionMesh::default(),
-        ),
+        _ => torsion::solid_torsion_pair(profile, notch, material.e, material.nu),
     };
     (
         with_torsion(profile, material, kt, c, kt_whole),

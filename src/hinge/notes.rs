@@ -83,7 +83,7 @@ const FACE: &str = "compliance referenced to the centre of the loaded blank end 
 const CALIBRATION: &str = "calibration: converged 10-node tetrahedron solid models (tools/solid_reference.py); circular notches t/R 0.06-0.5 within 2% bending, 4% axial; turned necks l/t >= 1 within 3% bending, 5% torsion, 3% axial; leaf within 5%";
 const NECK_TORSION: &str =
     "torsion: Saint-Venant (circular waist, no warping); clipped-disk J blended between disk and square";
-const VLASOV: &str = "torsion: Vlasov non-uniform torsion FE (Hermite cubics), Timoshenko-Goodier J(x), exact rectangle warping constant, warping restrained at both blank end faces; in the blank the load-spreading effective thickness (solid models: circular notches -11...+4%, corner-filleted -14%)";
+const VLASOV: &str = "torsion: Vlasov non-uniform torsion FE (Hermite cubics), Timoshenko-Goodier J(x), exact rectangle warping constant, warping restrained at both blank end faces; in the blank the load-spreading effective thickness at slope 0.55; wide waists warp in the plate mode (Gamma = w^3 t^3/144, modulus E/(1-nu^2)) (CalculiX solid models: see the README validation table)";
 const NO_SPREAD: &str = "load spreading: none needed (the contour never widens faster than slope 1/2)";
 
 /// The idealisations and models of a characterisation, as the numbers their text quotes
@@ -128,7 +128,7 @@ impl ModelNotes {
     pub fn invariant_lines(&self) -> &'static [&'static str] {
         const MODULUS: &str = "compliant-axis bending modulus of the notch region E*P/G (solid-calibrated): short-notch G and plane-strain P in calibration";
         const NECK_STRESS: &str = "stress: 32M/(pi t^3) at the waist x Kt = stress_concentration (shoulder-fillet Kt = 1 + 0.041 sqrt(t/R), fitted to solid models within 2%)";
-        const NOTCH_STRESS: &str = "stress: 6M/(w t^2) at the waist x stress_concentration (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, divided by sqrt(P) for the plane-strain waist; solid models: within 6%)";
+        const NOTCH_STRESS: &str = "stress: 6M/(w t^2) at the waist x stress_concentration (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, ^(1/5) for the corner fillet, divided by sqrt(P) for the plane-strain waist; solid models: within 6%)";
         const SPREAD: &str = "load spreading (solid-calibrated): effective half-size grows at calibration.load_spreading.slope from |x| = from_mm to to_mm";
         match (self.neck, self.spread.is_some()) {
             (true, true) => &[BEAM, FACE, NECK_TORSION, NECK_STRESS, SPREAD, MODULUS, CALIBRATION],
@@ -147,7 +147,7 @@ impl ModelNotes {
             v.push(format!("stress: 32M/(pi t^3) at the waist x Kt = {kt:.4} (shoulder-fillet Kt = 1 + 0.041 sqrt(t/R), fitted to solid models within 2%)"));
         } else {
             v.push(VLASOV.into());
-            v.push(format!("stress: 6M/(w t^2) at the waist x {kt:.4} (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, divided by sqrt(P) for the plane-strain waist; solid models: within 6%)"));
+            v.push(format!("stress: 6M/(w t^2) at the waist x {kt:.4} (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, ^(1/5) for the corner fillet, divided by sqrt(P) for the plane-strain waist; solid models: within 6%)"));
         }
         match self.spread {
             Some((slope, from, reach)) => v.push(format!(

@@ -178,12 +178,7 @@ pub fn vlasov_compliance_derivative(
         .ok()?;
         let e = material.e + s * step * tangent.e;
         let nu = material.nu + s * step * tangent.nu;
-        let k = super::torsion::vlasov_torsion_stiffness(
-            &moved,
-            e,
-            e / (2.0 * (1.0 + nu)),
-            super::torsion::TorsionMesh::default(),
-        );
+        let k = super::torsion::solid_torsion_stiffness(&moved, e, nu);
         sum += w / k;
     }
     Some(sum / (12.0 * step))

@@ -32,11 +32,13 @@
 //! banded Cholesky on the stack.
 
 mod mesh;
+mod solid;
 
 use super::profile::Profile;
 use super::section::rect_torsion_warping;
 use mesh::half_nodes;
 pub use mesh::TorsionMesh;
+pub use solid::{solid_torsion_pair, solid_torsion_stiffness, warping_modulus_factor, TORSION_SPREAD_SLOPE};
 
 /// 4-point Gauss–Legendre on [0, 1].
 const GL4_X: [f64; 4] = [
