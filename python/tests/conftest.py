@@ -5,6 +5,7 @@ import json
 import math
 import os
 import subprocess
+from collections.abc import Mapping
 from pathlib import Path
 
 import pytest
@@ -43,9 +44,10 @@ def cli_error_path(stderr: str) -> str:
 
 def differences(want, got, path="", rel=1e-12, out=None):
     """Where two results differ: paths whose types, keys, lengths or values differ (floats by
-    more than `rel` relative to the larger magnitude)."""
+    more than `rel` relative to the larger magnitude). Mappings (dicts, sweep rows) compare
+    key by key, through their own `[]`."""
     out = [] if out is None else out
-    if isinstance(want, dict) and isinstance(got, dict):
+    if isinstance(want, Mapping) and isinstance(got, Mapping):
         if list(want) != list(got):
             out.append(f"{path}: keys {list(want)} vs {list(got)}")
         for k in want:

@@ -1,6 +1,7 @@
 """Every bundled case through both `flexfem run` (the binary) and `flexfem.run` (the package):
 the results are equal, floats exactly or to 1e-12 relative (results hold no timing fields).
-The sweep cases go through `flexfem sweep` and `flexfem.sweep`: the same lines, by index."""
+The sweep cases go through `flexfem sweep` and `flexfem.sweep`: the same lines, by index (rows
+read key by key and as plain dicts)."""
 
 import json
 
@@ -34,4 +35,6 @@ def test_sweep_equals_cli(name):
     want = sorted((json.loads(line) for line in out.splitlines()), key=lambda r: r["index"])
     got = list(flexfem.sweep(CASES / name))
     assert [r["index"] for r in got] == list(range(len(want)))
+    # The rows read through their own keys, and as plain dicts.
     assert differences(want, got) == []
+    assert differences(want, [r.to_dict() for r in got]) == []
