@@ -215,11 +215,8 @@ class Sweep:
 
     def _finish(self) -> None:
         """Runs the designs still to run."""
-        while len(self._rows) < len(self):
-            batch = self._native.next_rows()
-            if not batch:
-                return
-            self._rows.extend(batch)
+        if len(self._rows) < len(self):
+            self._rows.extend(self._native.rest_rows())
 
     def rows(self) -> List[Row]:
         """Every design's row, in index order (runs the designs still to run)."""

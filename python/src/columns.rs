@@ -1,50 +1,54 @@
 //! `Sweep.columns()` and `Sweep.to_pandas()`: the table of `flexfem sweep --csv` (`index`,
 //! each varied path, every scalar leaf of the result under its dotted name, `error`; the leaves
-//! as [`table::visit_leaves`] finds them) as one numpy array per column, built on the Rust side
-//! from the lines (parsed in parallel, without the GIL) instead of through a dict per row.
+//! as the library's CSV table finds them) as one numpy array per column, built on the Rust side
+//! from the lines ([`leaves`]: read in parallel, without the GIL, no JSON value) instead of
+//! through a dict per row.
 //!
 //! A column's type follows its cells, as `pandas.read_csv` of the CSV table infers it: integers
 //! everywhere → int64; numbers with some cells empty (null or missing) or not integral →
 //! float64 (empty cells NaN); booleans everywhere → bool; no cell at all → float64 of NaN;
 //! anything else (text, mixed kinds) → an object array of Python values (empty cells `None`).
 
+use crate::leaves::{self, Cell, Flat};
 use crate::row::Stored;
 use flexfem::analysis::units::UnitOf;
-use flexfem::design::table::visit_leaves;
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyList;
 use rayon::prelude::*;
-use serde_json::Value;
 use std::collections::HashMap;
 use std::sync::Arc;
 
 /// One column's cells, typed.
-enum Column<'a> {
+enum Column {
     Int(Vec<i64>),
     Float(Vec<f64>),
     Bool(Vec<bool>),
-    Object(Vec<Option<&'a Value>>),
+    Object(Vec<Cell>),
 }
 
-impl<'a> Column<'a> {
-    /// The column of `cells` (`None` and null: empty).
-    fn of(cells: Vec<Option<&'a Value>>) -> Column<'a> {
-        let present = || cells.iter().flatten().filter(|v| !v.is_null());
-        if present().all(|v| v.is_number()) {
-            if cells.iter().all(|c| c.is_some_and(|v| v.is_i64())) {
-                return Column::Int(cells.iter().map(|c| c.and_then(Value::as_i64).unwrap_or(0)).collect());
-            }
-            let nan = |c: &Option<&Value>| c.and_then(Value::as_f64).unwrap_or(f64::NAN);
-            return Column::Float(cells.iter().map(nan).collect());
-        }
-        if cells.iter().all(|c| c.is_some_and(Value::is_boolean)) {
-            return Column::Bool(
+impl Column {
+    /// The column of `cells` (missing and null: empty).
+    fn of(cells: Vec<Cell>) -> Column {
+        let number = |c: &Cell| matches!(c, Cell::Int(_) | Cell::Float(_) | Cell::Null | Cell::Missing);
+        if cells.iter().all(|c| matches!(c, Cell::Int(_))) {
+            return Column::Int(
                 cells
                     .iter()
-                    .map(|c| c.and_then(Value::as_bool).unwrap_or(false))
+                    .map(|c| if let Cell::Int(i) = c { *i } else { 0 })
                     .collect(),
             );
+        }
+        if cells.iter().all(number) {
+            let x = |c: &Cell| match c {
+                Cell::Int(i) => *i as f64,
+                Cell::Float(x) => *x,
+                _ => f64::NAN,
+            };
+            return Column::Float(cells.iter().map(x).collect());
+        }
+        if cells.iter().all(|c| matches!(c, Cell::Bool(_))) {
+            return Column::Bool(cells.iter().map(|c| matches!(c, Cell::Bool(true))).collect());
         }
         Column::Object(cells)
     }
@@ -57,9 +61,15 @@ impl<'a> Column<'a> {
             Column::Object(cells) => {
                 let objects = cells
                     .into_iter()
-                    .map(|c| match c {
-                        Some(v) => crate::errors::pythonize(py, v),
-                        None => Ok(py.None()),
+                    .map(|c| {
+                        Ok(match c {
+                            Cell::Missing | Cell::Null => py.None(),
+                            Cell::Bool(b) => b.into_pyobject(py)?.to_owned().into_any().unbind(),
+                            Cell::Int(i) => i.into_pyobject(py)?.into_any().unbind(),
+                            Cell::Float(x) => x.into_pyobject(py)?.into_any().unbind(),
+                            Cell::Text(s) => s.into_pyobject(py)?.into_any().unbind(),
+                            Cell::Other(v) => crate::errors::pythonize(py, &v)?,
+                        })
                     })
                     .collect::<PyResult<Vec<Py<PyAny>>>>()?;
                 PyArray1::from_vec(py, objects).into_any()
@@ -85,60 +95,56 @@ pub fn columns<'py>(
     rows: &[Arc<Stored>],
     units: Option<(UnitOf, UnitOf)>,
 ) -> PyResult<(Vec<String>, Vec<String>, Bound<'py, PyList>)> {
-    // Parsing and the cells of each column, without the GIL; Python objects after.
+    // The lines read and the cells gathered into columns without the GIL; Python objects after.
     let (names, typed) = py.detach(|| {
-        let values: Vec<&Value> = rows.par_iter().map(|r| r.value()).filter(|v| v.is_object()).collect();
-        let n = values.len();
-        // Each row's result leaves: their names (one per line) and values.
-        let leaves: Vec<(String, Vec<&Value>)> = values
-            .par_iter()
-            .map(|row| {
-                let (mut names, mut cells) = (String::new(), Vec::new());
-                if let Some(result) = row.get("result") {
-                    let mut name = String::new();
-                    visit_leaves(&mut name, result, &mut |n, x| {
-                        names.push_str(n);
-                        names.push('\n');
-                        cells.push(x);
-                    });
-                }
-                (names, cells)
-            })
-            .collect();
-        // Columns in order of first appearance, assigned once per distinct sequence of names.
-        let mut result_names: Vec<&str> = Vec::new();
-        let mut column_of: HashMap<&str, usize> = HashMap::new();
-        let mut shapes: HashMap<&str, Vec<usize>> = HashMap::new();
-        for (names, _) in &leaves {
-            if shapes.contains_key(names.as_str()) {
-                continue;
-            }
-            let cols = names
-                .lines()
-                .map(|name| {
-                    *column_of.entry(name).or_insert_with(|| {
-                        result_names.push(name);
-                        result_names.len() - 1
-                    })
-                })
-                .collect();
-            shapes.insert(names.as_str(), cols);
+        let flats: Vec<Flat> = rows.par_iter().filter_map(|r| leaves::flat(&r.text)).collect();
+        let n = flats.len();
+        // Columns in order of first appearance, assigned once per distinct sequence of names
+        // (a row of the previous row's shape needs no look-up).
+        let mut result_names: Vec<String> = Vec::new();
+        let mut column_of: HashMap<String, usize> = HashMap::new();
+        let mut shape_of: HashMap<&str, usize> = HashMap::new();
+        let mut shapes: Vec<Vec<usize>> = Vec::new();
+        let mut shape_ids: Vec<usize> = Vec::with_capacity(n);
+        let mut last: Option<(&str, usize)> = None;
+        for f in &flats {
+            let names = f.names.as_str();
+            let id = match last {
+                Some((prev, id)) if prev == names => id,
+                _ => *shape_of.entry(names).or_insert_with(|| {
+                    let cols = names
+                        .lines()
+                        .map(|name| {
+                            *column_of.entry(name.to_string()).or_insert_with(|| {
+                                result_names.push(name.to_string());
+                                result_names.len() - 1
+                            })
+                        })
+                        .collect();
+                    shapes.push(cols);
+                    shapes.len() - 1
+                }),
+            };
+            last = Some((names, id));
+            shape_ids.push(id);
         }
-        let mut cells: Vec<Vec<Option<&Value>>> = vec![vec![None; n]; result_names.len()];
-        for (r, (names, values)) in leaves.iter().enumerate() {
-            for (&c, &v) in shapes[names.as_str()].iter().zip(values) {
-                cells[c][r] = Some(v);
+        let mut cells: Vec<Vec<Cell>> = vec![vec![Cell::Missing; n]; result_names.len()];
+        let param = |f: &Flat, a: &str| Cell::of(f.params.as_ref().and_then(|p| p.get(a)));
+        let mut all: Vec<Vec<Cell>> = vec![flats.iter().map(|f| Cell::of(f.index.as_ref())).collect()];
+        all.extend(
+            axes.iter()
+                .map(|a| flats.iter().map(|f| param(f, a)).collect::<Vec<_>>()),
+        );
+        let error: Vec<Cell> = flats.iter().map(|f| Cell::of(f.error.as_ref())).collect();
+        for (r, (f, &id)) in flats.into_iter().zip(&shape_ids).enumerate() {
+            for (cell, &c) in f.cells.into_iter().zip(&shapes[id]) {
+                cells[c][r] = cell;
             }
         }
-        let top = |key: &str| values.iter().map(|v| v.get(key)).collect::<Vec<_>>();
-        let param = |a: &str| values.iter().map(|v| v.get("params").and_then(|p| p.get(a))).collect();
-        let mut all: Vec<Vec<Option<&Value>>> = vec![top("index")];
-        all.extend(axes.iter().map(|a| param(a)));
         all.extend(cells);
-        all.push(top("error"));
-        let names: Vec<String> = result_names.iter().map(|s| s.to_string()).collect();
+        all.push(error);
         let typed: Vec<Column> = all.into_par_iter().map(Column::of).collect();
-        (names, typed)
+        (result_names, typed)
     });
     let (result_unit, input_unit) = (units.map(|u| u.0), units.map(|u| u.1));
     let mut plain = vec!["index".to_string()];

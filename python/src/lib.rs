@@ -12,6 +12,7 @@ mod arrays;
 mod columns;
 mod errors;
 mod input;
+mod leaves;
 mod row;
 mod sweep;
 

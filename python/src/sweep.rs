@@ -208,13 +208,27 @@ impl SweepRun {
                 }
             }
         }
-        let mut rows = Vec::new();
-        while let Some((_, failed, line)) = self.early.remove(&self.next) {
-            self.next += 1;
-            self.failed += usize::from(failed);
-            let stored = Arc::new(Stored::new(line));
-            self.lines.push(Arc::clone(&stored));
-            rows.push(Row::of_line(stored));
+        PyList::new(py, self.hand_out())
+    }
+
+    /// The rows of every design not yet handed out (index order), after the last design ran:
+    /// waits for the sweep's thread without the GIL and without waking for each line.
+    fn rest_rows<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        self.join(py)?;
+        let rx = self
+            .finished
+            .lock()
+            .map_err(|_| errors::internal(&"the sweep's lines were poisoned"))?;
+        for f in rx.try_iter() {
+            self.early.insert(f.0, f);
+        }
+        drop(rx);
+        let rows = self.hand_out();
+        if self.next < self.len {
+            return Err(errors::internal(&format!(
+                "the sweep stopped before design {} of {}",
+                self.next, self.len
+            )));
         }
         PyList::new(py, rows)
     }
@@ -236,6 +250,19 @@ impl SweepRun {
 }
 
 impl SweepRun {
+    /// The finished rows from the next index on, in order, moved to the handed-out lines.
+    fn hand_out(&mut self) -> Vec<Row> {
+        let mut rows = Vec::new();
+        while let Some((_, failed, line)) = self.early.remove(&self.next) {
+            self.next += 1;
+            self.failed += usize::from(failed);
+            let stored = Arc::new(Stored::new(line));
+            self.lines.push(Arc::clone(&stored));
+            rows.push(Row::of_line(stored));
+        }
+        rows
+    }
+
     /// The column units of the sweep's analysis kind.
     fn units(&self) -> Option<(UnitOf, UnitOf)> {
         self.kind
