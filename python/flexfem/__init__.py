@@ -227,7 +227,7 @@ class Sweep:
         self._finish()
         if self._columns is None:
             names, headed, arrays = self._native.columns()
-            self._columns = (names, headed, arrays)
+            self._columns = (_unique(names), _unique(headed), arrays)
         return self._columns
 
     def columns(self) -> Dict[str, np.ndarray]:
@@ -235,7 +235,9 @@ class Sweep:
 
         Columns: ``index``, each varied path, every scalar leaf of the result under its
         dotted name (``k_bend``, ``compliance.4.4``, ``load_cases.0.max_stress``; arrays of more
-        than 16 numbers and lists of text are left out, as in the CSV), then ``error``. A column
+        than 16 numbers and lists of text are left out, as in the CSV), then ``error``; a name
+        that comes twice (a result echoing a varied parameter) gets ``.1`` the second time, as
+        ``pandas.read_csv`` names it. A column
         of integers is int64, of numbers float64 (NaN where a row has none, e.g. an error row),
         of booleans bool, of text or mixed values object (``None`` where a row has none).
         Built on the Rust side from the lines, in parallel (runs the designs still to run).
@@ -260,6 +262,22 @@ class Sweep:
 
         _, headed, arrays = self._table()
         return pd.DataFrame(dict(zip(headed, arrays)), copy=False)  # zip-checked: as above
+
+
+def _unique(names: List[str]) -> List[str]:
+    """Column names made unique as ``pandas.read_csv`` makes them: a name seen before gets
+    ``.1``, ``.2``, ... (a result that echoes a varied parameter, e.g. ``parameters.t``)."""
+    seen: Dict[str, int] = {}
+    out = []
+    for name in names:
+        unique = name
+        while unique in seen:
+            seen[name] += 1
+            unique = f"{name}.{seen[name]}"
+        seen.setdefault(name, 0)
+        seen[unique] = 0
+        out.append(unique)
+    return out
 
 
 def sweep(
