@@ -28,29 +28,43 @@ enum Column {
 }
 
 impl Column {
-    /// The column of `cells` (missing and null: empty).
-    fn of(cells: Vec<Cell>) -> Column {
-        let number = |c: &Cell| matches!(c, Cell::Int(_) | Cell::Float(_) | Cell::Null | Cell::Missing);
-        if cells.iter().all(|c| matches!(c, Cell::Int(_))) {
+    /// The column of the cells `cell(0..n)` (missing and null: empty), read in one pass when
+    /// they are numbers (a second for integers, booleans and text).
+    fn of<'a>(n: usize, cell: impl Fn(usize) -> &'a Cell) -> Column {
+        let mut floats = Vec::with_capacity(n);
+        let (mut ints, mut numbers, mut bools) = (true, true, true);
+        for r in 0..n {
+            match cell(r) {
+                Cell::Int(i) => {
+                    bools = false;
+                    floats.push(*i as f64);
+                }
+                Cell::Float(x) => {
+                    (ints, bools) = (false, false);
+                    floats.push(*x);
+                }
+                Cell::Null | Cell::Missing => {
+                    (ints, bools) = (false, false);
+                    floats.push(f64::NAN);
+                }
+                Cell::Bool(_) => (ints, numbers) = (false, false),
+                Cell::Text(_) | Cell::Other(_) => (ints, numbers, bools) = (false, false, false),
+            }
+        }
+        if ints {
             return Column::Int(
-                cells
-                    .iter()
-                    .map(|c| if let Cell::Int(i) = c { *i } else { 0 })
+                (0..n)
+                    .map(|r| if let Cell::Int(i) = cell(r) { *i } else { 0 })
                     .collect(),
             );
         }
-        if cells.iter().all(number) {
-            let x = |c: &Cell| match c {
-                Cell::Int(i) => *i as f64,
-                Cell::Float(x) => *x,
-                _ => f64::NAN,
-            };
-            return Column::Float(cells.iter().map(x).collect());
+        if numbers {
+            return Column::Float(floats);
         }
-        if cells.iter().all(|c| matches!(c, Cell::Bool(_))) {
-            return Column::Bool(cells.iter().map(|c| matches!(c, Cell::Bool(true))).collect());
+        if bools {
+            return Column::Bool((0..n).map(|r| matches!(cell(r), Cell::Bool(true))).collect());
         }
-        Column::Object(cells)
+        Column::Object((0..n).map(|r| cell(r).clone()).collect())
     }
 
     fn to_numpy<'py>(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
@@ -77,6 +91,9 @@ impl Column {
         })
     }
 }
+
+/// The cell of a row that has no such leaf.
+static MISSING: Cell = Cell::Missing;
 
 /// `name [unit]` when `unit_of` gives the dotted path `name` a unit (the CSV table's header).
 fn headed(name: &str, unit_of: Option<UnitOf>) -> String {
@@ -128,22 +145,33 @@ pub fn columns<'py>(
             last = Some((names, id));
             shape_ids.push(id);
         }
-        let mut cells: Vec<Vec<Cell>> = vec![vec![Cell::Missing; n]; result_names.len()];
+        // Where each column's cell is in a row of each shape.
+        let position: Vec<Vec<Option<usize>>> = shapes
+            .iter()
+            .map(|cols| {
+                let mut at = vec![None; result_names.len()];
+                cols.iter().enumerate().for_each(|(k, &c)| at[c] = Some(k));
+                at
+            })
+            .collect();
         let param = |f: &Flat, a: &str| Cell::of(f.params.as_ref().and_then(|p| p.get(a)));
-        let mut all: Vec<Vec<Cell>> = vec![flats.iter().map(|f| Cell::of(f.index.as_ref())).collect()];
-        all.extend(
+        let mut top: Vec<Vec<Cell>> = vec![flats.iter().map(|f| Cell::of(f.index.as_ref())).collect()];
+        top.extend(
             axes.iter()
                 .map(|a| flats.iter().map(|f| param(f, a)).collect::<Vec<_>>()),
         );
-        let error: Vec<Cell> = flats.iter().map(|f| Cell::of(f.error.as_ref())).collect();
-        for (r, (f, &id)) in flats.into_iter().zip(&shape_ids).enumerate() {
-            for (cell, &c) in f.cells.into_iter().zip(&shapes[id]) {
-                cells[c][r] = cell;
-            }
-        }
-        all.extend(cells);
-        all.push(error);
-        let typed: Vec<Column> = all.into_par_iter().map(Column::of).collect();
+        top.push(flats.iter().map(|f| Cell::of(f.error.as_ref())).collect());
+        let error = top.pop().unwrap_or_default();
+        // Each column gathered and typed on its own (in parallel): no table of cells.
+        let result = (0..result_names.len()).into_par_iter().map(|c| {
+            Column::of(n, |r| {
+                position[shape_ids[r]][c].map_or(&MISSING, |k| &flats[r].cells[k])
+            })
+        });
+        let of = |cells: &Vec<Cell>| Column::of(cells.len(), |r| &cells[r]);
+        let mut typed: Vec<Column> = top.iter().map(of).collect();
+        typed.extend(result.collect::<Vec<_>>());
+        typed.push(of(&error));
         (result_names, typed)
     });
     let (result_unit, input_unit) = (units.map(|u| u.0), units.map(|u| u.1));
