@@ -67,7 +67,7 @@ impl Column {
         Column::Object((0..n).map(|r| cell(r).clone()).collect())
     }
 
-    fn to_numpy<'py>(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+    fn into_numpy<'py>(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         Ok(match self {
             Column::Int(v) => PyArray1::from_vec(py, v).into_any(),
             Column::Float(v) => PyArray1::from_vec(py, v).into_any(),
@@ -189,7 +189,7 @@ pub fn columns<'py>(
     with_units.push("error".into());
     let arrays = typed
         .into_iter()
-        .map(|c| c.to_numpy(py))
+        .map(|c| c.into_numpy(py))
         .collect::<PyResult<Vec<_>>>()?;
     Ok((plain, with_units, PyList::new(py, arrays)?))
 }

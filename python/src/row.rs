@@ -146,12 +146,7 @@ impl Row {
         let items = self
             .object()?
             .iter()
-            .map(|(k, v)| {
-                Ok(PyTuple::new(
-                    py,
-                    [k.into_pyobject(py)?.into_any().unbind(), self.to_py(py, k, v)?],
-                )?)
-            })
+            .map(|(k, v)| PyTuple::new(py, [k.into_pyobject(py)?.into_any().unbind(), self.to_py(py, k, v)?]))
             .collect::<PyResult<Vec<_>>>()?;
         PyList::new(py, items)
     }
