@@ -47,7 +47,7 @@ impl Stored {
 /// `row[key]`, `key in row`, `len`, iteration over its keys, `keys()`, `values()`, `items()`,
 /// `get()` and `==` (with rows and dicts); it is a `collections.abc.Mapping` (`dict(row)`
 /// keeps nested rows). `to_dict()` gives plain dicts and lists all the way down (for
-/// `json.dumps`, or a copy to change).
+/// `json.dumps`, or a copy to change); a row pickles and copies as that plain dict.
 #[pyclass(module = "flexfem._flexfem", name = "Row", frozen, mapping)]
 pub struct Row {
     stored: Arc<Stored>,
@@ -184,6 +184,11 @@ impl Row {
             _ => return Ok(py.NotImplemented()),
         };
         Ok(PyBool::new(py, eq == want_eq).to_owned().into_any().unbind())
+    }
+
+    /// Pickles (and copies) as its plain dict (`to_dict()`), so rows cross process boundaries.
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyDict>,))> {
+        Ok((py.get_type::<PyDict>().into_any(), (self.to_dict(py)?,)))
     }
 
     /// As the dict's repr.

@@ -2,6 +2,7 @@
 identities the result must satisfy (each test names its reference)."""
 
 import json
+import pickle
 import threading
 import time
 from collections.abc import Mapping
@@ -153,6 +154,7 @@ def test_sweep_rows_are_mappings_over_the_cli_lines():
     assert result["compliance"] == line["result"]["compliance"]  # a list of lists, as json gives
     assert dict(row.items())["params"] == line["params"] and row.values()[0] == line["index"]
     assert repr(row) == repr(line) and json.loads(json.dumps(row.to_dict())) == line
+    assert pickle.loads(pickle.dumps(row)) == line and type(pickle.loads(pickle.dumps(row))) is dict
 
 
 def test_sweep_columns_equal_the_cli_csv_cells(tmp_path):
