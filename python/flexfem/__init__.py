@@ -10,8 +10,8 @@ Functions:
 - :func:`check` — validate without solving (``flexfem check``);
 - :func:`schema` — the JSON Schema of case files (``flexfem schema``);
 - :func:`hinge` — one flexure hinge, with its 6×6 compliance as a numpy array;
-- :func:`sweep` — the designs of a sweep as an iterator of results (``flexfem sweep``),
-  with :meth:`Sweep.to_pandas`;
+- :func:`sweep` — the designs of a sweep as an iterator of rows (``flexfem sweep``), with
+  :meth:`Sweep.columns` (numpy) and :meth:`Sweep.to_pandas`;
 - :func:`matrices` — the reduced K and M as ``scipy.sparse`` matrices;
 - :func:`state_space` — A, B, C, D of an ``frf`` case as numpy arrays.
 
@@ -24,6 +24,7 @@ core (or ``RAYON_NUM_THREADS``).
 from __future__ import annotations
 
 import os
+from collections.abc import Mapping
 from typing import Any, Dict, Iterator, List, Optional, Union
 
 import numpy as np
@@ -34,6 +35,7 @@ __all__ = [
     "AnalysisError",
     "CaseError",
     "Hinge",
+    "Row",
     "Sweep",
     "check",
     "hinge",
@@ -45,6 +47,10 @@ __all__ = [
 ]
 
 __version__ = _flexfem.__version__
+
+Row = _flexfem.Row
+# A read-only mapping over a sweep line (see its docstring): a Mapping for isinstance checks.
+Mapping.register(Row)
 
 Case = Union[Dict[str, Any], str, "os.PathLike[str]"]
 
@@ -170,29 +176,32 @@ def hinge(type: str, material: Union[str, Dict[str, Any]] = "Al7075", **dims: An
 
 
 class Sweep:
-    """The designs of a sweep, run in parallel; iterate for their results in index order.
+    """The designs of a sweep, run in parallel; iterate for their rows in index order.
 
-    Each item is the design's line of ``flexfem sweep`` as a ``dict``: ``index``, ``params``
-    (varied path → value), ``design_hash`` and ``result`` — or ``error`` for a design that
-    failed (the others go on; :attr:`failed` counts them). Designs run while you iterate.
+    Each item is the design's line of ``flexfem sweep`` as a :class:`Row` (a read-only
+    mapping): ``index``, ``params`` (varied path → value), ``design_hash`` and ``result`` — or
+    ``error`` for a design that failed (the others go on; :attr:`failed` counts them). Designs
+    run while you iterate. For the whole table, :meth:`columns` (numpy arrays) and
+    :meth:`to_pandas` build it column by column from the lines, without a dict per row.
     """
 
     def __init__(self, native: Any):
         self._native = native
-        self._rows: List[Dict[str, Any]] = []
+        self._rows: List[Row] = []
+        self._columns: Optional[tuple] = None
 
     def __len__(self) -> int:
         """Number of designs."""
         return len(self._native)
 
-    def __iter__(self) -> Iterator[Dict[str, Any]]:
+    def __iter__(self) -> Iterator[Row]:
         yield from self._rows
         while True:
-            row = self._native.next_row()
-            if row is None:
+            batch = self._native.next_rows()
+            if not batch:
                 return
-            self._rows.append(row)
-            yield row
+            self._rows.extend(batch)
+            yield from batch
 
     @property
     def axes(self) -> List[str]:
@@ -204,28 +213,71 @@ class Sweep:
         """Designs that failed so far (their rows hold ``error``)."""
         return self._native.failed
 
-    def rows(self) -> List[Dict[str, Any]]:
+    def _finish(self) -> None:
+        """Runs the designs still to run."""
+        if len(self._rows) < len(self):
+            self._rows.extend(self._native.rest_rows())
+
+    def rows(self) -> List[Row]:
         """Every design's row, in index order (runs the designs still to run)."""
-        for _ in self:
-            pass
+        self._finish()
         return list(self._rows)
+
+    def _table(self) -> tuple:
+        self._finish()
+        if self._columns is None:
+            names, headed, arrays = self._native.columns()
+            self._columns = (_unique(names), _unique(headed), arrays)
+        return self._columns
+
+    def columns(self) -> Dict[str, np.ndarray]:
+        """The table of :meth:`to_csv` as ``{column: numpy array}``, one entry per design.
+
+        Columns: ``index``, each varied path, every scalar leaf of the result under its
+        dotted name (``k_bend``, ``compliance.4.4``, ``load_cases.0.max_stress``; arrays of more
+        than 16 numbers and lists of text are left out, as in the CSV), then ``error``; a name
+        that comes twice (a result echoing a varied parameter) gets ``.1`` the second time, as
+        ``pandas.read_csv`` names it. A column
+        of integers is int64, of numbers float64 (NaN where a row has none, e.g. an error row),
+        of booleans bool, of text or mixed values object (``None`` where a row has none).
+        Built on the Rust side from the lines, in parallel (runs the designs still to run).
+        """
+        names, _, arrays = self._table()
+        return dict(zip(names, arrays))  # zip-checked: both from one table, one per column
 
     def to_csv(self) -> str:
         """The table ``flexfem sweep --csv`` writes: one row per design, the varied parameters
         and the scalar results (with units in the column names)."""
-        self.rows()
+        self._finish()
         return self._native.table_csv()
 
     def to_pandas(self):
-        """The table of :meth:`to_csv` as a ``pandas.DataFrame`` (pandas is optional:
+        """The table of :meth:`to_csv` as a ``pandas.DataFrame``, with the same column names
+        (units in brackets), built from :meth:`columns` (pandas is optional:
         ``pip install pandas``)."""
         try:
             import pandas as pd
         except ImportError as e:  # pragma: no cover - depends on the environment
             raise ImportError("Sweep.to_pandas needs pandas: pip install pandas") from e
-        import io
 
-        return pd.read_csv(io.StringIO(self.to_csv()))
+        _, headed, arrays = self._table()
+        return pd.DataFrame(dict(zip(headed, arrays)), copy=False)  # zip-checked: as above
+
+
+def _unique(names: List[str]) -> List[str]:
+    """Column names made unique as ``pandas.read_csv`` makes them: a name seen before gets
+    ``.1``, ``.2``, ... (a result that echoes a varied parameter, e.g. ``parameters.t``)."""
+    seen: Dict[str, int] = {}
+    out = []
+    for name in names:
+        unique = name
+        while unique in seen:
+            seen[name] += 1
+            unique = f"{name}.{seen[name]}"
+        seen.setdefault(name, 0)
+        seen[unique] = 0
+        out.append(unique)
+    return out
 
 
 def sweep(
@@ -236,7 +288,7 @@ def sweep(
     full: bool = False,
     threads: Optional[int] = None,
 ) -> Sweep:
-    """Runs the full factorial of a sweep (``flexfem sweep``); returns an iterator of results.
+    """Runs the full factorial of a sweep (``flexfem sweep``); returns an iterator of rows.
 
     Args:
         case: a sweep case (``"analysis": "sweep"``), or a base case when ``vary`` is given.

@@ -3,13 +3,17 @@
 //! Each function takes a case (a dict, a case file's path, or JSON text), runs it through the
 //! library's own entry points (those `flexfem run | check | schema | sweep` call) with the GIL
 //! released during the solve, and hands back Python objects: the result as a dict built
-//! directly from the result value (no JSON text), matrices as numpy arrays and scipy.sparse
+//! directly from the result value (no JSON text), sweep rows as read-only mappings over their
+//! lines and the sweep table as numpy columns, matrices as numpy arrays and scipy.sparse
 //! matrices over the Rust buffers. The idiomatic layer (docstrings, exceptions, `to_pandas`) is
 //! the Python package `flexfem/` around this module.
 
 mod arrays;
+mod columns;
 mod errors;
 mod input;
+mod leaves;
+mod row;
 mod sweep;
 
 use flexfem::analysis::{self, Case};
@@ -143,6 +147,7 @@ fn _flexfem(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(state_space, m)?)?;
     m.add_function(wrap_pyfunction!(hinge, m)?)?;
     m.add_class::<sweep::SweepRun>()?;
+    m.add_class::<row::Row>()?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

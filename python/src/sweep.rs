@@ -1,27 +1,31 @@
 //! `flexfem.sweep`: the designs of a sweep run on a thread of their own through the batch
 //! driver `flexfem sweep` uses ([`flexfem::design::sweep::run_sweep_formatted`], rayon workers,
-//! each line with the JSON value it was written from); the iterator hands out their rows in index
-//! order as they finish, waiting without the GIL, as Python objects built from those values.
+//! the same route and the same lines as the command line's); the iterator hands out their rows
+//! in index order as they finish, waiting without the GIL, as [`Row`]s over the lines (values
+//! become Python objects when they are read), and the table as numpy columns ([`columns`]).
 
+use crate::columns;
 use crate::errors;
 use crate::input::CaseInput;
+use crate::row::{Row, Stored};
+use flexfem::analysis::units::UnitOf;
 use flexfem::analysis::{self, Case};
 use flexfem::case::sweep::Sweep;
 use flexfem::case::CaseError;
 use flexfem::design::sweep::{run_sweep_formatted, LineFormat, Shard, Tally};
 use flexfem::design::table;
 use pyo3::prelude::*;
+use pyo3::types::PyList;
 use serde_json::{Map, Value};
 use std::collections::{BTreeMap, HashSet};
 use std::io;
 use std::path::PathBuf;
 use std::sync::mpsc::{channel, Receiver};
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
 
-/// One finished design: its index, whether it is an error row, its JSON line and the value
-/// the line was written from (turned into Python objects without parsing the text again).
-type Finished = (usize, bool, String, Value);
+/// One finished design: its index, whether it is an error row and its JSON line.
+type Finished = (usize, bool, String);
 
 /// A running sweep (the native half of `flexfem.Sweep`).
 #[pyclass(module = "flexfem._flexfem")]
@@ -36,8 +40,8 @@ pub struct SweepRun {
     len: usize,
     /// Error rows handed out so far.
     failed: usize,
-    /// The lines handed out, in index order (for the table).
-    lines: Vec<String>,
+    /// The lines handed out, in index order (the rows' text, and the table's).
+    lines: Vec<Arc<Stored>>,
     /// The varied paths (the table's first columns).
     axes: Vec<String>,
     /// The analysis of the base case (the table's units).
@@ -125,12 +129,11 @@ impl SweepRun {
                     Shard::ALL,
                     &HashSet::new(),
                     &format,
-                    // The workers hand over each line's value: the rows become Python objects
-                    // without a second parse of the text on the interpreter's thread.
-                    true,
+                    // No JSON values: the route `flexfem sweep` takes to stdout (the typed
+                    // route where the kind has one), the lines only; rows parse them on demand.
+                    false,
                     |line| {
-                        let value = line.value.cloned().unwrap_or(Value::Null);
-                        tx.send((line.index, line.failed, line.text.to_string(), value))
+                        tx.send((line.index, line.failed, line.text.to_string()))
                             .map_err(|_| io::Error::other("the sweep's iterator was dropped"))
                     },
                 )
@@ -174,18 +177,27 @@ impl SweepRun {
         self.axes.clone()
     }
 
-    /// The next design's row (index order) as a dict, `None` after the last.
-    fn next_row(&mut self, py: Python<'_>) -> PyResult<Option<Py<PyAny>>> {
+    /// The next designs' rows (index order): every row finished and not yet handed out, at
+    /// least one (waiting without the GIL); an empty list after the last.
+    fn next_rows<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         if self.next >= self.len {
             self.join(py)?;
-            return Ok(None);
+            return PyList::new(py, Vec::<Row>::new());
         }
         while !self.early.contains_key(&self.next) {
             let rx = &self.finished;
-            let got = py.detach(|| rx.lock().map_err(|_| ()).and_then(|r| r.recv().map_err(|_| ())));
+            // Everything finished by now, waiting for the first only when nothing is.
+            let got = py.detach(|| {
+                let rx = rx.lock().map_err(|_| ())?;
+                let mut got = vec![rx.recv().map_err(|_| ())?];
+                got.extend(rx.try_iter());
+                Ok::<_, ()>(got)
+            });
             match got {
-                Ok(f) => {
-                    self.early.insert(f.0, f);
+                Ok(finished) => {
+                    for f in finished {
+                        self.early.insert(f.0, f);
+                    }
                 }
                 Err(()) => {
                     self.join(py)?;
@@ -196,28 +208,69 @@ impl SweepRun {
                 }
             }
         }
-        let (_, failed, line, value) = self.early.remove(&self.next).unwrap_or_default();
-        self.next += 1;
-        self.failed += usize::from(failed);
-        self.lines.push(line);
-        errors::pythonize(py, &value).map(Some)
+        PyList::new(py, self.hand_out())
+    }
+
+    /// The rows of every design not yet handed out (index order), after the last design ran:
+    /// waits for the sweep's thread without the GIL and without waking for each line.
+    fn rest_rows<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        self.join(py)?;
+        let rx = self
+            .finished
+            .lock()
+            .map_err(|_| errors::internal(&"the sweep's lines were poisoned"))?;
+        for f in rx.try_iter() {
+            self.early.insert(f.0, f);
+        }
+        drop(rx);
+        let rows = self.hand_out();
+        if self.next < self.len {
+            return Err(errors::internal(&format!(
+                "the sweep stopped before design {} of {}",
+                self.next, self.len
+            )));
+        }
+        PyList::new(py, rows)
+    }
+
+    /// The table of [`Self::table_csv`] as columns: (names, names with units, a numpy array
+    /// per column) of the rows handed out so far (see [`columns`]).
+    #[allow(clippy::type_complexity)]
+    fn columns<'py>(&self, py: Python<'py>) -> PyResult<(Vec<String>, Vec<String>, Bound<'py, PyList>)> {
+        columns::columns(py, &self.axes, &self.lines, self.units())
     }
 
     /// The CSV table `flexfem sweep --csv` writes (parameters and scalar results with units)
     /// of the rows handed out so far, in index order.
     fn table_csv(&self) -> String {
         let axes: Vec<&str> = self.axes.iter().map(String::as_str).collect();
-        let refs: Vec<&str> = self.lines.iter().map(String::as_str).collect();
-        let units = self
-            .kind
-            .as_deref()
-            .and_then(analysis::registry::find)
-            .and_then(|a| a.column_units());
-        table::csv_with_units(&axes, &refs, units)
+        let refs: Vec<&str> = self.lines.iter().map(|l| l.text.as_str()).collect();
+        table::csv_with_units(&axes, &refs, self.units())
     }
 }
 
 impl SweepRun {
+    /// The finished rows from the next index on, in order, moved to the handed-out lines.
+    fn hand_out(&mut self) -> Vec<Row> {
+        let mut rows = Vec::new();
+        while let Some((_, failed, line)) = self.early.remove(&self.next) {
+            self.next += 1;
+            self.failed += usize::from(failed);
+            let stored = Arc::new(Stored::new(line));
+            self.lines.push(Arc::clone(&stored));
+            rows.push(Row::of_line(stored));
+        }
+        rows
+    }
+
+    /// The column units of the sweep's analysis kind.
+    fn units(&self) -> Option<(UnitOf, UnitOf)> {
+        self.kind
+            .as_deref()
+            .and_then(analysis::registry::find)
+            .and_then(|a| a.column_units())
+    }
+
     /// Waits for the worker thread (without the GIL); a sink or pool error becomes a
     /// `RuntimeError`.
     fn join(&mut self, py: Python<'_>) -> PyResult<()> {

@@ -1,10 +1,12 @@
 """Shared helpers of the Python suite: the repository, the command-line binary, and a
 comparison of results with a relative tolerance."""
 
+import csv
 import json
 import math
 import os
 import subprocess
+from collections.abc import Mapping
 from pathlib import Path
 
 import pytest
@@ -43,9 +45,10 @@ def cli_error_path(stderr: str) -> str:
 
 def differences(want, got, path="", rel=1e-12, out=None):
     """Where two results differ: paths whose types, keys, lengths or values differ (floats by
-    more than `rel` relative to the larger magnitude)."""
+    more than `rel` relative to the larger magnitude). Mappings (dicts, sweep rows) compare
+    key by key, through their own `[]`."""
     out = [] if out is None else out
-    if isinstance(want, dict) and isinstance(got, dict):
+    if isinstance(want, Mapping) and isinstance(got, Mapping):
         if list(want) != list(got):
             out.append(f"{path}: keys {list(want)} vs {list(got)}")
         for k in want:
@@ -64,4 +67,35 @@ def differences(want, got, path="", rel=1e-12, out=None):
             out.append(f"{path}: {want!r} vs {got!r}")
     elif type(want) is not type(got) or want != got:
         out.append(f"{path}: {want!r} vs {got!r}")
+    return out
+
+
+def column_differences(csv_path, columns):
+    """Where `Sweep.columns()` differs from the table `flexfem sweep --csv` wrote: the column
+    names (the header without its units) and every cell (numbers exactly: the CSV writes the
+    shortest text that round-trips; an empty cell is NaN or None)."""
+    with open(csv_path, newline="") as f:
+        header, *lines = list(csv.reader(f))
+    out = []
+    names, seen = [], {}
+    for h in header:  # a repeated name gets .1, .2 (as pandas.read_csv names it)
+        name = h.split(" [")[0]
+        seen[name] = seen.get(name, -1) + 1
+        names.append(name if seen[name] == 0 else f"{name}.{seen[name]}")
+    if names != list(columns):
+        return [f"columns {names} vs {list(columns)}"]
+    for k, (name, a) in enumerate(columns.items()):
+        if len(a) != len(lines):
+            out.append(f"{name}: {len(a)} cells for {len(lines)} lines")
+            continue
+        for i, line in enumerate(lines):
+            cell, got = line[k], a[i]
+            if cell == "":
+                ok = got is None or (isinstance(got, float) and math.isnan(got))
+            elif isinstance(got, str):
+                ok = got == cell
+            else:
+                ok = json.loads(cell) == got
+            if not ok:
+                out.append(f"{name}[{i}]: {cell!r} vs {got!r}")
     return out

@@ -2,8 +2,10 @@
 identities the result must satisfy (each test names its reference)."""
 
 import json
+import pickle
 import threading
 import time
+from collections.abc import Mapping
 
 import numpy as np
 import pytest
@@ -128,6 +130,60 @@ def test_sweep_table_equals_cli_csv(tmp_path):
     df = s.to_pandas()
     want = pd.read_csv(csv)
     assert df.shape == (55, want.shape[1]) and list(df.columns) == list(want.columns)
+
+
+def test_sweep_rows_are_mappings_over_the_cli_lines():
+    # Each row reads as the JSON line `flexfem sweep` printed for that design: the same keys in
+    # the same order, the same values (floats exactly: the line's text round-trips).
+    code, out, err = cli("sweep", CASES / "ruiz2019_hinge_sweep.json")
+    assert code == 0, err
+    want = sorted((json.loads(line) for line in out.splitlines()), key=lambda r: r["index"])
+    rows = flexfem.sweep(CASES / "ruiz2019_hinge_sweep.json").rows()
+    assert len(rows) == len(want) == 55
+    assert [r.to_dict() for r in rows] == want and rows == want
+    row, line = rows[7], want[7]
+    assert isinstance(row, flexfem.Row) and isinstance(row, Mapping)
+    assert list(row) == list(row.keys()) == list(line) == ["index", "params", "design_hash", "result"]
+    assert len(row) == 4 and "result" in row and "error" not in row and 3 not in row
+    assert row.get("error") is None and row.get("error", 0) == 0
+    with pytest.raises(KeyError):
+        row["error"]
+    result = row["result"]
+    assert isinstance(result, flexfem.Row) and result == line["result"]
+    assert result["k_bend"] == line["result"]["k_bend"] and type(result["k_bend"]) is float
+    assert result["compliance"] == line["result"]["compliance"]  # a list of lists, as json gives
+    assert dict(row.items())["params"] == line["params"] and row.values()[0] == line["index"]
+    assert repr(row) == repr(line) and json.loads(json.dumps(row.to_dict())) == line
+    assert pickle.loads(pickle.dumps(row)) == line and type(pickle.loads(pickle.dumps(row))) is dict
+
+
+def test_sweep_columns_equal_the_cli_csv_cells(tmp_path):
+    # Sweep.columns() and to_pandas() against `flexfem sweep --csv`: the same columns (names
+    # with units for pandas) and every cell the same number (the CSV writes the shortest text
+    # that round-trips, so equality is exact).
+    case = CASES / "ruiz2019_hinge_sweep.json"
+    path = tmp_path / "t.csv"
+    code, _, err = cli("sweep", case, "--csv", path)
+    assert code == 0, err
+    header, *lines = [line.split(",") for line in path.read_text().splitlines()]
+    s = flexfem.sweep(case)
+    cols = s.columns()
+    assert [name.split(" [")[0] for name in header] == list(cols)
+    assert len(lines) == 55 and all(len(a) == 55 for a in cols.values())
+    for k, (name, a) in enumerate(cols.items()):
+        cells = [line[k] for line in lines]
+        if name == "error":
+            assert a.dtype == np.float64 and np.isnan(a).all()  # no error row: no cell, NaN
+        elif a.dtype == object:  # text (the material's name)
+            assert list(a) == cells, name
+        else:
+            assert a.dtype in (np.float64, np.int64, bool), name
+            assert np.array_equal(a, np.array([json.loads(c) for c in cells])), name
+    assert cols["index"].dtype == np.int64 and cols["hinge.t"].dtype == np.float64
+    pd = pytest.importorskip("pandas")
+    df = s.to_pandas()
+    assert list(df.columns) == header
+    pd.testing.assert_frame_equal(df, pd.read_csv(path), check_exact=True)
 
 
 def test_sweep_with_vary_equals_the_sweep_case():

@@ -3,6 +3,7 @@ command line names when it exits with code 2; a failed analysis raises `Analysis
 
 import json
 
+import numpy as np
 import pytest
 
 import flexfem
@@ -53,6 +54,10 @@ def test_bad_sweep_names_the_varied_path(tmp_path):
     want = sorted((json.loads(line) for line in out.splitlines()), key=lambda r: r["index"])
     s = flexfem.sweep(HINGE, vary={"hinge.t": [-1, 2]})
     assert s.rows() == want and s.failed == 1 and "error" in want[0]
+    # In the columns the error row has its text under `error` and NaN for the results.
+    cols = s.columns()
+    assert list(cols["error"]) == [want[0]["error"], None]
+    assert np.isnan(cols["k_bend"][0]) and cols["k_bend"][1] == want[1]["result"]["k_bend"]
 
 
 def test_bad_vary_raises_before_running(tmp_path):
