@@ -123,3 +123,47 @@ fn compiled_route_only_for_parameter_axes() {
     assert_eq!(s.len(), 2);
     assert!(!takes_compiled_route(&s, None, &format(false, true)));
 }
+
+/// Lines written straight from the result (no JSON value) against the value route: two load
+/// cases loading different nodes, a compliance request and a metric naming two more nodes, so
+/// each load case's displacements keep their own rows (tilt: nodes 13, 14, 15; push: 9, 12, 14,
+/// 15), with the materials and parameters echoed (`--full`); 12 designs, byte for byte.
+#[test]
+fn compiled_lines_keep_each_load_case_rows() {
+    let s = sweep(
+        r#"{"analysis": "sweep",
+      "base": {"analysis": "static", "mesh": "meshes/pantilt_8r_parameters.json",
+               "parameters": {"M": 10.0},
+               "compliance": [{"node": 15}],
+               "metrics": [{"name": "k_x", "kind": "stiffness", "node": 14, "dof": "ux"}],
+               "load_cases": [{"name": "tilt", "forces": [{"node": 13, "F": [0, 0, 0, "$M", "$M", 0]}]},
+                              {"name": "push", "forces": [{"node": 12, "F": [1, 0, 0, 0, 0, 0]},
+                                                          {"node": 9, "F": [0, 0, "$M", 0, 0, 0]}]}]},
+      "vary": {"parameters.t": [0.5, 0.8], "parameters.R": [1.25, 2.25], "parameters.H": [62.0, 70.0, 78]}}"#,
+    );
+    assert_eq!(s.len(), 12);
+    for (full, by_ref) in [(false, true), (false, false), (true, true)] {
+        let f = format(full, by_ref);
+        assert!(takes_compiled_route(&s, None, &f), "the compiled route is taken");
+        let driver = driver_lines(&s, &f);
+        let value = value_lines(&s, &f);
+        assert_eq!(driver.len(), 12);
+        assert_eq!(value.len(), 12);
+        for (d, v) in driver.iter().zip(&value) {
+            assert_eq!(d, v, "design {} (full {full}, notes by reference {by_ref})", v.0);
+            assert!(!v.1.contains("\"error\":"), "{}", v.1);
+        }
+        let line: serde_json::Value = serde_json::from_str(&value[0].1).unwrap();
+        let result = &line["result"];
+        assert_eq!(result["parameters"]["H"], 62.0);
+        assert_eq!(result["materials"]["nylon"]["name"].as_str(), full.then_some("nylon66"));
+        if !full {
+            let rows = |k: usize| -> Vec<String> {
+                let d = result["load_cases"][k]["displacements"].as_object().unwrap();
+                d.keys().cloned().collect()
+            };
+            assert_eq!(rows(0), ["13", "14", "15"]);
+            assert_eq!(rows(1), ["9", "12", "14", "15"]);
+        }
+    }
+}

@@ -111,6 +111,11 @@ pub trait Analysis: 'static {
     fn material_of(_case: &Self::Case) -> Option<&MaterialSpec> {
         None
     }
+    /// A mesh case's materials by key, echoed as `materials`: the specs of [`Self::materials`],
+    /// for results written straight into sweep lines without resolving them into a list.
+    fn material_map(_case: &Self::Case) -> Option<&std::collections::BTreeMap<String, MaterialSpec>> {
+        None
+    }
 }
 
 /// A file a sweep over some analysis kind writes beside its JSON lines.

@@ -8,8 +8,11 @@
 //! replaced in place by `"model_notes":"REF"` (REF: the first 8 hex digits of the 128-bit FNV-1a
 //! hash of the notes' compact JSON, which go to [`ResultLine::notes`]).
 
+use crate::case::params::Parameters;
+use crate::case::MaterialSpec;
 use serde::Serialize;
 use serde_json::ser::{CharEscape, CompactFormatter, Formatter};
+use std::collections::BTreeMap;
 use std::io;
 
 /// What the line keeps of a result.
@@ -19,6 +22,10 @@ pub struct LineSpec<'a> {
     pub omit: &'a [Vec<String>],
     /// Take the top-level `model` notes out (see the module docs).
     pub notes_by_ref: bool,
+    /// Each `load_cases[K].displacements` array (one row per node) written as an object of the
+    /// rows `keyed_rows[K]` (node indices, ascending) keyed by node index, as a static sweep line
+    /// keeps them; a load case without an entry keeps its array (`None`: every array kept).
+    pub keyed_rows: Option<&'a [Vec<usize>]>,
 }
 
 /// Where [`crate::analysis::DynAnalysis::write_result`] writes: a worker's line and what it keeps.
@@ -28,6 +35,9 @@ pub struct LineTarget<'a> {
     pub line: &'a mut ResultLine,
     /// What the line keeps of the result.
     pub spec: LineSpec<'a>,
+    /// The parameter values of a parameterised case, echoed after the warnings as
+    /// `parameters` (`None` or empty: no echo).
+    pub parameters: Option<&'a Parameters>,
 }
 
 /// The buffers a worker reuses for its lines.
@@ -61,7 +71,7 @@ pub const FNV128_OFFSET: u128 = 0x6c62_272e_07bb_0142_62b8_2175_6295_c58d;
 const MAX_DEPTH: usize = 16;
 
 #[derive(Debug, Clone, Copy, Default)]
-struct Frame {
+struct Frame<'a> {
     /// An object (else an array).
     object: bool,
     /// Something of this container is in the output (so the next entry needs a comma).
@@ -71,16 +81,22 @@ struct Frame {
     key: (usize, usize),
     /// Array: index of the current element.
     index: usize,
+    /// An array written as an object of these rows keyed by index ([`LineSpec::keyed_rows`]).
+    keyed: Option<&'a [usize]>,
 }
 
 /// The formatter: writes to `out` (the serializer's own writer is a sink) and filters.
 struct Filter<'a> {
     out: &'a mut Vec<u8>,
     spec: LineSpec<'a>,
-    frames: [Frame; MAX_DEPTH],
+    frames: [Frame<'a>; MAX_DEPTH],
     depth: usize,
     /// Inside a left-out value: the containers opened in it.
     skip: Option<usize>,
+    /// The left-out value is an element of a keyed array (it ends with the element).
+    skip_element: bool,
+    /// The next array opened is written keyed, keeping these rows.
+    keyed_next: Option<&'a [usize]>,
     /// Capturing the top-level `model` value, from this offset.
     model: Option<usize>,
     notes: &'a mut Vec<u8>,
@@ -88,7 +104,7 @@ struct Filter<'a> {
     notes_object: &'a mut bool,
 }
 
-impl Filter<'_> {
+impl<'a> Filter<'a> {
     /// The key path of the current entry, from the result's top level, matches an omitted path.
     fn omitted(&self) -> bool {
         if self.depth > MAX_DEPTH {
@@ -108,7 +124,7 @@ impl Filter<'_> {
         })
     }
 
-    fn top(&mut self) -> Option<&mut Frame> {
+    fn top(&mut self) -> Option<&mut Frame<'a>> {
         match self.depth {
             0 => None,
             d if d <= MAX_DEPTH => Some(&mut self.frames[d - 1]),
@@ -125,14 +141,16 @@ impl Filter<'_> {
         if self.model.is_some() && object {
             *self.notes_object = true;
         }
+        let keyed = self.keyed_next.take().filter(|_| !object);
         if self.depth < MAX_DEPTH {
             self.frames[self.depth] = Frame {
                 object,
+                keyed,
                 ..Frame::default()
             };
         }
         self.depth += 1;
-        self.out.push(bracket);
+        self.out.push(if keyed.is_some() { b'{' } else { bracket });
         Ok(())
     }
 
@@ -142,9 +160,22 @@ impl Filter<'_> {
             *n -= 1;
             return Ok(());
         }
+        let keyed = self.top().is_some_and(|f| f.keyed.is_some());
         self.depth -= 1;
-        self.out.push(bracket);
+        self.out.push(if keyed { b'}' } else { bracket });
         Ok(())
+    }
+
+    /// The entry just keyed is `load_cases[K].displacements`: its rows to keep, when keyed.
+    fn keyed_rows(&self) -> Option<&'a [usize]> {
+        let rows = self.spec.keyed_rows?;
+        let [cases, case, field] = self.frames.get(..self.depth)? else {
+            return None;
+        };
+        let named = |f: &Frame, name: &[u8]| f.object && &self.out[f.key.0..f.key.1] == name;
+        let at =
+            (named(cases, b"load_cases") && !case.object && named(field, b"displacements")).then_some(case.index)?;
+        rows.get(at).map(Vec::as_slice)
     }
 }
 
@@ -210,18 +241,43 @@ impl Formatter for Filter<'_> {
         if self.skip.is_some() {
             return Ok(());
         }
-        if let Some(f) = self.top() {
+        let Some(f) = self.top() else {
             if !first {
-                f.index += 1;
+                self.out.push(b',');
             }
-        }
+            return Ok(());
+        };
         if !first {
+            f.index += 1;
+        }
+        let Some(keep) = f.keyed else {
+            if !first {
+                self.out.push(b',');
+            }
+            return Ok(());
+        };
+        // A keyed array: the kept rows as `"INDEX":ROW`, the others left out.
+        let (index, emitted) = (f.index, f.emitted);
+        if keep.binary_search(&index).is_err() {
+            self.skip = Some(0);
+            self.skip_element = true;
+            return Ok(());
+        }
+        f.emitted = true;
+        if emitted {
             self.out.push(b',');
         }
+        self.out.push(b'"');
+        CompactFormatter.write_u64(&mut *self.out, index as u64)?;
+        self.out.extend_from_slice(b"\":");
         Ok(())
     }
 
     fn end_array_value<W: ?Sized + io::Write>(&mut self, _w: &mut W) -> io::Result<()> {
+        if self.skip_element && self.skip == Some(0) {
+            self.skip = None;
+            self.skip_element = false;
+        }
         Ok(())
     }
 
@@ -256,6 +312,8 @@ impl Formatter for Filter<'_> {
             self.skip = Some(0);
         } else if depth == 1 && self.spec.notes_by_ref && &self.out[key.0..key.1] == b"model" {
             self.model = Some(self.out.len() + 1);
+        } else if depth == 3 {
+            self.keyed_next = self.keyed_rows();
         }
         Ok(())
     }
@@ -276,6 +334,7 @@ impl Formatter for Filter<'_> {
             Some(_) => return Ok(()),
             None => {}
         }
+        self.keyed_next = None;
         if let (Some(start), 1) = (self.model, self.depth) {
             self.model = None;
             self.notes.clear();
@@ -296,15 +355,36 @@ impl Formatter for Filter<'_> {
     }
 }
 
-/// The result echoed as every run writes it: the result's fields, then `material` and
-/// `warnings`.
+/// The result echoed as every run writes it: the result's fields, then `material` (or a mesh
+/// case's `materials`) and `warnings`, and a parameterised case's `parameters`.
 #[derive(Serialize)]
 pub struct Echoed<'a, R: Serialize> {
     #[serde(flatten)]
     pub result: &'a R,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub material: Option<MaterialEcho<'a>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub materials: Option<MaterialsEcho<'a>>,
     pub warnings: &'a [String],
+    /// The parameter values (see [`crate::analysis::Outcome::echo_parameters`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub parameters: Option<&'a Parameters>,
+}
+
+/// A mesh case's materials echoed by key, each as [`MaterialEcho`] (every one must resolve:
+/// see [`crate::analysis::run_with`], which leaves out those that do not).
+pub struct MaterialsEcho<'a>(pub &'a BTreeMap<String, MaterialSpec>);
+
+impl Serialize for MaterialsEcho<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::{Error, SerializeMap};
+        let mut map = s.serialize_map(Some(self.0.len()))?;
+        for (key, spec) in self.0 {
+            let m = spec.resolve(key).map_err(|e| S::Error::custom(e.message))?;
+            map.serialize_entry(key, &MaterialEcho::of(spec, &m))?;
+        }
+        map.end()
+    }
 }
 
 /// The material as echoed in a result (see [`crate::analysis::run_with`]).
@@ -349,6 +429,8 @@ impl ResultLine {
             frames: [Frame::default(); MAX_DEPTH],
             depth: 0,
             skip: None,
+            skip_element: false,
+            keyed_next: None,
             model: None,
             notes: &mut self.notes,
             notes_ref: &mut self.notes_ref,
@@ -378,6 +460,7 @@ mod tests {
         let spec = LineSpec {
             omit: &omit,
             notes_by_ref: true,
+            keyed_rows: None,
         };
         line.write(&v, spec).unwrap();
         let notes = br#"["x \"q\"","y"]"#;

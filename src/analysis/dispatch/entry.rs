@@ -4,7 +4,7 @@
 
 use super::case_file::{Case, CaseOf};
 use crate::analysis::common::kind::{run_typed, Ctx, SweepFile, Typed, UsedMaterial};
-use crate::analysis::common::line::{Echoed, LineTarget, MaterialEcho};
+use crate::analysis::common::line::{Echoed, LineTarget, MaterialEcho, MaterialsEcho};
 use crate::analysis::common::units::UnitOf;
 use crate::analysis::RunError;
 use crate::case::CaseError;
@@ -28,7 +28,8 @@ pub trait DynAnalysis: Sync {
     /// [`Analysis::number_mut`] of a parsed case of this kind.
     fn number_mut<'c>(&self, case: &'c mut Case, path: &[&str]) -> Option<&'c mut f64>;
     /// Runs a case of this kind and appends its result, as a run writes it (with the `material`
-    /// and `warnings` echoes), to the line of `to` as its spec keeps it — without a JSON value and, on the
+    /// or `materials`, `warnings` and `parameters` echoes), to the line of `to` as its spec
+    /// keeps it — without a JSON value and, on the
     /// paths of the kinds that give [`Analysis::number_mut`], without allocating. `None`: the
     /// kind does not write lines this way.
     fn write_result(&self, case: &Case, ctx: &mut Ctx, to: LineTarget) -> Option<Result<(), RunError>>;
@@ -86,8 +87,21 @@ impl<A: CaseOf> DynAnalysis for Entry<A> {
     fn write_result(&self, case: &Case, ctx: &mut Ctx, to: LineTarget) -> Option<Result<(), RunError>> {
         let c = A::case_of(case)?;
         let spec_material = A::material_of(c);
-        if spec_material.is_none() && !A::materials(c).is_empty() {
-            return None;
+        // A map echoes as `materials` when every entry resolves under a non-empty key (else
+        // `run_with` leaves some out or names the one material `material`).
+        let map = A::material_map(c).filter(|m| !m.is_empty());
+        match (spec_material, map) {
+            (Some(_), _) => {}
+            (None, Some(m)) => {
+                if m.iter().any(|(k, spec)| k.is_empty() || spec.resolve(k).is_err()) {
+                    return None;
+                }
+            }
+            (None, None) => {
+                if !A::materials(c).is_empty() {
+                    return None;
+                }
+            }
         }
         let mut run = || -> Result<(), RunError> {
             // The sweep's context renders no report and no files: only the result and warnings.
@@ -100,7 +114,9 @@ impl<A: CaseOf> DynAnalysis for Entry<A> {
             let echoed = Echoed {
                 result: &result,
                 material: material.as_ref().map(|(spec, m)| MaterialEcho::of(spec, m)),
+                materials: spec_material.is_none().then_some(map).flatten().map(MaterialsEcho),
                 warnings: &warnings,
+                parameters: to.parameters.filter(|p| !p.is_empty()),
             };
             to.line
                 .write(&echoed, to.spec)

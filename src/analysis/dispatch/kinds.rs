@@ -411,6 +411,9 @@ impl Analysis for Static {
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         named_materials(&case.model.materials)
     }
+    fn material_map(case: &Self::Case) -> Option<&std::collections::BTreeMap<String, MaterialSpec>> {
+        Some(&case.model.materials)
+    }
 }
 
 /// `modal`: natural frequencies and mode shapes of a generic beam/shell model.

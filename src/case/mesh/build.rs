@@ -83,6 +83,7 @@ impl MeshSpec {
             nonlinear,
             tie_paths: Vec::new(),
             regions: Vec::new(),
+            specs: Vec::new(),
         };
         for (i, x) in self.nodes.iter().enumerate() {
             for (k, v) in x.iter().enumerate() {

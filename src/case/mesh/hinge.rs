@@ -40,7 +40,15 @@ pub(super) fn hinge_element(
     let mat = *cx.materials.get(&format!("{p}.material"), material)?;
     let len = cx.axis_and_up(p, (a, b), up, "hinge")?;
     let hp = format!("{p}.hinge");
-    let spec = parse_spec(&hp, hinge)?;
+    // Hinges of one `hinge_types` entry hold equal objects: each is read once per model.
+    let spec = match cx.specs.iter().find(|(v, _)| v == hinge) {
+        Some(&(_, spec)) => spec,
+        None => {
+            let spec = parse_spec(&hp, hinge)?;
+            cx.specs.push((hinge.clone(), spec));
+            spec
+        }
+    };
     let herr = |e: hinge::HingeError| hinge_error(&e, &hp, &format!("materials.{material}"));
     let notch = spec.profile_with_blank(Some(0.0)).map_err(herr)?;
     let notch_len = 2.0 * notch.half_notch;

@@ -117,6 +117,8 @@ pub(super) struct Ctx<'a> {
     pub tie_paths: Vec<String>,
     /// The hinge regions integrated so far, by hinge spec, material and node distance (mm).
     pub regions: Vec<(crate::hinge::HingeSpec, Material, f64, crate::hinge::HingeRegion)>,
+    /// The hinge specs read so far, by the element's `hinge` object (read successfully).
+    pub specs: Vec<(serde_json::Value, crate::hinge::HingeSpec)>,
 }
 
 impl Ctx<'_> {

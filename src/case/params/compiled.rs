@@ -91,7 +91,10 @@ impl Compiled {
             Some(d) => {
                 d.raw = value.clone();
                 d.file = None;
-                d.path = format!("parameters.{name}");
+                // Set once per worker, not once per design.
+                if d.path.strip_prefix("parameters.") != Some(name) {
+                    d.path = format!("parameters.{name}");
+                }
             }
             None => {
                 declared.insert(

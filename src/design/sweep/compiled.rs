@@ -5,7 +5,9 @@
 //! numbers in its case ([`crate::case::mesh::MeshSpec::number_slot`]) instead of reading the
 //! mesh file, resolving the JSON and parsing the design. The design hash continues the state of
 //! the base case's canonical text over each varied value's text and the mesh file's bytes (read
-//! once). The result goes into the line as on the value route ([`super`]).
+//! once). Unless the sink wants each line's JSON value or `--fields` picks fields, the result
+//! is written straight into the worker's line buffer as the typed route does ([`super::typed`]:
+//! no JSON value); else it goes into the line as on the value route ([`super`]).
 //!
 //! The route is taken only where it gives the value route's lines: every axis is a parameter
 //! given numbers, every site's number reaches a place of the parsed model, and the parsed case
@@ -15,8 +17,10 @@
 
 use super::format::LoadedNodes;
 use super::hash::{with_mesh, HashTemplate};
-use super::{loaded_nodes_of, LineFormat, Shapes};
-use crate::analysis::{self, Case, Ctx};
+use super::typed::{close_line, finished, line_buffers, line_head, param_keys};
+use super::{loaded_nodes_of, Line, LineFormat, Shapes};
+use crate::analysis::line::{LineSpec, LineTarget, ResultLine};
+use crate::analysis::{self, Case, Ctx, DynAnalysis};
 use crate::case::fem_case::MODEL_FIELDS;
 use crate::case::params::compiled::{Compiled, SiteIn};
 use crate::case::params::template::Step;
@@ -45,6 +49,20 @@ pub(super) struct Route<'s> {
     /// When the case names a mesh file: its bytes (`None`: unreadable), hashed after the case.
     mesh_bytes: Option<Option<Vec<u8>>>,
     loaded_displacements: bool,
+    /// How results are written straight into lines (`None`: through JSON values).
+    lines: Option<Lines>,
+}
+
+/// What a line written straight from the result keeps ([`Route::line`]).
+struct Lines {
+    kind: &'static dyn DynAnalysis,
+    /// Each axis's `"path":` in the line's `params`.
+    keys: Vec<Vec<u8>>,
+    omit: Vec<Vec<String>>,
+    notes_by_ref: bool,
+    /// The nodes whose displacements the line keeps, per load case: the same for every design
+    /// (parameters reach no node index).
+    rows: Option<LoadedNodes>,
 }
 
 /// A worker's reused state on the compiled route.
@@ -52,6 +70,7 @@ pub(super) struct Worker {
     case: Case,
     declared: BTreeMap<String, Declared>,
     picks: Vec<usize>,
+    line: ResultLine,
 }
 
 /// Whether a site's number goes into the model (`Some(true)`), nowhere (`Some(false)`), or to a
@@ -79,8 +98,14 @@ fn target(at: SiteIn, steps: &[Step], case: &Value) -> Option<bool> {
 
 impl<'s> Route<'s> {
     /// The compiled route of `sweep`, when it gives the value route's lines (see the module
-    /// docs).
-    pub(super) fn new(sweep: &'s Sweep, base_dir: Option<&Path>, format: &LineFormat, shapes: &Shapes) -> Option<Self> {
+    /// docs); the lines are written straight from the results unless `want_values`.
+    pub(super) fn new(
+        sweep: &'s Sweep,
+        base_dir: Option<&Path>,
+        format: &LineFormat,
+        shapes: &Shapes,
+        want_values: bool,
+    ) -> Option<Self> {
         let base = &sweep.base;
         if sweep.is_empty() || base.get("analysis")?.as_str()? != "static" || base.get("gradients").is_some() {
             return None;
@@ -113,10 +138,26 @@ impl<'s> Route<'s> {
             .and_then(Value::as_str)
             .map(|name| std::fs::read(crate::case::resolve_file(name, base_dir)).ok());
         let parse = |i: usize| shapes.parse(sweep.design(i).ok()?, base_dir).ok();
+        let base = parse(0)?.case;
+        let lines = match (want_values, &format.fields) {
+            (false, None) => Some(Lines {
+                kind: analysis::registry::find("static")?,
+                keys: param_keys(sweep)?,
+                omit: format
+                    .omit
+                    .iter()
+                    .map(|p| p.split('.').map(str::to_string).collect())
+                    .collect(),
+                notes_by_ref: format.notes_by_ref,
+                rows: loaded_nodes_of(&base, format.loaded_displacements),
+            }),
+            _ => None,
+        };
         let route = Route {
             sweep,
             names,
-            base: parse(0)?.case,
+            base,
+            lines,
             into_model,
             hash: HashTemplate::new(sweep)?,
             texts,
@@ -142,6 +183,7 @@ impl<'s> Route<'s> {
             case: self.base.clone(),
             declared: self.compiled.declared(),
             picks: vec![0; self.names.len()],
+            line: line_buffers(),
         }
     }
 
@@ -164,6 +206,38 @@ impl<'s> Route<'s> {
         Some(params)
     }
 
+    /// The design hash of the design whose numbers are set in `w`.
+    fn hash_of(&self, w: &Worker) -> u128 {
+        let h = self.hash.state(&self.texts, &w.picks);
+        match &self.mesh_bytes {
+            Some(bytes) => with_mesh(h, bytes.as_deref()),
+            None => h,
+        }
+    }
+
+    /// Writes design `index`'s line straight from its result into the worker's buffer
+    /// ([`Worker::finished`] gives it); `None` when the route writes no lines this way or the
+    /// design must take the JSON value routes.
+    pub(super) fn line(&self, w: &mut Worker, index: usize, cache: &mut SolverCache) -> Option<()> {
+        let lines = self.lines.as_ref()?;
+        let params = self.set(w, index)?;
+        let h = self.hash_of(w);
+        line_head(&mut w.line.out, index, &lines.keys, &self.texts, &w.picks, h)?;
+        let mut ctx = Ctx::new(cache, false);
+        ctx.with_report = false;
+        let to = LineTarget {
+            line: &mut w.line,
+            spec: LineSpec {
+                omit: &lines.omit,
+                notes_by_ref: lines.notes_by_ref,
+                keyed_rows: lines.rows.as_deref(),
+            },
+            parameters: Some(&params),
+        };
+        lines.kind.write_result(&w.case, &mut ctx, to)?.ok()?;
+        close_line(&mut w.line)
+    }
+
     /// Design `index`'s result (parameters echoed), the nodes its line keeps and its hash; `None`
     /// when the design must take the value route.
     pub(super) fn design(
@@ -173,15 +247,19 @@ impl<'s> Route<'s> {
         cache: &mut SolverCache,
     ) -> Option<(Value, Option<LoadedNodes>, String)> {
         let params = self.set(w, index)?;
-        let mut h = self.hash.state(&self.texts, &w.picks);
-        if let Some(bytes) = &self.mesh_bytes {
-            h = with_mesh(h, bytes.as_deref());
-        }
+        let h = self.hash_of(w);
         let loaded = loaded_nodes_of(&w.case, self.loaded_displacements);
         let mut ctx = Ctx::new(cache, false);
         ctx.with_report = false;
         let mut o = analysis::run_with(&w.case, &mut ctx).ok()?;
         o.echo_parameters(&params);
         Some((o.json, loaded, format!("{h:032x}")))
+    }
+}
+
+impl Worker {
+    /// The line [`Route::line`] wrote for design `index`.
+    pub(super) fn finished(&self, index: usize) -> Line<'_> {
+        finished(&self.line, index)
     }
 }

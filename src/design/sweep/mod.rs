@@ -323,7 +323,7 @@ where
         .flatten();
     // Parameterised cases, which the typed route leaves to the value route: compiled once.
     let route = match typed {
-        None => compiled::Route::new(sweep, base_dir, format, &shapes),
+        None => compiled::Route::new(sweep, base_dir, format, &shapes, want_values),
         Some(_) => None,
     };
     // One worker per thread (its solver cache, its parsed case and line buffers), taking the
@@ -344,19 +344,24 @@ where
             if skip.contains(&i) {
                 continue;
             }
-            let fast = match (&typed, worker.as_mut()) {
-                (Some(t), Some(w)) => {
-                    let attempt = panic::catch_unwind(AssertUnwindSafe(|| t.line(w, i, &mut cache).is_some()));
-                    if attempt.is_err() {
-                        cache = SolverCache::new();
-                    }
-                    attempt.unwrap_or(false)
+            // A line written straight from the result (typed or compiled route), else `None`.
+            let mut attempt = |write: &mut dyn FnMut(&mut SolverCache) -> bool| {
+                let done = panic::catch_unwind(AssertUnwindSafe(|| write(&mut cache)));
+                if done.is_err() {
+                    // A panic may have left the cache half-updated: start the worker afresh.
+                    cache = SolverCache::new();
                 }
+                done.unwrap_or(false)
+            };
+            let fast = match (&typed, worker.as_mut(), &route, route_worker.as_mut()) {
+                (Some(t), Some(w), _, _) => attempt(&mut |c| t.line(w, i, c).is_some()),
+                (_, _, Some(r), Some(w)) => attempt(&mut |c| r.line(w, i, c).is_some()),
                 _ => false,
             };
             let row;
-            let (line, row_failed) = match (fast, worker.as_ref()) {
-                (true, Some(w)) => (w.finished(i), false),
+            let (line, row_failed) = match (fast, worker.as_ref(), route_worker.as_ref()) {
+                (true, Some(w), _) => (w.finished(i), false),
+                (true, None, Some(w)) => (w.finished(i), false),
                 _ => {
                     let on_route = route.as_ref().zip(route_worker.as_mut());
                     row = run_design_in(sweep, base_dir, i, &mut cache, format, &shapes, on_route);
@@ -392,5 +397,5 @@ where
 pub fn takes_compiled_route(sweep: &Sweep, base_dir: Option<&Path>, format: &LineFormat) -> bool {
     let shapes = Shapes::new(sweep);
     typed::Typed::new(sweep, base_dir, format, &shapes).is_none()
-        && compiled::Route::new(sweep, base_dir, format, &shapes).is_some()
+        && compiled::Route::new(sweep, base_dir, format, &shapes, false).is_some()
 }

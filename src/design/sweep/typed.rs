@@ -76,15 +76,7 @@ impl<'s> Typed<'s> {
                 .iter()
                 .map(|(_, vals)| vals.iter().map(|v| serde_json::to_vec(v).ok()).collect())
                 .collect::<Option<_>>()?,
-            keys: sweep
-                .axes
-                .iter()
-                .map(|(p, _)| {
-                    let mut k = serde_json::to_vec(p).ok()?;
-                    k.push(b':');
-                    Some(k)
-                })
-                .collect::<Option<_>>()?,
+            keys: param_keys(sweep)?,
             numbers,
             hash: HashTemplate::default(),
             omit: format
@@ -115,12 +107,7 @@ impl<'s> Typed<'s> {
     pub(super) fn worker(&self) -> Worker {
         Worker {
             case: self.base.clone(),
-            // Room for a line with its notes from the start (a longer line grows it once).
-            line: ResultLine {
-                out: Vec::with_capacity(8192),
-                notes: Vec::with_capacity(4096),
-                ..ResultLine::default()
-            },
+            line: line_buffers(),
             picks: vec![0; self.paths.len()],
         }
     }
@@ -138,53 +125,101 @@ impl<'s> Typed<'s> {
     /// `None` when the design must take the value route.
     pub(super) fn line(&self, w: &mut Worker, index: usize, cache: &mut SolverCache) -> Option<()> {
         self.set(w, index)?;
-        let out = &mut w.line.out;
-        out.clear();
-        out.extend_from_slice(b"{\"index\":");
-        write!(out, "{index},\"params\":{{").ok()?;
-        for (k, key) in self.keys.iter().enumerate() {
-            if k > 0 {
-                out.push(b',');
-            }
-            out.extend_from_slice(key);
-            out.extend_from_slice(&self.texts[k][w.picks[k]]);
-        }
         let h = self.hash.state(&self.texts, &w.picks);
-        write!(out, "}},\"design_hash\":\"{h:032x}\",\"result\":").ok()?;
+        line_head(&mut w.line.out, index, &self.keys, &self.texts, &w.picks, h)?;
         let mut ctx = Ctx::new(cache, false);
         ctx.with_report = false;
         let spec = LineSpec {
             omit: &self.omit,
             notes_by_ref: self.notes_by_ref,
+            keyed_rows: None,
         };
         let to = LineTarget {
             line: &mut w.line,
             spec,
+            parameters: None,
         };
         self.kind.write_result(&w.case, &mut ctx, to)?.ok()?;
-        if w.line.notes_hold_object {
-            return None;
-        }
-        w.line.out.push(b'}');
-        // serde_json writes UTF-8; checked here once so that `finished` cannot fail.
-        std::str::from_utf8(&w.line.out).ok()?;
-        std::str::from_utf8(&w.line.notes).ok()?;
-        Some(())
+        close_line(&mut w.line)
     }
 }
 
 impl Worker {
     /// The line [`Typed::line`] wrote for design `index`.
     pub(super) fn finished(&self, index: usize) -> Line<'_> {
-        fn text(b: &[u8]) -> &str {
-            std::str::from_utf8(b).unwrap_or("")
+        finished(&self.line, index)
+    }
+}
+
+/// Each axis's `"path":` in a line's `params`.
+pub(super) fn param_keys(sweep: &Sweep) -> Option<Vec<Vec<u8>>> {
+    sweep
+        .axes
+        .iter()
+        .map(|(p, _)| {
+            let mut k = serde_json::to_vec(p).ok()?;
+            k.push(b':');
+            Some(k)
+        })
+        .collect()
+}
+
+/// Starts a line in `out` (cleared): `{"index":I,"params":{…},"design_hash":"…","result":`, the
+/// value on axis k being `texts[k][picks[k]]`, as the value route writes it.
+pub(super) fn line_head(
+    out: &mut Vec<u8>,
+    index: usize,
+    keys: &[Vec<u8>],
+    texts: &[Vec<Vec<u8>>],
+    picks: &[usize],
+    hash: u128,
+) -> Option<()> {
+    out.clear();
+    out.extend_from_slice(b"{\"index\":");
+    write!(out, "{index},\"params\":{{").ok()?;
+    for (k, key) in keys.iter().enumerate() {
+        if k > 0 {
+            out.push(b',');
         }
-        Line {
-            index,
-            failed: false,
-            text: text(&self.line.out),
-            value: None,
-            notes: (!self.line.notes.is_empty()).then(|| (text(&self.line.notes_ref), text(&self.line.notes))),
-        }
+        out.extend_from_slice(key);
+        out.extend_from_slice(&texts[k][picks[k]]);
+    }
+    write!(out, "}},\"design_hash\":\"{hash:032x}\",\"result\":").ok()
+}
+
+/// Closes a line whose result was written ([`crate::analysis::DynAnalysis::write_result`]);
+/// `None` when its notes need the value route (they hold an object).
+pub(super) fn close_line(line: &mut ResultLine) -> Option<()> {
+    if line.notes_hold_object {
+        return None;
+    }
+    line.out.push(b'}');
+    // serde_json writes UTF-8; checked here once so that `finished` cannot fail.
+    std::str::from_utf8(&line.out).ok()?;
+    std::str::from_utf8(&line.notes).ok()?;
+    Some(())
+}
+
+/// The line `line` holds for design `index` ([`close_line`] checked it).
+pub(super) fn finished(line: &ResultLine, index: usize) -> Line<'_> {
+    fn text(b: &[u8]) -> &str {
+        std::str::from_utf8(b).unwrap_or("")
+    }
+    Line {
+        index,
+        failed: false,
+        text: text(&line.out),
+        value: None,
+        notes: (!line.notes.is_empty()).then(|| (text(&line.notes_ref), text(&line.notes))),
+    }
+}
+
+/// A worker's line buffers, with room for a line and its notes from the start (a longer line
+/// grows them once).
+pub(super) fn line_buffers() -> ResultLine {
+    ResultLine {
+        out: Vec::with_capacity(8192),
+        notes: Vec::with_capacity(4096),
+        ..ResultLine::default()
     }
 }
