@@ -320,7 +320,9 @@ impl Linear {
             .map(|k| DofMap::new(&pt.model, k, None))
             .collect::<Result<_, _>>()?;
         let mut stiffness = Vec::with_capacity(sys.systems.len());
-        for (g, system) in sys.systems.iter().enumerate() {
+        // Left empty (zero) where the frozen hinges are all the model's stiffness and nothing moved.
+        let frozen = hinges::all_frozen(&base.model, &pt.model, hinge_elements);
+        for (g, system) in sys.systems.iter().enumerate().filter(|_| !frozen) {
             let mut v = system.pattern().values(&pt.model, &maps[g])?;
             hinges::freeze(
                 system.pattern(),
