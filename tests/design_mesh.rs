@@ -73,6 +73,25 @@ fn parallelogram_design_rerun_as_a_static_case_meets_every_requirement() {
     for c in cons {
         assert!(num(&c["violation"]) <= 0.0, "{c}");
     }
+    // The gradients at the design (the local search's last Jacobian when it was taken there)
+    // are those of the rerun with `"gradients": true` at the design's parameter values.
+    case["gradients"] = json!(true);
+    let g = run_value("design_mesh_rerun_gradients", &case);
+    let mut compared = 0;
+    for metric in ["stroke", "k_x", "k_z"] {
+        for p in ["t", "R", "L"] {
+            let (got, want) = (
+                num(&d["gradients"]["values"][metric][p]),
+                num(&g["gradients"][metric][p]),
+            );
+            assert!(
+                (got - want).abs() <= RERUN_TOL * want.abs(),
+                "d {metric}/d {p}: design {got} vs rerun {want}"
+            );
+            compared += 1;
+        }
+    }
+    assert_eq!(compared, 9);
 }
 
 /// Relative tolerance of the ratios against the ideal-pivot parallelogram (hinge centres L

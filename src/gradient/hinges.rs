@@ -75,6 +75,27 @@ pub(super) fn freeze(
     Ok(())
 }
 
+/// True when [`freeze`] zeroes the range of every element of `moved`: no node moved and every
+/// element is a hinge's flexibility element with its `up` unchanged. The stencil's stiffness
+/// values are then zero and need not be computed.
+pub(super) fn all_frozen(base: &Model, moved: &Model, hinges: &[(usize, Vec<usize>)]) -> bool {
+    if moved.nodes != base.nodes || moved.elements.len() != base.elements.len() {
+        return false;
+    }
+    let mut hinge = vec![false; moved.elements.len()];
+    for &ie in hinges.iter().flat_map(|(_, els)| els) {
+        if let Some(h) = hinge.get_mut(ie) {
+            *h = true;
+        }
+    }
+    moved
+        .elements
+        .iter()
+        .zip(&base.elements)
+        .zip(&hinge)
+        .all(|((m, b), &h)| h && matches!((m, b), (Element::Flex(m), Element::Flex(b)) if m.up == b.up))
+}
+
 /// A hinge (index in `Point::hinges`), its tangent and its elements' dC/dp, for the hinges that
 /// repeat it.
 type Shared = (usize, Tangent, Vec<[[f64; 6]; 6]>);

@@ -18,6 +18,7 @@ use crate::analysis::RunError;
 use crate::case::mesh::MetricKind;
 use crate::case::params::{tangent::Written, Along, Parameters};
 use crate::fem::{self, analysis::prescribed_dofs, assembly::MatrixKind, constraints::DofMap, NodeDof, System};
+use rayon::prelude::*;
 
 /// Offsets (in steps h) and weights (per 60 h) of the sixth-order central difference. The
 /// fourth-order one is not enough: where a node coordinate moves a stiff hinge chain (the
@@ -119,11 +120,17 @@ impl Linear {
             "gradients: direct method on the factorised stiffness (one extra right-hand side per parameter and load case); dK/dp and df/dp of the reduced system (elements, rigid-link transforms, loads) by 6th-order central differences at element level, step {:e}·max(|p|, 1), along the exact tangent of the case's expressions, except the hinges: hinge compliance analytic (forward-mode derivative of the flexibility integrals with their piece limits and calibration factors, dK = −K dC K on each hinge element; the warping-restrained torsion compliance of rectangular notches from the same stencil of the moved models' Vlasov solves)",
             self.step
         )];
+        // The columns are independent: computed in parallel, kept in parameter order.
+        let computed: Vec<_> = names
+            .par_iter()
+            .map(|name| {
+                let h = self.step * base.parameters[name].abs().max(1.0);
+                self.column(values, &targets, &base, &sys, &q, &units, &qu, &modes, name, h)
+            })
+            .collect();
         let mut columns = Vec::with_capacity(names.len());
-        for name in &names {
-            let p = base.parameters[name];
-            let h = self.step * p.abs().max(1.0);
-            match self.column(values, &targets, &base, &sys, &q, &units, &qu, &modes, name, h) {
+        for (name, result) in names.iter().zip(computed) {
+            match result {
                 Ok(d) => columns.push((name.clone(), d)),
                 // A parameter that is an index or a count (a step along it makes the case
                 // invalid) has no gradient: left out when not asked for by name.
@@ -176,7 +183,6 @@ impl Linear {
         name: &str,
         h: f64,
     ) -> Result<Vec<f64>, GradientError> {
-        let nd = base.model.n_dofs();
         let mut dvals: Vec<Vec<f64>> = sys
             .systems
             .iter()
@@ -193,44 +199,39 @@ impl Linear {
         let mut drhs: Vec<Vec<f64>> = q.iter().map(|x| vec![0.0; x.len()]).collect();
         let mut dunit: Vec<Vec<f64>> = qu.iter().map(|x| vec![0.0; x.len()]).collect();
         let hinge_elements = hinges::hinge_elements(base);
-        let mut points = Vec::with_capacity(STENCIL.len());
-        for (s, w) in STENCIL {
-            let w = w / (STENCIL_DIVISOR * h);
-            let pt = Point::new(&self.written, values, Some(Along { name, step: s * h }))?;
-            let maps: Vec<DofMap> = sys
-                .keys
-                .iter()
-                .map(|k| DofMap::new(&pt.model, k, None))
-                .collect::<Result<_, _>>()?;
-            for (g, system) in sys.systems.iter().enumerate() {
-                let mut v = system.pattern().values(&pt.model, &maps[g])?;
-                hinges::freeze(
-                    system.pattern(),
-                    &maps[g],
-                    &base.model,
-                    &pt.model,
+        // The moved models of the stencil are independent: built in parallel, summed in
+        // stencil order (the same sums as one after the other).
+        let moved: Vec<Result<Moved, GradientError>> = STENCIL
+            .par_iter()
+            .map(|&(s, w)| {
+                self.moved(
+                    values,
+                    base,
+                    sys,
                     &hinge_elements,
-                    &mut v,
-                )?;
-                dvals[g].iter_mut().zip(&v).for_each(|(d, x)| *d += w * x);
+                    units,
+                    !dmass.is_empty(),
+                    name,
+                    s * h,
+                    w / (STENCIL_DIVISOR * h),
+                )
+            })
+            .collect();
+        let mut points = Vec::with_capacity(STENCIL.len());
+        for m in moved {
+            let m = m?;
+            let w = m.weight;
+            for (d, v) in dvals.iter_mut().zip(&m.stiffness) {
+                d.iter_mut().zip(v).for_each(|(d, x)| *d += w * x);
             }
-            if !dmass.is_empty() {
-                let m = sys.systems[sys.free]
-                    .pattern()
-                    .values_of(&pt.model, &maps[sys.free], MatrixKind::Mass)?;
-                dmass.iter_mut().zip(&m).for_each(|(d, x)| *d += w * x);
+            dmass.iter_mut().zip(&m.mass).for_each(|(d, x)| *d += w * x);
+            for (d, r) in drhs.iter_mut().zip(&m.rhs) {
+                d.iter_mut().zip(r).for_each(|(d, x)| *d += w * x);
             }
-            for (i, lc) in pt.load_cases().iter().enumerate() {
-                let [r, _, _] = pt.rhs(&maps[sys.of_case[i]], lc)?;
-                drhs[i].iter_mut().zip(&r).for_each(|(d, x)| *d += w * x);
+            for (d, r) in dunit.iter_mut().zip(&m.unit) {
+                d.iter_mut().zip(r).for_each(|(d, x)| *d += w * x);
             }
-            for (k, &[node, dof]) in units.iter().enumerate() {
-                let mut f = vec![0.0; nd];
-                f[6 * node + dof] = 1.0;
-                let r = maps[sys.free].reduce(&f);
-                dunit[k].iter_mut().zip(&r).for_each(|(d, x)| *d += w * x);
-            }
-            points.push((s * h, w, pt, maps));
+            points.push((m.step, w, m.point, m.maps));
         }
         // The hinges' compliance part of dK, analytic (their geometry part was differenced above).
         let stencil: Vec<(f64, f64, &Point)> = points.iter().map(|(s, w, pt, _)| (*s, *w, pt)).collect();
@@ -254,23 +255,116 @@ impl Linear {
         for (k, qk) in qu.iter().enumerate() {
             dqu.push(direct(&sys.systems[sys.free], &dk[sys.free], &dunit[k], qk)?);
         }
+        // The targets along (model(p + s), q + s dq/dp) at each point, in parallel; summed in order.
+        let along: Vec<Result<Vec<f64>, GradientError>> = points
+            .par_iter()
+            .map(|(s, _, pt, maps)| {
+                let along = |x: &[Vec<f64>], dx: &[Vec<f64>]| -> Vec<Vec<f64>> {
+                    x.iter()
+                        .zip(dx)
+                        .map(|(a, b)| a.iter().zip(b).map(|(ai, bi)| ai + s * bi).collect())
+                        .collect()
+                };
+                let m: Vec<&DofMap> = sys.of_case.iter().map(|&g| &maps[g]).collect();
+                pt.evaluate(targets, &m, &along(q, &dq), Some(&maps[sys.free]), &along(qu, &dqu))
+            })
+            .collect();
         let mut out = vec![0.0; targets.len()];
-        for (s, w, pt, maps) in &points {
-            let along = |x: &[Vec<f64>], dx: &[Vec<f64>]| -> Vec<Vec<f64>> {
-                x.iter()
-                    .zip(dx)
-                    .map(|(a, b)| a.iter().zip(b).map(|(ai, bi)| ai + s * bi).collect())
-                    .collect()
-            };
-            let m: Vec<&DofMap> = sys.of_case.iter().map(|&g| &maps[g]).collect();
-            let v = pt.evaluate(targets, &m, &along(q, &dq), Some(&maps[sys.free]), &along(qu, &dqu))?;
-            out.iter_mut().zip(&v).for_each(|(o, x)| *o += w * x);
+        for ((_, w, ..), v) in points.iter().zip(along) {
+            out.iter_mut().zip(&v?).for_each(|(o, x)| *o += w * x);
         }
         if !modes.is_empty() {
             let dm = sys.systems[sys.free].pattern().matrix(&dmass)?;
             modes.fill_derivatives(targets, &dk[sys.free], &dm, &mut out);
         }
         Ok(out)
+    }
+}
+
+/// One point of the stencil: the model moved by `step` along a parameter, with what the
+/// stencil sums (weight `weight`).
+struct Moved {
+    step: f64,
+    weight: f64,
+    point: Point,
+    maps: Vec<DofMap>,
+    /// Stiffness values of each system, hinge compliance frozen at the base ([`hinges::freeze`]).
+    stiffness: Vec<Vec<f64>>,
+    /// Mass values of the supports-only system (empty when no mode is needed).
+    mass: Vec<f64>,
+    /// Reduced right-hand side of each load case.
+    rhs: Vec<Vec<f64>>,
+    /// Reduced unit load of each stiffness target.
+    unit: Vec<Vec<f64>>,
+}
+
+impl Linear {
+    /// The stencil point at `step` along parameter `name`.
+    #[allow(clippy::too_many_arguments)]
+    fn moved(
+        &self,
+        values: &Parameters,
+        base: &Point,
+        sys: &Systems,
+        hinge_elements: &[(usize, Vec<usize>)],
+        units: &[[usize; 2]],
+        with_mass: bool,
+        name: &str,
+        step: f64,
+        weight: f64,
+    ) -> Result<Moved, GradientError> {
+        let pt = Point::new(&self.written, values, Some(Along { name, step }))?;
+        let maps: Vec<DofMap> = sys
+            .keys
+            .iter()
+            .map(|k| DofMap::new(&pt.model, k, None))
+            .collect::<Result<_, _>>()?;
+        let mut stiffness = Vec::with_capacity(sys.systems.len());
+        // Left empty (zero) where the frozen hinges are all the model's stiffness and nothing moved.
+        let frozen = hinges::all_frozen(&base.model, &pt.model, hinge_elements);
+        for (g, system) in sys.systems.iter().enumerate().filter(|_| !frozen) {
+            let mut v = system.pattern().values(&pt.model, &maps[g])?;
+            hinges::freeze(
+                system.pattern(),
+                &maps[g],
+                &base.model,
+                &pt.model,
+                hinge_elements,
+                &mut v,
+            )?;
+            stiffness.push(v);
+        }
+        let mass = if with_mass {
+            sys.systems[sys.free]
+                .pattern()
+                .values_of(&pt.model, &maps[sys.free], MatrixKind::Mass)?
+        } else {
+            Vec::new()
+        };
+        let mut rhs = Vec::with_capacity(pt.load_cases().len());
+        for (i, lc) in pt.load_cases().iter().enumerate() {
+            let [r, _, _] = pt.rhs(&maps[sys.of_case[i]], lc)?;
+            rhs.push(r);
+        }
+        let nd = base.model.n_dofs();
+        let unit = units
+            .iter()
+            .map(|&[node, dof]| {
+                let mut f = vec![0.0; nd];
+                f[6 * node + dof] = 1.0;
+                maps[sys.free].reduce(&f)
+            })
+            .collect();
+        Ok(Moved {
+            step,
+            weight,
+            point: pt,
+            maps,
+            stiffness,
+            mass,
+            rhs,
+            unit,
+        })
     }
 }
 

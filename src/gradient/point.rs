@@ -87,6 +87,18 @@ impl Point {
     /// The reduced right-hand side of load case `lc` on `map` (Aᵀ(f − K u_c), as the linear
     /// solver forms it), the prescribed values u_c and the applied loads f (6 per node).
     pub fn rhs(&self, map: &DofMap, lc: &LoadCase) -> Result<[Vec<f64>; 3], GradientError> {
+        let [u_c, f] = self.loads(lc);
+        let u_c_full = map.expand(&vec![0.0; map.n_eq()], &u_c);
+        let mut g = f.clone();
+        if u_c_full.iter().any(|&v| v != 0.0) {
+            let ku = recovery::internal_forces(&self.model, &u_c_full)?;
+            g.iter_mut().zip(&ku).for_each(|(gi, ki)| *gi -= ki);
+        }
+        Ok([map.reduce(&g), u_c, f])
+    }
+
+    /// The prescribed values u_c and the applied loads f of load case `lc` (6 per node).
+    fn loads(&self, lc: &LoadCase) -> [Vec<f64>; 2] {
         let nd = self.model.n_dofs();
         let mut f = vec![0.0; nd];
         for l in &lc.forces {
@@ -98,13 +110,7 @@ impl Point {
         for p in &lc.displacements {
             u_c[6 * p.node + p.dof.index()] = p.value;
         }
-        let u_c_full = map.expand(&vec![0.0; map.n_eq()], &u_c);
-        let mut g = f.clone();
-        if u_c_full.iter().any(|&v| v != 0.0) {
-            let ku = recovery::internal_forces(&self.model, &u_c_full)?;
-            g.iter_mut().zip(&ku).for_each(|(gi, ki)| *gi -= ki);
-        }
-        Ok([map.reduce(&g), u_c, f])
+        [u_c, f]
     }
 
     /// The values of `targets` with the equation values `q[i]` of load case i (on `maps[i]`)
@@ -120,7 +126,7 @@ impl Point {
     ) -> Result<Vec<f64>, GradientError> {
         let mut cases = Vec::with_capacity(q.len());
         for (i, lc) in self.load_cases().iter().enumerate() {
-            let [_, u_c, f] = self.rhs(maps[i], lc)?;
+            let [u_c, f] = self.loads(lc);
             let u = maps[i].expand(&q[i], &u_c);
             cases.push(recovery::case_result_unchecked(&self.model, maps[i], &lc.name, &u, &f)?);
         }

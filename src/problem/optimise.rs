@@ -186,6 +186,10 @@ pub struct Outcome {
     pub evaluations: usize,
     /// Samples and local iterations.
     pub history: Vec<HistoryEntry>,
+    /// The problem's own Jacobian ([`Problem::gradient`]) at the best design, when the local
+    /// search computed it there (not serialised).
+    #[serde(skip)]
+    pub jacobian: Option<Jacobian>,
 }
 
 #[derive(Clone)]
@@ -342,6 +346,8 @@ pub fn optimise<P: Problem>(
     evaluations += 1;
     let mut best = cur.clone();
     let h = 1e-3;
+    // The problem's own Jacobian at the last design it was computed at.
+    let mut known: Option<(Vec<f64>, Jacobian)> = None;
     for mu in [10.0, 100.0, 1e3, 1e4] {
         let mut step = 0.1;
         for _ in 0..15 {
@@ -349,8 +355,16 @@ pub fn optimise<P: Problem>(
             if !f0.is_finite() {
                 break;
             }
-            let own = match (&cur.r, problem.gradient(&mut w, &cur.p)) {
-                (Some(r), Some(Ok(j))) => Some(s.merit_gradient(r, &j, mu, bounds)),
+            // The Jacobian does not depend on μ: one per design, reused when a stage ends
+            // where the next starts.
+            if cur.r.is_some() && known.as_ref().is_none_or(|(p, _)| *p != cur.p) {
+                known = match problem.gradient(&mut w, &cur.p) {
+                    Some(Ok(j)) => Some((cur.p.clone(), j)),
+                    _ => None,
+                };
+            }
+            let own = match (&cur.r, &known) {
+                (Some(r), Some((p, j))) if *p == cur.p => Some(s.merit_gradient(r, j, mu, bounds)),
                 _ => None,
             };
             let grads: Vec<f64> = match own {
@@ -414,7 +428,9 @@ pub fn optimise<P: Problem>(
         .filter(|c| c.violation > -0.01)
         .map(|c| c.name.clone())
         .collect();
+    let jacobian = known.filter(|(p, _)| *p == best.p).map(|(_, j)| j);
     Ok(Outcome {
+        jacobian,
         params: best.p,
         meets: best.viol <= 0.0,
         responses: r,

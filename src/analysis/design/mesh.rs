@@ -288,7 +288,11 @@ pub fn run_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<MeshDesignRes
     let bounds: Vec<[f64; 2]> = c.parameters.values().filter_map(|r| r.bounds).collect();
     let out =
         problem::optimise(p, &bounds, &reqs, &objective, c.samples).map_err(|m| AnalysisError::new("design", m))?;
-    let (jac, method) = problem::jacobian(p, &out.params, &bounds).map_err(|m| AnalysisError::new("gradients", m))?;
+    let (jac, method) = match &out.jacobian {
+        // The local search's last gradient was taken at the design.
+        Some(j) => (j.clone(), GradientMethod::Problem),
+        None => problem::jacobian(p, &out.params, &bounds).map_err(|m| AnalysisError::new("gradients", m))?,
+    };
     let pnames = p.parameters();
     let mnames = &p.responses()[..p.metrics];
     let message = (!out.meets).then(|| {
