@@ -33,12 +33,14 @@ impl FlexElement {
         }
     }
 
-    /// The compliance's bits (the memo key), then `extra`.
+    /// The memo key: `extra`'s bits first, then the compliance's. Keys of one model's
+    /// elements mostly share the compliance and differ in the length, so the length first lets
+    /// a miss stop at the first word.
     fn key<const N: usize>(&self, extra: Option<f64>) -> [u64; N] {
         let mut k = [0u64; N];
         for (slot, c) in k
             .iter_mut()
-            .zip(self.compliance.as_flattened().iter().chain(extra.iter()))
+            .zip(extra.iter().chain(self.compliance.as_flattened().iter()))
         {
             *slot = c.to_bits();
         }
