@@ -308,8 +308,9 @@ fn fixed_point_of_axes_through_one_point_is_that_point() {
         .collect();
     assert_eq!(lines.len(), 6);
     let fp = fixed_point(&lines).expect("the axes spread by 40°");
-    for i in 0..3 {
-        assert!((fp.point[i] - c[i]).abs() < 1e-9, "{:?}", fp.point);
+    // zip-checked: both are [f64; 3].
+    for (p, q) in fp.point.iter().zip(&c) {
+        assert!((p - q).abs() < 1e-9, "{:?}", fp.point);
     }
     assert!(fp.scatter < 1e-9, "{}", fp.scatter);
     let parallel: Vec<([f64; 3], [f64; 3])> = (0..4).map(|k| ([k as f64, 0.0, 0.0], [0.0, 0.0, 1.0])).collect();
