@@ -322,4 +322,9 @@ fn nylon66_finite_life_follows_the_basquin_line_by_hand() {
     let method = r["fatigue"]["method"].as_str().unwrap_or_default();
     assert!(method.contains("N_e = 1e7 cycles"), "{method}");
     assert!(method.contains("at least N_e cycles"), "{method}");
+    // The Marin factors are fits to steels: the method says they are an estimate for polymers.
+    assert!(
+        method.contains("fits to steel data") && method.contains("polymers, where they are an estimate"),
+        "{method}"
+    );
 }

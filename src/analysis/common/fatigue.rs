@@ -131,7 +131,7 @@ impl FatigueChain {
     /// The method in words.
     pub fn describe(&self) -> String {
         format!(
-            "stress-life (Shigley 10th ed. ch. 6): K_f = 1 + q (K_t − 1), Peterson q = 1/(1 + a/r) with a = {:.4} mm; S_e = k_a k_b S_e' with k_a machined (eq. 6-19), k_b bending size factor (eq. 6-20, d_e from eqs. 6-24/6-25, clamped to 2.79…51 mm), k_c = k_d = k_e = 1 (bending, room temperature, 50 % reliability); K_f on alternating and mean stress; {} mean-stress line; Basquin exponent b = {:.4} from S_e at N_e = {:e} cycles; below S_e the life is reported infinite — S_e' is the material's strength at N_e, so for materials without a true endurance limit (aluminium alloys, polymers) read infinite as at least N_e cycles",
+            "stress-life (Shigley 10th ed. ch. 6): K_f = 1 + q (K_t − 1), Peterson q = 1/(1 + a/r) with a = {:.4} mm; S_e = k_a k_b S_e' with k_a machined (eq. 6-19), k_b bending size factor (eq. 6-20, d_e from eqs. 6-24/6-25, clamped to 2.79…51 mm), k_c = k_d = k_e = 1 (bending, room temperature, 50 % reliability); K_f on alternating and mean stress; {} mean-stress line; Basquin exponent b = {:.4} from S_e at N_e = {:e} cycles; below S_e the life is reported infinite — S_e' is the material's strength at N_e, so for materials without a true endurance limit (aluminium alloys, polymers) read infinite as at least N_e cycles; k_a, k_b and (when not given) Peterson's a are Shigley's fits to steel data, applied as they are to other metals and to polymers, where they are an estimate (k_b exceeds 1 for waists under 7.6 mm)",
             self.peterson_a,
             match self.method {
                 MeanStressMethod::Goodman => "modified Goodman",
