@@ -143,11 +143,7 @@ impl<'s> Route<'s> {
             (false, None) => Some(Lines {
                 kind: analysis::registry::find("static")?,
                 keys: param_keys(sweep)?,
-                omit: format
-                    .omit
-                    .iter()
-                    .map(|p| p.split('.').map(str::to_string).collect())
-                    .collect(),
+                omit: format.omit_segments(),
                 notes_by_ref: format.notes_by_ref,
                 rows: loaded_nodes_of(&base, format.loaded_displacements),
             }),

@@ -139,6 +139,14 @@ fn remove_path(v: &mut Value, path: &[&str]) {
 }
 
 impl LineFormat {
+    /// [`Self::omit`] split into path segments, as the typed line writers take it.
+    pub fn omit_segments(&self) -> Vec<Vec<String>> {
+        self.omit
+            .iter()
+            .map(|p| p.split('.').map(str::to_string).collect())
+            .collect()
+    }
+
     /// The lines of `flexfem sweep` for a base case of analysis `kind`: only `fields` when
     /// given (`--fields`), else everything but [`omitted_fields`] of the kind unless `full`
     /// (`--full`), and a static sweep's displacements at its loaded and named nodes only.

@@ -79,11 +79,7 @@ impl<'s> Typed<'s> {
             keys: param_keys(sweep)?,
             numbers,
             hash: HashTemplate::default(),
-            omit: format
-                .omit
-                .iter()
-                .map(|p| p.split('.').map(str::to_string).collect())
-                .collect(),
+            omit: format.omit_segments(),
             notes_by_ref: format.notes_by_ref,
             base,
         };
