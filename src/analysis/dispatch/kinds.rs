@@ -443,6 +443,7 @@ impl Analysis for Modal {
             case.model.nodes.len(),
         ));
         ctx.warnings = modal::drilling_warnings(&model, &raw);
+        ctx.warnings.extend(modal::coarse_shell_warnings(&model, &raw));
         ctx.warnings
             .extend(warn::fewer_modes(case.modes, raw.modes.len(), Some(raw.n_eq)));
         if ctx.with_files {

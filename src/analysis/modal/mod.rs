@@ -1,6 +1,12 @@
 //! The `modal` analysis on a generic beam/shell model: lowest natural frequencies, mass-normalised
 //! mode shapes, effective mass fractions; VTK file with the mode shapes.
 
+mod coarse;
+pub use coarse::{
+    coarse_shell_warnings, shell_dispersion_estimates, square_mesh_frequency_ratio, worst_square_mesh_error,
+    COARSE_SHELL_ERROR,
+};
+
 use super::{AnalysisError, Report};
 use crate::fem::modal::{ModalOptions, ModalResults};
 use crate::fem::Model;
