@@ -36,6 +36,26 @@
 //! HELD_OUT, among them all the rows computed after the fit (5 circular notches, 6
 //! corner-filleted hinges).
 //!
+//! Fresh held-out check ([`DOE`], 24 rows: `tests/hinge_ccx_reference/doe.rs`). Once all 50
+//! rows above had been looked at, a new design of experiments was drawn by a written rule
+//! (`tools/ccx_heldout_doe.py`: a Latin hypercube, numpy `default_rng(20261128)`, log-uniform over
+//! t/R 0.08–0.5 and w/t 0.5–20 for circular notches, R/t 0.5–2.5, flat (l − 2R)/t 0.3–6 and
+//! w/t 1–20 for corner-filleted hinges, 8 rows each, plus 4 rows per family in the regimes the
+//! model missed; blank height t + R or 2t + 2R, blank length = h) and committed
+//! (`tools/ccx_heldout_doe.json`) before its solid models were run
+//! (`tools/ccx_heldout_results.jsonl`) and before any refit. Refits of the torsion law on all
+//! 50 rows were then tried (the plate-mode warping factor of each section from its own aspect
+//! ratio; the factor confined to the notch, the blank warping in its Saint-Venant mode; the
+//! factor tapered from the waist to the blank; the blank's warping restraint from its
+//! geometric rather than its load-spread section; other spreading slopes and blends): none
+//! lowered the worst torsion error of both families together (the best, the factor confined
+//! to the notch, took the circular worst case from +10.96 to +10.30 % and the corner-filleted
+//! one from −10.63 to −11.35 %), so none was adopted: the model compared with the fresh rows is
+//! the one fitted before, unchanged. Compared once, the fresh rows show what the 50 did not
+//! cover: wide hinges between wide, low blanks (blank w/h ≥ 2.9, w/t 10–17) are 19–22 % too
+//! stiff in torsion, in both families; over all 70 rectangular rows the torsion error
+//! correlates with the blank's w/h (r = 0.53) and stays within ±10.7 % where w/h < 1.5.
+//!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
 //!
@@ -57,6 +77,9 @@ use flexfem::material::Material;
 #[path = "hinge_ccx_reference/references.rs"]
 mod references;
 use references::{CcxRef, FIT, HELD_OUT};
+#[path = "hinge_ccx_reference/doe.rs"]
+mod doe;
+use doe::DOE;
 
 struct Row {
     spec: HingeSpec,
@@ -221,15 +244,44 @@ fn solid_pipelines_agree() {
 /// quantities to the 6 digits copied here), and no two references share a geometry.
 #[test]
 fn every_reference_is_a_line_of_the_raw_results() {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tools/ccx_reference_results.jsonl"
-    ))
-    .unwrap();
+    let refs: Vec<&CcxRef> = FIT.iter().chain(HELD_OUT).collect();
+    assert_eq!(raw_lines_matched("ccx_reference_results.jsonl", &refs), 50);
+    let fresh: Vec<&CcxRef> = DOE.iter().collect();
+    assert_eq!(raw_lines_matched("ccx_heldout_results.jsonl", &fresh), 24);
+}
+
+/// The fresh held-out rows are the committed design of experiments, in its order
+/// (`tools/ccx_heldout_doe.json`: the same geometry, 12 circular notches then 12
+/// corner-filleted hinges).
+#[test]
+fn fresh_rows_are_the_committed_design() {
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tools/ccx_heldout_doe.json")).unwrap();
+    let design: Vec<serde_json::Value> = serde_json::from_str(&text).unwrap();
+    assert_eq!(design.len(), DOE.len());
+    for (d, r) in design.iter().zip(DOE) {
+        let spec: serde_json::Value = serde_json::from_str(r.hinge).unwrap();
+        for (k, v) in spec.as_object().unwrap() {
+            let same = match (d[k].as_f64(), v.as_f64()) {
+                (Some(a), Some(b)) => a == b,
+                _ => d[k] == *v,
+            };
+            assert!(same, "{}: {k} = {} in the design", r.hinge, d[k]);
+        }
+    }
+    let n_circ = DOE.iter().filter(|r| r.hinge.contains("circular_notch")).count();
+    assert_eq!((n_circ, DOE.len() - n_circ), (12, 12));
+}
+
+/// Checks that every reference of `refs` is exactly one line of `tools/<file>` (geometry, E, ν
+/// and the five quantities to 6 digits) and that the file has no other line; returns the
+/// number of lines.
+fn raw_lines_matched(file: &str, refs: &[&CcxRef]) -> usize {
+    let path = format!("{}/tools/{file}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap();
     let lines: Vec<serde_json::Value> = text.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
-    assert_eq!(lines.len(), FIT.len() + HELD_OUT.len());
+    assert_eq!(lines.len(), refs.len(), "{file}");
     let close = |a: &serde_json::Value, b: f64| a.as_f64().is_some_and(|a| (a / b - 1.0).abs() < 1e-5);
-    for r in FIT.iter().chain(HELD_OUT) {
+    for r in refs {
         let spec: serde_json::Value = serde_json::from_str(r.hinge).unwrap();
         let matches = lines
             .iter()
@@ -246,6 +298,7 @@ fn every_reference_is_a_line_of_the_raw_results() {
             .count();
         assert_eq!(matches, 1, "{} (ν = {}): {matches} matching lines", r.hinge, r.nu);
     }
+    lines.len()
 }
 
 /// The integration-point peak lies this far below the nodal-averaged peak on the hinges of
@@ -289,6 +342,44 @@ const CONV_TOL: [(&str, f64, f64, f64, f64); 2] = [
 /// 3 held-out turned necks. Measured (bending / torsion / axial / peak σ/M, %):
 /// -0.83 … +0.84 / -2.25 … -0.28 / -1.16 … -0.26 / -2.41 … +0.74.
 const NECK_TOL: [f64; 4] = [3.0, 5.0, 3.0, 3.0];
+
+/// 12 fresh held-out circular notches ([`DOE`]: t/R 0.09–0.45, w/t 0.65–15.9), compared once,
+/// after the model was frozen. Measured (bending / torsion / axial / peak σ/M, %): −0.66 … +1.45
+/// / −2.81 … +22.47 / +0.16 … +4.14 / −0.88 … +3.08. Torsion misses the 10 % target on 3 of 12,
+/// all wide notches between wide, low blanks (blank w/h ≥ 2.9): R5/t1.5/w22.5/h6.5 +22.47,
+/// R10.75/t4.8/w48.05/h15.55 +21.35, R6.85/t1.55/w24.6/h8.4 +19.39: pinned at 23 %.
+const CIRCULAR_FRESH_TOL: [f64; 4] = [3.0, 23.0, 5.0, 5.0];
+/// 12 fresh held-out corner-filleted hinges ([`DOE`]: l/t 2–9.5, R/t 0.5–2.5, w/t 1.2–16.6),
+/// compared once, after the model was frozen. Measured: −0.10 … +4.84 / −8.21 … +21.18 /
+/// −4.74 … +2.27 / −2.38 … +2.92. Bending misses the 3 % target on 3 of 12 (large fillets,
+/// R/t ≥ 1.5: l6.5/R2.95/t1.6/w2.8 +4.84, l5.4/R2.5/t1/w8 +4.52, l5.1/R2.25/t1.5/w6 +3.77),
+/// torsion on 1 of 12 (l3.7/R1.2/t1.75/w29, w/t 16.6, blank w/h 4.9: +21.18): pinned at 5 % and
+/// 21.5 %.
+const CORNER_FRESH_TOL: [f64; 4] = [5.0, 21.5, 5.0, 5.0];
+
+#[test]
+fn circular_notches_fresh_held_out() {
+    let all = rows(DOE);
+    let rows = family(&all, circular);
+    assert_eq!(rows.len(), 12);
+    check(
+        "fresh held-out circular notches",
+        report("circular notches vs CalculiX, FRESH HELD OUT", &rows),
+        CIRCULAR_FRESH_TOL,
+    );
+}
+
+#[test]
+fn corner_filleted_fresh_held_out() {
+    let all = rows(DOE);
+    let rows = family(&all, corner);
+    assert_eq!(rows.len(), 12);
+    check(
+        "fresh held-out corner-filleted hinges",
+        report("corner-filleted hinges vs CalculiX, FRESH HELD OUT", &rows),
+        CORNER_FRESH_TOL,
+    );
+}
 
 #[test]
 fn circular_notches_held_out() {
