@@ -18,6 +18,21 @@ The rule (rerunning this script reproduces `tools/ccx_heldout_doe.json` exactly)
   n = 4 element sizes across the local thickness, as in the 50 fitted rows.
 
     python3 tools/ccx_heldout_doe.py > tools/ccx_heldout_doe.json
+
+Second check set (`--second`, `tools/ccx_heldout2_doe.json`), drawn and committed after the
+first set had been compared once and before the torsion law was refitted on all 74 rows
+(the 50 and these 24): the first set showed that the blank (its aspect w/h and length), which
+the rule above ties to t and R, matters for torsion, so the second varies it independently:
+
+- circular notches, 12 rows: a Latin hypercube (numpy `default_rng(20261129)`) over t/R
+  0.08-0.5, w/t 0.5-20, R 2-12 mm, notch depth (h - t)/2 from 0.4R to R (log-uniform), blank
+  length 0.5h-2h; plus 2 rows with wide, low blanks (w/h 3 and 5);
+- corner-filleted leaves, 12 rows: a Latin hypercube (the same generator, drawn after the
+  circular one) over R/t 0.5-2.5, flat (l - 2R)/t 0.3-6, w/t 1-20, t 1-2 mm, blank height
+  t + 2R + t·(0.5-4) and blank length 0.5h-2h; plus 2 rows with wide, low blanks (w/h 3 and 5);
+- rounding and n as above.
+
+    python3 tools/ccx_heldout_doe.py --second > tools/ccx_heldout2_doe.json
 """
 
 import json
@@ -81,5 +96,43 @@ def doe():
     return rows
 
 
+def doe2():
+    rng = np.random.default_rng(20261129)
+    rows = []
+    for a, b, c, d, e in lhs(rng, 10, [(0.08, 0.5), (0.5, 20.0), (2.0, 12.0), (0.4, 1.0), (0.5, 2.0)]):
+        t = r05(a * c)
+        h = r05(max(t + 2 * d * c, 3 * t))
+        rows.append(
+            {"type": "circular_notch", "R": r05(c), "t": t, "w": r05(b * t), "h": h, "blank_length": r05(e * h), "regime": "lhs"}
+        )
+    for r, t, w, h, b in [(4.0, 1.0, 15.0, 5.0, 5.0), (6.0, 1.5, 30.0, 6.0, 8.0)]:
+        rows.append({"type": "circular_notch", "R": r, "t": t, "w": w, "h": h, "blank_length": b, "regime": "wide, low blank"})
+    for a, b, c, d, e, f in lhs(rng, 10, [(0.5, 2.5), (0.3, 6.0), (1.0, 20.0), (1.0, 2.0), (0.5, 4.0), (0.5, 2.0)]):
+        t = r05(d)
+        r = r05(a * t)
+        lt = min(max(2 * a + b, 2.0), 10.0)
+        lt = max(lt, 2 * a + 0.3)
+        h = r05(t + 2 * r + e * t)
+        rows.append(
+            {
+                "type": "corner_filleted",
+                "l": r05(lt * t),
+                "R": r,
+                "t": t,
+                "w": r05(c * t),
+                "h": h,
+                "blank_length": r05(f * h),
+                "regime": "lhs",
+            }
+        )
+    for l, r, t, w, h, b in [(4.0, 1.0, 1.0, 15.0, 5.0, 5.0), (6.0, 1.5, 1.5, 30.0, 6.0, 8.0)]:
+        rows.append(
+            {"type": "corner_filleted", "l": l, "R": r, "t": t, "w": w, "h": h, "blank_length": b, "regime": "wide, low blank"}
+        )
+    return rows
+
+
 if __name__ == "__main__":
-    print(json.dumps(doe(), indent=1))
+    import sys
+
+    print(json.dumps(doe2() if "--second" in sys.argv else doe(), indent=1))
