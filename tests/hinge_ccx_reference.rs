@@ -76,10 +76,13 @@ use flexfem::material::Material;
 
 #[path = "hinge_ccx_reference/references.rs"]
 mod references;
-use references::{CcxRef, FIT, HELD_OUT};
+use references::{CcxRef, FIRST_FIT, FIRST_HELD_OUT};
 #[path = "hinge_ccx_reference/doe.rs"]
 mod doe;
-use doe::DOE;
+use doe::DOE1;
+#[path = "hinge_ccx_reference/doe2.rs"]
+mod doe2;
+use doe2::DOE2;
 
 struct Row {
     spec: HingeSpec,
@@ -87,7 +90,7 @@ struct Row {
     err: [f64; 4],
 }
 
-fn rows(refs: &[CcxRef]) -> Vec<Row> {
+fn rows(refs: &[&CcxRef]) -> Vec<Row> {
     refs.iter()
         .map(|r| {
             let spec: HingeSpec = serde_json::from_str(r.hinge).unwrap_or_else(|e| panic!("{}: {e}", r.hinge));
@@ -192,7 +195,7 @@ const SCIKIT_FEM: [(&str, [f64; 4]); 3] = [
 /// stress-definition difference).
 #[test]
 fn solid_pipelines_agree() {
-    let all: Vec<&CcxRef> = FIT.iter().chain(HELD_OUT).collect();
+    let all: Vec<&CcxRef> = FIRST_FIT.iter().chain(FIRST_HELD_OUT).collect();
     let mut worst = [0.0f64; 2];
     for (hinge, sk) in SCIKIT_FEM {
         let spec: serde_json::Value = serde_json::from_str(hinge).unwrap();
@@ -244,32 +247,36 @@ fn solid_pipelines_agree() {
 /// quantities to the 6 digits copied here), and no two references share a geometry.
 #[test]
 fn every_reference_is_a_line_of_the_raw_results() {
-    let refs: Vec<&CcxRef> = FIT.iter().chain(HELD_OUT).collect();
+    let refs: Vec<&CcxRef> = FIRST_FIT.iter().chain(FIRST_HELD_OUT).collect();
     assert_eq!(raw_lines_matched("ccx_reference_results.jsonl", &refs), 50);
-    let fresh: Vec<&CcxRef> = DOE.iter().collect();
-    assert_eq!(raw_lines_matched("ccx_heldout_results.jsonl", &fresh), 24);
+    let first: Vec<&CcxRef> = DOE1.iter().collect();
+    assert_eq!(raw_lines_matched("ccx_heldout_results.jsonl", &first), 24);
+    let second: Vec<&CcxRef> = DOE2.iter().collect();
+    assert_eq!(raw_lines_matched("ccx_heldout2_results.jsonl", &second), 24);
 }
 
-/// The fresh held-out rows are the committed design of experiments, in its order
-/// (`tools/ccx_heldout_doe.json`: the same geometry, 12 circular notches then 12
-/// corner-filleted hinges).
+/// The fresh rows are the committed designs of experiments, in their order
+/// (`tools/ccx_heldout_doe.json`, `tools/ccx_heldout2_doe.json`: the same geometry, 12
+/// circular notches then 12 corner-filleted hinges each).
 #[test]
-fn fresh_rows_are_the_committed_design() {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tools/ccx_heldout_doe.json")).unwrap();
-    let design: Vec<serde_json::Value> = serde_json::from_str(&text).unwrap();
-    assert_eq!(design.len(), DOE.len());
-    for (d, r) in design.iter().zip(DOE) {
-        let spec: serde_json::Value = serde_json::from_str(r.hinge).unwrap();
-        for (k, v) in spec.as_object().unwrap() {
-            let same = match (d[k].as_f64(), v.as_f64()) {
-                (Some(a), Some(b)) => a == b,
-                _ => d[k] == *v,
-            };
-            assert!(same, "{}: {k} = {} in the design", r.hinge, d[k]);
+fn fresh_rows_are_the_committed_designs() {
+    for (file, refs) in [("ccx_heldout_doe.json", DOE1), ("ccx_heldout2_doe.json", DOE2)] {
+        let text = std::fs::read_to_string(format!("{}/tools/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
+        let design: Vec<serde_json::Value> = serde_json::from_str(&text).unwrap();
+        assert_eq!(design.len(), refs.len(), "{file}");
+        for (d, r) in design.iter().zip(refs) {
+            let spec: serde_json::Value = serde_json::from_str(r.hinge).unwrap();
+            for (k, v) in spec.as_object().unwrap() {
+                let same = match (d[k].as_f64(), v.as_f64()) {
+                    (Some(a), Some(b)) => a == b,
+                    _ => d[k] == *v,
+                };
+                assert!(same, "{file}: {}: {k} = {} in the design", r.hinge, d[k]);
+            }
         }
+        let n_circ = refs.iter().filter(|r| r.hinge.contains("circular_notch")).count();
+        assert_eq!((n_circ, refs.len() - n_circ), (12, 12), "{file}");
     }
-    let n_circ = DOE.iter().filter(|r| r.hinge.contains("circular_notch")).count();
-    assert_eq!((n_circ, DOE.len() - n_circ), (12, 12));
 }
 
 /// Checks that every reference of `refs` is exactly one line of `tools/<file>` (geometry, E, ν
@@ -313,25 +320,24 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 
 /// The targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
-/// Held-out rows per family.
-const N_CIRC_HELD: usize = 14;
-const N_CORNER_HELD: usize = 13;
-
-/// 14 held-out circular notches (R 1–15, t/R 0.08–0.5, w/t 0.6–10). Measured (bending / torsion
-/// / axial / peak σ/M, %): −0.60 … +0.92 / −3.20 … +10.96 / +1.05 … +4.06 / −1.36 … +3.52
-/// (torsion before the corrections: −11.44 … +3.28). Torsion misses the 10 % target on 1 of 14
-/// (R8/t1.5/w15, w/t = 10, computed after the fit: +10.96 %): pinned at 11.5 %.
-const CIRCULAR_TOL: [f64; 4] = [3.0, 11.5, 5.0, 5.0];
-/// 13 held-out corner-filleted hinges (l/t 2.3–10, R/t 0.5–2.5, w/t 1–10). Measured (bending /
-/// torsion / axial / peak σ/M, %): −0.16 … +4.79 / −10.63 … +2.65 / −1.74 … +1.88 / −1.79 …
-/// +2.13 (before the torsion corrections and the K_t exponent 1/5: torsion down to −17.36, peak
-/// stress up to +17.11). Bending misses the 3 % target on 4 of 13 (+3.11 … +4.79 %, short
-/// flats, l − 2R ≤ 2t, between large fillets: no short-notch factor is applied to this family),
-/// torsion on 1 of 13 (l3.4/R1.5/t1.5/w4.5, −10.63 %): pinned at 5 % and 11 %.
-const CORNER_TOL: [f64; 4] = [5.0, 11.0, 5.0, 5.0];
-/// 7 fitted corner-filleted hinges. Measured: bending −1.48 … +3.07 (misses the 3 % target by
-/// 0.07: pinned at 3.5), torsion −9.51 … +3.72, axial −0.59 … +1.77, peak σ/M −1.65 … +1.91 %.
-const CORNER_FIT_TOL: [f64; 4] = [3.5, 10.0, 5.0, 5.0];
+/// 12 held-out circular notches ([`DOE2`]: t/R 0.09–0.46, w/t 0.57–20, blank w/h 0.06–5,
+/// blank length 0.65–1.6 h), compared once with the frozen model. Measured (bending / torsion /
+/// axial / peak σ/M, %): −0.51 … +1.32 / −6.69 … +6.75 / −0.82 … +4.24 / −1.05 … +2.88: every
+/// target met.
+const CIRCULAR_TOL: [f64; 4] = TARGET;
+/// 12 held-out corner-filleted hinges ([`DOE2`]: l/t 2.2–8.4, R/t 0.52–2.3, w/t 1.2–20, blank
+/// w/h 0.18–5), compared once with the frozen model. Measured: −1.50 … +4.45 / −9.51 … +9.75 /
+/// −3.88 … +2.16 / −1.59 … +2.78. Bending misses the 3 % target on 3 of 12, all large fillets
+/// (R/t 1.4–2): l6.15/R2.65/t1.35/w2.85 +4.45, l3.5/R1.55/t1.1/w3.15 +3.98,
+/// l7.15/R2.85/t1.7/w21.7 +3.95: pinned at 4.5 %.
+const CORNER_TOL: [f64; 4] = [4.5, 10.0, 5.0, 5.0];
+/// The 38 circular notches of the fit. Measured: −0.66 … +1.45 / −8.09 … +8.82 / −0.04 … +4.14
+/// / −1.36 … +3.62: every target met.
+const CIRCULAR_FIT_TOL: [f64; 4] = TARGET;
+/// The 32 corner-filleted hinges of the fit. Measured: −1.48 … +4.84 / −8.48 … +6.99 / −4.74 …
+/// +2.27 / −2.38 … +2.92. Bending (not refitted) misses the 3 % target on 8 of 32, large fillets
+/// R/t ≥ 1 (+3.07 …  +4.84 %, l6.5/R2.95/t1.6/w2.8): pinned at 5 %.
+const CORNER_FIT_TOL: [f64; 4] = [5.0, 10.0, 5.0, 5.0];
 /// Peak-stress convergence pins, % (nodal-averaged, integration point), n = 4 → 5.
 /// (family, R mm, nodal-averaged tolerance %, integration-point tolerance %, measured gap %).
 #[allow(clippy::type_complexity)]
@@ -339,53 +345,21 @@ const CONV_TOL: [(&str, f64, f64, f64, f64); 2] = [
     ("circular_notch", 8.0, 0.6, 2.8, 4.85),
     ("corner_filleted", 2.0, 0.8, 1.5, 6.82),
 ];
-/// 3 held-out turned necks. Measured (bending / torsion / axial / peak σ/M, %):
-/// -0.83 … +0.84 / -2.25 … -0.28 / -1.16 … -0.26 / -2.41 … +0.74.
+/// 4 turned necks (their model is not fitted on these rows). Measured (bending / torsion /
+/// axial / peak σ/M, %): −0.83 … +0.84 / −2.25 … −0.28 / −1.16 … +0.19 / −2.41 … +1.12.
 const NECK_TOL: [f64; 4] = [3.0, 5.0, 3.0, 3.0];
 
-/// 12 fresh held-out circular notches ([`DOE`]: t/R 0.09–0.45, w/t 0.65–15.9), compared once,
-/// after the model was frozen. Measured (bending / torsion / axial / peak σ/M, %): −0.66 … +1.45
-/// / −2.81 … +22.47 / +0.16 … +4.14 / −0.88 … +3.08. Torsion misses the 10 % target on 3 of 12,
-/// all wide notches between wide, low blanks (blank w/h ≥ 2.9): R5/t1.5/w22.5/h6.5 +22.47,
-/// R10.75/t4.8/w48.05/h15.55 +21.35, R6.85/t1.55/w24.6/h8.4 +19.39: pinned at 23 %.
-const CIRCULAR_FRESH_TOL: [f64; 4] = [3.0, 23.0, 5.0, 5.0];
-/// 12 fresh held-out corner-filleted hinges ([`DOE`]: l/t 2–9.5, R/t 0.5–2.5, w/t 1.2–16.6),
-/// compared once, after the model was frozen. Measured: −0.10 … +4.84 / −8.21 … +21.18 /
-/// −4.74 … +2.27 / −2.38 … +2.92. Bending misses the 3 % target on 3 of 12 (large fillets,
-/// R/t ≥ 1.5: l6.5/R2.95/t1.6/w2.8 +4.84, l5.4/R2.5/t1/w8 +4.52, l5.1/R2.25/t1.5/w6 +3.77),
-/// torsion on 1 of 12 (l3.7/R1.2/t1.75/w29, w/t 16.6, blank w/h 4.9: +21.18): pinned at 5 % and
-/// 21.5 %.
-const CORNER_FRESH_TOL: [f64; 4] = [5.0, 21.5, 5.0, 5.0];
-
-#[test]
-fn circular_notches_fresh_held_out() {
-    let all = rows(DOE);
-    let rows = family(&all, circular);
-    assert_eq!(rows.len(), 12);
-    check(
-        "fresh held-out circular notches",
-        report("circular notches vs CalculiX, FRESH HELD OUT", &rows),
-        CIRCULAR_FRESH_TOL,
-    );
-}
-
-#[test]
-fn corner_filleted_fresh_held_out() {
-    let all = rows(DOE);
-    let rows = family(&all, corner);
-    assert_eq!(rows.len(), 12);
-    check(
-        "fresh held-out corner-filleted hinges",
-        report("corner-filleted hinges vs CalculiX, FRESH HELD OUT", &rows),
-        CORNER_FRESH_TOL,
-    );
+/// Every row computed before the current torsion law was fitted: the first calibration's FIT
+/// and HELD_OUT rows and the first fresh design ([`DOE1`]).
+fn fit_rows() -> Vec<Row> {
+    rows(&FIRST_FIT.iter().chain(FIRST_HELD_OUT).chain(DOE1).collect::<Vec<_>>())
 }
 
 #[test]
 fn circular_notches_held_out() {
-    let all = rows(HELD_OUT);
+    let all = rows(&DOE2.iter().collect::<Vec<_>>());
     let rows = family(&all, circular);
-    assert_eq!(rows.len(), N_CIRC_HELD);
+    assert_eq!(rows.len(), 12);
     check(
         "held-out circular notches",
         report("circular notches vs CalculiX, HELD OUT", &rows),
@@ -395,9 +369,9 @@ fn circular_notches_held_out() {
 
 #[test]
 fn corner_filleted_held_out() {
-    let all = rows(HELD_OUT);
+    let all = rows(&DOE2.iter().collect::<Vec<_>>());
     let rows = family(&all, corner);
-    assert_eq!(rows.len(), N_CORNER_HELD);
+    assert_eq!(rows.len(), 12);
     check(
         "held-out corner-filleted hinges",
         report("corner-filleted hinges vs CalculiX, HELD OUT", &rows),
@@ -405,43 +379,33 @@ fn corner_filleted_held_out() {
     );
 }
 
+/// The turned necks (the Ruiz et al. neck and three others; the neck's model is the earlier
+/// scikit-fem calibration, not refitted here).
 #[test]
-fn turned_necks_held_out() {
-    let all = rows(HELD_OUT);
+fn turned_necks() {
+    let all = fit_rows();
     let rows = family(&all, neck);
-    assert_eq!(rows.len(), 3);
-    check(
-        "held-out turned necks",
-        report("turned necks vs CalculiX, HELD OUT", &rows),
-        NECK_TOL,
-    );
+    assert_eq!(rows.len(), 4);
+    check("turned necks", report("turned necks vs CalculiX", &rows), NECK_TOL);
 }
 
-/// The rows the torsion corrections and the corner-filleted K_t were fitted on (and the
-/// geometries of the earlier scikit-fem fits: the Ruiz et al. notch, the turned neck), against
-/// the same targets. Measured (bending / torsion / axial / peak σ/M, %): 12 circular notches
-/// −0.55 … +0.96 / −2.36 … +6.87 / −0.04 … +3.64 / −0.41 … +3.62; 7 corner-filleted hinges see
-/// [`CORNER_FIT_TOL`]; the neck +0.58 / −0.31 / +0.19 / +1.12.
+/// The rows the current torsion law was fitted on (and the corner-filleted K_t, fitted on the
+/// first calibration's FIT rows), against the same targets.
 #[test]
 fn rows_used_in_the_fits() {
-    let all = rows(FIT);
+    let all = fit_rows();
     let circ = family(&all, circular);
     let corn = family(&all, corner);
-    assert_eq!((circ.len(), corn.len(), all.len()), (12, 7, 12 + 7 + 1));
+    assert_eq!((circ.len(), corn.len(), all.len()), (38, 32, 74));
     check(
         "fitted circular notches",
         report("circular notches vs CalculiX, FIT", &circ),
-        TARGET,
+        CIRCULAR_FIT_TOL,
     );
     check(
         "fitted corner-filleted hinges",
         report("corner-filleted hinges vs CalculiX, FIT", &corn),
         CORNER_FIT_TOL,
-    );
-    check(
-        "fitted turned neck",
-        report("turned neck vs CalculiX, FIT", &family(&all, neck)),
-        NECK_TOL,
     );
 }
 
