@@ -22,6 +22,10 @@
 //! 1 µm leaf between 10 mm blanks); in φ every section carries the torque itself and
 //! neighbours are coupled only through EΓ.
 //!
+//! The solid-calibrated torsion ([`solid_torsion_stiffness`]) adds the shear strain of the
+//! warping (Benscoter, [`benscoter_torsion_pair`]): the same problem for the warping amplitude
+//! ψ, with GJ replaced by the series stiffness K and a direct term (see there).
+//!
 //! Discretisation: 3-node quadratic Lagrange elements for φ — C⁰, so φ' may jump where EΓ
 //! jumps (the bimoment EΓφ' is what stays continuous); the same discrete space as Hermite
 //! cubics in θ, so the same stiffness in exact arithmetic. GJ and EΓ sampled at 4 Gauss points
