@@ -24,7 +24,8 @@
 //! nodal-averaged peak is the converged stress definition and the one compared here
 //! ([`peak_stress_mesh_convergence`]).
 //!
-//! Split (the cases used to fit kept apart from those used to check): of the 35 circular and
+//! The first calibration's split (the cases used to fit kept apart from those used to check;
+//! superseded for torsion, see below): of the 35 circular and
 //! corner-filleted rows computed before the torsion corrections
 //! (`hinge::torsion::solid_torsion_stiffness`) and the corner-filleted K_t exponent
 //! (`hinge::stress::stress_concentration`) were fitted, every other one in the order of w/t,
@@ -35,6 +36,27 @@
 //! rows alone. Every other row is
 //! HELD_OUT, among them all the rows computed after the fit (5 circular notches, 6
 //! corner-filleted hinges).
+//!
+//! The current torsion law and its check (the torsion of `hinge::torsion::solid_torsion_stiffness`).
+//! Once all 50 rows above had been looked at, a first fresh design of experiments ([`DOE1`],
+//! 24 rows) was drawn by a written rule (`tools/ccx_heldout_doe.py`: a Latin hypercube, numpy
+//! `default_rng(20261128)`, log-uniform over t/R 0.08–0.5 and w/t 0.5–20 for circular notches,
+//! R/t 0.5–2.5, flat (l − 2R)/t 0.3–6 and w/t 1–20 for corner-filleted hinges, 8 rows each, plus
+//! 4 rows per family in the regimes the model missed; blank height t + R or 2t + 2R, blank
+//! length = h) and committed (`tools/ccx_heldout_doe.json`) before its solid models were run
+//! (`tools/ccx_heldout_results.jsonl`). Refits of the first law on the 50 rows were tried and
+//! none lowered the worst torsion error of both families together, so the first law was
+//! compared with [`DOE1`] unchanged, once: wide hinges between wide, low blanks (blank
+//! w/h ≥ 2.9, w/t 10–17) came out 19–22 % too stiff in torsion in both families (the 50 rows
+//! had w/t ≤ 10 and blanks tied to t and R). A second design ([`DOE2`], 24 rows, the same rule
+//! with `default_rng(20261129)` and the blank's height and length varied independently, plus
+//! wide, low blanks; `tools/ccx_heldout2_doe.json`) was then committed, its models run, and
+//! the torsion law refitted on all 74 earlier rows (Benscoter's warping shear added, the
+//! plate-mode centre and the spreading slope refitted) and committed before [`DOE2`] was
+//! compared, once. So the FIT rows are the 50 of the first calibration (`FIRST_FIT`,
+//! `FIRST_HELD_OUT`, named by that split) and [`DOE1`]; the HELD_OUT rows are [`DOE2`]. The
+//! corner-filleted K_t is still the first calibration's, fitted on `FIRST_FIT`; bending and
+//! axial stiffness and the circular notches' peak stress are not fitted on these models.
 //!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
@@ -56,7 +78,13 @@ use flexfem::material::Material;
 
 #[path = "hinge_ccx_reference/references.rs"]
 mod references;
-use references::{CcxRef, FIT, HELD_OUT};
+use references::{CcxRef, FIRST_FIT, FIRST_HELD_OUT};
+#[path = "hinge_ccx_reference/doe.rs"]
+mod doe;
+use doe::DOE1;
+#[path = "hinge_ccx_reference/doe2.rs"]
+mod doe2;
+use doe2::DOE2;
 
 struct Row {
     spec: HingeSpec,
@@ -64,7 +92,7 @@ struct Row {
     err: [f64; 4],
 }
 
-fn rows(refs: &[CcxRef]) -> Vec<Row> {
+fn rows(refs: &[&CcxRef]) -> Vec<Row> {
     refs.iter()
         .map(|r| {
             let spec: HingeSpec = serde_json::from_str(r.hinge).unwrap_or_else(|e| panic!("{}: {e}", r.hinge));
@@ -169,7 +197,7 @@ const SCIKIT_FEM: [(&str, [f64; 4]); 3] = [
 /// stress-definition difference).
 #[test]
 fn solid_pipelines_agree() {
-    let all: Vec<&CcxRef> = FIT.iter().chain(HELD_OUT).collect();
+    let all: Vec<&CcxRef> = FIRST_FIT.iter().chain(FIRST_HELD_OUT).collect();
     let mut worst = [0.0f64; 2];
     for (hinge, sk) in SCIKIT_FEM {
         let spec: serde_json::Value = serde_json::from_str(hinge).unwrap();
@@ -221,15 +249,48 @@ fn solid_pipelines_agree() {
 /// quantities to the 6 digits copied here), and no two references share a geometry.
 #[test]
 fn every_reference_is_a_line_of_the_raw_results() {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tools/ccx_reference_results.jsonl"
-    ))
-    .unwrap();
+    let refs: Vec<&CcxRef> = FIRST_FIT.iter().chain(FIRST_HELD_OUT).collect();
+    assert_eq!(raw_lines_matched("ccx_reference_results.jsonl", &refs), 50);
+    let first: Vec<&CcxRef> = DOE1.iter().collect();
+    assert_eq!(raw_lines_matched("ccx_heldout_results.jsonl", &first), 24);
+    let second: Vec<&CcxRef> = DOE2.iter().collect();
+    assert_eq!(raw_lines_matched("ccx_heldout2_results.jsonl", &second), 24);
+}
+
+/// The fresh rows are the committed designs of experiments, in their order
+/// (`tools/ccx_heldout_doe.json`, `tools/ccx_heldout2_doe.json`: the same geometry, 12
+/// circular notches then 12 corner-filleted hinges each).
+#[test]
+fn fresh_rows_are_the_committed_designs() {
+    for (file, refs) in [("ccx_heldout_doe.json", DOE1), ("ccx_heldout2_doe.json", DOE2)] {
+        let text = std::fs::read_to_string(format!("{}/tools/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
+        let design: Vec<serde_json::Value> = serde_json::from_str(&text).unwrap();
+        assert_eq!(design.len(), refs.len(), "{file}");
+        for (d, r) in design.iter().zip(refs) {
+            let spec: serde_json::Value = serde_json::from_str(r.hinge).unwrap();
+            for (k, v) in spec.as_object().unwrap() {
+                let same = match (d[k].as_f64(), v.as_f64()) {
+                    (Some(a), Some(b)) => a == b,
+                    _ => d[k] == *v,
+                };
+                assert!(same, "{file}: {}: {k} = {} in the design", r.hinge, d[k]);
+            }
+        }
+        let n_circ = refs.iter().filter(|r| r.hinge.contains("circular_notch")).count();
+        assert_eq!((n_circ, refs.len() - n_circ), (12, 12), "{file}");
+    }
+}
+
+/// Checks that every reference of `refs` is exactly one line of `tools/<file>` (geometry, E, ν
+/// and the five quantities to 6 digits) and that the file has no other line; returns the
+/// number of lines.
+fn raw_lines_matched(file: &str, refs: &[&CcxRef]) -> usize {
+    let path = format!("{}/tools/{file}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap();
     let lines: Vec<serde_json::Value> = text.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
-    assert_eq!(lines.len(), FIT.len() + HELD_OUT.len());
+    assert_eq!(lines.len(), refs.len(), "{file}");
     let close = |a: &serde_json::Value, b: f64| a.as_f64().is_some_and(|a| (a / b - 1.0).abs() < 1e-5);
-    for r in FIT.iter().chain(HELD_OUT) {
+    for r in refs {
         let spec: serde_json::Value = serde_json::from_str(r.hinge).unwrap();
         let matches = lines
             .iter()
@@ -246,6 +307,7 @@ fn every_reference_is_a_line_of_the_raw_results() {
             .count();
         assert_eq!(matches, 1, "{} (ν = {}): {matches} matching lines", r.hinge, r.nu);
     }
+    lines.len()
 }
 
 /// The integration-point peak lies this far below the nodal-averaged peak on the hinges of
@@ -260,25 +322,24 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 
 /// The targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
-/// Held-out rows per family.
-const N_CIRC_HELD: usize = 14;
-const N_CORNER_HELD: usize = 13;
-
-/// 14 held-out circular notches (R 1–15, t/R 0.08–0.5, w/t 0.6–10). Measured (bending / torsion
-/// / axial / peak σ/M, %): −0.60 … +0.92 / −3.20 … +10.96 / +1.05 … +4.06 / −1.36 … +3.52
-/// (torsion before the corrections: −11.44 … +3.28). Torsion misses the 10 % target on 1 of 14
-/// (R8/t1.5/w15, w/t = 10, computed after the fit: +10.96 %): pinned at 11.5 %.
-const CIRCULAR_TOL: [f64; 4] = [3.0, 11.5, 5.0, 5.0];
-/// 13 held-out corner-filleted hinges (l/t 2.3–10, R/t 0.5–2.5, w/t 1–10). Measured (bending /
-/// torsion / axial / peak σ/M, %): −0.16 … +4.79 / −10.63 … +2.65 / −1.74 … +1.88 / −1.79 …
-/// +2.13 (before the torsion corrections and the K_t exponent 1/5: torsion down to −17.36, peak
-/// stress up to +17.11). Bending misses the 3 % target on 4 of 13 (+3.11 … +4.79 %, short
-/// flats, l − 2R ≤ 2t, between large fillets: no short-notch factor is applied to this family),
-/// torsion on 1 of 13 (l3.4/R1.5/t1.5/w4.5, −10.63 %): pinned at 5 % and 11 %.
-const CORNER_TOL: [f64; 4] = [5.0, 11.0, 5.0, 5.0];
-/// 7 fitted corner-filleted hinges. Measured: bending −1.48 … +3.07 (misses the 3 % target by
-/// 0.07: pinned at 3.5), torsion −9.51 … +3.72, axial −0.59 … +1.77, peak σ/M −1.65 … +1.91 %.
-const CORNER_FIT_TOL: [f64; 4] = [3.5, 10.0, 5.0, 5.0];
+/// 12 held-out circular notches ([`DOE2`]: t/R 0.09–0.46, w/t 0.57–20, blank w/h 0.06–5,
+/// blank length 0.65–1.6 h), compared once with the frozen model. Measured (bending / torsion /
+/// axial / peak σ/M, %): −0.51 … +1.32 / −6.69 … +6.75 / −0.82 … +4.24 / −1.05 … +2.88: every
+/// target met.
+const CIRCULAR_TOL: [f64; 4] = TARGET;
+/// 12 held-out corner-filleted hinges ([`DOE2`]: l/t 2.2–8.4, R/t 0.52–2.3, w/t 1.2–20, blank
+/// w/h 0.18–5), compared once with the frozen model. Measured: −1.50 … +4.45 / −9.51 … +9.75 /
+/// −3.88 … +2.16 / −1.59 … +2.78. Bending misses the 3 % target on 3 of 12, all large fillets
+/// (R/t 1.4–2): l6.15/R2.65/t1.35/w2.85 +4.45, l3.5/R1.55/t1.1/w3.15 +3.98,
+/// l7.15/R2.85/t1.7/w21.7 +3.95: pinned at 4.5 %.
+const CORNER_TOL: [f64; 4] = [4.5, 10.0, 5.0, 5.0];
+/// The 38 circular notches of the fit. Measured: −0.66 … +1.45 / −8.09 … +8.82 / −0.04 … +4.14
+/// / −1.36 … +3.62: every target met.
+const CIRCULAR_FIT_TOL: [f64; 4] = TARGET;
+/// The 32 corner-filleted hinges of the fit. Measured: −1.48 … +4.84 / −8.48 … +6.99 / −4.74 …
+/// +2.27 / −2.38 … +2.92. Bending (not refitted) misses the 3 % target on 8 of 32, large fillets
+/// R/t ≥ 1 (+3.07 … +4.84 %, l6.5/R2.95/t1.6/w2.8): pinned at 5 %.
+const CORNER_FIT_TOL: [f64; 4] = [5.0, 10.0, 5.0, 5.0];
 /// Peak-stress convergence pins, % (nodal-averaged, integration point), n = 4 → 5.
 /// (family, R mm, nodal-averaged tolerance %, integration-point tolerance %, measured gap %).
 #[allow(clippy::type_complexity)]
@@ -286,15 +347,21 @@ const CONV_TOL: [(&str, f64, f64, f64, f64); 2] = [
     ("circular_notch", 8.0, 0.6, 2.8, 4.85),
     ("corner_filleted", 2.0, 0.8, 1.5, 6.82),
 ];
-/// 3 held-out turned necks. Measured (bending / torsion / axial / peak σ/M, %):
-/// -0.83 … +0.84 / -2.25 … -0.28 / -1.16 … -0.26 / -2.41 … +0.74.
+/// 4 turned necks (their model is not fitted on these rows). Measured (bending / torsion /
+/// axial / peak σ/M, %): −0.83 … +0.84 / −2.25 … −0.28 / −1.16 … +0.19 / −2.41 … +1.12.
 const NECK_TOL: [f64; 4] = [3.0, 5.0, 3.0, 3.0];
+
+/// Every row computed before the current torsion law was fitted: the first calibration's FIT
+/// and HELD_OUT rows and the first fresh design ([`DOE1`]).
+fn fit_rows() -> Vec<Row> {
+    rows(&FIRST_FIT.iter().chain(FIRST_HELD_OUT).chain(DOE1).collect::<Vec<_>>())
+}
 
 #[test]
 fn circular_notches_held_out() {
-    let all = rows(HELD_OUT);
+    let all = rows(&DOE2.iter().collect::<Vec<_>>());
     let rows = family(&all, circular);
-    assert_eq!(rows.len(), N_CIRC_HELD);
+    assert_eq!(rows.len(), 12);
     check(
         "held-out circular notches",
         report("circular notches vs CalculiX, HELD OUT", &rows),
@@ -304,9 +371,9 @@ fn circular_notches_held_out() {
 
 #[test]
 fn corner_filleted_held_out() {
-    let all = rows(HELD_OUT);
+    let all = rows(&DOE2.iter().collect::<Vec<_>>());
     let rows = family(&all, corner);
-    assert_eq!(rows.len(), N_CORNER_HELD);
+    assert_eq!(rows.len(), 12);
     check(
         "held-out corner-filleted hinges",
         report("corner-filleted hinges vs CalculiX, HELD OUT", &rows),
@@ -314,43 +381,33 @@ fn corner_filleted_held_out() {
     );
 }
 
+/// The turned necks (the Ruiz et al. neck and three others; the neck's model is the earlier
+/// scikit-fem calibration, not refitted here).
 #[test]
-fn turned_necks_held_out() {
-    let all = rows(HELD_OUT);
+fn turned_necks() {
+    let all = fit_rows();
     let rows = family(&all, neck);
-    assert_eq!(rows.len(), 3);
-    check(
-        "held-out turned necks",
-        report("turned necks vs CalculiX, HELD OUT", &rows),
-        NECK_TOL,
-    );
+    assert_eq!(rows.len(), 4);
+    check("turned necks", report("turned necks vs CalculiX", &rows), NECK_TOL);
 }
 
-/// The rows the torsion corrections and the corner-filleted K_t were fitted on (and the
-/// geometries of the earlier scikit-fem fits: the Ruiz et al. notch, the turned neck), against
-/// the same targets. Measured (bending / torsion / axial / peak σ/M, %): 12 circular notches
-/// −0.55 … +0.96 / −2.36 … +6.87 / −0.04 … +3.64 / −0.41 … +3.62; 7 corner-filleted hinges see
-/// [`CORNER_FIT_TOL`]; the neck +0.58 / −0.31 / +0.19 / +1.12.
+/// The rows the current torsion law was fitted on (and the corner-filleted K_t, fitted on the
+/// first calibration's FIT rows), against the same targets.
 #[test]
 fn rows_used_in_the_fits() {
-    let all = rows(FIT);
+    let all = fit_rows();
     let circ = family(&all, circular);
     let corn = family(&all, corner);
-    assert_eq!((circ.len(), corn.len(), all.len()), (12, 7, 12 + 7 + 1));
+    assert_eq!((circ.len(), corn.len(), all.len()), (38, 32, 74));
     check(
         "fitted circular notches",
         report("circular notches vs CalculiX, FIT", &circ),
-        TARGET,
+        CIRCULAR_FIT_TOL,
     );
     check(
         "fitted corner-filleted hinges",
         report("corner-filleted hinges vs CalculiX, FIT", &corn),
         CORNER_FIT_TOL,
-    );
-    check(
-        "fitted turned neck",
-        report("turned neck vs CalculiX, FIT", &family(&all, neck)),
-        NECK_TOL,
     );
 }
 

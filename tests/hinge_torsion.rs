@@ -1,7 +1,9 @@
-//! Torsion: rectangle J and Γ, Vlasov FE against closed-form solutions.
+//! Torsion: rectangle J and Γ, Vlasov and Benscoter FE against closed-form solutions.
 
-use flexfem::hinge::section::{rect_torsion_constant, rect_warping_constant};
-use flexfem::hinge::torsion::{torsion_fe, vlasov_torsion_stiffness, TorsionMesh};
+use flexfem::hinge::section::{cowper_rect, rect_torsion_constant, rect_warping_constant};
+use flexfem::hinge::torsion::{
+    benscoter_torsion_stiffness, torsion_fe, vlasov_torsion_stiffness, TorsionMesh, WarpingShear,
+};
 use flexfem::hinge::{Contour, Profile};
 use std::f64::consts::PI;
 
@@ -76,6 +78,39 @@ fn prismatic_bar_both_ends_warping_restrained() {
     // And the bare FE on a uniform mesh.
     let xs: Vec<f64> = (0..=40).map(|i| l * i as f64 / 40.0).collect();
     assert!(rel(torsion_fe(&xs, |_| (gj, eg)), exact) < 1e-6);
+}
+
+#[test]
+fn prismatic_bar_with_warping_shear() {
+    // Closed-form Benscoter (1954) solution, warping amplitude ψ = 0 at both ends: with
+    // K = GJ·S/(GJ + S), S = κ G J_r, μ = √(K/EΓ), ψ solves −EΓ ψ″ + K ψ = K T/GJ and
+    // θ/T = L/(GJ + S) + (K/GJ²)(L − 2 tanh(μL/2)/μ) (the Vlasov form when S → ∞).
+    let (e, g) = (72_000.0, 27_067.7);
+    let nu = e / (2.0 * g) - 1.0;
+    let (w, t, l) = (10.0, 0.6, 5.0);
+    let j = rect_torsion_constant(w, t);
+    let (gj, eg) = (g * j, e * rect_warping_constant(w, t));
+    let p = Profile::rectangular(Contour::Leaf { l, t }, w, 2.0, 0.0).unwrap();
+    let vlasov = vlasov_torsion_stiffness(&p, e, g, TorsionMesh::default());
+    // J_r of the Saint-Venant mode (I_p − J) and of the plate mode (t·w³/12).
+    // Measured softening against Vlasov: 3.476 % (Saint-Venant mode), 3.442 % (plate mode).
+    let modes = [
+        (0.0, w * t * (w * w + t * t) / 12.0 - j, 0.03476),
+        (1.0, t * w.powi(3) / 12.0, 0.03442),
+    ];
+    for (plate, jr, measured) in modes {
+        let kappa = cowper_rect(nu);
+        let s = kappa * g * jr;
+        let k = gj * s / (gj + s);
+        let mu = (k / eg).sqrt();
+        let exact = 1.0 / (l / (gj + s) + k / (gj * gj) * (l - 2.0 * (mu * l / 2.0).tanh() / mu));
+        let shear = WarpingShear { kappa, plate };
+        let fe = benscoter_torsion_stiffness(&p, e, g, shear, TorsionMesh::default());
+        assert!(rel(fe, exact) < 1e-4, "plate {plate}: {fe} vs {exact}");
+        // The warping shear softens this short wide bar (L/w = 0.5) by ≈ 3.5 %.
+        let soft = 1.0 - fe / vlasov;
+        assert!((soft - measured).abs() < 2e-4, "plate {plate}: softer by {soft}");
+    }
 }
 
 #[test]

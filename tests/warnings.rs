@@ -64,7 +64,9 @@ const KNOWN: [(&str, &[&str]); 7] = [
     ),
     (
         "ruiz2019_stage_nonlinear.json",
-        &["load_cases[2] (\"F60\"): the revolute hinge of leg 1 is above the allowable stress"],
+        // F60 pushes all three legs alike: their revolute stresses agree to 1e-13 relative
+        // (551.43 MPa), so which leg is named is decided by round-off.
+        &["load_cases[2] (\"F60\"): the revolute hinge of leg "],
     ),
     (
         "pendulum_nonlinear_transient.json",

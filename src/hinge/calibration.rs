@@ -12,10 +12,10 @@
 //! * the plane-strain factor P (every rectangular family): w/t 0.5–20.
 //!
 //! A second solver, CalculiX (ccx 2.20, C3D10, `tools/ccx_reference.py`; tests/hinge_ccx_reference.rs
-//! with its FIT and HELD_OUT rows), checks circular notches over t/R 0.08–0.5, w/t 0.6–10 and
-//! corner-filleted hinges over l/t 2–10, R/t 0.5–2.5, w/t 1–10; the torsion corrections of
-//! [`super::torsion::solid_torsion_stiffness`] and the corner-filleted K_t
-//! ([`super::stress::stress_concentration`]) were fitted there. Corner-filleted hinges are
+//! with its fitted and held-out rows, 98 models), checks circular notches over t/R 0.08–0.5,
+//! w/t 0.57–20 and corner-filleted hinges over l/t 2–10, R/t 0.5–2.5, w/t 1–20, blank w/h
+//! 0.06–5; the torsion law of [`super::torsion::solid_torsion_stiffness`] and the
+//! corner-filleted K_t ([`super::stress::stress_concentration`]) were fitted there. Corner-filleted hinges are
 //! range-checked in w/t only (the bundled pan-tilt hinge, t/R = 0.34, w/t = 16.7, lies in the
 //! scikit-fem set).
 //!

@@ -14,10 +14,11 @@
 //! turn into beam elements ([`segment_compliance`]). Its known gaps are handled explicitly:
 //!
 //! * **Torsion** of rectangular notches: Saint-Venant is far too soft because the blanks
-//!   restrain warping; k_torsion comes from a Vlasov warping-torsion FE ([`torsion`]) on the
-//!   geometric section in the notch and the load-spreading effective section in the blank, with
-//!   plate-mode warping of wide waists and torsional spreading at slope 0.55 measured against
-//!   CalculiX solid models ([`torsion::solid_torsion_stiffness`]). The turned
+//!   restrain warping; k_torsion comes from a warping-torsion FE ([`torsion`]) on the
+//!   geometric section in the notch and the load-spreading effective section in the blank:
+//!   Vlasov's model with Benscoter's shear strain of the warping, plate-mode warping of wide
+//!   waists and torsional spreading at slope 1.3, measured against CalculiX solid models
+//!   ([`torsion::solid_torsion_stiffness`]). The turned
 //!   neck has a circular waist (no warping) and uses plain ∫1/GJ.
 //! * **Three-dimensional effects**, calibrated against converged quadratic-tetrahedron solid
 //!   models (`tools/solid_reference.py`, tests/hinge_solid_reference.rs): load spreading out of

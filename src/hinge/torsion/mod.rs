@@ -22,6 +22,10 @@
 //! 1 µm leaf between 10 mm blanks); in φ every section carries the torque itself and
 //! neighbours are coupled only through EΓ.
 //!
+//! The solid-calibrated torsion ([`solid_torsion_stiffness`]) adds the shear strain of the
+//! warping (Benscoter, [`benscoter_torsion_pair`]): the same problem for the warping amplitude
+//! ψ, with GJ replaced by the series stiffness K and a direct term (see there).
+//!
 //! Discretisation: 3-node quadratic Lagrange elements for φ — C⁰, so φ' may jump where EΓ
 //! jumps (the bimoment EΓφ' is what stays continuous); the same discrete space as Hermite
 //! cubics in θ, so the same stiffness in exact arithmetic. GJ and EΓ sampled at 4 Gauss points
@@ -60,24 +64,87 @@ pub const MAX_NODES: usize = 320;
 /// Torsional stiffness T/θ (N·mm/rad) of a rectangular-section hinge between its two blank end
 /// faces, warping restrained at both faces. `e`, `g` in MPa.
 pub fn vlasov_torsion_stiffness(profile: &Profile, e: f64, g: f64, mesh: TorsionMesh) -> f64 {
-    let half = HalfMesh::new(profile, mesh, e, g);
+    let half = HalfMesh::new(profile, mesh, e, g, None);
     half.solve(half.n)
+}
+
+/// [`vlasov_torsion_stiffness`] with the shear strain of non-uniform warping (Benscoter's
+/// theory, see [`benscoter_torsion_pair`]).
+pub fn benscoter_torsion_stiffness(profile: &Profile, e: f64, g: f64, shear: WarpingShear, mesh: TorsionMesh) -> f64 {
+    let half = HalfMesh::new(profile, mesh, e, g, Some(shear));
+    half.solve(half.n)
+}
+
+/// The warping shear of [`benscoter_torsion_pair`]: its shear coefficient κ and the warping
+/// mode, `plate` ∈ [0, 1] the weight of the plate mode ω = −yz against the Saint-Venant mode
+/// (the weight s of [`warping_modulus_factor`]).
+#[derive(Debug, Clone, Copy)]
+pub struct WarpingShear {
+    pub kappa: f64,
+    pub plate: f64,
+}
+
+impl WarpingShear {
+    /// J_r (mm⁴) of a rectangle `w` × `t` of Saint-Venant constant `j`: I_p − J for the
+    /// Saint-Venant warping mode (∫|∇ω|² dA), t·w³/12 for the plate mode (the transverse shear
+    /// γ_xz = y(θ′ − ψ) of a Mindlin plate strip), blended by `plate`.
+    fn warping_shear_constant(&self, w: f64, t: f64, j: f64) -> f64 {
+        let saint_venant = w * t * (w * w + t * t) / 12.0 - j;
+        (1.0 - self.plate) * saint_venant + self.plate * t * w.powi(3) / 12.0
+    }
 }
 
 /// [`vlasov_torsion_stiffness`] of a hinge in its blank and of its notch alone (`notch`: the
 /// same profile with no blank). The notch's mesh is the hinge's mesh inside the notch (the same
 /// pieces give the same nodes), so its section properties are the hinge's, sampled once.
 pub fn vlasov_torsion_pair(profile: &Profile, notch: &Profile, e: f64, g: f64, mesh: TorsionMesh) -> (f64, f64) {
-    let whole = HalfMesh::new(profile, mesh, e, g);
+    torsion_pair(profile, notch, e, g, None, mesh)
+}
+
+/// [`vlasov_torsion_pair`] with the shear strain of non-uniform warping (Benscoter, *A theory
+/// of torsion bending for multicell beams*, J. Appl. Mech. 21 (1954) 25–34): the warping
+/// displacement is ω(y, z)·ψ(x) with its own amplitude ψ instead of Vlasov's θ′, so the
+/// section carries the Saint-Venant torque GJ θ′ plus a warping shear torque
+/// S = κ G J_r (θ′ − ψ) ([`WarpingShear`]: J_r = ∫|∇ω|² dA = I_p − J for the Saint-Venant
+/// mode, t·w³/12 for the plate mode; κ the shear coefficient); and the bimoment −EΓ ψ′
+/// balances it, −(EΓ ψ′)′ = S. With
+/// a torque T constant along x, ψ solves −(EΓ ψ′)′ + K ψ = K T/GJ, K = GJ·κGJ_r/(GJ + κGJ_r)
+/// (ψ = 0 at both restrained faces), and θ(end) = ∫ T/(GJ + κGJ_r) dx + ∫ (K/GJ) ψ dx.
+/// Vlasov's theory is the limit κGJ_r → ∞ (ψ = θ′).
+pub fn benscoter_torsion_pair(
+    profile: &Profile,
+    notch: &Profile,
+    e: f64,
+    g: f64,
+    shear: WarpingShear,
+    mesh: TorsionMesh,
+) -> (f64, f64) {
+    torsion_pair(profile, notch, e, g, Some(shear), mesh)
+}
+
+fn torsion_pair(
+    profile: &Profile,
+    notch: &Profile,
+    e: f64,
+    g: f64,
+    shear: Option<WarpingShear>,
+    mesh: TorsionMesh,
+) -> (f64, f64) {
+    let whole = HalfMesh::new(profile, mesh, e, g, shear);
     let mut own = [0.0; MAX_NODES / 2];
     let nn = half_nodes(notch, mesh, e, g, &mut own);
     let k_notch = if nn <= whole.n && own[..nn] == whole.x[..nn] {
         whole.solve(nn)
     } else {
-        vlasov_torsion_stiffness(notch, e, g, mesh)
+        let half = HalfMesh::new(notch, mesh, e, g, shear);
+        half.solve(half.n)
     };
     (whole.solve(whole.n), k_notch)
 }
+
+/// Section properties at a quadrature point: GJ (N·mm²), EΓ (N·mm⁴) and r = GJ/(κ G J_r), the
+/// ratio of the Saint-Venant to the warping shear stiffness (0: Vlasov).
+type Props = (f64, f64, f64);
 
 /// The nodes of the half mesh x ≥ 0 and (GJ, EΓ) at the 4 Gauss points of each of its
 /// intervals: the profile is symmetric, so the mirrored half of the mesh takes the same values
@@ -85,17 +152,17 @@ pub fn vlasov_torsion_pair(profile: &Profile, notch: &Profile, e: f64, g: f64, m
 struct HalfMesh {
     x: [f64; MAX_NODES / 2],
     n: usize,
-    gp: [[(f64, f64); 4]; MAX_NODES / 2],
+    gp: [[Props; 4]; MAX_NODES / 2],
 }
 
 impl HalfMesh {
-    fn new(profile: &Profile, mesh: TorsionMesh, e: f64, g: f64) -> Self {
+    fn new(profile: &Profile, mesh: TorsionMesh, e: f64, g: f64, shear: Option<WarpingShear>) -> Self {
         let mut x = [0.0; MAX_NODES / 2];
         let n = half_nodes(profile, mesh, e, g, &mut x);
         let w = profile.w;
         // The last thickness and its (GJ, EΓ): the blanks are one section each.
-        let mut last = (f64::NAN, (0.0, 0.0));
-        let mut gp = [[(0.0, 0.0); 4]; MAX_NODES / 2];
+        let mut last = (f64::NAN, (0.0, 0.0, 0.0));
+        let mut gp = [[(0.0, 0.0, 0.0); 4]; MAX_NODES / 2];
         for i in 0..n - 1 {
             for q in 0..4 {
                 let xq = x[i] + GL4_X[q] * (x[i + 1] - x[i]);
@@ -106,7 +173,8 @@ impl HalfMesh {
                 };
                 if t != last.0 {
                     let (j, warping) = rect_torsion_warping(w, t);
-                    last = (t, (g * j, e * warping));
+                    let r = shear.map_or(0.0, |sh| j / (sh.kappa * sh.warping_shear_constant(w, t, j)));
+                    last = (t, (g * j, e * warping, r));
                 }
                 gp[i][q] = last.1;
             }
@@ -144,7 +212,7 @@ impl HalfMesh {
 /// from call to call instead of zeroing 22 kB of stack per solve).
 struct Mirror {
     xs: [f64; MAX_NODES],
-    gp: [[(f64, f64); 4]; MAX_NODES],
+    gp: [[Props; 4]; MAX_NODES],
 }
 
 /// The banded system of [`torsion_fe_sampled`], one per thread; only the rows in use are
@@ -158,7 +226,7 @@ struct System {
 thread_local! {
     static MIRROR: std::cell::RefCell<Box<Mirror>> = std::cell::RefCell::new(Box::new(Mirror {
         xs: [0.0; MAX_NODES],
-        gp: [[(0.0, 0.0); 4]; MAX_NODES],
+        gp: [[(0.0, 0.0, 0.0); 4]; MAX_NODES],
     }));
     static SYSTEM: std::cell::RefCell<Box<System>> = std::cell::RefCell::new(Box::new(System {
         keep: [0; MAX_NODES],
@@ -187,10 +255,11 @@ pub const MIN_ELEMENT_PER_LAYER: f64 = 1e-3;
 /// local warping layer are merged into their neighbours' elements ([`MIN_ELEMENT_PER_LAYER`]).
 pub fn torsion_fe(xs: &[f64], mut props: impl FnMut(f64) -> (f64, f64)) -> f64 {
     // Properties at the 4 Gauss points of every interval of xs (sampled once).
-    let mut gp = [[(0.0f64, 0.0f64); 4]; MAX_NODES];
+    let mut gp = [[(0.0f64, 0.0f64, 0.0f64); 4]; MAX_NODES];
     for i in 0..xs.len() - 1 {
         for q in 0..4 {
-            gp[i][q] = props(xs[i] + GL4_X[q] * (xs[i + 1] - xs[i]));
+            let (gj, eg) = props(xs[i] + GL4_X[q] * (xs[i + 1] - xs[i]));
+            gp[i][q] = (gj, eg, 0.0);
         }
     }
     torsion_fe_sampled(xs, &gp[..])
@@ -198,11 +267,11 @@ pub fn torsion_fe(xs: &[f64], mut props: impl FnMut(f64) -> (f64, f64)) -> f64 {
 
 /// [`torsion_fe`] with the properties (GJ, EΓ) at the 4 Gauss points of interval i of `xs`
 /// given in `gp[i]`.
-fn torsion_fe_sampled(xs: &[f64], gp: &[[(f64, f64); 4]]) -> f64 {
+fn torsion_fe_sampled(xs: &[f64], gp: &[[Props; 4]]) -> f64 {
     SYSTEM.with_borrow_mut(|sys| torsion_fe_in(xs, gp, sys))
 }
 
-fn torsion_fe_in(xs: &[f64], gp: &[[(f64, f64); 4]], sys: &mut System) -> f64 {
+fn torsion_fe_in(xs: &[f64], gp: &[[Props; 4]], sys: &mut System) -> f64 {
     let System { keep, k, load } = sys;
     // Element nodes: indices into xs, each element at least MIN_ELEMENT_PER_LAYER × the largest
     // warping layer √(EΓ/GJ) of the intervals it covers.
@@ -212,7 +281,7 @@ fn torsion_fe_in(xs: &[f64], gp: &[[(f64, f64); 4]], sys: &mut System) -> f64 {
             .iter()
             .fold(
                 0.0f64,
-                |m, &(gj, eg)| if gj > 0.0 && eg > 0.0 { m.max(eg / gj) } else { m },
+                |m, &(gj, eg, _)| if gj > 0.0 && eg > 0.0 { m.max(eg / gj) } else { m },
             )
             .sqrt()
     };
@@ -240,6 +309,8 @@ fn torsion_fe_in(xs: &[f64], gp: &[[(f64, f64); 4]], sys: &mut System) -> f64 {
     // Symmetric band storage: k[i][d] = K(i, i + d), d = 0..=3; load vector ∫N dx (T = 1).
     k[..ndof].fill([0.0; 4]);
     load[..ndof].fill(0.0);
+    // ∫ 1/(GJ + κGJ_r) dx: the twist of the shear path in parallel (0 for Vlasov).
+    let mut direct = 0.0;
     for el in 0..nn - 1 {
         let (xa, xb) = (xs[keep[el]], xs[keep[el + 1]]);
         let inv_le = 1.0 / (xb - xa);
@@ -250,8 +321,11 @@ fn torsion_fe_in(xs: &[f64], gp: &[[(f64, f64); 4]], sys: &mut System) -> f64 {
             for q in 0..4 {
                 let x = s0 + GL4_X[q] * (s1 - s0);
                 let xi = (x - xa) * inv_le;
-                let (gj, eg) = gp[sub][q];
+                let (gj, eg, r) = gp[sub][q];
                 let wq = GL4_W[q] * (s1 - s0);
+                // K = GJ/(1 + r), the load K/GJ per unit torque (benscoter_torsion_pair).
+                let (kk, c) = (gj / (1.0 + r), 1.0 / (1.0 + r));
+                direct += wq * r / (gj * (1.0 + r));
                 // Quadratic Lagrange shape functions for φ (start, middle, end) and their
                 // x-derivatives.
                 let n = [
@@ -265,9 +339,9 @@ fn torsion_fe_in(xs: &[f64], gp: &[[(f64, f64); 4]], sys: &mut System) -> f64 {
                     (4.0 * xi - 1.0) * inv_le,
                 ];
                 for a in 0..3 {
-                    fe[a] += wq * n[a];
+                    fe[a] += wq * c * n[a];
                     for b in a..3 {
-                        ke[a][b] += wq * (eg * d1[a] * d1[b] + gj * n[a] * n[b]);
+                        ke[a][b] += wq * (eg * d1[a] * d1[b] + kk * n[a] * n[b]);
                     }
                 }
             }
@@ -321,7 +395,7 @@ fn torsion_fe_in(xs: &[f64], gp: &[[(f64, f64); 4]], sys: &mut System) -> f64 {
     // θ(end) = ∫φ dx = loadᵀ φ = loadᵀ K⁻¹ load = |y|², y = L⁻¹ load (the compliance, > 0 for
     // an SPD system): forward substitution only.
     let f = load;
-    let mut theta = 0.0;
+    let mut theta = direct;
     for i in 0..ndof {
         let mut s = f[i];
         for d in 1..4 {

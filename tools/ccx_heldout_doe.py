@@ -1,0 +1,138 @@
+#!/usr/bin/env python3
+"""The held-out design of experiments of the CalculiX hinge check (not used by the build).
+
+Written and committed before the torsion/bending laws were refitted on all 50 rows of
+`tools/ccx_reference_results.jsonl`, so that these geometries were fixed before any fit saw them.
+The rule (rerunning this script reproduces `tools/ccx_heldout_doe.json` exactly):
+
+- circular notches, 12 rows: 8 from a Latin hypercube (numpy `default_rng(20261128)`, centred
+  strata, each dimension log-uniform) over t/R 0.08-0.5, w/t 0.5-20, R 2-12 mm; plus 4 in the
+  regimes the previous model missed: w/t = 2 (t/R 0.15 and 0.4) and w/t = 8 and 15
+  (t/R 0.12 and 0.3), R = 5 mm;
+- corner-filleted leaves, 12 rows: 8 from a Latin hypercube (same generator, drawn after the
+  circular one) over R/t 0.5-2.5, flat length (l - 2R)/t 0.3-6, w/t 1-20, t 1-2 mm, l/t then
+  clipped to 2-10 by lengthening the flat; plus 4 in the missed regimes: w/t 3 and 5 with
+  R/t 0.5 and 1 (flat 2t), and R/t 1.5 and 2.5 with a short flat 0.4t (w/t 4 and 8);
+- rounding: lengths to 0.05 mm; blank height h = t + R (circular; the notch depth R/2) or
+  2t + 2R (corner-filleted; the fillet a full quarter circle), at least 3t; blank_length = h;
+  n = 4 element sizes across the local thickness, as in the 50 fitted rows.
+
+    python3 tools/ccx_heldout_doe.py > tools/ccx_heldout_doe.json
+
+Second check set (`--second`, `tools/ccx_heldout2_doe.json`), drawn and committed after the
+first set had been compared once and before the torsion law was refitted on all 74 rows
+(the 50 and these 24): the first set showed that the blank (its aspect w/h and length), which
+the rule above ties to t and R, matters for torsion, so the second varies it independently:
+
+- circular notches, 12 rows: a Latin hypercube (numpy `default_rng(20261129)`) over t/R
+  0.08-0.5, w/t 0.5-20, R 2-12 mm, notch depth (h - t)/2 from 0.4R to R (log-uniform), blank
+  length 0.5h-2h; plus 2 rows with wide, low blanks (w/h 3 and 5);
+- corner-filleted leaves, 12 rows: a Latin hypercube (the same generator, drawn after the
+  circular one) over R/t 0.5-2.5, flat (l - 2R)/t 0.3-6, w/t 1-20, t 1-2 mm, blank height
+  t + 2R + t·(0.5-4) and blank length 0.5h-2h; plus 2 rows with wide, low blanks (w/h 3 and 5);
+- rounding and n as above.
+
+    python3 tools/ccx_heldout_doe.py --second > tools/ccx_heldout2_doe.json
+"""
+
+import json
+
+import numpy as np
+
+
+def lhs(rng, n, bounds):
+    """n points, one per stratum and dimension, strata centres, log-uniform in each bound."""
+    cols = []
+    for lo, hi in bounds:
+        u = (rng.permutation(n) + 0.5) / n
+        cols.append(np.exp(np.log(lo) + u * (np.log(hi) - np.log(lo))))
+    return np.array(cols).T
+
+
+def r05(v):
+    return round(round(v / 0.05) * 0.05, 4)
+
+
+def circular(t_over_r, w_over_t, r):
+    t = r05(t_over_r * r)
+    w = r05(w_over_t * t)
+    h = r05(max(t + r, 3 * t))
+    return {"type": "circular_notch", "R": r05(r), "t": t, "w": w, "h": h, "blank_length": h}
+
+
+def corner(r_over_t, flat_over_t, w_over_t, t):
+    t = r05(t)
+    l_over_t = min(max(2 * r_over_t + flat_over_t, 2.0), 10.0)
+    l_over_t = max(l_over_t, 2 * r_over_t + 0.3)
+    r = r05(r_over_t * t)
+    h = r05(max(2 * t + 2 * r, 3 * t))
+    return {
+        "type": "corner_filleted",
+        "l": r05(l_over_t * t),
+        "R": r,
+        "t": t,
+        "w": r05(w_over_t * t),
+        "h": h,
+        "blank_length": h,
+    }
+
+
+def doe():
+    rng = np.random.default_rng(20261128)
+    rows = []
+    for a, b, c in lhs(rng, 8, [(0.08, 0.5), (0.5, 20.0), (2.0, 12.0)]):
+        rows.append({**circular(a, b, c), "regime": "lhs"})
+    for a, b in [(0.15, 2), (0.4, 2), (0.12, 8), (0.3, 15)]:
+        rows.append({**circular(a, b, 5.0), "regime": "missed: circular w/t 2 or >= 8"})
+    for a, b, c, d in lhs(rng, 8, [(0.5, 2.5), (0.3, 6.0), (1.0, 20.0), (1.0, 2.0)]):
+        rows.append({**corner(a, b, c, d), "regime": "lhs"})
+    for a, b, c, d, why in [
+        (0.5, 2.0, 3.0, 1.5, "missed: corner w/t 3-5, R/t <= 1"),
+        (1.0, 2.0, 5.0, 1.0, "missed: corner w/t 3-5, R/t <= 1"),
+        (1.5, 0.4, 4.0, 1.5, "missed: corner R/t >= 1.5, short flat"),
+        (2.5, 0.4, 8.0, 1.0, "missed: corner R/t >= 1.5, short flat"),
+    ]:
+        rows.append({**corner(a, b, c, d), "regime": why})
+    return rows
+
+
+def doe2():
+    rng = np.random.default_rng(20261129)
+    rows = []
+    for a, b, c, d, e in lhs(rng, 10, [(0.08, 0.5), (0.5, 20.0), (2.0, 12.0), (0.4, 1.0), (0.5, 2.0)]):
+        t = r05(a * c)
+        h = r05(max(t + 2 * d * c, 3 * t))
+        rows.append(
+            {"type": "circular_notch", "R": r05(c), "t": t, "w": r05(b * t), "h": h, "blank_length": r05(e * h), "regime": "lhs"}
+        )
+    for r, t, w, h, b in [(4.0, 1.0, 15.0, 5.0, 5.0), (6.0, 1.5, 30.0, 6.0, 8.0)]:
+        rows.append({"type": "circular_notch", "R": r, "t": t, "w": w, "h": h, "blank_length": b, "regime": "wide, low blank"})
+    for a, b, c, d, e, f in lhs(rng, 10, [(0.5, 2.5), (0.3, 6.0), (1.0, 20.0), (1.0, 2.0), (0.5, 4.0), (0.5, 2.0)]):
+        t = r05(d)
+        r = r05(a * t)
+        lt = min(max(2 * a + b, 2.0), 10.0)
+        lt = max(lt, 2 * a + 0.3)
+        h = r05(t + 2 * r + e * t)
+        rows.append(
+            {
+                "type": "corner_filleted",
+                "l": r05(lt * t),
+                "R": r,
+                "t": t,
+                "w": r05(c * t),
+                "h": h,
+                "blank_length": r05(f * h),
+                "regime": "lhs",
+            }
+        )
+    for l, r, t, w, h, b in [(4.0, 1.0, 1.0, 15.0, 5.0, 5.0), (6.0, 1.5, 1.5, 30.0, 6.0, 8.0)]:
+        rows.append(
+            {"type": "corner_filleted", "l": l, "R": r, "t": t, "w": w, "h": h, "blank_length": b, "regime": "wide, low blank"}
+        )
+    return rows
+
+
+if __name__ == "__main__":
+    import sys
+
+    print(json.dumps(doe2() if "--second" in sys.argv else doe(), indent=1))
