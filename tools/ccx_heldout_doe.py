@@ -33,6 +33,23 @@ the rule above ties to t and R, matters for torsion, so the second varies it ind
 - rounding and n as above.
 
     python3 tools/ccx_heldout_doe.py --second > tools/ccx_heldout2_doe.json
+
+Third check set (`--third`, `tools/ccx_heldout3_doe.json`), drawn and committed after the second
+set had been compared once and before the corner-filleted bending law was changed (every one of
+the 98 earlier rows had then been seen): the second set left corner-filleted bending too stiff
+on large fillets (R/t 1.4-2), so the third weights them:
+
+- corner-filleted leaves, 16 rows: 8 from a Latin hypercube (numpy `default_rng(20261130)`) over
+  the calibrated range as in the second set (R/t 0.5-2.5, flat (l - 2R)/t 0.3-6, w/t 1-20,
+  t 1-2 mm, blank height t + 2R + t·(0.5-4), blank length 0.5h-2h), and 8 from a second Latin
+  hypercube (the same generator, drawn next) over large fillets and short flats: R/t 1.2-2.5,
+  flat 0.3-2, the other dimensions as before; l/t clipped to 2-10 as before;
+- circular notches, 4 rows: a Latin hypercube (the same generator, drawn last) over the second
+  set's circular ranges (t/R 0.08-0.5, w/t 0.5-20, R 2-12 mm, notch depth 0.4R-R, blank length
+  0.5h-2h), so that a bending change touching circular notches is checked too;
+- rounding and n as above.
+
+    python3 tools/ccx_heldout_doe.py --third > tools/ccx_heldout3_doe.json
 """
 
 import json
@@ -132,7 +149,47 @@ def doe2():
     return rows
 
 
+def corner2(rng, n, r_over_t):
+    """n corner-filleted rows of a Latin hypercube with R/t in `r_over_t` and flat/t in `flat`."""
+    (rlo, rhi), (flo, fhi) = r_over_t
+    rows = []
+    for a, b, c, d, e, f in lhs(rng, n, [(rlo, rhi), (flo, fhi), (1.0, 20.0), (1.0, 2.0), (0.5, 4.0), (0.5, 2.0)]):
+        t = r05(d)
+        r = r05(a * t)
+        lt = min(max(2 * a + b, 2.0), 10.0)
+        lt = max(lt, 2 * a + 0.3)
+        h = r05(t + 2 * r + e * t)
+        rows.append(
+            {
+                "type": "corner_filleted",
+                "l": r05(lt * t),
+                "R": r,
+                "t": t,
+                "w": r05(c * t),
+                "h": h,
+                "blank_length": r05(f * h),
+            }
+        )
+    return rows
+
+
+def doe3():
+    rng = np.random.default_rng(20261130)
+    rows = [{**r, "regime": "lhs"} for r in corner2(rng, 8, [(0.5, 2.5), (0.3, 6.0)])]
+    rows += [{**r, "regime": "lhs: large fillet, short flat"} for r in corner2(rng, 8, [(1.2, 2.5), (0.3, 2.0)])]
+    for a, b, c, d, e in lhs(rng, 4, [(0.08, 0.5), (0.5, 20.0), (2.0, 12.0), (0.4, 1.0), (0.5, 2.0)]):
+        t = r05(a * c)
+        h = r05(max(t + 2 * d * c, 3 * t))
+        rows.append(
+            {"type": "circular_notch", "R": r05(c), "t": t, "w": r05(b * t), "h": h, "blank_length": r05(e * h), "regime": "lhs"}
+        )
+    return rows
+
+
 if __name__ == "__main__":
     import sys
 
-    print(json.dumps(doe2() if "--second" in sys.argv else doe(), indent=1))
+    if "--third" in sys.argv:
+        print(json.dumps(doe3(), indent=1))
+    else:
+        print(json.dumps(doe2() if "--second" in sys.argv else doe(), indent=1))
