@@ -15,6 +15,8 @@ fn eb() -> Moduli {
         nu: 0.33,
         shear: false,
         notch_half: 0.0,
+        e_bend_fillet: E,
+        fillet_from: 0.0,
     }
 }
 

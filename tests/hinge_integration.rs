@@ -62,6 +62,8 @@ fn quadrature_converged_to_1e_6() {
         nu: m.nu,
         shear: true,
         notch_half: 0.0,
+        e_bend_fillet: m.e,
+        fillet_from: 0.0,
     };
     for spec in specs() {
         let p = spec.profile().unwrap();

@@ -58,6 +58,8 @@ fn quadrature_of_tapers_is_converged() {
         nu: 0.33,
         shear: true,
         notch_half: 0.0,
+        e_bend_fillet: 72000.0,
+        fillet_from: 0.0,
     };
     let profiles = [
         Profile::rectangular(Contour::Circular { r: 8.0, t: 2.0 }, 10.0, 10.0, 20.0).unwrap(),

@@ -74,6 +74,25 @@ pub struct Moduli {
     pub shear: bool,
     /// `e_bend` applies for |x| < `notch_half` (the notch region), `e` beyond, mm.
     pub notch_half: f64,
+    /// Effective modulus for compliant-axis bending on the corner fillets, MPa.
+    pub e_bend_fillet: f64,
+    /// `e_bend_fillet` applies for `fillet_from` ≤ |x| < `notch_half` (`notch_half`: nowhere), mm.
+    pub fillet_from: f64,
+}
+
+impl Moduli {
+    /// The compliant-axis bending modulus at x, MPa.
+    #[inline]
+    pub fn e_bend_at(&self, x: f64) -> f64 {
+        let u = x.abs();
+        if u >= self.notch_half {
+            self.e
+        } else if u >= self.fillet_from {
+            self.e_bend_fillet
+        } else {
+            self.e_bend
+        }
+    }
 }
 
 /// The ten flexibility integrals of a segment (units: 1/N, 1/(N·mm), mm/N …).
@@ -273,7 +292,7 @@ fn integrate(
                 };
                 quadrature_points(a, b, map, panels, |x: f64, wgt: f64| {
                     let s = memo.at(x);
-                    let e_bend = if x.abs() < m.notch_half { m.e_bend } else { m.e };
+                    let e_bend = m.e_bend_at(x);
                     let f = [
                         wgt / (m.e * s.area),
                         wgt / (m.g * s.shear_area_bend_off),

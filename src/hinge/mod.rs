@@ -143,6 +143,8 @@ fn moduli(profile: &Profile, m: &Material) -> Moduli {
         nu: m.nu,
         shear: true,
         notch_half: profile.half_notch,
+        e_bend_fillet: m.e * factor / solid_effects::fillet_factor(profile),
+        fillet_from: solid_effects::fillet_from(profile),
     }
 }
 

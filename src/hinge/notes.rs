@@ -108,7 +108,7 @@ impl ModelNotes {
             neck: matches!(profile.contour, Contour::SphericalNeck { .. }),
             kt,
             spread: profile.spread.map(|sp| (sp.slope, sp.from, profile.spread_reach())),
-            g: solid_effects::short_notch_factor(profile),
+            g: solid_effects::short_notch_factor(profile) * solid_effects::fillet_factor(profile),
             p: solid_effects::plane_strain_factor(profile, material.nu),
         }
     }
@@ -126,7 +126,7 @@ impl ModelNotes {
 
     /// The notes without their numbers (the JSON form: see the `Serialize` impl).
     pub fn invariant_lines(&self) -> &'static [&'static str] {
-        const MODULUS: &str = "compliant-axis bending modulus of the notch region E*P/G (solid-calibrated): short-notch G and plane-strain P in calibration";
+        const MODULUS: &str = "compliant-axis bending modulus of the notch region E*P/G (solid-calibrated): short-notch G and plane-strain P in calibration (corner fillets: G with rho = R on the fillet arcs only, E*P on the flat)";
         const NECK_STRESS: &str = "stress: 32M/(pi t^3) at the waist x Kt = stress_concentration (shoulder-fillet Kt = 1 + 0.041 sqrt(t/R), fitted to solid models within 2%)";
         const NOTCH_STRESS: &str = "stress: 6M/(w t^2) at the waist x stress_concentration (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, ^(1/5) for the corner fillet, divided by sqrt(P) for the plane-strain waist; solid models: within 6%)";
         const SPREAD: &str = "load spreading (solid-calibrated): effective half-size grows at calibration.load_spreading.slope from |x| = from_mm to to_mm";
@@ -190,7 +190,8 @@ impl Serialize for ModelNotes {
 /// The solid-calibrated factors a characterisation used (the numbers the model notes refer to).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Calibration {
-    /// Short-notch factor G of the compliant-axis bending modulus E·P/G (dimensionless).
+    /// Short-notch factor G of the compliant-axis bending modulus E·P/G (dimensionless; for a
+    /// corner-filleted hinge that of the fillet arcs, ρ = R: the flat has E·P).
     pub short_notch_g: f64,
     /// Plane-strain factor P of the compliant-axis bending modulus E·P/G (dimensionless).
     pub plane_strain_p: f64,

@@ -32,6 +32,8 @@ pub(super) struct DModuli {
     pub g: Dual,
     pub nu: Dual,
     pub notch_half: Dual,
+    pub e_bend_fillet: Dual,
+    pub fillet_from: Dual,
 }
 
 /// The ten flexibility integrals with derivatives (`hinge::integrate::FlexIntegrals`).
@@ -169,7 +171,14 @@ pub(super) fn flex_integrals(p: &DProfile, m: &DModuli, x0: Dual, x1: Dual, q: Q
             };
             quadrature_points(a, b, map, panels, &mut |x, w| {
                 let s = p.section_of_size(p.section_size(x), m.nu);
-                let e_bend = if x.v.abs() < m.notch_half.v { m.e_bend } else { m.e };
+                let u = x.v.abs();
+                let e_bend = if u >= m.notch_half.v {
+                    m.e
+                } else if u >= m.fillet_from.v {
+                    m.e_bend_fillet
+                } else {
+                    m.e_bend
+                };
                 acc.axial = acc.axial + w / (m.e * s.area);
                 acc.shear_y = acc.shear_y + w / (m.g * s.shear_area_bend_off);
                 acc.shear_z = acc.shear_z + w / (m.g * s.shear_area_bend);

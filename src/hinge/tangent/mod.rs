@@ -120,6 +120,8 @@ fn moduli(p: &DProfile, profile: &Profile, m: &Material, tg: &Tangent) -> DModul
         g: e / ((nu + 1.0) * 2.0),
         nu,
         notch_half: p.half_notch,
+        e_bend_fillet: e * factor / p.fillet_factor(),
+        fillet_from: p.fillet_from(),
     }
 }
 

@@ -171,8 +171,23 @@ impl DProfile {
             DContour::Elliptical { ax, ay, .. } => ax * ax / ay,
             _ => return Dual::c(1.0),
         };
-        let x = self.t_min() / rho;
-        1.0 + (1.0 - (-x / 0.15).exp()) * 0.068
+        short_notch_g(self.t_min() / rho)
+    }
+
+    /// `solid_effects::fillet_factor`.
+    pub fn fillet_factor(&self) -> Dual {
+        match self.contour {
+            DContour::CornerFilleted { r, t, .. } => short_notch_g(t / r),
+            _ => Dual::c(1.0),
+        }
+    }
+
+    /// `solid_effects::fillet_from`, mm.
+    pub fn fillet_from(&self) -> Dual {
+        match self.contour {
+            DContour::CornerFilleted { l, r, .. } => l / 2.0 - r,
+            _ => self.half_notch,
+        }
     }
 
     /// `solid_effects::plane_strain_factor`, with the compliant half-length `value` computed
@@ -186,4 +201,9 @@ impl DProfile {
         let restrained = (1.0 - (-(z / 3.26).powf(1.29)).exp()) * (1.0 - t / w).max(Dual::c(0.0));
         1.0 + (1.0 / (1.0 - nu * nu) - 1.0) * restrained
     }
+}
+
+/// `solid_effects::short_notch_g`.
+fn short_notch_g(x: Dual) -> Dual {
+    1.0 + (1.0 - (-x / 0.15).exp()) * 0.068
 }
