@@ -53,10 +53,23 @@
 //! wide, low blanks; `tools/ccx_heldout2_doe.json`) was then committed, its models run, and
 //! the torsion law refitted on all 74 earlier rows (Benscoter's warping shear added, the
 //! plate-mode centre and the spreading slope refitted) and committed before [`DOE2`] was
-//! compared, once. So the FIT rows are the 50 of the first calibration (`FIRST_FIT`,
-//! `FIRST_HELD_OUT`, named by that split) and [`DOE1`]; the HELD_OUT rows are [`DOE2`]. The
-//! corner-filleted K_t is still the first calibration's, fitted on `FIRST_FIT`; bending and
-//! axial stiffness and the circular notches' peak stress are not fitted on these models.
+//! compared, once.
+//!
+//! The corner-filleted bending law and its check. [`DOE2`] left corner-filleted bending too
+//! stiff on large fillets (up to +4.45 % held out, +4.84 % on the fit rows). The short-notch
+//! factor G of `hinge::solid_effects` (ρ = R) applied to the whole corner-filleted profile
+//! over-corrected every corner row (−7 … −1 %): the missing compliance is in the fillets, where
+//! the thickness changes, not in the flat. So G (ρ = R, no number refitted) now divides the
+//! compliant-axis modulus on the two fillet arcs only, which took the 44 corner rows then known
+//! to −3.60 … +0.13 %. Before that change, with all 98 rows seen, a third design ([`DOE3`],
+//! `tools/ccx_heldout_doe.py --third`: numpy `default_rng(20261130)`, 8 corner rows over the
+//! calibrated range, 8 over large fillets R/t 1.2–2.5 with short flats, 4 circular notches;
+//! `tools/ccx_heldout3_doe.json`) was committed, its models run while the law was written, and
+//! the law frozen and committed before [`DOE3`] was compared, once. So the FIT rows are the 98
+//! earlier ones (the 50 of the first calibration, `FIRST_FIT` and `FIRST_HELD_OUT` named by
+//! that split, [`DOE1`] and [`DOE2`]); the HELD_OUT rows are [`DOE3`]. The corner-filleted K_t
+//! is still the first calibration's, fitted on `FIRST_FIT`; axial stiffness and the circular
+//! notches' peak stress are not fitted on these models.
 //!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
@@ -85,6 +98,12 @@ use doe::DOE1;
 #[path = "hinge_ccx_reference/doe2.rs"]
 mod doe2;
 use doe2::DOE2;
+#[path = "hinge_ccx_reference/doe3.rs"]
+mod doe3;
+use doe3::DOE3;
+#[path = "hinge_ccx_reference/raw.rs"]
+mod raw;
+use raw::{raw_lines_matched, SCIKIT_FEM};
 
 struct Row {
     spec: HingeSpec,
@@ -172,24 +191,6 @@ fn neck(s: &HingeSpec) -> bool {
     matches!(s, HingeSpec::SphericalNeck { .. })
 }
 
-/// The hinges computed with both solid pipelines: the scikit-fem P2 results of
-/// `tools/solid_reference_results.jsonl` (n = 5: k_bend, k_torsion, k_axial, nodal-averaged peak
-/// stress per moment) against the CalculiX rows of the same geometry (n = 4).
-const SCIKIT_FEM: [(&str, [f64; 4]); 3] = [
-    (
-        r#"{"type": "circular_notch", "R": 8.0, "t": 2.0, "w": 10.0, "h": 10.0, "blank_length": 20.0}"#,
-        [95922.3, 196427.0, 84453.4, 0.151083],
-    ),
-    (
-        r#"{"type": "spherical_neck", "l": 5.0, "t": 3.0, "R": 4.0, "h": 10.0, "blank_length": 20.0}"#,
-        [32602.7, 24677.5, 38308.3, 0.390483],
-    ),
-    (
-        r#"{"type": "corner_filleted", "l": 6.0, "R": 2.0, "t": 1.5, "w": 6.0, "h": 8.0, "blank_length": 10.0}"#,
-        [28551.6, 57445.6, 65542.3, 0.453389],
-    ),
-];
-
 /// CalculiX against scikit-fem on the same mesh generator: stiffnesses within 0.5 % (measured
 /// +0.15 … +0.31 % bending and torsion, +0.06 … +0.13 % axial), nodal-averaged peak stress
 /// within 1.5 % (measured −1.07 … +0.68 %). And the integration-point peak of C3D10 lies 5–12 %
@@ -255,14 +256,21 @@ fn every_reference_is_a_line_of_the_raw_results() {
     assert_eq!(raw_lines_matched("ccx_heldout_results.jsonl", &first), 24);
     let second: Vec<&CcxRef> = DOE2.iter().collect();
     assert_eq!(raw_lines_matched("ccx_heldout2_results.jsonl", &second), 24);
+    let third: Vec<&CcxRef> = DOE3.iter().collect();
+    assert_eq!(raw_lines_matched("ccx_heldout3_results.jsonl", &third), 20);
 }
 
 /// The fresh rows are the committed designs of experiments, in their order
 /// (`tools/ccx_heldout_doe.json`, `tools/ccx_heldout2_doe.json`: the same geometry, 12
-/// circular notches then 12 corner-filleted hinges each).
+/// circular notches then 12 corner-filleted hinges each; `tools/ccx_heldout3_doe.json`: 16
+/// corner-filleted hinges then 4 circular notches).
 #[test]
 fn fresh_rows_are_the_committed_designs() {
-    for (file, refs) in [("ccx_heldout_doe.json", DOE1), ("ccx_heldout2_doe.json", DOE2)] {
+    for (file, refs, n_circular) in [
+        ("ccx_heldout_doe.json", DOE1, 12),
+        ("ccx_heldout2_doe.json", DOE2, 12),
+        ("ccx_heldout3_doe.json", DOE3, 4),
+    ] {
         let text = std::fs::read_to_string(format!("{}/tools/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
         let design: Vec<serde_json::Value> = serde_json::from_str(&text).unwrap();
         assert_eq!(design.len(), refs.len(), "{file}");
@@ -277,37 +285,8 @@ fn fresh_rows_are_the_committed_designs() {
             }
         }
         let n_circ = refs.iter().filter(|r| r.hinge.contains("circular_notch")).count();
-        assert_eq!((n_circ, refs.len() - n_circ), (12, 12), "{file}");
+        assert_eq!(n_circ, n_circular, "{file}");
     }
-}
-
-/// Checks that every reference of `refs` is exactly one line of `tools/<file>` (geometry, E, ν
-/// and the five quantities to 6 digits) and that the file has no other line; returns the
-/// number of lines.
-fn raw_lines_matched(file: &str, refs: &[&CcxRef]) -> usize {
-    let path = format!("{}/tools/{file}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).unwrap();
-    let lines: Vec<serde_json::Value> = text.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
-    assert_eq!(lines.len(), refs.len(), "{file}");
-    let close = |a: &serde_json::Value, b: f64| a.as_f64().is_some_and(|a| (a / b - 1.0).abs() < 1e-5);
-    for r in refs {
-        let spec: serde_json::Value = serde_json::from_str(r.hinge).unwrap();
-        let matches = lines
-            .iter()
-            .filter(|l| spec.as_object().unwrap().iter().all(|(k, v)| l[k] == *v) && l["nu"] == r.nu)
-            .filter(|l| {
-                close(&l["k_bend"], r.k_bend)
-                    && close(&l["k_torsion"], r.k_torsion)
-                    && close(&l["k_axial"], r.k_axial)
-                    && close(&l["stress_per_moment_nodal"], r.spm_nodal)
-                    && close(&l["stress_per_moment_ip"], r.spm_ip)
-                    && l["E"] == r.e
-                    && l["solver"].as_str().is_some_and(|s| s.starts_with("ccx 2.20 C3D10"))
-            })
-            .count();
-        assert_eq!(matches, 1, "{} (ν = {}): {matches} matching lines", r.hinge, r.nu);
-    }
-    lines.len()
 }
 
 /// The integration-point peak lies this far below the nodal-averaged peak on the hinges of
@@ -322,24 +301,26 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 
 /// The issue's targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
-/// 12 held-out circular notches ([`DOE2`]: t/R 0.09–0.46, w/t 0.57–20, blank w/h 0.06–5,
-/// blank length 0.65–1.6 h), compared once with the frozen model. Measured (bending / torsion /
-/// axial / peak σ/M, %): −0.51 … +1.32 / −6.69 … +6.75 / −0.82 … +4.24 / −1.05 … +2.88: every
-/// target met.
+/// 4 held-out circular notches ([`DOE3`]: t/R 0.10–0.40, w/t 0.80–12.6, blank w/h 0.11–2.3),
+/// compared once with the frozen model. Measured (bending / torsion / axial / peak σ/M, %):
+/// −0.29 … +0.83 / −7.42 … +5.21 / +1.37 … +3.50 / −0.14 … +1.32: every target met. (On the
+/// 12 circular notches of [`DOE2`], held out from the torsion law: −0.51 … +1.32 / −6.69 …
+/// +6.75 / −0.82 … +4.24 / −1.05 … +2.88, now fit rows.)
 const CIRCULAR_TOL: [f64; 4] = TARGET;
-/// 12 held-out corner-filleted hinges ([`DOE2`]: l/t 2.2–8.4, R/t 0.52–2.3, w/t 1.2–20, blank
-/// w/h 0.18–5), compared once with the frozen model. Measured: −1.50 … +4.45 / −9.51 … +9.75 /
-/// −3.88 … +2.16 / −1.59 … +2.78. Bending misses the 3 % target on 3 of 12, all large fillets
-/// (R/t 1.4–2): l6.15/R2.65/t1.35/w2.85 +4.45, l3.5/R1.55/t1.1/w3.15 +3.98,
-/// l7.15/R2.85/t1.7/w21.7 +3.95: pinned at 4.5 %.
-const CORNER_TOL: [f64; 4] = [4.5, 10.0, 5.0, 5.0];
-/// The 38 circular notches of the fit. Measured: −0.66 … +1.45 / −8.09 … +8.82 / −0.04 … +4.14
-/// / −1.36 … +3.62: every target met.
+/// 16 held-out corner-filleted hinges ([`DOE3`]: l/t 2.0–9.5, R/t 0.57–2.4 (12 of them ≥ 1.2),
+/// w/t 1.2–16.6, blank w/h 0.22–3.9, blank length 0.54–1.8 h), compared once with the frozen
+/// model. Measured: −2.21 … +0.13 / −7.47 … +7.60 / −3.57 … +2.57 / −1.66 … +2.27: every
+/// target met (before the fillets got the short-notch factor G, bending on [`DOE2`] was
+/// −1.50 … +4.45 %, pinned at 4.5).
+const CORNER_TOL: [f64; 4] = TARGET;
+/// The 50 circular notches of the fits. Measured: −0.66 … +1.45 / −8.09 … +8.82 / −0.82 …
+/// +4.24 / −1.36 … +3.62: every target met.
 const CIRCULAR_FIT_TOL: [f64; 4] = TARGET;
-/// The 32 corner-filleted hinges of the fit. Measured: −1.48 … +4.84 / −8.48 … +6.99 / −4.74 …
-/// +2.27 / −2.38 … +2.92. Bending (not refitted) misses the 3 % target on 8 of 32, large fillets
-/// R/t ≥ 1 (+3.07 … +4.84 %, l6.5/R2.95/t1.6/w2.8): pinned at 5 %.
-const CORNER_FIT_TOL: [f64; 4] = [5.0, 10.0, 5.0, 5.0];
+/// The 44 corner-filleted hinges of the fits. Measured: −3.60 … +0.13 / −9.51 … +9.75 / −4.74 …
+/// +2.27 / −2.38 … +2.92. Bending misses the 3 % target on 1 of 44:
+/// l5.95/R1.45/t1.95/w10.15 (h11.9) −3.60 % (softer than CalculiX; −1.50 % before the fillets
+/// got G; its axial is −3.73 % too): pinned at 3.7 % (5 % before, for +4.84 %).
+const CORNER_FIT_TOL: [f64; 4] = [3.7, 10.0, 5.0, 5.0];
 /// Peak-stress convergence pins, % (nodal-averaged, integration point), n = 4 → 5.
 /// (family, R mm, nodal-averaged tolerance %, integration-point tolerance %, measured gap %).
 #[allow(clippy::type_complexity)]
@@ -351,17 +332,24 @@ const CONV_TOL: [(&str, f64, f64, f64, f64); 2] = [
 /// axial / peak σ/M, %): −0.83 … +0.84 / −2.25 … −0.28 / −1.16 … +0.19 / −2.41 … +1.12.
 const NECK_TOL: [f64; 4] = [3.0, 5.0, 3.0, 3.0];
 
-/// Every row computed before the current torsion law was fitted: the first calibration's FIT
-/// and HELD_OUT rows and the first fresh design ([`DOE1`]).
+/// Every row computed before the corner-filleted bending law was changed: the first
+/// calibration's FIT and HELD_OUT rows and the first two fresh designs ([`DOE1`], [`DOE2`]).
 fn fit_rows() -> Vec<Row> {
-    rows(&FIRST_FIT.iter().chain(FIRST_HELD_OUT).chain(DOE1).collect::<Vec<_>>())
+    rows(
+        &FIRST_FIT
+            .iter()
+            .chain(FIRST_HELD_OUT)
+            .chain(DOE1)
+            .chain(DOE2)
+            .collect::<Vec<_>>(),
+    )
 }
 
 #[test]
 fn circular_notches_held_out() {
-    let all = rows(&DOE2.iter().collect::<Vec<_>>());
+    let all = rows(&DOE3.iter().collect::<Vec<_>>());
     let rows = family(&all, circular);
-    assert_eq!(rows.len(), 12);
+    assert_eq!(rows.len(), 4);
     check(
         "held-out circular notches",
         report("circular notches vs CalculiX, HELD OUT", &rows),
@@ -371,9 +359,9 @@ fn circular_notches_held_out() {
 
 #[test]
 fn corner_filleted_held_out() {
-    let all = rows(&DOE2.iter().collect::<Vec<_>>());
+    let all = rows(&DOE3.iter().collect::<Vec<_>>());
     let rows = family(&all, corner);
-    assert_eq!(rows.len(), 12);
+    assert_eq!(rows.len(), 16);
     check(
         "held-out corner-filleted hinges",
         report("corner-filleted hinges vs CalculiX, HELD OUT", &rows),
@@ -391,14 +379,14 @@ fn turned_necks() {
     check("turned necks", report("turned necks vs CalculiX", &rows), NECK_TOL);
 }
 
-/// The rows the current torsion law was fitted on (and the corner-filleted K_t, fitted on the
-/// first calibration's FIT rows), against the same targets.
+/// The rows the current torsion law was fitted on, with [`DOE2`] (its held-out check, seen
+/// before the corner-filleted bending law was changed), against the same targets.
 #[test]
 fn rows_used_in_the_fits() {
     let all = fit_rows();
     let circ = family(&all, circular);
     let corn = family(&all, corner);
-    assert_eq!((circ.len(), corn.len(), all.len()), (38, 32, 74));
+    assert_eq!((circ.len(), corn.len(), all.len()), (50, 44, 98));
     check(
         "fitted circular notches",
         report("circular notches vs CalculiX, FIT", &circ),
