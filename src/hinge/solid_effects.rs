@@ -18,7 +18,7 @@
 //!   thickness changes, i.e. in the fillets. No number was refitted for this: the same G, with
 //!   the fillet radius as ρ. Against CalculiX models (tests/hinge_ccx_reference.rs) it took the
 //!   corner-filleted bending errors of the 44 rows then known from −1.50 … +4.84 % to
-//!   −3.60 … +0.09 % (applying G to the whole corner-filleted profile over-corrected every
+//!   −3.60 … +0.13 % (applying G to the whole corner-filleted profile over-corrected every
 //!   row, by −7 … −1 %). The leaf and the turned neck get none (the neck agrees with solid
 //!   models within 2 % once load spreading is modelled).
 //! * **Plane-strain restraint** (ν ≠ 0): a wide waist cannot take its anticlastic
