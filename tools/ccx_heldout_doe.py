@@ -124,24 +124,8 @@ def doe2():
         )
     for r, t, w, h, b in [(4.0, 1.0, 15.0, 5.0, 5.0), (6.0, 1.5, 30.0, 6.0, 8.0)]:
         rows.append({"type": "circular_notch", "R": r, "t": t, "w": w, "h": h, "blank_length": b, "regime": "wide, low blank"})
-    for a, b, c, d, e, f in lhs(rng, 10, [(0.5, 2.5), (0.3, 6.0), (1.0, 20.0), (1.0, 2.0), (0.5, 4.0), (0.5, 2.0)]):
-        t = r05(d)
-        r = r05(a * t)
-        lt = min(max(2 * a + b, 2.0), 10.0)
-        lt = max(lt, 2 * a + 0.3)
-        h = r05(t + 2 * r + e * t)
-        rows.append(
-            {
-                "type": "corner_filleted",
-                "l": r05(lt * t),
-                "R": r,
-                "t": t,
-                "w": r05(c * t),
-                "h": h,
-                "blank_length": r05(f * h),
-                "regime": "lhs",
-            }
-        )
+    for sample in lhs(rng, 10, [(0.5, 2.5), (0.3, 6.0), (1.0, 20.0), (1.0, 2.0), (0.5, 4.0), (0.5, 2.0)]):
+        rows.append(dict(corner_row(*sample), regime="lhs"))
     for l, r, t, w, h, b in [(4.0, 1.0, 1.0, 15.0, 5.0, 5.0), (6.0, 1.5, 1.5, 30.0, 6.0, 8.0)]:
         rows.append(
             {"type": "corner_filleted", "l": l, "R": r, "t": t, "w": w, "h": h, "blank_length": b, "regime": "wide, low blank"}
@@ -152,25 +136,24 @@ def doe2():
 def corner2(rng, n, r_over_t):
     """n corner-filleted rows of a Latin hypercube with R/t in `r_over_t` and flat/t in `flat`."""
     (rlo, rhi), (flo, fhi) = r_over_t
-    rows = []
-    for a, b, c, d, e, f in lhs(rng, n, [(rlo, rhi), (flo, fhi), (1.0, 20.0), (1.0, 2.0), (0.5, 4.0), (0.5, 2.0)]):
-        t = r05(d)
-        r = r05(a * t)
-        lt = min(max(2 * a + b, 2.0), 10.0)
-        lt = max(lt, 2 * a + 0.3)
-        h = r05(t + 2 * r + e * t)
-        rows.append(
-            {
-                "type": "corner_filleted",
-                "l": r05(lt * t),
-                "R": r,
-                "t": t,
-                "w": r05(c * t),
-                "h": h,
-                "blank_length": r05(f * h),
-            }
-        )
-    return rows
+    return [corner_row(*sample) for sample in lhs(rng, n, [(rlo, rhi), (flo, fhi), (1.0, 20.0), (1.0, 2.0), (0.5, 4.0), (0.5, 2.0)])]
+
+
+def corner_row(r_over_t, flat_over_t, w_over_t, t, blank_over_t, blank_length_over_h):
+    """One corner-filleted row of a Latin-hypercube sample (rounded to 0.05 mm)."""
+    t = r05(t)
+    r = r05(r_over_t * t)
+    lt = max(min(max(2 * r_over_t + flat_over_t, 2.0), 10.0), 2 * r_over_t + 0.3)
+    h = r05(t + 2 * r + blank_over_t * t)
+    return {
+        "type": "corner_filleted",
+        "l": r05(lt * t),
+        "R": r,
+        "t": t,
+        "w": r05(w_over_t * t),
+        "h": h,
+        "blank_length": r05(blank_length_over_h * h),
+    }
 
 
 def doe3():
