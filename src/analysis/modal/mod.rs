@@ -159,6 +159,38 @@ pub fn mode_energy(model: &Model, shape: &[[f64; 6]]) -> (f64, f64) {
     (e, s)
 }
 
+/// [`mode_energy`] of every mode of `raw`, in one pass over the elements (each element matrix
+/// built once for all modes).
+pub fn mode_energies(model: &Model, raw: &ModalResults) -> Vec<(f64, f64)> {
+    let mut out = vec![(0.0, 0.0); raw.modes.len()];
+    let mut add = |k: &dyn Fn(usize, usize) -> f64, nodes: &[usize]| {
+        for (m, (e, s)) in raw.modes.iter().zip(out.iter_mut()) {
+            let mut v = [0.0; 24];
+            for (i, &n) in nodes.iter().enumerate() {
+                v[6 * i..6 * i + 6].copy_from_slice(&m.shape[n]);
+            }
+            let len = 6 * nodes.len();
+            for a in 0..len {
+                for b in 0..len {
+                    let t = k(a, b) * v[a] * v[b];
+                    *e += t;
+                    *s += t.abs();
+                }
+            }
+        }
+    };
+    for (ie, el) in model.elements.iter().enumerate() {
+        if let crate::fem::Element::Shell4(_) = el {
+            if let Ok(em) = model.shell_matrix(ie) {
+                add(&|a, b| em.k[(a, b)], &em.nodes);
+            }
+        } else if let Ok(em) = model.element_matrix(ie) {
+            add(&|a, b| em.k[(a, b)], &em.nodes[..em.n_nodes]);
+        }
+    }
+    out
+}
+
 /// Share of a mode's strain energy on the shells' drilling penalty above which the mode is
 /// reported as drilling-dominated.
 pub const DRILLING_SHARE: f64 = 0.5;
@@ -185,8 +217,8 @@ pub fn drilling_warnings(model: &Model, raw: &ModalResults) -> Vec<String> {
         return Vec::new();
     }
     let mut out = Vec::new();
-    for (k, m) in raw.modes.iter().enumerate() {
-        let (total, scale) = mode_energy(model, &m.shape);
+    let energies = mode_energies(model, raw);
+    for (k, (m, &(total, scale))) in raw.modes.iter().zip(&energies).enumerate() {
         if total <= RIGID_MODE_TOL * scale {
             continue;
         }
@@ -216,8 +248,8 @@ pub fn drilling_warnings(model: &Model, raw: &ModalResults) -> Vec<String> {
 /// ω² = φᵀKφ far above it. Rigid-body modes get frequency 0 and a note.
 pub fn mark_rigid_body(model: &Model, raw: &ModalResults, r: &mut ModalResult) {
     let mut n = 0;
-    for (row, m) in r.modes.iter_mut().zip(&raw.modes) {
-        let (_, s) = mode_energy(model, &m.shape);
+    let energies = mode_energies(model, raw);
+    for ((row, m), &(_, s)) in r.modes.iter_mut().zip(&raw.modes).zip(&energies) {
         if m.eigenvalue <= RIGID_MODE_TOL * s {
             row.rigid_body = true;
             row.frequency_hz = 0.0;
