@@ -22,7 +22,7 @@
 //! they were squares of their longest edge: on the clamped 45° rhombic plate meshed 8×8 and
 //! 12×12 every mode's measured error is below its estimate.
 
-use super::RIGID_MODE_TOL;
+use super::{mode_energies_with, RIGID_MODE_TOL};
 use crate::fem::modal::ModalResults;
 use crate::fem::{Element, Model};
 
@@ -77,38 +77,17 @@ pub fn worst_square_mesh_error(qh_h: f64, nu: f64) -> f64 {
 /// Per mode: the strain-energy-weighted estimate of the shells' frequency error (fraction) and
 /// of their elements per bending half-wave π/(qh), or `None` for rigid-body modes and modes
 /// whose strain energy is mostly outside the shells (see the module docs). One pass over the
-/// elements, each element matrix built once for all modes.
+/// elements ([`mode_energies_with`]), each element matrix built once for all modes.
 pub fn shell_dispersion_estimates(model: &Model, raw: &ModalResults) -> Vec<Option<(f64, f64)>> {
     let n = raw.modes.len();
-    if !model.elements.iter().any(|e| matches!(e, Element::Shell4(_))) {
-        return vec![None; n];
-    }
-    // Per mode: strain energy and its round-off scale (as `mode_energy`), and the shells' energy,
-    // energy × error estimate and energy × elements per half-wave.
-    let mut acc = vec![[0.0f64; 5]; n];
-    let mut shells = Vec::new();
-    let energy = |k: &dyn Fn(usize, usize) -> f64, nodes: &[usize], shape: &[[f64; 6]]| {
-        let mut v = [0.0; 24];
-        let len = 6 * nodes.len();
-        for (i, &nd) in nodes.iter().enumerate() {
-            v[6 * i..6 * i + 6].copy_from_slice(&shape[nd]);
-        }
-        let (mut e, mut s) = (0.0, 0.0);
-        for a in 0..len {
-            for b in 0..len {
-                let t = k(a, b) * v[a] * v[b];
-                e += t;
-                s += t.abs();
-            }
-        }
-        (e, s)
-    };
-    // Each shell's qh per √ω and ν; the error estimates computed once per distinct pair and mode.
+    // Each shell's qh per ω^½ and ν (its kind); the error estimates computed once per kind and mode.
     let mut kinds: Vec<(f64, f64)> = Vec::new();
     let mut kind_of = std::collections::HashMap::new();
-    for (ie, el) in model.elements.iter().enumerate() {
-        if let Element::Shell4(sh) = el {
-            let Ok(em) = model.shell_matrix(ie) else { continue };
+    let shell_kind: Vec<Option<usize>> = model
+        .elements
+        .iter()
+        .map(|el| {
+            let Element::Shell4(sh) = el else { return None };
             let mat = &sh.material;
             let x = sh.nodes.map(|nd| model.nodes[nd]);
             let h = (0..4)
@@ -119,42 +98,49 @@ pub fn shell_dispersion_estimates(model: &Model, raw: &ModalResults) -> Vec<Opti
                 .fold(0.0, f64::max);
             let qh_per_sqrt_omega =
                 (12.0 * (1.0 - mat.nu * mat.nu) * mat.density / (mat.e * sh.t * sh.t)).powf(0.25) * h;
-            let kind = *kind_of
-                .entry((qh_per_sqrt_omega.to_bits(), mat.nu.to_bits()))
-                .or_insert_with(|| {
-                    kinds.push((qh_per_sqrt_omega, mat.nu));
-                    kinds.len() - 1
-                });
-            shells.push((em, kind));
-        } else if let Ok(em) = model.element_matrix(ie) {
-            for (m, a) in raw.modes.iter().zip(acc.iter_mut()) {
-                let (e, s) = energy(&|r, c| em.k[(r, c)], &em.nodes[..em.n_nodes], &m.shape);
-                a[0] += e;
-                a[1] += s;
-            }
-        }
+            Some(
+                *kind_of
+                    .entry((qh_per_sqrt_omega.to_bits(), mat.nu.to_bits()))
+                    .or_insert_with(|| {
+                        kinds.push((qh_per_sqrt_omega, mat.nu));
+                        kinds.len() - 1
+                    }),
+            )
+        })
+        .collect();
+    if kinds.is_empty() {
+        return vec![None; n];
     }
-    for (m, a) in raw.modes.iter().zip(acc.iter_mut()) {
-        let sqrt_omega = m.eigenvalue.max(0.0).powf(0.25);
-        let per_kind: Vec<(f64, f64)> = kinds
-            .iter()
-            .map(|&(c, nu)| {
-                let qh = (c * sqrt_omega).max(f64::MIN_POSITIVE);
-                (worst_square_mesh_error(qh, nu), std::f64::consts::PI / qh)
-            })
-            .collect();
-        for (em, kind) in &shells {
-            let (e, s) = energy(&|r, c| em.k[(r, c)], &em.nodes, &m.shape);
-            a[0] += e;
-            a[1] += s;
+    // Per mode and kind: (error estimate, elements per half-wave).
+    let per_kind: Vec<Vec<(f64, f64)>> = raw
+        .modes
+        .iter()
+        .map(|m| {
+            let sqrt_omega = m.eigenvalue.max(0.0).powf(0.25);
+            kinds
+                .iter()
+                .map(|&(c, nu)| {
+                    let qh = (c * sqrt_omega).max(f64::MIN_POSITIVE);
+                    (worst_square_mesh_error(qh, nu), std::f64::consts::PI / qh)
+                })
+                .collect()
+        })
+        .collect();
+    // Per mode: the shells' energy, energy × error estimate, energy × elements per half-wave.
+    let mut acc = vec![[0.0f64; 3]; n];
+    let totals = mode_energies_with(model, raw, |ie, mode, e| {
+        if let Some(kind) = shell_kind[ie] {
             let e = e.max(0.0);
-            a[2] += e;
-            a[3] += e * per_kind[*kind].0;
-            a[4] += e * per_kind[*kind].1;
+            let (error, per_half_wave) = per_kind[mode][kind];
+            let a = &mut acc[mode];
+            a[0] += e;
+            a[1] += e * error;
+            a[2] += e * per_half_wave;
         }
-    }
+    });
     acc.iter()
-        .map(|&[total, scale, shells, error, per_half_wave]| {
+        .zip(&totals)
+        .map(|(&[shells, error, per_half_wave], &(total, scale))| {
             let deforming = total > RIGID_MODE_TOL * scale;
             (deforming && shells > SHELL_SHARE * total).then(|| (error / shells, per_half_wave / shells))
         })

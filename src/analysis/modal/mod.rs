@@ -133,62 +133,57 @@ pub fn solve_with(
 /// gives 1.7e-14, a 1 kHz plate mode 1e-7.
 pub const RIGID_MODE_TOL: f64 = 3e-15;
 
-/// Strain energy φᵀKφ of a mode shape (global rows, mm and rad) summed element by element and
-/// its roundoff scale S = Σₑ |φₑ|ᵀ|Kₑ||φₑ| (|·| entrywise).
-pub fn mode_energy(model: &Model, shape: &[[f64; 6]]) -> (f64, f64) {
+/// Strain energy φₑᵀKₑφₑ of one element (at most 4 nodes) in `shape` (global rows, mm and rad)
+/// and its round-off scale |φₑ|ᵀ|Kₑ||φₑ| (|·| entrywise).
+fn element_energy(k: &dyn Fn(usize, usize) -> f64, nodes: &[usize], shape: &[[f64; 6]]) -> (f64, f64) {
+    let mut v = [0.0; 24];
+    for (i, &n) in nodes.iter().enumerate() {
+        v[6 * i..6 * i + 6].copy_from_slice(&shape[n]);
+    }
+    let len = 6 * nodes.len();
     let (mut e, mut s) = (0.0, 0.0);
-    let mut add = |k: &dyn Fn(usize, usize) -> f64, nodes: &[usize]| {
-        let v: Vec<f64> = nodes.iter().flat_map(|&n| shape[n]).collect();
-        for a in 0..v.len() {
-            for b in 0..v.len() {
-                let t = k(a, b) * v[a] * v[b];
-                e += t;
-                s += t.abs();
-            }
-        }
-    };
-    for (ie, el) in model.elements.iter().enumerate() {
-        if let crate::fem::Element::Shell4(_) = el {
-            if let Ok(em) = model.shell_matrix(ie) {
-                add(&|a, b| em.k[(a, b)], &em.nodes);
-            }
-        } else if let Ok(em) = model.element_matrix(ie) {
-            add(&|a, b| em.k[(a, b)], &em.nodes[..em.n_nodes]);
+    for a in 0..len {
+        for b in 0..len {
+            let t = k(a, b) * v[a] * v[b];
+            e += t;
+            s += t.abs();
         }
     }
     (e, s)
 }
 
-/// [`mode_energy`] of every mode of `raw`, in one pass over the elements (each element matrix
-/// built once for all modes).
-pub fn mode_energies(model: &Model, raw: &ModalResults) -> Vec<(f64, f64)> {
+/// Strain energy φᵀKφ of every mode of `raw` summed element by element and its round-off scale
+/// S = Σₑ |φₑ|ᵀ|Kₑ||φₑ|, in one pass over the elements (each element matrix built once for all
+/// modes); `each(element, mode, energy)` sees every element's share on the way.
+pub fn mode_energies_with(
+    model: &Model,
+    raw: &ModalResults,
+    mut each: impl FnMut(usize, usize, f64),
+) -> Vec<(f64, f64)> {
     let mut out = vec![(0.0, 0.0); raw.modes.len()];
-    let mut add = |k: &dyn Fn(usize, usize) -> f64, nodes: &[usize]| {
-        for (m, (e, s)) in raw.modes.iter().zip(out.iter_mut()) {
-            let mut v = [0.0; 24];
-            for (i, &n) in nodes.iter().enumerate() {
-                v[6 * i..6 * i + 6].copy_from_slice(&m.shape[n]);
-            }
-            let len = 6 * nodes.len();
-            for a in 0..len {
-                for b in 0..len {
-                    let t = k(a, b) * v[a] * v[b];
-                    *e += t;
-                    *s += t.abs();
-                }
-            }
+    let mut add = |ie: usize, k: &dyn Fn(usize, usize) -> f64, nodes: &[usize]| {
+        for (mode, (m, (e, s))) in raw.modes.iter().zip(out.iter_mut()).enumerate() {
+            let (de, ds) = element_energy(k, nodes, &m.shape);
+            *e += de;
+            *s += ds;
+            each(ie, mode, de);
         }
     };
     for (ie, el) in model.elements.iter().enumerate() {
         if let crate::fem::Element::Shell4(_) = el {
             if let Ok(em) = model.shell_matrix(ie) {
-                add(&|a, b| em.k[(a, b)], &em.nodes);
+                add(ie, &|a, b| em.k[(a, b)], &em.nodes);
             }
         } else if let Ok(em) = model.element_matrix(ie) {
-            add(&|a, b| em.k[(a, b)], &em.nodes[..em.n_nodes]);
+            add(ie, &|a, b| em.k[(a, b)], &em.nodes[..em.n_nodes]);
         }
     }
     out
+}
+
+/// [`mode_energies_with`] without the per-element shares.
+pub fn mode_energies(model: &Model, raw: &ModalResults) -> Vec<(f64, f64)> {
+    mode_energies_with(model, raw, |_, _, _| {})
 }
 
 /// Share of a mode's strain energy on the shells' drilling penalty above which the mode is
@@ -243,7 +238,7 @@ pub fn drilling_warnings(model: &Model, raw: &ModalResults) -> Vec<String> {
 }
 
 /// Flags rigid-body modes: ω² ≤ [`RIGID_MODE_TOL`] · S, with S the roundoff scale of the mode's
-/// strain energy ([`mode_energy`]). Roundoff in φᵀKφ is a few ε·S (ε ≈ 2.2e-16), so a rigid
+/// strain energy ([`mode_energies`]). Roundoff in φᵀKφ is a few ε·S (ε ≈ 2.2e-16), so a rigid
 /// motion computes to |ω²| of that order and possibly negative; a deforming mode has
 /// ω² = φᵀKφ far above it. Rigid-body modes get frequency 0 and a note.
 pub fn mark_rigid_body(model: &Model, raw: &ModalResults, r: &mut ModalResult) {
