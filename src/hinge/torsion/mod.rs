@@ -94,15 +94,12 @@ impl WarpingShear {
     }
 }
 
-/// [`vlasov_torsion_stiffness`] of a hinge in its blank and of its notch alone (`notch`: the
-/// same profile with no blank). The notch's mesh is the hinge's mesh inside the notch (the same
+/// Torsional stiffness of a hinge in its blank and of its notch alone (`notch`: the same
+/// profile with no blank); the notch's mesh is the hinge's mesh inside the notch (the same
 /// pieces give the same nodes), so its section properties are the hinge's, sampled once.
-pub fn vlasov_torsion_pair(profile: &Profile, notch: &Profile, e: f64, g: f64, mesh: TorsionMesh) -> (f64, f64) {
-    torsion_pair(profile, notch, e, g, None, mesh)
-}
-
-/// [`vlasov_torsion_pair`] with the shear strain of non-uniform warping (Benscoter, *A theory
-/// of torsion bending for multicell beams*, J. Appl. Mech. 21 (1954) 25–34): the warping
+/// Vlasov's model ([`vlasov_torsion_stiffness`]) with the shear strain of non-uniform warping
+/// (Benscoter, *A theory of torsion bending for multicell beams*, J. Appl. Mech. 21 (1954)
+/// 25–34): the warping
 /// displacement is ω(y, z)·ψ(x) with its own amplitude ψ instead of Vlasov's θ′, so the
 /// section carries the Saint-Venant torque GJ θ′ plus a warping shear torque
 /// S = κ G J_r (θ′ − ψ) ([`WarpingShear`]: J_r = ∫|∇ω|² dA = I_p − J for the Saint-Venant
@@ -119,17 +116,7 @@ pub fn benscoter_torsion_pair(
     shear: WarpingShear,
     mesh: TorsionMesh,
 ) -> (f64, f64) {
-    torsion_pair(profile, notch, e, g, Some(shear), mesh)
-}
-
-fn torsion_pair(
-    profile: &Profile,
-    notch: &Profile,
-    e: f64,
-    g: f64,
-    shear: Option<WarpingShear>,
-    mesh: TorsionMesh,
-) -> (f64, f64) {
+    let shear = Some(shear);
     let whole = HalfMesh::new(profile, mesh, e, g, shear);
     let mut own = [0.0; MAX_NODES / 2];
     let nn = half_nodes(notch, mesh, e, g, &mut own);
