@@ -77,10 +77,14 @@ def circular(t_over_r, w_over_t, r):
     return {"type": "circular_notch", "R": r05(r), "t": t, "w": w, "h": h, "blank_length": h}
 
 
+def flat_l_over_t(r_over_t, flat_over_t):
+    """l/t of a corner-filleted hinge: two fillets and the flat, clamped to 2–10, with at least 0.3 t of flat."""
+    return max(min(max(2 * r_over_t + flat_over_t, 2.0), 10.0), 2 * r_over_t + 0.3)
+
+
 def corner(r_over_t, flat_over_t, w_over_t, t):
     t = r05(t)
-    l_over_t = min(max(2 * r_over_t + flat_over_t, 2.0), 10.0)
-    l_over_t = max(l_over_t, 2 * r_over_t + 0.3)
+    l_over_t = flat_l_over_t(r_over_t, flat_over_t)
     r = r05(r_over_t * t)
     h = r05(max(2 * t + 2 * r, 3 * t))
     return {
@@ -143,7 +147,7 @@ def corner_row(r_over_t, flat_over_t, w_over_t, t, blank_over_t, blank_length_ov
     """One corner-filleted row of a Latin-hypercube sample (rounded to 0.05 mm)."""
     t = r05(t)
     r = r05(r_over_t * t)
-    lt = max(min(max(2 * r_over_t + flat_over_t, 2.0), 10.0), 2 * r_over_t + 0.3)
+    lt = flat_l_over_t(r_over_t, flat_over_t)
     h = r05(t + 2 * r + blank_over_t * t)
     return {
         "type": "corner_filleted",
