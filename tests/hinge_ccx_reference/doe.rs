@@ -18,6 +18,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 16190.0,
         spm_nodal: 3.27666,
         spm_ip: 3.12879,
+        n3: [5305.96, 2248.92, 16207.0, 3.24553],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 10.75, "t": 4.8, "w": 48.05, "h": 15.55, "blank_length": 15.55}"#,
@@ -28,6 +29,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 713071.0,
         spm_nodal: 0.0054817,
         spm_ip: 0.00502887,
+        n3: [3549890.0, 19135300.0, 714249.0, 0.00545205],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 2.25, "t": 0.65, "w": 1.65, "h": 2.9, "blank_length": 2.9}"#,
@@ -38,6 +40,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 19416.3,
         spm_nodal: 8.92436,
         spm_ip: 8.24162,
+        n3: [1780.86, 2114.34, 19438.4, 8.89039],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 8.6, "t": 1.55, "w": 1.0, "h": 10.15, "blank_length": 10.15}"#,
@@ -48,6 +51,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 9363.66,
         spm_nodal: 2.59242,
         spm_ip: 3.73714,
+        n3: [4927.1, 1020.67, 9373.06, 2.5817],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 4.4, "t": 0.5, "w": 2.0, "h": 4.9, "blank_length": 4.9}"#,
@@ -58,6 +62,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 15000.3,
         spm_nodal: 12.1947,
         spm_ip: 11.451,
+        n3: [853.77, 1282.89, 15008.4, 12.1642],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 2.8, "t": 0.4, "w": 2.55, "h": 3.2, "blank_length": 3.2}"#,
@@ -68,6 +73,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 21459.2,
         spm_nodal: 14.8013,
         spm_ip: 13.9039,
+        n3: [798.129, 1938.43, 21477.3, 14.8383],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 5.5, "t": 0.5, "w": 0.8, "h": 6.0, "blank_length": 6.0}"#,
@@ -78,6 +84,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 5372.13,
         spm_nodal: 30.426,
         spm_ip: 28.6034,
+        n3: [300.238, 207.088, 5376.5, 30.3665],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 6.85, "t": 1.55, "w": 24.6, "h": 8.4, "blank_length": 8.4}"#,
@@ -88,6 +95,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 265672.0,
         spm_nodal: 0.0999385,
         spm_ip: 0.0941574,
+        n3: [147398.0, 1403340.0, 266018.0, 0.099186],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 5.0, "t": 0.75, "w": 1.5, "h": 5.75, "blank_length": 5.75}"#,
@@ -98,6 +106,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 12863.2,
         spm_nodal: 7.25804,
         spm_ip: 6.79965,
+        n3: [1605.39, 1423.48, 12870.9, 7.24031],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 5.0, "t": 2.0, "w": 4.0, "h": 7.0, "blank_length": 7.0}"#,
@@ -108,6 +117,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 54742.5,
         spm_nodal: 0.395348,
         spm_ip: 0.36473,
+        n3: [45898.3, 44559.9, 54805.8, 0.39051],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 5.0, "t": 0.6, "w": 4.8, "h": 5.6, "blank_length": 5.6}"#,
@@ -118,6 +128,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 37148.9,
         spm_nodal: 3.49248,
         spm_ip: 3.27322,
+        n3: [3146.83, 9158.99, 37176.0, 3.48666],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 5.0, "t": 1.5, "w": 22.5, "h": 6.5, "blank_length": 6.5}"#,
@@ -128,6 +139,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 279453.0,
         spm_nodal: 0.116453,
         spm_ip: 0.108653,
+        n3: [141693.0, 1321090.0, 279849.0, 0.116343],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 4.7, "R": 1.5, "t": 1.5, "w": 11.75, "h": 6.0, "blank_length": 6.0}"#,
@@ -138,6 +150,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 162614.0,
         spm_nodal: 0.230072,
         spm_ip: 0.211525,
+        n3: [66217.6, 320599.0, 162935.0, 0.226138],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 18.05, "R": 4.3, "t": 1.9, "w": 4.85, "h": 12.4, "blank_length": 12.4}"#,
@@ -148,6 +161,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 32686.3,
         spm_nodal: 0.353268,
         spm_ip: 0.329515,
+        n3: [15253.9, 18169.2, 32708.8, 0.349942],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 4.85, "R": 1.6, "t": 1.05, "w": 12.0, "h": 5.3, "blank_length": 5.3}"#,
@@ -158,6 +172,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 137843.0,
         spm_nodal: 0.444872,
         spm_ip: 0.41343,
+        n3: [26660.2, 195009.0, 138160.0, 0.437896],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 5.55, "R": 1.4, "t": 1.15, "w": 4.25, "h": 5.1, "blank_length": 5.1}"#,
@@ -168,6 +183,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 44612.1,
         spm_nodal: 1.11291,
         spm_ip: 1.0211,
+        n3: [8855.34, 15130.3, 44691.7, 1.09976],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 2.5, "R": 0.7, "t": 1.25, "w": 6.75, "h": 3.9, "blank_length": 3.9}"#,
@@ -178,6 +194,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 112909.0,
         spm_nodal: 0.612365,
         spm_ip: 0.564971,
+        n3: [32332.3, 102737.0, 113619.0, 0.603852],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 6.5, "R": 2.95, "t": 1.6, "w": 2.8, "h": 9.1, "blank_length": 9.1}"#,
@@ -188,6 +205,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 35719.9,
         spm_nodal: 0.878019,
         spm_ip: 0.818958,
+        n3: [19771.1, 17439.6, 35765.0, 0.871423],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 3.7, "R": 1.2, "t": 1.75, "w": 29.0, "h": 5.9, "blank_length": 5.9}"#,
@@ -198,6 +216,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 498875.0,
         spm_nodal: 0.0694367,
         spm_ip: 0.064255,
+        n3: [287188.0, 5014230.0, 500660.0, 0.0688935],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 6.85, "R": 1.1, "t": 1.35, "w": 1.65, "h": 4.9, "blank_length": 4.9}"#,
@@ -208,6 +227,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 16084.2,
         spm_nodal: 2.24697,
         spm_ip: 2.04338,
+        n3: [3735.49, 2623.02, 16105.1, 2.19463],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 4.5, "R": 0.75, "t": 1.5, "w": 4.5, "h": 4.5, "blank_length": 4.5}"#,
@@ -218,6 +238,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 60260.1,
         spm_nodal: 0.660166,
         spm_ip: 0.61306,
+        n3: [19692.3, 30240.6, 60559.6, 0.654311],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 4.0, "R": 1.0, "t": 1.0, "w": 5.0, "h": 4.0, "blank_length": 4.0}"#,
@@ -228,6 +249,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 58702.2,
         spm_nodal: 1.23994,
         spm_ip: 1.13646,
+        n3: [9185.1, 22052.1, 58788.0, 1.22193],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 5.1, "R": 2.25, "t": 1.5, "w": 6.0, "h": 7.5, "blank_length": 7.5}"#,
@@ -238,6 +260,7 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 82703.3,
         spm_nodal: 0.453486,
         spm_ip: 0.420714,
+        n3: [41008.8, 90923.9, 82939.0, 0.449858],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 5.4, "R": 2.5, "t": 1.0, "w": 8.0, "h": 7.0, "blank_length": 7.0}"#,
@@ -248,5 +271,6 @@ pub const DOE1: &[CcxRef] = &[
         k_axial: 92166.7,
         spm_nodal: 0.73847,
         spm_ip: 0.692746,
+        n3: [21245.5, 100704.0, 92345.1, 0.737837],
     },
 ];

@@ -18,6 +18,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 322171.0,
         spm_nodal: 0.0311683,
         spm_ip: 0.0287605,
+        n3: [597168.0, 2654550.0, 322712.0, 0.0309313],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 3.15, "t": 0.35, "w": 0.3, "h": 4.9, "blank_length": 3.0}"#,
@@ -28,6 +29,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 2322.69,
         spm_nodal: 166.881,
         spm_ip: 185.11,
+        n3: [60.6679, 19.9816, 2325.13, 166.537],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 4.5, "t": 0.4, "w": 2.2, "h": 5.8, "blank_length": 8.2}"#,
@@ -38,6 +40,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 13368.3,
         spm_nodal: 17.2737,
         spm_ip: 16.4717,
+        n3: [541.68, 976.017, 13372.7, 17.2287],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 2.2, "t": 0.4, "w": 1.5, "h": 4.2, "blank_length": 7.85}"#,
@@ -48,6 +51,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 10914.2,
         spm_nodal: 25.4212,
         spm_ip: 23.9007,
+        n3: [509.755, 761.382, 10920.0, 25.398],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 3.75, "t": 0.8, "w": 1.45, "h": 7.95, "blank_length": 8.5}"#,
@@ -58,6 +62,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 13367.8,
         spm_nodal: 6.65728,
         spm_ip: 6.24973,
+        n3: [2079.35, 1678.06, 13373.7, 6.63968],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 6.4, "t": 0.95, "w": 10.95, "h": 11.15, "blank_length": 10.4}"#,
@@ -68,6 +73,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 91161.3,
         spm_nodal: 0.602931,
         spm_ip: 0.565958,
+        n3: [20299.0, 108071.0, 91255.7, 0.59836],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 5.35, "t": 1.4, "w": 1.75, "h": 7.3, "blank_length": 9.0}"#,
@@ -78,6 +84,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 18027.1,
         spm_nodal: 1.82661,
         spm_ip: 1.70084,
+        n3: [8237.61, 4355.89, 18041.0, 1.82346],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 10.95, "t": 3.45, "w": 57.4, "h": 12.65, "blank_length": 20.55}"#,
@@ -88,6 +95,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 613758.0,
         spm_nodal: 0.00867647,
         spm_ip: 0.00808567,
+        n3: [1857100.0, 13985000.0, 614549.0, 0.00861162],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 2.6, "t": 0.35, "w": 0.2, "h": 2.75, "blank_length": 1.95}"#,
@@ -98,6 +106,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 1760.56,
         spm_nodal: 251.441,
         spm_ip: 418.498,
+        n3: [44.1459, 7.81572, 1760.86, 251.29],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 9.15, "t": 4.2, "w": 11.05, "h": 13.45, "blank_length": 7.2}"#,
@@ -108,6 +117,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 199614.0,
         spm_nodal: 0.0324481,
         spm_ip: 0.0300971,
+        n3: [622879.0, 852224.0, 199952.0, 0.0321708],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 1.0, "w": 15.0, "h": 5.0, "blank_length": 5.0}"#,
@@ -118,6 +128,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 169970.0,
         spm_nodal: 0.396278,
         spm_ip: 0.366797,
+        n3: [38950.3, 348731.0, 170217.0, 0.389438],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 6.0, "t": 1.5, "w": 30.0, "h": 6.0, "blank_length": 8.0}"#,
@@ -128,6 +139,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 324559.0,
         spm_nodal: 0.0874999,
         spm_ip: 0.0817518,
+        n3: [171673.0, 1909420.0, 324977.0, 0.0867003],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 11.6, "R": 1.15, "t": 1.8, "w": 2.8, "h": 6.9, "blank_length": 6.45}"#,
@@ -138,6 +150,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 22793.2,
         spm_nodal: 0.75281,
         spm_ip: 0.680671,
+        n3: [8482.56, 7607.63, 22817.9, 0.727244],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 6.15, "R": 2.65, "t": 1.35, "w": 2.85, "h": 7.55, "blank_length": 5.35}"#,
@@ -148,6 +161,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 38228.9,
         spm_nodal: 1.20288,
         spm_ip: 1.11121,
+        n3: [12744.2, 14271.3, 38253.3, 1.19153],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 5.95, "R": 1.45, "t": 1.95, "w": 10.15, "h": 11.9, "blank_length": 7.35}"#,
@@ -158,6 +172,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 144429.0,
         spm_nodal: 0.163914,
         spm_ip: 0.150182,
+        n3: [88372.1, 276956.0, 145469.0, 0.16148],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 5.0, "R": 1.6, "t": 1.55, "w": 14.65, "h": 7.75, "blank_length": 10.95}"#,
@@ -168,6 +183,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 168072.0,
         spm_nodal: 0.171182,
         spm_ip: 0.157443,
+        n3: [87349.8, 527041.0, 168901.0, 0.168204],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 10.55, "R": 2.9, "t": 1.25, "w": 21.5, "h": 8.65, "blank_length": 4.65}"#,
@@ -178,6 +194,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 187243.0,
         spm_nodal: 0.177367,
         spm_ip: 0.169146,
+        n3: [38449.7, 322478.0, 187603.0, 0.177368],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 7.15, "R": 2.85, "t": 1.7, "w": 21.7, "h": 8.35, "blank_length": 10.3}"#,
@@ -188,6 +205,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 255644.0,
         spm_nodal: 0.094398,
         spm_ip: 0.0892959,
+        n3: [157242.0, 1356710.0, 256163.0, 0.09218],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 2.65, "R": 1.05, "t": 1.2, "w": 4.6, "h": 6.15, "blank_length": 6.6}"#,
@@ -198,6 +216,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 67578.1,
         spm_nodal: 0.945057,
         spm_ip: 0.880773,
+        n3: [22971.5, 53602.9, 67801.3, 0.941555],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 4.1, "R": 0.55, "t": 1.05, "w": 7.35, "h": 3.05, "blank_length": 4.95}"#,
@@ -208,6 +227,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 71578.2,
         spm_nodal: 0.802303,
         spm_ip: 0.745047,
+        n3: [12316.5, 34481.7, 71830.3, 0.777355],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 6.55, "R": 1.75, "t": 1.45, "w": 1.7, "h": 9.2, "blank_length": 7.45}"#,
@@ -218,6 +238,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 18606.6,
         spm_nodal: 1.82664,
         spm_ip: 1.68132,
+        n3: [5904.07, 3807.16, 18634.3, 1.79506],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 3.5, "R": 1.55, "t": 1.1, "w": 3.15, "h": 5.35, "blank_length": 10.0}"#,
@@ -228,6 +249,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 33094.2,
         spm_nodal: 1.6393,
         spm_ip: 1.52074,
+        n3: [11357.9, 15569.6, 33160.1, 1.63459],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 4.0, "R": 1.0, "t": 1.0, "w": 15.0, "h": 5.0, "blank_length": 5.0}"#,
@@ -238,6 +260,7 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 176094.0,
         spm_nodal: 0.401995,
         spm_ip: 0.367067,
+        n3: [29398.4, 343603.0, 177430.0, 0.415366],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 6.0, "R": 1.5, "t": 1.5, "w": 30.0, "h": 6.0, "blank_length": 8.0}"#,
@@ -248,5 +271,6 @@ pub const DOE2: &[CcxRef] = &[
         k_axial: 331435.0,
         spm_nodal: 0.0889931,
         spm_ip: 0.0813228,
+        n3: [128034.0, 1985910.0, 332526.0, 0.0878235],
     },
 ];

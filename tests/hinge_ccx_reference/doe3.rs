@@ -18,6 +18,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 143757.0,
         spm_nodal: 0.0996983,
         spm_ip: 0.0952662,
+        n3: [57470.1, 211274.0, 144077.0, 0.0996188],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 6.15, "R": 2.35, "t": 1.9, "w": 31.5, "h": 8.0, "blank_length": 7.35}"#,
@@ -28,6 +29,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 474205.0,
         spm_nodal: 0.0524763,
         spm_ip: 0.0483473,
+        n3: [324332.0, 5413020.0, 475603.0, 0.052236],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 5.9, "R": 1.35, "t": 1.35, "w": 5.0, "h": 6.85, "blank_length": 5.3}"#,
@@ -38,6 +40,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 57107.8,
         spm_nodal: 0.699136,
         spm_ip: 0.640459,
+        n3: [15037.6, 26863.1, 57270.1, 0.692065],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 7.45, "R": 2.4, "t": 1.6, "w": 1.95, "h": 8.4, "blank_length": 4.6}"#,
@@ -48,6 +51,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 25015.5,
         spm_nodal: 1.28547,
         spm_ip: 1.20743,
+        n3: [9057.97, 6272.19, 25054.2, 1.27001],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 6.35, "R": 2.75, "t": 1.5, "w": 2.65, "h": 12.25, "blank_length": 22.45}"#,
@@ -58,6 +62,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 24252.9,
         spm_nodal: 1.05885,
         spm_ip: 0.996877,
+        n3: [15109.3, 11791.1, 24288.1, 1.05002],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 3.45, "R": 1.05, "t": 1.25, "w": 6.75, "h": 5.35, "blank_length": 5.85}"#,
@@ -68,6 +73,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 91691.0,
         spm_nodal: 0.594979,
         spm_ip: 0.540248,
+        n3: [27657.7, 86811.3, 92032.8, 0.584056],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 2.1, "R": 0.6, "t": 1.05, "w": 2.7, "h": 2.85, "blank_length": 4.4}"#,
@@ -78,6 +84,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 36508.4,
         spm_nodal: 2.24061,
         spm_ip: 2.07347,
+        n3: [8068.64, 10410.7, 36639.2, 2.17182],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 5.5, "R": 0.8, "t": 1.15, "w": 9.0, "h": 3.85, "blank_length": 5.0}"#,
@@ -88,6 +95,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 85409.0,
         spm_nodal: 0.546265,
         spm_ip: 0.494139,
+        n3: [16154.1, 50241.0, 85659.0, 0.523812],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 8.5, "R": 3.8, "t": 1.6, "w": 18.25, "h": 10.1, "blank_length": 9.25}"#,
@@ -98,6 +106,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 219428.0,
         spm_nodal: 0.126221,
         spm_ip: 0.119222,
+        n3: [119667.0, 944688.0, 219932.0, 0.125371],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 6.3, "R": 2.7, "t": 1.25, "w": 4.65, "h": 8.2, "blank_length": 4.45}"#,
@@ -108,6 +117,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 62427.9,
         spm_nodal: 0.840544,
         spm_ip: 0.784895,
+        n3: [17318.1, 33399.5, 62555.6, 0.838407],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 6.8, "R": 2.05, "t": 1.5, "w": 2.65, "h": 8.75, "blank_length": 13.5}"#,
@@ -118,6 +128,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 24450.7,
         spm_nodal: 1.08337,
         spm_ip: 0.991525,
+        n3: [10428.2, 9240.99, 24474.5, 1.06818],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 4.65, "R": 2.1, "t": 1.15, "w": 1.4, "h": 6.2, "blank_length": 4.8}"#,
@@ -128,6 +139,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 19612.6,
         spm_nodal: 3.45286,
         spm_ip: 3.24968,
+        n3: [5069.42, 3061.72, 19643.6, 3.4162],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 7.85, "R": 2.85, "t": 1.9, "w": 4.85, "h": 12.75, "blank_length": 23.4}"#,
@@ -138,6 +150,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 43873.2,
         spm_nodal: 0.357576,
         spm_ip: 0.331552,
+        n3: [37846.3, 46042.1, 43917.2, 0.353991],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 3.55, "R": 1.3, "t": 1.05, "w": 5.65, "h": 7.35, "blank_length": 8.0}"#,
@@ -148,6 +161,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 67750.4,
         spm_nodal: 0.976182,
         spm_ip: 0.906435,
+        n3: [16410.9, 53043.3, 67983.6, 0.967885],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 4.9, "R": 2.25, "t": 1.35, "w": 22.4, "h": 8.0, "blank_length": 10.35}"#,
@@ -158,6 +172,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 277842.0,
         spm_nodal: 0.14417,
         spm_ip: 0.137838,
+        n3: [131997.0, 1818140.0, 278571.0, 0.142489],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 9.4, "R": 3.5, "t": 1.75, "w": 13.7, "h": 10.45, "blank_length": 6.8}"#,
@@ -168,6 +183,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 165348.0,
         spm_nodal: 0.140936,
         spm_ip: 0.131643,
+        n3: [84502.5, 365584.0, 165794.0, 0.139759],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 9.6, "t": 2.4, "w": 30.25, "h": 13.2, "blank_length": 11.1}"#,
@@ -178,6 +194,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 352140.0,
         spm_nodal: 0.0341267,
         spm_ip: 0.0316134,
+        n3: [454197.0, 3371880.0, 352537.0, 0.0340332],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 2.5, "t": 0.4, "w": 2.0, "h": 2.65, "blank_length": 3.15}"#,
@@ -188,6 +205,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 17194.5,
         spm_nodal: 19.0489,
         spm_ip: 17.7304,
+        n3: [648.257, 1265.15, 17204.1, 18.9581],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 3.9, "t": 0.4, "w": 0.8, "h": 7.4, "blank_length": 4.4}"#,
@@ -198,6 +216,7 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 5850.79,
         spm_nodal: 47.4674,
         spm_ip: 44.8261,
+        n3: [204.387, 179.531, 5857.49, 47.5068],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 6.15, "t": 2.45, "w": 1.95, "h": 11.15, "blank_length": 18.75}"#,
@@ -208,5 +227,6 @@ pub const DOE3: &[CcxRef] = &[
         k_axial: 20224.0,
         spm_nodal: 0.555403,
         spm_ip: 0.663865,
+        n3: [32540.3, 8116.42, 20233.6, 0.550419],
     },
 ];

@@ -20,31 +20,53 @@ pub const SCIKIT_FEM: [(&str, [f64; 4]); 3] = [
     ),
 ];
 
-/// Checks that every reference of `refs` is exactly one line of `tools/<file>` (geometry, E, ν
-/// and the five quantities to 6 digits) and that the file has no other line; returns the
-/// number of lines.
-pub fn raw_lines_matched(file: &str, refs: &[&CcxRef]) -> usize {
+pub fn json_lines(file: &str) -> Vec<serde_json::Value> {
     let path = format!("{}/tools/{file}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).unwrap();
-    let lines: Vec<serde_json::Value> = text.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    text.lines().map(|l| serde_json::from_str(l).unwrap()).collect()
+}
+
+/// Checks that every reference of `refs` is exactly one line of `tools/<file>` (geometry, E, ν
+/// and the five quantities to 6 digits, at n = 4) and that the file has no other line, and that
+/// its n = 3 values are the line of `tools/ccx_refine_n3_results.jsonl` re-solving that line
+/// (same geometry, E, ν and blank size cap); returns the number of lines.
+pub fn raw_lines_matched(file: &str, refs: &[&CcxRef]) -> usize {
+    let lines = json_lines(file);
+    let n3 = json_lines("ccx_refine_n3_results.jsonl");
     assert_eq!(lines.len(), refs.len(), "{file}");
     let close = |a: &serde_json::Value, b: f64| a.as_f64().is_some_and(|a| (a / b - 1.0).abs() < 1e-5);
     for r in refs {
         let spec: serde_json::Value = serde_json::from_str(r.hinge).unwrap();
-        let matches = lines
-            .iter()
-            .filter(|l| spec.as_object().unwrap().iter().all(|(k, v)| l[k] == *v) && l["nu"] == r.nu)
-            .filter(|l| {
+        let same = |l: &&serde_json::Value| {
+            spec.as_object().unwrap().iter().all(|(k, v)| l[k] == *v)
+                && l["nu"] == r.nu
+                && l["E"] == r.e
+                && l["solver"].as_str().is_some_and(|s| s.starts_with("ccx 2.20 C3D10"))
+        };
+        let matches: Vec<usize> = (0..lines.len())
+            .filter(|&i| same(&&lines[i]))
+            .filter(|&i| {
+                let l = &lines[i];
                 close(&l["k_bend"], r.k_bend)
                     && close(&l["k_torsion"], r.k_torsion)
                     && close(&l["k_axial"], r.k_axial)
                     && close(&l["stress_per_moment_nodal"], r.spm_nodal)
                     && close(&l["stress_per_moment_ip"], r.spm_ip)
-                    && l["E"] == r.e
-                    && l["solver"].as_str().is_some_and(|s| s.starts_with("ccx 2.20 C3D10"))
+                    && l["n"].as_f64() == Some(4.0)
             })
-            .count();
-        assert_eq!(matches, 1, "{} (ν = {}): {matches} matching lines", r.hinge, r.nu);
+            .collect();
+        assert_eq!(matches.len(), 1, "{} (ν = {}): {} matching lines", r.hinge, r.nu, matches.len());
+        let coarse: Vec<&serde_json::Value> = n3
+            .iter()
+            .filter(|l| l["source"] == file && l["index"].as_u64() == Some(matches[0] as u64))
+            .filter(same)
+            .filter(|l| l["n"].as_f64() == Some(3.0) && l["hmax"] == lines[matches[0]]["hmax"])
+            .collect();
+        assert_eq!(coarse.len(), 1, "{}: n = 3 lines", r.hinge);
+        let keys = ["k_bend", "k_torsion", "k_axial", "stress_per_moment_nodal"];
+        for (key, v) in keys.iter().zip(r.n3) {
+            assert!(close(&coarse[0][key], v), "{}: n = 3 {key} = {v}", r.hinge);
+        }
     }
     lines.len()
 }

@@ -17,6 +17,25 @@ pub struct CcxRef {
     pub spm_nodal: f64,
     /// Peak integration-point von Mises stress per unit compliant-axis moment, MPa/(N·mm).
     pub spm_ip: f64,
+    /// The same model solved at n = 3 (`tools/ccx_refine_n3_results.jsonl`): k_bend, k_torsion,
+    /// k_axial, spm_nodal, in the units above.
+    pub n3: [f64; 4],
+}
+
+impl CcxRef {
+    /// The converged stiffnesses (bending, torsion, axial): the order-2 Richardson extrapolation
+    /// of n = 3 and n = 4, k∞ = k₄ + (k₄ − k₃)·3²/(4² − 3²) (`tools/ccx_refine.py`; the order is
+    /// the one measured on finer meshes, see `extrapolation_checked_on_finer_meshes`).
+    pub fn converged(&self) -> [f64; 3] {
+        let k4 = [self.k_bend, self.k_torsion, self.k_axial];
+        std::array::from_fn(|q| richardson(k4[q], self.n3[q], 4.0, 3.0))
+    }
+}
+
+/// The order-2 Richardson extrapolation of a quantity solved at `n_fine` and `n_coarse` element
+/// sizes across the local thickness.
+pub fn richardson(fine: f64, coarse: f64, n_fine: f64, n_coarse: f64) -> f64 {
+    fine + (fine - coarse) / ((n_fine / n_coarse).powi(2) - 1.0)
 }
 
 /// Rows the first calibration was fitted on (see the module docs of tests/hinge_ccx_reference.rs).
@@ -30,6 +49,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 4564.51,
         spm_nodal: 19.7195,
         spm_ip: 29.8773,
+        n3: [771.312, 130.389, 4568.67, 19.6105],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 2.0, "t": 1.0, "w": 1.0, "h": 5.0, "blank_length": 4.0}"#,
@@ -40,6 +60,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 14757.4,
         spm_nodal: 6.57949,
         spm_ip: 6.21076,
+        n3: [3193.21, 1395.52, 14772.4, 6.46815],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 3.0, "t": 1.5, "w": 2.0, "h": 6.0, "blank_length": 10.0}"#,
@@ -50,6 +71,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 22447.1,
         spm_nodal: 1.43402,
         spm_ip: 1.32702,
+        n3: [13557.1, 7324.7, 22472.1, 1.43456],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 15.0, "t": 1.5, "w": 3.0, "h": 15.0, "blank_length": 20.0}"#,
@@ -60,6 +82,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 20027.9,
         spm_nodal: 0.901169,
         spm_ip: 0.843439,
+        n3: [10602.2, 8901.27, 20042.8, 0.900455],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 1.0, "t": 0.5, "w": 1.0, "h": 2.5, "blank_length": 4.0}"#,
@@ -70,6 +93,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 11109.4,
         spm_nodal: 25.5374,
         spm_ip: 23.4846,
+        n3: [784.501, 700.016, 11121.3, 25.402],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 6.0, "t": 3.0, "w": 8.0, "h": 12.0, "blank_length": 15.0}"#,
@@ -80,6 +104,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 103634.0,
         spm_nodal: 0.0880058,
         spm_ip: 0.0814173,
+        n3: [228422.0, 293341.0, 103792.0, 0.0865062],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 7.0, "t": 3.5, "w": 12.0, "h": 12.0, "blank_length": 15.0}"#,
@@ -90,6 +115,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 160637.0,
         spm_nodal: 0.042595,
         spm_ip: 0.0396083,
+        n3: [464012.0, 751816.0, 160894.0, 0.042358],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 12.0, "t": 2.0, "w": 10.0, "h": 10.0, "blank_length": 20.0}"#,
@@ -100,6 +126,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 75777.5,
         spm_nodal: 0.15296,
         spm_ip: 0.141868,
+        n3: [80197.2, 149462.0, 75830.0, 0.151825],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 2.0, "w": 10.0, "h": 10.0, "blank_length": 20.0}"#,
@@ -110,6 +137,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 84501.9,
         spm_nodal: 0.152103,
         spm_ip: 0.14204,
+        n3: [96440.5, 197681.0, 84571.8, 0.150076],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 2.0, "t": 1.0, "w": 5.0, "h": 5.0, "blank_length": 8.0}"#,
@@ -120,6 +148,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 56047.5,
         spm_nodal: 1.24168,
         spm_ip: 1.13363,
+        n3: [16476.6, 41198.0, 56153.7, 1.23317],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 1.5, "t": 0.3, "w": 2.0, "h": 3.0, "blank_length": 5.0}"#,
@@ -130,6 +159,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 15758.8,
         spm_nodal: 33.5665,
         spm_ip: 31.3428,
+        n3: [413.725, 1185.14, 15778.2, 33.5668],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 1.0, "t": 0.3, "w": 3.0, "h": 3.0, "blank_length": 4.0}"#,
@@ -140,6 +170,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 29180.0,
         spm_nodal: 22.0558,
         spm_ip: 20.4801,
+        n3: [763.806, 4697.98, 29281.2, 22.0095],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 6.0, "R": 2.0, "t": 1.5, "w": 1.5, "h": 8.0, "blank_length": 5.0}"#,
@@ -150,6 +181,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 20220.6,
         spm_nodal: 1.92656,
         spm_ip: 1.88738,
+        n3: [6944.6, 3742.74, 20265.8, 1.86741],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 8.0, "R": 2.0, "t": 1.0, "w": 1.5, "h": 5.0, "blank_length": 6.0}"#,
@@ -160,6 +192,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 11151.6,
         spm_nodal: 4.21427,
         spm_ip: 3.98385,
+        n3: [1525.67, 1235.41, 11156.3, 4.18532],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 5.0, "R": 1.0, "t": 1.0, "w": 2.0, "h": 4.0, "blank_length": 4.0}"#,
@@ -170,6 +203,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 20002.3,
         spm_nodal: 3.25631,
         spm_ip: 2.97601,
+        n3: [2707.65, 2891.47, 20029.6, 3.21742],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 10.0, "R": 2.0, "t": 1.0, "w": 3.0, "h": 6.0, "blank_length": 6.0}"#,
@@ -180,6 +214,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 18906.1,
         spm_nodal: 2.0415,
         spm_ip: 1.92355,
+        n3: [2313.03, 2992.6, 18923.6, 2.0301],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 6.0, "R": 2.0, "t": 1.5, "w": 6.0, "h": 8.0, "blank_length": 10.0}"#,
@@ -190,6 +225,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 65629.9,
         spm_nodal: 0.45526,
         spm_ip: 0.421628,
+        n3: [28793.9, 58024.5, 65752.4, 0.445888],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 8.0, "R": 1.0, "t": 2.0, "w": 8.0, "h": 8.0, "blank_length": 10.0}"#,
@@ -200,6 +236,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 80526.2,
         spm_nodal: 0.214695,
         spm_ip: 0.196954,
+        n3: [48173.9, 87454.3, 80899.7, 0.207164],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 10.0, "R": 4.0, "t": 2.0, "w": 12.0, "h": 10.0, "blank_length": 10.0}"#,
@@ -210,6 +247,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 139351.0,
         spm_nodal: 0.125708,
         spm_ip: 0.118682,
+        n3: [106744.0, 325876.0, 139601.0, 0.124194],
     },
     CcxRef {
         hinge: r#"{"type": "spherical_neck", "l": 5.0, "t": 3.0, "R": 4.0, "h": 10.0, "blank_length": 20.0}"#,
@@ -220,6 +258,7 @@ pub const FIRST_FIT: &[CcxRef] = &[
         k_axial: 38347.5,
         spm_nodal: 0.38632,
         spm_ip: 0.355573,
+        n3: [32885.9, 24829.8, 38446.6, 0.39949],
     },
 ];
 
@@ -234,6 +273,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 48554.2,
         spm_nodal: 0.100255,
         spm_ip: 0.0958222,
+        n3: [180102.0, 71573.7, 48596.4, 0.0998304],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 2.0, "w": 2.0, "h": 10.0, "blank_length": 6.0}"#,
@@ -244,6 +284,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 32318.8,
         spm_nodal: 0.821045,
         spm_ip: 0.775789,
+        n3: [25785.8, 12048.2, 32402.0, 0.812385],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 0.8, "w": 1.5, "h": 8.0, "blank_length": 10.0}"#,
@@ -254,6 +295,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 12926.9,
         spm_nodal: 6.43396,
         spm_ip: 5.99062,
+        n3: [2086.48, 1700.09, 12935.6, 6.41099],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 6.0, "t": 1.5, "w": 3.0, "h": 9.0, "blank_length": 6.0}"#,
@@ -264,6 +306,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 35463.3,
         spm_nodal: 0.915129,
         spm_ip: 0.858182,
+        n3: [16299.4, 15761.8, 35508.8, 0.91499],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 15.0, "t": 4.0, "w": 10.0, "h": 20.0, "blank_length": 20.0}"#,
@@ -274,6 +317,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 112187.0,
         spm_nodal: 0.0388085,
         spm_ip: 0.0363198,
+        n3: [396004.0, 458861.0, 112304.0, 0.0386236],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 10.0, "t": 2.0, "w": 6.0, "h": 10.0, "blank_length": 12.0}"#,
@@ -284,6 +328,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 57873.3,
         spm_nodal: 0.255632,
         spm_ip: 0.239202,
+        n3: [52163.0, 67312.8, 57908.9, 0.254648],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 5.0, "t": 2.0, "w": 6.0, "h": 10.0, "blank_length": 15.0}"#,
@@ -294,6 +339,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 65089.7,
         spm_nodal: 0.2613,
         spm_ip: 0.242221,
+        n3: [70373.3, 97571.4, 65156.9, 0.256125],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 1.0, "w": 4.0, "h": 10.0, "blank_length": 20.0}"#,
@@ -304,6 +350,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 25509.9,
         spm_nodal: 1.52423,
         spm_ip: 1.43135,
+        n3: [7114.35, 10444.4, 25524.4, 1.51154],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 4.0, "t": 0.5, "w": 2.5, "h": 5.0, "blank_length": 6.0}"#,
@@ -314,6 +361,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 18594.6,
         spm_nodal: 9.74749,
         spm_ip: 9.1504,
+        n3: [1130.29, 2071.78, 18602.8, 9.69022],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 5.0, "t": 1.0, "w": 5.0, "h": 6.0, "blank_length": 8.0}"#,
@@ -324,6 +372,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 45347.8,
         spm_nodal: 1.21669,
         spm_ip: 1.13507,
+        n3: [11209.0, 23043.7, 45394.1, 1.21339],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 12.0, "t": 1.0, "w": 6.0, "h": 14.0, "blank_length": 20.0}"#,
@@ -334,6 +383,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 35658.0,
         spm_nodal: 1.01412,
         spm_ip: 0.95691,
+        n3: [8984.93, 17085.9, 35672.0, 1.01152],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 3.0, "t": 1.5, "w": 10.0, "h": 6.0, "blank_length": 8.0}"#,
@@ -344,6 +394,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 127508.0,
         spm_nodal: 0.273321,
         spm_ip: 0.249861,
+        n3: [74261.9, 244353.0, 127754.0, 0.26882],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 2.5, "t": 1.0, "w": 8.0, "h": 6.0, "blank_length": 8.0}"#,
@@ -354,6 +405,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 90301.0,
         spm_nodal: 0.757755,
         spm_ip: 0.69566,
+        n3: [25048.3, 112806.0, 90525.6, 0.751156],
     },
     CcxRef {
         hinge: r#"{"type": "circular_notch", "R": 8.0, "t": 1.5, "w": 15.0, "h": 8.0, "blank_length": 10.0}"#,
@@ -364,6 +416,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 140148.0,
         spm_nodal: 0.176195,
         spm_ip: 0.164208,
+        n3: [75591.0, 327010.0, 140287.0, 0.175216],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 5.0, "R": 0.5, "t": 1.0, "w": 1.0, "h": 4.0, "blank_length": 5.0}"#,
@@ -374,6 +427,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 8745.76,
         spm_nodal: 7.01764,
         spm_ip: 7.18541,
+        n3: [1150.66, 640.279, 8757.09, 6.62823],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 8.0, "R": 3.0, "t": 2.0, "w": 4.0, "h": 10.0, "blank_length": 12.0}"#,
@@ -384,6 +438,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 45953.7,
         spm_nodal: 0.395556,
         spm_ip: 0.366432,
+        n3: [35921.2, 36768.4, 45981.7, 0.390702],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 5.0, "R": 1.5, "t": 1.0, "w": 2.0, "h": 5.0, "blank_length": 6.0}"#,
@@ -394,6 +449,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 19815.1,
         spm_nodal: 3.17093,
         spm_ip: 2.93889,
+        n3: [3268.84, 3364.58, 19825.3, 3.12349],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 12.0, "R": 3.0, "t": 3.0, "w": 6.0, "h": 12.0, "blank_length": 12.0}"#,
@@ -404,6 +460,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 69689.2,
         spm_nodal: 0.120149,
         spm_ip: 0.11022,
+        n3: [94412.7, 101674.0, 69812.0, 0.118402],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 20.0, "R": 5.0, "t": 2.0, "w": 5.0, "h": 10.0, "blank_length": 10.0}"#,
@@ -414,6 +471,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 33836.2,
         spm_nodal: 0.307807,
         spm_ip: 0.288139,
+        n3: [17096.6, 20004.8, 33853.1, 0.306117],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 3.4, "R": 1.5, "t": 1.5, "w": 4.5, "h": 6.0, "blank_length": 6.0}"#,
@@ -424,6 +482,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 72897.9,
         spm_nodal: 0.625241,
         spm_ip: 0.591968,
+        n3: [36500.9, 61648.8, 73099.8, 0.61705],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 12.0, "R": 4.0, "t": 3.0, "w": 10.0, "h": 12.0, "blank_length": 15.0}"#,
@@ -434,6 +493,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 113924.0,
         spm_nodal: 0.0691994,
         spm_ip: 0.0633988,
+        n3: [187389.0, 306469.0, 114134.0, 0.0680177],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 4.0, "R": 1.0, "t": 1.0, "w": 4.0, "h": 5.0, "blank_length": 5.0}"#,
@@ -444,6 +504,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 45132.5,
         spm_nodal: 1.58198,
         spm_ip: 1.44314,
+        n3: [7328.25, 14407.7, 45295.7, 1.56177],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 3.0, "R": 1.0, "t": 0.4, "w": 2.0, "h": 3.0, "blank_length": 5.0}"#,
@@ -454,6 +515,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 14663.6,
         spm_nodal: 18.9232,
         spm_ip: 18.0564,
+        n3: [440.945, 872.572, 14696.2, 18.9036],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 3.0, "R": 1.0, "t": 1.0, "w": 6.0, "h": 4.0, "blank_length": 5.0}"#,
@@ -464,6 +526,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 76965.9,
         spm_nodal: 1.02255,
         spm_ip: 0.940592,
+        n3: [15538.0, 51578.0, 77222.4, 1.00723],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 6.5, "R": 3.0, "t": 1.5, "w": 10.0, "h": 8.0, "blank_length": 8.0}"#,
@@ -474,6 +537,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 129162.0,
         spm_nodal: 0.265618,
         spm_ip: 0.256707,
+        n3: [65697.2, 252897.0, 129441.0, 0.26267],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 4.0, "R": 1.0, "t": 0.5, "w": 5.0, "h": 4.0, "blank_length": 6.0}"#,
@@ -484,6 +548,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 34061.2,
         spm_nodal: 4.84398,
         spm_ip: 4.63952,
+        n3: [1382.61, 4982.57, 34141.5, 4.838],
     },
     CcxRef {
         hinge: r#"{"type": "corner_filleted", "l": 4.5, "R": 2.0, "t": 2.0, "w": 20.0, "h": 8.0, "blank_length": 8.0}"#,
@@ -494,6 +559,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 336042.0,
         spm_nodal: 0.0759074,
         spm_ip: 0.0721882,
+        n3: [305571.0, 2256260.0, 336679.0, 0.075729],
     },
     CcxRef {
         hinge: r#"{"type": "spherical_neck", "l": 2.0, "t": 2.0, "R": 3.0, "h": 8.0, "blank_length": 10.0}"#,
@@ -504,6 +570,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 32728.7,
         spm_nodal: 1.33994,
         spm_ip: 1.19248,
+        n3: [12482.7, 9465.83, 32838.5, 1.32115],
     },
     CcxRef {
         hinge: r#"{"type": "spherical_neck", "l": 8.0, "t": 3.0, "R": 3.0, "h": 10.0, "blank_length": 10.0}"#,
@@ -514,6 +581,7 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 35782.7,
         spm_nodal: 0.389839,
         spm_ip: 0.356996,
+        n3: [25650.2, 19370.5, 35954.9, 0.388642],
     },
     CcxRef {
         hinge: r#"{"type": "spherical_neck", "l": 3.0, "t": 2.0, "R": 1.5, "h": 6.0, "blank_length": 8.0}"#,
@@ -524,5 +592,6 @@ pub const FIRST_HELD_OUT: &[CcxRef] = &[
         k_axial: 31475.3,
         spm_nodal: 1.36646,
         spm_ip: 1.19892,
+        n3: [11527.9, 8750.9, 31694.6, 1.32089],
     },
 ];
