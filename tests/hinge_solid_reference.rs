@@ -34,6 +34,9 @@ use flexfem::material::Material;
 #[path = "hinge_solid_reference/references.rs"]
 mod references;
 use references::{Ref, FITTED, HELD_OUT};
+#[path = "common/raw_results.rs"]
+mod raw_results;
+use raw_results::{json_lines, matching_lines};
 
 struct Row {
     spec: HingeSpec,
@@ -264,27 +267,16 @@ fn other_families_held_out() {
 /// and gave the same digits.
 #[test]
 fn every_reference_is_a_line_of_the_raw_results() {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tools/solid_reference_results.jsonl"
-    ))
-    .unwrap();
-    let lines: Vec<serde_json::Value> = text.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let lines = json_lines("solid_reference_results.jsonl");
     assert_eq!(lines.len(), 68);
-    let close = |a: &serde_json::Value, b: f64| a.as_f64().is_some_and(|a| (a / b - 1.0).abs() < 1e-5);
     for r in FITTED.iter().chain(HELD_OUT) {
-        let spec: serde_json::Value = serde_json::from_str(r.hinge).unwrap();
-        let matches = lines
-            .iter()
-            .filter(|l| spec.as_object().unwrap().iter().all(|(k, v)| l[k] == *v) && l["nu"] == r.nu)
-            .filter(|l| {
-                close(&l["k_bend"], r.k_bend)
-                    && close(&l["k_torsion"], r.k_torsion)
-                    && close(&l["k_axial"], r.k_axial)
-                    && close(&l["stress_per_moment"], r.spm)
-                    && l["E"] == r.e
-            })
-            .count();
+        let values = [
+            ("k_bend", r.k_bend),
+            ("k_torsion", r.k_torsion),
+            ("k_axial", r.k_axial),
+            ("stress_per_moment", r.spm),
+        ];
+        let matches = matching_lines(&lines, r.hinge, r.e, r.nu, &values, |_| true).len();
         assert_eq!(matches, 1, "{} (ν = {}): {matches} matching lines", r.hinge, r.nu);
     }
 }
