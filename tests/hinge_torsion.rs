@@ -105,7 +105,7 @@ fn prismatic_bar_with_warping_shear() {
         let mu = (k / eg).sqrt();
         let exact = 1.0 / (l / (gj + s) + k / (gj * gj) * (l - 2.0 * (mu * l / 2.0).tanh() / mu));
         let shear = WarpingShear { kappa, plate };
-        let fe = benscoter_torsion_stiffness(&p, e, g, shear, TorsionMesh::default());
+        let fe = benscoter_torsion_stiffness(&p, None, e, g, shear, TorsionMesh::default());
         assert!(rel(fe, exact) < 1e-4, "plate {plate}: {fe} vs {exact}");
         // The warping shear softens this short wide bar (L/w = 0.5) by ≈ 3.5 %.
         let soft = 1.0 - fe / vlasov;

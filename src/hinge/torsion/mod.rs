@@ -64,14 +64,21 @@ pub const MAX_NODES: usize = 320;
 /// Torsional stiffness T/θ (N·mm/rad) of a rectangular-section hinge between its two blank end
 /// faces, warping restrained at both faces. `e`, `g` in MPa.
 pub fn vlasov_torsion_stiffness(profile: &Profile, e: f64, g: f64, mesh: TorsionMesh) -> f64 {
-    let half = HalfMesh::new(profile, mesh, e, g, None);
+    let half = HalfMesh::new(profile, None, mesh, e, g, None);
     half.solve(half.n)
 }
 
 /// [`vlasov_torsion_stiffness`] with the shear strain of non-uniform warping (Benscoter's
-/// theory, see [`benscoter_torsion_pair`]).
-pub fn benscoter_torsion_stiffness(profile: &Profile, e: f64, g: f64, shear: WarpingShear, mesh: TorsionMesh) -> f64 {
-    let half = HalfMesh::new(profile, mesh, e, g, Some(shear));
+/// theory, see [`benscoter_torsion_pair`]); `warping` as there.
+pub fn benscoter_torsion_stiffness(
+    profile: &Profile,
+    warping: Option<&Profile>,
+    e: f64,
+    g: f64,
+    shear: WarpingShear,
+    mesh: TorsionMesh,
+) -> f64 {
+    let half = HalfMesh::new(profile, warping, mesh, e, g, Some(shear));
     half.solve(half.n)
 }
 
@@ -108,8 +115,13 @@ impl WarpingShear {
 /// a torque T constant along x, ψ solves −(EΓ ψ′)′ + K ψ = K T/GJ, K = GJ·κGJ_r/(GJ + κGJ_r)
 /// (ψ = 0 at both restrained faces), and θ(end) = ∫ T/(GJ + κGJ_r) dx + ∫ (K/GJ) ψ dx.
 /// Vlasov's theory is the limit κGJ_r → ∞ (ψ = θ′).
+///
+/// `warping`: the same hinge with another load spreading into the blanks, whose thickness
+/// beyond the notch gives the warping constant Γ there (the Saint-Venant J keeps `profile`'s);
+/// `None`: `profile`'s for both.
 pub fn benscoter_torsion_pair(
     profile: &Profile,
+    warping: Option<&Profile>,
     notch: &Profile,
     e: f64,
     g: f64,
@@ -117,13 +129,13 @@ pub fn benscoter_torsion_pair(
     mesh: TorsionMesh,
 ) -> (f64, f64) {
     let shear = Some(shear);
-    let whole = HalfMesh::new(profile, mesh, e, g, shear);
+    let whole = HalfMesh::new(profile, warping, mesh, e, g, shear);
     let mut own = [0.0; MAX_NODES / 2];
     let nn = half_nodes(notch, mesh, e, g, &mut own);
     let k_notch = if nn <= whole.n && own[..nn] == whole.x[..nn] {
         whole.solve(nn)
     } else {
-        let half = HalfMesh::new(notch, mesh, e, g, shear);
+        let half = HalfMesh::new(notch, None, mesh, e, g, shear);
         half.solve(half.n)
     };
     (whole.solve(whole.n), k_notch)
@@ -143,25 +155,39 @@ struct HalfMesh {
 }
 
 impl HalfMesh {
-    fn new(profile: &Profile, mesh: TorsionMesh, e: f64, g: f64, shear: Option<WarpingShear>) -> Self {
+    fn new(
+        profile: &Profile,
+        warping: Option<&Profile>,
+        mesh: TorsionMesh,
+        e: f64,
+        g: f64,
+        shear: Option<WarpingShear>,
+    ) -> Self {
         let mut x = [0.0; MAX_NODES / 2];
         let n = half_nodes(profile, mesh, e, g, &mut x);
         let w = profile.w;
-        // The last thickness and its (GJ, EΓ): the blanks are one section each.
-        let mut last = (f64::NAN, (0.0, 0.0, 0.0));
+        let warping = warping.unwrap_or(profile);
+        // The last thicknesses (J's, Γ's) and their (GJ, EΓ, r): the blanks are one section each.
+        let mut last = ((f64::NAN, f64::NAN), (0.0, 0.0, 0.0));
         let mut gp = [[(0.0, 0.0, 0.0); 4]; MAX_NODES / 2];
         for i in 0..n - 1 {
             for q in 0..4 {
                 let xq = x[i] + GL4_X[q] * (x[i + 1] - x[i]);
-                let t = if xq.abs() > profile.half_notch {
-                    profile.effective_thickness(xq)
+                let (t, t_w) = if xq.abs() > profile.half_notch {
+                    (profile.effective_thickness(xq), warping.effective_thickness(xq))
                 } else {
-                    profile.thickness(xq)
+                    let t = profile.thickness(xq);
+                    (t, t)
                 };
-                if t != last.0 {
-                    let (j, warping) = rect_torsion_warping(w, t);
+                if (t, t_w) != last.0 {
+                    let (j, gamma) = rect_torsion_warping(w, t);
+                    let gamma = if t_w == t {
+                        gamma
+                    } else {
+                        rect_torsion_warping(w, t_w).1
+                    };
                     let r = shear.map_or(0.0, |sh| j / (sh.kappa * sh.warping_shear_constant(w, t, j)));
-                    last = (t, (g * j, e * warping, r));
+                    last = ((t, t_w), (g * j, e * gamma, r));
                 }
                 gp[i][q] = last.1;
             }
