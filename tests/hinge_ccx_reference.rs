@@ -109,6 +109,9 @@ use doe3::DOE3;
 #[path = "hinge_ccx_reference/doe4.rs"]
 mod doe4;
 use doe4::DOE4;
+#[path = "hinge_ccx_reference/doe5.rs"]
+mod doe5;
+use doe5::DOE5;
 #[path = "hinge_ccx_reference/raw.rs"]
 mod raw;
 use raw::{raw_lines_matched, SCIKIT_FEM};
@@ -272,6 +275,8 @@ fn every_reference_is_a_line_of_the_raw_results() {
     assert_eq!(raw_lines_matched("ccx_heldout3_results.jsonl", &third), 20);
     let fourth: Vec<&CcxRef> = DOE4.iter().collect();
     assert_eq!(raw_lines_matched("ccx_heldout4_results.jsonl", &fourth), 24);
+    let fifth: Vec<&CcxRef> = DOE5.iter().collect();
+    assert_eq!(raw_lines_matched("ccx_heldout5_results.jsonl", &fifth), 24);
 }
 
 /// The fresh rows are the committed designs of experiments, in their order
@@ -285,6 +290,7 @@ fn fresh_rows_are_the_committed_designs() {
         ("ccx_heldout2_doe.json", DOE2, 12),
         ("ccx_heldout3_doe.json", DOE3, 4),
         ("ccx_heldout4_doe.json", DOE4, 12),
+        ("ccx_heldout5_doe.json", DOE5, 12),
     ] {
         let text = std::fs::read_to_string(format!("{}/tools/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
         let design: Vec<serde_json::Value> = serde_json::from_str(&text).unwrap();
@@ -316,43 +322,48 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 
 /// The targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
-/// 16 held-out circular notches: 4 of [`DOE3`] (t/R 0.10–0.40, w/t 0.80–12.6, blank w/h
-/// 0.11–2.3) and 12 of [`DOE4`] (drawn after every law was frozen), each compared once with the
-/// frozen model. Measured against the converged (n = 3/4 extrapolated) stiffnesses, bending /
-/// torsion / axial / peak σ/M, %: DOE3 −0.02 … +1.43 / −7.12 … +6.63 / +1.52 … +3.57 / −0.14 …
-/// +1.32, DOE4 −0.09 … +2.01 / −8.22 … +7.79 / +0.33 … +4.30 / −0.23 … +4.50: every target met.
-/// (Against the n = 4 stiffnesses DOE3 read −0.29 … +0.83 / −7.42 … +5.21 / +1.37 … +3.50.)
+/// 12 circular notches of [`DOE5`], drawn and committed before the torsion law's last change,
+/// held out from every law and compared once with the frozen model. Measured against the
+/// converged (n = 3/4 extrapolated) stiffnesses, bending / torsion / axial / peak σ/M, %:
+/// DOE5_CIRCULAR.
 const CIRCULAR_TOL: [f64; 4] = TARGET;
-/// 28 held-out corner-filleted hinges: 16 of [`DOE3`] (l/t 2.0–9.5, R/t 0.57–2.4 (12 of them
-/// ≥ 1.2), w/t 1.2–16.6, blank w/h 0.22–3.9, blank length 0.54–1.8 h) and 12 of [`DOE4`], each
-/// compared once with the frozen model. Measured against the converged stiffnesses: DOE3
-/// −1.57 … +1.64 / −5.89 … +9.29 / −3.21 … +2.78 / −1.66 … +2.27 (every target met), DOE4
-/// −1.49 … +1.20 / −2.28 … +12.37 / −5.60 … +2.15 / −2.06 … +3.00. Bending and peak stress
-/// meet their targets; **torsion misses 10 % on 2 of 28** (DOE4 l6.65/R0.85/t1.2/w16.5/h7.3
-/// +12.37 %, a wide leaf w/t 13.8 in a blank w/h 2.3, and l2.2/R0.9/t1.1/w1.25/h5.3 +11.13 %,
-/// a short narrow one, l/t 2, w/t 1.1) and **axial misses 5 % on 1** (the wide leaf, −5.60 %):
-/// pinned at 12.5 and 5.7 %. Tried after the comparison, not adopted: the bending modulus
-/// E·P/G (plane-strain restraint, short-notch factor; no new number) for the axial stiffness too
-/// takes corner-filleted axial to −2.37 … +2.63 % held out but circular notches, already
-/// +0.2 … +4.3 % too stiff, to +4.92 % held out and +5.27 % fitted.
-/// (Against the n = 4 stiffnesses DOE3 read bending −2.21 … +0.13 %;
+/// 16 circular notches of [`DOE3`] (4; t/R 0.10–0.40, w/t 0.80–12.6, blank w/h 0.11–2.3) and
+/// [`DOE4`] (12), each compared once with the model then frozen and held out from its bending,
+/// axial and stress laws; seen before the torsion law's warping spreading changed. Measured
+/// against the converged stiffnesses: −0.09 … +2.01 / −8.29 … +7.19 / +0.33 … +4.30 / −0.23 …
+/// +4.50 (before that change, torsion −8.22 … +7.79): every target met. (Against the n = 4
+/// stiffnesses DOE3 read −0.29 … +0.83 / −7.42 … +5.21 / +1.37 … +3.50.)
+const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
+/// 12 corner-filleted hinges of [`DOE5`], held out from every law and compared once with the
+/// frozen model. Measured: DOE5_CORNER.
+const CORNER_TOL: [f64; 4] = TARGET;
+/// 28 corner-filleted hinges of [`DOE3`] (16; l/t 2.0–9.5, R/t 0.57–2.4 (12 of them ≥ 1.2),
+/// w/t 1.2–16.6, blank w/h 0.22–3.9, blank length 0.54–1.8 h) and [`DOE4`] (12), as the
+/// circular ones above. Measured against the converged stiffnesses: −1.57 … +1.64 / −7.07 …
+/// +4.86 / −5.60 … +2.78 / −2.06 … +3.00. Before the warping spreading changed, DOE4's torsion
+/// read −2.28 … +12.37 % (a wide leaf, l6.65/R0.85/t1.2/w16.5/h7.3, +12.37 %, and a short
+/// narrow one, l2.2/R0.9/t1.1/w1.25, +11.13 %): the comparison that prompted the change.
+/// **Axial misses 5 % on 1 of 28**, the wide leaf, −5.60 %: pinned at 5.7 %. Tried after the
+/// comparison, not adopted: the bending modulus E·P/G (plane-strain restraint, short-notch
+/// factor; no new number) for the axial stiffness too takes corner-filleted axial to
+/// −2.37 … +2.63 % but circular notches, already +0.2 … +4.3 % too stiff, to +4.92 % held out
+/// and +5.27 % fitted. (Against the n = 4 stiffnesses DOE3 read bending −2.21 … +0.13 %;
 /// before the fillets got the short-notch factor G it read −0.38 … +4.88 %, 6 of 16 above 3 %,
 /// so this test fails with that law.)
-const CORNER_TOL: [f64; 4] = [3.0, 12.5, 5.7, 5.0];
+const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.0, 5.7, 5.0];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses: −0.41 …
-/// +2.45 / −7.60 … +10.74 / −0.65 … +4.28 / −1.36 … +3.62. Torsion misses 10 % on 1 of 50
-/// (R4/t2/w2/h10 +10.74 %): the torsion law's numbers were fitted on the n = 4 stiffnesses,
-/// which read −9.51 … +9.75 % over all 94 fitted rows. Refitting its two numbers on the
-/// converged stiffnesses of all 118 rows seen gives at best 10.9 % (blend centre 1.75, slope
-/// 1.1), so the frozen law was kept. Pinned at 11 %.
-const CIRCULAR_FIT_TOL: [f64; 4] = [3.0, 11.0, 5.0, 5.0];
+/// +2.45 / −7.73 … +8.95 / −0.65 … +4.28 / −1.36 … +3.62: every target met. (With Γ spread like
+/// the Saint-Venant torque, as the torsion law's two numbers were fitted on the n = 4
+/// stiffnesses, torsion read −7.60 … +10.74 %; refitting those two numbers on the converged
+/// stiffnesses of all 118 rows then seen reached 10.9 % at best.)
+const CIRCULAR_FIT_TOL: [f64; 4] = TARGET;
 /// The 44 corner-filleted hinges of the fits. Measured against the converged stiffnesses:
-/// −1.63 … +2.20 / −8.11 … +12.85 / −4.30 … +2.43 / −2.38 … +2.92. Torsion misses 10 % on 2 of
-/// 44, wide leaves between low blanks (l4/R1/t1/w15/h5 +12.85 %, l6/R1.5/t1.5/w30/h6 +11.53 %):
-/// pinned at 13 %. (Bending read −3.60 % on l5.95/R1.45/t1.95/w10.15/h11.9 against its n = 4
-/// stiffness, which is 2 % too stiff: −1.64 % against the extrapolation, −2.17 % against the
-/// n = 6/8 one.)
-const CORNER_FIT_TOL: [f64; 4] = [3.0, 13.0, 5.0, 5.0];
+/// −1.63 … +2.20 / −7.02 … +6.14 / −4.30 … +2.43 / −2.38 … +2.92: every target met (before the
+/// warping spreading changed, torsion −8.11 … +12.85 %, wide leaves between low blanks
+/// l4/R1/t1/w15/h5 and l6/R1.5/t1.5/w30/h6 above 10 %). (Bending read −3.60 % on
+/// l5.95/R1.45/t1.95/w10.15/h11.9 against its n = 4 stiffness, which is 2 % too stiff: −1.64 %
+/// against the extrapolation, −2.17 % against the n = 6/8 one.)
+const CORNER_FIT_TOL: [f64; 4] = TARGET;
 /// [`extrapolation_checked_on_finer_meshes`]: the references re-solved at n = 6, and
 /// how closely the n = 3/4 extrapolation agrees with the n = 4/6 one (bending, torsion, axial, %).
 /// Measured: within 1.61 / 1.13 / 0.42 % (median 0.12 % in bending; 6 of 66 above 0.5 %, the
@@ -390,35 +401,48 @@ fn fit_rows() -> Vec<Row> {
     )
 }
 
+/// One family on the held-out designs: [`DOE5`] (held out from every law) against `fresh`,
+/// [`DOE3`] and [`DOE4`] together (held out from the bending, axial and stress laws; seen before
+/// the torsion law's warping spreading was changed) against `seen`.
+fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 3], fresh: [f64; 4], seen: [f64; 4]) {
+    let [third, fourth, fifth] = [DOE3, DOE4, DOE5].map(|d| rows(&d.iter().collect::<Vec<_>>()));
+    let [third, fourth, fifth] = [&third, &fourth, &fifth].map(|r| family(r, f));
+    assert_eq!([third.len(), fourth.len(), fifth.len()], counts);
+    let earlier: Vec<&Row> = third.into_iter().chain(fourth).collect();
+    check(
+        &format!("{name}, DOE3 and DOE4"),
+        report(
+            &format!("{name} vs CalculiX, HELD OUT but seen by the torsion change, DOE3 + DOE4"),
+            &earlier,
+        ),
+        seen,
+    );
+    check(
+        &format!("{name}, DOE5"),
+        report(&format!("{name} vs CalculiX, HELD OUT, DOE5"), &fifth),
+        fresh,
+    );
+}
+
 #[test]
 fn circular_notches_held_out() {
-    let third = rows(&DOE3.iter().collect::<Vec<_>>());
-    let fourth = rows(&DOE4.iter().collect::<Vec<_>>());
-    let (third, fourth) = (family(&third, circular), family(&fourth, circular));
-    assert_eq!((third.len(), fourth.len()), (4, 12));
-    report("circular notches vs CalculiX, HELD OUT, DOE3", &third);
-    report("circular notches vs CalculiX, HELD OUT, DOE4", &fourth);
-    let both: Vec<&Row> = third.into_iter().chain(fourth).collect();
-    check(
-        "held-out circular notches",
-        report("circular notches vs CalculiX, HELD OUT", &both),
+    held_out(
+        "circular notches",
+        circular,
+        [4, 12, 12],
         CIRCULAR_TOL,
+        CIRCULAR_SEEN_TOL,
     );
 }
 
 #[test]
 fn corner_filleted_held_out() {
-    let third = rows(&DOE3.iter().collect::<Vec<_>>());
-    let fourth = rows(&DOE4.iter().collect::<Vec<_>>());
-    let (third, fourth) = (family(&third, corner), family(&fourth, corner));
-    assert_eq!((third.len(), fourth.len()), (16, 12));
-    report("corner-filleted hinges vs CalculiX, HELD OUT, DOE3", &third);
-    report("corner-filleted hinges vs CalculiX, HELD OUT, DOE4", &fourth);
-    let both: Vec<&Row> = third.into_iter().chain(fourth).collect();
-    check(
-        "held-out corner-filleted hinges",
-        report("corner-filleted hinges vs CalculiX, HELD OUT", &both),
+    held_out(
+        "corner-filleted hinges",
+        corner,
+        [16, 12, 12],
         CORNER_TOL,
+        CORNER_SEEN_TOL,
     );
 }
 
