@@ -12,7 +12,7 @@
 //! Mesh convergence. Every model was solved at n = 4 elements across the local thickness, and
 //! at n = 3 too (`tools/ccx_refine.py`, `tools/ccx_refine_n3_results.jsonl`): **the stiffnesses
 //! compared are the order-2 Richardson extrapolation of the pair** ([`CcxRef::converged`]).
-//! n = 4 alone is up to 3.4 % too stiff in bending and torsion and 1 % in axial; the clamped
+//! n = 4 alone is up to 3.4 % too stiff in bending, 3.6 % in torsion and 1.3 % in axial; the clamped
 //! face's edges are singular, so the stiffnesses converge as h² (measured order 1.85–2.5), not
 //! as the h⁴ of smooth P2 problems that an earlier version of this file assumed from two hinges.
 //! The extrapolation agrees with the n = 4/6 one on the references re-solved at n = 6, and with

@@ -176,7 +176,7 @@ fn stage_above_allowable_is_named_with_its_hinge() {
     );
     let w60 = over[0];
     assert!(
-        w60.starts_with("load_cases[2] (\"F60\"): the revolute hinge of leg"),
+        w60.starts_with("load_cases[2] (\"F60\"): the revolute hinges of legs 1, 2 and 3 are above"),
         "{w60}"
     );
     assert!(w60.contains(&format!("utilisation {utilisation:.3}")), "{w60}");

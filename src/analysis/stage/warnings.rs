@@ -12,21 +12,37 @@ pub fn stage_allowable_warning(ic: usize, c: &super::StageRow) -> Option<String>
         ("revolute", c.hinge_stress.revolute),
         ("spherical", c.hinge_stress.spherical),
     ];
-    let (mut at, mut peak) = (String::new(), f64::NEG_INFINITY);
+    let peak = hinges
+        .iter()
+        .flat_map(|(_, legs)| legs.iter().copied())
+        .fold(f64::NEG_INFINITY, f64::max);
+    // Every hinge at the peak (to 1e-9: a symmetric stage under a symmetric load has several,
+    // equal to rounding, and naming one of them would depend on the rounding).
+    let (mut at, mut count) = (Vec::new(), 0);
     for (kind, legs) in hinges {
-        for (leg, s) in legs.iter().enumerate() {
-            if *s > peak {
-                peak = *s;
-                at = format!("the {kind} hinge of leg {}", leg + 1);
-            }
+        let at_peak: Vec<String> = (0..legs.len())
+            .filter(|&leg| legs[leg] >= peak * (1.0 - 1e-9))
+            .map(|leg| (leg + 1).to_string())
+            .collect();
+        count += at_peak.len();
+        match at_peak.as_slice() {
+            [] => {}
+            [one] => at.push(format!("the {kind} hinge of leg {one}")),
+            [first @ .., last] => at.push(format!("the {kind} hinges of legs {} and {last}", first.join(", "))),
         }
     }
+    let mut at = at.join(" and ");
+    let mut verb = if count > 1 { "are" } else { "is" };
     // The peak is a hinge's unless a leg beam is more stressed (the hinge peaks are ≤ the maximum).
     if peak < c.max_von_mises * (1.0 - 1e-9) {
-        at = format!("a leg beam (the most stressed hinge, {at}, is at {} MPa)", sig(peak, 5));
+        at = format!(
+            "a leg beam (the most stressed hinge, {at}, {verb} at {} MPa)",
+            sig(peak, 5)
+        );
+        verb = "is";
     }
     Some(format!(
-        "load_cases[{ic}] (\"{}\"): {at} is above the allowable stress: von Mises {} MPa against {} MPa, utilisation {}",
+        "load_cases[{ic}] (\"{}\"): {at} {verb} above the allowable stress: von Mises {} MPa against {} MPa, utilisation {}",
         c.name,
         sig(c.max_von_mises, 5),
         sig(c.max_von_mises * c.factor_at_allowable, 5),
