@@ -641,7 +641,10 @@ fn extrapolation_checked_on_finer_meshes() {
 /// circular notches (29) +0.14 … +3.90 (against n = 4: +0.15 … +3.62), turned necks (4) −1.97 …
 /// −0.07, corner-filleted hinges (33) −6.04 … +0.52 (against n = 4: −2.38 … +2.13): **the 5 %
 /// target is missed on 1 of 33**, l5/R0.5/t1/w1/h4 (a first-calibration row the corner-filleted
-/// K_t was fitted on), −6.04 %, pinned at [`PEAK_N6_TOL`]; l4.5/R0.75/t1.5/w4.5 −4.82 %.
+/// K_t was fitted on), −6.04 %, pinned at [`PEAK_N6_TOL`]; l4.5/R0.75/t1.5/w4.5 −4.82 %. That
+/// small fillet's peak is still rising at n = 10 (`tools/ccx_refine_convergence.jsonl`: 7.018,
+/// 7.335, 7.382, 7.449 MPa/(N·mm) at n = 4, 6, 8, 10; flexfem 6.892, −7.5 % against n = 10):
+/// the corner-filleted K_t, fitted on n = 4 peaks, is low for small fillets.
 #[test]
 fn peak_stress_against_finer_meshes() {
     let mut by_family: [(f64, f64, usize); 3] = [(f64::INFINITY, f64::NEG_INFINITY, 0); 3];

@@ -21,7 +21,10 @@ extrapolation (`tools/ccx_refine_n6_results.jsonl`).
 
 `tools/ccx_refine_convergence.jsonl` holds the finer solves of the hinge that prompted this
 (l5.95/R1.45/t1.95/w10.15/h11.9, `ccx_heldout2_results.jsonl` line 14): n = 5 and 8, and n = 4 and
-6 with the blank size cap halved (h/6), which moves n = 4 by -0.42 % in bending and n = 6 by 0.01 %.
+6 with the blank size cap halved (h/6), which moves n = 4 by -0.42 % in bending and n = 6 by 0.01 %;
+and the small-fillet hinge l5/R0.5/t1/w1/h4 (`ccx_reference_results.jsonl` line 35) at n = 8 and 10,
+whose nodal-averaged peak stress is still rising (n = 4, 6, 8, 10: 7.018, 7.335, 7.382, 7.449
+MPa/(N·mm)) while its bending stiffness has settled (1145.8, 1143.3, 1142.0, 1141.1 N·mm/rad).
 
 Appends one JSON line per reference to `tools/ccx_refine_n3_results.jsonl` (its "source" file and
 "index" there, then ccx_reference.py's fields); rows already present are skipped, so it resumes.
