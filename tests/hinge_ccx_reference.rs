@@ -566,12 +566,19 @@ fn extrapolation_checked_on_finer_meshes() {
             .find(|c| c["source"] == *source && c["index"] == *index)
             .expect("an n = 3 line")
     };
+    // The n = 4 results, each source file read once; `n4(l)` is the n = 4 line that `l` re-solves.
+    let mut sources = std::collections::HashMap::new();
+    for l in &n3 {
+        let file = l["source"].as_str().unwrap();
+        sources.entry(file).or_insert_with(|| json_lines(file));
+    }
+    let n4 = |l: &serde_json::Value| &sources[l["source"].as_str().unwrap()][l["index"].as_u64().unwrap() as usize];
     let quantities = ["k_bend", "k_torsion", "k_axial"];
     let at = |l: &serde_json::Value, q: &str| l[q].as_f64().unwrap();
     // n = 4 against the n = 3/4 extrapolation, over every reference.
     let mut off = [0.0f64; 3];
     for c in &n3 {
-        let fine = &json_lines(c["source"].as_str().unwrap())[c["index"].as_u64().unwrap() as usize];
+        let fine = n4(c);
         for (q, name) in quantities.iter().enumerate() {
             let k = richardson(at(fine, name), at(c, name), 4.0, 3.0);
             off[q] = off[q].max(100.0 * (at(fine, name) / k - 1.0));
@@ -587,8 +594,7 @@ fn extrapolation_checked_on_finer_meshes() {
     let n6 = json_lines("ccx_refine_n6_results.jsonl");
     let (mut worst, mut peak) = ([0.0f64; 3], (f64::INFINITY, f64::NEG_INFINITY));
     for l6 in &n6 {
-        let l4 = &json_lines(l6["source"].as_str().unwrap())[l6["index"].as_u64().unwrap() as usize];
-        let l3 = coarse(&l6["source"], &l6["index"]);
+        let (l4, l3) = (n4(l6), coarse(&l6["source"], &l6["index"]));
         for (q, name) in quantities.iter().enumerate() {
             let k34 = richardson(at(l4, name), at(l3, name), 4.0, 3.0);
             let k46 = richardson(at(l6, name), at(l4, name), 6.0, 4.0);
@@ -625,8 +631,8 @@ fn extrapolation_checked_on_finer_meshes() {
         assert_eq!(hits.len(), 1, "n = {n}");
         at(hits[0], "k_bend")
     };
-    let l4 = &json_lines("ccx_heldout2_results.jsonl")[14];
     let l3 = coarse(&"ccx_heldout2_results.jsonl".into(), &14.into());
+    let l4 = n4(l3);
     let k34 = richardson(at(l4, "k_bend"), at(l3, "k_bend"), 4.0, 3.0);
     let k68 = richardson(fine(8.0), fine(6.0), 8.0, 6.0);
     println!("l5.95/R1.45 hinge: bending n = 3/4 extrapolation {k34:.0}, n = 6/8 {k68:.0}");

@@ -142,17 +142,10 @@ def doe():
 
 def doe2():
     rng = np.random.default_rng(20261129)
-    rows = []
-    for a, b, c, d, e in lhs(rng, 10, [(0.08, 0.5), (0.5, 20.0), (2.0, 12.0), (0.4, 1.0), (0.5, 2.0)]):
-        t = r05(a * c)
-        h = r05(max(t + 2 * d * c, 3 * t))
-        rows.append(
-            {"type": "circular_notch", "R": r05(c), "t": t, "w": r05(b * t), "h": h, "blank_length": r05(e * h), "regime": "lhs"}
-        )
+    rows = [{**r, "regime": "lhs"} for r in circular2(rng, 10)]
     for r, t, w, h, b in [(4.0, 1.0, 15.0, 5.0, 5.0), (6.0, 1.5, 30.0, 6.0, 8.0)]:
         rows.append({"type": "circular_notch", "R": r, "t": t, "w": w, "h": h, "blank_length": b, "regime": "wide, low blank"})
-    for sample in lhs(rng, 10, [(0.5, 2.5), (0.3, 6.0), (1.0, 20.0), (1.0, 2.0), (0.5, 4.0), (0.5, 2.0)]):
-        rows.append(dict(corner_row(*sample), regime="lhs"))
+    rows += [{**r, "regime": "lhs"} for r in corner2(rng, 10, [(0.5, 2.5), (0.3, 6.0)])]
     for l, r, t, w, h, b in [(4.0, 1.0, 1.0, 15.0, 5.0, 5.0), (6.0, 1.5, 1.5, 30.0, 6.0, 8.0)]:
         rows.append(
             {"type": "corner_filleted", "l": l, "R": r, "t": t, "w": w, "h": h, "blank_length": b, "regime": "wide, low blank"}
@@ -160,9 +153,10 @@ def doe2():
     return rows
 
 
-def corner2(rng, n, r_over_t):
-    """n corner-filleted rows of a Latin hypercube with R/t in `r_over_t` and flat/t in `flat`."""
-    (rlo, rhi), (flo, fhi) = r_over_t
+def corner2(rng, n, ranges):
+    """n corner-filleted rows of a Latin hypercube with (R/t, flat/t) in the two ranges of
+    `ranges`, the other dimensions over the second set's ranges."""
+    (rlo, rhi), (flo, fhi) = ranges
     return [corner_row(*sample) for sample in lhs(rng, n, [(rlo, rhi), (flo, fhi), (1.0, 20.0), (1.0, 2.0), (0.5, 4.0), (0.5, 2.0)])]
 
 

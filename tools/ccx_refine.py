@@ -53,6 +53,14 @@ SOURCES = [
 NOT_GEOMETRY = {"type", "nu", "E", "n", "hmax", "dofs", "high_order_optimize", "solver", "doe_index", "seconds"}
 
 
+def by_reference(path):
+    """The lines of a re-solve file keyed by the reference they re-solve, (source, index); {} if
+    the file does not exist yet."""
+    if not os.path.exists(path):
+        return {}
+    return {(r["source"], r["index"]): r for r in map(json.loads, open(path))}
+
+
 def job(args):
     source, index, row, n = args
     p = {k: v for k, v in row.items() if k not in NOT_GEOMETRY and not k.startswith(("k_", "stress_"))}
@@ -103,9 +111,7 @@ def main():
     if a.rows:
         only = {(f, int(i)) for f, i in (x.rsplit(":", 1) for x in a.rows.split(","))}
     out_path = os.path.join(HERE, f"ccx_refine_n{a.n:g}_results.jsonl")
-    done = set()
-    if os.path.exists(out_path):
-        done = {(r["source"], r["index"]) for r in map(json.loads, open(out_path))}
+    done = by_reference(out_path)
     todo = []
     for source in filter(lambda s: os.path.exists(os.path.join(HERE, s)), SOURCES):
         for index, line in enumerate(open(os.path.join(HERE, source))):
@@ -130,11 +136,8 @@ def richardson(fine, coarse, n_fine, n_coarse, order=2.0):
 def report():
     """Prints, per quantity, how far n = 4 is from the n = 3/4 extrapolation, and on the references
     re-solved at n = 6 how the n = 3/4 extrapolation compares with the n = 4/6 one."""
-    load = lambda name: {  # noqa: E731
-        (r["source"], r["index"]): r
-        for r in map(json.loads, open(os.path.join(HERE, name)))
-    } if os.path.exists(os.path.join(HERE, name)) else {}
-    n3, n6 = load("ccx_refine_n3_results.jsonl"), load("ccx_refine_n6_results.jsonl")
+    n3 = by_reference(os.path.join(HERE, "ccx_refine_n3_results.jsonl"))
+    n6 = by_reference(os.path.join(HERE, "ccx_refine_n6_results.jsonl"))
     for q in QUANTITIES:
         off, agree = [], []
         for source in filter(lambda s: os.path.exists(os.path.join(HERE, s)), SOURCES):
