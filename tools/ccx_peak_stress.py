@@ -37,6 +37,7 @@ import argparse
 import json
 import math
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -47,18 +48,11 @@ import gmsh
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from ccx_reference import GMSH_TO_CCX, von_mises  # noqa: E402
+from ccx_reference import GMSH_TO_CCX, ids, von_mises  # noqa: E402
+from ccx_refine import SOURCES  # noqa: E402
 from solid_reference import geometry, profile  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-SOURCES = [
-    "ccx_reference_results.jsonl",
-    "ccx_heldout_results.jsonl",
-    "ccx_heldout2_results.jsonl",
-    "ccx_heldout3_results.jsonl",
-    "ccx_heldout4_results.jsonl",
-    "ccx_heldout5_results.jsonl",
-]
 KINDS = ("circular_notch", "elliptical_notch", "corner_filleted")
 GEOMETRY = ("l", "R", "t", "w", "h", "blank_length", "ax", "ay")
 
@@ -130,10 +124,7 @@ def write_inp(path, X, pts, conn, e, nu):
     assert len(origin) == 1, "a node at the origin"
 
     def nset(f, name, mask):
-        nodes = np.where(mask)[0] + 1
-        f.write(f"*NSET, NSET={name}\n")
-        for i in range(0, len(nodes), 16):
-            f.write(", ".join(str(int(v)) for v in nodes[i : i + 16]) + "\n")
+        ids(f, name, np.where(mask)[0] + 1)
 
     with open(path, "w") as f:
         f.write("*NODE\n")
@@ -196,15 +187,12 @@ def run(kind, p, n=4.0, k=8.0, g=0.4, nu=0.33, e=72000.0, hmax=None, keep=None):
     vm = von_mises(s)
     at = pts[ids[vm.argmax()] - 1]
     if not keep:
-        for name in os.listdir(work):
-            os.remove(os.path.join(work, name))
-        os.rmdir(work)
+        shutil.rmtree(work)
+    fields = {"nu": nu, "E": e, "n": n}
     return {
         "type": kind,
         **p,
-        "nu": nu,
-        "E": e,
-        "n": n,
+        **fields,
         "k": k,
         "g": g,
         "hmax": hmax or p["h"] / 3,

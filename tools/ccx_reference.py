@@ -51,6 +51,13 @@ GMSH_TO_CCX = [0, 1, 2, 3, 4, 5, 6, 7, 9, 8]
 STEPS = [0, 3, 4, 5]
 
 
+def ids(f, name, nodes):
+    """Writes a node set (1-based node numbers), 16 to a line."""
+    f.write(f"*NSET, NSET={name}\n")
+    for i in range(0, len(nodes), 16):
+        f.write(", ".join(str(int(v)) for v in nodes[i : i + 16]) + "\n")
+
+
 def write_inp(path, X, pts, conn, e, nu):
     tol = 1e-6 * X
     left = np.where(np.abs(pts[:, 0] + X) < tol)[0] + 1
@@ -64,11 +71,6 @@ def write_inp(path, X, pts, conn, e, nu):
         d = np.linalg.norm(pts[c[:, m]] - 0.5 * (pts[c[:, a]] + pts[c[:, b]]), axis=1)
         edge = np.linalg.norm(pts[c[:, a]] - pts[c[:, b]], axis=1)
         assert (d < 0.3 * edge).all(), "mid-side node order"
-
-    def ids(f, name, nodes):
-        f.write(f"*NSET, NSET={name}\n")
-        for i in range(0, len(nodes), 16):
-            f.write(", ".join(str(int(v)) for v in nodes[i : i + 16]) + "\n")
 
     with open(path, "w") as f:
         f.write("*NODE\n")
