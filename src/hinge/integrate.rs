@@ -59,10 +59,11 @@ impl Default for Quadrature {
 }
 
 /// Elastic constants used by the integration; `e_bend` (compliant-axis bending in the notch
-/// region) differs from `e` by the notch's solid-model factors ([`super::solid_effects`]).
+/// region) and `e_axial` differ from `e` by the notch's solid-model factors
+/// ([`super::solid_effects`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Moduli {
-    /// Young's modulus for axial and stiff-axis bending, MPa.
+    /// Young's modulus for stiff-axis bending, and for everything beyond the notch, MPa.
     pub e: f64,
     /// Effective modulus for compliant-axis bending, MPa.
     pub e_bend: f64,
@@ -78,19 +79,35 @@ pub struct Moduli {
     pub e_bend_fillet: f64,
     /// `e_bend_fillet` applies for `fillet_from` ≤ |x| < `notch_half` (`notch_half`: nowhere), mm.
     pub fillet_from: f64,
+    /// Effective axial modulus in the notch region (where `e_bend` applies), MPa.
+    pub e_axial: f64,
+    /// Effective axial modulus on the corner fillets (where `e_bend_fillet` applies), MPa.
+    pub e_axial_fillet: f64,
 }
 
 impl Moduli {
     /// The compliant-axis bending modulus at x, MPa.
     #[inline]
     pub fn e_bend_at(&self, x: f64) -> f64 {
+        self.pick(x, self.e_bend, self.e_bend_fillet)
+    }
+
+    /// The axial modulus at x, MPa.
+    #[inline]
+    pub fn e_axial_at(&self, x: f64) -> f64 {
+        self.pick(x, self.e_axial, self.e_axial_fillet)
+    }
+
+    /// `notch` in the notch region, `fillet` on the corner fillets, `e` beyond.
+    #[inline]
+    fn pick(&self, x: f64, notch: f64, fillet: f64) -> f64 {
         let u = x.abs();
         if u >= self.notch_half {
             self.e
         } else if u >= self.fillet_from {
-            self.e_bend_fillet
+            fillet
         } else {
-            self.e_bend
+            notch
         }
     }
 }
@@ -294,7 +311,7 @@ fn integrate(
                     let s = memo.at(x);
                     let e_bend = m.e_bend_at(x);
                     let f = [
-                        wgt / (m.e * s.area),
+                        wgt / (m.e_axial_at(x) * s.area),
                         wgt / (m.g * s.shear_area_bend_off),
                         wgt / (m.g * s.shear_area_bend),
                         wgt / (m.g * s.j),

@@ -136,6 +136,10 @@ fn check_material(m: &Material) -> Result<(), HingeError> {
 
 fn moduli(profile: &Profile, m: &Material) -> Moduli {
     let factor = solid_effects::plane_strain_factor(profile, m.nu) / solid_effects::short_notch_factor(profile);
+    let (axial, g) = (
+        solid_effects::axial_restraint_factor(profile, m.nu),
+        solid_effects::short_notch_factor(profile),
+    );
     Moduli {
         e: m.e,
         e_bend: m.e * factor,
@@ -145,6 +149,8 @@ fn moduli(profile: &Profile, m: &Material) -> Moduli {
         notch_half: profile.half_notch,
         e_bend_fillet: m.e * factor / solid_effects::fillet_factor(profile),
         fillet_from: solid_effects::fillet_from(profile),
+        e_axial: m.e * axial / g,
+        e_axial_fillet: m.e * axial / (g * solid_effects::fillet_factor(profile)),
     }
 }
 

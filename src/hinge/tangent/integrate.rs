@@ -34,6 +34,8 @@ pub(super) struct DModuli {
     pub notch_half: Dual,
     pub e_bend_fillet: Dual,
     pub fillet_from: Dual,
+    pub e_axial: Dual,
+    pub e_axial_fillet: Dual,
 }
 
 /// The ten flexibility integrals with derivatives (`hinge::integrate::FlexIntegrals`).
@@ -172,14 +174,14 @@ pub(super) fn flex_integrals(p: &DProfile, m: &DModuli, x0: Dual, x1: Dual, q: Q
             quadrature_points(a, b, map, panels, &mut |x, w| {
                 let s = p.section_of_size(p.section_size(x), m.nu);
                 let u = x.v.abs();
-                let e_bend = if u >= m.notch_half.v {
-                    m.e
+                let (e_bend, e_axial) = if u >= m.notch_half.v {
+                    (m.e, m.e)
                 } else if u >= m.fillet_from.v {
-                    m.e_bend_fillet
+                    (m.e_bend_fillet, m.e_axial_fillet)
                 } else {
-                    m.e_bend
+                    (m.e_bend, m.e_axial)
                 };
-                acc.axial = acc.axial + w / (m.e * s.area);
+                acc.axial = acc.axial + w / (e_axial * s.area);
                 acc.shear_y = acc.shear_y + w / (m.g * s.shear_area_bend_off);
                 acc.shear_z = acc.shear_z + w / (m.g * s.shear_area_bend);
                 acc.torsion = acc.torsion + w / (m.g * s.j);
