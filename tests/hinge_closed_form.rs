@@ -17,6 +17,8 @@ fn eb() -> Moduli {
         notch_half: 0.0,
         e_bend_fillet: E,
         fillet_from: 0.0,
+        e_axial: E,
+        e_axial_fillet: E,
     }
 }
 

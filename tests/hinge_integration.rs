@@ -64,6 +64,8 @@ fn quadrature_converged_to_1e_6() {
         notch_half: 0.0,
         e_bend_fillet: m.e,
         fillet_from: 0.0,
+        e_axial: m.e,
+        e_axial_fillet: m.e,
     };
     for spec in specs() {
         let p = spec.profile().unwrap();

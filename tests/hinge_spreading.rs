@@ -60,6 +60,8 @@ fn quadrature_of_tapers_is_converged() {
         notch_half: 0.0,
         e_bend_fillet: 72000.0,
         fillet_from: 0.0,
+        e_axial: 72000.0,
+        e_axial_fillet: 72000.0,
     };
     let profiles = [
         Profile::rectangular(Contour::Circular { r: 8.0, t: 2.0 }, 10.0, 10.0, 20.0).unwrap(),
