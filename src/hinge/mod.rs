@@ -135,11 +135,11 @@ fn check_material(m: &Material) -> Result<(), HingeError> {
 }
 
 fn moduli(profile: &Profile, m: &Material) -> Moduli {
-    let factor = solid_effects::plane_strain_factor(profile, m.nu) / solid_effects::short_notch_factor(profile);
-    let (axial, g) = (
-        solid_effects::axial_restraint_factor(profile, m.nu),
+    let (p, g) = (
+        solid_effects::plane_strain_factor(profile, m.nu),
         solid_effects::short_notch_factor(profile),
     );
+    let (factor, axial) = (p / g, solid_effects::axial_restraint(p));
     Moduli {
         e: m.e,
         e_bend: m.e * factor,

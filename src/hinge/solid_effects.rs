@@ -80,10 +80,10 @@ pub fn fillet_from(profile: &Profile) -> f64 {
 /// the one number fitted for the axial law).
 pub const AXIAL_RESTRAINT_SHARE: f64 = 0.6;
 
-/// The axial stiffening 1 + 0.6·(P − 1) of a wide waist (see the module docs); 1 for the turned
-/// neck.
-pub fn axial_restraint_factor(profile: &Profile, nu: f64) -> f64 {
-    1.0 + AXIAL_RESTRAINT_SHARE * (plane_strain_factor(profile, nu) - 1.0)
+/// The axial stiffening P_a = 1 + 0.6·(P − 1) of a waist whose bending stiffening is
+/// `p` = P ([`plane_strain_factor`]; see the module docs); 1 where P is 1 (the turned neck).
+pub fn axial_restraint(p: f64) -> f64 {
+    1.0 + AXIAL_RESTRAINT_SHARE * (p - 1.0)
 }
 
 /// G = 1 + 0.068·(1 − exp(−(t/ρ)/0.15)).
