@@ -320,20 +320,19 @@ fn solid_pipelines_agree() {
 /// quantities to the 6 digits copied here), and no two references share a geometry.
 #[test]
 fn every_reference_is_a_line_of_the_raw_results() {
-    let refs: Vec<&CcxRef> = FIRST_FIT.iter().chain(FIRST_HELD_OUT).collect();
-    assert_eq!(raw_lines_matched("ccx_reference_results.jsonl", &refs), 50);
-    let first: Vec<&CcxRef> = DOE1.iter().collect();
-    assert_eq!(raw_lines_matched("ccx_heldout_results.jsonl", &first), 24);
-    let second: Vec<&CcxRef> = DOE2.iter().collect();
-    assert_eq!(raw_lines_matched("ccx_heldout2_results.jsonl", &second), 24);
-    let third: Vec<&CcxRef> = DOE3.iter().collect();
-    assert_eq!(raw_lines_matched("ccx_heldout3_results.jsonl", &third), 20);
-    let fourth: Vec<&CcxRef> = DOE4.iter().collect();
-    assert_eq!(raw_lines_matched("ccx_heldout4_results.jsonl", &fourth), 24);
-    let fifth: Vec<&CcxRef> = DOE5.iter().collect();
-    assert_eq!(raw_lines_matched("ccx_heldout5_results.jsonl", &fifth), 24);
-    let sixth: Vec<&CcxRef> = DOE6.iter().collect();
-    assert_eq!(raw_lines_matched("ccx_heldout6_results.jsonl", &sixth), 24);
+    let designs = [
+        ("ccx_heldout_results.jsonl", DOE1, 24),
+        ("ccx_heldout2_results.jsonl", DOE2, 24),
+        ("ccx_heldout3_results.jsonl", DOE3, 20),
+        ("ccx_heldout4_results.jsonl", DOE4, 24),
+        ("ccx_heldout5_results.jsonl", DOE5, 24),
+        ("ccx_heldout6_results.jsonl", DOE6, 24),
+    ];
+    let first: Vec<&CcxRef> = FIRST_FIT.iter().chain(FIRST_HELD_OUT).collect();
+    assert_eq!(raw_lines_matched("ccx_reference_results.jsonl", &first), 50);
+    for (file, refs, n) in designs {
+        assert_eq!(raw_lines_matched(file, &refs.iter().collect::<Vec<_>>()), n, "{file}");
+    }
 }
 
 /// The fresh rows are the committed designs of experiments, in their order
@@ -799,7 +798,7 @@ fn converged_peaks_checked() {
         .iter()
         .filter(|l| l["type"] == "spherical_neck")
     {
-        let n4 = &json_lines(l6["source"].as_str().unwrap())[l6["index"].as_u64().unwrap() as usize];
+        let n4 = &sources[l6["source"].as_str().unwrap()][l6["index"].as_u64().unwrap() as usize];
         neck_moved =
             neck_moved.max(100.0 * (at(l6, "stress_per_moment_nodal") / at(n4, "stress_per_moment_nodal") - 1.0).abs());
         necks += 1;

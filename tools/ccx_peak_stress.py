@@ -48,7 +48,7 @@ import gmsh
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from ccx_reference import GMSH_TO_CCX, ids, von_mises  # noqa: E402
+from ccx_reference import ids, von_mises, write_mesh  # noqa: E402
 from ccx_refine import SOURCES  # noqa: E402
 from solid_reference import geometry, profile  # noqa: E402
 
@@ -118,8 +118,6 @@ def write_inp(path, X, pts, conn, e, nu):
     tol = 1e-7 * X
     on = lambda axis, v: np.abs(pts[:, axis] - v) < tol  # noqa: E731
     rigid = on(0, X)
-    nn = len(pts)
-    ref, rot = nn + 1, nn + 2
     origin = np.where(on(0, 0) & on(1, 0) & on(2, 0))[0]
     assert len(origin) == 1, "a node at the origin"
 
@@ -127,13 +125,7 @@ def write_inp(path, X, pts, conn, e, nu):
         ids(f, name, np.where(mask)[0] + 1)
 
     with open(path, "w") as f:
-        f.write("*NODE\n")
-        for i, q in enumerate(pts):
-            f.write(f"{i + 1}, {q[0]:.12g}, {q[1]:.12g}, {q[2]:.12g}\n")
-        f.write(f"{ref}, {X:.12g}, 0, 0\n{rot}, {X:.12g}, 0, 0\n")
-        f.write("*ELEMENT, TYPE=C3D10, ELSET=EALL\n")
-        for i, row in enumerate(conn[:, GMSH_TO_CCX] + 1):
-            f.write(f"{i + 1}, " + ", ".join(str(int(v)) for v in row) + "\n")
+        ref, rot = write_mesh(f, X, pts, conn)
         nset(f, "RIGHT", rigid)
         nset(f, "SX", on(0, 0))
         nset(f, "SY", on(1, 0) & ~rigid)

@@ -58,28 +58,32 @@ def ids(f, name, nodes):
         f.write(", ".join(str(int(v)) for v in nodes[i : i + 16]) + "\n")
 
 
-def write_inp(path, X, pts, conn, e, nu):
-    tol = 1e-6 * X
-    left = np.where(np.abs(pts[:, 0] + X) < tol)[0] + 1
-    right = np.where(np.abs(pts[:, 0] - X) < tol)[0] + 1
-    nn = len(pts)
-    ref, rot = nn + 1, nn + 2
-    el = conn[:, GMSH_TO_CCX] + 1
-    # The mid-side nodes must lie near their edges' midpoints in ccx's order.
+def write_mesh(f, X, pts, conn):
+    """Writes the C3D10 mesh (gmsh's node order in `conn`) and two nodes at the end-face centre
+    (x = X), the rigid body's reference and rotation nodes; returns their numbers (ref, rot)."""
     c = conn[:, GMSH_TO_CCX]
+    # The mid-side nodes must lie near their edges' midpoints in ccx's order.
     for m, (a, b) in zip(range(4, 10), [(0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3)]):
         d = np.linalg.norm(pts[c[:, m]] - 0.5 * (pts[c[:, a]] + pts[c[:, b]]), axis=1)
         edge = np.linalg.norm(pts[c[:, a]] - pts[c[:, b]], axis=1)
         assert (d < 0.3 * edge).all(), "mid-side node order"
+    ref, rot = len(pts) + 1, len(pts) + 2
+    f.write("*NODE\n")
+    for i, q in enumerate(pts):
+        f.write(f"{i + 1}, {q[0]:.12g}, {q[1]:.12g}, {q[2]:.12g}\n")
+    f.write(f"{ref}, {X:.12g}, 0, 0\n{rot}, {X:.12g}, 0, 0\n")
+    f.write("*ELEMENT, TYPE=C3D10, ELSET=EALL\n")
+    for i, row in enumerate(c + 1):
+        f.write(f"{i + 1}, " + ", ".join(str(int(v)) for v in row) + "\n")
+    return ref, rot
 
+
+def write_inp(path, X, pts, conn, e, nu):
+    tol = 1e-6 * X
+    left = np.where(np.abs(pts[:, 0] + X) < tol)[0] + 1
+    right = np.where(np.abs(pts[:, 0] - X) < tol)[0] + 1
     with open(path, "w") as f:
-        f.write("*NODE\n")
-        for i, q in enumerate(pts):
-            f.write(f"{i + 1}, {q[0]:.12g}, {q[1]:.12g}, {q[2]:.12g}\n")
-        f.write(f"{ref}, {X:.12g}, 0, 0\n{rot}, {X:.12g}, 0, 0\n")
-        f.write("*ELEMENT, TYPE=C3D10, ELSET=EALL\n")
-        for i, row in enumerate(el):
-            f.write(f"{i + 1}, " + ", ".join(str(int(v)) for v in row) + "\n")
+        ref, rot = write_mesh(f, X, pts, conn)
         ids(f, "LEFT", left)
         ids(f, "RIGHT", right)
         f.write(f"*NSET, NSET=RN\n{ref}, {rot}\n")

@@ -113,20 +113,24 @@ pub fn half_notch_derivative(profile: &Profile, tangent: &Tangent) -> f64 {
 fn moduli(p: &DProfile, profile: &Profile, m: &Material, tg: &Tangent) -> DModuli {
     let e = Dual::new(m.e, tg.e);
     let nu = Dual::new(m.nu, tg.nu);
-    let ps = p.plane_strain_factor(nu, profile.compliant_half_length());
-    let factor = ps / p.short_notch_factor();
+    let (ps, g, gf) = (
+        p.plane_strain_factor(nu, profile.compliant_half_length()),
+        p.short_notch_factor(),
+        p.fillet_factor(),
+    );
+    let factor = ps / g;
     let share = super::solid_effects::AXIAL_RESTRAINT_SHARE;
-    let axial = (ps * share + Dual::c(1.0 - share)) / p.short_notch_factor();
+    let axial = (ps * share + Dual::c(1.0 - share)) / g;
     DModuli {
         e,
         e_bend: e * factor,
         g: e / ((nu + 1.0) * 2.0),
         nu,
         notch_half: p.half_notch,
-        e_bend_fillet: e * factor / p.fillet_factor(),
+        e_bend_fillet: e * factor / gf,
         fillet_from: p.fillet_from(),
         e_axial: e * axial,
-        e_axial_fillet: e * axial / p.fillet_factor(),
+        e_axial_fillet: e * axial / gf,
     }
 }
 
