@@ -320,20 +320,29 @@ fn solid_pipelines_agree() {
 /// quantities to the 6 digits copied here), and no two references share a geometry.
 #[test]
 fn every_reference_is_a_line_of_the_raw_results() {
-    let designs = [
-        ("ccx_heldout_results.jsonl", DOE1, 24),
-        ("ccx_heldout2_results.jsonl", DOE2, 24),
-        ("ccx_heldout3_results.jsonl", DOE3, 20),
-        ("ccx_heldout4_results.jsonl", DOE4, 24),
-        ("ccx_heldout5_results.jsonl", DOE5, 24),
-        ("ccx_heldout6_results.jsonl", DOE6, 24),
-    ];
     let first: Vec<&CcxRef> = FIRST_FIT.iter().chain(FIRST_HELD_OUT).collect();
     assert_eq!(raw_lines_matched("ccx_reference_results.jsonl", &first), 50);
-    for (file, refs, n) in designs {
-        assert_eq!(raw_lines_matched(file, &refs.iter().collect::<Vec<_>>()), n, "{file}");
+    for (stem, refs, rows, _) in DESIGNS {
+        let file = format!("{stem}_results.jsonl");
+        assert_eq!(
+            raw_lines_matched(&file, &refs.iter().collect::<Vec<_>>()),
+            rows,
+            "{file}"
+        );
     }
 }
+
+/// The fresh designs of experiments: file stem under `tools/` (`_doe.json` the design,
+/// `_results.jsonl` its CalculiX results), the references, their number, how many are circular
+/// notches.
+const DESIGNS: [(&str, &[CcxRef], usize, usize); 6] = [
+    ("ccx_heldout", DOE1, 24, 12),
+    ("ccx_heldout2", DOE2, 24, 12),
+    ("ccx_heldout3", DOE3, 20, 4),
+    ("ccx_heldout4", DOE4, 24, 12),
+    ("ccx_heldout5", DOE5, 24, 12),
+    ("ccx_heldout6", DOE6, 24, 12),
+];
 
 /// The fresh rows are the committed designs of experiments, in their order
 /// (`tools/ccx_heldout_doe.json`, `tools/ccx_heldout2_doe.json`: the same geometry, 12
@@ -341,14 +350,8 @@ fn every_reference_is_a_line_of_the_raw_results() {
 /// corner-filleted hinges then 4 circular notches).
 #[test]
 fn fresh_rows_are_the_committed_designs() {
-    for (file, refs, n_circular) in [
-        ("ccx_heldout_doe.json", DOE1, 12),
-        ("ccx_heldout2_doe.json", DOE2, 12),
-        ("ccx_heldout3_doe.json", DOE3, 4),
-        ("ccx_heldout4_doe.json", DOE4, 12),
-        ("ccx_heldout5_doe.json", DOE5, 12),
-        ("ccx_heldout6_doe.json", DOE6, 12),
-    ] {
+    for (stem, refs, _, n_circular) in DESIGNS {
+        let file = format!("{stem}_doe.json");
         let text = std::fs::read_to_string(format!("{}/tools/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
         let design: Vec<serde_json::Value> = serde_json::from_str(&text).unwrap();
         assert_eq!(design.len(), refs.len(), "{file}");
