@@ -82,6 +82,15 @@ fourth set's rule with numpy `default_rng(20261203)`, 12 circular notches then 1
 corner-filleted leaves.
 
     python3 tools/ccx_heldout_doe.py --sixth > tools/ccx_heldout6_doe.json
+
+Seventh check set (`--seventh`, `tools/ccx_heldout7_doe.json`), drawn and committed after the sixth
+had been compared once (corner-filleted torsion −13.3 % on a short wide leaf, l2.7/R0.7/t1.35/w18.55)
+and before any change of the torsion law for short wide leaves: the fourth set's rule with numpy
+`default_rng(20261204)`, 12 circular notches then 12 corner-filleted leaves, then 8
+corner-filleted leaves drawn next from the region of both misses (a Latin hypercube, log-uniform,
+over R/t 0.5-1.2, flat/t 0.3-2.5, w/t 8-20, t 1-2 mm, the blank as above).
+
+    python3 tools/ccx_heldout_doe.py --seventh > tools/ccx_heldout7_doe.json
 """
 
 import json
@@ -162,11 +171,11 @@ def doe2():
     return rows
 
 
-def corner2(rng, n, ranges):
+def corner2(rng, n, ranges, w_over_t=(1.0, 20.0)):
     """n corner-filleted rows of a Latin hypercube with (R/t, flat/t) in the two ranges of
-    `ranges`, the other dimensions over the second set's ranges."""
+    `ranges` and w/t in `w_over_t`, the other dimensions over the second set's ranges."""
     (rlo, rhi), (flo, fhi) = ranges
-    return [corner_row(*sample) for sample in lhs(rng, n, [(rlo, rhi), (flo, fhi), (1.0, 20.0), (1.0, 2.0), (0.5, 4.0), (0.5, 2.0)])]
+    return [corner_row(*sample) for sample in lhs(rng, n, [(rlo, rhi), (flo, fhi), w_over_t, (1.0, 2.0), (0.5, 4.0), (0.5, 2.0)])]
 
 
 def corner_row(r_over_t, flat_over_t, w_over_t, t, blank_over_t, blank_length_over_h):
@@ -197,9 +206,18 @@ def circular2(rng, n):
 
 
 def doe4(seed=20261201):
-    rng = np.random.default_rng(seed)
+    return doe4_rows(np.random.default_rng(seed))
+
+
+def doe4_rows(rng):
     rows = [{**r, "regime": "lhs"} for r in circular2(rng, 12)]
     return rows + [{**r, "regime": "lhs"} for r in corner2(rng, 12, [(0.5, 2.5), (0.3, 6.0)])]
+
+
+def doe7():
+    rng = np.random.default_rng(20261204)
+    rows = doe4_rows(rng)
+    return rows + [{**r, "regime": "lhs: short wide leaf"} for r in corner2(rng, 8, [(0.5, 1.2), (0.3, 2.5)], (8.0, 20.0))]
 
 
 def doe3():
@@ -212,7 +230,9 @@ def doe3():
 if __name__ == "__main__":
     import sys
 
-    if "--sixth" in sys.argv:
+    if "--seventh" in sys.argv:
+        print(json.dumps(doe7(), indent=1))
+    elif "--sixth" in sys.argv:
         print(json.dumps(doe4(20261203), indent=1))
     elif "--fifth" in sys.argv:
         print(json.dumps(doe4(20261202), indent=1))
