@@ -145,6 +145,10 @@ use doe5::DOE5;
 #[path = "hinge_ccx_reference/doe6.rs"]
 mod doe6;
 use doe6::DOE6;
+#[path = "hinge_ccx_reference/doe7.rs"]
+mod doe7;
+use doe7::DOE7;
+
 #[path = "hinge_ccx_reference/raw.rs"]
 mod raw;
 use raw::{raw_lines_matched, SCIKIT_FEM};
@@ -335,13 +339,14 @@ fn every_reference_is_a_line_of_the_raw_results() {
 /// The fresh designs of experiments: file stem under `tools/` (`_doe.json` the design,
 /// `_results.jsonl` its CalculiX results), the references, their number, how many are circular
 /// notches.
-const DESIGNS: [(&str, &[CcxRef], usize, usize); 6] = [
+const DESIGNS: [(&str, &[CcxRef], usize, usize); 7] = [
     ("ccx_heldout", DOE1, 24, 12),
     ("ccx_heldout2", DOE2, 24, 12),
     ("ccx_heldout3", DOE3, 20, 4),
     ("ccx_heldout4", DOE4, 24, 12),
     ("ccx_heldout5", DOE5, 24, 12),
     ("ccx_heldout6", DOE6, 24, 12),
+    ("ccx_heldout7", DOE7, 32, 12),
 ];
 
 /// The fresh rows are the committed designs of experiments, in their order
@@ -731,7 +736,7 @@ fn extrapolation_checked_on_finer_meshes() {
 fn converged_peaks_checked() {
     let k12 = json_lines(PEAKS);
     let at = |l: &serde_json::Value, q: &str| l[q].as_f64().unwrap();
-    // One line per circular and corner-filleted reference of the six results files.
+    // One line per circular and corner-filleted reference of the seven results files.
     let mut sources = std::collections::HashMap::new();
     for l in &k12 {
         let file = l["source"].as_str().unwrap();
@@ -741,7 +746,7 @@ fn converged_peaks_checked() {
         .values()
         .map(|lines| lines.iter().filter(|l| l["type"] != "spherical_neck").count())
         .sum();
-    assert_eq!((sources.len(), k12.len(), flat_notches), (7, 186, 186));
+    assert_eq!((sources.len(), k12.len(), flat_notches), (8, 218, 218));
     let n3 = json_lines("ccx_refine_n3_results.jsonl");
     let (mut moved, mut bend) = ((f64::INFINITY, f64::NEG_INFINITY), (f64::INFINITY, f64::NEG_INFINITY));
     let mut on_flats = 0;
