@@ -81,7 +81,8 @@
 //!
 //! The references' convergence and the torsion law's warping spreading. Every reference was then
 //! re-solved at n = 3 (see the mesh convergence above) and the stiffnesses compared became the
-//! extrapolation, decided and committed before any comparison. A fourth design ([`DOE4`],
+//! extrapolation, decided and committed before any comparison (later, where a reference was
+//! also re-solved at n = 6, the n = 4/6 extrapolation: [`converged_stiffness`]). A fourth design ([`DOE4`],
 //! `--fourth`: `default_rng(20261201)`, 12 circular, 12 corner-filleted rows) was committed
 //! before its models were run and compared once with the model as it stood: circular notches
 //! met every target; corner-filleted torsion read up to +12.4 % (wide leaves between low
@@ -114,7 +115,14 @@
 //! circular and corner-filleted rows of [`DOE1`] to [`DOE6`] and the first calibration); that
 //! law was committed before [`DOE7`] was solved, and [`DOE7`] was then compared once. So
 //! [`DOE7`] is held out from every law, and [`DOE3`] to [`DOE6`] from every fit but the
-//! warping slope's, and seen by later changes.
+//! warping slope's, and seen by later changes. The comparison found the shortest, widest leaf
+//! with sharp fillets still too soft; re-solving the short or wide leaves at n = 6 then showed
+//! their n = 3/4 extrapolations over-correcting (by up to 3.7 %, on the two leaves with R/t
+//! 0.52), so the tables now take the n = 4/6 extrapolation wherever it exists, a decision on the
+//! solid data alone that made those two leaves read softer still. Two regimes inside the
+//! calibrated ranges read beyond the targets and now carry a warning with their measured band
+//! ([`known_bias_warnings_state_the_measured_bands`]); outside them every reference meets the
+//! bending, torsion and axial targets.
 //!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
@@ -185,7 +193,7 @@ fn rows(refs: &[&CcxRef]) -> Vec<Row> {
                 .unwrap_or_else(|e| panic!("{}: {e}", r.hinge))
                 .hinge;
             let pct = |a: f64, b: f64| 100.0 * (a - b) / b;
-            let [k_bend, k_torsion, k_axial] = r.converged();
+            let [k_bend, k_torsion, k_axial] = converged_stiffness(r);
             let peak = converged_peak(r).unwrap_or(r.spm_nodal);
             let err = [
                 pct(h.k_bend, k_bend),
@@ -206,6 +214,30 @@ fn rows(refs: &[&CcxRef]) -> Vec<Row> {
         })
         .collect()
 }
+
+/// The converged stiffnesses (bending, torsion, axial) of a reference: the order-2 Richardson
+/// extrapolation of n = 4 and n = 6 where the reference was re-solved at n = 6
+/// ([`N6_RESULTS`]), of n = 3 and n = 4 otherwise ([`CcxRef::converged`]). The finer pair is
+/// the better one where it exists: on short corner-filleted leaves with small fillets the n = 3
+/// mesh is too coarse for the asymptotic rate and the n = 3/4 extrapolation over-corrects (see
+/// [`extrapolation_checked_on_finer_meshes`]).
+fn converged_stiffness(r: &CcxRef) -> [f64; 3] {
+    static LINES: std::sync::OnceLock<Vec<serde_json::Value>> = std::sync::OnceLock::new();
+    let lines = LINES.get_or_init(|| json_lines(N6_RESULTS));
+    let hits = matching_lines(lines, r.hinge, r.e, r.nu, &[], |_| true);
+    assert!(hits.len() <= 1, "{}: {} n = 6 lines", r.hinge, hits.len());
+    match hits.first() {
+        Some(&i) => {
+            let k4 = [r.k_bend, r.k_torsion, r.k_axial];
+            let k6 = ["k_bend", "k_torsion", "k_axial"].map(|q| lines[i][q].as_f64().unwrap());
+            std::array::from_fn(|q| richardson(k6[q], k4[q], 6.0, 4.0))
+        }
+        None => r.converged(),
+    }
+}
+
+/// The references re-solved at n = 6 (`tools/ccx_refine.py --n 6`).
+const N6_RESULTS: &str = "ccx_refine_n6_results.jsonl";
 
 /// The converged peak stress per moment of a circular or corner-filleted reference, MPa/(N·mm):
 /// its line of `tools/ccx_peak_stress_k12.jsonl` (the symmetric eighth with the mesh sized by
@@ -399,13 +431,14 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
 /// 12 circular notches of [`DOE7`], drawn and committed before the warping spread slope was
 /// fitted, held out from every law and compared once with the frozen model. Measured against
-/// the converged (n = 3/4 extrapolated) stiffnesses and the converged peaks of [`PEAKS`],
+/// the converged stiffnesses ([`converged_stiffness`]) and the converged peaks of [`PEAKS`],
 /// bending / torsion / axial / peak σ/M, %: −0.00 … +1.56 / −8.25 … +11.31 / −0.68 … +2.44 /
 /// +0.16 … +2.88. **Torsion misses 10 % on 1 of 12**: R11.15/t3.25/w2.6/h24.7, a narrow
 /// (w/t 0.80), deep notch, +11.31 % (too stiff): pinned at 11.4 %. It is the regime of the
-/// circular notches' other high readings (w/t ≤ 1: +8 … +9 % on the earlier designs), where the
-/// warping constant is small and its spreading does not matter (with the earlier slope 1/2 the
-/// row reads +11.05 %, measured after the comparison).
+/// circular notches' other high readings (w/t ≤ 1.1: +3.1 … +9.5 % on the earlier designs),
+/// where the warping constant is small and its spreading does not matter (with the earlier
+/// slope 1/2 the row reads +11.05 %, measured after the comparison); that regime now warns
+/// ([`known_bias_warnings_state_the_measured_bands`]).
 const CIRCULAR_TOL: [f64; 4] = [3.0, 11.4, 5.0, 5.0];
 /// 40 circular notches of [`DOE3`] (4; t/R 0.10–0.40, w/t 0.80–12.6, blank w/h 0.11–2.3),
 /// [`DOE4`], [`DOE5`] and [`DOE6`] (12 each), each compared once with the model of its day and
@@ -419,22 +452,31 @@ const CIRCULAR_TOL: [f64; 4] = [3.0, 11.4, 5.0, 5.0];
 const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
 /// 20 corner-filleted hinges of [`DOE7`] (12 by the usual rule, 8 short wide leaves: w/l
 /// 3.0–7.2, l/t 2.0–3.5, R/t 0.52–1.14), held out from every law and compared once with the
-/// frozen model. Measured: −1.32 … +2.26 / −13.97 … +6.68 / −5.16 … +0.73 / −1.75 … +3.87.
-/// **Torsion misses 10 % and axial 5 % on 1 of 20**: l3.15/R0.7/t1.35/w22.75/h7.5, the shortest,
-/// widest leaf with the sharpest fillets of the design (w/l 7.2, l/t 2.3, R/t 0.52), −13.97 %
-/// torsion and −5.16 % axial (both too soft): pinned at 14.0 % and 5.2 %. The other 7 short wide
-/// leaves read −9.10 … +3.43 % in torsion. With the earlier slope 1/2 the design reads
-/// −19.62 … +6.38 % (measured after the comparison): the refit took the short wide leaves most
-/// of the way, not all of it. The torsion law stays too soft on the shortest, widest leaves
-/// with sharp fillets (R/t ≈ 0.5, w/l ≥ 7), as both earlier misses were.
-const CORNER_TOL: [f64; 4] = [3.0, 14.0, 5.2, 5.0];
+/// frozen model. At that comparison (against the n = 3/4 extrapolations): −1.32 … +2.26 /
+/// −13.97 … +6.68 / −5.16 … +0.73 / −1.75 … +3.87, torsion and axial missing on 1 of 20.
+/// Measured now, against the n = 4/6 extrapolations where the reference was re-solved at n = 6
+/// (every short or wide leaf of the design): −3.94 … +2.26 / −17.12 … +6.52 / −6.53 … +0.79 /
+/// −1.75 … +3.87. **Bending, torsion and axial miss on 1 of 20**: l3.15/R0.7/t1.35/w22.75/h7.5,
+/// the shortest, widest leaf with the sharpest fillets of the design (w/l 7.2, l/t 2.3, R/t
+/// 0.52), −3.94 / −17.12 / −6.53 % (all too soft): pinned at 4.0 / 17.2 / 6.6 %. Its own
+/// references are uncertain by more than elsewhere (n = 3/4 and n = 4/6 extrapolations differ
+/// by 3.2 / 3.7 / 1.4 %, and its root-refined eighth reads bending 1.0 % below the n = 4/6
+/// value), but not by the miss. The other 7 short wide leaves read −9.10 … +3.43 % in torsion.
+/// With the earlier slope 1/2 the design reads −19.62 … +6.38 % against the n = 3/4
+/// references (measured after the comparison): the refit took the short wide leaves most of
+/// the way, not all of it. The shortest, widest leaves with sharp fillets (R/t ≈ 0.5) in tall
+/// blanks stay too soft, as both earlier misses were; that regime now warns
+/// ([`known_bias_warnings_state_the_measured_bands`]).
+const CORNER_TOL: [f64; 4] = [4.0, 17.2, 6.6, 5.0];
 /// 52 corner-filleted hinges of [`DOE3`] (16; l/t 2.0–9.5, R/t 0.57–2.4 (12 of them ≥ 1.2),
 /// w/t 1.2–16.6, blank w/h 0.22–3.9, blank length 0.54–1.8 h), [`DOE4`], [`DOE5`] and [`DOE6`]
-/// (12 each), as the circular ones above. Measured now: −1.57 … +1.64 / −9.35 … +6.16 /
-/// −3.28 … +1.16 / −1.77 … +3.72: every target met (held out of the K_t refit and of the axial
-/// fit, seen by the warping slope's). At their comparisons torsion missed 10 % on one row of
-/// [`DOE5`] (l3.55/R0.8/t1.3/w17.9/h5.3, −10.88 %) and one of [`DOE6`] (l2.7/R0.7/t1.35/w18.55/
-/// h6.9, −13.29 %), both short wide leaves, now −6.68 and −9.35 %; before the warping spreading
+/// (12 each), as the circular ones above (held out of the K_t refit and of the axial fit, seen
+/// by the warping slope's). Measured now: −3.94 … +1.20 / −11.35 … +5.41 / −4.31 … +1.03 /
+/// −1.77 … +3.72. **Bending and torsion miss on 1 of 52**: [`DOE6`]'s l2.7/R0.7/t1.35/w18.55/
+/// h6.9, the other short wide leaf with R/t 0.52 (−3.94 / −11.35 %; −0.89 / −9.35 % against its
+/// n = 3/4 extrapolation, which is 3.1 / 2.2 % below its n = 4/6 one): pinned at 4.0 / 11.4 %.
+/// At their comparisons torsion missed 10 % on one row of [`DOE5`] (l3.55/R0.8/t1.3/w17.9/h5.3,
+/// −10.88 %, now −5.76 %) and on that row of [`DOE6`] (−13.29 %); before the warping spreading
 /// first changed, DOE4's torsion read −2.28 … +12.37 % (a wide leaf, l6.65/R0.85/t1.2/w16.5/h7.3,
 /// +12.37 %, and a short narrow one, l2.2/R0.9/t1.1/w1.25, +11.13 %): the comparison that
 /// prompted that change.
@@ -445,32 +487,40 @@ const CORNER_TOL: [f64; 4] = [3.0, 14.0, 5.2, 5.0];
 /// (Against the n = 4 stiffnesses DOE3 read bending −2.21 … +0.13 %; before the fillets got the
 /// short-notch factor G it read −0.38 … +4.88 %, 6 of 16 above 3 %, so this test fails with that
 /// law.)
-const CORNER_SEEN_TOL: [f64; 4] = TARGET;
+const CORNER_SEEN_TOL: [f64; 4] = [4.0, 11.4, 5.0, 5.0];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses and peaks:
-/// −0.41 … +2.45 / −7.75 … +9.50 / −0.56 … +3.25 / −1.39 … +3.45: every target met (axial
-/// −0.65 … +4.28 with E alone; the axial share 0.6 is the minimax fit on these rows and the
-/// corner-filleted ones below). (With Γ spread like the Saint-Venant torque, as the torsion
-/// law's two numbers were fitted on the n = 4 stiffnesses, torsion read −7.60 … +10.74 %;
-/// refitting those two numbers on the converged stiffnesses of all 118 rows then seen reached
-/// 10.9 % at best.)
+/// −0.41 … +2.45 / −7.75 … +9.47 / −0.72 … +3.25 / −1.39 … +3.45: every target met (axial
+/// −0.65 … +4.28 with E alone, against the n = 3/4 references; the axial share 0.6 is the
+/// minimax fit on these rows and the corner-filleted ones below). (With Γ spread like the
+/// Saint-Venant torque, as the torsion law's two numbers were fitted on the n = 4 stiffnesses,
+/// torsion read −7.60 … +10.74 %; refitting those two numbers on the converged stiffnesses of
+/// all 118 rows then seen reached 10.9 % at best.)
 const CIRCULAR_FIT_TOL: [f64; 4] = TARGET;
 /// The 44 corner-filleted hinges of the fits. Measured against the converged stiffnesses and
-/// peaks: −1.63 … +2.20 / −6.98 … +6.85 / −3.23 … +1.10 / −3.47 … +3.22 (axial −4.30 … +2.43
-/// with E alone; the K_t exponent 0.27 is the minimax fit on these rows, with the earlier 1/5
-/// −8.05 … +1.19): every target met (before the warping spreading changed, torsion −8.11 …
-/// +12.85 %, wide leaves between low blanks l4/R1/t1/w15/h5 and l6/R1.5/t1.5/w30/h6 above 10 %).
-/// (Bending read −3.60 % on l5.95/R1.45/t1.95/w10.15/h11.9 against its n = 4 stiffness, which is
-/// 2 % too stiff: −1.64 % against the extrapolation, −2.17 % against the n = 6/8 one.)
+/// peaks: −2.08 … +0.80 / −6.85 … +6.25 / −3.17 … +1.07 / −3.47 … +3.22 (against the n = 3/4
+/// references throughout, as the fits were made: −1.63 … +2.20 / −6.98 … +6.85 / −3.23 … +1.10;
+/// axial −4.30 … +2.43 with E alone; the K_t exponent 0.27 is the minimax fit on these rows,
+/// with the earlier 1/5 −8.05 … +1.19): every target met (before the warping spreading changed,
+/// torsion −8.11 … +12.85 %, wide leaves between low blanks l4/R1/t1/w15/h5 and
+/// l6/R1.5/t1.5/w30/h6 above 10 %). (Bending read −3.60 % on l5.95/R1.45/t1.95/w10.15/h11.9
+/// against its n = 4 stiffness, which is 2 % too stiff: −1.64 % against the extrapolation,
+/// −2.17 % against the n = 6/8 one.)
 const CORNER_FIT_TOL: [f64; 4] = TARGET;
-/// [`extrapolation_checked_on_finer_meshes`]: the references re-solved at n = 6, and
-/// how closely the n = 3/4 extrapolation agrees with the n = 4/6 one (bending, torsion, axial, %).
-/// Measured: within 1.61 / 1.13 / 0.42 % (median 0.12 % in bending; 6 of 66 above 0.5 %, the
-/// worst a short wide corner-filleted hinge, l2.5/R0.7/t1.25/w6.75, whose n = 3 mesh reads stiff).
-const N6_ROWS: usize = 66;
-const EXTRAPOLATION_TOL: [f64; 3] = [1.7, 1.2, 0.45];
+/// [`extrapolation_checked_on_finer_meshes`]: the references re-solved at n = 6 (other than
+/// short or wide corner-filleted, short or wide corner-filleted), and how closely the n = 3/4
+/// extrapolation agrees with the n = 4/6 one (bending, torsion, axial, %). Measured: within
+/// 0.76 / 1.13 / 0.42 % on the 62 others, every one with at most 30,000 unknowns at n = 4;
+/// within 3.16 / 3.67 / 1.44 % on the 31 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
+/// leaves (all of them but four of the largest, 70,000–121,000 unknowns at n = 4, left
+/// unsolved), the worst the two short wide leaves with R/t 0.52, whose n = 3 mesh is too coarse
+/// for the asymptotic rate: there the n = 3/4 extrapolation over-corrects, and the tables take
+/// the n = 4/6 one ([`converged_stiffness`]).
+const N6_ROWS: [usize; 2] = [62, 31];
+const EXTRAPOLATION_TOL: [f64; 3] = [0.8, 1.2, 0.45];
+const SHORT_WIDE_EXTRAPOLATION_TOL: [f64; 3] = [3.2, 3.7, 1.5];
 /// The nodal-averaged peak stress from n = 4 to n = 6 on those references, %: measured
-/// −1.46 … +6.56 (median +0.59).
-const PEAK_N4_TO_N6: (f64, f64) = (-1.6, 6.7);
+/// −1.46 … +7.30.
+const PEAK_N4_TO_N6: (f64, f64) = (-1.6, 7.4);
 /// The converged peaks, one line per circular and corner-filleted reference.
 const PEAKS: &str = "ccx_peak_stress_k12.jsonl";
 /// The same solved at k = 16 (the 103 smaller models, 52 corner-filleted), and how far the peak
@@ -481,9 +531,12 @@ const PEAK_K12_TO_K16: f64 = 0.75;
 /// The turned necks' nodal peak from n = 4 to 6, ± % (measured 2.12 %).
 const NECK_PEAK_N4_TO_N6: f64 = 2.5;
 /// The eighth's compliant-axis stiffness lies between the full model's converged and n = 4 ones
-/// within this, %: measured at least −0.49 % from the converged one (a short wide leaf of
-/// [`DOE7`], l3.45/R0.95/t1.6/w21.45), at most −0.03 % from n = 4.
-const EIGHTH_BEND_TOL: f64 = 0.5;
+/// within this, %: measured at least −1.04 % from the converged one ([`converged_stiffness`]), at
+/// most −0.03 % from n = 4. Below the converged one by more than 0.15 % only on the two short
+/// wide leaves with R/t 0.52 ([`DOE7`]'s l3.15/R0.7/t1.35/w22.75, −1.04 %, and [`DOE6`]'s
+/// l2.7/R0.7/t1.35/w18.55, −0.92 %): the eighth's root mesh (R/12) resolves compliance that the
+/// full models at n = 6 (t/6) do not yet, so their converged bending is likely that much lower.
+const EIGHTH_BEND_TOL: f64 = 1.1;
 /// Peak-stress convergence pins, % (nodal-averaged, integration point), n = 4 → 5.
 /// (family, R mm, nodal-averaged tolerance %, integration-point tolerance %, measured gap %).
 #[allow(clippy::type_complexity)]
@@ -558,6 +611,77 @@ fn corner_filleted_held_out() {
         CORNER_SEEN_TOL,
     );
 }
+
+/// The regimes where the model is known to read further from CalculiX than the targets
+/// (`flexfem::hinge::calibration::known_bias`) and the band each warning states: over every
+/// circular and corner-filleted reference of every design in a regime, the stated band is the
+/// measured one (lowest and highest error, to two decimals) and leaves the target, the stated
+/// model count is the regime's, a quantity with no band stays within its target there, and
+/// every reference outside the regimes is within [`OUTSIDE_BIAS_TOL`] (bending, torsion, axial,
+/// %).
+#[test]
+fn known_bias_warnings_state_the_measured_bands() {
+    use flexfem::hinge::calibration::{known_bias, NARROW_CIRCULAR, SHORT_WIDE_LEAF};
+    let refs: Vec<&CcxRef> = FIRST_FIT
+        .iter()
+        .chain(FIRST_HELD_OUT)
+        .chain(DESIGNS.iter().flat_map(|d| d.1.iter()))
+        .collect();
+    let all = rows(&refs);
+    let mut seen: Vec<(&str, Vec<[f64; 4]>)> = vec![(SHORT_WIDE_LEAF.regime, vec![]), (NARROW_CIRCULAR.regime, vec![])];
+    let mut outside = [0.0f64; 3];
+    for row in all.iter().filter(|r| !neck(&r.spec)) {
+        let profile = row.spec.profile().unwrap();
+        match known_bias(&profile) {
+            Some(b) => seen.iter_mut().find(|s| s.0 == b.regime).unwrap().1.push(row.err),
+            None => {
+                for (worst, e) in outside.iter_mut().zip(row.err) {
+                    *worst = worst.max(e.abs());
+                }
+            }
+        }
+    }
+    for (bias, (_, errs)) in [SHORT_WIDE_LEAF, NARROW_CIRCULAR].iter().zip(&seen) {
+        assert_eq!(errs.len(), bias.models, "{}", bias.regime);
+        for q in 0..3 {
+            let lo = errs.iter().map(|e| e[q]).fold(f64::INFINITY, f64::min);
+            let hi = errs.iter().map(|e| e[q]).fold(f64::NEG_INFINITY, f64::max);
+            println!(
+                "{}: quantity {q}: {lo:+.2} … {hi:+.2} % over {} models",
+                bias.regime,
+                errs.len()
+            );
+            match bias.bands[q] {
+                Some((b_lo, b_hi)) => {
+                    // The stated band is the measured one (to its two decimals), and it leaves
+                    // the target.
+                    assert!(
+                        (lo - b_lo).abs() < 0.006 && (hi - b_hi).abs() < 0.006,
+                        "{}: measured {lo:.2} … {hi:.2}, stated {b_lo} … {b_hi}",
+                        bias.regime
+                    );
+                    assert!(
+                        b_lo < -TARGET[q] || b_hi > TARGET[q],
+                        "{}: band within the target",
+                        bias.regime
+                    );
+                }
+                None => assert!(lo.abs().max(hi.abs()) < TARGET[q], "{}: {lo} … {hi}", bias.regime),
+            }
+        }
+    }
+    println!("outside the known-bias regimes: worst bending / torsion / axial {outside:.2?} %");
+    for q in 0..3 {
+        assert!(
+            outside[q] < OUTSIDE_BIAS_TOL[q],
+            "outside the regimes: {:.2} %",
+            outside[q]
+        );
+    }
+}
+
+/// Every CalculiX reference outside the known-bias regimes (bending, torsion, axial, %).
+const OUTSIDE_BIAS_TOL: [f64; 3] = [3.0, 10.0, 5.0];
 
 /// The turned necks (the Ruiz et al. neck and three others; the neck's model is the earlier
 /// scikit-fem calibration, not refitted here).
@@ -644,9 +768,12 @@ fn peak_stress_mesh_convergence() {
 /// number involved:
 /// * n = 4 is not converged: up to +4.63 % stiff in bending against the extrapolation (the
 ///   earlier claim, "within about 0.3 %", came from two hinges);
-/// * on the references re-solved at n = 6 (every one with at most 30,000 unknowns at n = 4,
-///   `tools/ccx_refine_n6_results.jsonl`) the n = 3/4 extrapolation agrees with the n = 4/6 one
-///   within [`EXTRAPOLATION_TOL`];
+/// * on the references re-solved at n = 6 (`tools/ccx_refine_n6_results.jsonl`: every one with
+///   at most 30,000 unknowns at n = 4, then the short or wide corner-filleted leaves) the
+///   n = 3/4 extrapolation agrees with the n = 4/6 one within [`EXTRAPOLATION_TOL`], and on the
+///   short or wide leaves within [`SHORT_WIDE_EXTRAPOLATION_TOL`] (where they differ, the n = 3
+///   mesh is the coarse one: the tables take the n = 4/6 extrapolation wherever it exists,
+///   [`converged_stiffness`]);
 /// * on the hinge that prompted it (l5.95/R1.45/t1.95/w10.15/h11.9, solved at n = 3, 4, 5, 6, 8)
 ///   the n = 3/4 extrapolation agrees with the n = 6/8 one within 0.6 % in bending (measured
 ///   85284 against 85745 N·mm/rad, −0.54 %);
@@ -685,28 +812,49 @@ fn extrapolation_checked_on_finer_meshes() {
         "bending: n = 4 off by up to {:.2} %",
         off[0]
     );
-    // The n = 3/4 extrapolation against the n = 4/6 one.
-    let n6 = json_lines("ccx_refine_n6_results.jsonl");
-    let (mut worst, mut peak) = ([0.0f64; 3], (f64::INFINITY, f64::NEG_INFINITY));
+    // The n = 3/4 extrapolation against the n = 4/6 one: on the short or wide corner-filleted
+    // leaves, and on the rest.
+    let n6 = json_lines(N6_RESULTS);
+    let short_or_wide = |l: &serde_json::Value| {
+        l["type"] == "corner_filleted" && (at(l, "l") / at(l, "t") <= 2.75 || at(l, "w") / at(l, "l") > 3.0)
+    };
+    let (mut worst, mut peak) = ([[0.0f64; 3]; 2], (f64::INFINITY, f64::NEG_INFINITY));
+    let mut counts = [0; 2];
     for l6 in &n6 {
         let (l4, l3) = (n4(l6), coarse(&l6["source"], &l6["index"]));
+        let group = usize::from(short_or_wide(l4));
+        counts[group] += 1;
         for (q, name) in quantities.iter().enumerate() {
             let k34 = richardson(at(l4, name), at(l3, name), 4.0, 3.0);
             let k46 = richardson(at(l6, name), at(l4, name), 6.0, 4.0);
-            worst[q] = worst[q].max(100.0 * (k34 / k46 - 1.0).abs());
+            worst[group][q] = worst[group][q].max(100.0 * (k34 / k46 - 1.0).abs());
         }
         let moved = 100.0 * (at(l6, "stress_per_moment_nodal") / at(l4, "stress_per_moment_nodal") - 1.0);
         peak = (peak.0.min(moved), peak.1.max(moved));
     }
     println!(
-        "{} references at n = 6: n = 3/4 vs n = 4/6 extrapolation within {worst:.2?} %; nodal peak n = 4 → 6 {:+.2} … {:+.2} %",
+        "{} references at n = 6 ({} short or wide corner-filleted): n = 3/4 vs n = 4/6 extrapolation within {:.2?} % (short or wide: {:.2?} %); nodal peak n = 4 → 6 {:+.2} … {:+.2} %",
         n6.len(),
+        counts[1],
+        worst[0],
+        worst[1],
         peak.0,
         peak.1
     );
-    assert!(n6.len() >= N6_ROWS, "{} references re-solved at n = 6", n6.len());
+    assert_eq!(counts, N6_ROWS, "references re-solved at n = 6 (others, short or wide)");
     for q in 0..3 {
-        assert!(worst[q] < EXTRAPOLATION_TOL[q], "{}: {:.2} %", quantities[q], worst[q]);
+        assert!(
+            worst[0][q] < EXTRAPOLATION_TOL[q],
+            "{}: {:.2} %",
+            quantities[q],
+            worst[0][q]
+        );
+        assert!(
+            worst[1][q] < SHORT_WIDE_EXTRAPOLATION_TOL[q],
+            "short or wide, {}: {:.2} %",
+            quantities[q],
+            worst[1][q]
+        );
     }
     assert!(
         peak.0 > PEAK_N4_TO_N6.0 && peak.1 < PEAK_N4_TO_N6.1,
@@ -771,7 +919,7 @@ fn converged_peaks_checked() {
         .map(|lines| lines.iter().filter(|l| l["type"] != "spherical_neck").count())
         .sum();
     assert_eq!((sources.len(), k12.len(), flat_notches), (8, 218, 218));
-    let n3 = json_lines("ccx_refine_n3_results.jsonl");
+    let (n3, n6) = (json_lines("ccx_refine_n3_results.jsonl"), json_lines(N6_RESULTS));
     let (mut moved, mut bend) = ((f64::INFINITY, f64::NEG_INFINITY), (f64::INFINITY, f64::NEG_INFINITY));
     let mut on_flats = 0;
     for l in &k12 {
@@ -785,7 +933,14 @@ fn converged_peaks_checked() {
             .iter()
             .find(|c| c["source"] == l["source"] && c["index"] == l["index"])
             .expect("an n = 3 line");
-        let k = richardson(at(n4, "k_bend"), at(c3, "k_bend"), 4.0, 3.0);
+        // The converged bending as the tables take it: n = 4/6 where re-solved at n = 6.
+        let k = match n6
+            .iter()
+            .find(|c| c["source"] == l["source"] && c["index"] == l["index"])
+        {
+            Some(c6) => richardson(at(c6, "k_bend"), at(n4, "k_bend"), 6.0, 4.0),
+            None => richardson(at(n4, "k_bend"), at(c3, "k_bend"), 4.0, 3.0),
+        };
         // Between the converged stiffness and the (stiff) n = 4 one of the full model.
         let below_n4 = 100.0 * (at(l, "k_bend") / at(n4, "k_bend") - 1.0);
         bend = (bend.0.min(100.0 * (at(l, "k_bend") / k - 1.0)), bend.1.max(below_n4));
@@ -826,10 +981,7 @@ fn converged_peaks_checked() {
     // The turned necks keep their n = 4 peak: how far n = 6 moves it.
     let mut neck_moved: f64 = 0.0;
     let mut necks = 0;
-    for l6 in json_lines("ccx_refine_n6_results.jsonl")
-        .iter()
-        .filter(|l| l["type"] == "spherical_neck")
-    {
+    for l6 in json_lines(N6_RESULTS).iter().filter(|l| l["type"] == "spherical_neck") {
         let n4 = &sources[l6["source"].as_str().unwrap()][l6["index"].as_u64().unwrap() as usize];
         neck_moved =
             neck_moved.max(100.0 * (at(l6, "stress_per_moment_nodal") / at(n4, "stress_per_moment_nodal") - 1.0).abs());

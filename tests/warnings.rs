@@ -147,6 +147,49 @@ fn circular_notch_outside_calibration_warns() {
     }
 }
 
+/// Inside the calibrated ranges but in a regime the CalculiX models show the model reading
+/// beyond the targets (`flexfem::hinge::calibration::known_bias`): a short wide corner-filleted
+/// leaf (the seventh design's worst, l3.15/R0.7/t1.35/w22.75: l/t 2.33, w/l 7.2) and a narrow
+/// circular notch (R11.15/t3.25/w2.6: w/t 0.8) are warned about with the measured band; exit 0.
+/// Just outside either regime (l/t 2.8; w/t 1.15): no warning.
+#[test]
+fn known_bias_regimes_warn_with_the_measured_band() {
+    use flexfem::hinge::calibration::{NARROW_CIRCULAR, SHORT_WIDE_LEAF};
+    let leaf = |l: f64| {
+        format!(
+            r#"{{"type": "corner_filleted", "l": {l}, "R": 0.7, "t": 1.35, "w": 22.75, "h": 7.5, "blank_length": 5.8}}"#
+        )
+    };
+    let notch = |w: f64| {
+        format!(r#"{{"type": "circular_notch", "R": 11.15, "t": 3.25, "w": {w}, "h": 24.7, "blank_length": 18.5}}"#)
+    };
+    for (hinge, bias) in [
+        (leaf(3.15), Some(SHORT_WIDE_LEAF)),
+        (notch(2.6), Some(NARROW_CIRCULAR)),
+        (leaf(3.78), None),
+        (notch(3.75), None),
+    ] {
+        let v = json(&run_case_text(
+            "warn_bias",
+            &format!(r#"{{"analysis": "hinge", "hinge": {hinge}}}"#),
+        ));
+        let w = warnings(&v);
+        match bias {
+            Some(b) => {
+                assert_eq!(w.len(), 1, "{hinge}: {w:?}");
+                let (lo, hi) = b.bands[1].unwrap();
+                let band = format!("torsion {lo:+.1} … {hi:+.1} %");
+                assert!(
+                    w[0].starts_with("hinge: ") && w[0].contains(b.regime) && w[0].contains(&band),
+                    "{w:?}"
+                );
+                assert!(w[0].contains(&format!("{} CalculiX solid models", b.models)), "{w:?}");
+            }
+            None => assert!(w.is_empty(), "{hinge}: {w:?}"),
+        }
+    }
+}
+
 /// Inside the range (Ruiz et al. notch R8/t2, t/R = 0.25, w/t = 5): no warning.
 #[test]
 fn calibrated_hinge_has_no_warning() {
