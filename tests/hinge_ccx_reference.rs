@@ -82,9 +82,9 @@
 //! The references' convergence and the torsion law's warping spreading. Every reference was then
 //! re-solved at n = 3 (see the mesh convergence above) and the stiffnesses compared became the
 //! extrapolation, decided and committed before any comparison (later, where a reference was
-//! also re-solved at n = 6, the n = 4/6 extrapolation: [`converged_stiffness`]). A fourth design ([`DOE4`],
-//! `--fourth`: `default_rng(20261201)`, 12 circular, 12 corner-filleted rows) was committed
-//! before its models were run and compared once with the model as it stood: circular notches
+//! also re-solved at n = 6, the n = 4/6 extrapolation: [`converged_stiffness`]). A fourth
+//! design ([`DOE4`], `--fourth`: `default_rng(20261201)`, 12 circular, 12 corner-filleted rows)
+//! was committed before its models were run and compared once with the model as it stood: circular notches
 //! met every target; corner-filleted torsion read up to +12.4 % (wide leaves between low
 //! blanks) and one axial −5.6 %. A fifth design ([`DOE5`], `--fifth`, `default_rng(20261202)`)
 //! was committed before the torsion law's warping constant was given the bending's load
