@@ -144,7 +144,7 @@ use flexfem::material::Material;
 
 #[path = "hinge_ccx_reference/references.rs"]
 mod references;
-use references::{richardson, CcxRef, FIRST_FIT, FIRST_HELD_OUT};
+use references::{converged_value, richardson, CcxRef, FIRST_FIT, FIRST_HELD_OUT};
 #[path = "hinge_ccx_reference/doe.rs"]
 mod doe;
 use doe::DOE1;
@@ -226,14 +226,10 @@ fn converged_stiffness(r: &CcxRef) -> [f64; 3] {
     let lines = LINES.get_or_init(|| json_lines(N6_RESULTS));
     let hits = matching_lines(lines, r.hinge, r.e, r.nu, &[], |_| true);
     assert!(hits.len() <= 1, "{}: {} n = 6 lines", r.hinge, hits.len());
-    match hits.first() {
-        Some(&i) => {
-            let k4 = [r.k_bend, r.k_torsion, r.k_axial];
-            let k6 = ["k_bend", "k_torsion", "k_axial"].map(|q| lines[i][q].as_f64().unwrap());
-            std::array::from_fn(|q| richardson(k6[q], k4[q], 6.0, 4.0))
-        }
-        None => r.converged(),
-    }
+    r.converged(
+        hits.first()
+            .map(|&i| ["k_bend", "k_torsion", "k_axial"].map(|q| lines[i][q].as_f64().unwrap())),
+    )
 }
 
 /// The references re-solved at n = 6 (`tools/ccx_refine.py --n 6`).
@@ -567,8 +563,7 @@ fn fit_rows() -> Vec<Row> {
 /// the warping spread slope) against `seen`.
 fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 5], fresh: [f64; 4], seen: [f64; 4]) {
     let designs = [DOE3, DOE4, DOE5, DOE6, DOE7].map(|d| rows(&d.iter().collect::<Vec<_>>()));
-    let [third, fourth, fifth, sixth, seventh] =
-        [&designs[0], &designs[1], &designs[2], &designs[3], &designs[4]].map(|r| family(r, f));
+    let [third, fourth, fifth, sixth, seventh] = designs.each_ref().map(|r| family(r, f));
     assert_eq!(
         [third.len(), fourth.len(), fifth.len(), sixth.len(), seventh.len()],
         counts
@@ -627,12 +622,14 @@ fn known_bias_warnings_state_the_measured_bands() {
         .chain(DESIGNS.iter().flat_map(|d| d.1.iter()))
         .collect();
     let all = rows(&refs);
-    let mut seen: Vec<(&str, Vec<[f64; 4]>)> = vec![(SHORT_WIDE_LEAF.regime, vec![]), (NARROW_CIRCULAR.regime, vec![])];
+    let biases = [SHORT_WIDE_LEAF, NARROW_CIRCULAR];
+    // The errors of the rows in each regime, in the order of `biases`.
+    let mut seen: [Vec<[f64; 4]>; 2] = Default::default();
     let mut outside = [0.0f64; 3];
     for row in all.iter().filter(|r| !neck(&r.spec)) {
         let profile = row.spec.profile().unwrap();
         match known_bias(&profile) {
-            Some(b) => seen.iter_mut().find(|s| s.0 == b.regime).unwrap().1.push(row.err),
+            Some(b) => seen[biases.iter().position(|x| x.regime == b.regime).unwrap()].push(row.err),
             None => {
                 // zip-checked: the first three errors (bending, torsion, axial), not peak stress.
                 for (worst, e) in outside.iter_mut().zip(row.err) {
@@ -641,9 +638,8 @@ fn known_bias_warnings_state_the_measured_bands() {
             }
         }
     }
-    let biases = [SHORT_WIDE_LEAF, NARROW_CIRCULAR];
-    assert_eq!(biases.len(), seen.len());
-    for (bias, (_, errs)) in biases.iter().zip(&seen) {
+    // zip-checked: both arrays hold one entry per regime (their types say 2).
+    for (bias, errs) in biases.iter().zip(&seen) {
         assert_eq!(errs.len(), bias.models, "{}", bias.regime);
         for q in 0..3 {
             let lo = errs.iter().map(|e| e[q]).fold(f64::INFINITY, f64::min);
@@ -935,14 +931,11 @@ fn converged_peaks_checked() {
             .iter()
             .find(|c| c["source"] == l["source"] && c["index"] == l["index"])
             .expect("an n = 3 line");
-        // The converged bending as the tables take it: n = 4/6 where re-solved at n = 6.
-        let k = match n6
+        // The converged bending as the tables take it (n = 4/6 where re-solved at n = 6).
+        let c6 = n6
             .iter()
-            .find(|c| c["source"] == l["source"] && c["index"] == l["index"])
-        {
-            Some(c6) => richardson(at(c6, "k_bend"), at(n4, "k_bend"), 6.0, 4.0),
-            None => richardson(at(n4, "k_bend"), at(c3, "k_bend"), 4.0, 3.0),
-        };
+            .find(|c| c["source"] == l["source"] && c["index"] == l["index"]);
+        let k = converged_value(at(n4, "k_bend"), at(c3, "k_bend"), c6.map(|c| at(c, "k_bend")));
         // Between the converged stiffness and the (stiff) n = 4 one of the full model.
         let below_n4 = 100.0 * (at(l, "k_bend") / at(n4, "k_bend") - 1.0);
         bend = (bend.0.min(100.0 * (at(l, "k_bend") / k - 1.0)), bend.1.max(below_n4));
@@ -983,7 +976,7 @@ fn converged_peaks_checked() {
     // The turned necks keep their n = 4 peak: how far n = 6 moves it.
     let mut neck_moved: f64 = 0.0;
     let mut necks = 0;
-    for l6 in json_lines(N6_RESULTS).iter().filter(|l| l["type"] == "spherical_neck") {
+    for l6 in n6.iter().filter(|l| l["type"] == "spherical_neck") {
         let n4 = &sources[l6["source"].as_str().unwrap()][l6["index"].as_u64().unwrap() as usize];
         neck_moved =
             neck_moved.max(100.0 * (at(l6, "stress_per_moment_nodal") / at(n4, "stress_per_moment_nodal") - 1.0).abs());

@@ -23,12 +23,23 @@ pub struct CcxRef {
 }
 
 impl CcxRef {
-    /// The converged stiffnesses (bending, torsion, axial): the order-2 Richardson extrapolation
-    /// of n = 3 and n = 4, k∞ = k₄ + (k₄ − k₃)·3²/(4² − 3²) (`tools/ccx_refine.py`; the order is
-    /// the one measured on finer meshes, see `extrapolation_checked_on_finer_meshes`).
-    pub fn converged(&self) -> [f64; 3] {
+    /// The converged stiffnesses (bending, torsion, axial), [`converged_value`] of each with
+    /// `n6` the same model's stiffnesses at n = 6 where it was re-solved there.
+    pub fn converged(&self, n6: Option<[f64; 3]>) -> [f64; 3] {
         let k4 = [self.k_bend, self.k_torsion, self.k_axial];
-        std::array::from_fn(|q| richardson(k4[q], self.n3[q], 4.0, 3.0))
+        std::array::from_fn(|q| converged_value(k4[q], self.n3[q], n6.map(|k| k[q])))
+    }
+}
+
+/// The converged value of a stiffness solved at n = 4 (`k4`), n = 3 (`k3`) and, where the
+/// reference was re-solved there, n = 6 (`k6`): the order-2 Richardson extrapolation of the
+/// finest pair, n = 4/6 if there is one, else n = 3/4, k∞ = k₄ + (k₄ − k₃)·3²/(4² − 3²)
+/// (`tools/ccx_refine.py`; the order is the one measured on finer meshes, see
+/// `extrapolation_checked_on_finer_meshes`).
+pub fn converged_value(k4: f64, k3: f64, k6: Option<f64>) -> f64 {
+    match k6 {
+        Some(k6) => richardson(k6, k4, 6.0, 4.0),
+        None => richardson(k4, k3, 4.0, 3.0),
     }
 }
 
