@@ -91,6 +91,16 @@ corner-filleted leaves drawn next from the region of both misses (a Latin hyperc
 over R/t 0.5-1.2, flat/t 0.3-2.5, w/t 8-20, t 1-2 mm, the blank as above).
 
     python3 tools/ccx_heldout_doe.py --seventh > tools/ccx_heldout7_doe.json
+
+Eighth check set (`--eighth`, `tools/ccx_heldout8_doe.json`), drawn and committed after the seventh
+had been compared once (a short wide leaf with sharp fillets, l3.15/R0.7/t1.35/w22.75, too soft in
+torsion, bending and axially; a narrow deep circular notch, R11.15/t3.25/w2.6, too stiff in torsion)
+and before any further law change: the fourth set's rule with numpy `default_rng(20261205)`, 12
+circular notches then 12 corner-filleted leaves; then 8 short wide corner-filleted leaves with sharp
+fillets (a Latin hypercube, log-uniform, over R/t 0.5-0.8, flat/t 0.3-1.5, w/t 8-20, t 1-2 mm, the
+blank as above); then 6 narrow circular notches (the second set's ranges with w/t 0.5-1.1).
+
+    python3 tools/ccx_heldout_doe.py --eighth > tools/ccx_heldout8_doe.json
 """
 
 import json
@@ -195,10 +205,10 @@ def corner_row(r_over_t, flat_over_t, w_over_t, t, blank_over_t, blank_length_ov
     }
 
 
-def circular2(rng, n):
-    """n circular-notch rows of a Latin hypercube over the second set's ranges."""
+def circular2(rng, n, w_over_t=(0.5, 20.0)):
+    """n circular-notch rows of a Latin hypercube over the second set's ranges, w/t in `w_over_t`."""
     rows = []
-    for a, b, c, d, e in lhs(rng, n, [(0.08, 0.5), (0.5, 20.0), (2.0, 12.0), (0.4, 1.0), (0.5, 2.0)]):
+    for a, b, c, d, e in lhs(rng, n, [(0.08, 0.5), w_over_t, (2.0, 12.0), (0.4, 1.0), (0.5, 2.0)]):
         t = r05(a * c)
         h = r05(max(t + 2 * d * c, 3 * t))
         rows.append({"type": "circular_notch", "R": r05(c), "t": t, "w": r05(b * t), "h": h, "blank_length": r05(e * h)})
@@ -220,6 +230,13 @@ def doe7():
     return rows + [{**r, "regime": "lhs: short wide leaf"} for r in corner2(rng, 8, [(0.5, 1.2), (0.3, 2.5)], (8.0, 20.0))]
 
 
+def doe8():
+    rng = np.random.default_rng(20261205)
+    rows = doe4_rows(rng)
+    rows += [{**r, "regime": "lhs: short wide leaf, sharp fillets"} for r in corner2(rng, 8, [(0.5, 0.8), (0.3, 1.5)], (8.0, 20.0))]
+    return rows + [{**r, "regime": "lhs: narrow circular notch"} for r in circular2(rng, 6, (0.5, 1.1))]
+
+
 def doe3():
     rng = np.random.default_rng(20261130)
     rows = [{**r, "regime": "lhs"} for r in corner2(rng, 8, [(0.5, 2.5), (0.3, 6.0)])]
@@ -230,7 +247,9 @@ def doe3():
 if __name__ == "__main__":
     import sys
 
-    if "--seventh" in sys.argv:
+    if "--eighth" in sys.argv:
+        print(json.dumps(doe8(), indent=1))
+    elif "--seventh" in sys.argv:
         print(json.dumps(doe7(), indent=1))
     elif "--sixth" in sys.argv:
         print(json.dumps(doe4(20261203), indent=1))
