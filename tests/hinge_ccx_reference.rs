@@ -124,6 +124,17 @@
 //! ([`known_bias_warnings_state_the_measured_bands`]); outside them every reference meets the
 //! bending, torsion and axial targets.
 //!
+//! The warping constant's blank slope and the eighth design. An eighth design ([`DOE8`],
+//! `--eighth`, `default_rng(20261205)`: 12 circular and 12 corner-filleted rows by the fourth
+//! set's rule, 8 short wide corner-filleted leaves with sharp fillets, R/t 0.5–0.8, and 6 narrow
+//! circular notches, w/t 0.5–1.1: the two regimes that still missed) was committed before the
+//! torsion law's warping constant took a spread slope of its own in the blank proper, 0.84,
+//! with the bending's 1/2 in the notch (`hinge::torsion::solid`: one number replacing 0.57, the
+//! minimax of the torsion error over the 116 corner-filleted rows of [`DOE1`] to [`DOE7`] and
+//! the first calibration); [`DOE8`] was not compared with flexfem before that law was
+//! committed, and was then compared once. So [`DOE8`] is held out from every law, and [`DOE7`]
+//! is now seen by the blank slope's fit.
+//!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
 //!
@@ -426,11 +437,13 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 /// The targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
 /// 12 circular notches of [`DOE7`], drawn and committed before the warping spread slope was
-/// fitted, held out from every law and compared once with the frozen model. Measured against
-/// the converged stiffnesses ([`converged_stiffness`]) and the converged peaks of [`PEAKS`],
-/// bending / torsion / axial / peak σ/M, %: −0.00 … +1.56 / −8.25 … +11.31 / −0.68 … +2.44 /
-/// +0.16 … +2.88. **Torsion misses 10 % on 1 of 12**: R11.15/t3.25/w2.6/h24.7, a narrow
-/// (w/t 0.80), deep notch, +11.31 % (too stiff): pinned at 11.4 %. It is the regime of the
+/// fitted, held out from that law and compared once with the frozen model, then seen by the
+/// warping constant's blank slope fit. At that comparison, against the converged stiffnesses
+/// ([`converged_stiffness`]) and the converged peaks of [`PEAKS`], bending / torsion / axial /
+/// peak σ/M, %: −0.00 … +1.56 / −8.25 … +11.31 / −0.68 … +2.44 / +0.16 … +2.88; measured now
+/// −0.00 … +1.56 / −8.20 … +11.39 / −0.68 … +2.44 / +0.16 … +2.88. **Torsion misses 10 % on 1
+/// of 12**: R11.15/t3.25/w2.6/h24.7, a narrow (w/t 0.80), deep notch, +11.39 % (too stiff):
+/// pinned at 11.4 %. It is the regime of the
 /// circular notches' other high readings (w/t ≤ 1.1: +3.1 … +9.5 % on the earlier designs),
 /// where the warping constant is small and its spreading does not matter (with the earlier
 /// slope 1/2 the row reads +11.05 %, measured after the comparison); that regime now warns
@@ -463,7 +476,10 @@ const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
 /// the way, not all of it. The shortest, widest leaves with sharp fillets (R/t ≈ 0.5) in tall
 /// blanks stay too soft, as both earlier misses were; that regime now warns
 /// ([`known_bias_warnings_state_the_measured_bands`]).
-const CORNER_TOL: [f64; 4] = [4.0, 17.2, 6.6, 5.0];
+/// With the warping constant's blank slope (fitted on these rows among others, after this
+/// comparison) they read −3.94 … +2.26 / −7.53 … +6.92 / −6.53 … +0.79 / −1.75 … +3.87: torsion
+/// now meets 10 %; that leaf still misses bending and axial, pinned at 4.0 / 6.6 %.
+const CORNER_TOL: [f64; 4] = [4.0, 10.0, 6.6, 5.0];
 /// 52 corner-filleted hinges of [`DOE3`] (16; l/t 2.0–9.5, R/t 0.57–2.4 (12 of them ≥ 1.2),
 /// w/t 1.2–16.6, blank w/h 0.22–3.9, blank length 0.54–1.8 h), [`DOE4`], [`DOE5`] and [`DOE6`]
 /// (12 each), as the circular ones above (held out of the K_t refit and of the axial fit, seen
@@ -483,9 +499,12 @@ const CORNER_TOL: [f64; 4] = [4.0, 17.2, 6.6, 5.0];
 /// (Against the n = 4 stiffnesses DOE3 read bending −2.21 … +0.13 %; before the fillets got the
 /// short-notch factor G it read −0.38 … +4.88 %, 6 of 16 above 3 %, so this test fails with that
 /// law.)
-const CORNER_SEEN_TOL: [f64; 4] = [4.0, 11.4, 5.0, 5.0];
+/// With the warping constant's blank slope (fitted on these rows among others): torsion
+/// −6.89 … +7.74 %, within 10 %; [`DOE6`]'s R/t 0.52 leaf still misses bending (−3.94 %),
+/// pinned at 4.0 %.
+const CORNER_SEEN_TOL: [f64; 4] = [4.0, 10.0, 5.0, 5.0];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses and peaks:
-/// −0.41 … +2.45 / −7.75 … +9.47 / −0.72 … +3.25 / −1.39 … +3.45: every target met (axial
+/// −0.41 … +2.45 / −7.73 … +9.74 / −0.72 … +3.25 / −1.39 … +3.45: every target met (axial
 /// −0.65 … +4.28 with E alone, against the n = 3/4 references; the axial share 0.6 is the
 /// minimax fit on these rows and the corner-filleted ones below). (With Γ spread like the
 /// Saint-Venant torque, as the torsion law's two numbers were fitted on the n = 4 stiffnesses,
@@ -493,7 +512,7 @@ const CORNER_SEEN_TOL: [f64; 4] = [4.0, 11.4, 5.0, 5.0];
 /// all 118 rows then seen reached 10.9 % at best.)
 const CIRCULAR_FIT_TOL: [f64; 4] = TARGET;
 /// The 44 corner-filleted hinges of the fits. Measured against the converged stiffnesses and
-/// peaks: −2.08 … +0.80 / −6.85 … +6.25 / −3.17 … +1.07 / −3.47 … +3.22 (against the n = 3/4
+/// peaks: −2.08 … +0.80 / −7.28 … +6.85 / −3.17 … +1.07 / −3.47 … +3.22 (against the n = 3/4
 /// references throughout, as the fits were made: −1.63 … +2.20 / −6.98 … +6.85 / −3.23 … +1.10;
 /// axial −4.30 … +2.43 with E alone; the K_t exponent 0.27 is the minimax fit on these rows,
 /// with the earlier 1/5 −8.05 … +1.19): every target met (before the warping spreading changed,

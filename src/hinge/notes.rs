@@ -83,7 +83,7 @@ const FACE: &str = "compliance referenced to the centre of the loaded blank end 
 const CALIBRATION: &str = "calibration: converged 10-node tetrahedron solid models (tools/solid_reference.py); circular notches t/R 0.06-0.5 within 2% bending, 4.1% axial; turned necks l/t >= 1 within 3% bending, 5% torsion, 3% axial; leaf within 5%";
 const NECK_TORSION: &str =
     "torsion: Saint-Venant (circular waist, no warping); clipped-disk J blended between disk and square";
-const VLASOV: &str = "torsion: Vlasov non-uniform torsion FE (Hermite cubics) with the shear strain of the warping (Benscoter; Cowper's kappa), Timoshenko-Goodier J(x), exact rectangle warping constant, warping restrained at both blank end faces; in the blank the load-spreading effective thickness at slope 1.3 for J, at 0.57 for the warping constant (fitted); wide waists warp in the plate mode (Gamma = w^3 t^3/144, modulus E/(1-nu^2)) (CalculiX solid models: see the README validation table)";
+const VLASOV: &str = "torsion: Vlasov non-uniform torsion FE (Hermite cubics) with the shear strain of the warping (Benscoter; Cowper's kappa), Timoshenko-Goodier J(x), exact rectangle warping constant, warping restrained at both blank end faces; beyond the waist the load-spreading effective thickness at slope 1.3 for J, for the warping constant at 1/2 in the notch and 0.84 in the blank (fitted); wide waists warp in the plate mode (Gamma = w^3 t^3/144, modulus E/(1-nu^2)) (CalculiX solid models: see the README validation table)";
 const NO_SPREAD: &str = "load spreading: none needed (the contour never widens faster than slope 1/2)";
 
 /// The idealisations and models of a characterisation, as the numbers their text quotes

@@ -134,24 +134,33 @@ impl Profile {
             }
         }
         // Where the taper reaches the given half-sizes.
-        let reach = |s: f64| sp.from + (s - sp.size0) / sp.slope;
+        let reach = |s: f64| sp.reach(s, self.half_notch);
         let full = reach(self.far_half_size());
         let mut cuts: [f64; 4] = [self.half_notch, full, f64::INFINITY, f64::INFINITY];
         if let Contour::SphericalNeck { .. } = self.contour {
             cuts[2] = reach(self.h / 2.0);
         }
         cuts.sort_by(|a, b| a.total_cmp(b));
-        let taper = Map::Taper {
-            origin: sp.from,
-            size0: sp.size0,
-            slope: sp.slope,
+        // The taper is linear in the notch and again beyond it (at `blank_slope`); the notch
+        // end is one of the cuts.
+        let taper = |x0: f64| {
+            let origin = if x0 < self.half_notch {
+                sp.from
+            } else {
+                self.half_notch.max(sp.from)
+            };
+            Map::Taper {
+                origin,
+                size0: sp.taper(origin, self.half_notch),
+                slope: if x0 < self.half_notch { sp.slope } else { sp.blank_slope },
+            }
         };
         let mut x0 = sp.from;
         for &c in cuts.iter().filter(|&&c| c > sp.from && c.is_finite()) {
             let c = c.min(end);
             // The effective section follows the taper until `full`, then the blank (or, for a
             // contour that never steps, the geometry, which is then never below the taper).
-            let map = if x0 < full { taper } else { Map::Linear };
+            let map = if x0 < full { taper(x0) } else { Map::Linear };
             p.push(x0, c, map);
             x0 = x0.max(c);
         }

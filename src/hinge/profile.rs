@@ -23,6 +23,33 @@ pub struct Spread {
     pub size0: f64,
     /// Growth of the effective half-size per unit length (tan of the spreading half-angle).
     pub slope: f64,
+    /// The growth beyond the notch, in the blank proper (|x| > `half_notch`); `slope` unless
+    /// set by [`Profile::spread_into_blank`].
+    pub blank_slope: f64,
+}
+
+impl Spread {
+    /// Effective half-size of the taper at |x| = `u` ≥ `from` (before the real section caps it),
+    /// mm, for a notch of half-length `half_notch` (mm).
+    pub fn taper(&self, u: f64, half_notch: f64) -> f64 {
+        let knee = half_notch.max(self.from);
+        if u <= knee {
+            self.size0 + self.slope * (u - self.from)
+        } else {
+            self.size0 + self.slope * (knee - self.from) + self.blank_slope * (u - knee)
+        }
+    }
+
+    /// |x| at which the taper reaches the half-size `s` ≥ `size0` (mm).
+    pub fn reach(&self, s: f64, half_notch: f64) -> f64 {
+        let knee = half_notch.max(self.from);
+        let at_knee = self.taper(knee, half_notch);
+        if s <= at_knee {
+            self.from + (s - self.size0) / self.slope
+        } else {
+            knee + (s - at_knee) / self.blank_slope
+        }
+    }
 }
 
 /// Spreading slope: the effective half-size grows by at most 1/2 per unit length (half-angle
@@ -173,7 +200,13 @@ impl Profile {
     /// explains the beam model's over-stiffness (axial up to 19 %, bending up to 12 % for short
     /// necks with small fillets) to about 2–3 %; it is the classical load-spreading cone of
     /// St-Venant's principle with a half-angle of 26.6°.
-    pub fn spread(mut self, slope: f64) -> Profile {
+    pub fn spread(self, slope: f64) -> Profile {
+        self.spread_into_blank(slope, slope)
+    }
+
+    /// [`Profile::spread`] at `slope` in the notch and at `blank_slope` beyond it, in the blank
+    /// proper (|x| > `half_notch`), where the stress is no longer guided by the notch's contour.
+    pub fn spread_into_blank(mut self, slope: f64, blank_slope: f64) -> Profile {
         self.spread = None;
         if slope.is_nan() || slope <= 0.0 {
             return self;
@@ -203,7 +236,12 @@ impl Profile {
             }
             (hn, inside)
         };
-        self.spread = Some(Spread { from, size0, slope });
+        self.spread = Some(Spread {
+            from,
+            size0,
+            slope,
+            blank_slope,
+        });
         self
     }
 
@@ -237,7 +275,7 @@ impl Profile {
     /// model should give the hinge's flexibility to this region, not only to the notch.
     pub fn spread_reach(&self) -> f64 {
         match self.spread {
-            Some(sp) => (sp.from + (self.far_half_size() - sp.size0) / sp.slope).max(self.half_notch),
+            Some(sp) => sp.reach(self.far_half_size(), self.half_notch).max(self.half_notch),
             None => self.half_notch,
         }
     }
@@ -267,7 +305,7 @@ impl Profile {
         let u = x.abs();
         let s = self.half_size(u);
         match self.spread {
-            Some(sp) if u > sp.from => s.min(sp.size0 + sp.slope * (u - sp.from)),
+            Some(sp) if u > sp.from => s.min(sp.taper(u, self.half_notch)),
             _ => s,
         }
     }
