@@ -101,6 +101,15 @@ fillets (a Latin hypercube, log-uniform, over R/t 0.5-0.8, flat/t 0.3-1.5, w/t 8
 blank as above); then 6 narrow circular notches (the second set's ranges with w/t 0.5-1.1).
 
     python3 tools/ccx_heldout_doe.py --eighth > tools/ccx_heldout8_doe.json
+
+Ninth check set (`--ninth`, `tools/ccx_heldout9_doe.json`), drawn and committed after the warping
+constant's blank slope was fitted and before the eighth set was compared with flexfem, so that a
+law changed after seeing the eighth can still be checked once on rows no law has seen: numpy
+`default_rng(20261206)`, 8 circular notches and 8 corner-filleted leaves by the second set's
+ranges, 8 short wide corner-filleted leaves with sharp fillets and 8 narrow circular notches, both
+as in the eighth set.
+
+    python3 tools/ccx_heldout_doe.py --ninth > tools/ccx_heldout9_doe.json
 """
 
 import json
@@ -237,6 +246,14 @@ def doe8():
     return rows + [{**r, "regime": "lhs: narrow circular notch"} for r in circular2(rng, 6, (0.5, 1.1))]
 
 
+def doe9():
+    rng = np.random.default_rng(20261206)
+    rows = [{**r, "regime": "lhs"} for r in circular2(rng, 8)]
+    rows += [{**r, "regime": "lhs"} for r in corner2(rng, 8, [(0.5, 2.5), (0.3, 6.0)])]
+    rows += [{**r, "regime": "lhs: short wide leaf, sharp fillets"} for r in corner2(rng, 8, [(0.5, 0.8), (0.3, 1.5)], (8.0, 20.0))]
+    return rows + [{**r, "regime": "lhs: narrow circular notch"} for r in circular2(rng, 8, (0.5, 1.1))]
+
+
 def doe3():
     rng = np.random.default_rng(20261130)
     rows = [{**r, "regime": "lhs"} for r in corner2(rng, 8, [(0.5, 2.5), (0.3, 6.0)])]
@@ -247,7 +264,9 @@ def doe3():
 if __name__ == "__main__":
     import sys
 
-    if "--eighth" in sys.argv:
+    if "--ninth" in sys.argv:
+        print(json.dumps(doe9(), indent=1))
+    elif "--eighth" in sys.argv:
         print(json.dumps(doe8(), indent=1))
     elif "--seventh" in sys.argv:
         print(json.dumps(doe7(), indent=1))
