@@ -133,7 +133,13 @@
 //! minimax of the torsion error over the 116 corner-filleted rows of [`DOE1`] to [`DOE7`] and
 //! the first calibration); [`DOE8`] was not compared with flexfem before that law was
 //! committed, and was then compared once. So [`DOE8`] is held out from every law, and [`DOE7`]
-//! is now seen by the blank slope's fit.
+//! is now seen by the blank slope's fit. On [`DOE8`] the corner-filleted hinges meet the
+//! bending, torsion and axial targets on every row, its 8 short wide leaves with sharp fillets
+//! included (torsion −7.61 … +4.16 %), and miss the peak-stress target on one long leaf with
+//! sharp fillets (−5.28 %); the circular notches meet every target but torsion on 4 narrow
+//! notches (up to +12.70 %, too stiff, in the regime that warns). A ninth design
+//! (`tools/ccx_heldout9_doe.json`, `--ninth`, `default_rng(20261206)`) was committed before
+//! [`DOE8`] was compared, for any law changed after it.
 //!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
@@ -177,6 +183,9 @@ use doe6::DOE6;
 #[path = "hinge_ccx_reference/doe7.rs"]
 mod doe7;
 use doe7::DOE7;
+#[path = "hinge_ccx_reference/doe8.rs"]
+mod doe8;
+use doe8::DOE8;
 
 #[path = "hinge_ccx_reference/raw.rs"]
 mod raw;
@@ -388,7 +397,7 @@ fn every_reference_is_a_line_of_the_raw_results() {
 /// The fresh designs of experiments: file stem under `tools/` (`_doe.json` the design,
 /// `_results.jsonl` its CalculiX results), the references, their number, how many are circular
 /// notches.
-const DESIGNS: [(&str, &[CcxRef], usize, usize); 7] = [
+const DESIGNS: [(&str, &[CcxRef], usize, usize); 8] = [
     ("ccx_heldout", DOE1, 24, 12),
     ("ccx_heldout2", DOE2, 24, 12),
     ("ccx_heldout3", DOE3, 20, 4),
@@ -396,6 +405,7 @@ const DESIGNS: [(&str, &[CcxRef], usize, usize); 7] = [
     ("ccx_heldout5", DOE5, 24, 12),
     ("ccx_heldout6", DOE6, 24, 12),
     ("ccx_heldout7", DOE7, 32, 12),
+    ("ccx_heldout8", DOE8, 38, 18),
 ];
 
 /// The fresh rows are the committed designs of experiments, in their order
@@ -436,7 +446,27 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 
 /// The targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
-/// 12 circular notches of [`DOE7`], drawn and committed before the warping spread slope was
+/// 18 circular notches of [`DOE8`] (12 by the usual rule, 6 narrow: w/t 0.5–1.1), drawn and
+/// committed before the warping constant's blank slope was fitted, held out from every law and
+/// compared once with the frozen model (against the n = 4/6 extrapolations where a reference
+/// was re-solved at n = 6, n = 3/4 otherwise, and converged peaks): −0.43 … +2.02 /
+/// −6.43 … +12.70 / −0.88 … +2.56 / −0.84 … +2.89. **Torsion misses 10 % on 4 of 18, every one
+/// a narrow notch (w/t 0.58–0.76), too stiff**: R6.15/t1.8/w1.05 +12.70 %, R4.2/t1/w0.6
+/// +11.22 %, R3.35/t0.85/w0.65 +10.47 %, R3.15/t1/w0.7 +10.28 %: pinned at 12.8 %. The 14
+/// others read −6.43 … +7.71 % in torsion, the 9 outside the narrow regime (w/t > 1.1)
+/// −6.43 … +2.67 %. The narrow regime warns with its measured band
+/// ([`known_bias_warnings_state_the_measured_bands`]).
+const CIRCULAR_TOL: [f64; 4] = [3.0, 12.8, 5.0, 5.0];
+/// 52 circular notches: 40 of [`DOE3`] (4; t/R 0.10–0.40, w/t 0.80–12.6, blank w/h 0.11–2.3),
+/// [`DOE4`], [`DOE5`] and [`DOE6`] (12 each), each compared once with the model of its day and
+/// held out of every fit but the warping slope's, seen before the later changes (the torsion
+/// law's warping spreading after DOE4 and DOE6, the axial law after DOE5). Measured now:
+/// −0.21 … +2.33 / −8.31 … +8.99 / −0.96 … +3.84 / −1.59 … +3.64: every target met. (At their
+/// comparisons: DOE3 + DOE4 axial +0.33 … +4.30, DOE5 −0.10 … +1.56 / −7.40 … +8.29 /
+/// +1.13 … +4.23 / −0.97 … +4.15 against n = 4 peaks, DOE6 −0.21 … +2.33 / −6.54 … +8.87 /
+/// −0.96 … +3.29 / −1.59 … +3.29; before the warping spreading, DOE3 + DOE4 torsion
+/// −8.22 … +7.79.) And the 12 of [`DOE7`]:
+/// drawn and committed before the warping spread slope was
 /// fitted, held out from that law and compared once with the frozen model, then seen by the
 /// warping constant's blank slope fit. At that comparison, against the converged stiffnesses
 /// ([`converged_stiffness`]) and the converged peaks of [`PEAKS`], bending / torsion / axial /
@@ -448,39 +478,18 @@ const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
 /// where the warping constant is small and its spreading does not matter (with the earlier
 /// slope 1/2 the row reads +11.05 %, measured after the comparison); that regime now warns
 /// ([`known_bias_warnings_state_the_measured_bands`]).
-const CIRCULAR_TOL: [f64; 4] = [3.0, 11.4, 5.0, 5.0];
-/// 40 circular notches of [`DOE3`] (4; t/R 0.10–0.40, w/t 0.80–12.6, blank w/h 0.11–2.3),
-/// [`DOE4`], [`DOE5`] and [`DOE6`] (12 each), each compared once with the model of its day and
-/// held out of every fit but the warping slope's, seen before the later changes (the torsion
-/// law's warping spreading after DOE4 and DOE6, the axial law after DOE5). Measured now:
-/// −0.21 … +2.33 / −8.34 … +9.00 / −0.96 … +3.84 / −1.59 … +3.64: every target met. (At their
-/// comparisons: DOE3 + DOE4 axial +0.33 … +4.30, DOE5 −0.10 … +1.56 / −7.40 … +8.29 /
-/// +1.13 … +4.23 / −0.97 … +4.15 against n = 4 peaks, DOE6 −0.21 … +2.33 / −6.54 … +8.87 /
-/// −0.96 … +3.29 / −1.59 … +3.29; before the warping spreading, DOE3 + DOE4 torsion
-/// −8.22 … +7.79.)
-const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
-/// 20 corner-filleted hinges of [`DOE7`] (12 by the usual rule, 8 short wide leaves: w/l
-/// 3.0–7.2, l/t 2.0–3.5, R/t 0.52–1.14), held out from every law and compared once with the
-/// frozen model. At that comparison (against the n = 3/4 extrapolations): −1.32 … +2.26 /
-/// −13.97 … +6.68 / −5.16 … +0.73 / −1.75 … +3.87, torsion and axial missing on 1 of 20.
-/// Measured now, against the n = 4/6 extrapolations where the reference was re-solved at n = 6
-/// (every short or wide leaf of the design): −3.94 … +2.26 / −17.12 … +6.52 / −6.53 … +0.79 /
-/// −1.75 … +3.87. **Bending, torsion and axial miss on 1 of 20**: l3.15/R0.7/t1.35/w22.75/h7.5,
-/// the shortest, widest leaf with the sharpest fillets of the design (w/l 7.2, l/t 2.3, R/t
-/// 0.52), −3.94 / −17.12 / −6.53 % (all too soft): pinned at 4.0 / 17.2 / 6.6 %. Its own
-/// references are uncertain by more than elsewhere (n = 3/4 and n = 4/6 extrapolations differ
-/// by 3.2 / 3.7 / 1.4 %, and its root-refined eighth reads bending 1.0 % below the n = 4/6
-/// value), but not by the miss. The other 7 short wide leaves read −9.10 … +3.43 % in torsion.
-/// With the earlier slope 1/2 the design reads −19.62 … +6.38 % against the n = 3/4
-/// references (measured after the comparison): the refit took the short wide leaves most of
-/// the way, not all of it. The shortest, widest leaves with sharp fillets (R/t ≈ 0.5) in tall
-/// blanks stay too soft, as both earlier misses were; that regime now warns
-/// ([`known_bias_warnings_state_the_measured_bands`]).
-/// With the warping constant's blank slope (fitted on these rows among others, after this
-/// comparison) they read −3.94 … +2.26 / −7.53 … +6.92 / −6.53 … +0.79 / −1.75 … +3.87: torsion
-/// now meets 10 %; that leaf still misses bending and axial, pinned at 4.0 / 6.6 %.
-const CORNER_TOL: [f64; 4] = [4.0, 10.0, 6.6, 5.0];
-/// 52 corner-filleted hinges of [`DOE3`] (16; l/t 2.0–9.5, R/t 0.57–2.4 (12 of them ≥ 1.2),
+/// Both together, measured now: −0.21 … +2.33 / −8.31 … +11.39 / −0.96 … +3.84 / −1.59 … +3.64.
+const CIRCULAR_SEEN_TOL: [f64; 4] = [3.0, 11.4, 5.0, 5.0];
+/// 20 corner-filleted hinges of [`DOE8`] (12 by the usual rule, 8 short wide leaves with sharp
+/// fillets: w/l 3.3–9.5, l/t 2.0–2.9, R/t 0.52–0.78), drawn and committed before the warping
+/// constant's blank slope was fitted, held out from every law and compared once with the frozen
+/// model: −2.39 … +0.43 / −7.61 … +6.93 / −4.60 … +0.61 / −5.28 … +3.45. Bending, torsion and
+/// axial meet the targets on every row, the 8 short wide leaves included (−2.39 … +0.27 /
+/// −7.61 … +4.16 / −4.60 … −0.09; the same regime read −17.1 % torsion with the slope 0.57
+/// everywhere). **Peak stress misses 5 % on 1 of 20**: l8.6/R0.7/t1.35/w8.8/h5.25, a long leaf
+/// with sharp fillets (R/t 0.52), −5.28 % (too low: unconservative): pinned at 5.3 %.
+const CORNER_TOL: [f64; 4] = [3.0, 10.0, 5.0, 5.3];
+/// 72 corner-filleted hinges: 52 of [`DOE3`] (16; l/t 2.0–9.5, R/t 0.57–2.4 (12 of them ≥ 1.2),
 /// w/t 1.2–16.6, blank w/h 0.22–3.9, blank length 0.54–1.8 h), [`DOE4`], [`DOE5`] and [`DOE6`]
 /// (12 each), as the circular ones above (held out of the K_t refit and of the axial fit, seen
 /// by the warping slope's). Measured now: −3.94 … +1.20 / −11.35 … +5.41 / −4.31 … +1.03 /
@@ -501,8 +510,31 @@ const CORNER_TOL: [f64; 4] = [4.0, 10.0, 6.6, 5.0];
 /// law.)
 /// With the warping constant's blank slope (fitted on these rows among others): torsion
 /// −6.89 … +7.74 %, within 10 %; [`DOE6`]'s R/t 0.52 leaf still misses bending (−3.94 %),
-/// pinned at 4.0 %.
-const CORNER_SEEN_TOL: [f64; 4] = [4.0, 10.0, 5.0, 5.0];
+/// pinned at 4.0 %. And the 20 of [`DOE7`]:
+/// (12 by the usual rule, 8 short wide leaves: w/l
+/// 3.0–7.2, l/t 2.0–3.5, R/t 0.52–1.14), held out from every law and compared once with the
+/// frozen model. At that comparison (against the n = 3/4 extrapolations): −1.32 … +2.26 /
+/// −13.97 … +6.68 / −5.16 … +0.73 / −1.75 … +3.87, torsion and axial missing on 1 of 20.
+/// Measured now, against the n = 4/6 extrapolations where the reference was re-solved at n = 6
+/// (every short or wide leaf of the design): −3.94 … +2.26 / −17.12 … +6.52 / −6.53 … +0.79 /
+/// −1.75 … +3.87. **Bending, torsion and axial miss on 1 of 20**: l3.15/R0.7/t1.35/w22.75/h7.5,
+/// the shortest, widest leaf with the sharpest fillets of the design (w/l 7.2, l/t 2.3, R/t
+/// 0.52), −3.94 / −17.12 / −6.53 % (all too soft): pinned at 4.0 / 17.2 / 6.6 %. Its own
+/// references are uncertain by more than elsewhere (n = 3/4 and n = 4/6 extrapolations differ
+/// by 3.2 / 3.7 / 1.4 %, and its root-refined eighth reads bending 1.0 % below the n = 4/6
+/// value), but not by the miss. The other 7 short wide leaves read −9.10 … +3.43 % in torsion.
+/// With the earlier slope 1/2 the design reads −19.62 … +6.38 % against the n = 3/4
+/// references (measured after the comparison): the refit took the short wide leaves most of
+/// the way, not all of it. The shortest, widest leaves with sharp fillets (R/t ≈ 0.5) in tall
+/// blanks stay too soft, as both earlier misses were; that regime now warns
+/// ([`known_bias_warnings_state_the_measured_bands`]).
+/// With the warping constant's blank slope (fitted on these rows among others, after this
+/// comparison) they read −3.94 … +2.26 / −7.53 … +6.92 / −6.53 … +0.79 / −1.75 … +3.87: torsion
+/// now meets 10 %; that leaf still misses bending and axial.
+/// All 72 together, measured now: −3.94 … +2.26 / −7.53 … +7.74 / −6.53 … +1.03 /
+/// −1.77 … +3.87: the two R/t 0.52 leaves miss bending (−3.94 %), one of them axial (−6.53 %),
+/// pinned at 4.0 / 6.6 %; both are in the short wide regime, which warns.
+const CORNER_SEEN_TOL: [f64; 4] = [4.0, 10.0, 6.6, 5.0];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses and peaks:
 /// −0.41 … +2.45 / −7.73 … +9.74 / −0.72 … +3.25 / −1.39 … +3.45: every target met (axial
 /// −0.65 … +4.28 with E alone, against the n = 3/4 references; the axial share 0.6 is the
@@ -525,11 +557,11 @@ const CORNER_FIT_TOL: [f64; 4] = TARGET;
 /// short or wide corner-filleted, short or wide corner-filleted), and how closely the n = 3/4
 /// extrapolation agrees with the n = 4/6 one (bending, torsion, axial, %). Measured: within
 /// 0.76 / 1.13 / 0.42 % on the 62 others, every one with at most 30,000 unknowns at n = 4;
-/// within 3.16 / 3.67 / 1.44 % on all 35 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
-/// leaves, the worst the two short wide leaves with R/t 0.52, whose n = 3 mesh is too coarse
+/// within 3.16 / 3.67 / 1.44 % on all 46 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
+/// leaves (the eighth design's 11 within that), the worst the two short wide leaves with R/t 0.52, whose n = 3 mesh is too coarse
 /// for the asymptotic rate: there the n = 3/4 extrapolation over-corrects, and the tables take
 /// the n = 4/6 one ([`converged_stiffness`]).
-const N6_ROWS: [usize; 2] = [62, 35];
+const N6_ROWS: [usize; 2] = [62, 46];
 const EXTRAPOLATION_TOL: [f64; 3] = [0.8, 1.2, 0.45];
 const SHORT_WIDE_EXTRAPOLATION_TOL: [f64; 3] = [3.2, 3.7, 1.5];
 /// The nodal-averaged peak stress from n = 4 to n = 6 on those references, %: measured
@@ -580,25 +612,23 @@ fn fit_rows() -> Vec<Row> {
 /// [`DOE3`] to [`DOE6`] together (held out from the fits of the bending, axial and stress laws,
 /// each compared once with the model of its day, seen before the later changes and by the fit of
 /// the warping spread slope) against `seen`.
-fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 5], fresh: [f64; 4], seen: [f64; 4]) {
-    let designs = [DOE3, DOE4, DOE5, DOE6, DOE7].map(|d| rows(&d.iter().collect::<Vec<_>>()));
-    let [third, fourth, fifth, sixth, seventh] = designs.each_ref().map(|r| family(r, f));
-    assert_eq!(
-        [third.len(), fourth.len(), fifth.len(), sixth.len(), seventh.len()],
-        counts
-    );
-    let earlier: Vec<&Row> = third.into_iter().chain(fourth).chain(fifth).chain(sixth).collect();
+fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 6], fresh: [f64; 4], seen: [f64; 4]) {
+    let designs = [DOE3, DOE4, DOE5, DOE6, DOE7, DOE8].map(|d| rows(&d.iter().collect::<Vec<_>>()));
+    let per_design = designs.each_ref().map(|r| family(r, f));
+    assert_eq!(per_design.each_ref().map(|r| r.len()), counts);
+    let [third, fourth, fifth, sixth, seventh, eighth] = per_design;
+    let earlier: Vec<&Row> = [third, fourth, fifth, sixth, seventh].into_iter().flatten().collect();
     check(
-        &format!("{name}, DOE3 to DOE6"),
+        &format!("{name}, DOE3 to DOE7"),
         report(
-            &format!("{name} vs CalculiX, HELD OUT, seen by later changes, DOE3 to DOE6"),
+            &format!("{name} vs CalculiX, HELD OUT, seen by later changes, DOE3 to DOE7"),
             &earlier,
         ),
         seen,
     );
     check(
-        &format!("{name}, DOE7"),
-        report(&format!("{name} vs CalculiX, HELD OUT, DOE7"), &seventh),
+        &format!("{name}, DOE8"),
+        report(&format!("{name} vs CalculiX, HELD OUT, DOE8"), &eighth),
         fresh,
     );
 }
@@ -608,7 +638,7 @@ fn circular_notches_held_out() {
     held_out(
         "circular notches",
         circular,
-        [4, 12, 12, 12, 12],
+        [4, 12, 12, 12, 12, 18],
         CIRCULAR_TOL,
         CIRCULAR_SEEN_TOL,
     );
@@ -619,7 +649,7 @@ fn corner_filleted_held_out() {
     held_out(
         "corner-filleted hinges",
         corner,
-        [16, 12, 12, 12, 20],
+        [16, 12, 12, 12, 20, 20],
         CORNER_TOL,
         CORNER_SEEN_TOL,
     );
@@ -925,7 +955,7 @@ fn extrapolation_checked_on_finer_meshes() {
 fn converged_peaks_checked() {
     let k12 = json_lines(PEAKS);
     let at = |l: &serde_json::Value, q: &str| l[q].as_f64().unwrap();
-    // One line per circular and corner-filleted reference of the seven results files.
+    // One line per circular and corner-filleted reference of the results files.
     let mut sources = std::collections::HashMap::new();
     for l in &k12 {
         let file = l["source"].as_str().unwrap();
@@ -935,7 +965,7 @@ fn converged_peaks_checked() {
         .values()
         .map(|lines| lines.iter().filter(|l| l["type"] != "spherical_neck").count())
         .sum();
-    assert_eq!((sources.len(), k12.len(), flat_notches), (8, 218, 218));
+    assert_eq!((sources.len(), k12.len(), flat_notches), (9, 256, 256));
     let (n3, n6) = (json_lines("ccx_refine_n3_results.jsonl"), json_lines(N6_RESULTS));
     let (mut moved, mut bend) = ((f64::INFINITY, f64::NEG_INFINITY), (f64::INFINITY, f64::NEG_INFINITY));
     let mut on_flats = 0;

@@ -55,8 +55,8 @@ pub struct KnownBias {
 /// [`WIDE_LEAF_W_OVER_L`] (see the module docs).
 pub const SHORT_WIDE_LEAF: KnownBias = KnownBias {
     regime: "a short wide corner-filleted leaf (l/t ≤ 2.75, w/l ≥ 4)",
-    bands: [Some((-3.94, 0.54)), None, Some((-6.53, -1.00))],
-    models: 9,
+    bands: [Some((-3.94, 0.54)), None, Some((-6.53, -0.89))],
+    models: 15,
 };
 /// l/t at or below which a wide corner-filleted leaf is [`SHORT_WIDE_LEAF`].
 pub const SHORT_LEAF_L_OVER_T: f64 = 2.75;
@@ -66,8 +66,8 @@ pub const WIDE_LEAF_W_OVER_L: f64 = 4.0;
 /// Narrow circular notches, w/t ≤ [`NARROW_W_OVER_T`] (see the module docs).
 pub const NARROW_CIRCULAR: KnownBias = KnownBias {
     regime: "a narrow circular notch (w/t ≤ 1.1)",
-    bands: [None, Some((3.12, 11.39)), None],
-    models: 21,
+    bands: [None, Some((3.12, 12.70)), None],
+    models: 30,
 };
 /// w/t at or below which a circular notch is [`NARROW_CIRCULAR`].
 pub const NARROW_W_OVER_T: f64 = 1.1;
