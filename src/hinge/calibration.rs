@@ -24,16 +24,15 @@
 //!
 //! Outside these ranges the model is extrapolated; the result still comes out, with a warning.
 //!
-//! Inside them, two regimes are known to read further from the CalculiX models than the
-//! targets (bending 3 %, torsion 10 %, axial 5 %), and a hinge in either gets a warning that
-//! states the measured band ([`KnownBias`]; each band is asserted against the CalculiX rows of
-//! the regime by tests/hinge_ccx_reference.rs):
-//!
-//! * short wide corner-filleted leaves ([`SHORT_WIDE_LEAF`]: l/t ≤ 2.75 and w/l ≥ 4): too soft
-//!   in bending and axially, worst with sharp fillets (R/t ≈ 0.5) in tall blanks (their torsion,
-//!   up to 17 % too soft before the warping constant's blank slope of
-//!   [`super::torsion::solid_torsion_stiffness`], is now within the target);
-//! * narrow circular notches ([`NARROW_CIRCULAR`]: w/t ≤ 1.1): torsion too stiff.
+//! Inside them, one regime is known to read further from the CalculiX models than the
+//! targets (bending 3 %, torsion 10 %, axial 5 %), and a hinge there gets a warning that states
+//! the measured band ([`KnownBias`]; each band is asserted against the CalculiX rows of the
+//! regime by tests/hinge_ccx_reference.rs): short wide corner-filleted leaves
+//! ([`SHORT_WIDE_LEAF`]: l/t ≤ 2.75 and w/l ≥ 4), too soft in bending and axially, worst with
+//! sharp fillets (R/t ≈ 0.5) in tall blanks. (Their torsion, up to 17 % too soft before the
+//! warping constant's blank slope of [`super::torsion::solid_torsion_stiffness`], is within the
+//! target. Narrow circular notches, w/t ≤ 1.1, read torsion up to 12.7 % too stiff and warned
+//! until a compact waist stopped carrying warping restraint.)
 
 use super::profile::{Contour, Profile};
 
@@ -63,15 +62,6 @@ pub const SHORT_LEAF_L_OVER_T: f64 = 2.75;
 /// w/l at or above which a short corner-filleted leaf is [`SHORT_WIDE_LEAF`].
 pub const WIDE_LEAF_W_OVER_L: f64 = 4.0;
 
-/// Narrow circular notches, w/t ≤ [`NARROW_W_OVER_T`] (see the module docs).
-pub const NARROW_CIRCULAR: KnownBias = KnownBias {
-    regime: "a narrow circular notch (w/t ≤ 1.1)",
-    bands: [None, Some((3.12, 12.70)), None],
-    models: 30,
-};
-/// w/t at or below which a circular notch is [`NARROW_CIRCULAR`].
-pub const NARROW_W_OVER_T: f64 = 1.1;
-
 /// The known-bias regime a hinge profile lies in, if any (see the module docs).
 pub fn known_bias(profile: &Profile) -> Option<KnownBias> {
     let (w, t) = (profile.w, profile.t_min());
@@ -79,7 +69,6 @@ pub fn known_bias(profile: &Profile) -> Option<KnownBias> {
         Contour::CornerFilleted { l, .. } if l / t <= SHORT_LEAF_L_OVER_T && w / l >= WIDE_LEAF_W_OVER_L => {
             Some(SHORT_WIDE_LEAF)
         }
-        Contour::Circular { .. } if w / t <= NARROW_W_OVER_T => Some(NARROW_CIRCULAR),
         _ => None,
     }
 }
