@@ -12,7 +12,7 @@
 //! Mesh convergence. Every model was solved at n = 4 elements across the local thickness, and
 //! at n = 3 too (`tools/ccx_refine.py`, `tools/ccx_refine_n3_results.jsonl`): **the stiffnesses
 //! compared are the order-2 Richardson extrapolation of the pair** ([`CcxRef::converged`]).
-//! n = 4 alone is up to 4.6 % too stiff in bending, 4.1 % in torsion and 1.8 % in axial; the clamped
+//! n = 4 alone is up to 5.6 % too stiff in bending, 6.3 % in torsion and 2.1 % in axial; the clamped
 //! face's edges are singular, so the stiffnesses converge as h² (measured order 1.85–2.5), not
 //! as the h⁴ of smooth P2 problems that an earlier version of this file assumed from two hinges.
 //! The extrapolation agrees with the n = 4/6 one on the references re-solved at n = 6, and with
@@ -145,7 +145,11 @@
 //! (w/t ≲ 1.7, the Saint-Venant warping mode) stopped carrying Vlasov's warping restraint
 //! (`hinge::torsion::solid`: no number fitted; the narrow circular notches of [`DOE1`] to
 //! [`DOE8`], w/t ≤ 1.1, read +3.1 … +12.7 % with it and −4.8 … +1.1 % without). That law was
-//! committed before the ninth design was compared.
+//! committed before the ninth design ([`DOE9`]) was compared; [`DOE9`] was then compared once.
+//! So [`DOE9`] is held out from every law, and [`DOE8`] is seen by the compact-waist change. On
+//! [`DOE9`] every circular notch meets every target (the 8 narrow ones −4.09 … +1.30 % in
+//! torsion); the corner-filleted hinges meet bending and peak stress, and two short wide leaves
+//! with sharp fillets miss torsion (−10.10 %) and axial (−5.39 %, −6.68 %).
 //!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
@@ -192,6 +196,9 @@ use doe7::DOE7;
 #[path = "hinge_ccx_reference/doe8.rs"]
 mod doe8;
 use doe8::DOE8;
+#[path = "hinge_ccx_reference/doe9.rs"]
+mod doe9;
+use doe9::DOE9;
 
 #[path = "hinge_ccx_reference/raw.rs"]
 mod raw;
@@ -403,7 +410,7 @@ fn every_reference_is_a_line_of_the_raw_results() {
 /// The fresh designs of experiments: file stem under `tools/` (`_doe.json` the design,
 /// `_results.jsonl` its CalculiX results), the references, their number, how many are circular
 /// notches.
-const DESIGNS: [(&str, &[CcxRef], usize, usize); 8] = [
+const DESIGNS: [(&str, &[CcxRef], usize, usize); 9] = [
     ("ccx_heldout", DOE1, 24, 12),
     ("ccx_heldout2", DOE2, 24, 12),
     ("ccx_heldout3", DOE3, 20, 4),
@@ -412,6 +419,7 @@ const DESIGNS: [(&str, &[CcxRef], usize, usize); 8] = [
     ("ccx_heldout6", DOE6, 24, 12),
     ("ccx_heldout7", DOE7, 32, 12),
     ("ccx_heldout8", DOE8, 38, 18),
+    ("ccx_heldout9", DOE9, 32, 16),
 ];
 
 /// The fresh rows are the committed designs of experiments, in their order
@@ -452,20 +460,12 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 
 /// The targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
-/// 18 circular notches of [`DOE8`] (12 by the usual rule, 6 narrow: w/t 0.5–1.1), drawn and
-/// committed before the warping constant's blank slope was fitted, held out from every law and
-/// compared once with the frozen model (against the n = 4/6 extrapolations where a reference
-/// was re-solved at n = 6, n = 3/4 otherwise, and converged peaks): −0.43 … +2.02 /
-/// −6.43 … +12.70 / −0.88 … +2.56 / −0.84 … +2.89. **Torsion misses 10 % on 4 of 18, every one
-/// a narrow notch (w/t 0.58–0.76), too stiff**: R6.15/t1.8/w1.05 +12.70 %, R4.2/t1/w0.6
-/// +11.22 %, R3.35/t0.85/w0.65 +10.47 %, R3.15/t1/w0.7 +10.28 %: pinned at 12.8 %. The 14
-/// others read −6.43 … +7.71 % in torsion, the 9 outside the narrow regime (w/t > 1.1)
-/// −6.43 … +2.67 %. The narrow regime warns with its measured band
-/// ([`known_bias_warnings_state_the_measured_bands`]).
-/// After that comparison a compact waist (w/t ≲ 1.7) stopped carrying warping restraint
-/// (`hinge::torsion::solid`, no number fitted, chosen on the narrow notches of [`DOE1`] to
-/// [`DOE8`]): the 18 now read −0.43 … +2.02 / −6.43 … +1.90 / −0.88 … +2.56 / −0.84 … +2.89,
-/// every target met, the narrow ones −4.81 … +1.14 % in torsion.
+/// 16 circular notches of [`DOE9`] (8 by the second set's ranges, 8 narrow: w/t 0.5–1.1),
+/// drawn and committed before [`DOE8`] was compared and before a compact waist stopped carrying
+/// warping restraint, held out from every law and compared once with the frozen model:
+/// −0.08 … +1.54 / −7.02 … +1.30 / −0.02 … +3.35 / −1.38 … +3.08: every target met, the 8
+/// narrow notches −4.09 … +1.30 % in torsion (they read up to +12.7 % on the earlier designs
+/// before the change).
 const CIRCULAR_TOL: [f64; 4] = TARGET;
 /// 52 circular notches: 40 of [`DOE3`] (4; t/R 0.10–0.40, w/t 0.80–12.6, blank w/h 0.11–2.3),
 /// [`DOE4`], [`DOE5`] and [`DOE6`] (12 each), each compared once with the model of its day and
@@ -488,19 +488,33 @@ const CIRCULAR_TOL: [f64; 4] = TARGET;
 /// where the warping constant is small and its spreading does not matter (with the earlier
 /// slope 1/2 the row reads +11.05 %, measured after the comparison); that regime now warns
 /// ([`known_bias_warnings_state_the_measured_bands`]).
-/// Both together, with the warping constant's blank slope: −0.21 … +2.33 / −8.31 … +11.39 /
+/// [`DOE3`] to [`DOE7`] together, with the warping constant's blank slope: −0.21 … +2.33 / −8.31 … +11.39 /
 /// −0.96 … +3.84 / −1.59 … +3.64; since a compact waist carries no warping restraint (see
 /// [`CIRCULAR_TOL`]): torsion −8.31 … +5.77 %, every target met.
+/// The 18 circular notches of [`DOE8`] (12 by the usual rule, 6 narrow: w/t 0.5–1.1), drawn and
+/// committed before the warping constant's blank slope was fitted, held out from every law and
+/// compared once with the frozen model (against the n = 4/6 extrapolations where a reference
+/// was re-solved at n = 6, n = 3/4 otherwise, and converged peaks): −0.43 … +2.02 /
+/// −6.43 … +12.70 / −0.88 … +2.56 / −0.84 … +2.89. **Torsion misses 10 % on 4 of 18, every one
+/// a narrow notch (w/t 0.58–0.76), too stiff**: R6.15/t1.8/w1.05 +12.70 %, R4.2/t1/w0.6
+/// +11.22 %, R3.35/t0.85/w0.65 +10.47 %, R3.15/t1/w0.7 +10.28 %: pinned at 12.8 %. The 14
+/// others read −6.43 … +7.71 % in torsion, the 9 outside the narrow regime (w/t > 1.1)
+/// −6.43 … +2.67 %. The narrow regime warns with its measured band
+/// ([`known_bias_warnings_state_the_measured_bands`]).
+/// After that comparison a compact waist (w/t ≲ 1.7) stopped carrying warping restraint
+/// (`hinge::torsion::solid`, no number fitted, chosen on the narrow notches of [`DOE1`] to
+/// [`DOE8`]): the 18 now read −0.43 … +2.02 / −6.43 … +1.90 / −0.88 … +2.56 / −0.84 … +2.89,
+/// every target met, the narrow ones −4.81 … +1.14 % in torsion.
 const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
-/// 20 corner-filleted hinges of [`DOE8`] (12 by the usual rule, 8 short wide leaves with sharp
-/// fillets: w/l 3.3–9.5, l/t 2.0–2.9, R/t 0.52–0.78), drawn and committed before the warping
-/// constant's blank slope was fitted, held out from every law and compared once with the frozen
-/// model: −2.39 … +0.43 / −7.61 … +6.93 / −4.60 … +0.61 / −5.28 … +3.45. Bending, torsion and
-/// axial meet the targets on every row, the 8 short wide leaves included (−2.39 … +0.27 /
-/// −7.61 … +4.16 / −4.60 … −0.09; the same regime read −17.1 % torsion with the slope 0.57
-/// everywhere). **Peak stress misses 5 % on 1 of 20**: l8.6/R0.7/t1.35/w8.8/h5.25, a long leaf
-/// with sharp fillets (R/t 0.52), −5.28 % (too low: unconservative): pinned at 5.3 %.
-const CORNER_TOL: [f64; 4] = [3.0, 10.0, 5.0, 5.3];
+/// 16 corner-filleted hinges of [`DOE9`] (8 by the second set's ranges, 8 short wide leaves
+/// with sharp fillets: w/l 4.2–9.4, l/t 2.0–2.9, R/t 0.52–0.77), held out from every law and
+/// compared once with the frozen model: −2.27 … +0.70 / −10.10 … +7.07 / −6.68 … +0.78 /
+/// −1.12 … +3.23. **Torsion and axial miss on short wide leaves with sharp fillets**:
+/// l2.3/R0.8/t1.15/w13.75/h6.8 (the tallest blank of the eight, h/t 5.9) −10.10 % torsion and
+/// −5.39 % axial, l2.5/R0.7/t1.25/w23.6/h5.25 (w/l 9.4) −6.68 % axial, all too soft: pinned at
+/// 10.2 / 6.7 %. Bending and peak stress meet the targets. The regime warns with its measured
+/// band ([`known_bias_warnings_state_the_measured_bands`]).
+const CORNER_TOL: [f64; 4] = [3.0, 10.2, 6.7, 5.0];
 /// 72 corner-filleted hinges: 52 of [`DOE3`] (16; l/t 2.0–9.5, R/t 0.57–2.4 (12 of them ≥ 1.2),
 /// w/t 1.2–16.6, blank w/h 0.22–3.9, blank length 0.54–1.8 h), [`DOE4`], [`DOE5`] and [`DOE6`]
 /// (12 each), as the circular ones above (held out of the K_t refit and of the axial fit, seen
@@ -546,7 +560,17 @@ const CORNER_TOL: [f64; 4] = [3.0, 10.0, 5.0, 5.3];
 /// All 72 together, measured now: −3.94 … +2.26 / −7.53 … +7.74 / −6.53 … +1.03 /
 /// −1.77 … +3.87: the two R/t 0.52 leaves miss bending (−3.94 %), one of them axial (−6.53 %),
 /// pinned at 4.0 / 6.6 %; both are in the short wide regime, which warns.
-const CORNER_SEEN_TOL: [f64; 4] = [4.0, 10.0, 6.6, 5.0];
+/// And the 20 corner-filleted hinges of [`DOE8`] (12 by the usual rule, 8 short wide leaves with sharp
+/// fillets: w/l 3.3–9.5, l/t 2.0–2.9, R/t 0.52–0.78), drawn and committed before the warping
+/// constant's blank slope was fitted, held out from every law and compared once with the frozen
+/// model: −2.39 … +0.43 / −7.61 … +6.93 / −4.60 … +0.61 / −5.28 … +3.45. Bending, torsion and
+/// axial meet the targets on every row, the 8 short wide leaves included (−2.39 … +0.27 /
+/// −7.61 … +4.16 / −4.60 … −0.09; the same regime read −17.1 % torsion with the slope 0.57
+/// everywhere). **Peak stress misses 5 % on 1 of 20**: l8.6/R0.7/t1.35/w8.8/h5.25, a long leaf
+/// with sharp fillets (R/t 0.52), −5.28 % (too low: unconservative): pinned at 5.3 %.
+/// (Unchanged since, as a compact waist stopped carrying warping restraint: torsion
+/// −7.61 … +6.93 %.)
+const CORNER_SEEN_TOL: [f64; 4] = [4.0, 10.0, 6.6, 5.3];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses and peaks:
 /// −0.41 … +2.45 / −7.73 … +6.80 / −0.72 … +3.25 / −1.39 … +3.45: every target met (torsion
 /// −7.73 … +9.74 while compact waists carried warping restraint; axial
@@ -570,16 +594,16 @@ const CORNER_FIT_TOL: [f64; 4] = TARGET;
 /// short or wide corner-filleted, short or wide corner-filleted), and how closely the n = 3/4
 /// extrapolation agrees with the n = 4/6 one (bending, torsion, axial, %). Measured: within
 /// 0.76 / 1.13 / 0.42 % on the 62 others, every one with at most 30,000 unknowns at n = 4;
-/// within 3.16 / 3.67 / 1.44 % on all 46 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
-/// leaves (the eighth design's 11 within that), the worst the two short wide leaves with R/t 0.52, whose n = 3 mesh is too coarse
+/// within 3.16 / 3.67 / 1.44 % on all 55 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
+/// leaves (the eighth and ninth designs' 20 within that), the worst the two short wide leaves with R/t 0.52, whose n = 3 mesh is too coarse
 /// for the asymptotic rate: there the n = 3/4 extrapolation over-corrects, and the tables take
 /// the n = 4/6 one ([`converged_stiffness`]).
-const N6_ROWS: [usize; 2] = [62, 46];
+const N6_ROWS: [usize; 2] = [62, 55];
 const EXTRAPOLATION_TOL: [f64; 3] = [0.8, 1.2, 0.45];
 const SHORT_WIDE_EXTRAPOLATION_TOL: [f64; 3] = [3.2, 3.7, 1.5];
 /// The nodal-averaged peak stress from n = 4 to n = 6 on those references, %: measured
-/// −1.46 … +7.30.
-const PEAK_N4_TO_N6: (f64, f64) = (-1.6, 7.4);
+/// −4.13 … +7.30 (−1.46 … +7.30 before the ninth design's short wide leaves).
+const PEAK_N4_TO_N6: (f64, f64) = (-4.2, 7.4);
 /// The converged peaks, one line per circular and corner-filleted reference.
 const PEAKS: &str = "ccx_peak_stress_k12.jsonl";
 /// The same solved at k = 16 (the 103 smaller models, 52 corner-filleted), and how far the peak
@@ -625,11 +649,11 @@ fn fit_rows() -> Vec<Row> {
 /// [`DOE3`] to [`DOE6`] together (held out from the fits of the bending, axial and stress laws,
 /// each compared once with the model of its day, seen before the later changes and by the fit of
 /// the warping spread slope) against `seen`.
-fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 6], fresh: [f64; 4], seen: [f64; 4]) {
-    let designs = [DOE3, DOE4, DOE5, DOE6, DOE7, DOE8].map(|d| rows(&d.iter().collect::<Vec<_>>()));
+fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 7], fresh: [f64; 4], seen: [f64; 4]) {
+    let designs = [DOE3, DOE4, DOE5, DOE6, DOE7, DOE8, DOE9].map(|d| rows(&d.iter().collect::<Vec<_>>()));
     let per_design = designs.each_ref().map(|r| family(r, f));
     assert_eq!(per_design.each_ref().map(|r| r.len()), counts);
-    let [third, fourth, fifth, sixth, seventh, eighth] = per_design;
+    let [third, fourth, fifth, sixth, seventh, eighth, ninth] = per_design;
     let earlier: Vec<&Row> = [third, fourth, fifth, sixth, seventh].into_iter().flatten().collect();
     check(
         &format!("{name}, DOE3 to DOE7"),
@@ -641,7 +665,15 @@ fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 6], fresh: [f
     );
     check(
         &format!("{name}, DOE8"),
-        report(&format!("{name} vs CalculiX, HELD OUT, DOE8"), &eighth),
+        report(
+            &format!("{name} vs CalculiX, HELD OUT, seen by later changes, DOE8"),
+            &eighth,
+        ),
+        seen,
+    );
+    check(
+        &format!("{name}, DOE9"),
+        report(&format!("{name} vs CalculiX, HELD OUT, DOE9"), &ninth),
         fresh,
     );
 }
@@ -651,7 +683,7 @@ fn circular_notches_held_out() {
     held_out(
         "circular notches",
         circular,
-        [4, 12, 12, 12, 12, 18],
+        [4, 12, 12, 12, 12, 18, 16],
         CIRCULAR_TOL,
         CIRCULAR_SEEN_TOL,
     );
@@ -662,7 +694,7 @@ fn corner_filleted_held_out() {
     held_out(
         "corner-filleted hinges",
         corner,
-        [16, 12, 12, 12, 20, 20],
+        [16, 12, 12, 12, 20, 20, 16],
         CORNER_TOL,
         CORNER_SEEN_TOL,
     );
@@ -826,7 +858,7 @@ fn peak_stress_mesh_convergence() {
 /// solved at n = 3 as well as n = 4, and the stiffnesses compared are the order-2 Richardson
 /// extrapolation of the pair ([`CcxRef::converged`]). Checked here on the data alone, no flexfem
 /// number involved:
-/// * n = 4 is not converged: up to +4.63 % stiff in bending against the extrapolation (the
+/// * n = 4 is not converged: up to +5.64 % stiff in bending against the extrapolation (the
 ///   earlier claim, "within about 0.3 %", came from two hinges);
 /// * on the references re-solved at n = 6 (`tools/ccx_refine_n6_results.jsonl`: every one with
 ///   at most 30,000 unknowns at n = 4, then the short or wide corner-filleted leaves) the
@@ -868,7 +900,7 @@ fn extrapolation_checked_on_finer_meshes() {
     }
     println!("n = 4 above the n = 3/4 extrapolation by up to {off:.2?} % (bending, torsion, axial)");
     assert!(
-        (4.5..4.8).contains(&off[0]),
+        (5.5..5.8).contains(&off[0]),
         "bending: n = 4 off by up to {:.2} %",
         off[0]
     );
@@ -955,8 +987,8 @@ fn extrapolation_checked_on_finer_meshes() {
 ///   ρ/4 of the waist), on the surface;
 /// * k = 12 → 16 on the references re-solved at k = 16 ([`PEAKS_K16`]) moves the peak by less
 ///   than [`PEAK_K12_TO_K16`];
-/// * the n = 4 peaks of the full models lie below the converged ones: measured −0.46 … +9.26 %
-///   (converged above n = 4; worst l4.5/R0.75/t1.5/w4.5, a corner-filleted FIT row), and the
+/// * the n = 4 peaks of the full models mostly lie below the converged ones: measured
+///   −2.49 … +9.26 % (converged above n = 4 by up to 9.26 %; worst l4.5/R0.75/t1.5/w4.5, a corner-filleted FIT row), and the
 ///   small-fillet hinge's full-model peaks at n = 6, 8, 10 (7.335, 7.382, 7.449) approach its
 ///   converged 7.495 from below;
 /// * the eighth's compliant-axis stiffness (2/θ, its rotation being half the whole hinge's
@@ -978,7 +1010,7 @@ fn converged_peaks_checked() {
         .values()
         .map(|lines| lines.iter().filter(|l| l["type"] != "spherical_neck").count())
         .sum();
-    assert_eq!((sources.len(), k12.len(), flat_notches), (9, 256, 256));
+    assert_eq!((sources.len(), k12.len(), flat_notches), (10, 288, 288));
     let (n3, n6) = (json_lines("ccx_refine_n3_results.jsonl"), json_lines(N6_RESULTS));
     let (mut moved, mut bend) = ((f64::INFINITY, f64::NEG_INFINITY), (f64::INFINITY, f64::NEG_INFINITY));
     let mut on_flats = 0;
@@ -1017,7 +1049,7 @@ fn converged_peaks_checked() {
     }
     println!("{on_flats} corner-filleted peaks on the flat, the others on the fillet arc");
     println!("n = 4 peak → converged {:+.2} … {:+.2} %; eighth's bending at least {:+.2} % from the full model's converged, at most {:+.2} % from its n = 4", moved.0, moved.1, bend.0, bend.1);
-    assert!(moved.0 > -0.6 && moved.1 < 9.5, "n = 4 → converged {moved:?}");
+    assert!(moved.0 > -2.6 && moved.1 < 9.5, "n = 4 → converged {moved:?}");
     assert!(
         bend.0 > -EIGHTH_BEND_TOL && bend.1 < EIGHTH_BEND_TOL,
         "eighth's bending {bend:?}"

@@ -164,9 +164,8 @@ fn known_bias_regimes_warn_with_the_measured_band() {
     let notch = |w: f64| {
         format!(r#"{{"type": "circular_notch", "R": 11.15, "t": 3.25, "w": {w}, "h": 24.7, "blank_length": 18.5}}"#)
     };
-    // The leaf's torsion has been within its target since the warping constant's blank slope;
-    // its bending and axial stiffness are not.
-    assert_eq!(SHORT_WIDE_LEAF.bands.map(|b| b.is_some()), [true, false, true]);
+    // Bending, torsion (one leaf of the ninth design at −10.1 %) and axial all leave the target.
+    assert_eq!(SHORT_WIDE_LEAF.bands.map(|b| b.is_some()), [true, true, true]);
     for (hinge, bias) in [
         (leaf(3.15), Some(SHORT_WIDE_LEAF)),
         (leaf(3.78), None),
