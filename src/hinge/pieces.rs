@@ -134,7 +134,7 @@ impl Profile {
             }
         }
         // Where the taper reaches the given half-sizes.
-        let reach = |s: f64| sp.reach(s, self.half_notch);
+        let reach = |s: f64| sp.reach(s);
         let full = reach(self.far_half_size());
         let mut cuts: [f64; 4] = [self.half_notch, full, f64::INFINITY, f64::INFINITY];
         if let Contour::SphericalNeck { .. } = self.contour {
@@ -142,17 +142,17 @@ impl Profile {
         }
         cuts.sort_by(|a, b| a.total_cmp(b));
         // The taper is linear in the notch and again beyond it (at `blank_slope`); the notch
-        // end is one of the cuts.
+        // end, `knee`, is one of the cuts.
         let taper = |x0: f64| {
-            let origin = if x0 < self.half_notch {
-                sp.from
+            let (origin, slope) = if x0 < sp.knee {
+                (sp.from, sp.slope)
             } else {
-                self.half_notch.max(sp.from)
+                (sp.knee, sp.blank_slope)
             };
             Map::Taper {
                 origin,
-                size0: sp.taper(origin, self.half_notch),
-                slope: if x0 < self.half_notch { sp.slope } else { sp.blank_slope },
+                size0: sp.taper(origin),
+                slope,
             }
         };
         let mut x0 = sp.from;

@@ -23,31 +23,30 @@ pub struct Spread {
     pub size0: f64,
     /// Growth of the effective half-size per unit length (tan of the spreading half-angle).
     pub slope: f64,
-    /// The growth beyond the notch, in the blank proper (|x| > `half_notch`); `slope` unless
-    /// set by [`Profile::spread_into_blank`].
+    /// |x| from which the growth is `blank_slope`: the notch end (the blank proper), mm.
+    pub knee: f64,
+    /// The growth beyond `knee`; `slope` unless set by [`Profile::spread_into_blank`].
     pub blank_slope: f64,
 }
 
 impl Spread {
     /// Effective half-size of the taper at |x| = `u` ≥ `from` (before the real section caps it),
-    /// mm, for a notch of half-length `half_notch` (mm).
-    pub fn taper(&self, u: f64, half_notch: f64) -> f64 {
-        let knee = half_notch.max(self.from);
-        if u <= knee {
+    /// mm.
+    pub fn taper(&self, u: f64) -> f64 {
+        if u <= self.knee {
             self.size0 + self.slope * (u - self.from)
         } else {
-            self.size0 + self.slope * (knee - self.from) + self.blank_slope * (u - knee)
+            self.size0 + self.slope * (self.knee - self.from) + self.blank_slope * (u - self.knee)
         }
     }
 
     /// |x| at which the taper reaches the half-size `s` ≥ `size0` (mm).
-    pub fn reach(&self, s: f64, half_notch: f64) -> f64 {
-        let knee = half_notch.max(self.from);
-        let at_knee = self.taper(knee, half_notch);
+    pub fn reach(&self, s: f64) -> f64 {
+        let at_knee = self.taper(self.knee);
         if s <= at_knee {
             self.from + (s - self.size0) / self.slope
         } else {
-            knee + (s - at_knee) / self.blank_slope
+            self.knee + (s - at_knee) / self.blank_slope
         }
     }
 }
@@ -240,6 +239,7 @@ impl Profile {
             from,
             size0,
             slope,
+            knee: hn,
             blank_slope,
         });
         self
@@ -275,7 +275,7 @@ impl Profile {
     /// model should give the hinge's flexibility to this region, not only to the notch.
     pub fn spread_reach(&self) -> f64 {
         match self.spread {
-            Some(sp) => sp.reach(self.far_half_size(), self.half_notch).max(self.half_notch),
+            Some(sp) => sp.reach(self.far_half_size()).max(self.half_notch),
             None => self.half_notch,
         }
     }
@@ -305,7 +305,7 @@ impl Profile {
         let u = x.abs();
         let s = self.half_size(u);
         match self.spread {
-            Some(sp) if u > sp.from => s.min(sp.taper(u, self.half_notch)),
+            Some(sp) if u > sp.from => s.min(sp.taper(u)),
             _ => s,
         }
     }

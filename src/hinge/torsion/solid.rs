@@ -117,18 +117,41 @@ fn warping_shear(w: f64, t: f64, nu: f64) -> WarpingShear {
     }
 }
 
+/// What both entry points hand to Benscoter's model: the profile the Saint-Venant torque sees
+/// (spread at [`TORSION_SPREAD_SLOPE`]), the one the warping constant sees (the bending's
+/// [`SPREAD_SLOPE`] in the notch, [`WARPING_BLANK_SLOPE`] in the blank), the warping modulus
+/// F·E and G (MPa), and the warping shear (see the module docs).
+struct Law {
+    saint_venant: Profile,
+    warping: Profile,
+    e_warping: f64,
+    g: f64,
+    shear: WarpingShear,
+}
+
+impl Law {
+    fn new(profile: &Profile, e: f64, nu: f64) -> Law {
+        let (w, t) = (profile.w, profile.t_min());
+        Law {
+            saint_venant: profile.spread(TORSION_SPREAD_SLOPE),
+            warping: profile.spread_into_blank(SPREAD_SLOPE, WARPING_BLANK_SLOPE),
+            e_warping: warping_modulus_factor(w, t, nu) * e,
+            g: e / (2.0 * (1.0 + nu)),
+            shear: warping_shear(w, t, nu),
+        }
+    }
+}
+
 /// Torsional stiffness T/θ (N·mm/rad) of a rectangular-section hinge between its blank end
 /// faces, `e` in MPa: Benscoter's model with plate-mode warping and torsional load spreading.
 pub fn solid_torsion_stiffness(profile: &Profile, e: f64, nu: f64) -> f64 {
-    let (w, t) = (profile.w, profile.t_min());
-    let f = warping_modulus_factor(w, t, nu);
-    let g = e / (2.0 * (1.0 + nu));
+    let law = Law::new(profile, e, nu);
     benscoter_torsion_stiffness(
-        &profile.spread(TORSION_SPREAD_SLOPE),
-        Some(&profile.spread_into_blank(SPREAD_SLOPE, WARPING_BLANK_SLOPE)),
-        f * e,
-        g,
-        warping_shear(w, t, nu),
+        &law.saint_venant,
+        Some(&law.warping),
+        law.e_warping,
+        law.g,
+        law.shear,
         TorsionMesh::default(),
     )
 }
@@ -136,16 +159,14 @@ pub fn solid_torsion_stiffness(profile: &Profile, e: f64, nu: f64) -> f64 {
 /// [`solid_torsion_stiffness`] of a hinge in its blank and of its notch alone (`notch`: the same
 /// profile with no blank), sharing one mesh ([`benscoter_torsion_pair`]).
 pub fn solid_torsion_pair(profile: &Profile, notch: &Profile, e: f64, nu: f64) -> (f64, f64) {
-    let (w, t) = (profile.w, profile.t_min());
-    let f = warping_modulus_factor(w, t, nu);
-    let g = e / (2.0 * (1.0 + nu));
+    let law = Law::new(profile, e, nu);
     benscoter_torsion_pair(
-        &profile.spread(TORSION_SPREAD_SLOPE),
-        Some(&profile.spread_into_blank(SPREAD_SLOPE, WARPING_BLANK_SLOPE)),
+        &law.saint_venant,
+        Some(&law.warping),
         &notch.spread(TORSION_SPREAD_SLOPE),
-        f * e,
-        g,
-        warping_shear(w, t, nu),
+        law.e_warping,
+        law.g,
+        law.shear,
         TorsionMesh::default(),
     )
 }
