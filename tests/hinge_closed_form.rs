@@ -2,7 +2,7 @@
 //! (blank 0, Euler–Bernoulli, geometry inside each formula's assumptions).
 
 use flexfem::hinge::closed_form as cf;
-use flexfem::hinge::integrate::{flex_integrals, Moduli, Quadrature};
+use flexfem::hinge::integrate::{flex_integrals, BlankRestraint, Moduli, Quadrature};
 use flexfem::hinge::{Contour, HingeError, Profile};
 
 const E: f64 = 72_000.0;
@@ -19,6 +19,7 @@ fn eb() -> Moduli {
         fillet_from: 0.0,
         e_axial: E,
         e_axial_fillet: E,
+        blank: BlankRestraint::default(),
     }
 }
 

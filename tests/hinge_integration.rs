@@ -1,6 +1,6 @@
 //! Quadrature convergence and structural checks of the flexibility integration.
 
-use flexfem::hinge::integrate::{flex_integrals, Moduli, Quadrature};
+use flexfem::hinge::integrate::{flex_integrals, BlankRestraint, Moduli, Quadrature};
 use flexfem::hinge::{segment_compliance, HingeSpec};
 use flexfem::material::Material;
 
@@ -66,6 +66,7 @@ fn quadrature_converged_to_1e_6() {
         fillet_from: 0.0,
         e_axial: m.e,
         e_axial_fillet: m.e,
+        blank: BlankRestraint::default(),
     };
     for spec in specs() {
         let p = spec.profile().unwrap();

@@ -134,7 +134,7 @@ fn a_mechanism_through_inner_nodes_names_their_hinge() {
         1,
         &[
             "mechanism",
-            "node 2 u",
+            "node 2 ",
             "rotation about [0, 0, 1] through [0, 0, 0]",
             "rotation about [0, 1, 0] through [0, 0, 0]",
             "nodes 2, 3, 4 are inner nodes of the segmented hinge elements[0]",

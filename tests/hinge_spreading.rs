@@ -2,7 +2,7 @@
 //! half-size follows the contour until its slope reaches 1/2, then grows linearly at 1/2 until
 //! it meets the blank. Expected values are worked by hand from the families' contours.
 
-use flexfem::hinge::integrate::{flex_integrals, Moduli, Quadrature};
+use flexfem::hinge::integrate::{flex_integrals, BlankRestraint, Moduli, Quadrature};
 use flexfem::hinge::profile::SPREAD_SLOPE;
 use flexfem::hinge::{Contour, Profile};
 
@@ -62,6 +62,7 @@ fn quadrature_of_tapers_is_converged() {
         fillet_from: 0.0,
         e_axial: 72000.0,
         e_axial_fillet: 72000.0,
+        blank: BlankRestraint::default(),
     };
     let profiles = [
         Profile::rectangular(Contour::Circular { r: 8.0, t: 2.0 }, 10.0, 10.0, 20.0).unwrap(),

@@ -59,11 +59,13 @@ impl Default for Quadrature {
 }
 
 /// Elastic constants used by the integration; `e_bend` (compliant-axis bending in the notch
-/// region) and `e_axial` differ from `e` by the notch's solid-model factors
-/// ([`super::solid_effects`]).
+/// region) and `e_axial` differ from `e` by the notch's solid-model factors, and in the blank's
+/// spreading zone by its plane-strain restraint ([`super::solid_effects`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Moduli {
-    /// Young's modulus for stiff-axis bending, and for everything beyond the notch, MPa.
+    /// Young's modulus for stiff-axis bending, and for everything beyond the notch but the
+    /// compliant-axis bending and axial moduli of the blank's spreading zone ([`Moduli::blank`]),
+    /// MPa.
     pub e: f64,
     /// Effective modulus for compliant-axis bending, MPa.
     pub e_bend: f64,
@@ -83,31 +85,41 @@ pub struct Moduli {
     pub e_axial: f64,
     /// Effective axial modulus on the corner fillets (where `e_bend_fillet` applies), MPa.
     pub e_axial_fillet: f64,
+    /// The plane-strain restraint of the blank's spreading zone
+    /// ([`super::solid_effects::plane_strain_restraint`]; 0: none), with the hinge's width `w`
+    /// and blank height `h` (mm) that [`super::solid_effects::blank_restraint`] takes.
+    pub blank: BlankRestraint,
+}
+
+/// The plane-strain restraint of a hinge's blank beyond the notch
+/// ([`super::solid_effects::blank_restraint`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BlankRestraint {
+    /// [`super::solid_effects::plane_strain_restraint`] of the hinge (0: none).
+    pub restraint: f64,
+    /// Width, mm.
+    pub w: f64,
+    /// Blank height, mm.
+    pub h: f64,
 }
 
 impl Moduli {
-    /// The compliant-axis bending modulus at x, MPa.
+    /// The compliant-axis bending and the axial modulus at x, where the effective section is
+    /// `size` thick ([`super::Profile::section_size`]), MPa.
     #[inline]
-    pub fn e_bend_at(&self, x: f64) -> f64 {
-        self.pick(x, self.e_bend, self.e_bend_fillet)
-    }
-
-    /// The axial modulus at x, MPa.
-    #[inline]
-    pub fn e_axial_at(&self, x: f64) -> f64 {
-        self.pick(x, self.e_axial, self.e_axial_fillet)
-    }
-
-    /// `notch` in the notch region, `fillet` on the corner fillets, `e` beyond.
-    #[inline]
-    fn pick(&self, x: f64, notch: f64, fillet: f64) -> f64 {
+    pub fn bend_axial_at(&self, x: f64, size: f64) -> (f64, f64) {
         let u = x.abs();
         if u >= self.notch_half {
-            self.e
+            let b = self.blank;
+            if b.restraint == 0.0 {
+                return (self.e, self.e);
+            }
+            let p = super::solid_effects::blank_restraint(b.restraint, size, b.w, b.h);
+            (self.e * p, self.e * super::solid_effects::axial_restraint(p))
         } else if u >= self.fillet_from {
-            fillet
+            (self.e_bend_fillet, self.e_axial_fillet)
         } else {
-            notch
+            (self.e_bend, self.e_axial)
         }
     }
 }
@@ -308,10 +320,11 @@ fn integrate(
                     },
                 };
                 quadrature_points(a, b, map, panels, |x: f64, wgt: f64| {
-                    let s = memo.at(x);
-                    let e_bend = m.e_bend_at(x);
+                    let size = profile.section_size(x);
+                    let s = memo.of_size(size);
+                    let (e_bend, e_axial) = m.bend_axial_at(x, size);
                     let f = [
-                        wgt / (m.e_axial_at(x) * s.area),
+                        wgt / (e_axial * s.area),
                         wgt / (m.g * s.shear_area_bend_off),
                         wgt / (m.g * s.shear_area_bend),
                         wgt / (m.g * s.j),

@@ -59,7 +59,7 @@ pub use element::{
     flex_chain, flex_region, hinge_element, hinge_peak_stress, spreading_region, HingeRegion, PeakStressTable,
 };
 pub use error::HingeError;
-use integrate::{flex_integrals, flex_integrals_with_notch, Moduli, Quadrature};
+use integrate::{flex_integrals, flex_integrals_with_notch, BlankRestraint, Moduli, Quadrature};
 pub use notes::{Calibration, ClosedForms, LoadSpreading, ModelNotes};
 pub use profile::{Contour, Profile};
 pub use section::Section;
@@ -151,6 +151,11 @@ fn moduli(profile: &Profile, m: &Material) -> Moduli {
         fillet_from: solid_effects::fillet_from(profile),
         e_axial: m.e * axial / g,
         e_axial_fillet: m.e * axial / (g * solid_effects::fillet_factor(profile)),
+        blank: BlankRestraint {
+            restraint: solid_effects::plane_strain_restraint(profile, m.nu),
+            w: profile.w,
+            h: profile.h,
+        },
     }
 }
 

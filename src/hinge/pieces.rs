@@ -139,6 +139,10 @@ impl Profile {
         let mut cuts: [f64; 4] = [self.half_notch, full, f64::INFINITY, f64::INFINITY];
         if let Contour::SphericalNeck { .. } = self.contour {
             cuts[2] = reach(self.h / 2.0);
+        } else if self.w < self.h && self.w / 2.0 > sp.size0 {
+            // Where the effective thickness reaches the width: the blank's plane-strain
+            // restraint (`solid_effects::blank_restraint`) has a kink there.
+            cuts[3] = reach(self.w / 2.0);
         }
         cuts.sort_by(|a, b| a.total_cmp(b));
         // The taper is linear in the notch and again beyond it (at `blank_slope`); the notch

@@ -36,6 +36,8 @@ pub(super) struct DModuli {
     pub fillet_from: Dual,
     pub e_axial: Dual,
     pub e_axial_fillet: Dual,
+    /// `solid_effects::plane_strain_restraint` (the blank's spreading zone).
+    pub blank_restraint: Dual,
 }
 
 /// The ten flexibility integrals with derivatives (`hinge::integrate::FlexIntegrals`).
@@ -172,10 +174,19 @@ pub(super) fn flex_integrals(p: &DProfile, m: &DModuli, x0: Dual, x1: Dual, q: Q
                 },
             };
             quadrature_points(a, b, map, panels, &mut |x, w| {
-                let s = p.section_of_size(p.section_size(x), m.nu);
+                let size = p.section_size(x);
+                let s = p.section_of_size(size, m.nu);
                 let u = x.v.abs();
                 let (e_bend, e_axial) = if u >= m.notch_half.v {
-                    (m.e, m.e)
+                    // `Moduli::bend_axial_at`: the blank's spreading zone is plane-strain
+                    // restrained (`solid_effects::blank_restraint`) until it is fully effective.
+                    if size.v < p.h.v && m.blank_restraint.v != 0.0 {
+                        let pb = 1.0 + m.blank_restraint * (1.0 - size / p.w).max(Dual::c(0.0));
+                        let share = crate::hinge::solid_effects::AXIAL_RESTRAINT_SHARE;
+                        (m.e * pb, m.e * (1.0 + (pb - 1.0) * share))
+                    } else {
+                        (m.e, m.e)
+                    }
                 } else if u >= m.fillet_from.v {
                     (m.e_bend_fillet, m.e_axial_fillet)
                 } else {

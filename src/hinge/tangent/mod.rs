@@ -113,6 +113,7 @@ pub fn half_notch_derivative(profile: &Profile, tangent: &Tangent) -> f64 {
 fn moduli(p: &DProfile, profile: &Profile, m: &Material, tg: &Tangent) -> DModuli {
     let e = Dual::new(m.e, tg.e);
     let nu = Dual::new(m.nu, tg.nu);
+    let restraint = p.plane_strain_restraint(nu, profile.compliant_half_length());
     let (ps, g, gf) = (
         p.plane_strain_factor(nu, profile.compliant_half_length()),
         p.short_notch_factor(),
@@ -131,6 +132,7 @@ fn moduli(p: &DProfile, profile: &Profile, m: &Material, tg: &Tangent) -> DModul
         fillet_from: p.fillet_from(),
         e_axial: e * axial,
         e_axial_fillet: e * axial / gf,
+        blank_restraint: restraint,
     }
 }
 

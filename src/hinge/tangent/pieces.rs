@@ -118,6 +118,8 @@ impl DProfile {
         let mut cuts: [Dual; 4] = [self.half_notch, full, inf, inf];
         if let DContour::SphericalNeck { .. } = self.contour {
             cuts[2] = reach(self.h / 2.0);
+        } else if self.w.v < self.h.v && self.w.v / 2.0 > size0.v {
+            cuts[3] = reach(self.w / 2.0);
         }
         cuts.sort_by(|a, b| a.v.total_cmp(&b.v));
         let taper = DMap::Taper {

@@ -193,13 +193,18 @@ impl DProfile {
     /// `solid_effects::plane_strain_factor`, with the compliant half-length `value` computed
     /// by `Profile::compliant_half_length`.
     pub fn plane_strain_factor(&self, nu: Dual, compliant_half_length: f64) -> Dual {
-        if let DContour::SphericalNeck { .. } = self.contour {
-            return Dual::c(1.0);
-        }
         let (w, t) = (self.w, self.t_min());
-        let z = w / self.compliant_half_length(compliant_half_length);
-        let restrained = (1.0 - (-(z / 3.26).powf(1.29)).exp()) * (1.0 - t / w).max(Dual::c(0.0));
-        1.0 + (1.0 / (1.0 - nu * nu) - 1.0) * restrained
+        1.0 + self.plane_strain_restraint(nu, compliant_half_length) * (1.0 - t / w).max(Dual::c(0.0))
+    }
+
+    /// `solid_effects::plane_strain_restraint`, with the compliant half-length `value` computed
+    /// by `Profile::compliant_half_length`.
+    pub fn plane_strain_restraint(&self, nu: Dual, compliant_half_length: f64) -> Dual {
+        if let DContour::SphericalNeck { .. } = self.contour {
+            return Dual::c(0.0);
+        }
+        let z = self.w / self.compliant_half_length(compliant_half_length);
+        (1.0 / (1.0 - nu * nu) - 1.0) * (1.0 - (-(z / 3.26).powf(1.29)).exp())
     }
 }
 
