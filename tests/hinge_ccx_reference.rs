@@ -151,6 +151,22 @@
 //! torsion); the corner-filleted hinges meet bending and peak stress, and two short wide leaves
 //! with sharp fillets miss torsion (−10.10 %) and axial (−5.39 %, −6.68 %).
 //!
+//! Plane strain in the blank and the tenth design. Over the 22 short wide leaves of [`DOE1`] to
+//! [`DOE9`] the errors grew with h/t: the taller the blank, the more of the compliance lies in
+//! the blank's load-spreading zone, which took E. A tenth design ([`DOE10`], `--tenth`,
+//! `default_rng(20261207)`: 12 short wide leaves with sharp fillets in tall blanks, 6 with the
+//! usual blanks, 6 circular and 6 corner-filleted rows by the second set's ranges) was
+//! committed before that zone took the waist's plane-strain restraint with the local effective
+//! thickness as its edge layer (`hinge::solid_effects`: no number fitted; chosen on the rows of
+//! [`DOE1`] to [`DOE9`], where the short wide leaves went from bending −3.94 … +0.54 and axial
+//! −6.68 … −0.25 % to −2.01 … +2.08 and −3.56 … +1.36 %). That law was committed before
+//! [`DOE10`] was compared; [`DOE10`] was then compared once, and [`DOE9`] is now seen. On
+//! [`DOE10`] bending meets 3 % everywhere (its tall-blank leaves −2.96 … +0.71 %), but the
+//! tall-blank leaves still read too soft in torsion (−12.29 … −3.62 %, 5 of 12 beyond 10 %)
+//! and in axial (−5.67 … −0.44 %, 3 beyond 5 %, those with the shortest blanks). An eleventh
+//! design (`tools/ccx_heldout11_doe.json`, `--eleventh`, `default_rng(20261208)`) was committed
+//! after that comparison, for the next law.
+//!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
 //!
@@ -199,6 +215,9 @@ use doe8::DOE8;
 #[path = "hinge_ccx_reference/doe9.rs"]
 mod doe9;
 use doe9::DOE9;
+#[path = "hinge_ccx_reference/doe10.rs"]
+mod doe10;
+use doe10::DOE10;
 
 #[path = "hinge_ccx_reference/raw.rs"]
 mod raw;
@@ -410,7 +429,7 @@ fn every_reference_is_a_line_of_the_raw_results() {
 /// The fresh designs of experiments: file stem under `tools/` (`_doe.json` the design,
 /// `_results.jsonl` its CalculiX results), the references, their number, how many are circular
 /// notches.
-const DESIGNS: [(&str, &[CcxRef], usize, usize); 9] = [
+const DESIGNS: [(&str, &[CcxRef], usize, usize); 10] = [
     ("ccx_heldout", DOE1, 24, 12),
     ("ccx_heldout2", DOE2, 24, 12),
     ("ccx_heldout3", DOE3, 20, 4),
@@ -420,6 +439,7 @@ const DESIGNS: [(&str, &[CcxRef], usize, usize); 9] = [
     ("ccx_heldout7", DOE7, 32, 12),
     ("ccx_heldout8", DOE8, 38, 18),
     ("ccx_heldout9", DOE9, 32, 16),
+    ("ccx_heldout10", DOE10, 30, 6),
 ];
 
 /// The fresh rows are the committed designs of experiments, in their order
@@ -460,13 +480,21 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 
 /// The targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
-/// 16 circular notches of [`DOE9`] (8 by the second set's ranges, 8 narrow: w/t 0.5–1.1),
+/// 6 circular notches of [`DOE10`], drawn and committed before the blank's spreading zone took
+/// the plane-strain restraint (`hinge::solid_effects`), held out from every law and compared
+/// once with the frozen model: −0.62 … +1.14 / −7.55 … +1.96 / −0.24 … +3.29 / −1.47 … +2.63:
+/// every target met.
+const CIRCULAR_TOL: [f64; 4] = TARGET;
+/// The 16 circular notches of [`DOE9`] (8 by the second set's ranges, 8 narrow: w/t 0.5–1.1),
 /// drawn and committed before [`DOE8`] was compared and before a compact waist stopped carrying
-/// warping restraint, held out from every law and compared once with the frozen model:
+/// warping restraint, held out from those laws and compared once with the frozen model:
 /// −0.08 … +1.54 / −7.02 … +1.30 / −0.02 … +3.35 / −1.38 … +3.08: every target met, the 8
 /// narrow notches −4.09 … +1.30 % in torsion (they read up to +12.7 % on the earlier designs
-/// before the change).
-const CIRCULAR_TOL: [f64; 4] = TARGET;
+/// before the change). Seen since by the blank's plane-strain restraint, and measured with it:
+/// −0.08 … +1.54 / −7.02 … +1.30 / −0.02 … +3.48 / −1.38 … +3.08. With that law the 52 of
+/// [`DOE3`] to [`DOE7`] read −0.21 … +2.69 / −8.31 … +5.77 / −0.96 … +3.95 / −1.59 … +3.64
+/// and the 18 of [`DOE8`] −0.43 … +2.29 / −6.43 … +1.90 / −0.18 … +2.56 / −0.84 … +2.89
+/// (bending and axial moved by at most +0.44 and +0.89 %).
 /// 52 circular notches: 40 of [`DOE3`] (4; t/R 0.10–0.40, w/t 0.80–12.6, blank w/h 0.11–2.3),
 /// [`DOE4`], [`DOE5`] and [`DOE6`] (12 each), each compared once with the model of its day and
 /// held out of every fit but the warping slope's, seen before the later changes (the torsion
@@ -505,15 +533,37 @@ const CIRCULAR_TOL: [f64; 4] = TARGET;
 /// [`DOE8`]): the 18 now read −0.43 … +2.02 / −6.43 … +1.90 / −0.88 … +2.56 / −0.84 … +2.89,
 /// every target met, the narrow ones −4.81 … +1.14 % in torsion.
 const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
-/// 16 corner-filleted hinges of [`DOE9`] (8 by the second set's ranges, 8 short wide leaves
-/// with sharp fillets: w/l 4.2–9.4, l/t 2.0–2.9, R/t 0.52–0.77), held out from every law and
-/// compared once with the frozen model: −2.27 … +0.70 / −10.10 … +7.07 / −6.68 … +0.78 /
-/// −1.12 … +3.23. **Torsion and axial miss on short wide leaves with sharp fillets**:
-/// l2.3/R0.8/t1.15/w13.75/h6.8 (the tallest blank of the eight, h/t 5.9) −10.10 % torsion and
-/// −5.39 % axial, l2.5/R0.7/t1.25/w23.6/h5.25 (w/l 9.4) −6.68 % axial, all too soft: pinned at
-/// 10.2 / 6.7 %. Bending and peak stress meet the targets. The regime warns with its measured
-/// band ([`known_bias_warnings_state_the_measured_bands`]).
-const CORNER_TOL: [f64; 4] = [3.0, 10.2, 6.7, 5.0];
+/// 24 corner-filleted hinges of [`DOE10`] (12 short wide leaves with sharp fillets in tall
+/// blanks, 3–5 t above the fillets: h/t 5.2–7.3; 6 with the usual blanks; 6 by the second set's
+/// ranges), drawn and committed before the blank's spreading zone took the plane-strain
+/// restraint, held out from every law and compared once with the frozen model:
+/// −2.96 … +2.21 / −12.29 … +6.34 / −5.67 … +1.88 / −0.41 … +2.27. Bending and peak stress
+/// meet the targets (the 12 tall-blank leaves −2.96 … +0.71 % in bending, where the earlier
+/// designs' short wide leaves in tall blanks read down to −3.94 % before the law). **Torsion
+/// misses 10 % on 5 of the 12 tall-blank leaves and axial misses 5 % on 3, all too soft**:
+/// l2.9/R0.75/t1.45/w19.05/h9.45/b7.1 −12.29 % torsion, l2.3/R0.6/t1.15/w19/h6.2/b3.3 −12.18 /
+/// −5.67 %, l2.4/R0.8/t1.1/w21.2/h6.85/b4.05 −12.17 / −5.31 %, l3.55/R0.95/t1.75/w31.2/h10.55/
+/// b7.05 −11.99 / −5.24 %, l3.25/R1.05/t1.35/w12.1/h9.8/b10.4 (w/l 3.7, just outside the
+/// warned regime) −10.76 % torsion: pinned at 12.3 / 5.7 %. The axial misses are the leaves with
+/// the shortest blanks for their height (blank length 0.5–0.7 h); those with blank lengths
+/// above h read −0.4 … −2.5 %. The 6 short wide leaves with the usual blanks meet every target
+/// (torsion −7.37 … +6.34 %). The regime warns with its measured band
+/// ([`known_bias_warnings_state_the_measured_bands`]), and an eleventh design
+/// (`tools/ccx_heldout11_doe.json`) is committed for the next law.
+const CORNER_TOL: [f64; 4] = [3.0, 12.3, 5.7, 5.0];
+/// The 16 corner-filleted hinges of [`DOE9`] (8 by the second set's ranges, 8 short wide
+/// leaves with sharp fillets: w/l 4.2–9.4, l/t 2.0–2.9, R/t 0.52–0.77), held out from the laws
+/// before it and compared once with the frozen model: −2.27 … +0.70 / −10.10 … +7.07 /
+/// −6.68 … +0.78 / −1.12 … +3.23: l2.3/R0.8/t1.15/w13.75/h6.8 (the tallest blank of the eight,
+/// h/t 5.9) −10.10 % torsion and −5.39 % axial, l2.5/R0.7/t1.25/w23.6/h5.25 (w/l 9.4) −6.68 %
+/// axial, all too soft. Seen since by the blank's plane-strain restraint (chosen on the short
+/// wide leaves of [`DOE1`] to [`DOE9`]), with which they read −1.24 … +1.70 / −10.10 … +7.07 /
+/// −3.56 … +1.36 / −1.12 … +3.23: **torsion still misses 10 % on that leaf** (−10.10 %), pinned
+/// at 10.2 %. With the law the 72 of [`DOE3`] to [`DOE7`] below read −2.01 … +2.97 /
+/// −7.53 … +6.33 / −3.46 … +1.70 / −1.77 … +3.87 and the 20 of [`DOE8`] −1.26 … +2.08 /
+/// −7.61 … +6.93 / −2.28 … +1.13 / −5.28 … +3.45: bending and axial now meet the targets on
+/// every seen row (the two R/t 0.52 leaves that missed bending, −3.94 %, read −1.84 and
+/// −2.01 %).
 /// 72 corner-filleted hinges: 52 of [`DOE3`] (16; l/t 2.0–9.5, R/t 0.57–2.4 (12 of them ≥ 1.2),
 /// w/t 1.2–16.6, blank w/h 0.22–3.9, blank length 0.54–1.8 h), [`DOE4`], [`DOE5`] and [`DOE6`]
 /// (12 each), as the circular ones above (held out of the K_t refit and of the axial fit, seen
@@ -572,7 +622,7 @@ const CORNER_TOL: [f64; 4] = [3.0, 10.2, 6.7, 5.0];
 /// with sharp fillets (R/t 0.52), −5.28 % (too low: unconservative): pinned at 5.3 %.
 /// (Unchanged since, as a compact waist stopped carrying warping restraint: torsion
 /// −7.61 … +6.93 %.)
-const CORNER_SEEN_TOL: [f64; 4] = [4.0, 10.0, 6.6, 5.3];
+const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.2, 5.0, 5.3];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses and peaks:
 /// −0.41 … +2.45 / −7.73 … +6.80 / −0.72 … +3.25 / −1.39 … +3.45: every target met (torsion
 /// −7.73 … +9.74 while compact waists carried warping restraint; axial
@@ -596,17 +646,18 @@ const CORNER_FIT_TOL: [f64; 4] = TARGET;
 /// short or wide corner-filleted, short or wide corner-filleted), and how closely the n = 3/4
 /// extrapolation agrees with the n = 4/6 one (bending, torsion, axial, %). Measured: within
 /// 0.76 / 1.13 / 0.42 % on the 62 others, every one with at most 30,000 unknowns at n = 4;
-/// within 3.16 / 3.67 / 1.44 % on all 55 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
-/// leaves (the eighth and ninth designs' 20 within that), the worst the two short wide leaves with
-/// R/t 0.52, whose n = 3 mesh is too coarse
+/// within 4.02 / 4.01 / 1.67 % on all 74 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
+/// leaves (3.16 / 3.67 / 1.44 % on the 55 before the tenth design's 19), the worst short wide
+/// leaves with sharp fillets (R/t ≈ 0.5), whose n = 3 mesh is too coarse
 /// for the asymptotic rate: there the n = 3/4 extrapolation over-corrects, and the tables take
 /// the n = 4/6 one ([`converged_stiffness`]).
-const N6_ROWS: [usize; 2] = [62, 55];
+const N6_ROWS: [usize; 2] = [62, 74];
 const EXTRAPOLATION_TOL: [f64; 3] = [0.8, 1.2, 0.45];
-const SHORT_WIDE_EXTRAPOLATION_TOL: [f64; 3] = [3.2, 3.7, 1.5];
+const SHORT_WIDE_EXTRAPOLATION_TOL: [f64; 3] = [4.1, 4.1, 1.7];
 /// The nodal-averaged peak stress from n = 4 to n = 6 on those references, %: measured
-/// −4.13 … +7.30 (−1.46 … +7.30 before the ninth design's short wide leaves).
-const PEAK_N4_TO_N6: (f64, f64) = (-4.2, 7.4);
+/// −4.13 … +9.25 (−4.13 … +7.30 before the tenth design's short wide leaves, −1.46 … +7.30
+/// before the ninth's).
+const PEAK_N4_TO_N6: (f64, f64) = (-4.2, 9.3);
 /// The converged peaks, one line per circular and corner-filleted reference.
 const PEAKS: &str = "ccx_peak_stress_k12.jsonl";
 /// The same solved at k = 16 (the 103 smaller models, 52 corner-filleted), and how far the peak
@@ -622,7 +673,9 @@ const NECK_PEAK_N4_TO_N6: f64 = 2.5;
 /// wide leaves with R/t 0.52 ([`DOE7`]'s l3.15/R0.7/t1.35/w22.75, −1.04 %, and [`DOE6`]'s
 /// l2.7/R0.7/t1.35/w18.55, −0.92 %): the eighth's root mesh (R/12) resolves compliance that the
 /// full models at n = 6 (t/6) do not yet, so their converged bending is likely that much lower.
-const EIGHTH_BEND_TOL: f64 = 1.1;
+/// With [`DOE10`]'s short wide leaves with sharp fillets (R/t 0.52–0.58) the eighth reads down to
+/// −1.41 % from the converged one, the same effect: the tolerance went from 1.1 to 1.5 %.
+const EIGHTH_BEND_TOL: f64 = 1.5;
 /// Peak-stress convergence pins, % (nodal-averaged, integration point), n = 4 → 5.
 /// (family, R mm, nodal-averaged tolerance %, integration-point tolerance %, measured gap %).
 #[allow(clippy::type_complexity)]
@@ -652,11 +705,11 @@ fn fit_rows() -> Vec<Row> {
 /// [`DOE3`] to [`DOE6`] together (held out from the fits of the bending, axial and stress laws,
 /// each compared once with the model of its day, seen before the later changes and by the fit of
 /// the warping spread slope) against `seen`.
-fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 7], fresh: [f64; 4], seen: [f64; 4]) {
-    let designs = [DOE3, DOE4, DOE5, DOE6, DOE7, DOE8, DOE9].map(|d| rows(&d.iter().collect::<Vec<_>>()));
+fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 8], fresh: [f64; 4], seen: [f64; 4]) {
+    let designs = [DOE3, DOE4, DOE5, DOE6, DOE7, DOE8, DOE9, DOE10].map(|d| rows(&d.iter().collect::<Vec<_>>()));
     let per_design = designs.each_ref().map(|r| family(r, f));
     assert_eq!(per_design.each_ref().map(|r| r.len()), counts);
-    let [third, fourth, fifth, sixth, seventh, eighth, ninth] = per_design;
+    let [third, fourth, fifth, sixth, seventh, eighth, ninth, tenth] = per_design;
     let earlier: Vec<&Row> = [third, fourth, fifth, sixth, seventh].into_iter().flatten().collect();
     check(
         &format!("{name}, DOE3 to DOE7"),
@@ -676,7 +729,15 @@ fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 7], fresh: [f
     );
     check(
         &format!("{name}, DOE9"),
-        report(&format!("{name} vs CalculiX, HELD OUT, DOE9"), &ninth),
+        report(
+            &format!("{name} vs CalculiX, HELD OUT, seen by later changes, DOE9"),
+            &ninth,
+        ),
+        seen,
+    );
+    check(
+        &format!("{name}, DOE10"),
+        report(&format!("{name} vs CalculiX, HELD OUT, DOE10"), &tenth),
         fresh,
     );
 }
@@ -686,7 +747,7 @@ fn circular_notches_held_out() {
     held_out(
         "circular notches",
         circular,
-        [4, 12, 12, 12, 12, 18, 16],
+        [4, 12, 12, 12, 12, 18, 16, 6],
         CIRCULAR_TOL,
         CIRCULAR_SEEN_TOL,
     );
@@ -697,7 +758,7 @@ fn corner_filleted_held_out() {
     held_out(
         "corner-filleted hinges",
         corner,
-        [16, 12, 12, 12, 20, 20, 16],
+        [16, 12, 12, 12, 20, 20, 16, 24],
         CORNER_TOL,
         CORNER_SEEN_TOL,
     );
@@ -775,8 +836,12 @@ fn known_bias_warnings_state_the_measured_bands() {
     }
 }
 
-/// Every CalculiX reference outside the known-bias regimes (bending, torsion, axial, %).
-const OUTSIDE_BIAS_TOL: [f64; 3] = [3.0, 10.0, 5.0];
+/// Every CalculiX reference outside the known-bias regimes (bending, torsion, axial, %):
+/// measured 2.97 / 10.76 / 3.95. **Torsion misses 10 % on one**: [`DOE10`]'s
+/// l3.25/R1.05/t1.35/w12.1/h9.8, a short leaf with sharp fillets in a tall blank just short of
+/// the regime's width (w/l 3.7), −10.76 %: pinned at 10.8 %. (The regime's bounds were set on
+/// the earlier designs and are not moved to take it in.)
+const OUTSIDE_BIAS_TOL: [f64; 3] = [3.0, 10.8, 5.0];
 
 /// The turned necks (the Ruiz et al. neck and three others; the neck's model is the earlier
 /// scikit-fem calibration, not refitted here).
@@ -1015,7 +1080,7 @@ fn converged_peaks_checked() {
         .values()
         .map(|lines| lines.iter().filter(|l| l["type"] != "spherical_neck").count())
         .sum();
-    assert_eq!((sources.len(), k12.len(), flat_notches), (10, 288, 288));
+    assert_eq!((sources.len(), k12.len(), flat_notches), (11, 318, 318));
     let (n3, n6) = (json_lines("ccx_refine_n3_results.jsonl"), json_lines(N6_RESULTS));
     let (mut moved, mut bend) = ((f64::INFINITY, f64::NEG_INFINITY), (f64::INFINITY, f64::NEG_INFINITY));
     let mut on_flats = 0;
