@@ -101,8 +101,12 @@ pub const AXIAL_RESTRAINT_SHARE: f64 = 0.6;
 
 /// The axial stiffening P_a = 1 + 0.6·(P − 1) of a waist whose bending stiffening is
 /// `p` = P ([`plane_strain_factor`]; see the module docs); 1 where P is 1 (the turned neck).
-pub fn axial_restraint(p: f64) -> f64 {
-    1.0 + AXIAL_RESTRAINT_SHARE * (p - 1.0)
+/// Generic so that the tangent's dual numbers (`hinge::tangent`) take the same law.
+pub fn axial_restraint<T>(p: T) -> T
+where
+    T: Copy + std::ops::Sub<f64, Output = T> + std::ops::Mul<f64, Output = T> + std::ops::Add<f64, Output = T>,
+{
+    (p - 1.0) * AXIAL_RESTRAINT_SHARE + 1.0
 }
 
 /// G = 1 + 0.068·(1 − exp(−(t/ρ)/0.15)).

@@ -182,8 +182,7 @@ pub(super) fn flex_integrals(p: &DProfile, m: &DModuli, x0: Dual, x1: Dual, q: Q
                     // restrained (`solid_effects::blank_restraint`) until it is fully effective.
                     if size.v < p.h.v && m.blank_restraint.v != 0.0 {
                         let pb = 1.0 + m.blank_restraint * (1.0 - size / p.w).max(Dual::c(0.0));
-                        let share = crate::hinge::solid_effects::AXIAL_RESTRAINT_SHARE;
-                        (m.e * pb, m.e * (1.0 + (pb - 1.0) * share))
+                        (m.e * pb, m.e * crate::hinge::solid_effects::axial_restraint(pb))
                     } else {
                         (m.e, m.e)
                     }

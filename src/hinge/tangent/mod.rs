@@ -120,8 +120,7 @@ fn moduli(p: &DProfile, profile: &Profile, m: &Material, tg: &Tangent) -> DModul
         p.fillet_factor(),
     );
     let factor = ps / g;
-    let share = super::solid_effects::AXIAL_RESTRAINT_SHARE;
-    let axial = (ps * share + Dual::c(1.0 - share)) / g;
+    let axial = super::solid_effects::axial_restraint(ps) / g;
     DModuli {
         e,
         e_bend: e * factor,
