@@ -287,6 +287,32 @@ fn converged_stiffness(r: &CcxRef) -> [f64; 3] {
 /// The references re-solved at n = 6 (`tools/ccx_refine.py --n 6`).
 const N6_RESULTS: &str = "ccx_refine_n6_results.jsonl";
 
+/// Designs solved but not yet compared with flexfem (held out for the next law): their
+/// `_results.jsonl` files under `tools/`. Their lines in the re-solve files (n = 3, n = 6,
+/// converged peaks) are committed as they are solved and skipped by the checks here
+/// ([`compared_lines`]) until the design gets its test module and joins [`DESIGNS`].
+const PENDING: [&str; 1] = ["ccx_heldout11_results.jsonl"];
+
+/// The lines of a re-solve file under `tools/` whose reference is not of a [`PENDING`] design.
+fn compared_lines(file: &str) -> Vec<serde_json::Value> {
+    json_lines(file)
+        .into_iter()
+        .filter(|l| !PENDING.iter().any(|p| l["source"] == *p))
+        .collect()
+}
+
+/// A pending design is not among the compared ones, and its results file exists.
+#[test]
+fn pending_designs_are_not_compared() {
+    for p in PENDING {
+        assert!(
+            DESIGNS.iter().all(|(stem, ..)| format!("{stem}_results.jsonl") != p),
+            "{p} is compared"
+        );
+        assert!(!json_lines(p).is_empty(), "{p}");
+    }
+}
+
 /// The converged peak stress per moment of a circular or corner-filleted reference, MPa/(N·mm):
 /// its line of `tools/ccx_peak_stress_k12.jsonl` (the symmetric eighth with the mesh sized by
 /// the notch root, `tools/ccx_peak_stress.py`; see [`converged_peaks_checked`]). `None` for the
@@ -943,7 +969,7 @@ fn peak_stress_mesh_convergence() {
 ///   comparisons carry that uncertainty.
 #[test]
 fn extrapolation_checked_on_finer_meshes() {
-    let n3 = json_lines("ccx_refine_n3_results.jsonl");
+    let n3 = compared_lines("ccx_refine_n3_results.jsonl");
     let coarse = |source: &serde_json::Value, index: &serde_json::Value| {
         n3.iter()
             .find(|c| c["source"] == *source && c["index"] == *index)
@@ -975,7 +1001,7 @@ fn extrapolation_checked_on_finer_meshes() {
     );
     // The n = 3/4 extrapolation against the n = 4/6 one: on the short or wide corner-filleted
     // leaves, and on the rest.
-    let n6 = json_lines(N6_RESULTS);
+    let n6 = compared_lines(N6_RESULTS);
     let short_or_wide = |l: &serde_json::Value| {
         l["type"] == "corner_filleted" && (at(l, "l") / at(l, "t") <= 2.75 || at(l, "w") / at(l, "l") > 3.0)
     };
@@ -1068,7 +1094,7 @@ fn extrapolation_checked_on_finer_meshes() {
 ///   root, so it reads stiff like n = 4, a little less for its finer root).
 #[test]
 fn converged_peaks_checked() {
-    let k12 = json_lines(PEAKS);
+    let k12 = compared_lines(PEAKS);
     let at = |l: &serde_json::Value, q: &str| l[q].as_f64().unwrap();
     // One line per circular and corner-filleted reference of the results files.
     let mut sources = std::collections::HashMap::new();
@@ -1081,7 +1107,10 @@ fn converged_peaks_checked() {
         .map(|lines| lines.iter().filter(|l| l["type"] != "spherical_neck").count())
         .sum();
     assert_eq!((sources.len(), k12.len(), flat_notches), (11, 318, 318));
-    let (n3, n6) = (json_lines("ccx_refine_n3_results.jsonl"), json_lines(N6_RESULTS));
+    let (n3, n6) = (
+        compared_lines("ccx_refine_n3_results.jsonl"),
+        compared_lines(N6_RESULTS),
+    );
     let (mut moved, mut bend) = ((f64::INFINITY, f64::NEG_INFINITY), (f64::INFINITY, f64::NEG_INFINITY));
     let mut on_flats = 0;
     for l in &k12 {
