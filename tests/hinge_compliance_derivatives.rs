@@ -88,8 +88,9 @@ fn worst(analytic: &Matrix6<f64>, fd: &Matrix6<f64>, c: &Matrix6<f64>, x: f64) -
     e
 }
 
-/// The families of `fixtures::hinge_families` plus a thin circular notch (t/R = 0.02) and a
-/// neck thin enough that its fillet meets the square's faces and corners.
+/// The families of `fixtures::hinge_families` in 9 mm wide blanks (see inside) plus a thin
+/// circular notch (t/R = 0.02) and a neck thin enough that its fillet meets the square's faces
+/// and corners.
 fn specs() -> Vec<HingeSpec> {
     // The stage's families, in a 9 mm wide blank instead of its 10 × 10 one: at w = h the
     // blank's plane-strain restraint (`solid_effects::blank_restraint`, which vanishes where the

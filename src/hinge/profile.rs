@@ -415,12 +415,6 @@ impl<'a> SectionMemo<'a> {
         }
     }
 
-    /// The effective section at x ([`Profile::section`]).
-    #[inline]
-    pub fn at(&mut self, x: f64) -> Section {
-        self.of_size(self.profile.section_size(x))
-    }
-
     /// The section of the given size ([`Profile::section_of_size`]).
     #[inline]
     pub fn of_size(&mut self, size: f64) -> Section {
