@@ -133,6 +133,7 @@ pub fn plane_strain_restraint(profile: &Profile, nu: f64) -> f64 {
 
 /// The share of a section `size` thick and `w` wide (mm) that is not in a free edge layer,
 /// max(0, 1 − size/w) (see the module docs).
+#[inline]
 pub fn edge_share(size: f64, w: f64) -> f64 {
     (1.0 - size / w).max(0.0)
 }
@@ -141,6 +142,7 @@ pub fn edge_share(size: f64, w: f64) -> f64 {
 /// (its effective thickness, mm) in a hinge of [`plane_strain_restraint`] `restraint` and width
 /// `w` (mm): P_b = 1 + restraint·[`edge_share`]`(size, w)` (see the module docs). 1 where the
 /// section is fully effective (`size` ≥ the blank height `h`).
+#[inline]
 pub fn blank_restraint(restraint: f64, size: f64, w: f64, h: f64) -> f64 {
     if size < h {
         1.0 + restraint * edge_share(size, w)
