@@ -111,8 +111,7 @@ impl Moduli {
         let u = x.abs();
         if u >= self.notch_half {
             let b = self.blank;
-            if b.restraint == 0.0 || size >= b.h {
-                // No restraint, or a fully effective section (`blank_restraint` is 1 there).
+            if b.restraint == 0.0 {
                 return (self.e, self.e);
             }
             let p = super::solid_effects::blank_restraint(b.restraint, size, b.w, b.h);
