@@ -276,22 +276,24 @@ def doe9():
     return rows + [{**r, "regime": "lhs: narrow circular notch"} for r in circular2(rng, 8, (0.5, 1.1))]
 
 
-def doe10():
-    rng = np.random.default_rng(20261207)
+def tall_blank_doe(seed, n_tall, tall_blank_over_t, n_usual):
+    """A design aimed at short wide leaves with sharp fillets in tall blanks: `n_tall` such leaves
+    with the blank above the fillets in `tall_blank_over_t` (in t), `n_usual` with the usual
+    blanks, then 6 circular notches and 6 corner-filleted leaves by the second set's ranges."""
+    rng = np.random.default_rng(seed)
     sharp = [(0.5, 0.8), (0.3, 1.5)]
-    rows = [{**r, "regime": "lhs: short wide leaf, sharp fillets, tall blank"} for r in corner2(rng, 12, sharp, (8.0, 20.0), (3.0, 5.0))]
-    rows += [{**r, "regime": "lhs: short wide leaf, sharp fillets"} for r in corner2(rng, 6, sharp, (8.0, 20.0))]
+    rows = [{**r, "regime": "lhs: short wide leaf, sharp fillets, tall blank"} for r in corner2(rng, n_tall, sharp, (8.0, 20.0), tall_blank_over_t)]
+    rows += [{**r, "regime": "lhs: short wide leaf, sharp fillets"} for r in corner2(rng, n_usual, sharp, (8.0, 20.0))]
     rows += [{**r, "regime": "lhs"} for r in circular2(rng, 6)]
     return rows + [{**r, "regime": "lhs"} for r in corner2(rng, 6, [(0.5, 2.5), (0.3, 6.0)])]
+
+
+def doe10():
+    return tall_blank_doe(20261207, 12, (3.0, 5.0), 6)
 
 
 def doe11():
-    rng = np.random.default_rng(20261208)
-    sharp = [(0.5, 0.8), (0.3, 1.5)]
-    rows = [{**r, "regime": "lhs: short wide leaf, sharp fillets, tall blank"} for r in corner2(rng, 14, sharp, (8.0, 20.0), (3.0, 6.0))]
-    rows += [{**r, "regime": "lhs: short wide leaf, sharp fillets"} for r in corner2(rng, 4, sharp, (8.0, 20.0))]
-    rows += [{**r, "regime": "lhs"} for r in circular2(rng, 6)]
-    return rows + [{**r, "regime": "lhs"} for r in corner2(rng, 6, [(0.5, 2.5), (0.3, 6.0)])]
+    return tall_blank_doe(20261208, 14, (3.0, 6.0), 4)
 
 
 def doe3():
