@@ -167,6 +167,20 @@
 //! design (`tools/ccx_heldout11_doe.json`, `--eleventh`, `default_rng(20261208)`) was committed
 //! after that comparison, for the next law.
 //!
+//! The warping constant's blank slope refitted. Over the 39 short wide leaves of [`DOE1`] to
+//! [`DOE10`] the torsion error grew with h/t (r = −0.76) and with b/h (r = +0.55), and in the
+//! flexfem model the blank carries most of such a leaf's torsional compliance (its notch
+//! alone, blanks rigid, is 1.9–6.9 times stiffer than the CalculiX model): the blank slope of
+//! the warping constant, the one number fitted there, was refitted as the minimax of the torsion
+//! error over all 176 corner-filleted rows of [`DOE1`] to [`DOE10`] (0.84 → 1.11,
+//! `hinge::torsion::solid`; 1.0 and 1.3 give 9.39 and 9.46 %): −8.68 … +8.65 %, the short wide
+//! leaves −6.78 … +7.63 % (from −12.29 … +6.46 %), circular notches moved by at most +0.15 %.
+//! The fit uses [`DOE10`], which is seen from then on; the eleventh design, solved before the
+//! fit, is its judge. A twelfth (`tools/ccx_heldout12_doe.json`, `--twelfth`,
+//! `default_rng(20261209)`: 8 long wide leaves with sharp fillets, the fit's other extreme, 8
+//! short wide ones in tall blanks, 6 circular and 8 corner-filleted rows) was drawn and committed
+//! before the eleventh was compared, for a law changed after that comparison.
+//!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
 //!
@@ -575,8 +589,12 @@ const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
 /// above h read −0.4 … −2.5 %. The 6 short wide leaves with the usual blanks meet every target
 /// (torsion −7.37 … +6.34 %). The regime warns with its measured band
 /// ([`known_bias_warnings_state_the_measured_bands`]), and an eleventh design
-/// (`tools/ccx_heldout11_doe.json`) is committed for the next law.
-const CORNER_TOL: [f64; 4] = [3.0, 12.3, 5.7, 5.0];
+/// (`tools/ccx_heldout11_doe.json`) is committed for the next law. Seen since by the refit of
+/// the warping constant's blank slope (0.84 → 1.11, fitted on these rows among others), with
+/// which they read −2.96 … +2.21 / −8.68 … +7.28 / −5.67 … +1.88 / −0.41 … +2.27: torsion
+/// meets 10 % on every row; axial still misses on the 3 leaves with the shortest blanks,
+/// pinned at 5.7 %.
+const CORNER_TOL: [f64; 4] = [3.0, 10.0, 5.7, 5.0];
 /// The 16 corner-filleted hinges of [`DOE9`] (8 by the second set's ranges, 8 short wide
 /// leaves with sharp fillets: w/l 4.2–9.4, l/t 2.0–2.9, R/t 0.52–0.77), held out from the laws
 /// before it and compared once with the frozen model: −2.27 … +0.70 / −10.10 … +7.07 /
@@ -648,7 +666,10 @@ const CORNER_TOL: [f64; 4] = [3.0, 12.3, 5.7, 5.0];
 /// with sharp fillets (R/t 0.52), −5.28 % (too low: unconservative): pinned at 5.3 %.
 /// (Unchanged since, as a compact waist stopped carrying warping restraint: torsion
 /// −7.61 … +6.93 %.)
-const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.2, 5.0, 5.3];
+/// With the warping constant's blank slope refitted on [`DOE1`] to [`DOE10`] (0.84 → 1.11):
+/// torsion [`DOE3`] to [`DOE7`] −6.75 … +8.20, [`DOE8`] −6.55 … +8.48, [`DOE9`] −5.82 … +8.65 %
+/// (its −10.10 % leaf now within 10 %): every torsion target met; the pin is the target.
+const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.0, 5.0, 5.3];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses and peaks:
 /// −0.41 … +2.45 / −7.73 … +6.80 / −0.72 … +3.25 / −1.39 … +3.45: every target met (torsion
 /// −7.73 … +9.74 while compact waists carried warping restraint; axial
@@ -863,11 +884,12 @@ fn known_bias_warnings_state_the_measured_bands() {
 }
 
 /// Every CalculiX reference outside the known-bias regimes (bending, torsion, axial, %):
-/// measured 2.97 / 10.76 / 3.95. **Torsion misses 10 % on one**: [`DOE10`]'s
-/// l3.25/R1.05/t1.35/w12.1/h9.8, a short leaf with sharp fillets in a tall blank just short of
-/// the regime's width (w/l 3.7), −10.76 %: pinned at 10.8 %. (The regime's bounds were set on
-/// the earlier designs and are not moved to take it in.)
-const OUTSIDE_BIAS_TOL: [f64; 3] = [3.0, 10.8, 5.0];
+/// measured 2.97 / 8.68 / 3.95 (the target). With the warping constant's first blank slope,
+/// 0.84, torsion read 10.76 % on [`DOE10`]'s l3.25/R1.05/t1.35/w12.1/h9.8, a short leaf with
+/// sharp fillets in a tall blank just short of the regime's width (w/l 3.7); the slope refitted
+/// on ten designs (1.11) takes it to −8.68 %. (The regime's bounds were set on the earlier
+/// designs and were not moved to take it in.)
+const OUTSIDE_BIAS_TOL: [f64; 3] = [3.0, 10.0, 5.0];
 
 /// The turned necks (the Ruiz et al. neck and three others; the neck's model is the earlier
 /// scikit-fem calibration, not refitted here).
