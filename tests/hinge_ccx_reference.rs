@@ -181,6 +181,14 @@
 //! short wide ones in tall blanks, 6 circular and 8 corner-filleted rows) was drawn and committed
 //! before the eleventh was compared, for a law changed after that comparison.
 //!
+//! The eleventh design compared once ([`DOE11`]): its 6 circular notches and the 9 corner-
+//! filleted rows outside the short wide regime meet every target, and peak stress is met on
+//! every row; but its short wide leaves in the tallest blanks (h/t 6.8–8.1) still read too soft:
+//! torsion down to −12.67 % (5 of 14 beyond 10 %), bending down to −3.87 % (3 beyond 3 %; the
+//! worst row's own reference is uncertain by 2.1 % in bending) and axial down to −5.45 % (2
+//! beyond 5 %). The refit moved the torsion band of the regime, not its trend with h/t: that
+//! regime warns with its measured band over 54 models.
+//!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
 //!
@@ -232,6 +240,9 @@ use doe9::DOE9;
 #[path = "hinge_ccx_reference/doe10.rs"]
 mod doe10;
 use doe10::DOE10;
+#[path = "hinge_ccx_reference/doe11.rs"]
+mod doe11;
+use doe11::DOE11;
 
 #[path = "hinge_ccx_reference/raw.rs"]
 mod raw;
@@ -305,7 +316,7 @@ const N6_RESULTS: &str = "ccx_refine_n6_results.jsonl";
 /// `_results.jsonl` files under `tools/`. Their lines in the re-solve files (n = 3, n = 6,
 /// converged peaks) are committed as they are solved and skipped by the checks here
 /// ([`compared_lines`]) until the design gets its test module and joins [`DESIGNS`].
-const PENDING: [&str; 1] = ["ccx_heldout11_results.jsonl"];
+const PENDING: [&str; 1] = ["ccx_heldout12_results.jsonl"];
 
 /// The lines of a re-solve file under `tools/` whose reference is not of a [`PENDING`] design.
 fn compared_lines(file: &str) -> Vec<serde_json::Value> {
@@ -469,7 +480,7 @@ fn every_reference_is_a_line_of_the_raw_results() {
 /// The fresh designs of experiments: file stem under `tools/` (`_doe.json` the design,
 /// `_results.jsonl` its CalculiX results), the references, their number, how many are circular
 /// notches.
-const DESIGNS: [(&str, &[CcxRef], usize, usize); 10] = [
+const DESIGNS: [(&str, &[CcxRef], usize, usize); 11] = [
     ("ccx_heldout", DOE1, 24, 12),
     ("ccx_heldout2", DOE2, 24, 12),
     ("ccx_heldout3", DOE3, 20, 4),
@@ -480,6 +491,7 @@ const DESIGNS: [(&str, &[CcxRef], usize, usize); 10] = [
     ("ccx_heldout8", DOE8, 38, 18),
     ("ccx_heldout9", DOE9, 32, 16),
     ("ccx_heldout10", DOE10, 30, 6),
+    ("ccx_heldout11", DOE11, 30, 6),
 ];
 
 /// The fresh rows are the committed designs of experiments, in their order
@@ -520,7 +532,11 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 
 /// The targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
-/// 6 circular notches of [`DOE10`], drawn and committed before the blank's spreading zone took
+/// 6 circular notches of [`DOE11`], drawn, committed and solved before the warping constant's
+/// blank slope was refitted, held out from every law and compared once with the frozen model:
+/// −0.37 … +2.00 / −5.62 … +0.93 / +0.10 … +3.17 / −0.79 … +2.18: every target met.
+/// The 6 of [`DOE10`], seen since by that refit (−7.59 … +2.10 % torsion), drawn and
+/// committed before the blank's spreading zone took
 /// the plane-strain restraint (`hinge::solid_effects`), held out from every law and compared
 /// once with the frozen model: −0.62 … +1.14 / −7.55 … +1.96 / −0.24 … +3.29 / −1.47 … +2.63:
 /// every target met.
@@ -573,7 +589,27 @@ const CIRCULAR_TOL: [f64; 4] = TARGET;
 /// [`DOE8`]): the 18 now read −0.43 … +2.02 / −6.43 … +1.90 / −0.88 … +2.56 / −0.84 … +2.89,
 /// every target met, the narrow ones −4.81 … +1.14 % in torsion.
 const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
-/// 24 corner-filleted hinges of [`DOE10`] (12 short wide leaves with sharp fillets in tall
+/// 24 corner-filleted hinges of [`DOE11`] (14 short wide leaves with sharp fillets in tall
+/// blanks, 3–6 t above the fillets: h/t 5.3–8.1, blank length 0.5–2 h; 4 with the usual blanks;
+/// 6 by the second set's ranges), drawn, committed and solved before the warping constant's
+/// blank slope was refitted (0.84 → 1.11 on [`DOE1`] to [`DOE10`]), held out from every law and
+/// compared once with the frozen model: −3.87 … +1.54 / −12.67 … +6.60 / −5.45 … +1.34 /
+/// −4.51 … +1.92. Peak stress meets the target on every row, and the 9 rows outside the
+/// short wide regime meet every target. **The refit did not carry to the tallest blanks**:
+/// torsion misses 10 % on 5 of the 14 tall-blank leaves (l2.4/R0.75/t1.2/w10.6/h8.2 −12.67 %,
+/// l3.0/R0.85/t1.5/w16.1/h10.75 −11.03 %, l2.1/R0.65/t1.05/w15.65/h8.5 −10.90 %,
+/// l3.85/R1.2/t1.6/w16.1/h12.5 −10.89 %, l3.7/R1.25/t1.85/w22.65/h14.65 −10.38 %: h/t 6.8–8.1,
+/// beyond the tenth design's 7.3 only on three), bending misses 3 % on 3 (−3.87, −3.23,
+/// −3.08 %) and axial 5 % on 2 (−5.45, −5.25 %), all too soft. The −3.87 % leaf's root-refined
+/// eighth reads bending 2.10 % below its n = 4/6 extrapolation ([`EIGHTH_BEND_TOL`]), so
+/// against the finer mesh it reads about −1.8 %: its reference is uncertain by that much. The
+/// 4 tall-blank leaves with blanks longer than 1.2 h read −3.15 … +2.21 % in torsion; 4 of
+/// the 5 misses have blanks of 0.5–0.8 h. Pinned
+/// at 3.9 / 12.7 / 5.5 / 5 %. The regime warns with its measured band
+/// ([`known_bias_warnings_state_the_measured_bands`]), and a twelfth design
+/// (`tools/ccx_heldout12_doe.json`, committed before this comparison) is for the next law.
+const CORNER_TOL: [f64; 4] = [3.9, 12.7, 5.5, 5.0];
+/// The 24 corner-filleted hinges of [`DOE10`] (12 short wide leaves with sharp fillets in tall
 /// blanks, 3–5 t above the fillets: h/t 5.2–7.3; 6 with the usual blanks; 6 by the second set's
 /// ranges), drawn and committed before the blank's spreading zone took the plane-strain
 /// restraint, held out from every law and compared once with the frozen model:
@@ -593,8 +629,7 @@ const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
 /// the warping constant's blank slope (0.84 → 1.11, fitted on these rows among others), with
 /// which they read −2.96 … +2.21 / −8.68 … +7.28 / −5.67 … +1.88 / −0.41 … +2.27: torsion
 /// meets 10 % on every row; axial still misses on the 3 leaves with the shortest blanks,
-/// pinned at 5.7 %.
-const CORNER_TOL: [f64; 4] = [3.0, 10.0, 5.7, 5.0];
+/// pinned at 5.7 % in [`CORNER_SEEN_TOL`].
 /// The 16 corner-filleted hinges of [`DOE9`] (8 by the second set's ranges, 8 short wide
 /// leaves with sharp fillets: w/l 4.2–9.4, l/t 2.0–2.9, R/t 0.52–0.77), held out from the laws
 /// before it and compared once with the frozen model: −2.27 … +0.70 / −10.10 … +7.07 /
@@ -669,7 +704,8 @@ const CORNER_TOL: [f64; 4] = [3.0, 10.0, 5.7, 5.0];
 /// With the warping constant's blank slope refitted on [`DOE1`] to [`DOE10`] (0.84 → 1.11):
 /// torsion [`DOE3`] to [`DOE7`] −6.75 … +8.20, [`DOE8`] −6.55 … +8.48, [`DOE9`] −5.82 … +8.65 %
 /// (its −10.10 % leaf now within 10 %): every torsion target met; the pin is the target.
-const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.0, 5.0, 5.3];
+/// Axial: [`DOE10`]'s 3 short-blank leaves, −5.67 % (above), pinned at 5.7 %.
+const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.0, 5.7, 5.3];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses and peaks:
 /// −0.41 … +2.45 / −7.73 … +6.80 / −0.72 … +3.25 / −1.39 … +3.45: every target met (torsion
 /// −7.73 … +9.74 while compact waists carried warping restraint; axial
@@ -693,18 +729,19 @@ const CORNER_FIT_TOL: [f64; 4] = TARGET;
 /// short or wide corner-filleted, short or wide corner-filleted), and how closely the n = 3/4
 /// extrapolation agrees with the n = 4/6 one (bending, torsion, axial, %). Measured: within
 /// 0.76 / 1.13 / 0.42 % on the 62 others, every one with at most 30,000 unknowns at n = 4;
-/// within 4.02 / 4.01 / 1.67 % on all 74 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
-/// leaves (3.16 / 3.67 / 1.44 % on the 55 before the tenth design's 19), the worst short wide
+/// within 4.19 / 4.01 / 1.86 % on all 94 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
+/// leaves (4.02 / 4.01 / 1.67 % on the 74 before the eleventh design's 20, 3.16 / 3.67 / 1.44 %
+/// on the 55 before the tenth design's 19), the worst short wide
 /// leaves with sharp fillets (R/t ≈ 0.5), whose n = 3 mesh is too coarse
 /// for the asymptotic rate: there the n = 3/4 extrapolation over-corrects, and the tables take
 /// the n = 4/6 one ([`converged_stiffness`]).
-const N6_ROWS: [usize; 2] = [62, 74];
+const N6_ROWS: [usize; 2] = [62, 94];
 const EXTRAPOLATION_TOL: [f64; 3] = [0.8, 1.2, 0.45];
-const SHORT_WIDE_EXTRAPOLATION_TOL: [f64; 3] = [4.1, 4.1, 1.7];
+const SHORT_WIDE_EXTRAPOLATION_TOL: [f64; 3] = [4.2, 4.1, 1.9];
 /// The nodal-averaged peak stress from n = 4 to n = 6 on those references, %: measured
-/// −4.13 … +9.25 (−4.13 … +7.30 before the tenth design's short wide leaves, −1.46 … +7.30
-/// before the ninth's).
-const PEAK_N4_TO_N6: (f64, f64) = (-4.2, 9.3);
+/// −4.13 … +10.40 (−4.13 … +9.25 before the eleventh design's short wide leaves, −4.13 … +7.30
+/// before the tenth's, −1.46 … +7.30 before the ninth's).
+const PEAK_N4_TO_N6: (f64, f64) = (-4.2, 10.5);
 /// The converged peaks, one line per circular and corner-filleted reference.
 const PEAKS: &str = "ccx_peak_stress_k12.jsonl";
 /// The same solved at k = 16 (the 103 smaller models, 52 corner-filleted), and how far the peak
@@ -721,8 +758,10 @@ const NECK_PEAK_N4_TO_N6: f64 = 2.5;
 /// l2.7/R0.7/t1.35/w18.55, −0.92 %): the eighth's root mesh (R/12) resolves compliance that the
 /// full models at n = 6 (t/6) do not yet, so their converged bending is likely that much lower.
 /// With [`DOE10`]'s short wide leaves with sharp fillets (R/t 0.52–0.58) the eighth reads down to
-/// −1.41 % from the converged one, the same effect: the tolerance went from 1.1 to 1.5 %.
-const EIGHTH_BEND_TOL: f64 = 1.5;
+/// −1.41 % from the converged one, the same effect: the tolerance went from 1.1 to 1.5 %. With
+/// [`DOE11`]'s leaves in the tallest blanks it reads down to −2.10 % (l2.1/R0.65/t1.05/w15.65/
+/// h8.5; −1.41 … −1.64 % on four more): the tolerance went to 2.2 %.
+const EIGHTH_BEND_TOL: f64 = 2.2;
 /// Peak-stress convergence pins, % (nodal-averaged, integration point), n = 4 → 5.
 /// (family, R mm, nodal-averaged tolerance %, integration-point tolerance %, measured gap %).
 #[allow(clippy::type_complexity)]
@@ -748,15 +787,15 @@ fn fit_rows() -> Vec<Row> {
     )
 }
 
-/// One family on the held-out designs: [`DOE7`] (held out from every law) against `fresh`;
-/// [`DOE3`] to [`DOE6`] together (held out from the fits of the bending, axial and stress laws,
-/// each compared once with the model of its day, seen before the later changes and by the fit of
-/// the warping spread slope) against `seen`.
-fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 8], fresh: [f64; 4], seen: [f64; 4]) {
-    let designs = [DOE3, DOE4, DOE5, DOE6, DOE7, DOE8, DOE9, DOE10].map(|d| rows(&d.iter().collect::<Vec<_>>()));
+/// One family on the held-out designs: [`DOE11`] (held out from every law) against `fresh`;
+/// [`DOE3`] to [`DOE7`] together and [`DOE8`], [`DOE9`], [`DOE10`] each (each compared once
+/// with the model of its day, seen by later changes and by the fit of the warping constant's
+/// blank slope) against `seen`.
+fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 9], fresh: [f64; 4], seen: [f64; 4]) {
+    let designs = [DOE3, DOE4, DOE5, DOE6, DOE7, DOE8, DOE9, DOE10, DOE11].map(|d| rows(&d.iter().collect::<Vec<_>>()));
     let per_design = designs.each_ref().map(|r| family(r, f));
     assert_eq!(per_design.each_ref().map(|r| r.len()), counts);
-    let [third, fourth, fifth, sixth, seventh, eighth, ninth, tenth] = per_design;
+    let [third, fourth, fifth, sixth, seventh, eighth, ninth, tenth, eleventh] = per_design;
     let earlier: Vec<&Row> = [third, fourth, fifth, sixth, seventh].into_iter().flatten().collect();
     check(
         &format!("{name}, DOE3 to DOE7"),
@@ -766,25 +805,19 @@ fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 8], fresh: [f
         ),
         seen,
     );
+    for (design, rows) in [("DOE8", eighth), ("DOE9", ninth), ("DOE10", tenth)] {
+        check(
+            &format!("{name}, {design}"),
+            report(
+                &format!("{name} vs CalculiX, HELD OUT, seen by later changes, {design}"),
+                &rows,
+            ),
+            seen,
+        );
+    }
     check(
-        &format!("{name}, DOE8"),
-        report(
-            &format!("{name} vs CalculiX, HELD OUT, seen by later changes, DOE8"),
-            &eighth,
-        ),
-        seen,
-    );
-    check(
-        &format!("{name}, DOE9"),
-        report(
-            &format!("{name} vs CalculiX, HELD OUT, seen by later changes, DOE9"),
-            &ninth,
-        ),
-        seen,
-    );
-    check(
-        &format!("{name}, DOE10"),
-        report(&format!("{name} vs CalculiX, HELD OUT, DOE10"), &tenth),
+        &format!("{name}, DOE11"),
+        report(&format!("{name} vs CalculiX, HELD OUT, DOE11"), &eleventh),
         fresh,
     );
 }
@@ -794,7 +827,7 @@ fn circular_notches_held_out() {
     held_out(
         "circular notches",
         circular,
-        [4, 12, 12, 12, 12, 18, 16, 6],
+        [4, 12, 12, 12, 12, 18, 16, 6, 6],
         CIRCULAR_TOL,
         CIRCULAR_SEEN_TOL,
     );
@@ -805,7 +838,7 @@ fn corner_filleted_held_out() {
     held_out(
         "corner-filleted hinges",
         corner,
-        [16, 12, 12, 12, 20, 20, 16, 24],
+        [16, 12, 12, 12, 20, 20, 16, 24, 24],
         CORNER_TOL,
         CORNER_SEEN_TOL,
     );
@@ -1128,7 +1161,7 @@ fn converged_peaks_checked() {
         .values()
         .map(|lines| lines.iter().filter(|l| l["type"] != "spherical_neck").count())
         .sum();
-    assert_eq!((sources.len(), k12.len(), flat_notches), (11, 318, 318));
+    assert_eq!((sources.len(), k12.len(), flat_notches), (12, 348, 348));
     let (n3, n6) = (
         compared_lines("ccx_refine_n3_results.jsonl"),
         compared_lines(N6_RESULTS),
