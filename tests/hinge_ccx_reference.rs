@@ -186,8 +186,18 @@
 //! every row; but its short wide leaves in the tallest blanks (h/t 6.8–8.1) still read too soft:
 //! torsion down to −12.67 % (5 of 14 beyond 10 %), bending down to −3.87 % (3 beyond 3 %; the
 //! worst row's own reference is uncertain by 2.1 % in bending) and axial down to −5.45 % (2
-//! beyond 5 %). The refit moved the torsion band of the regime, not its trend with h/t: that
-//! regime warns with its measured band over 54 models.
+//! beyond 5 %). The refit moved the torsion band of the regime, not its trend with h/t.
+//!
+//! The torsion law's two slopes refitted together. The Saint-Venant torque's load-spreading
+//! slope (1.3 since the first calibration, fitted on the n = 4 stiffnesses of 74 rows) and the
+//! warping constant's blank slope were refitted together as the minimax of the torsion error
+//! over every corner-filleted row of [`DOE1`] to [`DOE11`] and the fits (200 rows): 1.6 and 1.0
+//! (`hinge::torsion::solid`; the minimum, 8.74–8.75 %, runs along a valley from (1.55, 1.05) to
+//! (1.65, 0.95), and its centre is taken). A faster spreading of the torque stiffens tall blanks
+//! more than low ones: the corner-filleted rows read −8.42 … +8.75 % (the short wide leaves from
+//! −12.67 … +7.63 %), the circular notches −8.30 … +6.91 %. [`DOE11`] is seen from then on; the
+//! twelfth design ([`PENDING`] until its references are converged), committed before this fit,
+//! is its judge. The short wide regime warns with its bending and axial bands over 54 models.
 //!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
@@ -605,10 +615,13 @@ const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
 /// against the finer mesh it reads about −1.8 %: its reference is uncertain by that much. The
 /// 4 tall-blank leaves with blanks longer than 1.2 h read −3.15 … +2.21 % in torsion; 4 of
 /// the 5 misses have blanks of 0.5–0.8 h. Pinned
-/// at 3.9 / 12.7 / 5.5 / 5 %. The regime warns with its measured band
+/// then at 3.9 / 12.7 / 5.5 / 5 %. Seen since by the joint refit of the torsion law's two slopes
+/// (1.6 and 1.0, fitted on these rows among others), with which they read −3.87 … +1.54 /
+/// −8.42 … +7.30 / −5.45 … +1.34 / −4.51 … +1.92: torsion meets 10 % on every row; pinned at
+/// 3.9 / 10 / 5.5 / 5 %. The regime warns with its measured band
 /// ([`known_bias_warnings_state_the_measured_bands`]), and a twelfth design
 /// (`tools/ccx_heldout12_doe.json`, committed before this comparison) is for the next law.
-const CORNER_TOL: [f64; 4] = [3.9, 12.7, 5.5, 5.0];
+const CORNER_TOL: [f64; 4] = [3.9, 10.0, 5.5, 5.0];
 /// The 24 corner-filleted hinges of [`DOE10`] (12 short wide leaves with sharp fillets in tall
 /// blanks, 3–5 t above the fillets: h/t 5.2–7.3; 6 with the usual blanks; 6 by the second set's
 /// ranges), drawn and committed before the blank's spreading zone took the plane-strain
@@ -704,6 +717,9 @@ const CORNER_TOL: [f64; 4] = [3.9, 12.7, 5.5, 5.0];
 /// With the warping constant's blank slope refitted on [`DOE1`] to [`DOE10`] (0.84 → 1.11):
 /// torsion [`DOE3`] to [`DOE7`] −6.75 … +8.20, [`DOE8`] −6.55 … +8.48, [`DOE9`] −5.82 … +8.65 %
 /// (its −10.10 % leaf now within 10 %): every torsion target met; the pin is the target.
+/// With the torsion law's two slopes refitted together on [`DOE1`] to [`DOE11`] (1.6 and 1.0):
+/// torsion [`DOE3`] to [`DOE7`] −6.36 … +8.10, [`DOE8`] −3.69 … +8.26, [`DOE9`]
+/// −3.62 … +8.75, [`DOE10`] −5.36 … +7.91 %.
 /// Axial: [`DOE10`]'s 3 short-blank leaves, −5.67 % (above), pinned at 5.7 %.
 const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.0, 5.7, 5.3];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses and peaks:
@@ -714,6 +730,8 @@ const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.0, 5.7, 5.3];
 /// Saint-Venant torque, as the torsion law's two numbers were fitted on the n = 4 stiffnesses,
 /// torsion read −7.60 … +10.74 %; refitting those two numbers on the converged stiffnesses of
 /// all 118 rows then seen reached 10.9 % at best.)
+/// With the torsion law's two slopes refitted on eleven designs (1.6 and 1.0): torsion
+/// −7.64 … +6.91 %.
 const CIRCULAR_FIT_TOL: [f64; 4] = TARGET;
 /// The 44 corner-filleted hinges of the fits. Measured against the converged stiffnesses and
 /// peaks: −2.08 … +0.80 / −7.28 … +6.42 / −3.17 … +1.07 / −3.47 … +3.22 (against the n = 3/4
@@ -724,6 +742,8 @@ const CIRCULAR_FIT_TOL: [f64; 4] = TARGET;
 /// l6/R1.5/t1.5/w30/h6 above 10 %). (Bending read −3.60 % on l5.95/R1.45/t1.95/w10.15/h11.9
 /// against its n = 4 stiffness, which is 2 % too stiff: −1.64 % against the extrapolation,
 /// −2.17 % against the n = 6/8 one.)
+/// With the torsion law's two slopes refitted on eleven designs (1.6 and 1.0): torsion
+/// −5.53 … +7.79 %.
 const CORNER_FIT_TOL: [f64; 4] = TARGET;
 /// [`extrapolation_checked_on_finer_meshes`]: the references re-solved at n = 6 (other than
 /// short or wide corner-filleted, short or wide corner-filleted), and how closely the n = 3/4
@@ -917,7 +937,8 @@ fn known_bias_warnings_state_the_measured_bands() {
 }
 
 /// Every CalculiX reference outside the known-bias regimes (bending, torsion, axial, %):
-/// measured 2.97 / 8.68 / 3.95 (the target). With the warping constant's first blank slope,
+/// measured 2.97 / 8.55 / 3.95 (the target; 8.68 % torsion with the slopes 1.3 and 1.11 of the
+/// eleventh design's comparison). With the warping constant's first blank slope,
 /// 0.84, torsion read 10.76 % on [`DOE10`]'s l3.25/R1.05/t1.35/w12.1/h9.8, a short leaf with
 /// sharp fillets in a tall blank just short of the regime's width (w/l 3.7); the slope refitted
 /// on ten designs (1.11) takes it to −8.68 %. (The regime's bounds were set on the earlier

@@ -17,7 +17,7 @@
 //!   restrain warping; k_torsion comes from a warping-torsion FE ([`torsion`]) on the
 //!   geometric section in the notch and the load-spreading effective section in the blank:
 //!   Vlasov's model with Benscoter's shear strain of the warping, plate-mode warping of wide
-//!   waists and torsional spreading at slope 1.3, measured against CalculiX solid models
+//!   waists and torsional spreading at slope 1.6, measured against CalculiX solid models
 //!   ([`torsion::solid_torsion_stiffness`]). The turned
 //!   neck has a circular waist (no warping) and uses plain ∫1/GJ.
 //! * **Three-dimensional effects**, calibrated against converged quadratic-tetrahedron solid
