@@ -212,6 +212,19 @@
 //! with sharp fillets in tall short blanks, 8 long leaves with sharp fillets of moderate width),
 //! committed before this comparison, is [`PENDING`] for the next law.
 //!
+//! The bending reference's upper bound. Every bending miss left (the twelfth design's −3.00 %,
+//! the eleventh's −3.87, −3.23, −3.08 %) is a short leaf with sharp fillets whose root-refined
+//! symmetric eighth ([`PEAKS`], meshed by the fillet radius) reads bending 1.5–2.1 % below the
+//! n = 4/6 extrapolation of its full model. A conforming displacement model (C3D10 with the rigid
+//! end face) is stiffer than the body it discretises, so the eighth is an upper bound on the true
+//! bending stiffness (moving by at most 0.03 % from k = 12 to k = 16), and where it lies below
+//! the extrapolation the extrapolation is known to be too stiff: [`converged_stiffness`] takes
+//! the lower of the two ([`eighth_bending`]; no number chosen; 40 of the 378 references, 39 of
+//! them corner-filleted). Against it bending meets 3 % on every reference of every design
+//! (corner-filleted −2.25 … +2.97 %, circular notches −0.62 … +2.77 %), and the short wide
+//! regime warns with its axial band alone. Torsion and axial have no such bound here (the
+//! eighths are solved for bending and peak stress only).
+//!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
 //!
@@ -329,10 +342,30 @@ fn converged_stiffness(r: &CcxRef) -> [f64; 3] {
     let lines = LINES.get_or_init(|| json_lines(N6_RESULTS));
     let hits = matching_lines(lines, r.hinge, r.e, r.nu, &[], |_| true);
     assert!(hits.len() <= 1, "{}: {} n = 6 lines", r.hinge, hits.len());
-    r.converged(
+    let mut k = r.converged(
         hits.first()
             .map(|&i| ["k_bend", "k_torsion", "k_axial"].map(|q| lines[i][q].as_f64().unwrap())),
-    )
+    );
+    if let Some(eighth) = eighth_bending(r) {
+        k[0] = k[0].min(eighth);
+    }
+    k
+}
+
+/// The compliant-axis bending stiffness of a reference's root-refined symmetric eighth
+/// ([`PEAKS`]), N·mm/rad. A conforming displacement model (C3D10, rigid end face) is stiffer
+/// than the elastic body it discretises, so this is an upper bound on the true stiffness: where
+/// it lies below the extrapolated full model, the extrapolation is known to be too stiff, and
+/// [`converged_stiffness`] takes the bound instead (on 40 of 378 references, by up to 2.10 %:
+/// short leaves with sharp fillets whose full models at n = 6 do not yet resolve the root; the
+/// eighth moves by at most 0.03 % from k = 12 to k = 16, [`PEAK_K12_TO_K16`]).
+fn eighth_bending(r: &CcxRef) -> Option<f64> {
+    static LINES: std::sync::OnceLock<Vec<serde_json::Value>> = std::sync::OnceLock::new();
+    let lines = LINES.get_or_init(|| json_lines(PEAKS));
+    let hits = matching_lines(lines, r.hinge, r.e, r.nu, &[], |_| true);
+    hits.iter()
+        .map(|&i| lines[i]["k_bend"].as_f64().unwrap())
+        .reduce(f64::min)
 }
 
 /// The references re-solved at n = 6 (`tools/ccx_refine.py --n 6`).
@@ -631,8 +664,11 @@ const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
 /// (its root-refined eighth reads bending 1.72 % below the n = 4/6 extrapolation, so against the
 /// finer mesh it reads about −1.3 %); l2.7/R1.0/t1.35/w22.75/h8.4/b4.6, a short wide leaf in a
 /// short blank (b/h 0.55), −5.32 % axial, inside the band the regime's warning states. Pinned
-/// at 3.1 / 10 / 5.4 / 5 %.
-const CORNER_TOL: [f64; 4] = [3.1, 10.0, 5.4, 5.0];
+/// then at 3.1 / 10 / 5.4 / 5 %. Against the bending reference's upper bound (the root-refined
+/// eighth where it is softer than the extrapolation, [`eighth_bending`], taken after this
+/// comparison; no number chosen) they read −2.25 … +1.34 % in bending, the −3.00 % leaf
+/// −1.30 %: every bending target met. Pinned at 3 / 10 / 5.4 / 5 %.
+const CORNER_TOL: [f64; 4] = [3.0, 10.0, 5.4, 5.0];
 /// The 24 corner-filleted hinges of [`DOE11`] (14 short wide leaves with sharp fillets in tall
 /// blanks, 3–6 t above the fillets: h/t 5.3–8.1, blank length 0.5–2 h; 4 with the usual blanks;
 /// 6 by the second set's ranges), drawn, committed and solved before the warping constant's
@@ -754,8 +790,10 @@ const CORNER_TOL: [f64; 4] = [3.1, 10.0, 5.4, 5.0];
 /// torsion [`DOE3`] to [`DOE7`] −6.36 … +8.10, [`DOE8`] −3.69 … +8.26, [`DOE9`]
 /// −3.62 … +8.75, [`DOE10`] −5.36 … +7.91 %.
 /// Axial: [`DOE10`]'s 3 short-blank leaves, −5.67 % (above), pinned at 5.7 %. Bending:
-/// [`DOE11`]'s leaf in the tallest blank, −3.87 % (above), pinned at 3.9 %.
-const CORNER_SEEN_TOL: [f64; 4] = [3.9, 10.0, 5.7, 5.3];
+/// [`DOE11`]'s leaf in the tallest blank read −3.87 % (above); against the bending reference's
+/// upper bound ([`eighth_bending`]) [`DOE11`] reads −1.81 … +1.54 %, [`DOE10`]
+/// −1.57 … +2.21 %, [`DOE3`] to [`DOE7`] −1.49 … +2.97 %: every bending target met.
+const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.0, 5.7, 5.3];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses and peaks:
 /// −0.41 … +2.45 / −7.73 … +6.80 / −0.72 … +3.25 / −1.39 … +3.45: every target met (torsion
 /// −7.73 … +9.74 while compact waists carried warping restraint; axial
@@ -977,12 +1015,14 @@ fn known_bias_warnings_state_the_measured_bands() {
 /// measured 3.00 / 9.09 / 3.95 (2.97 / 8.55 / 3.95 before [`DOE12`]; 8.68 % torsion with the
 /// slopes 1.3 and 1.11 of the eleventh design's comparison). **Bending misses 3 % on one**:
 /// [`DOE12`]'s l2.4/R0.6/t1.05/w8.9/h6.9, a short leaf in a tall blank just short of the
-/// regime's width (w/l 3.7), −3.00 %, pinned at 3.1 % (see [`CORNER_TOL`]). With the warping constant's first blank slope,
+/// regime's width (w/l 3.7), −3.00 % against the extrapolation, −1.30 % against the bending
+/// reference's upper bound ([`eighth_bending`]), with which every reference outside the regime
+/// is within 2.97 / 9.09 / 3.95 %: the targets. With the warping constant's first blank slope,
 /// 0.84, torsion read 10.76 % on [`DOE10`]'s l3.25/R1.05/t1.35/w12.1/h9.8, a short leaf with
 /// sharp fillets in a tall blank just short of the regime's width (w/l 3.7); the slope refitted
 /// on ten designs (1.11) takes it to −8.68 %. (The regime's bounds were set on the earlier
 /// designs and were not moved to take it in.)
-const OUTSIDE_BIAS_TOL: [f64; 3] = [3.1, 10.0, 5.0];
+const OUTSIDE_BIAS_TOL: [f64; 3] = [3.0, 10.0, 5.0];
 
 /// The turned necks (the Ruiz et al. neck and three others; the neck's model is the earlier
 /// scikit-fem calibration, not refitted here).
