@@ -235,8 +235,8 @@ fn corner_filleted_fit_residual() {
 /// family (bending, torsion, axial, stress per moment, %). Measured: elliptical −0.67 … +0.26,
 /// −4.48 … −2.47 (−4.49 … −2.49 with the torsion law's slopes 1.3 and 0.84), +0.80 … +2.05 (+2.44 … +2.63 before the axial modulus took G and 0.6 of P),
 /// −1.58 … +0.78 %; corner-filleted −1.79 … −1.08 (−1.94 … −1.19 before the blank's plane-strain restraint, +0.19 … +1.81
-/// before the fillets got the short-notch factor G), −4.25 …
-/// −2.94 with the torsion law's slopes 1.3 and 0.84, now −3.13 … −1.33 (−4.01 … −2.61 with the warping constant spread at 0.57 everywhere), −0.49 … +0.27 (−0.72 … +0.07 before the blank's plane-strain restraint, −0.44 … +0.77 before the axial change), +4.56 … +6.67 % (+2.25 … +3.69 % with the K_t exponent 1/5; the
+/// before the fillets got the short-notch factor G), −3.13 …
+/// −1.33 (−4.25 … −2.94 with the torsion law's slopes 1.3 and 0.84; −4.01 … −2.61 with the warping constant spread at 0.57 everywhere), −0.49 … +0.27 (−0.72 … +0.07 before the blank's plane-strain restraint, −0.44 … +0.77 before the axial change), +4.56 … +6.67 % (+2.25 … +3.69 % with the K_t exponent 1/5; the
 /// refitted 0.27 matches converged peaks, which meshes sized by the thickness read low; before
 /// the torsion corrections and the corner K_t exponent 1/5: torsion −18.23 … −15.95, stress +10.72 … +14.75 %); leaf −5.61 … −4.53 (−5.92 … −4.67 before the blank's plane-strain restraint),
 /// −0.94 … −0.68 (−3.34 … −2.13 with the torsion law's slopes 1.3 and 0.84; −4.15 … −3.04 with the warping spread at 0.57 everywhere, −4.52 … −3.40 at 1/2; −2.89 … −1.40 before the warping constant took its own load spreading;

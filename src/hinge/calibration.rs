@@ -11,12 +11,13 @@
 //!   a_x²/a_y for elliptical notches);
 //! * the plane-strain factor P (every rectangular family): w/t 0.5–20.
 //!
-//! A second solver, CalculiX (ccx 2.20, C3D10, `tools/ccx_reference.py`; tests/hinge_ccx_reference.rs
-//! with its fitted and held-out rows, 218 models, stiffnesses extrapolated from two meshes,
-//! peak stresses converged on refined eighths), checks circular notches over t/R 0.08–0.5,
-//! w/t 0.5–20 and corner-filleted hinges over l/t 2–10, R/t 0.5–2.5, w/t 1–20, blank w/h
-//! 0.05–5 (outside the two regimes below, every one of the other 188 of the 218 models within
-//! 2.5 % in bending, 8.4 % in torsion, 3.9 % axially; peak stress within 3.9 % held out); the
+//! A second solver, CalculiX (ccx 2.20, C3D10, `tools/ccx_reference.py`;
+//! tests/hinge_ccx_reference.rs with its fitted and held-out rows, 378 circular and
+//! corner-filleted models, stiffnesses extrapolated from two meshes, peak stresses converged on
+//! refined eighths), checks circular notches over t/R 0.08–0.5, w/t 0.5–20 and corner-filleted
+//! hinges over l/t 2–10, R/t 0.5–2.5, w/t 1–20, blank w/h 0.05–5 (outside the regime below,
+//! every one of the other 318 models within 2.97 % in bending, 9.09 % in torsion, 3.95 %
+//! axially; peak stress within 5.28 %); the
 //! torsion law of [`super::torsion::solid_torsion_stiffness`] and the corner-filleted K_t
 //! ([`super::stress::stress_concentration`]) were fitted there. Corner-filleted hinges are
 //! range-checked in w/t only (the bundled pan-tilt hinge, t/R = 0.34, w/t = 16.7, lies in the
@@ -30,22 +31,21 @@
 //! regime by tests/hinge_ccx_reference.rs): short wide corner-filleted leaves
 //! ([`SHORT_WIDE_LEAF`]: l/t ≤ 2.75 and w/l ≥ 4), whose axial stiffness reads too soft, worst
 //! with sharp fillets (R/t ≈ 0.5–0.8) in tall blanks (h/t ≳ 5) with short blank lengths (0.5–0.8
-//! h). (Their bending read down to −3.87 % against the extrapolated full CalculiX models; the
-//! root-refined symmetric eighths of the same hinges, an upper bound on the true stiffness, are up
-//! to 2.10 % softer there, and against that bound the regime reads −2.08 … +2.21 %.)
-//! (Their torsion read down to −17 % before the warping constant's blank slope of
-//! [`super::torsion::solid_torsion_stiffness`], and down to −12.29 % with its first value, 0.84;
-//! with the slope refitted on ten designs, 1.11, within −6.78 … +7.63 % on them, but an
-//! eleventh design held out from the refit, with blanks up to 8.1 t tall, read torsion down to
-//! −12.67 %, bending to −3.87 % and axial to −5.45 %; with the torque's and the warping
-//! constant's slopes refitted together on all eleven designs (1.6 and 1.0) their torsion reads
-//! −8.42 … +8.75 %, and a twelfth design held out from that refit read −6.24 … +1.87 % on its
-//! such leaves in tall blanks. Their bending read down
-//! to −3.94 % until the blank's spreading zone took the plane-strain restraint of
-//! [`super::solid_effects`]; with it, a tenth CalculiX design of 12 such leaves in blanks 3–5 t
-//! above the fillets, held out from that law, read bending −2.96 … +0.71 %, torsion
-//! −12.29 … −3.62 % and axial −5.67 … −0.44 %. Narrow circular notches, w/t ≤ 1.1, read torsion
-//! up to 12.7 % too stiff and warned until a compact waist stopped carrying warping restraint.)
+//! h).
+//!
+//! History of the regime. Bending read down to −3.94 % until the blank's spreading zone took
+//! the plane-strain restraint of [`super::solid_effects`]; since then down to −3.87 % against
+//! the extrapolated full CalculiX models, whose root-refined symmetric eighths, an upper bound on
+//! the true stiffness, are up to 2.10 % softer there: against that bound the regime reads
+//! −2.08 … +2.21 %. Torsion read down to −17 % before the warping constant's blank slope of
+//! [`super::torsion::solid_torsion_stiffness`] and down to −12.29 % with its first value, 0.84;
+//! with the slope refitted on ten designs (1.11) the regime read −6.78 … +7.63 % on them, but an
+//! eleventh design held out from that refit, with blanks up to 8.1 t tall, read torsion down to
+//! −12.67 %; with the torque's and the warping constant's slopes refitted together on eleven
+//! designs (1.6 and 1.0) the regime reads −8.42 … +8.75 %, and a twelfth design held out from
+//! that refit read −6.24 … +1.87 % on its short wide leaves in tall blanks. Narrow circular
+//! notches, w/t ≤ 1.1, read torsion up to 12.7 % too stiff and warned until a compact waist
+//! stopped carrying warping restraint.
 
 use super::profile::{Contour, Profile};
 

@@ -68,7 +68,7 @@
 //!     (r = −0.76 over the 39 short wide leaves) and with the blank's shortness (b/h,
 //!     r = +0.55): a tall blank stiffens the hinge more than 0.84 lets it, while a low one
 //!     reaches its full height within about one t at any slope.
-//!   - Now: 1/2 in the notch (no number) and 1.11 in the blank, the same number refitted as the
+//!   - Then: 1/2 in the notch (no number) and 1.11 in the blank, the same number refitted as the
 //!     minimax of the torsion error over all 176 corner-filleted rows of the first ten designs
 //!     (slopes 1.0–1.7 in steps of about 0.1 and of 0.01 over 1.08–1.13): −8.68 … +8.65 %, the
 //!     short wide leaves −6.78 … +7.63 % (from −12.29 … +6.46 %). 1.0 and 1.3 give 9.39 and
@@ -78,8 +78,8 @@
 //!     once (tests/hinge_ccx_reference.rs): its 9 corner-filleted rows outside the short wide
 //!     regime read −7.56 … +5.02 %, but 5 of its 14 leaves in tall blanks, those
 //!     in the tallest (h/t 6.8–8.1), still read too soft, −12.67 … −10.38 %: the refit moved
-//!     the band, not the error's trend with h/t, and that regime warns
-//!     ([`crate::hinge::calibration::SHORT_WIDE_LEAF`]).
+//!     the band, not the error's trend with h/t, and that regime warned in torsion
+//!     ([`crate::hinge::calibration::SHORT_WIDE_LEAF`]) until the next refit.
 //!   - Now: the two slopes of this law, the Saint-Venant torque's (1.3 since the first
 //!     calibration, fitted with the blend centre on 74 rows of n = 4 stiffnesses) and this one,
 //!     refitted together as the minimax of the torsion error over every corner-filleted row of
