@@ -363,12 +363,21 @@ fn converged_stiffness(r: &CcxRef) -> [f64; 3] {
 /// these 40; not asserted). The [`PEAKS`] lines of [`PENDING`] designs are read too: no compared
 /// reference shares their geometries.
 fn eighth_bending(r: &CcxRef) -> Option<f64> {
+    eighths(r)
+        .iter()
+        .map(|l| l["k_bend"].as_f64().unwrap())
+        .reduce(f64::min)
+}
+
+/// The [`PEAKS`] lines of a reference's geometry (its root-refined symmetric eighths), read
+/// once for [`eighth_bending`] and [`converged_peak`].
+fn eighths(r: &CcxRef) -> Vec<&'static serde_json::Value> {
     static LINES: std::sync::OnceLock<Vec<serde_json::Value>> = std::sync::OnceLock::new();
     let lines = LINES.get_or_init(|| json_lines(PEAKS));
-    let hits = matching_lines(lines, r.hinge, r.e, r.nu, &[], |_| true);
-    hits.iter()
-        .map(|&i| lines[i]["k_bend"].as_f64().unwrap())
-        .reduce(f64::min)
+    matching_lines(lines, r.hinge, r.e, r.nu, &[], |_| true)
+        .into_iter()
+        .map(|i| &lines[i])
+        .collect()
 }
 
 /// The references re-solved at n = 6 (`tools/ccx_refine.py --n 6`).
@@ -405,12 +414,9 @@ fn pending_designs_are_not_compared() {
 /// the notch root, `tools/ccx_peak_stress.py`; see [`converged_peaks_checked`]). `None` for the
 /// turned necks, whose peak stays the n = 4 one.
 fn converged_peak(r: &CcxRef) -> Option<f64> {
-    static LINES: std::sync::OnceLock<Vec<serde_json::Value>> = std::sync::OnceLock::new();
-    let lines = LINES.get_or_init(|| json_lines(PEAKS));
-    let hits = matching_lines(lines, r.hinge, r.e, r.nu, &[], |_| true);
-    let peaks: Vec<f64> = hits
+    let peaks: Vec<f64> = eighths(r)
         .iter()
-        .map(|&i| lines[i]["stress_per_moment_nodal"].as_f64().unwrap())
+        .map(|l| l["stress_per_moment_nodal"].as_f64().unwrap())
         .collect();
     // A geometry solved twice (two references of the same hinge) agrees to the mesh's noise.
     assert!(

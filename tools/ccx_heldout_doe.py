@@ -349,27 +349,20 @@ def doe3():
 if __name__ == "__main__":
     import sys
 
-    if "--thirteenth" in sys.argv:
-        print(json.dumps(doe13(), indent=1))
-    elif "--twelfth" in sys.argv:
-        print(json.dumps(doe12(), indent=1))
-    elif "--eleventh" in sys.argv:
-        print(json.dumps(doe11(), indent=1))
-    elif "--tenth" in sys.argv:
-        print(json.dumps(doe10(), indent=1))
-    elif "--ninth" in sys.argv:
-        print(json.dumps(doe9(), indent=1))
-    elif "--eighth" in sys.argv:
-        print(json.dumps(doe8(), indent=1))
-    elif "--seventh" in sys.argv:
-        print(json.dumps(doe7(), indent=1))
-    elif "--sixth" in sys.argv:
-        print(json.dumps(doe4(20261203), indent=1))
-    elif "--fifth" in sys.argv:
-        print(json.dumps(doe4(20261202), indent=1))
-    elif "--fourth" in sys.argv:
-        print(json.dumps(doe4(), indent=1))
-    elif "--third" in sys.argv:
-        print(json.dumps(doe3(), indent=1))
-    else:
-        print(json.dumps(doe2() if "--second" in sys.argv else doe(), indent=1))
+    # The check sets by flag, in the order the flags are tried; no flag: the first set.
+    designs = [
+        ("--thirteenth", doe13),
+        ("--twelfth", doe12),
+        ("--eleventh", doe11),
+        ("--tenth", doe10),
+        ("--ninth", doe9),
+        ("--eighth", doe8),
+        ("--seventh", doe7),
+        ("--sixth", lambda: doe4(20261203)),
+        ("--fifth", lambda: doe4(20261202)),
+        ("--fourth", doe4),
+        ("--third", doe3),
+        ("--second", doe2),
+    ]
+    chosen = next((make for flag, make in designs if flag in sys.argv), doe)
+    print(json.dumps(chosen(), indent=1))
