@@ -387,7 +387,7 @@ const N6_RESULTS: &str = "ccx_refine_n6_results.jsonl";
 /// `_results.jsonl` files under `tools/`. Their lines in the re-solve files (n = 3, n = 6,
 /// converged peaks) are committed as they are solved and skipped by the checks here
 /// ([`compared_lines`]) until the design gets its test module and joins [`DESIGNS`].
-const PENDING: [&str; 1] = ["ccx_heldout13_results.jsonl"];
+const PENDING: [&str; 2] = ["ccx_heldout13_results.jsonl", "ccx_heldout14_results.jsonl"];
 
 /// The lines of a re-solve file under `tools/` whose reference is not of a [`PENDING`] design.
 fn compared_lines(file: &str) -> Vec<serde_json::Value> {
@@ -677,8 +677,10 @@ const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
 /// then at 3.1 / 10 / 5.4 / 5 %. Against the bending reference's upper bound (the root-refined
 /// eighth where it is softer than the extrapolation, [`eighth_bending`], taken after this
 /// comparison; no number chosen) they read −2.25 … +1.34 % in bending, the −3.00 % leaf
-/// −1.30 %: every bending target met. Pinned at 3 / 10 / 5.4 / 5 %.
-const CORNER_TOL: [f64; 4] = [3.0, 10.0, 5.4, 5.0];
+/// −1.30 %: every bending target met. Pinned at 3 / 10 / 5.4 / 5 %. Seen since by the corner
+/// fillet's peak law (fitted on these rows among others; see [`CORNER_SEEN_TOL`]): peak
+/// stress −0.81 … +1.24 %, pinned at 2.0 %.
+const CORNER_TOL: [f64; 4] = [3.0, 10.0, 5.4, 2.0];
 /// The 24 corner-filleted hinges of [`DOE11`] (14 short wide leaves with sharp fillets in tall
 /// blanks, 3–6 t above the fillets: h/t 5.3–8.1, blank length 0.5–2 h; 4 with the usual blanks;
 /// 6 by the second set's ranges), drawn, committed and solved before the warping constant's
@@ -800,11 +802,18 @@ const CORNER_TOL: [f64; 4] = [3.0, 10.0, 5.4, 5.0];
 /// With the torsion law's two slopes refitted together on [`DOE1`] to [`DOE11`] (1.6 and 1.0):
 /// torsion [`DOE3`] to [`DOE7`] −6.36 … +8.10, [`DOE8`] −3.69 … +8.26, [`DOE9`]
 /// −3.62 … +8.75, [`DOE10`] −5.36 … +7.91 %.
+/// Peak stress: with the corner fillet's peak law refitted (K_t = 1 + 0.24·t/(2R) of the narrow
+/// notch, times 1 − 0.71·(P − 1) and the long-leaf root amplification,
+/// `hinge::stress::stress_factor`; the minimax fit over these rows, [`DOE12`]'s and the
+/// one-dimension sweep of `tests/hinge_peak_sweep.rs`): [`DOE3`] to [`DOE7`] −1.56 … +1.98,
+/// [`DOE8`] −0.70 … +1.64 (its −5.28 % leaf +0.22 %), [`DOE9`] −0.83 … +1.65, [`DOE10`]
+/// −0.38 … +1.02, [`DOE11`] −1.39 … +0.86 %; pinned at 2.0 % (K_t^0.27/√P read
+/// −4.51 … +3.90 % on them).
 /// Axial: [`DOE10`]'s 3 short-blank leaves, −5.67 % (above), pinned at 5.7 %. Bending:
 /// [`DOE11`]'s leaf in the tallest blank read −3.87 % (above); against the bending reference's
 /// upper bound ([`eighth_bending`]) [`DOE11`] reads −1.81 … +1.54 %, [`DOE10`]
 /// −1.57 … +2.21 %, [`DOE3`] to [`DOE7`] −1.49 … +2.97 %: every bending target met.
-const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.0, 5.7, 5.3];
+const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.0, 5.7, 2.0];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses and peaks:
 /// −0.41 … +2.45 / −7.73 … +6.80 / −0.72 … +3.25 / −1.39 … +3.45: every target met (torsion
 /// −7.73 … +9.74 while compact waists carried warping restraint; axial
@@ -826,7 +835,9 @@ const CIRCULAR_FIT_TOL: [f64; 4] = TARGET;
 /// against its n = 4 stiffness, which is 2 % too stiff: −1.64 % against the extrapolation,
 /// −2.17 % against the n = 6/8 one.)
 /// With the torsion law's two slopes refitted on eleven designs (1.6 and 1.0): torsion
-/// −5.53 … +7.79 %.
+/// −5.53 … +7.79 %. With the corner fillet's peak law (K_t = 1 + 0.24·t/(2R) times
+/// 1 − 0.71·(P − 1) and the long-leaf root amplification, which replaced the exponent 0.27;
+/// fitted on these rows among others, see [`CORNER_SEEN_TOL`]): peak stress −1.33 … +1.80 %.
 const CORNER_FIT_TOL: [f64; 4] = TARGET;
 /// [`extrapolation_checked_on_finer_meshes`]: the references re-solved at n = 6 (other than
 /// short or wide corner-filleted, short or wide corner-filleted), and how closely the n = 3/4

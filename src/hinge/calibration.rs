@@ -17,9 +17,9 @@
 //! refined eighths), checks circular notches over t/R 0.08–0.5, w/t 0.5–20 and corner-filleted
 //! hinges over l/t 2–10, R/t 0.5–2.5, w/t 1–20, blank w/h 0.05–5 (outside the regime below,
 //! every one of the other 318 models within 2.97 % in bending, 9.09 % in torsion, 3.95 %
-//! axially; peak stress within 5.28 %); the
-//! torsion law of [`super::torsion::solid_torsion_stiffness`] and the corner-filleted K_t
-//! ([`super::stress::stress_concentration`]) were fitted there. Corner-filleted hinges are
+//! axially; peak stress within 3.64 %); the
+//! torsion law of [`super::torsion::solid_torsion_stiffness`] and the corner-filleted peak law
+//! ([`super::stress::stress_factor`], with a one-dimension sweep of 85 notches) were fitted there. Corner-filleted hinges are
 //! range-checked in w/t only (the bundled pan-tilt hinge, t/R = 0.34, w/t = 16.7, lies in the
 //! scikit-fem set).
 //!

@@ -128,7 +128,7 @@ impl ModelNotes {
     pub fn invariant_lines(&self) -> &'static [&'static str] {
         const MODULUS: &str = "compliant-axis bending modulus of the notch region E*P/G, axial modulus E*(1 + 0.6 (P - 1))/G (solid-calibrated): short-notch G and plane-strain P in calibration (corner fillets: G with rho = R on the fillet arcs only; the flat takes P without G); in the blank's load-spreading zone the same plane-strain restraint with the local effective thickness as its free edge layer, E*P_b and E*(1 + 0.6 (P_b - 1)), P_b = 1 + (P - 1)(w - s)/(w - t) for s < w (no fitted number)";
         const NECK_STRESS: &str = "stress: 32M/(pi t^3) at the waist x Kt = stress_concentration (shoulder-fillet Kt = 1 + 0.041 sqrt(t/R), fitted to solid models within 2%)";
-        const NOTCH_STRESS: &str = "stress: 6M/(w t^2) at the waist x stress_concentration (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, ^0.27 for the corner fillet, divided by sqrt(P) for the plane-strain waist; converged CalculiX solid models: within 4% for circular and corner-filleted notches)";
+        const NOTCH_STRESS: &str = "stress: 6M/(w t^2) at the waist x stress_concentration (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, divided by sqrt(P) for the plane-strain waist; corner fillet: Kt = 1 + 0.24 t/(2R), times 1 - 0.71 (P - 1) and the long-leaf root amplification; converged CalculiX solid models: within 4% for circular and corner-filleted notches)";
         const SPREAD: &str = "load spreading (solid-calibrated): effective half-size grows at calibration.load_spreading.slope from |x| = from_mm to to_mm";
         match (self.neck, self.spread.is_some()) {
             (true, true) => &[BEAM, FACE, NECK_TORSION, NECK_STRESS, SPREAD, MODULUS, CALIBRATION],
@@ -147,7 +147,7 @@ impl ModelNotes {
             v.push(format!("stress: 32M/(pi t^3) at the waist x Kt = {kt:.4} (shoulder-fillet Kt = 1 + 0.041 sqrt(t/R), fitted to solid models within 2%)"));
         } else {
             v.push(VLASOV.into());
-            v.push(format!("stress: 6M/(w t^2) at the waist x {kt:.4} (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, ^0.27 for the corner fillet, divided by sqrt(P) for the plane-strain waist; converged CalculiX solid models: within 4% for circular and corner-filleted notches)"));
+            v.push(format!("stress: 6M/(w t^2) at the waist x {kt:.4} (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, divided by sqrt(P) for the plane-strain waist; corner fillet: Kt = 1 + 0.24 t/(2R), times 1 - 0.71 (P - 1) and the long-leaf root amplification; converged CalculiX solid models: within 4% for circular and corner-filleted notches)"));
         }
         match self.spread {
             Some((slope, from, reach)) => v.push(format!(
