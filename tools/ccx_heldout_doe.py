@@ -163,6 +163,16 @@ thirteenth set), 8 long leaves with sharp fillets of moderate width (R/t 0.5-0.7
 w/t 3-10), then 6 circular notches and 8 corner-filleted leaves by the second set's ranges.
 
     python3 tools/ccx_heldout_doe.py --fourteenth > tools/ccx_heldout14_doe.json
+
+Fifteenth check set (`--fifteenth`, `tools/ccx_heldout15_doe.json`), drawn and committed right
+after the thirteenth was compared (its short wide leaves in tall short blanks read torsion and
+axial too soft) and before any law aimed at them, so that a law judged on the fourteenth can be
+checked once more: numpy `default_rng(20261212)`, 10 short wide leaves with sharp fillets in tall
+short blanks (blank above the fillets 4-8 t, blank length 0.5-1 h), 6 short wide leaves with sharp
+fillets and the usual blanks, then 6 circular notches and 8 corner-filleted leaves by the second
+set's ranges.
+
+    python3 tools/ccx_heldout_doe.py --fifteenth > tools/ccx_heldout15_doe.json
 """
 
 import json
@@ -358,6 +368,15 @@ def doe14():
     return rows + [{**r, "regime": "lhs"} for r in corner2(rng, 8, [(0.5, 2.5), (0.3, 6.0)])]
 
 
+def doe15():
+    rng = np.random.default_rng(20261212)
+    sharp = [(0.5, 0.8), (0.3, 1.5)]
+    rows = [{**r, "regime": "lhs: short wide leaf, sharp fillets, tall short blank"} for r in corner2(rng, 10, sharp, (8.0, 20.0), (4.0, 8.0), (0.5, 1.0))]
+    rows += [{**r, "regime": "lhs: short wide leaf, sharp fillets"} for r in corner2(rng, 6, sharp, (8.0, 20.0))]
+    rows += [{**r, "regime": "lhs"} for r in circular2(rng, 6)]
+    return rows + [{**r, "regime": "lhs"} for r in corner2(rng, 8, [(0.5, 2.5), (0.3, 6.0)])]
+
+
 def doe3():
     rng = np.random.default_rng(20261130)
     rows = [{**r, "regime": "lhs"} for r in corner2(rng, 8, [(0.5, 2.5), (0.3, 6.0)])]
@@ -370,6 +389,7 @@ if __name__ == "__main__":
 
     # The check sets by flag, in the order the flags are tried; no flag: the first set.
     designs = [
+        ("--fifteenth", doe15),
         ("--fourteenth", doe14),
         ("--thirteenth", doe13),
         ("--twelfth", doe12),
