@@ -227,6 +227,21 @@
 //! torsion band too since the thirteenth design). Torsion and axial have no such bound here (the
 //! eighths are solved for bending and peak stress only).
 //!
+//! The corner fillet's peak law. After the twelfth comparison the peak stress missed 5 % on one
+//! long leaf with sharp fillets (−5.28 %), and the long mid-width leaves with sharp fillets read
+//! 2–5 % low. An 85-notch CalculiX sweep, one dimension at a time (tests/hinge_peak_sweep.rs),
+//! showed the narrow notch's K_t, the wide notch's plane-strain shedding and a long flat's root
+//! amplification separately; the law fitted on it and on the first twelve designs
+//! (`flexfem::hinge::stress::stress_factor`) was then judged once on the thirteenth design
+//! ([`DOE13`]: peak −0.79 … +1.35 %, its 8 long leaves with sharp fillets −0.52 … +0.83 %) and,
+//! with no law changed in between, on the fourteenth ([`DOE14`]: −1.01 … +1.58 %, its 8 long
+//! sharp leaves −0.66 … +1.05 %). Both designs meet every target outside the short wide regime;
+//! inside it their 18 leaves in tall short blanks (h/t 6.3–9.0, blank length 0.5–1 h) read
+//! torsion down to −12.23 % (3 beyond 10 %) and axial down to −6.90 % (7 beyond 5 %), too soft:
+//! the regime warns with both bands. A fifteenth design (`tools/ccx_heldout15_doe.json`,
+//! `--fifteenth`, `default_rng(20261212)`: 10 more such leaves), committed after the thirteenth
+//! comparison and before any law aimed at these misses, is [`PENDING`] for the next law.
+//!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
 //!
@@ -287,6 +302,9 @@ use doe12::DOE12;
 #[path = "hinge_ccx_reference/doe13.rs"]
 mod doe13;
 use doe13::DOE13;
+#[path = "hinge_ccx_reference/doe14.rs"]
+mod doe14;
+use doe14::DOE14;
 
 #[path = "hinge_ccx_reference/raw.rs"]
 mod raw;
@@ -361,10 +379,10 @@ fn converged_stiffness(r: &CcxRef) -> [f64; 3] {
 /// ([`PEAKS`]), N·mm/rad. A conforming displacement model (C3D10, rigid end face) is stiffer
 /// than the elastic body it discretises, so this is an upper bound on the true stiffness: where
 /// it lies below the extrapolated full model, the extrapolation is known to be too stiff, and
-/// [`converged_stiffness`] takes the bound instead (on 50 of 408 references, by up to 2.10 %:
-/// short leaves with sharp fillets whose full models at n = 6 do not yet resolve the root; the
-/// eighth moves by at most 0.03 % from k = 12 to k = 16 on the 103 models solved at k = 16, 3 of
-/// these 40; not asserted). The [`PEAKS`] lines of [`PENDING`] designs are read too: no compared
+/// [`converged_stiffness`] takes the bound instead (on 50 of the 408 references up to [`DOE13`],
+/// by up to 2.10 %: short leaves with sharp fillets whose full models at n = 6 do not yet
+/// resolve the root; the eighth moves by at most 0.03 % from k = 12 to k = 16 on the 103 models
+/// solved at k = 16, 3 of the first 40; not asserted). The [`PEAKS`] lines of [`PENDING`] designs are read too: no compared
 /// reference shares their geometries.
 fn eighth_bending(r: &CcxRef) -> Option<f64> {
     eighths(r)
@@ -391,7 +409,7 @@ const N6_RESULTS: &str = "ccx_refine_n6_results.jsonl";
 /// `_results.jsonl` files under `tools/`. Their lines in the re-solve files (n = 3, n = 6,
 /// converged peaks) are committed as they are solved and skipped by the checks here
 /// ([`compared_lines`]) until the design gets its test module and joins [`DESIGNS`].
-const PENDING: [&str; 2] = ["ccx_heldout14_results.jsonl", "ccx_heldout15_results.jsonl"];
+const PENDING: [&str; 1] = ["ccx_heldout15_results.jsonl"];
 
 /// The lines of a re-solve file under `tools/` whose reference is not of a [`PENDING`] design.
 fn compared_lines(file: &str) -> Vec<serde_json::Value> {
@@ -552,7 +570,7 @@ fn every_reference_is_a_line_of_the_raw_results() {
 /// The fresh designs of experiments: file stem under `tools/` (`_doe.json` the design,
 /// `_results.jsonl` its CalculiX results), the references, their number, how many are circular
 /// notches.
-const DESIGNS: [(&str, &[CcxRef], usize, usize); 13] = [
+const DESIGNS: [(&str, &[CcxRef], usize, usize); 14] = [
     ("ccx_heldout", DOE1, 24, 12),
     ("ccx_heldout2", DOE2, 24, 12),
     ("ccx_heldout3", DOE3, 20, 4),
@@ -566,6 +584,7 @@ const DESIGNS: [(&str, &[CcxRef], usize, usize); 13] = [
     ("ccx_heldout11", DOE11, 30, 6),
     ("ccx_heldout12", DOE12, 30, 6),
     ("ccx_heldout13", DOE13, 30, 6),
+    ("ccx_heldout14", DOE14, 30, 6),
 ];
 
 /// The fresh rows are the committed designs of experiments, in their order
@@ -606,7 +625,10 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 
 /// The targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
-/// 6 circular notches of [`DOE13`], drawn and committed before the torsion law's two slopes were
+/// 6 circular notches of [`DOE14`], drawn and committed before the corner fillet's peak law and
+/// before [`DOE13`] was compared, held out from every law and compared once with the frozen
+/// model: −0.10 … +1.79 / −5.75 … +5.80 / −0.02 … +2.67 / −0.35 … +2.53: every target met.
+/// The 6 of [`DOE13`], drawn and committed before the torsion law's two slopes were
 /// refitted together and before the corner fillet's peak law, held out from every law and
 /// compared once with the frozen model: +0.01 … +2.09 / −7.21 … +6.85 / +0.51 … +1.99 /
 /// +0.24 … +3.56: every target met.
@@ -671,7 +693,22 @@ const CIRCULAR_TOL: [f64; 4] = TARGET;
 /// [`DOE8`]): the 18 now read −0.43 … +2.02 / −6.43 … +1.90 / −0.88 … +2.56 / −0.84 … +2.89,
 /// every target met, the narrow ones −4.81 … +1.14 % in torsion.
 const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
-/// 24 corner-filleted hinges of [`DOE13`] (10 short wide leaves with sharp fillets in tall short
+/// 24 corner-filleted hinges of [`DOE14`] (8 short wide leaves with sharp fillets in tall short
+/// blanks: 4–7 t above the fillets, h/t 6.3–9.0, blank length 0.5–1 h; 8 long leaves with sharp
+/// fillets: R/t 0.50–0.69, flat 2.7–7.5 t, w/t 3.3–9.3; 8 by the second set's ranges), drawn and
+/// committed before the corner fillet's peak law and before [`DOE13`] was compared, held out
+/// from every law and compared once with the frozen model (no law changed between the two
+/// comparisons): −1.94 … +1.12 / −10.97 … +9.32 / −5.96 … +1.51 / −1.01 … +1.58. **The peak
+/// law holds a second time**: the 8 long leaves with sharp fillets read −0.66 … +1.05 % in peak
+/// stress and meet every target; bending and peak stress meet the targets on every row, and the
+/// 16 rows outside the short wide regime meet every target (torsion −5.35 … +9.32 %). **The
+/// tall short blanks stay too soft**: of the 8 short wide leaves in them torsion misses 10 % on 2
+/// (l3.5/R1.05/t1.75/w18.65/h15.7/b11.6, h/t 9.0, −10.97 %; l2.5/R0.85/t1.25/w10.6/h9.35/b5.3,
+/// −10.15 %) and axial 5 % on 3 (−5.96, −5.42, −5.33 %), inside the regime's warned bands
+/// (unchanged by these 8: torsion −12.23 … +8.75, axial −6.90 … +1.36 % over 79 models).
+/// Pinned at 3 / 11 / 6 / 1.6 %.
+const CORNER_TOL: [f64; 4] = [3.0, 11.0, 6.0, 1.6];
+/// The 24 corner-filleted hinges of [`DOE13`] (10 short wide leaves with sharp fillets in tall short
 /// blanks: 4–7 t above the fillets, h/t 6.5–9.0, blank length 0.5–1 h; 8 long leaves with sharp
 /// fillets: R/t 0.52–0.59, flat 3–8 t, w/t 3–10; 6 by the second set's ranges), drawn and
 /// committed before the torsion law's two slopes were refitted together, before [`DOE12`] was
@@ -688,10 +725,9 @@ const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
 /// others −9.82 … −1.66 %) and axial 5 % on 4 (−6.90, −5.93, −5.61, −5.17 %: the leaves whose
 /// blanks are shortest for their height, b/h 0.52–0.68; the five with b/h ≥ 0.73 read
 /// −4.33 … −3.35 %, one with b/h 0.59 −3.29 %). All are in the short wide regime, which warns with the band now measured on 71
-/// models (torsion −12.23 … +8.75, axial −6.90 … +1.36 %). Pinned at 3 / 12.3 / 7.0 / 1.4 %; a
-/// fourteenth design (`tools/ccx_heldout14_doe.json`, committed and solved before this
-/// comparison) judges the next law.
-const CORNER_TOL: [f64; 4] = [3.0, 12.3, 7.0, 1.4];
+/// models (torsion −12.23 … +8.75, axial −6.90 … +1.36 %). Pinned then at 3 / 12.3 / 7.0 /
+/// 1.4 %; since it joined the seen designs, its misses set [`CORNER_SEEN_TOL`]'s torsion and
+/// axial pins (12.3 / 7.0 %).
 /// The 24 corner-filleted hinges of [`DOE12`] (8 long wide leaves with sharp fillets: flat 3–8 t,
 /// w/t 10–20; 8 short wide leaves with sharp fillets in tall blanks, 3–6 t above the fillets; 8
 /// by the second set's ranges), drawn and committed before the torsion law's two slopes were
@@ -842,7 +878,7 @@ const CORNER_TOL: [f64; 4] = [3.0, 12.3, 7.0, 1.4];
 /// [`DOE11`]'s leaf in the tallest blank read −3.87 % (above); against the bending reference's
 /// upper bound ([`eighth_bending`]) [`DOE11`] reads −1.81 … +1.54 %, [`DOE10`]
 /// −1.57 … +2.21 %, [`DOE3`] to [`DOE7`] −1.49 … +2.97 %: every bending target met.
-const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.0, 5.7, 2.0];
+const CORNER_SEEN_TOL: [f64; 4] = [3.0, 12.3, 7.0, 2.0];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses and peaks:
 /// −0.41 … +2.45 / −7.73 … +6.80 / −0.72 … +3.25 / −1.39 … +3.45: every target met (torsion
 /// −7.73 … +9.74 while compact waists carried warping restraint; axial
@@ -872,15 +908,15 @@ const CORNER_FIT_TOL: [f64; 4] = TARGET;
 /// short or wide corner-filleted, short or wide corner-filleted), and how closely the n = 3/4
 /// extrapolation agrees with the n = 4/6 one (bending, torsion, axial, %). Measured: within
 /// 0.76 / 1.13 / 0.42 % on the 62 others, every one with at most 30,000 unknowns at n = 4;
-/// within 5.40 / 4.67 / 1.86 % on all 118 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
-/// leaves (4.19 / 4.01 / 1.86 % on the 107 before the thirteenth design's 11, whose tall short
+/// within 5.40 / 4.67 / 1.86 % on all 127 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
+/// leaves (the same on the 118 before the fourteenth design's 9; 4.19 / 4.01 / 1.86 % on the 107 before the thirteenth design's 11, whose tall short
 /// blanks widen the gap; the same on the 94 before the twelfth design's 13; 4.02 / 4.01 / 1.67 % on the 74
 /// before the eleventh design's 20, 3.16 / 3.67 / 1.44 %
 /// on the 55 before the tenth design's 19), the worst short wide
 /// leaves with sharp fillets (R/t ≈ 0.5), whose n = 3 mesh is too coarse
 /// for the asymptotic rate: there the n = 3/4 extrapolation over-corrects, and the tables take
 /// the n = 4/6 one ([`converged_stiffness`]).
-const N6_ROWS: [usize; 2] = [62, 118];
+const N6_ROWS: [usize; 2] = [62, 127];
 const EXTRAPOLATION_TOL: [f64; 3] = [0.8, 1.2, 0.45];
 const SHORT_WIDE_EXTRAPOLATION_TOL: [f64; 3] = [5.5, 4.7, 1.9];
 /// The nodal-averaged peak stress from n = 4 to n = 6 on those references, %: measured
@@ -934,16 +970,19 @@ fn fit_rows() -> Vec<Row> {
     )
 }
 
-/// One family on the held-out designs: [`DOE13`] (held out from every law) against `fresh`;
-/// [`DOE3`] to [`DOE7`] together and [`DOE8`] to [`DOE12`] each (each compared once
+/// One family on the held-out designs: [`DOE14`] (held out from every law) against `fresh`;
+/// [`DOE3`] to [`DOE7`] together and [`DOE8`] to [`DOE13`] each (each compared once
 /// with the model of its day, seen by later changes and, the corner-filleted rows, by the refits
 /// of the torsion law's slopes) against `seen`.
-fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 11], fresh: [f64; 4], seen: [f64; 4]) {
-    let designs = [DOE3, DOE4, DOE5, DOE6, DOE7, DOE8, DOE9, DOE10, DOE11, DOE12, DOE13]
-        .map(|d| rows(&d.iter().collect::<Vec<_>>()));
+fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 12], fresh: [f64; 4], seen: [f64; 4]) {
+    let designs = [
+        DOE3, DOE4, DOE5, DOE6, DOE7, DOE8, DOE9, DOE10, DOE11, DOE12, DOE13, DOE14,
+    ]
+    .map(|d| rows(&d.iter().collect::<Vec<_>>()));
     let per_design = designs.each_ref().map(|r| family(r, f));
     assert_eq!(per_design.each_ref().map(|r| r.len()), counts);
-    let [third, fourth, fifth, sixth, seventh, eighth, ninth, tenth, eleventh, twelfth, thirteenth] = per_design;
+    let [third, fourth, fifth, sixth, seventh, eighth, ninth, tenth, eleventh, twelfth, thirteenth, fourteenth] =
+        per_design;
     let earlier: Vec<&Row> = [third, fourth, fifth, sixth, seventh].into_iter().flatten().collect();
     check(
         &format!("{name}, DOE3 to DOE7"),
@@ -959,6 +998,7 @@ fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 11], fresh: [
         ("DOE10", tenth),
         ("DOE11", eleventh),
         ("DOE12", twelfth),
+        ("DOE13", thirteenth),
     ] {
         check(
             &format!("{name}, {design}"),
@@ -970,8 +1010,8 @@ fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 11], fresh: [
         );
     }
     check(
-        &format!("{name}, DOE13"),
-        report(&format!("{name} vs CalculiX, HELD OUT, DOE13"), &thirteenth),
+        &format!("{name}, DOE14"),
+        report(&format!("{name} vs CalculiX, HELD OUT, DOE14"), &fourteenth),
         fresh,
     );
 }
@@ -981,7 +1021,7 @@ fn circular_notches_held_out() {
     held_out(
         "circular notches",
         circular,
-        [4, 12, 12, 12, 12, 18, 16, 6, 6, 6, 6],
+        [4, 12, 12, 12, 12, 18, 16, 6, 6, 6, 6, 6],
         CIRCULAR_TOL,
         CIRCULAR_SEEN_TOL,
     );
@@ -992,7 +1032,7 @@ fn corner_filleted_held_out() {
     held_out(
         "corner-filleted hinges",
         corner,
-        [16, 12, 12, 12, 20, 20, 16, 24, 24, 24, 24],
+        [16, 12, 12, 12, 20, 20, 16, 24, 24, 24, 24, 24],
         CORNER_TOL,
         CORNER_SEEN_TOL,
     );
@@ -1071,8 +1111,8 @@ fn known_bias_warnings_state_the_measured_bands() {
 }
 
 /// Every CalculiX reference outside the known-bias regimes (bending, torsion, axial, %):
-/// measured 2.97 / 9.09 / 3.95 against the bending reference's upper bound ([`eighth_bending`]):
-/// the targets (2.97 / 8.55 / 3.95 before [`DOE12`]; 8.68 % torsion with the slopes 1.3 and 1.11
+/// measured 2.97 / 9.32 / 3.95 (torsion 9.09 before the fourteenth design) against the bending
+/// reference's upper bound ([`eighth_bending`]): the targets (2.97 / 8.55 / 3.95 before [`DOE12`]; 8.68 % torsion with the slopes 1.3 and 1.11
 /// of the eleventh design's comparison). Against the extrapolation alone, bending read −3.00 %
 /// on [`DOE12`]'s l2.4/R0.6/t1.05/w8.9/h6.9, a short leaf in a tall blank just short of the
 /// regime's width (w/l 3.7); −1.30 % against the bound. With the warping constant's first blank slope,
@@ -1166,7 +1206,7 @@ fn peak_stress_mesh_convergence() {
 /// solved at n = 3 as well as n = 4, and the stiffnesses compared are the order-2 Richardson
 /// extrapolation of the pair ([`CcxRef::converged`]). Checked here on the data alone, no flexfem
 /// number involved:
-/// * n = 4 is not converged: up to +5.67 % stiff in bending against the extrapolation (the
+/// * n = 4 is not converged: up to +5.82 % stiff in bending against the extrapolation (the
 ///   earlier claim, "within about 0.3 %", came from two hinges);
 /// * on the references re-solved at n = 6 (`tools/ccx_refine_n6_results.jsonl`: every one with
 ///   at most 30,000 unknowns at n = 4, then the short or wide corner-filleted leaves) the
@@ -1208,7 +1248,7 @@ fn extrapolation_checked_on_finer_meshes() {
     }
     println!("n = 4 above the n = 3/4 extrapolation by up to {off:.2?} % (bending, torsion, axial)");
     assert!(
-        (5.5..5.8).contains(&off[0]),
+        (5.5..5.9).contains(&off[0]),
         "bending: n = 4 off by up to {:.2} %",
         off[0]
     );
@@ -1319,7 +1359,7 @@ fn converged_peaks_checked() {
         .values()
         .map(|lines| lines.iter().filter(|l| l["type"] != "spherical_neck").count())
         .sum();
-    assert_eq!((sources.len(), k12.len(), flat_notches), (14, 408, 408));
+    assert_eq!((sources.len(), k12.len(), flat_notches), (15, 438, 438));
     let (n3, n6) = (
         compared_lines("ccx_refine_n3_results.jsonl"),
         compared_lines(N6_RESULTS),
