@@ -27,9 +27,6 @@ pub struct Spread {
     pub knee: f64,
     /// The growth beyond `knee`; `slope` unless set by [`Profile::spread_into_blank`].
     pub blank_slope: f64,
-    /// Slope at which the section of the loaded blank end face narrows back into the blank (0:
-    /// no such completion; set by [`Profile::with_end_face`]).
-    pub face_slope: f64,
 }
 
 impl Spread {
@@ -244,19 +241,7 @@ impl Profile {
             slope,
             knee: hn,
             blank_slope,
-            face_slope: 0.0,
         });
-        self
-    }
-
-    /// The same spread profile completed from the blank end face: a rigid end face carries the
-    /// load over its whole section, which narrows back into the blank at `slope` per unit length,
-    /// so the effective half-size is at least the far half-size less `slope` × the distance to
-    /// the end face (`hinge::torsion::solid`). No effect without spreading or with `slope` ≤ 0.
-    pub fn with_end_face(mut self, slope: f64) -> Profile {
-        if let Some(sp) = self.spread.as_mut() {
-            sp.face_slope = slope.max(0.0);
-        }
         self
     }
 
@@ -320,13 +305,7 @@ impl Profile {
         let u = x.abs();
         let s = self.half_size(u);
         match self.spread {
-            Some(sp) if u > sp.from => {
-                let mut e = sp.taper(u);
-                if sp.face_slope > 0.0 {
-                    e = e.max(self.far_half_size() - sp.face_slope * (self.half_length() - u));
-                }
-                s.min(e)
-            }
+            Some(sp) if u > sp.from => s.min(sp.taper(u)),
             _ => s,
         }
     }
