@@ -180,6 +180,11 @@ import json
 import numpy as np
 
 
+# (R/t, flat/t) ranges of corner-filleted leaves with sharp fillets and of the second set.
+SHARP = [(0.5, 0.8), (0.3, 1.5)]
+SECOND = [(0.5, 2.5), (0.3, 6.0)]
+
+
 def lhs(rng, n, bounds):
     """n points, one per stratum and dimension, strata centres, log-uniform in each bound."""
     cols = []
@@ -245,7 +250,7 @@ def doe2():
     rows = [{**r, "regime": "lhs"} for r in circular2(rng, 10)]
     for r, t, w, h, b in [(4.0, 1.0, 15.0, 5.0, 5.0), (6.0, 1.5, 30.0, 6.0, 8.0)]:
         rows.append({"type": "circular_notch", "R": r, "t": t, "w": w, "h": h, "blank_length": b, "regime": "wide, low blank"})
-    rows += [{**r, "regime": "lhs"} for r in corner2(rng, 10, [(0.5, 2.5), (0.3, 6.0)])]
+    rows += [{**r, "regime": "lhs"} for r in corner2(rng, 10, SECOND)]
     for l, r, t, w, h, b in [(4.0, 1.0, 1.0, 15.0, 5.0, 5.0), (6.0, 1.5, 1.5, 30.0, 6.0, 8.0)]:
         rows.append(
             {"type": "corner_filleted", "l": l, "R": r, "t": t, "w": w, "h": h, "blank_length": b, "regime": "wide, low blank"}
@@ -296,7 +301,7 @@ def doe4(seed=20261201):
 
 def doe4_rows(rng):
     rows = [{**r, "regime": "lhs"} for r in circular2(rng, 12)]
-    return rows + [{**r, "regime": "lhs"} for r in corner2(rng, 12, [(0.5, 2.5), (0.3, 6.0)])]
+    return rows + [{**r, "regime": "lhs"} for r in corner2(rng, 12, SECOND)]
 
 
 def doe7():
@@ -308,28 +313,44 @@ def doe7():
 def doe8():
     rng = np.random.default_rng(20261205)
     rows = doe4_rows(rng)
-    rows += [{**r, "regime": "lhs: short wide leaf, sharp fillets"} for r in corner2(rng, 8, [(0.5, 0.8), (0.3, 1.5)], (8.0, 20.0))]
+    rows += [{**r, "regime": "lhs: short wide leaf, sharp fillets"} for r in corner2(rng, 8, SHARP, (8.0, 20.0))]
     return rows + [{**r, "regime": "lhs: narrow circular notch"} for r in circular2(rng, 6, (0.5, 1.1))]
 
 
 def doe9():
     rng = np.random.default_rng(20261206)
     rows = [{**r, "regime": "lhs"} for r in circular2(rng, 8)]
-    rows += [{**r, "regime": "lhs"} for r in corner2(rng, 8, [(0.5, 2.5), (0.3, 6.0)])]
-    rows += [{**r, "regime": "lhs: short wide leaf, sharp fillets"} for r in corner2(rng, 8, [(0.5, 0.8), (0.3, 1.5)], (8.0, 20.0))]
+    rows += [{**r, "regime": "lhs"} for r in corner2(rng, 8, SECOND)]
+    rows += [{**r, "regime": "lhs: short wide leaf, sharp fillets"} for r in corner2(rng, 8, SHARP, (8.0, 20.0))]
     return rows + [{**r, "regime": "lhs: narrow circular notch"} for r in circular2(rng, 8, (0.5, 1.1))]
+
+
+# The leaves the later designs aim at, as (regime, (R/t, flat/t) ranges, corner2's other ranges).
+TALL_BLANK = ("short wide leaf, sharp fillets, tall blank", SHARP)
+TALL_SHORT_BLANK = ("short wide leaf, sharp fillets, tall short blank", SHARP)
+USUAL_BLANK = ("short wide leaf, sharp fillets", SHARP, {"w_over_t": (8.0, 20.0)})
+
+
+def aimed_doe(seed, groups, n_corner):
+    """A design aimed at particular leaves: `groups` of (n, regime, (R/t, flat/t) ranges,
+    corner2's other ranges as keywords), drawn in that order, then 6 circular notches and
+    `n_corner` corner-filleted leaves by the second set's ranges."""
+    rng = np.random.default_rng(seed)
+    rows = [
+        {**r, "regime": f"lhs: {regime}"}
+        for n, regime, ranges, other in groups
+        for r in corner2(rng, n, ranges, **other)
+    ]
+    rows += [{**r, "regime": "lhs"} for r in circular2(rng, 6)]
+    return rows + [{**r, "regime": "lhs"} for r in corner2(rng, n_corner, SECOND)]
 
 
 def tall_blank_doe(seed, n_tall, tall_blank_over_t, n_usual):
     """A design aimed at short wide leaves with sharp fillets in tall blanks: `n_tall` such leaves
     with the blank above the fillets in `tall_blank_over_t` (in t), `n_usual` with the usual
     blanks, then 6 circular notches and 6 corner-filleted leaves by the second set's ranges."""
-    rng = np.random.default_rng(seed)
-    sharp = [(0.5, 0.8), (0.3, 1.5)]
-    rows = [{**r, "regime": "lhs: short wide leaf, sharp fillets, tall blank"} for r in corner2(rng, n_tall, sharp, (8.0, 20.0), tall_blank_over_t)]
-    rows += [{**r, "regime": "lhs: short wide leaf, sharp fillets"} for r in corner2(rng, n_usual, sharp, (8.0, 20.0))]
-    rows += [{**r, "regime": "lhs"} for r in circular2(rng, 6)]
-    return rows + [{**r, "regime": "lhs"} for r in corner2(rng, 6, [(0.5, 2.5), (0.3, 6.0)])]
+    tall = {"w_over_t": (8.0, 20.0), "blank_over_t": tall_blank_over_t}
+    return aimed_doe(seed, [(n_tall, *TALL_BLANK, tall), (n_usual, *USUAL_BLANK)], 6)
 
 
 def doe10():
@@ -341,45 +362,38 @@ def doe11():
 
 
 def doe12():
-    rng = np.random.default_rng(20261209)
-    sharp = [(0.5, 0.8), (0.3, 1.5)]
-    long_sharp = [(0.5, 0.8), (3.0, 8.0)]
-    rows = [{**r, "regime": "lhs: long wide leaf, sharp fillets"} for r in corner2(rng, 8, long_sharp, (10.0, 20.0), (0.5, 6.0))]
-    rows += [{**r, "regime": "lhs: short wide leaf, sharp fillets, tall blank"} for r in corner2(rng, 8, sharp, (8.0, 20.0), (3.0, 6.0))]
-    rows += [{**r, "regime": "lhs"} for r in circular2(rng, 6)]
-    return rows + [{**r, "regime": "lhs"} for r in corner2(rng, 8, [(0.5, 2.5), (0.3, 6.0)])]
+    long_wide = ("long wide leaf, sharp fillets", [(0.5, 0.8), (3.0, 8.0)], {"w_over_t": (10.0, 20.0), "blank_over_t": (0.5, 6.0)})
+    tall = {"w_over_t": (8.0, 20.0), "blank_over_t": (3.0, 6.0)}
+    return aimed_doe(20261209, [(8, *long_wide), (8, *TALL_BLANK, tall)], 8)
+
+
+def tall_short(blank_over_t):
+    """corner2's ranges of short wide leaves in tall short blanks (blank length 0.5-1 h)."""
+    return {"w_over_t": (8.0, 20.0), "blank_over_t": blank_over_t, "blank_length_over_h": (0.5, 1.0)}
+
+
+def long_leaves(r_over_t, flat_over_t):
+    """A group of long leaves with sharp fillets of moderate width (w/t 3-10)."""
+    return ("long leaf, sharp fillets", [r_over_t, flat_over_t], {"w_over_t": (3.0, 10.0)})
 
 
 def doe13():
-    rng = np.random.default_rng(20261210)
-    sharp = [(0.5, 0.8), (0.3, 1.5)]
-    rows = [{**r, "regime": "lhs: short wide leaf, sharp fillets, tall short blank"} for r in corner2(rng, 10, sharp, (8.0, 20.0), (4.0, 7.0), (0.5, 1.0))]
-    rows += [{**r, "regime": "lhs: long leaf, sharp fillets"} for r in corner2(rng, 8, [(0.5, 0.6), (3.0, 8.0)], (3.0, 10.0))]
-    rows += [{**r, "regime": "lhs"} for r in circular2(rng, 6)]
-    return rows + [{**r, "regime": "lhs"} for r in corner2(rng, 6, [(0.5, 2.5), (0.3, 6.0)])]
+    groups = [(10, *TALL_SHORT_BLANK, tall_short((4.0, 7.0))), (8, *long_leaves((0.5, 0.6), (3.0, 8.0)))]
+    return aimed_doe(20261210, groups, 6)
 
 
 def doe14():
-    rng = np.random.default_rng(20261211)
-    sharp = [(0.5, 0.8), (0.3, 1.5)]
-    rows = [{**r, "regime": "lhs: short wide leaf, sharp fillets, tall short blank"} for r in corner2(rng, 8, sharp, (8.0, 20.0), (4.0, 7.0), (0.5, 1.0))]
-    rows += [{**r, "regime": "lhs: long leaf, sharp fillets"} for r in corner2(rng, 8, [(0.5, 0.7), (2.5, 8.0)], (3.0, 10.0))]
-    rows += [{**r, "regime": "lhs"} for r in circular2(rng, 6)]
-    return rows + [{**r, "regime": "lhs"} for r in corner2(rng, 8, [(0.5, 2.5), (0.3, 6.0)])]
+    groups = [(8, *TALL_SHORT_BLANK, tall_short((4.0, 7.0))), (8, *long_leaves((0.5, 0.7), (2.5, 8.0)))]
+    return aimed_doe(20261211, groups, 8)
 
 
 def doe15():
-    rng = np.random.default_rng(20261212)
-    sharp = [(0.5, 0.8), (0.3, 1.5)]
-    rows = [{**r, "regime": "lhs: short wide leaf, sharp fillets, tall short blank"} for r in corner2(rng, 10, sharp, (8.0, 20.0), (4.0, 8.0), (0.5, 1.0))]
-    rows += [{**r, "regime": "lhs: short wide leaf, sharp fillets"} for r in corner2(rng, 6, sharp, (8.0, 20.0))]
-    rows += [{**r, "regime": "lhs"} for r in circular2(rng, 6)]
-    return rows + [{**r, "regime": "lhs"} for r in corner2(rng, 8, [(0.5, 2.5), (0.3, 6.0)])]
+    return aimed_doe(20261212, [(10, *TALL_SHORT_BLANK, tall_short((4.0, 8.0))), (6, *USUAL_BLANK)], 8)
 
 
 def doe3():
     rng = np.random.default_rng(20261130)
-    rows = [{**r, "regime": "lhs"} for r in corner2(rng, 8, [(0.5, 2.5), (0.3, 6.0)])]
+    rows = [{**r, "regime": "lhs"} for r in corner2(rng, 8, SECOND)]
     rows += [{**r, "regime": "lhs: large fillet, short flat"} for r in corner2(rng, 8, [(1.2, 2.5), (0.3, 2.0)])]
     return rows + [{**r, "regime": "lhs"} for r in circular2(rng, 4)]
 
