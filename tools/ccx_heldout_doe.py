@@ -173,6 +173,18 @@ fillets and the usual blanks, then 6 circular notches and 8 corner-filleted leav
 set's ranges.
 
     python3 tools/ccx_heldout_doe.py --fifteenth > tools/ccx_heldout15_doe.json
+
+Sixteenth check set (`--sixteenth`, `tools/ccx_heldout16_doe.json`), drawn and committed when the
+rigid end faces' reach into the blank for the torque was re-landed (fitted on the first fourteen
+sets, judged on the fifteenth) and before the fifteenth was compared, so that a law changed after
+that comparison can still be checked once, and to carry the end-face term's validated range past
+where the `hinge` analysis now warns (blank length < 0.5 h, h/t > 10): numpy
+`default_rng(20261213)`, 10 short wide leaves with sharp fillets in tall very short blanks (blank
+above the fillets 4-8 t, blank length 0.3-0.5 h), 6 in very tall blanks (8-12 t above the
+fillets, blank length 0.5-1 h), then 6 circular notches and 8 corner-filleted leaves by the
+second set's ranges.
+
+    python3 tools/ccx_heldout_doe.py --sixteenth > tools/ccx_heldout16_doe.json
 """
 
 import json
@@ -391,6 +403,14 @@ def doe15():
     return aimed_doe(20261212, [(10, *TALL_SHORT_BLANK, tall_short((4.0, 8.0))), (6, *USUAL_BLANK)], 8)
 
 
+def doe16():
+    very_short = ("short wide leaf, sharp fillets, tall very short blank", SHARP)
+    very_tall = ("short wide leaf, sharp fillets, very tall blank", SHARP)
+    short = {"w_over_t": (8.0, 20.0), "blank_over_t": (4.0, 8.0), "blank_length_over_h": (0.3, 0.5)}
+    tall = {"w_over_t": (8.0, 20.0), "blank_over_t": (8.0, 12.0), "blank_length_over_h": (0.5, 1.0)}
+    return aimed_doe(20261213, [(10, *very_short, short), (6, *very_tall, tall)], 8)
+
+
 def doe3():
     rng = np.random.default_rng(20261130)
     rows = [{**r, "regime": "lhs"} for r in corner2(rng, 8, SECOND)]
@@ -403,6 +423,7 @@ if __name__ == "__main__":
 
     # The check sets by flag, in the order the flags are tried; no flag: the first set.
     designs = [
+        ("--sixteenth", doe16),
         ("--fifteenth", doe15),
         ("--fourteenth", doe14),
         ("--thirteenth", doe13),
