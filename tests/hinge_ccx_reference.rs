@@ -237,8 +237,12 @@
 //! with no law changed in between, on the fourteenth ([`DOE14`]: −1.01 … +1.58 %, its 8 long
 //! sharp leaves −0.66 … +1.05 %). Both designs meet every target outside the short wide regime;
 //! inside it their 18 leaves in tall short blanks (h/t 6.3–9.0, blank length 0.5–1 h) read
-//! torsion down to −12.23 % (3 beyond 10 %) and axial down to −6.90 % (7 beyond 5 %), too soft:
-//! the regime warns with both bands. A fifteenth design (`tools/ccx_heldout15_doe.json`,
+//! torsion down to −12.23 % (3 beyond 10 %) and axial down to −6.90 % (7 beyond 5 %), too soft.
+//! The torque's spreading then took the rigid end face's section reaching back into the blank
+//! (`hinge::torsion::solid`, slope 0.4 fitted on the fourteen designs): torsion within 10 % on
+//! every reference (−8.30 … +9.32 %; the 26 short wide leaves in tall short blanks of all the
+//! designs, h/t ≥ 6.3 and b/h ≤ 1, −5.92 … +5.84 %); the regime warns with
+//! its axial band alone. A fifteenth design (`tools/ccx_heldout15_doe.json`,
 //! `--fifteenth`, `default_rng(20261212)`: 10 more such leaves), committed after the thirteenth
 //! comparison and before any law aimed at these misses, is [`PENDING`] for the next law.
 //!
@@ -706,8 +710,11 @@ const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
 /// (l3.5/R1.05/t1.75/w18.65/h15.7/b11.6, h/t 9.0, −10.97 %; l2.5/R0.85/t1.25/w10.6/h9.35/b5.3,
 /// −10.15 %) and axial 5 % on 3 (−5.96, −5.42, −5.33 %), inside the regime's warned bands
 /// (unchanged by these 8: torsion −12.23 … +8.75, axial −6.90 … +1.36 % over 79 models).
-/// Pinned at 3 / 11 / 6 / 1.6 %.
-const CORNER_TOL: [f64; 4] = [3.0, 11.0, 6.0, 1.6];
+/// Pinned then at 3 / 11 / 6 / 1.6 %. Seen since by the rigid end face's reach into the blank
+/// for the torque (`hinge::torsion::solid::TORSION_FACE_SLOPE`, 0.4, fitted on these rows
+/// among others): torsion −4.94 … +9.32 %, within 10 % on every row; pinned at 3 / 10 / 6 /
+/// 1.6 %.
+const CORNER_TOL: [f64; 4] = [3.0, 10.0, 6.0, 1.6];
 /// The 24 corner-filleted hinges of [`DOE13`] (10 short wide leaves with sharp fillets in tall short
 /// blanks: 4–7 t above the fillets, h/t 6.5–9.0, blank length 0.5–1 h; 8 long leaves with sharp
 /// fillets: R/t 0.52–0.59, flat 3–8 t, w/t 3–10; 6 by the second set's ranges), drawn and
@@ -726,8 +733,9 @@ const CORNER_TOL: [f64; 4] = [3.0, 11.0, 6.0, 1.6];
 /// blanks are shortest for their height, b/h 0.52–0.68; the five with b/h ≥ 0.73 read
 /// −4.33 … −3.35 %, one with b/h 0.59 −3.29 %). All are in the short wide regime, which warns with the band now measured on 71
 /// models (torsion −12.23 … +8.75, axial −6.90 … +1.36 %). Pinned then at 3 / 12.3 / 7.0 /
-/// 1.4 %; since it joined the seen designs, its misses set [`CORNER_SEEN_TOL`]'s torsion and
-/// axial pins (12.3 / 7.0 %).
+/// 1.4 %; since it joined the seen designs, its axial misses set [`CORNER_SEEN_TOL`]'s axial pin
+/// (7.0 %). With the rigid end face's reach into the blank for the torque (0.4, fitted on these
+/// rows among others) its torsion reads −5.24 … +6.98 %, the −12.23 % leaf −2.18 %.
 /// The 24 corner-filleted hinges of [`DOE12`] (8 long wide leaves with sharp fillets: flat 3–8 t,
 /// w/t 10–20; 8 short wide leaves with sharp fillets in tall blanks, 3–6 t above the fillets; 8
 /// by the second set's ranges), drawn and committed before the torsion law's two slopes were
@@ -878,7 +886,12 @@ const CORNER_TOL: [f64; 4] = [3.0, 11.0, 6.0, 1.6];
 /// [`DOE11`]'s leaf in the tallest blank read −3.87 % (above); against the bending reference's
 /// upper bound ([`eighth_bending`]) [`DOE11`] reads −1.81 … +1.54 %, [`DOE10`]
 /// −1.57 … +2.21 %, [`DOE3`] to [`DOE7`] −1.49 … +2.97 %: every bending target met.
-const CORNER_SEEN_TOL: [f64; 4] = [3.0, 12.3, 7.0, 2.0];
+/// Torsion with the rigid end face's reach into the blank for the torque (0.4, fitted on these
+/// rows and [`DOE13`]'s and [`DOE14`]'s): [`DOE3`] to [`DOE7`] −6.36 … +8.10, [`DOE8`]
+/// −3.69 … +8.26, [`DOE9`] −3.41 … +8.75, [`DOE10`] −5.36 … +7.91, [`DOE11`] −6.64 … +7.30,
+/// [`DOE12`] −4.41 … +9.09, [`DOE13`] −5.24 … +6.98 %: within 10 % on every row. Axial pinned at
+/// 7.0 % by [`DOE13`]'s −6.90 % leaf.
+const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.0, 7.0, 2.0];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses and peaks:
 /// −0.41 … +2.45 / −7.73 … +6.80 / −0.72 … +3.25 / −1.39 … +3.45: every target met (torsion
 /// −7.73 … +9.74 while compact waists carried warping restraint; axial

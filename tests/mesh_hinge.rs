@@ -48,7 +48,12 @@ fn model_of(text: &str) -> fem::Model {
 
 /// The 6×6 tip compliance of the FE model (columns: the displacements under each unit load) is
 /// the `hinge` analysis's compliance for blank_length = (node distance − notch length)/2 (its
-/// blank per side), to 1e-9 relative to the largest entry of each column's diagonal scale.
+/// blank per side), to 1e-9 relative to the largest entry of each column's diagonal scale, bar
+/// the torsion entry: the `hinge` analysis clamps and loads the hinge through rigid end faces,
+/// whose section reaches back into a short blank for the torque, while a mesh element's ends are
+/// nodes in continuous material. Its torsion entry is that of the same region with continuous
+/// ends ([`hinge::flex_region`]), and never stiffer than the `hinge` analysis's (the pan-tilt
+/// leaf, h/t 25 in a blank 0.5 h long, is 5.0 % softer).
 #[test]
 fn hinge_element_reproduces_the_hinge_analysis_compliance() {
     let al = flexfem::material::Material::builtin("Al7075").unwrap();
@@ -63,7 +68,10 @@ fn hinge_element_reproduces_the_hinge_analysis_compliance() {
         let half_notch = notch.profile().unwrap().half_notch;
         v["blank_length"] = ((d - 2.0 * half_notch) / 2.0).into();
         let spec: HingeSpec = serde_json::from_value(v).unwrap();
-        let reference = hinge::characterise(&spec, &al).unwrap().hinge.compliance;
+        let mut reference = hinge::characterise(&spec, &al).unwrap().hinge.compliance;
+        let continuous = hinge::flex_region(&spec.profile().unwrap(), &al).unwrap().compliance();
+        assert!(continuous[3][3] >= reference[3][3], "{h}");
+        reference[3][3] = continuous[3][3];
         for j in 0..6 {
             let u = res.load_cases[j].displacements[1];
             for i in 0..6 {

@@ -61,7 +61,7 @@ pub use element::{
 pub use error::HingeError;
 use integrate::{flex_integrals, flex_integrals_with_notch, BlankRestraint, Moduli, Quadrature};
 pub use notes::{Calibration, ClosedForms, LoadSpreading, ModelNotes};
-pub use profile::{Contour, Profile};
+pub use profile::{Contour, EndFaces, Profile};
 pub use section::Section;
 pub use spec::HingeSpec;
 
@@ -237,7 +237,8 @@ fn stiffness_pair(profile: &Profile, notch: &Profile, material: &Material, kt: f
 /// blank calls [`profile_stiffness`] (half the work, no text).
 pub fn characterise(spec: &HingeSpec, material: &Material) -> Result<HingeResult, HingeError> {
     check_material(material)?;
-    let profile = spec.profile()?;
+    // The hinge in its blank: clamped and loaded through rigid end faces.
+    let profile = spec.profile()?.with_rigid_end_faces();
     let notch = spec.profile_with_blank(Some(0.0))?;
     let kt = stress::stress_factor(&profile, material.nu);
     let (hinge, notch_only) = stiffness_pair(&profile, &notch, material, kt);

@@ -27,6 +27,9 @@ pub struct Spread {
     pub knee: f64,
     /// The growth beyond `knee`; `slope` unless set by [`Profile::spread_into_blank`].
     pub blank_slope: f64,
+    /// Slope at which the section of the loaded blank end face narrows back into the blank (0:
+    /// no such completion; set by [`Profile::with_end_face`]).
+    pub face_slope: f64,
 }
 
 impl Spread {
@@ -71,6 +74,22 @@ pub struct Profile {
     pub half_notch: f64,
     /// Load spreading (None: every section fully effective, the plain beam idealisation).
     pub spread: Option<Spread>,
+    /// What bounds the region at ±`half_length`: the rigid end faces of a hinge in its blank
+    /// (the `hinge` analysis) or continuous material (a hinge element between two nodes of a
+    /// mechanism). Only the torsion law reads it ([`Profile::with_end_face`]).
+    pub end_faces: EndFaces,
+}
+
+/// What bounds a hinge region at its two ends (see [`Profile::end_faces`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum EndFaces {
+    /// The region continues into material beyond its ends: a hinge element's end is a node
+    /// inside a mechanism's body, not a face. The default.
+    #[default]
+    Continuous,
+    /// Both end faces are rigid, one clamped and one loaded at its centre: the hinge in its
+    /// blank as the `hinge` analysis and the CalculiX reference models (`*RIGID BODY`) define it.
+    Rigid,
 }
 
 /// x at which an arc t + 2·depth·(1 − √(1 − (x/ext)²)) reaches the cap thickness h, if it does.
@@ -159,6 +178,7 @@ impl Profile {
             blank,
             half_notch,
             spread: None,
+            end_faces: EndFaces::Continuous,
         }
         .spread(SPREAD_SLOPE))
     }
@@ -180,6 +200,7 @@ impl Profile {
             blank,
             half_notch: l / 2.0 + r,
             spread: None,
+            end_faces: EndFaces::Continuous,
         }
         .spread(SPREAD_SLOPE))
     }
@@ -241,7 +262,30 @@ impl Profile {
             slope,
             knee: hn,
             blank_slope,
+            face_slope: 0.0,
         });
+        self
+    }
+
+    /// The same geometry bounded by rigid end faces ([`EndFaces::Rigid`]): the hinge in its blank
+    /// as the `hinge` analysis characterises it.
+    pub fn with_rigid_end_faces(self) -> Profile {
+        Profile {
+            end_faces: EndFaces::Rigid,
+            ..self
+        }
+    }
+
+    /// The same spread profile completed from the blank end faces: a rigid end face carries the
+    /// load over its whole section, which narrows back into the blank at `slope` per unit length,
+    /// so the effective half-size is at least the far half-size less `slope` × the distance to
+    /// the nearer end face (both faces are rigid, the clamped one and the loaded one;
+    /// `hinge::torsion::solid`). No effect without spreading or with `slope` ≤ 0. The caller
+    /// decides whether the ends are faces ([`Profile::end_faces`]); this method does not look.
+    pub fn with_end_face(mut self, slope: f64) -> Profile {
+        if let Some(sp) = self.spread.as_mut() {
+            sp.face_slope = slope.max(0.0);
+        }
         self
     }
 
@@ -305,7 +349,13 @@ impl Profile {
         let u = x.abs();
         let s = self.half_size(u);
         match self.spread {
-            Some(sp) if u > sp.from => s.min(sp.taper(u)),
+            Some(sp) if u > sp.from => {
+                let mut e = sp.taper(u);
+                if sp.face_slope > 0.0 {
+                    e = e.max(self.far_half_size() - sp.face_slope * (self.half_length() - u));
+                }
+                s.min(e)
+            }
             _ => s,
         }
     }

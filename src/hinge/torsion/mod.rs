@@ -42,7 +42,10 @@ use super::profile::Profile;
 use super::section::rect_torsion_warping;
 use mesh::half_nodes;
 pub use mesh::TorsionMesh;
-pub use solid::{solid_torsion_pair, solid_torsion_stiffness, warping_modulus_factor, TORSION_SPREAD_SLOPE};
+pub use solid::{
+    end_face_stiffening, solid_torsion_pair, solid_torsion_stiffness, warping_modulus_factor, TORSION_FACE_SLOPE,
+    TORSION_SPREAD_SLOPE,
+};
 
 /// 4-point Gauss–Legendre on [0, 1].
 const GL4_X: [f64; 4] = [
