@@ -242,9 +242,14 @@
 //! (`hinge::torsion::solid`, slope 0.4 fitted on the fourteen designs): torsion within 10 % on
 //! every reference (−8.30 … +9.32 %; the 26 short wide leaves in tall short blanks of all the
 //! designs, h/t ≥ 6.3 and b/h ≤ 1, −5.92 … +5.84 %); the regime warns with
-//! its axial band alone. A fifteenth design (`tools/ccx_heldout15_doe.json`,
+//! its axial band alone. A fifteenth design ([`DOE15`], `tools/ccx_heldout15_doe.json`,
 //! `--fifteenth`, `default_rng(20261212)`: 10 more such leaves), committed after the thirteenth
-//! comparison and before any law aimed at these misses, is [`PENDING`] for the next law.
+//! comparison and before any law aimed at these misses, was then compared once: torsion within
+//! 10 % on every row (its 10 leaves in tall short blanks −7.02 … +8.31 %, −10.14 … −4.35 %
+//! without the end-face term), bending, peak stress and circular notches within every target,
+//! but axial down to −7.48 % on those leaves (4 beyond 5 %): the regime's axial band widens to
+//! −7.48 … +1.36 % over 93 models. A sixteenth (`tools/ccx_heldout16_doe.json`, leaves in blanks
+//! 0.3–0.5 h long and 10–14 t tall, past the end-face term's box) is [`PENDING`].
 //!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
@@ -309,6 +314,9 @@ use doe13::DOE13;
 #[path = "hinge_ccx_reference/doe14.rs"]
 mod doe14;
 use doe14::DOE14;
+#[path = "hinge_ccx_reference/doe15.rs"]
+mod doe15;
+use doe15::DOE15;
 
 #[path = "hinge_ccx_reference/raw.rs"]
 mod raw;
@@ -413,7 +421,7 @@ const N6_RESULTS: &str = "ccx_refine_n6_results.jsonl";
 /// `_results.jsonl` files under `tools/`. Their lines in the re-solve files (n = 3, n = 6,
 /// converged peaks) are committed as they are solved and skipped by the checks here
 /// ([`compared_lines`]) until the design gets its test module and joins [`DESIGNS`].
-const PENDING: [&str; 1] = ["ccx_heldout15_results.jsonl"];
+const PENDING: [&str; 1] = ["ccx_heldout16_results.jsonl"];
 
 /// The lines of a re-solve file under `tools/` whose reference is not of a [`PENDING`] design.
 fn compared_lines(file: &str) -> Vec<serde_json::Value> {
@@ -574,7 +582,7 @@ fn every_reference_is_a_line_of_the_raw_results() {
 /// The fresh designs of experiments: file stem under `tools/` (`_doe.json` the design,
 /// `_results.jsonl` its CalculiX results), the references, their number, how many are circular
 /// notches.
-const DESIGNS: [(&str, &[CcxRef], usize, usize); 14] = [
+const DESIGNS: [(&str, &[CcxRef], usize, usize); 15] = [
     ("ccx_heldout", DOE1, 24, 12),
     ("ccx_heldout2", DOE2, 24, 12),
     ("ccx_heldout3", DOE3, 20, 4),
@@ -589,6 +597,7 @@ const DESIGNS: [(&str, &[CcxRef], usize, usize); 14] = [
     ("ccx_heldout12", DOE12, 30, 6),
     ("ccx_heldout13", DOE13, 30, 6),
     ("ccx_heldout14", DOE14, 30, 6),
+    ("ccx_heldout15", DOE15, 30, 6),
 ];
 
 /// The fresh rows are the committed designs of experiments, in their order
@@ -629,7 +638,10 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 
 /// The targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
-/// 6 circular notches of [`DOE14`], drawn and committed before the corner fillet's peak law and
+/// 6 circular notches of [`DOE15`], drawn and committed before the rigid end faces' reach into
+/// the blank for the torque, held out from every law and compared once with the current model:
+/// +0.01 … +1.66 / −7.64 … −0.35 / +0.32 … +3.48 / −1.35 … +1.72: every target met.
+/// The 6 circular notches of [`DOE14`], drawn and committed before the corner fillet's peak law and
 /// before [`DOE13`] was compared, held out from every law and compared once with the frozen
 /// model: −0.10 … +1.79 / −5.75 … +5.80 / −0.02 … +2.67 / −0.35 … +2.53: every target met.
 /// The 6 of [`DOE13`], drawn and committed before the torsion law's two slopes were
@@ -697,7 +709,22 @@ const CIRCULAR_TOL: [f64; 4] = TARGET;
 /// [`DOE8`]): the 18 now read −0.43 … +2.02 / −6.43 … +1.90 / −0.88 … +2.56 / −0.84 … +2.89,
 /// every target met, the narrow ones −4.81 … +1.14 % in torsion.
 const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
-/// 24 corner-filleted hinges of [`DOE14`] (8 short wide leaves with sharp fillets in tall short
+/// 24 corner-filleted hinges of [`DOE15`] (10 short wide leaves with sharp fillets in tall short
+/// blanks: 4–8 t above the fillets, h/t 6.4–9.8, blank length 0.52–0.96 h; 6 short wide leaves
+/// with sharp fillets and the usual blanks; 8 by the second set's ranges), drawn and committed
+/// right after [`DOE13`] was compared and before the rigid end faces' reach into the blank for
+/// the torque (`hinge::torsion::solid::TORSION_FACE_SLOPE`, fitted on [`DOE1`] to [`DOE14`]),
+/// held out from every law and compared once with the current model: −2.23 … +1.30 /
+/// −7.02 … +9.67 / −7.48 … +1.52 / −0.65 … +1.06. **The end-face law holds on fresh data:**
+/// torsion within 10 % on every row; its 10 leaves in tall short blanks read −7.02 … +8.31 %
+/// (without the term −10.14 … −4.35 %, one beyond 10 %). Bending and peak stress meet the
+/// targets on every row. **Axial misses 5 % on 4 of the 10 leaves in tall short blanks**
+/// (l2.4/R0.65/t1.2/w20.9/h11.75/b7.5, h/t 9.8, b/h 0.64: −7.48 %; −5.54, −5.30, −5.13 %; too
+/// soft, in the short wide regime, whose warned axial band widens to −7.48 … +1.36 % over 93
+/// models), and a fifth, l4.7/R1.0/t1.95/w17.9/h17.05/b9.45 (w/l 3.8, just outside the
+/// regime), reads −4.999 %. Pinned at 3 / 10 / 7.5 / 1.6 %.
+const CORNER_TOL: [f64; 4] = [3.0, 10.0, 7.5, 1.6];
+/// The 24 corner-filleted hinges of [`DOE14`] (8 short wide leaves with sharp fillets in tall short
 /// blanks: 4–7 t above the fillets, h/t 6.3–9.0, blank length 0.5–1 h; 8 long leaves with sharp
 /// fillets: R/t 0.50–0.69, flat 2.7–7.5 t, w/t 3.3–9.3; 8 by the second set's ranges), drawn and
 /// committed before the corner fillet's peak law and before [`DOE13`] was compared, held out
@@ -712,9 +739,8 @@ const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
 /// (unchanged by these 8: torsion −12.23 … +8.75, axial −6.90 … +1.36 % over 79 models).
 /// Pinned then at 3 / 11 / 6 / 1.6 %. Seen since by the rigid end face's reach into the blank
 /// for the torque (`hinge::torsion::solid::TORSION_FACE_SLOPE`, 0.4, fitted on these rows
-/// among others): torsion −4.94 … +9.32 %, within 10 % on every row; pinned at 3 / 10 / 6 /
-/// 1.6 %.
-const CORNER_TOL: [f64; 4] = [3.0, 10.0, 6.0, 1.6];
+/// among others): torsion −4.94 … +9.32 %, within 10 % on every row. Since [`DOE15`]'s
+/// comparison it is a seen design ([`CORNER_SEEN_TOL`]).
 /// The 24 corner-filleted hinges of [`DOE13`] (10 short wide leaves with sharp fillets in tall short
 /// blanks: 4–7 t above the fillets, h/t 6.5–9.0, blank length 0.5–1 h; 8 long leaves with sharp
 /// fillets: R/t 0.52–0.59, flat 3–8 t, w/t 3–10; 6 by the second set's ranges), drawn and
@@ -889,8 +915,8 @@ const CORNER_TOL: [f64; 4] = [3.0, 10.0, 6.0, 1.6];
 /// Torsion with the rigid end face's reach into the blank for the torque (0.4, fitted on these
 /// rows and [`DOE13`]'s and [`DOE14`]'s): [`DOE3`] to [`DOE7`] −6.36 … +8.10, [`DOE8`]
 /// −3.69 … +8.26, [`DOE9`] −3.41 … +8.75, [`DOE10`] −5.36 … +7.91, [`DOE11`] −6.64 … +7.30,
-/// [`DOE12`] −4.41 … +9.09, [`DOE13`] −5.24 … +6.98 %: within 10 % on every row. Axial pinned at
-/// 7.0 % by [`DOE13`]'s −6.90 % leaf.
+/// [`DOE12`] −4.41 … +9.09, [`DOE13`] −5.24 … +6.98, [`DOE14`] −4.94 … +9.32 %: within 10 % on
+/// every row. Axial pinned at 7.0 % by [`DOE13`]'s −6.90 % leaf ([`DOE14`] −5.96 %).
 const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.0, 7.0, 2.0];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses and peaks:
 /// −0.41 … +2.45 / −7.73 … +6.80 / −0.72 … +3.25 / −1.39 … +3.45: every target met (torsion
@@ -921,22 +947,22 @@ const CORNER_FIT_TOL: [f64; 4] = TARGET;
 /// short or wide corner-filleted, short or wide corner-filleted), and how closely the n = 3/4
 /// extrapolation agrees with the n = 4/6 one (bending, torsion, axial, %). Measured: within
 /// 0.76 / 1.13 / 0.42 % on the 62 others, every one with at most 30,000 unknowns at n = 4;
-/// within 5.40 / 4.67 / 1.86 % on all 127 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
-/// leaves (the same on the 118 before the fourteenth design's 9; 4.19 / 4.01 / 1.86 % on the 107 before the thirteenth design's 11, whose tall short
+/// within 5.40 / 4.67 / 1.93 % on all 144 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
+/// leaves (5.40 / 4.67 / 1.86 % on the 127 before the fifteenth design's 17, the same on the 118 before the fourteenth design's 9; 4.19 / 4.01 / 1.86 % on the 107 before the thirteenth design's 11, whose tall short
 /// blanks widen the gap; the same on the 94 before the twelfth design's 13; 4.02 / 4.01 / 1.67 % on the 74
 /// before the eleventh design's 20, 3.16 / 3.67 / 1.44 %
 /// on the 55 before the tenth design's 19), the worst short wide
 /// leaves with sharp fillets (R/t ≈ 0.5), whose n = 3 mesh is too coarse
 /// for the asymptotic rate: there the n = 3/4 extrapolation over-corrects, and the tables take
 /// the n = 4/6 one ([`converged_stiffness`]).
-const N6_ROWS: [usize; 2] = [62, 127];
+const N6_ROWS: [usize; 2] = [62, 144];
 const EXTRAPOLATION_TOL: [f64; 3] = [0.8, 1.2, 0.45];
-const SHORT_WIDE_EXTRAPOLATION_TOL: [f64; 3] = [5.5, 4.7, 1.9];
+const SHORT_WIDE_EXTRAPOLATION_TOL: [f64; 3] = [5.5, 4.7, 2.0];
 /// The nodal-averaged peak stress from n = 4 to n = 6 on those references, %: measured
-/// −4.13 … +12.05 (−4.13 … +10.54 before the thirteenth design's, −4.13 … +10.40 before the twelfth design's, −4.13 … +9.25 before the
+/// −4.13 … +13.05 (−4.13 … +12.05 before the fifteenth design's 17, −4.13 … +10.54 before the thirteenth design's, −4.13 … +10.40 before the twelfth design's, −4.13 … +9.25 before the
 /// eleventh design's short wide leaves, −4.13 … +7.30
 /// before the tenth's, −1.46 … +7.30 before the ninth's).
-const PEAK_N4_TO_N6: (f64, f64) = (-4.2, 12.1);
+const PEAK_N4_TO_N6: (f64, f64) = (-4.2, 13.1);
 /// The converged peaks, one line per circular and corner-filleted reference.
 const PEAKS: &str = "ccx_peak_stress_k12.jsonl";
 /// The same solved at k = 16 (the 103 smaller models, 52 corner-filleted), and how far the peak
@@ -983,48 +1009,61 @@ fn fit_rows() -> Vec<Row> {
     )
 }
 
-/// One family on the held-out designs: [`DOE14`] (held out from every law) against `fresh`;
-/// [`DOE3`] to [`DOE7`] together and [`DOE8`] to [`DOE13`] each (each compared once
-/// with the model of its day, seen by later changes and, the corner-filleted rows, by the refits
-/// of the torsion law's slopes) against `seen`.
-fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 12], fresh: [f64; 4], seen: [f64; 4]) {
-    let designs = [
-        DOE3, DOE4, DOE5, DOE6, DOE7, DOE8, DOE9, DOE10, DOE11, DOE12, DOE13, DOE14,
-    ]
-    .map(|d| rows(&d.iter().collect::<Vec<_>>()));
+/// The designs of experiments held out from the law of their day, in the order they were
+/// compared: [`DOE3`] to [`DOE7`] are checked together, the later ones each; the last is the
+/// fresh design, held out from every law and compared once with the current model.
+const HELD_OUT: [(&str, &[CcxRef]); 13] = [
+    ("DOE3", DOE3),
+    ("DOE4", DOE4),
+    ("DOE5", DOE5),
+    ("DOE6", DOE6),
+    ("DOE7", DOE7),
+    ("DOE8", DOE8),
+    ("DOE9", DOE9),
+    ("DOE10", DOE10),
+    ("DOE11", DOE11),
+    ("DOE12", DOE12),
+    ("DOE13", DOE13),
+    ("DOE14", DOE14),
+    ("DOE15", DOE15),
+];
+
+/// How many of [`HELD_OUT`]'s first designs are checked together (DOE3 to DOE7).
+const EARLIER: usize = 5;
+
+/// One family on the held-out designs ([`HELD_OUT`]): the fresh design (the last) against
+/// `fresh`; [`DOE3`] to [`DOE7`] together and the later ones each (each compared once with the
+/// model of its day, seen by later changes and, the corner-filleted rows, by the refits of the
+/// torsion law) against `seen`. `counts`: the family's rows per design.
+fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 13], fresh: [f64; 4], seen: [f64; 4]) {
+    let designs = HELD_OUT.map(|(_, d)| rows(&d.iter().collect::<Vec<_>>()));
     let per_design = designs.each_ref().map(|r| family(r, f));
     assert_eq!(per_design.each_ref().map(|r| r.len()), counts);
-    let [third, fourth, fifth, sixth, seventh, eighth, ninth, tenth, eleventh, twelfth, thirteenth, fourteenth] =
-        per_design;
-    let earlier: Vec<&Row> = [third, fourth, fifth, sixth, seventh].into_iter().flatten().collect();
+    let earlier: Vec<&Row> = per_design[..EARLIER].iter().flatten().copied().collect();
+    let (first, last) = (HELD_OUT[0].0, HELD_OUT[EARLIER - 1].0);
     check(
-        &format!("{name}, DOE3 to DOE7"),
+        &format!("{name}, {first} to {last}"),
         report(
-            &format!("{name} vs CalculiX, HELD OUT, seen by later changes, DOE3 to DOE7"),
+            &format!("{name} vs CalculiX, HELD OUT, seen by later changes, {first} to {last}"),
             &earlier,
         ),
         seen,
     );
-    for (design, rows) in [
-        ("DOE8", eighth),
-        ("DOE9", ninth),
-        ("DOE10", tenth),
-        ("DOE11", eleventh),
-        ("DOE12", twelfth),
-        ("DOE13", thirteenth),
-    ] {
+    let n = HELD_OUT.len();
+    for ((design, _), rows) in HELD_OUT.iter().zip(&per_design).take(n - 1).skip(EARLIER) {
         check(
             &format!("{name}, {design}"),
             report(
                 &format!("{name} vs CalculiX, HELD OUT, seen by later changes, {design}"),
-                &rows,
+                rows,
             ),
             seen,
         );
     }
+    let design = HELD_OUT[n - 1].0;
     check(
-        &format!("{name}, DOE14"),
-        report(&format!("{name} vs CalculiX, HELD OUT, DOE14"), &fourteenth),
+        &format!("{name}, {design}"),
+        report(&format!("{name} vs CalculiX, HELD OUT, {design}"), &per_design[n - 1]),
         fresh,
     );
 }
@@ -1034,7 +1073,7 @@ fn circular_notches_held_out() {
     held_out(
         "circular notches",
         circular,
-        [4, 12, 12, 12, 12, 18, 16, 6, 6, 6, 6, 6],
+        [4, 12, 12, 12, 12, 18, 16, 6, 6, 6, 6, 6, 6],
         CIRCULAR_TOL,
         CIRCULAR_SEEN_TOL,
     );
@@ -1045,7 +1084,7 @@ fn corner_filleted_held_out() {
     held_out(
         "corner-filleted hinges",
         corner,
-        [16, 12, 12, 12, 20, 20, 16, 24, 24, 24, 24, 24],
+        [16, 12, 12, 12, 20, 20, 16, 24, 24, 24, 24, 24, 24],
         CORNER_TOL,
         CORNER_SEEN_TOL,
     );
@@ -1124,7 +1163,9 @@ fn known_bias_warnings_state_the_measured_bands() {
 }
 
 /// Every CalculiX reference outside the known-bias regimes (bending, torsion, axial, %):
-/// measured 2.97 / 9.32 / 3.95 (torsion 9.09 before the fourteenth design) against the bending
+/// measured 2.97 / 9.67 / 5.00 (2.97 / 9.32 / 3.95 before the fifteenth design, whose
+/// l4.7/R1.0/t1.95/w17.9/h17.05/b9.45, w/l 3.8, reads −4.999 % axially; torsion 9.09 before the
+/// fourteenth design) against the bending
 /// reference's upper bound ([`eighth_bending`]): the targets (2.97 / 8.55 / 3.95 before [`DOE12`]; 8.68 % torsion with the slopes 1.3 and 1.11
 /// of the eleventh design's comparison). Against the extrapolation alone, bending read −3.00 %
 /// on [`DOE12`]'s l2.4/R0.6/t1.05/w8.9/h6.9, a short leaf in a tall blank just short of the
@@ -1372,7 +1413,7 @@ fn converged_peaks_checked() {
         .values()
         .map(|lines| lines.iter().filter(|l| l["type"] != "spherical_neck").count())
         .sum();
-    assert_eq!((sources.len(), k12.len(), flat_notches), (15, 438, 438));
+    assert_eq!((sources.len(), k12.len(), flat_notches), (16, 468, 468));
     let (n3, n6) = (
         compared_lines("ccx_refine_n3_results.jsonl"),
         compared_lines(N6_RESULTS),
