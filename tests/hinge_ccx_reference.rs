@@ -247,8 +247,11 @@
 //! comparison and before any law aimed at these misses, was then compared once: torsion within
 //! 10 % on every row (its 10 leaves in tall short blanks −7.02 … +8.31 %, −10.14 … −4.35 %
 //! without the end-face term), bending, peak stress and circular notches within every target,
-//! but axial down to −7.48 % on those leaves (4 beyond 5 %): the regime's axial band widens to
-//! −7.48 … +1.36 % over 93 models. A sixteenth (`tools/ccx_heldout16_doe.json`, leaves in blanks
+//! but axial down to −7.48 % on those leaves (4 beyond 5 %): the regime's axial band widened to
+//! −7.48 … +1.36 % over 93 models. The axial load then took its own, faster spreading into the
+//! blank (`hinge::profile::AXIAL_BLANK_SLOPE` = 0.56, the minimax over all 468 references):
+//! axial −3.98 … +4.15 % on every reference, every target met on every circular and
+//! corner-filleted reference, and the short wide regime no longer warns. A sixteenth (`tools/ccx_heldout16_doe.json`, leaves in blanks
 //! 0.3–0.5 h long and 10–14 t tall, past the end-face term's box) is [`PENDING`].
 //!
 //! These references are ours (computed here with a solver that is not ours), so each
@@ -722,8 +725,11 @@ const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
 /// (l2.4/R0.65/t1.2/w20.9/h11.75/b7.5, h/t 9.8, b/h 0.64: −7.48 %; −5.54, −5.30, −5.13 %; too
 /// soft, in the short wide regime, whose warned axial band widens to −7.48 … +1.36 % over 93
 /// models), and a fifth, l4.7/R1.0/t1.95/w17.9/h17.05/b9.45 (w/l 3.8, just outside the
-/// regime), reads −4.999 %. Pinned at 3 / 10 / 7.5 / 1.6 %.
-const CORNER_TOL: [f64; 4] = [3.0, 10.0, 7.5, 1.6];
+/// regime), reads −4.999 %. Pinned then at 3 / 10 / 7.5 / 1.6 %. Seen since by the axial load's
+/// spreading into the blank (`hinge::profile::AXIAL_BLANK_SLOPE`, 0.56, fitted on these rows
+/// among all 468): axial −3.98 … +2.38 %, every target met on every row; pinned at the targets,
+/// the peak at 1.6 %.
+const CORNER_TOL: [f64; 4] = [3.0, 10.0, 5.0, 1.6];
 /// The 24 corner-filleted hinges of [`DOE14`] (8 short wide leaves with sharp fillets in tall short
 /// blanks: 4–7 t above the fillets, h/t 6.3–9.0, blank length 0.5–1 h; 8 long leaves with sharp
 /// fillets: R/t 0.50–0.69, flat 2.7–7.5 t, w/t 3.3–9.3; 8 by the second set's ranges), drawn and
@@ -916,8 +922,12 @@ const CORNER_TOL: [f64; 4] = [3.0, 10.0, 7.5, 1.6];
 /// rows and [`DOE13`]'s and [`DOE14`]'s): [`DOE3`] to [`DOE7`] −6.36 … +8.10, [`DOE8`]
 /// −3.69 … +8.26, [`DOE9`] −3.41 … +8.75, [`DOE10`] −5.36 … +7.91, [`DOE11`] −6.64 … +7.30,
 /// [`DOE12`] −4.41 … +9.09, [`DOE13`] −5.24 … +6.98, [`DOE14`] −4.94 … +9.32 %: within 10 % on
-/// every row. Axial pinned at 7.0 % by [`DOE13`]'s −6.90 % leaf ([`DOE14`] −5.96 %).
-const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.0, 7.0, 2.0];
+/// every row. Axial read down to −6.90 % ([`DOE13`]; [`DOE14`] −5.96 %) until the axial load's
+/// spreading into the blank (0.56, fitted on all 468 references): [`DOE3`] to [`DOE7`]
+/// −1.00 … +2.83, [`DOE8`] −1.53 … +2.58, [`DOE9`] −1.56 … +2.24, [`DOE10`] −3.35 … +2.89,
+/// [`DOE11`] −2.53 … +2.19, [`DOE12`] −2.85 … +2.11, [`DOE13`] −3.88 … +2.07, [`DOE14`]
+/// −2.90 … +2.21 %: every target met on every row; the peak pinned at 2 %.
+const CORNER_SEEN_TOL: [f64; 4] = [3.0, 10.0, 5.0, 2.0];
 /// The 50 circular notches of the fits. Measured against the converged stiffnesses and peaks:
 /// −0.41 … +2.45 / −7.73 … +6.80 / −0.72 … +3.25 / −1.39 … +3.45: every target met (torsion
 /// −7.73 … +9.74 while compact waists carried warping restraint; axial
@@ -1163,9 +1173,10 @@ fn known_bias_warnings_state_the_measured_bands() {
 }
 
 /// Every CalculiX reference outside the known-bias regimes (bending, torsion, axial, %):
-/// measured 2.97 / 9.67 / 5.00 (2.97 / 9.32 / 3.95 before the fifteenth design, whose
-/// l4.7/R1.0/t1.95/w17.9/h17.05/b9.45, w/l 3.8, reads −4.999 % axially; torsion 9.09 before the
-/// fourteenth design) against the bending
+/// measured 2.97 / 9.67 / 4.15 since the axial load's spreading into the blank (2.97 / 9.67 /
+/// 5.00 before it, the fifteenth design's l4.7/R1.0/t1.95/w17.9/h17.05/b9.45, w/l 3.8, reading
+/// −4.999 % axially, now −2.08 %; 2.97 / 9.32 / 3.95 before the fifteenth design; torsion 9.09
+/// before the fourteenth design) against the bending
 /// reference's upper bound ([`eighth_bending`]): the targets (2.97 / 8.55 / 3.95 before [`DOE12`]; 8.68 % torsion with the slopes 1.3 and 1.11
 /// of the eleventh design's comparison). Against the extrapolation alone, bending read −3.00 %
 /// on [`DOE12`]'s l2.4/R0.6/t1.05/w8.9/h6.9, a short leaf in a tall blank just short of the

@@ -147,14 +147,15 @@ fn circular_notch_outside_calibration_warns() {
     }
 }
 
-/// Inside the calibrated ranges but in a regime the CalculiX models show the model reading
-/// beyond the targets (`flexfem::hinge::calibration::known_bias`): a short wide corner-filleted
-/// leaf (the seventh design's worst, l3.15/R0.7/t1.35/w22.75: l/t 2.33, w/l 7.2) is warned about
-/// with the measured band; exit 0. Just outside the regime (l/t 2.8), and a narrow circular notch
-/// (R11.15/t3.25/w2.6: w/t 0.8, a regime that warned until compact waists stopped carrying
-/// warping restraint): no warning.
+/// The checked regimes of `flexfem::hinge::calibration::known_bias` warn only with a band that
+/// leaves its target. The short wide corner-filleted leaf warned until the axial load's
+/// spreading into the blank (its axial band was −7.48 … +1.36 % over 93 CalculiX models, now
+/// −3.98 … +2.24 %): the seventh design's worst such leaf (l3.15/R0.7/t1.35/w22.75: l/t 2.33, w/l
+/// 7.2) now runs without a warning, as do a leaf just outside the regime (l/t 2.8) and a narrow
+/// circular notch (R11.15/t3.25/w2.6: w/t 0.8, a regime that warned until compact waists
+/// stopped carrying warping restraint); exit 0.
 #[test]
-fn known_bias_regimes_warn_with_the_measured_band() {
+fn known_bias_regimes_warn_only_beyond_the_targets() {
     use flexfem::hinge::calibration::SHORT_WIDE_LEAF;
     let leaf = |l: f64| {
         format!(
@@ -164,41 +165,26 @@ fn known_bias_regimes_warn_with_the_measured_band() {
     let notch = |w: f64| {
         format!(r#"{{"type": "circular_notch", "R": 11.15, "t": 3.25, "w": {w}, "h": 24.7, "blank_length": 18.5}}"#)
     };
-    // Axial leaves the target (a leaf of the thirteenth design in a tall short blank at −6.90 %);
-    // torsion stopped leaving it when the torque's spreading took the rigid end face's section
-    // (it read down to −12.23 % on the thirteenth design before), bending when its reference took
-    // the root-refined eighth's upper bound.
-    assert_eq!(SHORT_WIDE_LEAF.bands.map(|b| b.is_some()), [false, false, true]);
-    for (hinge, bias) in [
-        (leaf(3.15), Some(SHORT_WIDE_LEAF)),
-        (leaf(3.78), None),
-        (notch(2.6), None),
-    ] {
+    // No band of the regime leaves its target (asserted against its CalculiX models by
+    // tests/hinge_ccx_reference.rs).
+    assert_eq!(SHORT_WIDE_LEAF.bands, [None, None, None]);
+    let profile = |h: &str| {
+        serde_json::from_str::<flexfem::hinge::HingeSpec>(h)
+            .unwrap()
+            .profile()
+            .unwrap()
+    };
+    assert_eq!(
+        flexfem::hinge::calibration::known_bias(&profile(&leaf(3.15))).map(|b| b.regime),
+        Some(SHORT_WIDE_LEAF.regime)
+    );
+    for hinge in [leaf(3.15), leaf(3.78), notch(2.6)] {
         let v = json(&run_case_text(
             "warn_bias",
             &format!(r#"{{"analysis": "hinge", "hinge": {hinge}}}"#),
         ));
         let w = warnings(&v);
-        match bias {
-            Some(b) => {
-                assert_eq!(w.len(), 1, "{hinge}: {w:?}");
-                assert!(w[0].starts_with("hinge: ") && w[0].contains(b.regime), "{w:?}");
-                // Each stated band is quoted; a quantity within its target is not named before
-                // the targets' list.
-                let stated = w[0].split(" (the targets").next().unwrap();
-                // zip-checked: three names for the three bands (bending, torsion, axial).
-                for (name, band) in ["bending", "torsion", "axial"].iter().zip(b.bands) {
-                    match band {
-                        Some((lo, hi)) => {
-                            assert!(stated.contains(&format!("{name} {lo:+.1} … {hi:+.1} %")), "{w:?}")
-                        }
-                        None => assert!(!stated.contains(name), "{name}: {w:?}"),
-                    }
-                }
-                assert!(w[0].contains(&format!("{} CalculiX solid models", b.models)), "{w:?}");
-            }
-            None => assert!(w.is_empty(), "{hinge}: {w:?}"),
-        }
+        assert!(w.is_empty(), "{hinge}: {w:?}");
     }
 }
 

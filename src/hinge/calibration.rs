@@ -35,13 +35,14 @@
 //! 1.1 % inside the box, and by up to +133 % outside it. A mechanism's hinge element has no end
 //! faces ([`super::profile::EndFaces::Continuous`]) and no such term.
 //!
-//! Inside them, one regime is known to read further from the CalculiX models than the
-//! targets (bending 3 %, torsion 10 %, axial 5 %), and a hinge there gets a warning that states
-//! the measured band ([`KnownBias`]; each band is asserted against the CalculiX rows of the
-//! regime by tests/hinge_ccx_reference.rs): short wide corner-filleted leaves
-//! ([`SHORT_WIDE_LEAF`]: l/t ≤ 2.75 and w/l ≥ 4), whose axial stiffness reads too
-//! soft, worst with sharp fillets (R/t ≈ 0.5–0.8) in tall blanks (h/t ≳ 5) with short blank
-//! lengths (0.5–0.8 h).
+//! Inside them, a regime known to read further from the CalculiX models than the targets
+//! (bending 3 %, torsion 10 %, axial 5 %) gets a warning that states the measured band
+//! ([`KnownBias`]; each band is asserted against the CalculiX rows of the regime by
+//! tests/hinge_ccx_reference.rs). One regime is checked: short wide corner-filleted leaves
+//! ([`SHORT_WIDE_LEAF`]: l/t ≤ 2.75 and w/l ≥ 4). It warned until the axial load's spreading
+//! into the blank ([`super::profile::AXIAL_BLANK_SLOPE`]) brought its axial stiffness within
+//! 5 % (−3.98 … +2.24 % over its 93 models, fitted on them among the 468 references); a
+//! sixteenth design, committed before that fit, judges it.
 //!
 //! History of the regime. Bending read down to −3.94 % until the blank's spreading zone took
 //! the plane-strain restraint of [`super::solid_effects`]; since then down to −3.87 % against
@@ -60,7 +61,10 @@
 //! fourteen designs) the regime reads torsion −6.64 … +8.75 % over its 79 models; a fifteenth
 //! design held out from that law read its 10 leaves in tall short blanks −7.02 … +8.31 % in
 //! torsion (−10.14 … −4.35 % without the term) but axially down to −7.48 % (4 beyond 5 %): over
-//! the 93 models the regime warns axially −7.48 … +1.36 %. Narrow circular
+//! the 93 models the regime warned axially −7.48 … +1.36 %, worst with sharp fillets in tall
+//! short blanks (the error growing with h/t, r = −0.78): with the axial load spreading into the
+//! blank at 0.56 instead of the bending's 1/2 (fitted on all 468 references) it reads
+//! −3.98 … +2.24 %, within every target. Narrow circular
 //! notches, w/t ≤ 1.1, read torsion up to 12.7 % too stiff and warned until a compact waist
 //! stopped carrying warping restraint.
 
@@ -81,10 +85,13 @@ pub struct KnownBias {
 }
 
 /// Short wide corner-filleted leaves, l/t ≤ [`SHORT_LEAF_L_OVER_T`] and w/l ≥
-/// [`WIDE_LEAF_W_OVER_L`] (see the module docs).
+/// [`WIDE_LEAF_W_OVER_L`] (see the module docs). No band leaves its target since the axial
+/// load's spreading into the blank ([`super::profile::AXIAL_BLANK_SLOPE`]), so the regime no
+/// longer warns; it stays a checked regime: tests/hinge_ccx_reference.rs asserts that its 93
+/// CalculiX models meet every target, so a change that takes it out of them shows there.
 pub const SHORT_WIDE_LEAF: KnownBias = KnownBias {
     regime: "a short wide corner-filleted leaf (l/t ≤ 2.75, w/l ≥ 4)",
-    bands: [None, None, Some((-7.48, 1.36))],
+    bands: [None, None, None],
     models: 93,
 };
 /// l/t at or below which a wide corner-filleted leaf is [`SHORT_WIDE_LEAF`].
@@ -193,7 +200,11 @@ pub fn calibration_warnings(profile: &Profile) -> Vec<String> {
     }
     // Outside a range the hinge is extrapolated anyway; inside, the known-bias regimes.
     if out.is_empty() {
-        out.extend(known_bias(profile).map(|b| bias_warning(&b)));
+        out.extend(
+            known_bias(profile)
+                .filter(|b| b.bands.iter().any(Option::is_some))
+                .map(|b| bias_warning(&b)),
+        );
     }
     out.extend(end_face_warning(profile));
     out
@@ -273,4 +284,25 @@ fn end_face_warning(profile: &Profile) -> Option<String> {
         "the rigid blank end faces' reach into the blank for the torque stiffens the torsion by {:.0} % here, but it was fitted and checked on CalculiX designs only and {why}: torsion extrapolated",
         100.0 * gain
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A regime's warning quotes each band that leaves its target, with the model count, and
+    /// names no quantity that stays within it.
+    #[test]
+    fn bias_warning_quotes_the_bands_that_leave_the_target() {
+        let b = KnownBias {
+            regime: "a test regime",
+            bands: [None, Some((-12.23, 8.75)), Some((-6.9, 1.36))],
+            models: 71,
+        };
+        let w = bias_warning(&b);
+        assert_eq!(
+            w,
+            "a test regime: inside the calibrated ranges, but against 71 CalculiX solid models of such hinges the stiffness reads torsion -12.2 … +8.8 %, axial -6.9 … +1.4 % (the targets are 3 % bending, 10 % torsion, 5 % axial)"
+        );
+    }
 }

@@ -275,7 +275,9 @@ pub fn flex_integrals_with_notch(profile: &Profile, m: &Moduli, q: Quadrature) -
 }
 
 /// [`flex_integrals`], also accumulating the notch alone into `notch` when given
-/// ([`flex_integrals_with_notch`]).
+/// ([`flex_integrals_with_notch`]). The axial integral follows the profile the axial load sees
+/// ([`Profile::axial`]); it differs from `profile` only beyond the notch, so the notch alone's
+/// axial integral is the same either way.
 fn integrate(
     profile: &Profile,
     m: &Moduli,
@@ -286,11 +288,44 @@ fn integrate(
 ) -> FlexIntegrals {
     let mut acc = FlexIntegrals::default();
     let (lo, hi) = if x0 <= x1 { (x0, x1) } else { (x1, x0) };
-    let pieces = profile.pieces();
     let hn = profile.half_notch;
     // Blanks and prismatic parts are one section each: evaluated once.
     let mut memo = SectionMemo::new(profile, m.nu);
-    for piece in pieces.as_slice() {
+    each_point(profile, lo, hi, q, |x, wgt, in_notch| {
+        let size = profile.section_size(x);
+        let s = memo.of_size(size);
+        let (e_bend, e_axial) = m.bend_axial_at(x, size);
+        let f = [
+            wgt / (e_axial * s.area),
+            wgt / (m.g * s.shear_area_bend_off),
+            wgt / (m.g * s.shear_area_bend),
+            wgt / (m.g * s.j),
+            wgt / (e_bend * s.i_bend),
+            wgt / (m.e * s.i_bend_off),
+        ];
+        acc.add(&f, x1 - x, m.shear);
+        if in_notch {
+            if let Some(n) = notch.as_deref_mut() {
+                n.add(&f, hn - x, m.shear);
+            }
+        }
+    });
+    if let Some(axial) = profile.axial() {
+        let mut memo = SectionMemo::new(&axial, m.nu);
+        acc.axial = 0.0;
+        each_point(&axial, lo, hi, q, |x, wgt, _| {
+            let size = axial.section_size(x);
+            acc.axial += wgt / (m.bend_axial_at(x, size).1 * memo.of_size(size).area);
+        });
+    }
+    acc
+}
+
+/// Every quadrature point of `profile`'s pieces (and their mirrors) within [lo, hi]: `f(x,
+/// weight, in_notch)`, `in_notch` for the points of pieces inside the notch region.
+fn each_point(profile: &Profile, lo: f64, hi: f64, q: Quadrature, mut f: impl FnMut(f64, f64, bool)) {
+    let hn = profile.half_notch;
+    for piece in profile.pieces().as_slice() {
         let panels = match piece.map {
             Map::Linear => q.linear_panels,
             Map::Arc { .. } | Map::Taper { .. } => q.arc_panels,
@@ -319,27 +354,8 @@ fn integrate(
                         slope: sign * slope,
                     },
                 };
-                quadrature_points(a, b, map, panels, |x: f64, wgt: f64| {
-                    let size = profile.section_size(x);
-                    let s = memo.of_size(size);
-                    let (e_bend, e_axial) = m.bend_axial_at(x, size);
-                    let f = [
-                        wgt / (e_axial * s.area),
-                        wgt / (m.g * s.shear_area_bend_off),
-                        wgt / (m.g * s.shear_area_bend),
-                        wgt / (m.g * s.j),
-                        wgt / (e_bend * s.i_bend),
-                        wgt / (m.e * s.i_bend_off),
-                    ];
-                    acc.add(&f, x1 - x, m.shear);
-                    if in_notch {
-                        if let Some(n) = notch.as_deref_mut() {
-                            n.add(&f, hn - x, m.shear);
-                        }
-                    }
-                });
+                quadrature_points(a, b, map, panels, |x: f64, wgt: f64| f(x, wgt, in_notch));
             }
         }
     }
-    acc
 }

@@ -3,7 +3,7 @@
 //! (a sweep of hinges writes the notes once per file, not once per design); the text is made
 //! when the result is serialised or iterated.
 
-use super::profile::{Contour, Profile};
+use super::profile::{Contour, Profile, AXIAL_BLANK_SLOPE};
 use super::solid_effects;
 use crate::material::Material;
 use serde::ser::{SerializeMap, SerializeSeq};
@@ -129,7 +129,7 @@ impl ModelNotes {
         const MODULUS: &str = "compliant-axis bending modulus of the notch region E*P/G, axial modulus E*(1 + 0.6 (P - 1))/G (solid-calibrated): short-notch G and plane-strain P in calibration (corner fillets: G with rho = R on the fillet arcs only; the flat takes P without G); in the blank's load-spreading zone the same plane-strain restraint with the local effective thickness as its free edge layer, E*P_b and E*(1 + 0.6 (P_b - 1)), P_b = 1 + (P - 1)(w - s)/(w - t) for s < w (no fitted number)";
         const NECK_STRESS: &str = "stress: 32M/(pi t^3) at the waist x Kt = stress_concentration (shoulder-fillet Kt = 1 + 0.041 sqrt(t/R), fitted to solid models within 2%)";
         const NOTCH_STRESS: &str = "stress: 6M/(w t^2) at the waist x stress_concentration (Kt = (1 + t/(2R))^(9/20) after Peterson / Tian et al. 2010, divided by sqrt(P) for the plane-strain waist; corner fillet: Kt = 1 + 0.24 t/(2R), times 1 - 0.71 (P - 1) and the long-leaf root amplification; converged CalculiX solid models: within 4% for circular and corner-filleted notches)";
-        const SPREAD: &str = "load spreading (solid-calibrated): effective half-size grows at calibration.load_spreading.slope from |x| = from_mm to to_mm";
+        const SPREAD: &str = "load spreading (solid-calibrated): effective half-size grows at calibration.load_spreading.slope from |x| = from_mm to to_mm; for the axial load at 0.56 beyond the notch (fitted)";
         match (self.neck, self.spread.is_some()) {
             (true, true) => &[BEAM, FACE, NECK_TORSION, NECK_STRESS, SPREAD, MODULUS, CALIBRATION],
             (true, false) => &[BEAM, FACE, NECK_TORSION, NECK_STRESS, NO_SPREAD, MODULUS, CALIBRATION],
@@ -151,7 +151,7 @@ impl ModelNotes {
         }
         match self.spread {
             Some((slope, from, reach)) => v.push(format!(
-                "load spreading (solid-calibrated): effective half-size grows at slope {slope} from |x| = {from:.3} mm to {reach:.3} mm"
+                "load spreading (solid-calibrated): effective half-size grows at slope {slope} from |x| = {from:.3} mm to {reach:.3} mm; for the axial load at {AXIAL_BLANK_SLOPE} beyond the notch (fitted)"
             )),
             None => v.push(NO_SPREAD.into()),
         }

@@ -4,7 +4,7 @@
 
 use super::dual::Dual;
 use super::Tangent;
-use crate::hinge::profile::{Contour, Profile, SPREAD_SLOPE};
+use crate::hinge::profile::{Contour, Profile, AXIAL_BLANK_SLOPE, SPREAD_SLOPE};
 
 /// A family's contour dimensions with their derivatives, mm.
 #[derive(Debug, Clone, Copy)]
@@ -24,8 +24,12 @@ pub(super) struct DProfile {
     pub h: Dual,
     pub blank: Dual,
     pub half_notch: Dual,
-    /// (from, size0) of [`crate::hinge::profile::Spread`]; slope [`SPREAD_SLOPE`].
+    /// (from, size0) of [`crate::hinge::profile::Spread`]; slope [`SPREAD_SLOPE`] in the notch.
     pub spread: Option<(Dual, Dual)>,
+    /// The spreading's slope beyond the notch end (`Spread::blank_slope`, the knee at
+    /// `half_notch`): [`SPREAD_SLOPE`], or [`AXIAL_BLANK_SLOPE`] for the profile the axial load
+    /// sees ([`DProfile::axial`], `Profile::axial`).
+    pub blank_slope: f64,
 }
 
 /// x at which an arc reaches the cap thickness h (`profile.rs`'s `arc_cap`).
@@ -84,11 +88,43 @@ impl DProfile {
             blank: d(p.blank, tg.blank),
             half_notch,
             spread: None,
+            blank_slope: SPREAD_SLOPE,
         };
         if p.spread.is_some() {
             out.spread = out.spread_start();
         }
         out
+    }
+
+    /// The profile the axial load sees (`Profile::axial`): the spreading beyond the notch at
+    /// [`AXIAL_BLANK_SLOPE`]; `None` without spreading.
+    pub fn axial(&self) -> Option<DProfile> {
+        self.spread.map(|_| DProfile {
+            blank_slope: AXIAL_BLANK_SLOPE,
+            ..*self
+        })
+    }
+
+    /// The taper of the spreading that starts at (`from`, `size0`), at |x| = `u` ≥ `from`
+    /// (`Spread::taper`: [`SPREAD_SLOPE`] up to the notch end, `blank_slope` beyond).
+    pub fn taper(&self, u: Dual, from: Dual, size0: Dual) -> Dual {
+        let hn = self.half_notch;
+        if u.v <= hn.v {
+            size0 + (u - from) * SPREAD_SLOPE
+        } else {
+            size0 + (hn - from) * SPREAD_SLOPE + (u - hn) * self.blank_slope
+        }
+    }
+
+    /// |x| at which the taper reaches the half-size `s` (`Spread::reach`).
+    pub fn reach(&self, s: Dual, from: Dual, size0: Dual) -> Dual {
+        let hn = self.half_notch;
+        let at_knee = self.taper(hn, from, size0);
+        if s.v <= at_knee.v {
+            from + (s - size0) / SPREAD_SLOPE
+        } else {
+            hn + (s - at_knee) / self.blank_slope
+        }
     }
 
     /// (from, size0) of the load spreading (`Profile::spread` with [`SPREAD_SLOPE`]).
@@ -174,7 +210,7 @@ impl DProfile {
         let u = x.abs();
         let s = self.half_size(u);
         match self.spread {
-            Some((from, size0)) if u.v > from.v => s.min(size0 + (u - from) * SPREAD_SLOPE),
+            Some((from, size0)) if u.v > from.v => s.min(self.taper(u, from, size0)),
             _ => s,
         }
     }

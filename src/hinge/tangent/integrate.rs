@@ -141,10 +141,63 @@ fn quadrature_points(a: Dual, b: Dual, map: DMap, panels: usize, f: &mut dyn FnM
     }
 }
 
-/// The flexibility integrals of [x0, x1] loaded at x1 (`hinge::integrate::flex_integrals`).
+/// The flexibility integrals of [x0, x1] loaded at x1 (`hinge::integrate::flex_integrals`; the
+/// axial integral over the profile the axial load sees, [`DProfile::axial`]).
 pub(super) fn flex_integrals(p: &DProfile, m: &DModuli, x0: Dual, x1: Dual, q: Quadrature) -> DFlex {
     let mut acc = DFlex::zero();
     let (lo, hi) = if x0.v <= x1.v { (x0, x1) } else { (x1, x0) };
+    each_point(p, lo, hi, q, &mut |x, w| {
+        let size = p.section_size(x);
+        let s = p.section_of_size(size, m.nu);
+        let (e_bend, e_axial) = moduli_at(p, m, x, size);
+        acc.axial = acc.axial + w / (e_axial * s.area);
+        acc.shear_y = acc.shear_y + w / (m.g * s.shear_area_bend_off);
+        acc.shear_z = acc.shear_z + w / (m.g * s.shear_area_bend);
+        acc.torsion = acc.torsion + w / (m.g * s.j);
+        let (fb, fo) = (w / (e_bend * s.i_bend), w / (m.e * s.i_bend_off));
+        let a = x1 - x;
+        acc.bend[0] = acc.bend[0] + fb;
+        acc.bend[1] = acc.bend[1] + fb * a;
+        acc.bend[2] = acc.bend[2] + fb * a * a;
+        acc.bend_off[0] = acc.bend_off[0] + fo;
+        acc.bend_off[1] = acc.bend_off[1] + fo * a;
+        acc.bend_off[2] = acc.bend_off[2] + fo * a * a;
+    });
+    if let Some(axial) = p.axial() {
+        let mut sum = Dual::c(0.0);
+        each_point(&axial, lo, hi, q, &mut |x, w| {
+            let size = axial.section_size(x);
+            let area = axial.section_of_size(size, m.nu).area;
+            sum = sum + w / (moduli_at(&axial, m, x, size).1 * area);
+        });
+        acc.axial = sum;
+    }
+    acc
+}
+
+/// The compliant-axis bending and the axial modulus at x, where the effective section is `size`
+/// (`Moduli::bend_axial_at`).
+fn moduli_at(p: &DProfile, m: &DModuli, x: Dual, size: Dual) -> (Dual, Dual) {
+    let u = x.v.abs();
+    if u >= m.notch_half.v {
+        // The blank's spreading zone is plane-strain restrained (`solid_effects::blank_restraint`)
+        // until it is fully effective.
+        if size.v < p.h.v && m.blank_restraint.v != 0.0 {
+            let pb = 1.0 + m.blank_restraint * (1.0 - size / p.w).max(Dual::c(0.0));
+            (m.e * pb, m.e * crate::hinge::solid_effects::axial_restraint(pb))
+        } else {
+            (m.e, m.e)
+        }
+    } else if u >= m.fillet_from.v {
+        (m.e_bend_fillet, m.e_axial_fillet)
+    } else {
+        (m.e_bend, m.e_axial)
+    }
+}
+
+/// Every quadrature point of `p`'s pieces (and their mirrors) within [lo, hi]: `f(x, weight)`
+/// (`hinge::integrate::each_point`).
+fn each_point(p: &DProfile, lo: Dual, hi: Dual, q: Quadrature, f: &mut dyn FnMut(Dual, Dual)) {
     for piece in p.pieces().as_slice() {
         let panels = match piece.map {
             DMap::Linear => q.linear_panels,
@@ -173,38 +226,7 @@ pub(super) fn flex_integrals(p: &DProfile, m: &DModuli, x0: Dual, x1: Dual, q: Q
                     slope: sign * slope,
                 },
             };
-            quadrature_points(a, b, map, panels, &mut |x, w| {
-                let size = p.section_size(x);
-                let s = p.section_of_size(size, m.nu);
-                let u = x.v.abs();
-                let (e_bend, e_axial) = if u >= m.notch_half.v {
-                    // `Moduli::bend_axial_at`: the blank's spreading zone is plane-strain
-                    // restrained (`solid_effects::blank_restraint`) until it is fully effective.
-                    if size.v < p.h.v && m.blank_restraint.v != 0.0 {
-                        let pb = 1.0 + m.blank_restraint * (1.0 - size / p.w).max(Dual::c(0.0));
-                        (m.e * pb, m.e * crate::hinge::solid_effects::axial_restraint(pb))
-                    } else {
-                        (m.e, m.e)
-                    }
-                } else if u >= m.fillet_from.v {
-                    (m.e_bend_fillet, m.e_axial_fillet)
-                } else {
-                    (m.e_bend, m.e_axial)
-                };
-                acc.axial = acc.axial + w / (e_axial * s.area);
-                acc.shear_y = acc.shear_y + w / (m.g * s.shear_area_bend_off);
-                acc.shear_z = acc.shear_z + w / (m.g * s.shear_area_bend);
-                acc.torsion = acc.torsion + w / (m.g * s.j);
-                let (fb, fo) = (w / (e_bend * s.i_bend), w / (m.e * s.i_bend_off));
-                let a = x1 - x;
-                acc.bend[0] = acc.bend[0] + fb;
-                acc.bend[1] = acc.bend[1] + fb * a;
-                acc.bend[2] = acc.bend[2] + fb * a * a;
-                acc.bend_off[0] = acc.bend_off[0] + fo;
-                acc.bend_off[1] = acc.bend_off[1] + fo * a;
-                acc.bend_off[2] = acc.bend_off[2] + fo * a * a;
-            });
+            quadrature_points(a, b, map, panels, f);
         }
     }
-    acc
 }

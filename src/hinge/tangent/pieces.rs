@@ -112,7 +112,7 @@ impl DProfile {
                 p.push(piece.x0, piece.x1.min(from), piece.map);
             }
         }
-        let reach = |s: Dual| from + (s - size0) / SPREAD_SLOPE;
+        let reach = |s: Dual| self.reach(s, from, size0);
         let full = reach(self.far_half_size());
         let inf = Dual::c(f64::INFINITY);
         let mut cuts: [Dual; 4] = [self.half_notch, full, inf, inf];
@@ -122,15 +122,27 @@ impl DProfile {
             cuts[3] = reach(self.w / 2.0);
         }
         cuts.sort_by(|a, b| a.v.total_cmp(&b.v));
-        let taper = DMap::Taper {
-            origin: from,
-            size0,
-            slope: SPREAD_SLOPE,
+        // The taper is linear in the notch and again beyond it (at `blank_slope`); the notch
+        // end is one of the cuts (`Profile::spread_pieces`).
+        let taper = |x0: Dual| {
+            if x0.v < self.half_notch.v {
+                DMap::Taper {
+                    origin: from,
+                    size0,
+                    slope: SPREAD_SLOPE,
+                }
+            } else {
+                DMap::Taper {
+                    origin: self.half_notch,
+                    size0: self.taper(self.half_notch, from, size0),
+                    slope: self.blank_slope,
+                }
+            }
         };
         let mut x0 = from;
         for &c in cuts.iter().filter(|c| c.v > from.v && c.v.is_finite()) {
             let c = c.min(end);
-            let map = if x0.v < full.v { taper } else { DMap::Linear };
+            let map = if x0.v < full.v { taper(x0) } else { DMap::Linear };
             p.push(x0, c, map);
             x0 = x0.max(c);
         }

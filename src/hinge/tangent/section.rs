@@ -161,6 +161,7 @@ impl DProfile {
             blank: z(self.blank),
             half_notch: z(self.half_notch),
             spread: self.spread.map(|(a, b)| (z(a), z(b))),
+            blank_slope: self.blank_slope,
         }
     }
 
