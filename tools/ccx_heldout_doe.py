@@ -185,6 +185,16 @@ fillets, blank length 0.5-1 h), then 6 circular notches and 8 corner-filleted le
 second set's ranges.
 
     python3 tools/ccx_heldout_doe.py --sixteenth > tools/ccx_heldout16_doe.json
+
+Seventeenth check set (`--seventeenth`, `tools/ccx_heldout17_doe.json`), drawn and committed before
+the sixteenth was compared, so that a law changed after that comparison can be checked once, and
+to put the rigid end faces' torque term to circular notches, where no earlier design lets it act:
+numpy `default_rng(20261214)`, 8 circular notches in tall short blanks (t/R 0.2-0.5, R 1-3,
+h/t 10-22, blank length 0.3-0.7 h), 8 short wide leaves with sharp fillets in tall
+short blanks (4-8 t above the fillets, blank length 0.5-1 h), then 6 circular notches and 8
+corner-filleted leaves by the second set's ranges.
+
+    python3 tools/ccx_heldout_doe.py --seventeenth > tools/ccx_heldout17_doe.json
 """
 
 import json
@@ -411,6 +421,33 @@ def doe16():
     return aimed_doe(20261213, [(10, *very_short, short), (6, *very_tall, tall)], 8)
 
 
+def circular_tall_short(rng, n):
+    """n circular-notch rows in tall short blanks: t/R 0.2-0.5, w/t 2-20, R 1-3, h/t 10-22 (at
+    least 2 t above the half-circle notch: a slot, the contour steps up to the blank), blank length
+    0.3-0.7 h: where the rigid end faces' torque term acts on a circular notch."""
+    rows = []
+    for a, b, c, d, e in lhs(rng, n, [(0.2, 0.5), (2.0, 20.0), (1.0, 3.0), (10.0, 22.0), (0.3, 0.7)]):
+        t = r05(a * c)
+        h = r05(max(d * t, t + 2 * c + 2 * t))
+        rows.append({"type": "circular_notch", "R": r05(c), "t": t, "w": r05(b * t), "h": h, "blank_length": r05(e * h)})
+    return rows
+
+
+def doe17():
+    rng = np.random.default_rng(20261214)
+    rows = [{**r, "regime": "lhs: circular notch, tall short blank"} for r in circular_tall_short(rng, 8)]
+    tall_short = ("short wide leaf, sharp fillets, tall short blank", SHARP)
+    rows += [{**r, "regime": f"lhs: {tall_short[0]}"} for r in corner2(rng, 8, tall_short[1], **tall_short_ranges())]
+    rows += [{**r, "regime": "lhs"} for r in circular2(rng, 6)]
+    return rows + [{**r, "regime": "lhs"} for r in corner2(rng, 8, SECOND)]
+
+
+def tall_short_ranges():
+    """corner2's ranges of short wide leaves in tall short blanks (4-8 t above the fillets, blank
+    length 0.5-1 h)."""
+    return tall_short((4.0, 8.0))
+
+
 def doe3():
     rng = np.random.default_rng(20261130)
     rows = [{**r, "regime": "lhs"} for r in corner2(rng, 8, SECOND)]
@@ -423,6 +460,7 @@ if __name__ == "__main__":
 
     # The check sets by flag, in the order the flags are tried; no flag: the first set.
     designs = [
+        ("--seventeenth", doe17),
         ("--sixteenth", doe16),
         ("--fifteenth", doe15),
         ("--fourteenth", doe14),
