@@ -52,8 +52,9 @@ fn model_of(text: &str) -> fem::Model {
 /// the torsion entry: the `hinge` analysis clamps and loads the hinge through rigid end faces,
 /// whose section reaches back into a short blank for the torque, while a mesh element's ends are
 /// nodes in continuous material. Its torsion entry is that of the same region with continuous
-/// ends ([`hinge::flex_region`]), and never stiffer than the `hinge` analysis's (the pan-tilt
-/// leaf, h/t 25 in a blank 0.5 h long, is 5.0 % softer).
+/// ends ([`hinge::flex_region`]), and never stiffer than the `hinge` analysis's (for the pan-tilt
+/// leaf, h/t 25, at 20 mm: a blank 7.5 mm = 0.5 h long, the torsional compliance is 5.0 %
+/// larger).
 #[test]
 fn hinge_element_reproduces_the_hinge_analysis_compliance() {
     let al = flexfem::material::Material::builtin("Al7075").unwrap();

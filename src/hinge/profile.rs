@@ -27,8 +27,9 @@ pub struct Spread {
     pub knee: f64,
     /// The growth beyond `knee`; `slope` unless set by [`Profile::spread_into_blank`].
     pub blank_slope: f64,
-    /// Slope at which the section of the loaded blank end face narrows back into the blank (0:
-    /// no such completion; set by [`Profile::with_end_face`]).
+    /// Slope at which the section of each rigid end face narrows back into the blank (0: no such
+    /// completion; set by the torsion law alone, `Profile::with_end_face`, for a profile with
+    /// [`EndFaces::Rigid`]).
     pub face_slope: f64,
 }
 
@@ -81,7 +82,7 @@ pub struct Profile {
     pub spread: Option<Spread>,
     /// What bounds the region at ±`half_length`: the rigid end faces of a hinge in its blank
     /// (the `hinge` analysis) or continuous material (a hinge element between two nodes of a
-    /// mechanism). Only the torsion law reads it ([`Profile::with_end_face`]).
+    /// mechanism). Only the torsion law reads it (`Profile::with_end_face`).
     pub end_faces: EndFaces,
 }
 
@@ -310,7 +311,7 @@ impl Profile {
     /// the nearer end face (both faces are rigid, the clamped one and the loaded one;
     /// `hinge::torsion::solid`). No effect without spreading or with `slope` ≤ 0. The caller
     /// decides whether the ends are faces ([`Profile::end_faces`]); this method does not look.
-    pub fn with_end_face(mut self, slope: f64) -> Profile {
+    pub(crate) fn with_end_face(mut self, slope: f64) -> Profile {
         if let Some(sp) = self.spread.as_mut() {
             sp.face_slope = slope.max(0.0);
         }

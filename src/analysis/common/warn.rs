@@ -3,11 +3,12 @@
 //! [`crate::case::material::plausibility_warnings`]). The warnings that read one kind's result
 //! rows live with that kind (`fem_static/warnings.rs`, `stage/warnings.rs`).
 
-/// Calibration-range warnings of a hinge in its blank between rigid end faces (the `hinge`
-/// analysis), prefixed with where it sits in the case file.
+/// Calibration-range warnings of a hinge, prefixed with where it sits in the case file (the
+/// `hinge` analysis adds those of its rigid end faces from its result:
+/// [`crate::hinge::calibration::end_face_warning`]).
 pub fn hinge_warnings(at: &str, spec: &crate::hinge::HingeSpec) -> Vec<String> {
     match spec.profile() {
-        Ok(p) => crate::hinge::calibration::calibration_warnings(&p.with_rigid_end_faces())
+        Ok(p) => crate::hinge::calibration::calibration_warnings(&p)
             .into_iter()
             .map(|w| format!("{at}: {w}"))
             .collect(),

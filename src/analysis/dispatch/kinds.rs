@@ -74,6 +74,9 @@ impl Analysis for Hinge {
     fn case_warnings(case: &Self::Case) -> Vec<String> {
         warn::hinge_warnings("hinge", &case.hinge)
     }
+    fn result_warnings(case: &Self::Case, r: &Self::Result) -> Vec<String> {
+        hinge::end_face_warnings(case, r)
+    }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         one_material(&case.material)
     }

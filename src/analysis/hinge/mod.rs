@@ -89,6 +89,23 @@ pub struct LargeRotation {
     pub linear_rotation_at_allowable_deg: Option<f64>,
 }
 
+/// The warning of the hinge's rigid end faces where their torsion term is extrapolated
+/// ([`crate::hinge::calibration::end_face_warning`]), prefixed `hinge: `.
+pub fn end_face_warnings(case: &HingeCase, r: &HingeOut) -> Vec<String> {
+    // Most hinges' end faces change nothing (checked without a solve, nor the material).
+    let p = match case.hinge.profile() {
+        Ok(p) if crate::hinge::torsion::end_face_acts(&p.with_rigid_end_faces()) => p.with_rigid_end_faces(),
+        _ => return Vec::new(),
+    };
+    let Ok(m) = case.validate() else {
+        return Vec::new();
+    };
+    crate::hinge::calibration::end_face_warning(&p, r.result.hinge.k_torsion, &m)
+        .map(|w| format!("hinge: {w}"))
+        .into_iter()
+        .collect()
+}
+
 /// Characterises the hinge of the case.
 pub fn solve(case: &HingeCase) -> Result<HingeOut, super::RunError> {
     let m = case.validate()?;

@@ -188,6 +188,11 @@ pub fn vlasov_compliance_derivative(
             profile.blank + s * step * tangent.blank,
         )
         .ok()?;
+        // The same ends as the profile (a rigid-faced hinge keeps its end-face term).
+        let moved = Profile {
+            end_faces: profile.end_faces,
+            ..moved
+        };
         let e = material.e + s * step * tangent.e;
         let nu = material.nu + s * step * tangent.nu;
         let k = super::torsion::solid_torsion_stiffness(&moved, e, nu);
