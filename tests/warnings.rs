@@ -46,8 +46,19 @@ fn warnings(v: &serde_json::Value) -> Vec<String> {
 /// Bundled cases whose warnings are true statements about them, with one phrase each warning
 /// must contain (in order): stresses above the allowable of two mechanisms driven to their
 /// stroke and of the stage's 60 N case (utilisation 1.34 linear, 1.38 nonlinear), and two deliberate stand-ins (a pendulum bar of 1e-4 steel's density so its tip
-/// mass dominates, a 1e5× stiff platform standing in for a rigid one).
-const KNOWN: [(&str, &[&str]); 7] = [
+/// mass dominates, a 1e5× stiff platform standing in for a rigid one), and the pan-tilt hinge of
+/// Yu, Lu and Hao, whose blank (h/t 25) is taller than any CalculiX design's (the sixteenth
+/// design's leaves at h/t 10.3–13.7 read torsion −10.7 … +19.7 %; our scikit-fem model of this
+/// very hinge reads it within 3.3 %).
+const KNOWN: [(&str, &[&str]); 9] = [
+    (
+        "pantilt_hinge_corner_filleted.json",
+        &["corner_filleted h/t = 25 is outside the solid-calibrated range 2.6–10"],
+    ),
+    (
+        "pantilt_hinge_damping.json",
+        &["corner_filleted h/t = 25 is outside the solid-calibrated range 2.6–10"],
+    ),
     (
         "leaf_guide_track.json",
         &[
@@ -84,8 +95,8 @@ const KNOWN: [(&str, &[&str]); 7] = [
     ),
 ];
 
-/// Every bundled case that `run` accepts has `warnings`: empty (the bundled hinges are all
-/// inside their calibration) but for the [`KNOWN`] ones.
+/// Every bundled case that `run` accepts has `warnings`: empty (the bundled hinges are inside
+/// their calibration, bar the pan-tilt hinge) but for the [`KNOWN`] ones.
 #[test]
 fn every_bundled_result_has_an_empty_warnings_list() {
     let mut n = 0;
@@ -266,6 +277,42 @@ fn end_face_torsion_warns_where_it_is_extrapolated() {
     for hinge in [corner(5.94), doe15.to_string()] {
         assert_eq!(face(&warnings(&run_hinge(&hinge))), None, "{hinge}");
     }
+}
+
+/// Beyond the CalculiX designs that meet the targets the sixteenth design's leaves miss them
+/// (tests/hinge_ccx_reference.rs): its leaf in a blank 13.4 t tall (l4.05/R1.45/t1.9/w30.2/
+/// h25.4/b23.95, torsion −10.74 %) warns that corner-filleted h/t is outside 2.6–10, and its
+/// leaf in a blank 0.32 h long (l2.5/R0.9/t1.25/w23.9/h10.35/b3.35, axial −5.82 %) that
+/// blank_length/h is below 0.5; the fifteenth design's leaf l2.2/R0.8/t1.1/w14.55/h7.95/b5.8
+/// (h/t 7.2, 0.73 h) gets no range warning.
+#[test]
+fn tall_or_short_blanks_warn_that_they_are_extrapolated() {
+    let run_hinge = |hinge: &str| {
+        warnings(&json(&run_case_text(
+            "warn_range",
+            &format!(r#"{{"analysis": "hinge", "material": "al7075", "hinge": {hinge}}}"#),
+        )))
+    };
+    let tall = run_hinge(
+        r#"{"type": "corner_filleted", "l": 4.05, "R": 1.45, "t": 1.9, "w": 30.2, "h": 25.4, "blank_length": 23.95}"#,
+    );
+    assert!(
+        tall.iter().any(|w| w.starts_with("hinge: corner_filleted h/t = 13.3684 is outside the solid-calibrated range 2.6–10")),
+        "{tall:?}"
+    );
+    let short = run_hinge(
+        r#"{"type": "corner_filleted", "l": 2.5, "R": 0.9, "t": 1.25, "w": 23.9, "h": 10.35, "blank_length": 3.35}"#,
+    );
+    assert!(
+        short
+            .iter()
+            .any(|w| w.starts_with("hinge: blank_length/h = 0.3237 is below 0.5, the CalculiX designs'")),
+        "{short:?}"
+    );
+    let inside = run_hinge(
+        r#"{"type": "corner_filleted", "l": 2.2, "R": 0.8, "t": 1.1, "w": 14.55, "h": 7.95, "blank_length": 5.8}"#,
+    );
+    assert!(inside.is_empty(), "{inside:?}");
 }
 
 /// Inside the range (Ruiz et al. notch R8/t2, t/R = 0.25, w/t = 5): no warning.

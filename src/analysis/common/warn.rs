@@ -10,6 +10,7 @@ pub fn hinge_warnings(at: &str, spec: &crate::hinge::HingeSpec) -> Vec<String> {
     match spec.profile() {
         Ok(p) => crate::hinge::calibration::calibration_warnings(&p)
             .into_iter()
+            .chain(crate::hinge::calibration::short_blank_warning(&p))
             .map(|w| format!("{at}: {w}"))
             .collect(),
         Err(_) => Vec::new(),
