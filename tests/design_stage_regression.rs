@@ -122,8 +122,8 @@ const DESIGN_CONSTRAINTS: [(&str, f64, f64); 5] = [
     ("z_travel", 2.3332048488021577, -0.16660242440107886),
     ("T_min", 0.9685859607916744, -0.2107324509895929),
     ("T_max", 0.9685859607916744, -0.19284503267360467),
-    ("revolute_rotation_stress", 399.9670244955027, -8.243876124325311e-5),
-    ("spherical_rotation_stress", 399.8481664601902, -0.0003795838495244652),
+    ("revolute_rotation_stress", 399.9670244955027, -8.243878156605433e-5),
+    ("spherical_rotation_stress", 399.8481664601902, -0.00037958380978565744),
 ];
 const DESIGN_BINDING: [&str; 2] = ["revolute_rotation_stress", "spherical_rotation_stress"];
 const DESIGN_EVALUATIONS: u64 = 818;
@@ -135,7 +135,7 @@ const DESIGN_LAST_STEP: ([f64; 5], [f64; 4]) = (
         91.23935740269792,
         2.333002572034672,
         0.9685831112161034,
-        6.93578943241846e-5,
+        6.935788834567802e-5,
     ],
 );
 

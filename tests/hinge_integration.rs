@@ -141,3 +141,47 @@ fn segments_compose_to_whole() {
     let composed = tr.transpose() * c1 * tr + c2;
     assert!((composed - whole).norm() < 1e-9 * whole.norm());
 }
+
+/// The axial flexibility is additive along the hinge, so segments cut anywhere, across the notch
+/// end where the axial load's spreading changes slope (`Profile::axial`), sum to the whole: for a
+/// leaf (the spreading starts at the notch end), a short wide corner-filleted hinge in a tall
+/// blank and a turned neck, cut at the notch end, just inside and just outside it and in the
+/// blank, to 1e-12 of the whole (each has the axial load's own, faster spreading beyond the
+/// notch).
+#[test]
+fn axial_segments_compose_across_the_notch_end() {
+    use flexfem::hinge::HingeSpec;
+    let m = Material::AL7075;
+    for hinge in [
+        r#"{"type": "leaf", "l": 3, "t": 1, "w": 5, "h": 8, "blank_length": 6}"#,
+        r#"{"type": "corner_filleted", "l": 2.4, "R": 0.65, "t": 1.2, "w": 20.9, "h": 11.75, "blank_length": 7.5}"#,
+        r#"{"type": "spherical_neck", "l": 2, "t": 2, "R": 3, "h": 10, "blank_length": 10}"#,
+    ] {
+        let spec: HingeSpec = serde_json::from_str(hinge).unwrap();
+        let p = spec.profile().unwrap();
+        let (hn, half) = (p.half_notch, p.half_length());
+        let whole = segment_compliance(&p, &m, -half, half)[(0, 0)];
+        let cuts = [
+            -half,
+            -0.5 * (hn + half),
+            -hn,
+            -0.9 * hn,
+            0.0,
+            0.95 * hn,
+            hn,
+            1.05 * hn,
+            0.5 * (hn + half),
+            half,
+        ];
+        let sum: f64 = cuts
+            .windows(2)
+            .map(|w| segment_compliance(&p, &m, w[0], w[1])[(0, 0)])
+            .sum();
+        assert!((sum / whole - 1.0).abs() < 1e-12, "{hinge}: {sum} vs {whole}");
+        let bending_spread = p.axial().expect("the default spreading");
+        assert!(
+            bending_spread.spread.unwrap().blank_slope > p.spread.unwrap().blank_slope,
+            "{hinge}"
+        );
+    }
+}

@@ -137,12 +137,12 @@ fn check(label: &str, worst: &[f64], tol: &[f64]) {
 /// beam model). Measured: bending −0.71 … +1.86 %, torsion −8.56 … +2.72 % (−8.72 … +2.59 % with the torsion law's slopes 1.3 and 0.84; −8.72 … +8.98 % while compact waists carried warping restraint, the narrow w = 1 rows high; −8.76 … +8.99 % with the warping constant spread at 0.57 everywhere, −8.69 … +8.92 % at the bending's 1/2, −8.20 … +9.32 % before it took its own spreading; −11.44 … +4.21 %
 /// before the plate-mode warping and torsional spreading of `hinge::torsion::solid_torsion_stiffness`,
 /// whose first fit used these rows too; −2.85 … +9.54 % with it, before Benscoter's warping shear), axial +0.13 … +4.35 % (+0.08 … +4.18 % before the axial load's spreading into the blank at 0.56, `hinge::profile::AXIAL_BLANK_SLOPE`; +0.90 … +3.78 % before the axial modulus took G and
-/// 0.6 of P; +4.08 % before the blank's plane-strain restraint: +4.18 % on R8/t0.5/w10, t/R 0.06, below the CalculiX-calibrated range), peak stress
+/// 0.6 of P; +4.08 % before the blank's plane-strain restraint: +4.35 % on R8/t0.5/w10, the largest (+4.18 % before the axial load's spreading into the blank), t/R 0.06, below the CalculiX-calibrated range), peak stress
 /// per moment −1.72 … +5.28 %.
-const CIRCULAR_FIT_TOL: [f64; 4] = [2.5, 9.0, 4.4, 6.0];
+const CIRCULAR_FIT_TOL: [f64; 4] = [2.5, 9.0, 4.6, 6.0];
 /// The five turned necks used to fit the neck's K_t = 1 + 0.041√(t/R). Measured: bending
 /// −1.77 … +0.79 %, torsion −4.11 … −0.06 %, axial −0.99 … +0.83 % (−2.73 … +0.29 % before the axial load's spreading into the blank at 0.56), stress −0.82 … +0.04 %.
-const NECK_FIT_TOL: [f64; 4] = [3.0, 5.0, 3.0, 2.0];
+const NECK_FIT_TOL: [f64; 4] = [3.0, 5.0, 1.5, 2.0];
 
 // Held out: computed after the fits, never used in one. 25 rows in all, tolerances about
 // 1.2–2.5× the measured worst case: what they show is agreement on these geometries, with a
@@ -156,7 +156,7 @@ const NECK_FIT_TOL: [f64; 4] = [3.0, 5.0, 3.0, 2.0];
 const CIRCULAR_HELD_OUT_TOL: [f64; 4] = [3.0, 9.5, 6.0, 5.0];
 /// The 6 held-out necks: l/t 1–2.7, t/R 0.67–2. Measured: bending −2.00 … +1.06 %, torsion
 /// −4.01 … −0.11 %, axial −0.79 … +0.65 % (−2.28 … −0.16 % before the axial load's spreading into the blank at 0.56), stress −1.31 … +0.26 %.
-const NECK_HELD_OUT_TOL: [f64; 4] = [3.0, 5.0, 3.0, 3.0];
+const NECK_HELD_OUT_TOL: [f64; 4] = [3.0, 5.0, 1.5, 3.0];
 
 #[test]
 fn circular_notches_fit_residual() {
@@ -213,11 +213,12 @@ fn turned_necks_held_out() {
 /// The 8R pan-tilt corner-filleted hinge, used to fit the torsion load spreading (its bending is
 /// also checked against 4.05 N·mm/° in tests/hinge_seeds.rs). Measured: bending −0.45 % (−0.59 % before the blank's plane-strain restraint, +2.04 %
 /// before the corner fillets got the short-notch factor G), torsion
-/// +3.32 % (+1.26 % with the torsion law's slopes 1.3 and 0.84, +0.69 % with the warping constant spread at 0.57 everywhere, −0.61 % at 1/2, +4.40 % before it took its own spreading, −13.89 % before the torsion corrections, −1.58 % before the warping shear), axial −1.57 % (−3.89 % before the axial load's spreading into the blank at 0.56, −4.86 % before the blank's plane-strain restraint, −6.13 % before the axial modulus took G and 0.6 of P), stress +1.36 % (+0.24 % with the
-/// corner-filleted K_t exponent 1/5, +4.28 % before it; the exponent is now 0.27, refitted on
-/// converged CalculiX peaks: these scikit-fem peaks, on meshes sized by the thickness, read
-/// fillets low as the n = 4 CalculiX ones do, tests/hinge_ccx_reference.rs).
-const CORNER_FIT_TOL: [f64; 4] = [2.5, 6.0, 8.0, 6.0];
+/// +3.32 % (+1.26 % with the torsion law's slopes 1.3 and 0.84, +0.69 % with the warping constant spread at 0.57 everywhere, −0.61 % at 1/2, +4.40 % before it took its own spreading, −13.89 % before the torsion corrections, −1.58 % before the warping shear), axial −1.57 % (−3.89 % before the axial load's spreading into the blank at 0.56, −4.86 % before the blank's plane-strain restraint, −6.13 % before the axial modulus took G and 0.6 of P), stress −1.50 % with the corner fillet's
+/// peak law (+1.36 % with the K_t exponent 0.27, +0.24 % with 1/5, +4.28 % before it; the peak law
+/// was fitted on converged CalculiX peaks: these scikit-fem peaks, on meshes sized by the
+/// thickness, read fillets low as the n = 4 CalculiX ones do, tests/hinge_ccx_reference.rs).
+/// Pinned at 2.5 / 6 / 2 / 6 % (axial measured −1.57 %).
+const CORNER_FIT_TOL: [f64; 4] = [2.5, 6.0, 2.0, 6.0];
 
 #[test]
 fn corner_filleted_fit_residual() {
@@ -236,7 +237,7 @@ fn corner_filleted_fit_residual() {
 /// −4.48 … −2.47 (−4.49 … −2.49 with the torsion law's slopes 1.3 and 0.84), +0.90 … +2.13 (+0.80 … +2.05 before the axial load's spreading into the blank at 0.56, +2.44 … +2.63 before the axial modulus took G and 0.6 of P),
 /// −1.58 … +0.78 %; corner-filleted −1.79 … −1.08 (−1.94 … −1.19 before the blank's plane-strain restraint, +0.19 … +1.81
 /// before the fillets got the short-notch factor G), −3.13 …
-/// −1.33 (−4.25 … −2.94 with the torsion law's slopes 1.3 and 0.84; −4.01 … −2.61 with the warping constant spread at 0.57 everywhere), +1.02 … +1.40 (−0.49 … +0.27 before the axial load's spreading into the blank at 0.56, −0.72 … +0.07 before the blank's plane-strain restraint, −0.44 … +0.77 before the axial change), +4.56 … +6.67 % (+2.25 … +3.69 % with the K_t exponent 1/5; the
+/// −1.33 (−4.25 … −2.94 with the torsion law's slopes 1.3 and 0.84; −4.01 … −2.61 with the warping constant spread at 0.57 everywhere), +1.02 … +1.40 (−0.49 … +0.27 before the axial load's spreading into the blank at 0.56, −0.72 … +0.07 before the blank's plane-strain restraint, −0.44 … +0.77 before the axial change), +3.52 … +6.24 % with the peak law (+4.56 … +6.67 % with the exponent 0.27, +2.25 … +3.69 % with the K_t exponent 1/5; the
 /// refitted 0.27 matches converged peaks, which meshes sized by the thickness read low; before
 /// the torsion corrections and the corner K_t exponent 1/5: torsion −18.23 … −15.95, stress +10.72 … +14.75 %); leaf −5.61 … −4.53 (−5.92 … −4.67 before the blank's plane-strain restraint),
 /// −0.94 … −0.68 (−3.34 … −2.13 with the torsion law's slopes 1.3 and 0.84; −4.15 … −3.04 with the warping spread at 0.57 everywhere, −4.52 … −3.40 at 1/2; −2.89 … −1.40 before the warping constant took its own load spreading;
@@ -248,7 +249,7 @@ fn corner_filleted_fit_residual() {
 /// theory: the solid's peak stress there is singular and not compared.
 const ELLIPTICAL_HELD_OUT_TOL: [f64; 4] = [1.0, 10.0, 4.0, 2.0];
 const CORNER_HELD_OUT_TOL: [f64; 4] = [3.0, 7.0, 2.0, 20.0];
-const LEAF_HELD_OUT_TOL: [f64; 3] = [8.0, 3.5, 6.0];
+const LEAF_HELD_OUT_TOL: [f64; 3] = [8.0, 3.5, 2.5];
 
 #[test]
 fn other_families_held_out() {

@@ -255,7 +255,7 @@ fn end_face_torsion_warns_where_it_is_extrapolated() {
         ),
         (
             r#"{"type": "corner_filleted", "l": 2, "R": 0.5, "t": 1, "w": 5, "h": 10, "blank_length": 5}"#.to_string(),
-            "on the CalculiX designs it stiffens the torsion by at most 17.1 %",
+            "on the CalculiX designs it stiffens the torsion by at most 17.11 %",
             25.0,
         ),
         (

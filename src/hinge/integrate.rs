@@ -21,7 +21,7 @@
 use nalgebra::Matrix6;
 
 use super::pieces::Map;
-use super::profile::{Profile, SectionMemo};
+use super::profile::{Contour, Profile, SectionMemo};
 
 /// 8-point Gauss–Legendre abscissae on [−1, 1] (positive half).
 const GL8_X: [f64; 4] = [
@@ -291,6 +291,9 @@ fn integrate(
     let hn = profile.half_notch;
     // Blanks and prismatic parts are one section each: evaluated once.
     let mut memo = SectionMemo::new(profile, m.nu);
+    // The axial profile differs from `profile` only beyond the notch: its notch part is kept.
+    let axial = profile.axial();
+    let mut axial_in_notch = 0.0;
     each_point(profile, lo, hi, q, |x, wgt, in_notch| {
         let size = profile.section_size(x);
         let s = memo.of_size(size);
@@ -305,18 +308,27 @@ fn integrate(
         ];
         acc.add(&f, x1 - x, m.shear);
         if in_notch {
+            axial_in_notch += f[0];
             if let Some(n) = notch.as_deref_mut() {
                 n.add(&f, hn - x, m.shear);
             }
         }
     });
-    if let Some(axial) = profile.axial() {
+    if let Some(axial) = axial {
+        // Beyond the notch, the area alone (a rectangle's w × size; the neck's clipped disk).
         let mut memo = SectionMemo::new(&axial, m.nu);
-        acc.axial = 0.0;
-        each_point(&axial, lo, hi, q, |x, wgt, _| {
-            let size = axial.section_size(x);
-            acc.axial += wgt / (m.bend_axial_at(x, size).1 * memo.of_size(size).area);
+        let mut beyond = 0.0;
+        each_point(&axial, lo, hi, q, |x, wgt, in_notch| {
+            if !in_notch {
+                let size = axial.section_size(x);
+                let area = match axial.contour {
+                    Contour::SphericalNeck { .. } => memo.of_size(size).area,
+                    _ => axial.w * size,
+                };
+                beyond += wgt / (m.bend_axial_at(x, size).1 * area);
+            }
         });
+        acc.axial = axial_in_notch + beyond;
     }
     acc
 }

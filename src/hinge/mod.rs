@@ -26,7 +26,7 @@
 //!   took turned necks from +19 % to ±3 % axial and from +12 % to ±2 % bending), the short-notch
 //!   factor G and the plane-strain factor P of a wide waist on the compliant-axis bending
 //!   modulus of the notch ([`solid_effects`]). Circular notches t/R 0.06–0.5, w/t 0.5–20:
-//!   bending within 2 %, axial within 4 % of the solid models.
+//!   bending within 2 %, axial within 4.4 % of the solid models.
 //! * **Stress**: beam stress at the waist times a notch stress-concentration factor, divided by
 //!   √P for wide waists ([`stress`]).
 //!

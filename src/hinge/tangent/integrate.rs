@@ -5,7 +5,7 @@
 //! their truncation error.
 
 use super::dual::Dual;
-use super::geometry::DProfile;
+use super::geometry::{DContour, DProfile};
 use super::pieces::DMap;
 use crate::hinge::integrate::{Quadrature, PEAK};
 
@@ -167,7 +167,11 @@ pub(super) fn flex_integrals(p: &DProfile, m: &DModuli, x0: Dual, x1: Dual, q: Q
         let mut sum = Dual::c(0.0);
         each_point(&axial, lo, hi, q, &mut |x, w| {
             let size = axial.section_size(x);
-            let area = axial.section_of_size(size, m.nu).area;
+            // The area alone (a rectangle's w × size; the neck's clipped disk).
+            let area = match axial.contour {
+                DContour::SphericalNeck { .. } => axial.section_of_size(size, m.nu).area,
+                _ => axial.w * size,
+            };
             sum = sum + w / (moduli_at(&axial, m, x, size).1 * area);
         });
         acc.axial = sum;

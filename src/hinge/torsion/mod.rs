@@ -43,8 +43,8 @@ use super::section::rect_torsion_warping;
 use mesh::half_nodes;
 pub use mesh::TorsionMesh;
 pub use solid::{
-    continuous_ends, end_face_acts, end_face_stiffening, solid_torsion_pair, solid_torsion_stiffness,
-    warping_modulus_factor, TORSION_FACE_SLOPE, TORSION_SPREAD_SLOPE,
+    continuous_ends, end_face_acts, solid_torsion_pair, solid_torsion_stiffness, warping_modulus_factor,
+    TORSION_FACE_SLOPE, TORSION_SPREAD_SLOPE,
 };
 
 /// 4-point Gauss–Legendre on [0, 1].

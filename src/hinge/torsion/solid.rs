@@ -211,17 +211,6 @@ impl Law {
     }
 }
 
-/// How much stiffer in torsion the rigid end faces make a rectangular-section hinge of Poisson's
-/// ratio `nu`: T/θ with [`TORSION_FACE_SLOPE`] over T/θ without, minus 1 (0 for continuous ends,
-/// for a turned neck, or where the face term does not act). The `hinge` analysis's warnings
-/// quote it where the term is extrapolated ([`crate::hinge::calibration::calibration_warnings`]).
-pub fn end_face_stiffening(profile: &Profile, nu: f64) -> f64 {
-    if !end_face_acts(profile) {
-        return 0.0;
-    }
-    solid_torsion_stiffness(profile, 1.0, nu) / solid_torsion_stiffness(&continuous_ends(profile), 1.0, nu) - 1.0
-}
-
 /// Whether the rigid end faces' term changes the Saint-Venant torque's profile of a
 /// rectangular-section hinge at all, without a torsion solve: the face line h/2 − 0.4·d (d to
 /// the nearer face) falls toward the notch slower than the spreading's taper, so it rises above
