@@ -316,13 +316,12 @@ fn integrate(
     });
     if let Some(axial) = axial {
         // Beyond the notch, the area alone (a rectangle's w × size; the neck's clipped disk).
-        let mut memo = SectionMemo::new(&axial, m.nu);
         let mut beyond = 0.0;
         each_point(&axial, lo, hi, q, |x, wgt, in_notch| {
             if !in_notch {
                 let size = axial.section_size(x);
                 let area = match axial.contour {
-                    Contour::SphericalNeck { .. } => memo.of_size(size).area,
+                    Contour::SphericalNeck { .. } => super::section::clipped_disk_area(size, axial.h),
                     _ => axial.w * size,
                 };
                 beyond += wgt / (m.bend_axial_at(x, size).1 * area);
