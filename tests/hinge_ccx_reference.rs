@@ -439,15 +439,44 @@ fn compared_lines(file: &str) -> Vec<serde_json::Value> {
         .collect()
 }
 
-/// A pending design is not among the compared ones, and its results file exists.
+/// Every design's results file under `tools/` is either compared (one of [`DESIGNS`]) or
+/// [`PENDING`], never both, and a pending one holds lines; every line of the re-solve files
+/// (n = 3, n = 6, converged peaks) is of a compared or pending design or of the first fit's
+/// references.
 #[test]
-fn pending_designs_are_not_compared() {
+fn every_results_file_is_compared_or_pending() {
+    let compared: Vec<String> = DESIGNS
+        .iter()
+        .map(|(stem, ..)| format!("{stem}_results.jsonl"))
+        .collect();
     for p in PENDING {
-        assert!(
-            DESIGNS.iter().all(|(stem, ..)| format!("{stem}_results.jsonl") != p),
-            "{p} is compared"
-        );
+        assert!(!compared.iter().any(|c| c == p), "{p} is compared");
         assert!(!json_lines(p).is_empty(), "{p}");
+    }
+    let mut designs = 0;
+    for entry in std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/tools")).unwrap() {
+        let name = entry.unwrap().file_name().into_string().unwrap();
+        if name.starts_with("ccx_heldout") && name.ends_with("_results.jsonl") {
+            assert!(
+                compared.contains(&name) || PENDING.contains(&name.as_str()),
+                "{name}: neither compared nor pending"
+            );
+            designs += 1;
+        }
+    }
+    assert_eq!(designs, DESIGNS.len() + PENDING.len());
+    for file in ["ccx_refine_n3_results.jsonl", N6_RESULTS, PEAKS] {
+        for l in json_lines(file) {
+            let source = l["source"]
+                .as_str()
+                .unwrap_or_else(|| panic!("{file}: a line without source"));
+            assert!(
+                source == "ccx_reference_results.jsonl"
+                    || compared.iter().any(|c| c == source)
+                    || PENDING.contains(&source),
+                "{file}: a line of {source}"
+            );
+        }
     }
 }
 
