@@ -316,7 +316,7 @@ pub fn end_face_extrapolation(profile: &Profile, gain: f64) -> Option<EndFaceExt
                 ("l/t", l / t, 2.0, 10.0),
                 ("R/t", r / t, 0.5, 2.5),
                 ("w/t", w / t, 1.0, 20.0),
-                ("h/t", h / t, 0.0, 10.0),
+                ("h/t", h / t, 0.0, CORNER_H_OVER_T.1),
                 (
                     "blank_length/h",
                     profile.blank / h,
@@ -352,15 +352,10 @@ pub fn end_face_warning(profile: &Profile, k_torsion: f64, material: &crate::mat
             "it was fitted on corner-filleted CalculiX designs and is nil on every circular one".to_string()
         }
         EndFaceExtrapolation::NoDesign(family) => format!("the {family} family has no CalculiX design"),
-        EndFaceExtrapolation::Ratio { name, value, lo, .. } if value < lo => {
+        EndFaceExtrapolation::Ratio { name, value, lo, hi } => {
+            let (side, bound) = if value < lo { ("below", lo) } else { ("above", hi) };
             format!(
-                "it was fitted on CalculiX designs, and here {name} = {} is below {lo}",
-                fmt(value)
-            )
-        }
-        EndFaceExtrapolation::Ratio { name, value, hi, .. } => {
-            format!(
-                "it was fitted on CalculiX designs, and here {name} = {} is above {hi}",
+                "it was fitted on CalculiX designs, and here {name} = {} is {side} {bound}",
                 fmt(value)
             )
         }

@@ -93,8 +93,8 @@ pub struct LargeRotation {
 /// ([`crate::hinge::calibration::end_face_warning`]), prefixed `hinge: `.
 pub fn end_face_warnings(case: &HingeCase, r: &HingeOut) -> Vec<String> {
     // Most hinges' end faces change nothing (checked without a solve, nor the material).
-    let p = match case.hinge.profile() {
-        Ok(p) if crate::hinge::torsion::end_face_acts(&p.with_rigid_end_faces()) => p.with_rigid_end_faces(),
+    let p = match case.hinge.profile().map(|p| p.with_rigid_end_faces()) {
+        Ok(p) if crate::hinge::torsion::end_face_acts(&p) => p,
         _ => return Vec::new(),
     };
     let Ok(m) = case.validate() else {
