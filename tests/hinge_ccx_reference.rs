@@ -253,8 +253,21 @@
 //! −7.48 … +1.36 % over 93 models. The axial load then took its own, faster spreading into the
 //! blank (`hinge::profile::AXIAL_BLANK_SLOPE` = 0.56, the minimax over all 468 references):
 //! axial −3.98 … +4.15 % on every reference, every target met on every circular and
-//! corner-filleted reference, and the short wide regime no longer warns. A sixteenth (`tools/ccx_heldout16_doe.json`, leaves in blanks
-//! 0.3–0.5 h long and 10–14 t tall, past the end-face term's box) is [`PENDING`].
+//! corner-filleted reference, and the short wide regime no longer warns.
+//!
+//! Beyond the designs' box. A sixteenth design ([`DOE16`]: leaves in blanks 0.3–0.5 h long and
+//! 10–14 t tall, past the end-face term's box), held out from the axial law, then read every
+//! target inside the box and missed beyond it (torsion up to +21.50 %, axial −5.82 %); those
+//! hinges now get range warnings (blanks shorter than 0.5 h, corner-filleted h/t above 10) and
+//! are checked apart ([`held_out`], [`CORNER_BEYOND_TOL`]). A seventeenth ([`DOE17`]: circular
+//! notches in tall short blanks, where the end-face term first acts on circular notches, and
+//! leaves in tall short blanks, the axial law's regime), fitted on by no law, read every target
+//! on every row inside the ranges, and on its 5 circular notches beyond them too. Its first look
+//! showed that n = 3 can be far too coarse (n = 4 up to 40 % above the n = 3/4 extrapolation):
+//! every reference where n = 4 lies more than 5 % above it is now re-solved at n = 6
+//! (`tools/ccx_refine.py`). An eighteenth (`tools/ccx_heldout18_doe.json`: corner-filleted
+//! leaves in tall very short and very tall blanks, circular notches in tall very short blanks),
+//! drawn before the seventeenth was compared, is [`PENDING`] for a law beyond the box.
 //!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
@@ -325,6 +338,9 @@ use doe15::DOE15;
 #[path = "hinge_ccx_reference/doe16.rs"]
 mod doe16;
 use doe16::DOE16;
+#[path = "hinge_ccx_reference/doe17.rs"]
+mod doe17;
+use doe17::DOE17;
 
 #[path = "hinge_ccx_reference/raw.rs"]
 mod raw;
@@ -429,7 +445,7 @@ const N6_RESULTS: &str = "ccx_refine_n6_results.jsonl";
 /// `_results.jsonl` files under `tools/`. Their lines in the re-solve files (n = 3, n = 6,
 /// converged peaks) are committed as they are solved and skipped by the checks here
 /// ([`compared_lines`]) until the design gets its test module and joins [`DESIGNS`].
-const PENDING: [&str; 1] = ["ccx_heldout17_results.jsonl"];
+const PENDING: [&str; 1] = ["ccx_heldout18_results.jsonl"];
 
 /// The lines of a re-solve file under `tools/` whose reference is not of a [`PENDING`] design.
 fn compared_lines(file: &str) -> Vec<serde_json::Value> {
@@ -619,7 +635,7 @@ fn every_reference_is_a_line_of_the_raw_results() {
 /// The fresh designs of experiments: file stem under `tools/` (`_doe.json` the design,
 /// `_results.jsonl` its CalculiX results), the references, their number, how many are circular
 /// notches.
-const DESIGNS: [(&str, &[CcxRef], usize, usize); 16] = [
+const DESIGNS: [(&str, &[CcxRef], usize, usize); 17] = [
     ("ccx_heldout", DOE1, 24, 12),
     ("ccx_heldout2", DOE2, 24, 12),
     ("ccx_heldout3", DOE3, 20, 4),
@@ -636,6 +652,7 @@ const DESIGNS: [(&str, &[CcxRef], usize, usize); 16] = [
     ("ccx_heldout14", DOE14, 30, 6),
     ("ccx_heldout15", DOE15, 30, 6),
     ("ccx_heldout16", DOE16, 30, 6),
+    ("ccx_heldout17", DOE17, 30, 14),
 ];
 
 /// The fresh rows are the committed designs of experiments, in their order
@@ -676,6 +693,15 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 
 /// The targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
+/// The 9 circular notches of [`DOE17`] inside the calibrated ranges (3 of its 8 in tall short
+/// blanks, R 1.25–2.8, h/t 7.6–14, blank length 0.54–0.60 h, where the rigid end faces' torque term
+/// acts on a circular notch for the first time, and 6 by the second set's ranges), fitted on by
+/// no law and compared once with the current model: −0.64 … +1.99 / −8.22 … +4.96 /
+/// −1.61 … +3.15 / −1.43 … +4.40: every target met. Its other 5, in blanks shorter than 0.5 h,
+/// warn and are checked with [`CIRCULAR_BEYOND_TOL`]. (A first look before its references
+/// converged read bending +39.8 and +13.8 % on two of them: their n = 3 meshes were too coarse,
+/// n = 4 lying 40.0 and 14.5 % above the n = 3/4 extrapolation against 0.9 and 1.4 % above the
+/// n = 4/6 one; see [`extrapolation_checked_on_finer_meshes`].)
 /// 6 circular notches of [`DOE16`], drawn and committed before the axial load's spreading into
 /// the blank, held out from it and compared once: −0.00 … +1.79 / −6.89 … +0.32 / +0.28 … +4.71 /
 /// −1.30 … +2.09: every target met.
@@ -702,6 +728,11 @@ const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
 /// once with the frozen model: −0.62 … +1.14 / −7.55 … +1.96 / −0.24 … +3.29 / −1.47 … +2.63:
 /// every target met.
 const CIRCULAR_TOL: [f64; 4] = TARGET;
+/// The circular notches outside the calibrated ranges, which warn: [`DOE17`]'s 5 in tall blanks
+/// shorter than 0.5 h (0.32–0.48 h, h/t 11.6–19; the `hinge` analysis's short-blank warning),
+/// +0.02 … +0.77 / −7.42 … +1.25 / −1.92 … +0.42 / +0.93 … +2.96: every target met even there,
+/// on 5 models (too few to widen the range).
+const CIRCULAR_BEYOND_TOL: [f64; 4] = TARGET;
 /// The 16 circular notches of [`DOE9`] (8 by the second set's ranges, 8 narrow: w/t 0.5–1.1),
 /// drawn and committed before [`DOE8`] was compared and before a compact waist stopped carrying
 /// warping restraint, held out from those laws and compared once with the frozen model:
@@ -750,21 +781,34 @@ const CIRCULAR_TOL: [f64; 4] = TARGET;
 /// [`DOE8`]): the 18 now read −0.43 … +2.02 / −6.43 … +1.90 / −0.88 … +2.56 / −0.84 … +2.89,
 /// every target met, the narrow ones −4.81 … +1.14 % in torsion.
 const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
+/// The 16 corner-filleted hinges of [`DOE17`] (8 short wide leaves with sharp fillets in tall short
+/// blanks, 4–8 t above the fillets, blank length 0.5–1 h: the regime the axial load's spreading
+/// into the blank was fitted on; 8 by the second set's ranges), fitted on by no law and compared
+/// once with the current model: −2.05 … +0.93 / −5.04 … +6.78 / −2.34 … +2.10 / −0.51 … +0.53:
+/// **every target met on every row**, the 8 leaves in tall short blanks axial −2.34 … −0.60 %.
+/// (A first look before its references converged read bending +5.06 % on l3.55/R1.55/t1.25/w9.8/
+/// h7.75/b6.0, whose n = 3 mesh was too coarse: n = 4 lay 6.2 % above the n = 3/4 extrapolation,
+/// 1.6 % above the n = 4/6 one, so it was re-solved at n = 6 by the rule of
+/// `tools/ccx_refine.py`; against that reference it reads +0.47 %.)
+const CORNER_TOL: [f64; 4] = TARGET;
+/// The corner-filleted hinges outside the calibrated ranges, which warn: [`DOE16`]'s 16 (below).
 /// 24 corner-filleted hinges of [`DOE16`] (10 short wide leaves with sharp fillets in tall very
 /// short blanks: 4–8 t above the fillets, blank length 0.31–0.49 h; 6 in very tall blanks, h/t
 /// 10.3–13.7, blank length 0.53–0.94 h; 8 by the second set's ranges), drawn and committed before
 /// [`DOE15`] was compared and before the axial load's spreading into the blank, held out from it
-/// and compared once with the current model: −2.37 … +1.60 / −10.74 … +21.50 / −5.82 … +2.70 /
+/// and compared once with the model of that day: −2.37 … +1.60 / −10.74 … +21.50 / −5.82 … +2.70 /
 /// −0.97 … +0.92. **The axial law holds** on every row in the designs' box (the 8 second-set rows
 /// and the rest in blanks ≥ 0.5 h long with h/t ≤ 10) and bending and peak stress meet the
 /// targets on every row. **Beyond the box the model misses**: in blanks shorter than 0.5 h
 /// torsion reads +2.32 … +21.50 % (the rigid end faces' term, which the `hinge` analysis warns
-/// is extrapolated there, over-stiffens: without it they read about −9 … −3 %) and axial
+/// is extrapolated there, over-stiffens: without it they read −11.22 … −3.52 %) and axial
 /// −5.82 … −1.48 % (2 beyond 5 %); in blanks taller than 10 t torsion reads −10.74 … +19.74 %.
 /// Every such row gets the end-face warning and a range warning (blank_length/h below 0.5, or
 /// corner-filleted h/t above 10: `hinge::calibration::short_blank_warning`, `CORNER_H_OVER_T`).
-/// Pinned at 3 / 21.6 / 5.9 / 1.6 %.
-const CORNER_TOL: [f64; 4] = [3.0, 21.6, 5.9, 1.6];
+/// Pinned at 3 / 21.6 / 5.9 / 1.0 %. Its 8 rows inside the ranges read −0.91 … +1.60 /
+/// −2.81 … +6.05 / −0.03 … +2.70 / −0.97 … +0.92 and are a seen design since
+/// ([`CORNER_SEEN_TOL`]).
+const CORNER_BEYOND_TOL: [f64; 4] = [3.0, 21.6, 5.9, 1.0];
 /// The 24 corner-filleted hinges of [`DOE15`] (10 short wide leaves with sharp fillets in tall short
 /// blanks: 4–8 t above the fillets, h/t 6.4–9.8, blank length 0.52–0.96 h; 6 short wide leaves
 /// with sharp fillets and the usual blanks; 8 by the second set's ranges), drawn and committed
@@ -1008,12 +1052,18 @@ const CIRCULAR_FIT_TOL: [f64; 4] = TARGET;
 /// Now, with every law to date (the axial load's spreading into the blank included):
 /// −1.53 … +1.85 / −5.53 … +7.79 / −0.02 … +2.99 / −1.33 … +1.80.
 const CORNER_FIT_TOL: [f64; 4] = TARGET;
-/// [`extrapolation_checked_on_finer_meshes`]: the references re-solved at n = 6 (other than
-/// short or wide corner-filleted, short or wide corner-filleted), and how closely the n = 3/4
+/// [`extrapolation_checked_on_finer_meshes`]: the references re-solved at n = 6 (the others;
+/// the short or wide corner-filleted leaves; the others whose n = 3 mesh is too coarse, n = 4
+/// more than 5 % above the n = 3/4 extrapolation in bending), and how closely the n = 3/4
 /// extrapolation agrees with the n = 4/6 one (bending, torsion, axial, %). Measured: within
-/// 0.76 / 1.13 / 0.42 % on the 62 others, every one with at most 30,000 unknowns at n = 4;
-/// within 12.93 / 10.94 / 3.45 % on all 162 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
-/// leaves (the sixteenth design's leaves in very tall blanks, h/t up to 13.7, where n = 3 puts
+/// 1.11 / 1.13 / 0.50 % on the 68 others (0.76 / 1.13 / 0.42 % on the 62 with at most 30,000
+/// unknowns at n = 4 before [`DOE17`]'s 6 circular notches in tall short blanks);
+/// 27.93 / 10.19 / 1.20 % on the 3 with n = 3 too coarse ([`DOE17`]'s circular
+/// R2.15/t0.7/w12.1/h10.9 and R1.25/t0.6/w7.8/h6.3, n = 4 40.0 and 14.5 % above the n = 3/4
+/// extrapolation, 0.9 and 1.4 % above the n = 4/6 one; its corner-filleted
+/// l3.55/R1.55/t1.25/w9.8/h7.75, 6.2 and 1.6 %);
+/// within 12.93 / 10.94 / 3.45 % on all 172 short (l/t ≤ 2.75) or wide (w/l > 3) corner-filleted
+/// leaves (the same on the 162 before [`DOE17`]'s 10; the sixteenth design's leaves in very tall blanks, h/t up to 13.7, where n = 3 puts
 /// too few elements across the blank: n = 4 sits 22.0 % above the n = 3/4 extrapolation in
 /// bending on l3.0/R0.85/t1.5/w12.95/h20.6, against 3.3 % from n = 4 to n = 6; 5.40 / 4.67 /
 /// 1.93 % on the 144 before them, 5.40 / 4.67 / 1.86 % on the 127 before the fifteenth design's 17, the same on the 118 before the fourteenth design's 9; 4.19 / 4.01 / 1.86 % on the 107 before the thirteenth design's 11, whose tall short
@@ -1023,14 +1073,15 @@ const CORNER_FIT_TOL: [f64; 4] = TARGET;
 /// leaves with sharp fillets (R/t ≈ 0.5), whose n = 3 mesh is too coarse
 /// for the asymptotic rate: there the n = 3/4 extrapolation over-corrects, and the tables take
 /// the n = 4/6 one ([`converged_stiffness`]).
-const N6_ROWS: [usize; 2] = [62, 162];
-const EXTRAPOLATION_TOL: [f64; 3] = [0.8, 1.2, 0.45];
+const N6_ROWS: [usize; 3] = [68, 172, 3];
+const EXTRAPOLATION_TOL: [f64; 3] = [1.2, 1.2, 0.55];
+const COARSE_N3_EXTRAPOLATION_TOL: [f64; 3] = [28.0, 10.3, 1.3];
 const SHORT_WIDE_EXTRAPOLATION_TOL: [f64; 3] = [13.0, 11.0, 3.5];
 /// The nodal-averaged peak stress from n = 4 to n = 6 on those references, %: measured
-/// −4.13 … +13.05 (−4.13 … +12.05 before the fifteenth design's 17, −4.13 … +10.54 before the thirteenth design's, −4.13 … +10.40 before the twelfth design's, −4.13 … +9.25 before the
+/// −4.23 … +13.05 (−4.13 … +13.05 before [`DOE17`]'s 19, −4.13 … +12.05 before the fifteenth design's 17, −4.13 … +10.54 before the thirteenth design's, −4.13 … +10.40 before the twelfth design's, −4.13 … +9.25 before the
 /// eleventh design's short wide leaves, −4.13 … +7.30
 /// before the tenth's, −1.46 … +7.30 before the ninth's).
-const PEAK_N4_TO_N6: (f64, f64) = (-4.2, 13.1);
+const PEAK_N4_TO_N6: (f64, f64) = (-4.3, 13.1);
 /// The converged peaks, one line per circular and corner-filleted reference.
 const PEAKS: &str = "ccx_peak_stress_k12.jsonl";
 /// The same solved at k = 16 (the 103 smaller models, 52 corner-filleted), and how far the peak
@@ -1050,8 +1101,10 @@ const NECK_PEAK_N4_TO_N6: f64 = 2.5;
 /// With [`DOE10`]'s short wide leaves with sharp fillets (R/t 0.52–0.58) the eighth reads down to
 /// −1.41 % from the converged one, the same effect: the tolerance went from 1.1 to 1.5 %. With
 /// [`DOE11`]'s leaves in the tallest blanks it reads down to −2.10 % (l2.1/R0.65/t1.05/w15.65/
-/// h8.5; −1.41 … −1.64 % on four more): the tolerance went to 2.2 %.
-const EIGHTH_BEND_TOL: f64 = 2.2;
+/// h8.5; −1.41 … −1.64 % on four more): the tolerance went to 2.2 %. [`DOE17`]'s
+/// l2.3/R0.65/t1.15/w10.9/h8.7, a short wide leaf with sharp fillets in a tall short blank, reads
+/// −2.21 %: the tolerance went to 2.3 %.
+const EIGHTH_BEND_TOL: f64 = 2.3;
 /// Peak-stress convergence pins, % (nodal-averaged, integration point), n = 4 → 5.
 /// (family, R mm, nodal-averaged tolerance %, integration-point tolerance %, measured gap %).
 #[allow(clippy::type_complexity)]
@@ -1081,7 +1134,7 @@ fn fit_rows() -> Vec<Row> {
 /// The designs of experiments held out from the law of their day, in the order they were
 /// compared: [`DOE3`] to [`DOE7`] are checked together, the later ones each; the last is the
 /// fresh design, held out from every law and compared once with the current model.
-const HELD_OUT: [(&str, &[CcxRef]); 14] = [
+const HELD_OUT: [(&str, &[CcxRef]); 15] = [
     ("DOE3", DOE3),
     ("DOE4", DOE4),
     ("DOE5", DOE5),
@@ -1096,19 +1149,51 @@ const HELD_OUT: [(&str, &[CcxRef]); 14] = [
     ("DOE14", DOE14),
     ("DOE15", DOE15),
     ("DOE16", DOE16),
+    ("DOE17", DOE17),
 ];
 
 /// How many of [`HELD_OUT`]'s first designs are checked together (DOE3 to DOE7).
 const EARLIER: usize = 5;
 
-/// One family on the held-out designs ([`HELD_OUT`]): the fresh design (the last) against
-/// `fresh`; [`DOE3`] to [`DOE7`] together and the later ones each (each compared once with the
-/// model of its day, seen by later changes and, the corner-filleted rows, by the refits of the
-/// torsion law) against `seen`. `counts`: the family's rows per design.
-fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 14], fresh: [f64; 4], seen: [f64; 4]) {
+/// Whether a reference lies inside the calibrated ranges: no range warning
+/// (`hinge::calibration::range_warnings`) and, as the `hinge` analysis adds, no short-blank
+/// warning (`short_blank_warning`).
+fn in_range(spec: &HingeSpec) -> bool {
+    use flexfem::hinge::calibration::{range_warnings, short_blank_warning};
+    let profile = spec.profile().unwrap();
+    range_warnings(&profile).is_empty() && short_blank_warning(&profile).is_none()
+}
+
+/// One family on the held-out designs ([`HELD_OUT`]), the references inside the calibrated
+/// ranges ([`in_range`]): the fresh design (the last) against `fresh`; [`DOE3`] to [`DOE7`]
+/// together and the later ones each (each compared once with the model of its day, seen by
+/// later changes and, the corner-filleted rows, by the refits of the torsion law) against
+/// `seen`. The references outside the ranges, which warn, against `beyond` (all designs
+/// together). `counts`: the family's rows per design, and how many of them are outside the ranges.
+fn held_out(
+    name: &str,
+    f: fn(&HingeSpec) -> bool,
+    counts: ([usize; 15], usize),
+    fresh: [f64; 4],
+    seen: [f64; 4],
+    beyond: [f64; 4],
+) {
     let designs = HELD_OUT.map(|(_, d)| rows(&d.iter().collect::<Vec<_>>()));
-    let per_design = designs.each_ref().map(|r| family(r, f));
-    assert_eq!(per_design.each_ref().map(|r| r.len()), counts);
+    let all = designs.each_ref().map(|r| family(r, f));
+    assert_eq!(all.each_ref().map(|r| r.len()), counts.0);
+    let outside: Vec<&Row> = all.iter().flatten().copied().filter(|r| !in_range(&r.spec)).collect();
+    assert_eq!(outside.len(), counts.1, "{name} outside the calibrated ranges");
+    if !outside.is_empty() {
+        check(
+            &format!("{name}, outside the calibrated ranges"),
+            report(
+                &format!("{name} vs CalculiX, HELD OUT, outside the calibrated ranges (warned)"),
+                &outside,
+            ),
+            beyond,
+        );
+    }
+    let per_design = all.map(|r| r.into_iter().filter(|r| in_range(&r.spec)).collect::<Vec<_>>());
     let earlier: Vec<&Row> = per_design[..EARLIER].iter().flatten().copied().collect();
     let (first, last) = (HELD_OUT[0].0, HELD_OUT[EARLIER - 1].0);
     check(
@@ -1120,6 +1205,7 @@ fn held_out(name: &str, f: fn(&HingeSpec) -> bool, counts: [usize; 14], fresh: [
         seen,
     );
     let n = HELD_OUT.len();
+    // zip-checked: per_design is mapped from HELD_OUT (its type says 15).
     for ((design, _), rows) in HELD_OUT.iter().zip(&per_design).take(n - 1).skip(EARLIER) {
         check(
             &format!("{name}, {design}"),
@@ -1143,9 +1229,10 @@ fn circular_notches_held_out() {
     held_out(
         "circular notches",
         circular,
-        [4, 12, 12, 12, 12, 18, 16, 6, 6, 6, 6, 6, 6, 6],
+        ([4, 12, 12, 12, 12, 18, 16, 6, 6, 6, 6, 6, 6, 6, 14], 5),
         CIRCULAR_TOL,
         CIRCULAR_SEEN_TOL,
+        CIRCULAR_BEYOND_TOL,
     );
 }
 
@@ -1154,9 +1241,10 @@ fn corner_filleted_held_out() {
     held_out(
         "corner-filleted hinges",
         corner,
-        [16, 12, 12, 12, 20, 20, 16, 24, 24, 24, 24, 24, 24, 24],
+        ([16, 12, 12, 12, 20, 20, 16, 24, 24, 24, 24, 24, 24, 24, 16], 16),
         CORNER_TOL,
         CORNER_SEEN_TOL,
+        CORNER_BEYOND_TOL,
     );
 }
 
@@ -1169,7 +1257,8 @@ fn corner_filleted_held_out() {
 /// outside the regimes is within [`OUTSIDE_BIAS_TOL`] (bending, torsion, axial, %). The
 /// references outside the calibrated ranges, which get a range warning instead
 /// (`range_warnings`, and the `hinge` analysis's `short_blank_warning`), are counted: the 16 of
-/// [`DOE16`]'s leaves in tall very short or very tall blanks.
+/// [`DOE16`]'s leaves in tall very short or very tall blanks and the 5 of [`DOE17`]'s circular
+/// notches in blanks shorter than 0.5 h (checked in [`held_out`]).
 #[test]
 fn known_bias_warnings_state_the_measured_bands() {
     use flexfem::hinge::calibration::{known_bias, range_warnings, short_blank_warning, SHORT_WIDE_LEAF};
@@ -1230,7 +1319,7 @@ fn known_bias_warnings_state_the_measured_bands() {
             }
         }
     }
-    assert_eq!(range_warned, 16, "references outside the calibrated ranges");
+    assert_eq!(range_warned, 21, "references outside the calibrated ranges");
     println!("outside the known-bias regimes: worst bending / torsion / axial {outside:.2?} %");
     for q in 0..3 {
         assert!(
@@ -1340,15 +1429,18 @@ fn peak_stress_mesh_convergence() {
 /// solved at n = 3 as well as n = 4, and the stiffnesses compared are the order-2 Richardson
 /// extrapolation of the pair ([`CcxRef::converged`]). Checked here on the data alone, no flexfem
 /// number involved:
-/// * n = 4 is not converged: up to +22.01 % stiff in bending against the n = 3/4 extrapolation
-///   on the sixteenth design's very tall blanks, +5.82 % before them (the
+/// * n = 4 is not converged: up to +39.98 % stiff in bending against the n = 3/4 extrapolation
+///   on [`DOE17`]'s circular R2.15/t0.7/w12.1/h10.9 (its n = 3 mesh too coarse), +22.01 % on
+///   the sixteenth design's very tall blanks, +5.82 % before them (the
 ///   earlier claim, "within about 0.3 %", came from two hinges);
 /// * on the references re-solved at n = 6 (`tools/ccx_refine_n6_results.jsonl`: every one with
-///   at most 30,000 unknowns at n = 4, then the short or wide corner-filleted leaves) the
-///   n = 3/4 extrapolation agrees with the n = 4/6 one within [`EXTRAPOLATION_TOL`], and on the
-///   short or wide leaves within [`SHORT_WIDE_EXTRAPOLATION_TOL`] (where they differ, the n = 3
-///   mesh is the coarse one: the tables take the n = 4/6 extrapolation wherever it exists,
-///   [`converged_stiffness`]);
+///   at most 30,000 unknowns at n = 4, then the short or wide corner-filleted leaves, the
+///   seventeenth design's circular notches in tall short blanks, and every reference where n = 4
+///   lies more than 5 % above the n = 3/4 extrapolation in bending) the n = 3/4 extrapolation
+///   agrees with the n = 4/6 one within [`EXTRAPOLATION_TOL`], on the short or wide leaves
+///   within [`SHORT_WIDE_EXTRAPOLATION_TOL`], and where n = 3 is too coarse within
+///   [`COARSE_N3_EXTRAPOLATION_TOL`] (where they differ, the n = 3 mesh is the coarse one: the
+///   tables take the n = 4/6 extrapolation wherever it exists, [`converged_stiffness`]);
 /// * on the hinge that prompted it (l5.95/R1.45/t1.95/w10.15/h11.9, solved at n = 3, 4, 5, 6, 8)
 ///   the n = 3/4 extrapolation agrees with the n = 6/8 one within 0.6 % in bending (measured
 ///   85284 against 85745 N·mm/rad, −0.54 %);
@@ -1383,7 +1475,7 @@ fn extrapolation_checked_on_finer_meshes() {
     }
     println!("n = 4 above the n = 3/4 extrapolation by up to {off:.2?} % (bending, torsion, axial)");
     assert!(
-        (21.9..22.1).contains(&off[0]),
+        (39.9..40.1).contains(&off[0]),
         "bending: n = 4 off by up to {:.2} %",
         off[0]
     );
@@ -1393,11 +1485,32 @@ fn extrapolation_checked_on_finer_meshes() {
     let short_or_wide = |l: &serde_json::Value| {
         l["type"] == "corner_filleted" && (at(l, "l") / at(l, "t") <= 2.75 || at(l, "w") / at(l, "l") > 3.0)
     };
-    let (mut worst, mut peak) = ([[0.0f64; 3]; 2], (f64::INFINITY, f64::NEG_INFINITY));
-    let mut counts = [0; 2];
+    // The others whose n = 3 mesh is too coarse: n = 4 more than 5 % above the n = 3/4
+    // extrapolation in bending (re-solved at n = 6 for that reason, `tools/ccx_refine.py`).
+    let coarse_n3 = |l4: &serde_json::Value, l3: &serde_json::Value| {
+        at(l4, "k_bend") / richardson(at(l4, "k_bend"), at(l3, "k_bend"), 4.0, 3.0) > 1.05
+    };
+    // The rule holds: every such reference has its n = 6 line.
+    for l3 in n3.iter().filter(|l3| coarse_n3(n4(l3), l3)) {
+        assert!(
+            n6.iter()
+                .any(|l6| l6["source"] == l3["source"] && l6["index"] == l3["index"]),
+            "{}: {}: n = 3 too coarse and no n = 6 line",
+            l3["source"],
+            l3["index"]
+        );
+    }
+    let (mut worst, mut peak) = ([[0.0f64; 3]; 3], (f64::INFINITY, f64::NEG_INFINITY));
+    let mut counts = [0; 3];
     for l6 in &n6 {
         let (l4, l3) = (n4(l6), coarse(&l6["source"], &l6["index"]));
-        let group = usize::from(short_or_wide(l4));
+        let group = if short_or_wide(l4) {
+            1
+        } else if coarse_n3(l4, l3) {
+            2
+        } else {
+            0
+        };
         counts[group] += 1;
         for (q, name) in quantities.iter().enumerate() {
             let k34 = richardson(at(l4, name), at(l3, name), 4.0, 3.0);
@@ -1408,15 +1521,20 @@ fn extrapolation_checked_on_finer_meshes() {
         peak = (peak.0.min(moved), peak.1.max(moved));
     }
     println!(
-        "{} references at n = 6 ({} short or wide corner-filleted): n = 3/4 vs n = 4/6 extrapolation within {:.2?} % (short or wide: {:.2?} %); nodal peak n = 4 → 6 {:+.2} … {:+.2} %",
+        "{} references at n = 6 ({} short or wide corner-filleted, {} others with n = 3 too coarse): n = 3/4 vs n = 4/6 extrapolation within {:.2?} % (short or wide: {:.2?} %; n = 3 too coarse: {:.2?} %); nodal peak n = 4 → 6 {:+.2} … {:+.2} %",
         n6.len(),
         counts[1],
+        counts[2],
         worst[0],
         worst[1],
+        worst[2],
         peak.0,
         peak.1
     );
-    assert_eq!(counts, N6_ROWS, "references re-solved at n = 6 (others, short or wide)");
+    assert_eq!(
+        counts, N6_ROWS,
+        "references re-solved at n = 6 (others, short or wide, n = 3 too coarse)"
+    );
     for q in 0..3 {
         assert!(
             worst[0][q] < EXTRAPOLATION_TOL[q],
@@ -1429,6 +1547,12 @@ fn extrapolation_checked_on_finer_meshes() {
             "short or wide, {}: {:.2} %",
             quantities[q],
             worst[1][q]
+        );
+        assert!(
+            worst[2][q] < COARSE_N3_EXTRAPOLATION_TOL[q],
+            "n = 3 too coarse, {}: {:.2} %",
+            quantities[q],
+            worst[2][q]
         );
     }
     assert!(
@@ -1471,8 +1595,9 @@ fn extrapolation_checked_on_finer_meshes() {
 /// * k = 12 → 16 on the references re-solved at k = 16 ([`PEAKS_K16`]) moves the peak by less
 ///   than [`PEAK_K12_TO_K16`];
 /// * the n = 4 peaks of the full models mostly lie below the converged ones: measured
-///   −2.49 … +9.26 % (converged above n = 4 by up to 9.26 %; worst l4.5/R0.75/t1.5/w4.5, a
-///   corner-filleted FIT row), and the
+///   −3.80 … +9.26 % (converged above n = 4 by up to 9.26 %; worst l4.5/R0.75/t1.5/w4.5, a
+///   corner-filleted FIT row; below it by 3.80 % on [`DOE17`]'s l2.9/R0.85/t1.05/w17.4/h6.45,
+///   −2.49 % before it), and the
 ///   small-fillet hinge's full-model peaks at n = 6, 8, 10 (7.335, 7.382, 7.449) approach its
 ///   converged 7.495 from below;
 /// * the eighth's compliant-axis stiffness (2/θ, its rotation being half the whole hinge's
@@ -1494,7 +1619,7 @@ fn converged_peaks_checked() {
         .values()
         .map(|lines| lines.iter().filter(|l| l["type"] != "spherical_neck").count())
         .sum();
-    assert_eq!((sources.len(), k12.len(), flat_notches), (17, 498, 498));
+    assert_eq!((sources.len(), k12.len(), flat_notches), (18, 528, 528));
     let (n3, n6) = (
         compared_lines("ccx_refine_n3_results.jsonl"),
         compared_lines(N6_RESULTS),
@@ -1536,7 +1661,7 @@ fn converged_peaks_checked() {
     }
     println!("{on_flats} corner-filleted peaks on the flat, the others on the fillet arc");
     println!("n = 4 peak → converged {:+.2} … {:+.2} %; eighth's bending at least {:+.2} % from the full model's converged, at most {:+.2} % from its n = 4", moved.0, moved.1, bend.0, bend.1);
-    assert!(moved.0 > -2.6 && moved.1 < 9.5, "n = 4 → converged {moved:?}");
+    assert!(moved.0 > -3.9 && moved.1 < 9.5, "n = 4 → converged {moved:?}");
     assert!(
         bend.0 > -EIGHTH_BEND_TOL && bend.1 < EIGHTH_BEND_TOL,
         "eighth's bending {bend:?}"
