@@ -70,6 +70,7 @@ SOURCES = [
     "ccx_heldout16_results.jsonl",
     "ccx_heldout17_results.jsonl",
     "ccx_heldout18_results.jsonl",
+    "ccx_heldout19_results.jsonl",
 ]
 # The fields of a results line that are not the hinge's geometry.
 NOT_GEOMETRY = {"type", "nu", "E", "n", "hmax", "dofs", "high_order_optimize", "solver", "doe_index", "seconds"}
