@@ -267,7 +267,10 @@
 //! every reference where n = 4 lies more than 5 % above it is now re-solved at n = 6
 //! (`tools/ccx_refine.py`). An eighteenth (`tools/ccx_heldout18_doe.json`: corner-filleted
 //! leaves in tall very short and very tall blanks, circular notches in tall very short blanks),
-//! drawn before the seventeenth was compared, is [`PENDING`] for a law beyond the box.
+//! drawn before the seventeenth was compared, is [`PENDING`]: no law beyond the box was fitted on
+//! the sixteenth and seventeenth (no simple form brought the sixteenth's 16 leaves within the
+//! torsion target), so it is to be compared with the current model, and a nineteenth
+//! (`tools/ccx_heldout19_doe.json`, the same ranges) is kept for a law fitted on the three.
 //!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
@@ -694,9 +697,12 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 /// The targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
 /// The 9 circular notches of [`DOE17`] inside the calibrated ranges (3 of its 8 in tall short
-/// blanks, R 1.25–2.8, h/t 7.6–14, blank length 0.54–0.60 h, where the rigid end faces' torque term
-/// acts on a circular notch for the first time, and 6 by the second set's ranges), fitted on by
-/// no law and compared once with the current model: −0.64 … +1.99 / −8.22 … +4.96 /
+/// blanks, R 1.25–2.8, h/t 10.5–21, blank length 0.54–0.67 h, where the rigid end faces' torque
+/// term acts on a circular notch for the first time, and 6 by the second set's ranges), fitted on
+/// by no law and compared once with the current model after its references converged (a first
+/// look, before, prompted the n = 6 re-solves of its 8 circular notches in tall short blanks, as
+/// a group, and of one leaf, chosen by their convergence alone; see
+/// [`extrapolation_checked_on_finer_meshes`]): −0.64 … +1.99 / −8.22 … +4.96 /
 /// −1.61 … +3.15 / −1.43 … +4.40: every target met. Its other 5, in blanks shorter than 0.5 h,
 /// warn and are checked with [`CIRCULAR_BEYOND_TOL`]. (A first look before its references
 /// converged read bending +39.8 and +13.8 % on two of them: their n = 3 meshes were too coarse,
@@ -731,8 +737,8 @@ const CIRCULAR_TOL: [f64; 4] = TARGET;
 /// The circular notches outside the calibrated ranges, which warn: [`DOE17`]'s 5 in tall blanks
 /// shorter than 0.5 h (0.32–0.48 h, h/t 11.6–19; the `hinge` analysis's short-blank warning),
 /// +0.02 … +0.77 / −7.42 … +1.25 / −1.92 … +0.42 / +0.93 … +2.96: every target met even there,
-/// on 5 models (too few to widen the range).
-const CIRCULAR_BEYOND_TOL: [f64; 4] = TARGET;
+/// on 5 models (too few to widen the range). Pinned at 1 / 7.5 / 2 / 3 %.
+const CIRCULAR_BEYOND_TOL: [f64; 4] = [1.0, 7.5, 2.0, 3.0];
 /// The 16 circular notches of [`DOE9`] (8 by the second set's ranges, 8 narrow: w/t 0.5–1.1),
 /// drawn and committed before [`DOE8`] was compared and before a compact waist stopped carrying
 /// warping restraint, held out from those laws and compared once with the frozen model:
@@ -786,12 +792,15 @@ const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
 /// into the blank was fitted on; 8 by the second set's ranges), fitted on by no law and compared
 /// once with the current model: −2.05 … +0.93 / −5.04 … +6.78 / −2.34 … +2.10 / −0.51 … +0.53:
 /// **every target met on every row**, the 8 leaves in tall short blanks axial −2.34 … −0.60 %.
-/// (A first look before its references converged read bending +5.06 % on l3.55/R1.55/t1.25/w9.8/
+/// Compared once after its references converged: a first look before (the model unchanged since)
+/// read bending +5.06 % on l3.55/R1.55/t1.25/w9.8/
 /// h7.75/b6.0, whose n = 3 mesh was too coarse: n = 4 lay 6.2 % above the n = 3/4 extrapolation,
 /// 1.6 % above the n = 4/6 one, so it was re-solved at n = 6 by the rule of
-/// `tools/ccx_refine.py`; against that reference it reads +0.47 %.)
+/// `tools/ccx_refine.py`; against that reference it reads +0.47 %.
 const CORNER_TOL: [f64; 4] = TARGET;
-/// The corner-filleted hinges outside the calibrated ranges, which warn: [`DOE16`]'s 16 (below).
+/// The corner-filleted hinges outside the calibrated ranges, which warn: [`DOE16`]'s 16 (below),
+/// −2.37 … −0.26 / −10.74 … +21.50 / −5.82 … −1.48 / +0.03 … +0.63: pinned at 3 / 21.6 / 5.9 /
+/// 0.7 %.
 /// 24 corner-filleted hinges of [`DOE16`] (10 short wide leaves with sharp fillets in tall very
 /// short blanks: 4–8 t above the fillets, blank length 0.31–0.49 h; 6 in very tall blanks, h/t
 /// 10.3–13.7, blank length 0.53–0.94 h; 8 by the second set's ranges), drawn and committed before
@@ -805,10 +814,10 @@ const CORNER_TOL: [f64; 4] = TARGET;
 /// −5.82 … −1.48 % (2 beyond 5 %); in blanks taller than 10 t torsion reads −10.74 … +19.74 %.
 /// Every such row gets the end-face warning and a range warning (blank_length/h below 0.5, or
 /// corner-filleted h/t above 10: `hinge::calibration::short_blank_warning`, `CORNER_H_OVER_T`).
-/// Pinned at 3 / 21.6 / 5.9 / 1.0 %. Its 8 rows inside the ranges read −0.91 … +1.60 /
+/// Its 8 rows inside the ranges read −0.91 … +1.60 /
 /// −2.81 … +6.05 / −0.03 … +2.70 / −0.97 … +0.92 and are a seen design since
 /// ([`CORNER_SEEN_TOL`]).
-const CORNER_BEYOND_TOL: [f64; 4] = [3.0, 21.6, 5.9, 1.0];
+const CORNER_BEYOND_TOL: [f64; 4] = [3.0, 21.6, 5.9, 0.7];
 /// The 24 corner-filleted hinges of [`DOE15`] (10 short wide leaves with sharp fillets in tall short
 /// blanks: 4–8 t above the fillets, h/t 6.4–9.8, blank length 0.52–0.96 h; 6 short wide leaves
 /// with sharp fillets and the usual blanks; 8 by the second set's ranges), drawn and committed
@@ -1169,11 +1178,12 @@ fn in_range(spec: &HingeSpec) -> bool {
 /// together and the later ones each (each compared once with the model of its day, seen by
 /// later changes and, the corner-filleted rows, by the refits of the torsion law) against
 /// `seen`. The references outside the ranges, which warn, against `beyond` (all designs
-/// together). `counts`: the family's rows per design, and how many of them are outside the ranges.
+/// together). `counts`: the family's rows per design, and how many of them are outside the
+/// ranges per design.
 fn held_out(
     name: &str,
     f: fn(&HingeSpec) -> bool,
-    counts: ([usize; 15], usize),
+    counts: ([usize; 15], [usize; 15]),
     fresh: [f64; 4],
     seen: [f64; 4],
     beyond: [f64; 4],
@@ -1181,8 +1191,12 @@ fn held_out(
     let designs = HELD_OUT.map(|(_, d)| rows(&d.iter().collect::<Vec<_>>()));
     let all = designs.each_ref().map(|r| family(r, f));
     assert_eq!(all.each_ref().map(|r| r.len()), counts.0);
+    let outside_per_design = all.each_ref().map(|r| r.iter().filter(|r| !in_range(&r.spec)).count());
+    assert_eq!(
+        outside_per_design, counts.1,
+        "{name} outside the calibrated ranges, per design"
+    );
     let outside: Vec<&Row> = all.iter().flatten().copied().filter(|r| !in_range(&r.spec)).collect();
-    assert_eq!(outside.len(), counts.1, "{name} outside the calibrated ranges");
     if !outside.is_empty() {
         check(
             &format!("{name}, outside the calibrated ranges"),
@@ -1229,7 +1243,10 @@ fn circular_notches_held_out() {
     held_out(
         "circular notches",
         circular,
-        ([4, 12, 12, 12, 12, 18, 16, 6, 6, 6, 6, 6, 6, 6, 14], 5),
+        (
+            [4, 12, 12, 12, 12, 18, 16, 6, 6, 6, 6, 6, 6, 6, 14],
+            [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5],
+        ),
         CIRCULAR_TOL,
         CIRCULAR_SEEN_TOL,
         CIRCULAR_BEYOND_TOL,
@@ -1241,7 +1258,10 @@ fn corner_filleted_held_out() {
     held_out(
         "corner-filleted hinges",
         corner,
-        ([16, 12, 12, 12, 20, 20, 16, 24, 24, 24, 24, 24, 24, 24, 16], 16),
+        (
+            [16, 12, 12, 12, 20, 20, 16, 24, 24, 24, 24, 24, 24, 24, 16],
+            [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 16, 0],
+        ),
         CORNER_TOL,
         CORNER_SEEN_TOL,
         CORNER_BEYOND_TOL,
@@ -1271,8 +1291,8 @@ fn known_bias_warnings_state_the_measured_bands() {
     let biases = [SHORT_WIDE_LEAF];
     // The errors of the rows in each regime, in the order of `biases`.
     let mut seen: [Vec<[f64; 4]>; 1] = Default::default();
-    let mut outside = [0.0f64; 3];
-    let mut range_warned = 0;
+    let mut outside = [0.0f64; 4];
+    let (mut range_warned, mut others) = (0, 0);
     for row in all.iter().filter(|r| !neck(&r.spec)) {
         let profile = row.spec.profile().unwrap();
         if !range_warnings(&profile).is_empty() || short_blank_warning(&profile).is_some() {
@@ -1282,7 +1302,8 @@ fn known_bias_warnings_state_the_measured_bands() {
         match known_bias(&profile) {
             Some(b) => seen[biases.iter().position(|x| x.regime == b.regime).unwrap()].push(row.err),
             None => {
-                // zip-checked: the first three errors (bending, torsion, axial), not peak stress.
+                others += 1;
+                // zip-checked: both hold the four quantities (their types say 4).
                 for (worst, e) in outside.iter_mut().zip(row.err) {
                     *worst = worst.max(e.abs());
                 }
@@ -1320,8 +1341,9 @@ fn known_bias_warnings_state_the_measured_bands() {
         }
     }
     assert_eq!(range_warned, 21, "references outside the calibrated ranges");
-    println!("outside the known-bias regimes: worst bending / torsion / axial {outside:.2?} %");
-    for q in 0..3 {
+    assert_eq!(others, 406, "references inside the ranges and outside the regimes");
+    println!("outside the known-bias regimes: worst bending / torsion / axial / peak {outside:.2?} %");
+    for q in 0..4 {
         assert!(
             outside[q] < OUTSIDE_BIAS_TOL[q],
             "outside the regimes: {:.2} %",
@@ -1330,8 +1352,11 @@ fn known_bias_warnings_state_the_measured_bands() {
     }
 }
 
-/// Every CalculiX reference outside the known-bias regimes (bending, torsion, axial, %):
-/// measured 2.97 / 9.67 / 4.15 since the axial load's spreading into the blank (2.97 / 9.67 /
+/// Every CalculiX reference inside the calibrated ranges and outside the known-bias regimes
+/// (bending, torsion, axial, peak stress, %; 406 references): measured 2.97 / 9.67 / 4.71 / 4.40
+/// (4.71 % axial on [`DOE16`]'s circular R4.2/t0.4/w5.9, 4.40 % peak on [`DOE17`]'s circular
+/// R1.4/t0.4/w2.2/h8.4; 2.97 / 9.67 / 4.15 on the 468 the axial law was fitted on)
+/// since the axial load's spreading into the blank (2.97 / 9.67 /
 /// 5.00 before it, the fifteenth design's l4.7/R1.0/t1.95/w17.9/h17.05/b9.45, w/l 3.8, reading
 /// −4.999 % axially, now −2.08 %; 2.97 / 9.32 / 3.95 before the fifteenth design; torsion 9.09
 /// before the fourteenth design) against the bending
@@ -1343,7 +1368,7 @@ fn known_bias_warnings_state_the_measured_bands() {
 /// sharp fillets in a tall blank just short of the regime's width (w/l 3.7); the slope refitted
 /// on ten designs (1.11) takes it to −8.68 %. (The regime's bounds were set on the earlier
 /// designs and were not moved to take it in.)
-const OUTSIDE_BIAS_TOL: [f64; 3] = [3.0, 10.0, 5.0];
+const OUTSIDE_BIAS_TOL: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
 
 /// The turned necks (the Ruiz et al. neck and three others; the neck's model is the earlier
 /// scikit-fem calibration, not refitted here).
@@ -1485,10 +1510,10 @@ fn extrapolation_checked_on_finer_meshes() {
     let short_or_wide = |l: &serde_json::Value| {
         l["type"] == "corner_filleted" && (at(l, "l") / at(l, "t") <= 2.75 || at(l, "w") / at(l, "l") > 3.0)
     };
-    // The others whose n = 3 mesh is too coarse: n = 4 more than 5 % above the n = 3/4
+    // The others whose n = 3 mesh is too coarse: n = 4 more than 5 % from the n = 3/4
     // extrapolation in bending (re-solved at n = 6 for that reason, `tools/ccx_refine.py`).
     let coarse_n3 = |l4: &serde_json::Value, l3: &serde_json::Value| {
-        at(l4, "k_bend") / richardson(at(l4, "k_bend"), at(l3, "k_bend"), 4.0, 3.0) > 1.05
+        (at(l4, "k_bend") / richardson(at(l4, "k_bend"), at(l3, "k_bend"), 4.0, 3.0) - 1.0).abs() > 0.05
     };
     // The rule holds: every such reference has its n = 6 line.
     for l3 in n3.iter().filter(|l3| coarse_n3(n4(l3), l3)) {
@@ -1662,10 +1687,7 @@ fn converged_peaks_checked() {
     println!("{on_flats} corner-filleted peaks on the flat, the others on the fillet arc");
     println!("n = 4 peak → converged {:+.2} … {:+.2} %; eighth's bending at least {:+.2} % from the full model's converged, at most {:+.2} % from its n = 4", moved.0, moved.1, bend.0, bend.1);
     assert!(moved.0 > -3.9 && moved.1 < 9.5, "n = 4 → converged {moved:?}");
-    assert!(
-        bend.0 > -EIGHTH_BEND_TOL && bend.1 < EIGHTH_BEND_TOL,
-        "eighth's bending {bend:?}"
-    );
+    assert!(bend.0 > -EIGHTH_BEND_TOL && bend.1 < 0.0, "eighth's bending {bend:?}");
     // Refinement k = 12 → 16.
     let k16 = json_lines(PEAKS_K16);
     let mut worst: f64 = 0.0;
