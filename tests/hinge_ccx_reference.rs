@@ -264,13 +264,21 @@
 //! leaves in tall short blanks, the axial law's regime), fitted on by no law, read every target
 //! on every row inside the ranges, and on its 5 circular notches beyond them too. Its first look
 //! showed that n = 3 can be far too coarse (n = 4 up to 40 % above the n = 3/4 extrapolation):
-//! every reference where n = 4 lies more than 5 % above it is now re-solved at n = 6
-//! (`tools/ccx_refine.py`). An eighteenth (`tools/ccx_heldout18_doe.json`: corner-filleted
-//! leaves in tall very short and very tall blanks, circular notches in tall very short blanks),
-//! drawn before the seventeenth was compared, is [`PENDING`]: no law beyond the box was fitted on
-//! the sixteenth and seventeenth (no simple form brought the sixteenth's 16 leaves within the
-//! torsion target), so it is to be compared with the current model, and a nineteenth
-//! (`tools/ccx_heldout19_doe.json`, the same ranges) is kept for a law fitted on the three.
+//! every reference where n = 4 lies more than 5 % from it is now re-solved at n = 6
+//! (`tools/ccx_refine.py`). An eighteenth ([`DOE18`]: corner-filleted leaves with the usual
+//! fillets in tall very short and very tall blanks, circular notches in tall very short
+//! blanks), drawn before the seventeenth was compared and fitted on by no law (none beyond the
+//! ranges was fitted: no simple form brought the sixteenth's 16 leaves within the torsion
+//! target), was compared once with the current model: every target met inside the ranges; its
+//! 6 circular notches beyond them within every target too, and its 14 leaves beyond them too
+//! but one, a leaf with sharp fillets in a very tall blank (+17.78 % torsion): the misses beyond
+//! the ranges are leaves with sharp fillets. One of its circular notches showed that n = 4 can
+//! be pre-asymptotic too (n = 4 → 6 −31 %, 6 → 8 −0.21 %): where n = 4 → 6 exceeds 5 % the
+//! reference is re-solved at n = 8 and takes the n = 6/8 extrapolation ([`N8_RESULTS`]; the
+//! re-solve followed a first reading of +33.3 % bending on that notch against the n = 4/6
+//! extrapolation, and the rule, by convergence alone, picks that reference only). A
+//! nineteenth (`tools/ccx_heldout19_doe.json`, the eighteenth's ranges) is [`PENDING`] for a law
+//! beyond the ranges, fitted on the sixteenth to eighteenth.
 //!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
@@ -344,6 +352,9 @@ use doe16::DOE16;
 #[path = "hinge_ccx_reference/doe17.rs"]
 mod doe17;
 use doe17::DOE17;
+#[path = "hinge_ccx_reference/doe18.rs"]
+mod doe18;
+use doe18::DOE18;
 
 #[path = "hinge_ccx_reference/raw.rs"]
 mod raw;
@@ -394,20 +405,27 @@ fn rows(refs: &[&CcxRef]) -> Vec<Row> {
 }
 
 /// The converged stiffnesses (bending, torsion, axial) of a reference: the order-2 Richardson
-/// extrapolation of n = 4 and n = 6 where the reference was re-solved at n = 6
+/// extrapolation of n = 6 and n = 8 where the reference was re-solved at n = 8
+/// ([`N8_RESULTS`]), of n = 4 and n = 6 where it was re-solved at n = 6
 /// ([`N6_RESULTS`]), of n = 3 and n = 4 otherwise ([`CcxRef::converged`]). The finer pair is
 /// the better one where it exists: on short corner-filleted leaves with small fillets the n = 3
 /// mesh is too coarse for the asymptotic rate and the n = 3/4 extrapolation over-corrects (see
 /// [`extrapolation_checked_on_finer_meshes`]).
 fn converged_stiffness(r: &CcxRef) -> [f64; 3] {
-    static LINES: std::sync::OnceLock<Vec<serde_json::Value>> = std::sync::OnceLock::new();
-    let lines = LINES.get_or_init(|| json_lines(N6_RESULTS));
-    let hits = matching_lines(lines, r.hinge, r.e, r.nu, &[], |_| true);
-    assert!(hits.len() <= 1, "{}: {} n = 6 lines", r.hinge, hits.len());
-    let mut k = r.converged(
+    static LINES: std::sync::OnceLock<[Vec<serde_json::Value>; 2]> = std::sync::OnceLock::new();
+    let [n6, n8] = LINES.get_or_init(|| [json_lines(N6_RESULTS), json_lines(N8_RESULTS)]);
+    let stiffnesses = |lines: &[serde_json::Value], n: u32| {
+        let hits = matching_lines(lines, r.hinge, r.e, r.nu, &[], |_| true);
+        assert!(hits.len() <= 1, "{}: {} n = {n} lines", r.hinge, hits.len());
         hits.first()
-            .map(|&i| ["k_bend", "k_torsion", "k_axial"].map(|q| lines[i][q].as_f64().unwrap())),
-    );
+            .map(|&i| ["k_bend", "k_torsion", "k_axial"].map(|q| lines[i][q].as_f64().unwrap()))
+    };
+    let k6 = stiffnesses(n6, 6);
+    let mut k = match (k6, stiffnesses(n8, 8)) {
+        (Some(k6), Some(k8)) => std::array::from_fn(|q| richardson(k8[q], k6[q], 8.0, 6.0)),
+        (None, Some(_)) => panic!("{}: an n = 8 line without an n = 6 one", r.hinge),
+        _ => r.converged(k6),
+    };
     if let Some(eighth) = eighth_bending(r) {
         k[0] = k[0].min(eighth);
     }
@@ -443,12 +461,16 @@ fn eighths(r: &CcxRef) -> Vec<&'static serde_json::Value> {
 
 /// The references re-solved at n = 6 (`tools/ccx_refine.py --n 6`).
 const N6_RESULTS: &str = "ccx_refine_n6_results.jsonl";
+/// The references re-solved at n = 8 as well (`tools/ccx_refine.py --n 8`): those where n = 4
+/// and n = 6 differ by more than 5 % in bending, so that n = 4 is not yet in the asymptotic
+/// range and the n = 4/6 extrapolation cannot be trusted; the tables take the n = 6/8 one.
+const N8_RESULTS: &str = "ccx_refine_n8_results.jsonl";
 
 /// Designs solved but not yet compared with flexfem (held out for the next law): their
 /// `_results.jsonl` files under `tools/`. Their lines in the re-solve files (n = 3, n = 6,
 /// converged peaks) are committed as they are solved and skipped by the checks here
 /// ([`compared_lines`]) until the design gets its test module and joins [`DESIGNS`].
-const PENDING: [&str; 1] = ["ccx_heldout18_results.jsonl"];
+const PENDING: [&str; 1] = ["ccx_heldout19_results.jsonl"];
 
 /// The lines of a re-solve file under `tools/` whose reference is not of a [`PENDING`] design.
 fn compared_lines(file: &str) -> Vec<serde_json::Value> {
@@ -484,7 +506,7 @@ fn every_results_file_is_compared_or_pending() {
         }
     }
     assert_eq!(designs, DESIGNS.len() + PENDING.len());
-    for file in ["ccx_refine_n3_results.jsonl", N6_RESULTS, PEAKS] {
+    for file in ["ccx_refine_n3_results.jsonl", N6_RESULTS, N8_RESULTS, PEAKS] {
         for l in json_lines(file) {
             let source = l["source"]
                 .as_str()
@@ -638,7 +660,7 @@ fn every_reference_is_a_line_of_the_raw_results() {
 /// The fresh designs of experiments: file stem under `tools/` (`_doe.json` the design,
 /// `_results.jsonl` its CalculiX results), the references, their number, how many are circular
 /// notches.
-const DESIGNS: [(&str, &[CcxRef], usize, usize); 17] = [
+const DESIGNS: [(&str, &[CcxRef], usize, usize); 18] = [
     ("ccx_heldout", DOE1, 24, 12),
     ("ccx_heldout2", DOE2, 24, 12),
     ("ccx_heldout3", DOE3, 20, 4),
@@ -656,6 +678,7 @@ const DESIGNS: [(&str, &[CcxRef], usize, usize); 17] = [
     ("ccx_heldout15", DOE15, 30, 6),
     ("ccx_heldout16", DOE16, 30, 6),
     ("ccx_heldout17", DOE17, 30, 14),
+    ("ccx_heldout18", DOE18, 32, 12),
 ];
 
 /// The fresh rows are the committed designs of experiments, in their order
@@ -696,6 +719,10 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 
 /// The targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
+/// The 6 circular notches of [`DOE18`] by the second set's ranges (its other 6, in tall very short
+/// blanks, lie beyond the ranges: [`CIRCULAR_BEYOND_TOL`]), fitted on by no law and compared once
+/// with the current model: −0.07 … +2.00 / −5.88 … +7.47 / +0.67 … +2.44 / −0.24 … +3.46: every
+/// target met.
 /// The 9 circular notches of [`DOE17`] inside the calibrated ranges (3 of its 8 in tall short
 /// blanks, R 1.25–2.8, h/t 10.5–21, blank length 0.54–0.67 h, where the rigid end faces' torque
 /// term acts on a circular notch for the first time, and 6 by the second set's ranges), fitted on
@@ -736,9 +763,13 @@ const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
 const CIRCULAR_TOL: [f64; 4] = TARGET;
 /// The circular notches outside the calibrated ranges, which warn: [`DOE17`]'s 5 in tall blanks
 /// shorter than 0.5 h (0.32–0.48 h, h/t 11.6–19; the `hinge` analysis's short-blank warning),
-/// +0.02 … +0.77 / −7.42 … +1.25 / −1.92 … +0.42 / +0.93 … +2.96: every target met even there,
-/// on 5 models (too few to widen the range). Pinned at 1 / 7.5 / 2 / 3 %.
-const CIRCULAR_BEYOND_TOL: [f64; 4] = [1.0, 7.5, 2.0, 3.0];
+/// +0.02 … +0.77 / −7.42 … +1.25 / −1.92 … +0.42 / +0.93 … +2.96, and [`DOE18`]'s 6 (0.31–0.48 h,
+/// h/t 10.7–20.6), −0.48 … +0.68 / −6.83 … +5.60 / −2.57 … +0.85 / +0.90 … +2.80: every target met
+/// on all 11 (−0.48 … +0.77 / −7.42 … +5.60 / −2.57 … +0.85 / +0.90 … +2.96). Pinned at 1 / 7.5 /
+/// 2.6 / 3 %. ([`DOE18`]'s R1.1/t0.35/w5.8/h7.2 read +33.3 % bending and +17.1 % torsion against
+/// the n = 4/6 extrapolation, its n = 4 mesh not yet asymptotic; against n = 6/8 +0.65 and
+/// +5.60 %: see [`PRE_ASYMPTOTIC_N6_TO_N8`].)
+const CIRCULAR_BEYOND_TOL: [f64; 4] = [1.0, 7.5, 2.6, 3.0];
 /// The 16 circular notches of [`DOE9`] (8 by the second set's ranges, 8 narrow: w/t 0.5–1.1),
 /// drawn and committed before [`DOE8`] was compared and before a compact waist stopped carrying
 /// warping restraint, held out from those laws and compared once with the frozen model:
@@ -787,20 +818,21 @@ const CIRCULAR_BEYOND_TOL: [f64; 4] = [1.0, 7.5, 2.0, 3.0];
 /// [`DOE8`]): the 18 now read −0.43 … +2.02 / −6.43 … +1.90 / −0.88 … +2.56 / −0.84 … +2.89,
 /// every target met, the narrow ones −4.81 … +1.14 % in torsion.
 const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
-/// The 16 corner-filleted hinges of [`DOE17`] (8 short wide leaves with sharp fillets in tall short
-/// blanks, 4–8 t above the fillets, blank length 0.5–1 h: the regime the axial load's spreading
-/// into the blank was fitted on; 8 by the second set's ranges), fitted on by no law and compared
-/// once with the current model: −2.05 … +0.93 / −5.04 … +6.78 / −2.34 … +2.10 / −0.51 … +0.53:
-/// **every target met on every row**, the 8 leaves in tall short blanks axial −2.34 … −0.60 %.
-/// Compared once after its references converged: a first look before (the model unchanged since)
-/// read bending +5.06 % on l3.55/R1.55/t1.25/w9.8/
-/// h7.75/b6.0, whose n = 3 mesh was too coarse: n = 4 lay 6.2 % above the n = 3/4 extrapolation,
-/// 1.6 % above the n = 4/6 one, so it was re-solved at n = 6 by the rule of
-/// `tools/ccx_refine.py`; against that reference it reads +0.47 %.
+/// The 20 corner-filleted hinges of [`DOE18`] (8 leaves by the second set's fillet and flat
+/// ranges in tall very short blanks, 0.31–0.48 h, and 6 in very tall blanks, h/t 10.7–15.9: all
+/// 14 beyond the calibrated ranges, checked with [`CORNER_BEYOND_TOL`]; 6 by the second set's
+/// ranges), fitted on by no law and compared once with the current model: the 6 inside the
+/// ranges −0.41 … +1.41 / −2.28 … +3.92 / +0.43 … +2.36 / −1.51 … +1.74, every target met.
 const CORNER_TOL: [f64; 4] = TARGET;
-/// The corner-filleted hinges outside the calibrated ranges, which warn: [`DOE16`]'s 16 (below),
-/// −2.37 … −0.26 / −10.74 … +21.50 / −5.82 … −1.48 / +0.03 … +0.63: pinned at 3 / 21.6 / 5.9 /
-/// 0.7 %.
+/// The corner-filleted hinges outside the calibrated ranges, which warn: [`DOE16`]'s 16 (below)
+/// and [`DOE18`]'s 14, together −2.37 … +0.83 / −10.74 … +21.50 / −5.82 … +0.05 / −1.08 … +1.49:
+/// pinned at 3 / 21.6 / 5.9 / 1.5 %. [`DOE18`]'s 14, with the second set's fillets (R/t
+/// 0.56–2.25) where [`DOE16`]'s had sharp ones (R/t ≈ 0.5–0.76), read far closer: in blanks
+/// 0.31–0.48 h long −1.60 … +0.83 / +1.39 … +8.80 / −4.53 … +0.05 / −1.08 … +1.17, every target
+/// met; in blanks 10.7–15.9 t tall −2.27 … +0.23 / −3.20 … +17.78 / −3.58 … −0.86 /
+/// −1.06 … +1.49, torsion missing 10 % on one leaf with sharp fillets
+/// (l5.35/R0.75/t1.35/w10.35/h16.55/b8.75, R/t 0.56, h/t 12.3: +17.78 %). The misses beyond the
+/// ranges are leaves with sharp fillets.
 /// 24 corner-filleted hinges of [`DOE16`] (10 short wide leaves with sharp fillets in tall very
 /// short blanks: 4–8 t above the fillets, blank length 0.31–0.49 h; 6 in very tall blanks, h/t
 /// 10.3–13.7, blank length 0.53–0.94 h; 8 by the second set's ranges), drawn and committed before
@@ -814,10 +846,19 @@ const CORNER_TOL: [f64; 4] = TARGET;
 /// −5.82 … −1.48 % (2 beyond 5 %); in blanks taller than 10 t torsion reads −10.74 … +19.74 %.
 /// Every such row gets the end-face warning and a range warning (blank_length/h below 0.5, or
 /// corner-filleted h/t above 10: `hinge::calibration::short_blank_warning`, `CORNER_H_OVER_T`).
-/// Its 8 rows inside the ranges read −0.91 … +1.60 /
-/// −2.81 … +6.05 / −0.03 … +2.70 / −0.97 … +0.92 and are a seen design since
-/// ([`CORNER_SEEN_TOL`]).
-const CORNER_BEYOND_TOL: [f64; 4] = [3.0, 21.6, 5.9, 0.7];
+/// Its 8 rows inside the ranges read −0.91 … +1.60 / −2.81 … +6.05 / −0.03 … +2.70 /
+/// −0.97 … +0.92 and are a seen design since ([`CORNER_SEEN_TOL`]).
+const CORNER_BEYOND_TOL: [f64; 4] = [3.0, 21.6, 5.9, 1.5];
+/// The 16 corner-filleted hinges of [`DOE17`] (8 short wide leaves with sharp fillets in tall short
+/// blanks, 4–8 t above the fillets, blank length 0.5–1 h: the regime the axial load's spreading
+/// into the blank was fitted on; 8 by the second set's ranges), fitted on by no law and compared
+/// once with the current model: −2.05 … +0.93 / −5.04 … +6.78 / −2.34 … +2.10 / −0.51 … +0.53:
+/// **every target met on every row**, the 8 leaves in tall short blanks axial −2.34 … −0.60 %.
+/// Compared once after its references converged: a first look before (the model unchanged
+/// since) read bending +5.06 % on l3.55/R1.55/t1.25/w9.8/h7.75/b6.0, whose n = 3 mesh was too
+/// coarse: n = 4 lay 6.2 % above the n = 3/4 extrapolation, 1.6 % above the n = 4/6 one, so it
+/// was re-solved at n = 6 by the rule of `tools/ccx_refine.py`; against that reference it reads
+/// +0.47 %. A seen design since [`DOE18`]'s comparison.
 /// The 24 corner-filleted hinges of [`DOE15`] (10 short wide leaves with sharp fillets in tall short
 /// blanks: 4–8 t above the fillets, h/t 6.4–9.8, blank length 0.52–0.96 h; 6 short wide leaves
 /// with sharp fillets and the usual blanks; 8 by the second set's ranges), drawn and committed
@@ -1082,15 +1123,25 @@ const CORNER_FIT_TOL: [f64; 4] = TARGET;
 /// leaves with sharp fillets (R/t ≈ 0.5), whose n = 3 mesh is too coarse
 /// for the asymptotic rate: there the n = 3/4 extrapolation over-corrects, and the tables take
 /// the n = 4/6 one ([`converged_stiffness`]).
-const N6_ROWS: [usize; 3] = [68, 172, 3];
+const N6_ROWS: [usize; 4] = [68, 177, 4, 1];
+/// The references whose n = 4 is not yet asymptotic (n = 4 → 6 beyond 5 % in bending),
+/// re-solved at n = 8 ([`N8_RESULTS`]), and how far n = 6 → 8 moves their bending, % (measured:
+/// [`DOE18`]'s circular R1.1/t0.35/w5.8/h7.2/b3.45, bending 3268, 2733, 2085, 2081 N·mm/rad at
+/// n = 3, 4, 6, 8: −31.1 % from n = 4 to 6, −0.21 % from 6 to 8; its root-refined eighth reads
+/// 2080; against the n = 4/6 extrapolation, 1567, flexfem read +33.3 %, against the n = 6/8
+/// one, 2076, it reads +0.65 %).
+const PRE_ASYMPTOTIC_ROWS: usize = 1;
+const PRE_ASYMPTOTIC_N6_TO_N8: f64 = 0.3;
 const EXTRAPOLATION_TOL: [f64; 3] = [1.2, 1.2, 0.55];
 const COARSE_N3_EXTRAPOLATION_TOL: [f64; 3] = [28.0, 10.3, 1.3];
 const SHORT_WIDE_EXTRAPOLATION_TOL: [f64; 3] = [13.0, 11.0, 3.5];
 /// The nodal-averaged peak stress from n = 4 to n = 6 on those references, %: measured
-/// −4.23 … +13.05 (−4.13 … +13.05 before [`DOE17`]'s 19, −4.13 … +12.05 before the fifteenth design's 17, −4.13 … +10.54 before the thirteenth design's, −4.13 … +10.40 before the twelfth design's, −4.13 … +9.25 before the
+/// −7.15 … +24.25 ([`DOE18`]'s leaf in a very tall blank l4.45/R2.0/t1.2/w19.8/h19.1 and its
+/// circular R1.1/t0.35/w5.8/h7.2, whose n = 4 mesh is not yet asymptotic; −4.23 … +13.05 before
+/// [`DOE18`]'s 7, −4.13 … +13.05 before [`DOE17`]'s 19, −4.13 … +12.05 before the fifteenth design's 17, −4.13 … +10.54 before the thirteenth design's, −4.13 … +10.40 before the twelfth design's, −4.13 … +9.25 before the
 /// eleventh design's short wide leaves, −4.13 … +7.30
 /// before the tenth's, −1.46 … +7.30 before the ninth's).
-const PEAK_N4_TO_N6: (f64, f64) = (-4.3, 13.1);
+const PEAK_N4_TO_N6: (f64, f64) = (-7.2, 24.3);
 /// The converged peaks, one line per circular and corner-filleted reference.
 const PEAKS: &str = "ccx_peak_stress_k12.jsonl";
 /// The same solved at k = 16 (the 103 smaller models, 52 corner-filleted), and how far the peak
@@ -1143,7 +1194,7 @@ fn fit_rows() -> Vec<Row> {
 /// The designs of experiments held out from the law of their day, in the order they were
 /// compared: [`DOE3`] to [`DOE7`] are checked together, the later ones each; the last is the
 /// fresh design, held out from every law and compared once with the current model.
-const HELD_OUT: [(&str, &[CcxRef]); 15] = [
+const HELD_OUT: [(&str, &[CcxRef]); 16] = [
     ("DOE3", DOE3),
     ("DOE4", DOE4),
     ("DOE5", DOE5),
@@ -1159,6 +1210,7 @@ const HELD_OUT: [(&str, &[CcxRef]); 15] = [
     ("DOE15", DOE15),
     ("DOE16", DOE16),
     ("DOE17", DOE17),
+    ("DOE18", DOE18),
 ];
 
 /// How many of [`HELD_OUT`]'s first designs are checked together (DOE3 to DOE7).
@@ -1183,7 +1235,7 @@ fn in_range(spec: &HingeSpec) -> bool {
 fn held_out(
     name: &str,
     f: fn(&HingeSpec) -> bool,
-    counts: ([usize; 15], [usize; 15]),
+    counts: ([usize; 16], [usize; 16]),
     fresh: [f64; 4],
     seen: [f64; 4],
     beyond: [f64; 4],
@@ -1219,7 +1271,7 @@ fn held_out(
         seen,
     );
     let n = HELD_OUT.len();
-    // zip-checked: per_design is mapped from HELD_OUT (its type says 15).
+    // zip-checked: per_design is mapped from HELD_OUT (its type says 16).
     for ((design, _), rows) in HELD_OUT.iter().zip(&per_design).take(n - 1).skip(EARLIER) {
         check(
             &format!("{name}, {design}"),
@@ -1244,8 +1296,8 @@ fn circular_notches_held_out() {
         "circular notches",
         circular,
         (
-            [4, 12, 12, 12, 12, 18, 16, 6, 6, 6, 6, 6, 6, 6, 14],
-            [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5],
+            [4, 12, 12, 12, 12, 18, 16, 6, 6, 6, 6, 6, 6, 6, 14, 12],
+            [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5, 6],
         ),
         CIRCULAR_TOL,
         CIRCULAR_SEEN_TOL,
@@ -1259,8 +1311,8 @@ fn corner_filleted_held_out() {
         "corner-filleted hinges",
         corner,
         (
-            [16, 12, 12, 12, 20, 20, 16, 24, 24, 24, 24, 24, 24, 24, 16],
-            [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 16, 0],
+            [16, 12, 12, 12, 20, 20, 16, 24, 24, 24, 24, 24, 24, 24, 16, 20],
+            [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 16, 0, 14],
         ),
         CORNER_TOL,
         CORNER_SEEN_TOL,
@@ -1340,8 +1392,8 @@ fn known_bias_warnings_state_the_measured_bands() {
             }
         }
     }
-    assert_eq!(range_warned, 21, "references outside the calibrated ranges");
-    assert_eq!(others, 406, "references inside the ranges and outside the regimes");
+    assert_eq!(range_warned, 41, "references outside the calibrated ranges");
+    assert_eq!(others, 418, "references inside the ranges and outside the regimes");
     println!("outside the known-bias regimes: worst bending / torsion / axial / peak {outside:.2?} %");
     for q in 0..4 {
         assert!(
@@ -1525,11 +1577,14 @@ fn extrapolation_checked_on_finer_meshes() {
             l3["index"]
         );
     }
-    let (mut worst, mut peak) = ([[0.0f64; 3]; 3], (f64::INFINITY, f64::NEG_INFINITY));
-    let mut counts = [0; 3];
+    let (mut worst, mut peak) = ([[0.0f64; 3]; 4], (f64::INFINITY, f64::NEG_INFINITY));
+    let mut counts = [0; 4];
     for l6 in &n6 {
         let (l4, l3) = (n4(l6), coarse(&l6["source"], &l6["index"]));
-        let group = if short_or_wide(l4) {
+        // n = 4 not yet asymptotic (n = 4 → 6 beyond 5 % in bending): judged on n = 8 below.
+        let group = if (at(l4, "k_bend") / at(l6, "k_bend") - 1.0).abs() > 0.05 {
+            3
+        } else if short_or_wide(l4) {
             1
         } else if coarse_n3(l4, l3) {
             2
@@ -1546,10 +1601,11 @@ fn extrapolation_checked_on_finer_meshes() {
         peak = (peak.0.min(moved), peak.1.max(moved));
     }
     println!(
-        "{} references at n = 6 ({} short or wide corner-filleted, {} others with n = 3 too coarse): n = 3/4 vs n = 4/6 extrapolation within {:.2?} % (short or wide: {:.2?} %; n = 3 too coarse: {:.2?} %); nodal peak n = 4 → 6 {:+.2} … {:+.2} %",
+        "{} references at n = 6 ({} short or wide corner-filleted, {} others with n = 3 too coarse, {} with n = 4 not yet asymptotic): n = 3/4 vs n = 4/6 extrapolation within {:.2?} % (short or wide: {:.2?} %; n = 3 too coarse: {:.2?} %); nodal peak n = 4 → 6 {:+.2} … {:+.2} %",
         n6.len(),
         counts[1],
         counts[2],
+        counts[3],
         worst[0],
         worst[1],
         worst[2],
@@ -1558,7 +1614,7 @@ fn extrapolation_checked_on_finer_meshes() {
     );
     assert_eq!(
         counts, N6_ROWS,
-        "references re-solved at n = 6 (others, short or wide, n = 3 too coarse)"
+        "references re-solved at n = 6 (others, short or wide, n = 3 too coarse, n = 4 not asymptotic)"
     );
     for q in 0..3 {
         assert!(
@@ -1586,6 +1642,54 @@ fn extrapolation_checked_on_finer_meshes() {
         peak.0,
         peak.1
     );
+    // Where n = 4 and n = 6 differ by more than 5 % in bending, n = 4 is not in the asymptotic
+    // range: such a reference has an n = 8 line ([`N8_RESULTS`]), and the tables take the
+    // n = 6/8 extrapolation. Its n = 6 → 8 step is the asymptotic one again: the n = 4/6
+    // extrapolation is then judged against the n = 6/8 one.
+    let n8 = compared_lines(N8_RESULTS);
+    let mut pre_asymptotic = 0;
+    for l6 in &n6 {
+        let l4 = n4(l6);
+        if (at(l4, "k_bend") / at(l6, "k_bend") - 1.0).abs() <= 0.05 {
+            continue;
+        }
+        pre_asymptotic += 1;
+        let l8 = n8
+            .iter()
+            .find(|l| l["source"] == l6["source"] && l["index"] == l6["index"])
+            .unwrap_or_else(|| {
+                panic!(
+                    "{}: {}: n = 4 → 6 beyond 5 % and no n = 8 line",
+                    l6["source"], l6["index"]
+                )
+            });
+        let k46 = richardson(at(l6, "k_bend"), at(l4, "k_bend"), 6.0, 4.0);
+        let k68 = richardson(at(l8, "k_bend"), at(l6, "k_bend"), 8.0, 6.0);
+        let steps = [
+            100.0 * (at(l4, "k_bend") / at(l6, "k_bend") - 1.0),
+            100.0 * (at(l6, "k_bend") / at(l8, "k_bend") - 1.0),
+        ];
+        println!(
+            "{} {}: bending n = 4 → 6 {:+.2} %, n = 6 → 8 {:+.2} %; n = 4/6 extrapolation {:+.2} % from the n = 6/8 one",
+            l6["source"],
+            l6["index"],
+            -steps[0],
+            -steps[1],
+            100.0 * (k46 / k68 - 1.0)
+        );
+        assert!(
+            steps[1].abs() < PRE_ASYMPTOTIC_N6_TO_N8 && steps[1].abs() < steps[0].abs() / 4.0,
+            "n = 6 → 8 {:.2} % after n = 4 → 6 {:.2} %",
+            steps[1],
+            steps[0]
+        );
+    }
+    assert_eq!(
+        pre_asymptotic,
+        n8.len(),
+        "every n = 8 line is of a pre-asymptotic reference"
+    );
+    assert_eq!(pre_asymptotic, PRE_ASYMPTOTIC_ROWS);
     // The prompting hinge at n = 6 and 8 (default blank size cap).
     let conv = json_lines("ccx_refine_convergence.jsonl");
     let fine = |n: f64| {
@@ -1620,9 +1724,11 @@ fn extrapolation_checked_on_finer_meshes() {
 /// * k = 12 → 16 on the references re-solved at k = 16 ([`PEAKS_K16`]) moves the peak by less
 ///   than [`PEAK_K12_TO_K16`];
 /// * the n = 4 peaks of the full models mostly lie below the converged ones: measured
-///   −3.80 … +9.26 % (converged above n = 4 by up to 9.26 %; worst l4.5/R0.75/t1.5/w4.5, a
-///   corner-filleted FIT row; below it by 3.80 % on [`DOE17`]'s l2.9/R0.85/t1.05/w17.4/h6.45,
-///   −2.49 % before it), and the
+///   −6.89 … +24.20 % (−3.80 … +9.26 % before [`DOE18`]; converged above n = 4 by 24.20 % on
+///   [`DOE18`]'s circular R1.1/t0.35/w5.8/h7.2, whose n = 4 mesh is not yet asymptotic, by up
+///   to 9.26 % otherwise, worst l4.5/R0.75/t1.5/w4.5, a corner-filleted FIT row; below it by
+///   6.89 % on [`DOE18`]'s l4.45/R2.0/t1.2/w19.8/h19.1, a leaf in a very tall blank, by 3.80 %
+///   on [`DOE17`]'s l2.9/R0.85/t1.05/w17.4/h6.45, −2.49 % before them), and the
 ///   small-fillet hinge's full-model peaks at n = 6, 8, 10 (7.335, 7.382, 7.449) approach its
 ///   converged 7.495 from below;
 /// * the eighth's compliant-axis stiffness (2/θ, its rotation being half the whole hinge's
@@ -1644,7 +1750,7 @@ fn converged_peaks_checked() {
         .values()
         .map(|lines| lines.iter().filter(|l| l["type"] != "spherical_neck").count())
         .sum();
-    assert_eq!((sources.len(), k12.len(), flat_notches), (18, 528, 528));
+    assert_eq!((sources.len(), k12.len(), flat_notches), (19, 560, 560));
     let (n3, n6) = (
         compared_lines("ccx_refine_n3_results.jsonl"),
         compared_lines(N6_RESULTS),
@@ -1686,7 +1792,7 @@ fn converged_peaks_checked() {
     }
     println!("{on_flats} corner-filleted peaks on the flat, the others on the fillet arc");
     println!("n = 4 peak → converged {:+.2} … {:+.2} %; eighth's bending at least {:+.2} % from the full model's converged, at most {:+.2} % from its n = 4", moved.0, moved.1, bend.0, bend.1);
-    assert!(moved.0 > -3.9 && moved.1 < 9.5, "n = 4 → converged {moved:?}");
+    assert!(moved.0 > -7.0 && moved.1 < 24.3, "n = 4 → converged {moved:?}");
     assert!(bend.0 > -EIGHTH_BEND_TOL && bend.1 < 0.0, "eighth's bending {bend:?}");
     // Refinement k = 12 → 16.
     let k16 = json_lines(PEAKS_K16);
