@@ -280,6 +280,16 @@
 //! nineteenth (`tools/ccx_heldout19_doe.json`, the eighteenth's ranges) is [`PENDING`] for a law
 //! beyond the ranges, fitted on the sixteenth to eighteenth.
 //!
+//! The ranges widened after the eighteenth comparison. Beyond the first ranges every miss (the
+//! sixteenth design's 16 leaves, the eighteenth's one) was a leaf with sharp fillets, R/t ≤ 0.76,
+//! while the 11 circular notches in blanks 0.31–0.48 h long and the eighteenth's 8 leaves with
+//! R/t 1.0–2.25 in blanks 0.31–0.94 h long and up to 15.9 t tall met every target. So circular
+//! notches are now calibrated down to blanks 0.3 h long (the rigid end faces' term validated on
+//! them up to +8.80 %, where they are at most 21 t tall), and corner-filleted hinges with R/t ≥ 1
+//! down to 0.3 h and up to h/t 16 (`hinge::calibration::ROUND_FILLET_R_OVER_T`,
+//! `WIDE_MIN_B_OVER_H`, `ROUND_FILLET_MAX_H_OVER_T`); sharper fillets keep the first ranges and
+//! their warnings. The nineteenth design, drawn before this widening, judges it.
+//!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
 //!
@@ -719,10 +729,21 @@ const IP_BELOW_NODAL: (f64, f64) = (5.0, 10.0);
 
 /// The targets for circular notches and corner-filleted hinges.
 const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
-/// The 6 circular notches of [`DOE18`] by the second set's ranges (its other 6, in tall very short
-/// blanks, lie beyond the ranges: [`CIRCULAR_BEYOND_TOL`]), fitted on by no law and compared once
-/// with the current model: −0.07 … +2.00 / −5.88 … +7.47 / +0.67 … +2.44 / −0.24 … +3.46: every
-/// target met.
+/// The 12 circular notches of [`DOE18`] (6 in tall very short blanks, 0.31–0.48 h long, h/t
+/// 10.7–20.6, then beyond the ranges; 6 by the second set's ranges), fitted on by no law and
+/// compared once with the current model: the 6 inside the ranges −0.07 … +2.00 / −5.88 … +7.47 /
+/// +0.67 … +2.44 / −0.24 … +3.46, the 6 beyond them −0.48 … +0.68 / −6.83 … +5.60 /
+/// −2.57 … +0.85 / +0.90 … +2.80: every target met. ([`DOE18`]'s R1.1/t0.35/w5.8/h7.2 first read
+/// +33.3 % bending and +17.1 % torsion against its n = 4/6 extrapolation, its n = 4 mesh not yet
+/// asymptotic; against n = 6/8 +0.65 and +5.60 %: see [`PRE_ASYMPTOTIC_N6_TO_N8`].) With the 5 of
+/// [`DOE17`] beyond the first ranges (0.32–0.48 h, h/t 11.6–19: +0.02 … +0.77 / −7.42 … +1.25 /
+/// −1.92 … +0.42 / +0.93 … +2.96), these 11 circular notches in blanks shorter than 0.5 h met
+/// every target, and the circular notches' blank range was widened to 0.3 h after this
+/// comparison (`hinge::calibration::WIDE_MIN_B_OVER_H`; the rigid end faces' term validated on
+/// circular notches up to +8.80 %, `END_FACE_CIRCULAR_VALIDATED_GAIN`): since then all 12 are
+/// inside the ranges, −0.48 … +2.00 / −6.83 … +7.47 / −2.57 … +2.44 / −0.24 … +3.46, and no
+/// circular reference is outside them. A nineteenth design, drawn before the widening, judges
+/// it.
 /// The 9 circular notches of [`DOE17`] inside the calibrated ranges (3 of its 8 in tall short
 /// blanks, R 1.25–2.8, h/t 10.5–21, blank length 0.54–0.67 h, where the rigid end faces' torque
 /// term acts on a circular notch for the first time, and 6 by the second set's ranges), fitted on
@@ -731,7 +752,7 @@ const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
 /// a group, and of one leaf, chosen by their convergence alone; see
 /// [`extrapolation_checked_on_finer_meshes`]): −0.64 … +1.99 / −8.22 … +4.96 /
 /// −1.61 … +3.15 / −1.43 … +4.40: every target met. Its other 5, in blanks shorter than 0.5 h,
-/// warn and are checked with [`CIRCULAR_BEYOND_TOL`]. (A first look before its references
+/// were beyond the ranges then (see [`DOE18`]'s above). (A first look before its references
 /// converged read bending +39.8 and +13.8 % on two of them: their n = 3 meshes were too coarse,
 /// n = 4 lying 40.0 and 14.5 % above the n = 3/4 extrapolation against 0.9 and 1.4 % above the
 /// n = 4/6 one; see [`extrapolation_checked_on_finer_meshes`].)
@@ -761,15 +782,6 @@ const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
 /// once with the frozen model: −0.62 … +1.14 / −7.55 … +1.96 / −0.24 … +3.29 / −1.47 … +2.63:
 /// every target met.
 const CIRCULAR_TOL: [f64; 4] = TARGET;
-/// The circular notches outside the calibrated ranges, which warn: [`DOE17`]'s 5 in tall blanks
-/// shorter than 0.5 h (0.32–0.48 h, h/t 11.6–19; the `hinge` analysis's short-blank warning),
-/// +0.02 … +0.77 / −7.42 … +1.25 / −1.92 … +0.42 / +0.93 … +2.96, and [`DOE18`]'s 6 (0.31–0.48 h,
-/// h/t 10.7–20.6), −0.48 … +0.68 / −6.83 … +5.60 / −2.57 … +0.85 / +0.90 … +2.80: every target met
-/// on all 11 (−0.48 … +0.77 / −7.42 … +5.60 / −2.57 … +0.85 / +0.90 … +2.96). Pinned at 1 / 7.5 /
-/// 2.6 / 3 %. ([`DOE18`]'s R1.1/t0.35/w5.8/h7.2 read +33.3 % bending and +17.1 % torsion against
-/// the n = 4/6 extrapolation, its n = 4 mesh not yet asymptotic; against n = 6/8 +0.65 and
-/// +5.60 %: see [`PRE_ASYMPTOTIC_N6_TO_N8`].)
-const CIRCULAR_BEYOND_TOL: [f64; 4] = [1.0, 7.5, 2.6, 3.0];
 /// The 16 circular notches of [`DOE9`] (8 by the second set's ranges, 8 narrow: w/t 0.5–1.1),
 /// drawn and committed before [`DOE8`] was compared and before a compact waist stopped carrying
 /// warping restraint, held out from those laws and compared once with the frozen model:
@@ -822,12 +834,19 @@ const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
 /// ranges in tall very short blanks, 0.31–0.48 h, and 6 in very tall blanks, h/t 10.7–15.9: all
 /// 14 beyond the calibrated ranges, checked with [`CORNER_BEYOND_TOL`]; 6 by the second set's
 /// ranges), fitted on by no law and compared once with the current model: the 6 inside the
-/// ranges −0.41 … +1.41 / −2.28 … +3.92 / +0.43 … +2.36 / −1.51 … +1.74, every target met.
+/// ranges −0.41 … +1.41 / −2.28 … +3.92 / +0.43 … +2.36 / −1.51 … +1.74, every target met. After
+/// that comparison the ranges of corner-filleted hinges with R/t ≥ 1 were widened to blanks
+/// 0.3 h long and 16 t tall (`hinge::calibration::ROUND_FILLET_R_OVER_T`: every miss beyond the
+/// first ranges had R/t ≤ 0.76; below): its 8 leaves with R/t 1.0–2.25 are inside them since, and
+/// its 14 inside rows read −1.55 … +1.41 / −3.20 … +7.87 / −3.04 … +2.36 / −1.51 … +1.74. A
+/// nineteenth design, drawn before the widening, judges it.
 const CORNER_TOL: [f64; 4] = TARGET;
 /// The corner-filleted hinges outside the calibrated ranges, which warn: [`DOE16`]'s 16 (below)
-/// and [`DOE18`]'s 14, together −2.37 … +0.83 / −10.74 … +21.50 / −5.82 … +0.05 / −1.08 … +1.49:
-/// pinned at 3 / 21.6 / 5.9 / 1.5 %. [`DOE18`]'s 14, with the second set's fillets (R/t
-/// 0.56–2.25) where [`DOE16`]'s had sharp ones (R/t ≈ 0.5–0.76), read far closer: in blanks
+/// and [`DOE18`]'s 6 with R/t < 1 (0.56–0.97), together −2.37 … +0.83 / −10.74 … +21.50 /
+/// −5.82 … −0.64 / −0.26 … +1.17: pinned at 3 / 21.6 / 5.9 / 1.2 %. (Before the widening for
+/// R/t ≥ 1, with [`DOE18`]'s 14 beyond the first ranges: −2.37 … +0.83 / −10.74 … +21.50 /
+/// −5.82 … +0.05 / −1.08 … +1.49.) [`DOE18`]'s 14, with the second set's fillets (R/t
+/// 0.56–2.25) where [`DOE16`]'s had sharp ones (R/t 0.50–0.76), read far closer: in blanks
 /// 0.31–0.48 h long −1.60 … +0.83 / +1.39 … +8.80 / −4.53 … +0.05 / −1.08 … +1.17, every target
 /// met; in blanks 10.7–15.9 t tall −2.27 … +0.23 / −3.20 … +17.78 / −3.58 … −0.86 /
 /// −1.06 … +1.49, torsion missing 10 % on one leaf with sharp fillets
@@ -848,7 +867,7 @@ const CORNER_TOL: [f64; 4] = TARGET;
 /// corner-filleted h/t above 10: `hinge::calibration::short_blank_warning`, `CORNER_H_OVER_T`).
 /// Its 8 rows inside the ranges read −0.91 … +1.60 / −2.81 … +6.05 / −0.03 … +2.70 /
 /// −0.97 … +0.92 and are a seen design since ([`CORNER_SEEN_TOL`]).
-const CORNER_BEYOND_TOL: [f64; 4] = [3.0, 21.6, 5.9, 1.5];
+const CORNER_BEYOND_TOL: [f64; 4] = [3.0, 21.6, 5.9, 1.2];
 /// The 16 corner-filleted hinges of [`DOE17`] (8 short wide leaves with sharp fillets in tall short
 /// blanks, 4–8 t above the fillets, blank length 0.5–1 h: the regime the axial load's spreading
 /// into the blank was fitted on; 8 by the second set's ranges), fitted on by no law and compared
@@ -1231,14 +1250,14 @@ fn in_range(spec: &HingeSpec) -> bool {
 /// later changes and, the corner-filleted rows, by the refits of the torsion law) against
 /// `seen`. The references outside the ranges, which warn, against `beyond` (all designs
 /// together). `counts`: the family's rows per design, and how many of them are outside the
-/// ranges per design.
+/// ranges per design; `beyond` is `None` where none is.
 fn held_out(
     name: &str,
     f: fn(&HingeSpec) -> bool,
     counts: ([usize; 16], [usize; 16]),
     fresh: [f64; 4],
     seen: [f64; 4],
-    beyond: [f64; 4],
+    beyond: Option<[f64; 4]>,
 ) {
     let designs = HELD_OUT.map(|(_, d)| rows(&d.iter().collect::<Vec<_>>()));
     let all = designs.each_ref().map(|r| family(r, f));
@@ -1249,15 +1268,16 @@ fn held_out(
         "{name} outside the calibrated ranges, per design"
     );
     let outside: Vec<&Row> = all.iter().flatten().copied().filter(|r| !in_range(&r.spec)).collect();
-    if !outside.is_empty() {
-        check(
+    match beyond {
+        Some(tol) => check(
             &format!("{name}, outside the calibrated ranges"),
             report(
                 &format!("{name} vs CalculiX, HELD OUT, outside the calibrated ranges (warned)"),
                 &outside,
             ),
-            beyond,
-        );
+            tol,
+        ),
+        None => assert!(outside.is_empty(), "{name}: references outside the ranges"),
     }
     let per_design = all.map(|r| r.into_iter().filter(|r| in_range(&r.spec)).collect::<Vec<_>>());
     let earlier: Vec<&Row> = per_design[..EARLIER].iter().flatten().copied().collect();
@@ -1295,13 +1315,10 @@ fn circular_notches_held_out() {
     held_out(
         "circular notches",
         circular,
-        (
-            [4, 12, 12, 12, 12, 18, 16, 6, 6, 6, 6, 6, 6, 6, 14, 12],
-            [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5, 6],
-        ),
+        ([4, 12, 12, 12, 12, 18, 16, 6, 6, 6, 6, 6, 6, 6, 14, 12], [0; 16]),
         CIRCULAR_TOL,
         CIRCULAR_SEEN_TOL,
-        CIRCULAR_BEYOND_TOL,
+        None,
     );
 }
 
@@ -1312,11 +1329,11 @@ fn corner_filleted_held_out() {
         corner,
         (
             [16, 12, 12, 12, 20, 20, 16, 24, 24, 24, 24, 24, 24, 24, 16, 20],
-            [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 16, 0, 14],
+            [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 16, 0, 6],
         ),
         CORNER_TOL,
         CORNER_SEEN_TOL,
-        CORNER_BEYOND_TOL,
+        Some(CORNER_BEYOND_TOL),
     );
 }
 
@@ -1329,8 +1346,10 @@ fn corner_filleted_held_out() {
 /// outside the regimes is within [`OUTSIDE_BIAS_TOL`] (bending, torsion, axial, %). The
 /// references outside the calibrated ranges, which get a range warning instead
 /// (`range_warnings`, and the `hinge` analysis's `short_blank_warning`), are counted: the 16 of
-/// [`DOE16`]'s leaves in tall very short or very tall blanks and the 5 of [`DOE17`]'s circular
-/// notches in blanks shorter than 0.5 h (checked in [`held_out`]).
+/// [`DOE16`]'s leaves in tall very short or very tall blanks and the 6 of [`DOE18`]'s with R/t
+/// below 1 (checked in [`held_out`]); the 437 others include [`DOE17`]'s and [`DOE18`]'s 11
+/// circular notches in blanks 0.31–0.48 h long and [`DOE18`]'s 8 leaves with R/t ≥ 1 beyond the
+/// first ranges, inside the ranges since their widening.
 #[test]
 fn known_bias_warnings_state_the_measured_bands() {
     use flexfem::hinge::calibration::{known_bias, range_warnings, short_blank_warning, SHORT_WIDE_LEAF};
@@ -1392,8 +1411,8 @@ fn known_bias_warnings_state_the_measured_bands() {
             }
         }
     }
-    assert_eq!(range_warned, 41, "references outside the calibrated ranges");
-    assert_eq!(others, 418, "references inside the ranges and outside the regimes");
+    assert_eq!(range_warned, 22, "references outside the calibrated ranges");
+    assert_eq!(others, 437, "references inside the ranges and outside the regimes");
     println!("outside the known-bias regimes: worst bending / torsion / axial / peak {outside:.2?} %");
     for q in 0..4 {
         assert!(
