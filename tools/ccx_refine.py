@@ -76,7 +76,9 @@ SOURCES = [
     "ccx_heldout19_results.jsonl",
 ]
 # The fields of a results line that are not the hinge's geometry.
-NOT_GEOMETRY = {"type", "nu", "E", "n", "hmax", "dofs", "high_order_optimize", "solver", "doe_index", "seconds"}
+NOT_GEOMETRY = {
+    "type", "nu", "E", "n", "hmax", "dofs", "high_order_optimize", "second_order_linear", "solver", "doe_index", "seconds",
+}
 
 
 def by_reference(path):

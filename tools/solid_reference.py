@@ -146,11 +146,13 @@ def geometry(kind, p, half, big):
     return X, out
 
 
-def mesh_hinge(kind, p, n, hmax=None, ho_optimize=0):
+def mesh_hinge(kind, p, n, hmax=None, ho_optimize=0, linear=False):
     """Meshes the hinge with 10-node tetrahedra of size thickness(x)/n (at most hmax, default h/3).
 
     `ho_optimize` is gmsh's Mesh.HighOrderOptimize (0: the curved mid-side nodes as placed on the
     surface, which can leave an element with a non-positive Jacobian; 2: gmsh untangles them).
+    `linear` puts the mid-side nodes at the edges' midpoints (straight-sided elements, gmsh's
+    Mesh.SecondOrderLinear): the last resort where neither places them well.
 
     Returns (X, node coordinates (N, 3), connectivity (nel, 10) in gmsh's node order: the four
     corners, then the mid-side nodes of the edges 01, 12, 20, 30, 32, 31)."""
@@ -172,7 +174,7 @@ def mesh_hinge(kind, p, n, hmax=None, ho_optimize=0):
     gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
     gmsh.option.setNumber("Mesh.ElementOrder", 2)
     gmsh.option.setNumber("Mesh.HighOrderOptimize", ho_optimize)
-    gmsh.option.setNumber("Mesh.SecondOrderLinear", 0)
+    gmsh.option.setNumber("Mesh.SecondOrderLinear", 1 if linear else 0)
     gmsh.model.mesh.generate(3)
     tags, coords, _ = gmsh.model.mesh.getNodes()
     etypes, _, enodes = gmsh.model.mesh.getElements(3)
