@@ -258,8 +258,8 @@
 //! Beyond the designs' box. A sixteenth design ([`DOE16`]: leaves in blanks 0.3–0.5 h long and
 //! 10–14 t tall, past the end-face term's box), held out from the axial law, then read every
 //! target inside the box and missed beyond it (torsion up to +21.50 %, axial −5.82 %); those
-//! hinges got range warnings (blanks shorter than 0.5 h, corner-filleted h/t above 10; since the
-//! widening below, for sharp fillets only) and are checked apart ([`held_out`], [`CORNER_BEYOND_TOL`]). A seventeenth ([`DOE17`]: circular
+//! hinges get range warnings (blanks shorter than 0.5 h, corner-filleted h/t above 10) and are
+//! checked apart ([`held_out`], [`CORNER_BEYOND_TOL`]). A seventeenth ([`DOE17`]: circular
 //! notches in tall short blanks, where the end-face term first acts on circular notches, and
 //! leaves in tall short blanks, the axial law's regime), fitted on by no law, read every target
 //! on every row inside the ranges, and on its 5 circular notches beyond them too. Its first look
@@ -278,20 +278,20 @@
 //! re-solve followed a first reading of +33.3 % bending on that notch against the n = 4/6
 //! extrapolation, and the rule, by convergence alone, picks that reference only). A
 //! nineteenth (`tools/ccx_heldout19_doe.json`, the eighteenth's ranges), drawn before the
-//! eighteenth was compared, is [`PENDING`]: it judges the widening below.
+//! eighteenth was compared, judged the widening below.
 //!
-//! The ranges widened after the eighteenth comparison. Beyond the first ranges every miss (the
-//! sixteenth design's 16 leaves, the eighteenth's one) was a leaf with sharp fillets, R/t ≤ 0.76,
-//! while the 11 circular notches in blanks 0.31–0.48 h long and the eighteenth's 8 leaves with
-//! R/t 1.0–2.25 in blanks 0.31–0.94 h long and up to 15.9 t tall met every target. So circular
-//! notches are now calibrated down to blanks 0.3 h long (the rigid end faces' term validated on
-//! them up to +8.80 %, where they are at most 21 t tall), and corner-filleted hinges with R/t ≥ 1
-//! down to 0.3 h and up to h/t 16 (`hinge::calibration::ROUND_FILLET_R_OVER_T`,
-//! `WIDE_MIN_B_OVER_H`, `ROUND_FILLET_MAX_H_OVER_T`); sharper fillets keep the first ranges and
-//! their warnings. The box was chosen on seen references, and its bounds sit on their extremes
-//! (0.31 → 0.3, 15.92 → 16, R/t 1.0 exactly on one of them). The nineteenth design, drawn before
-//! this widening, judges it; when the widening was chosen its n = 4 results and part of its
-//! n = 3 ones were solved and committed as data, but none was compared with flexfem.
+//! A widening of the ranges, tried and reverted. After the eighteenth comparison every miss
+//! beyond the first ranges had been a leaf with sharp fillets (R/t ≤ 0.76), while 11 circular
+//! notches in blanks 0.31–0.48 h long and 8 leaves with R/t 1.0–2.25 in blanks down to 0.31 h
+//! and up to 15.9 t tall met every target; so the ranges were widened there (circular notches
+//! to 0.3 h; R/t 1–2.5 to 0.3 h and h/t 16). The nineteenth design ([`DOE19`]), drawn before,
+//! judged it once: a leaf inside the widened box (l8.15/R1.5/t1.5/w19.5/h15.05/b7.3, R/t 1.0,
+//! blank 0.49 h, h/t 10.03) read torsion +11.32 % with no warning, and a circular notch in a
+//! short blank could not be judged (its reference is not converged by n = 8: [`UNCONVERGED`]).
+//! The widening was reverted; the first ranges and their warnings stand. Inside them
+//! [`DOE19`] met every target (circular −0.05 … +1.43 / −5.41 … −0.76 / +0.86 … +3.71 /
+//! −1.36 … +1.86, corner-filleted −1.16 … +1.66 / −1.44 … +9.69 / +0.11 … +2.27 /
+//! −0.76 … +0.78 %).
 //!
 //! These references are ours (computed here with a solver that is not ours), so each
 //! comparison is a cross-check of the beam model against solid models of the same geometry.
@@ -368,6 +368,9 @@ use doe17::DOE17;
 #[path = "hinge_ccx_reference/doe18.rs"]
 mod doe18;
 use doe18::DOE18;
+#[path = "hinge_ccx_reference/doe19.rs"]
+mod doe19;
+use doe19::DOE19;
 
 #[path = "hinge_ccx_reference/raw.rs"]
 mod raw;
@@ -384,6 +387,7 @@ struct Row {
 
 fn rows(refs: &[&CcxRef]) -> Vec<Row> {
     refs.iter()
+        .filter(|r| !UNCONVERGED.contains(&r.hinge))
         .map(|r| {
             let spec: HingeSpec = serde_json::from_str(r.hinge).unwrap_or_else(|e| panic!("{}: {e}", r.hinge));
             let m = Material {
@@ -483,7 +487,7 @@ const N8_RESULTS: &str = "ccx_refine_n8_results.jsonl";
 /// `_results.jsonl` files under `tools/`. Their lines in the re-solve files (n = 3, n = 6,
 /// converged peaks) are committed as they are solved and skipped by the checks here
 /// ([`compared_lines`]) until the design gets its test module and joins [`DESIGNS`].
-const PENDING: [&str; 1] = ["ccx_heldout19_results.jsonl"];
+const PENDING: [&str; 0] = [];
 
 /// The lines of a re-solve file under `tools/` whose reference is not of a [`PENDING`] design.
 fn compared_lines(file: &str) -> Vec<serde_json::Value> {
@@ -673,7 +677,7 @@ fn every_reference_is_a_line_of_the_raw_results() {
 /// The fresh designs of experiments: file stem under `tools/` (`_doe.json` the design,
 /// `_results.jsonl` its CalculiX results), the references, their number, how many are circular
 /// notches.
-const DESIGNS: [(&str, &[CcxRef], usize, usize); 18] = [
+const DESIGNS: [(&str, &[CcxRef], usize, usize); 19] = [
     ("ccx_heldout", DOE1, 24, 12),
     ("ccx_heldout2", DOE2, 24, 12),
     ("ccx_heldout3", DOE3, 20, 4),
@@ -692,6 +696,7 @@ const DESIGNS: [(&str, &[CcxRef], usize, usize); 18] = [
     ("ccx_heldout16", DOE16, 30, 6),
     ("ccx_heldout17", DOE17, 30, 14),
     ("ccx_heldout18", DOE18, 32, 12),
+    ("ccx_heldout19", DOE19, 32, 12),
 ];
 
 /// The fresh rows are the committed designs of experiments, in their order
@@ -738,15 +743,10 @@ const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
 /// +0.67 … +2.44 / −0.24 … +3.46, the 6 beyond them −0.48 … +0.68 / −6.83 … +5.60 /
 /// −2.57 … +0.85 / +0.90 … +2.80: every target met. ([`DOE18`]'s R1.1/t0.35/w5.8/h7.2 first read
 /// +33.3 % bending and +17.1 % torsion against its n = 4/6 extrapolation, its n = 4 mesh not yet
-/// asymptotic; against n = 6/8 +0.65 and +5.60 %: see [`PRE_ASYMPTOTIC_N6_TO_N8`].) With the 5 of
-/// [`DOE17`] beyond the first ranges (0.32–0.48 h, h/t 11.6–19: +0.02 … +0.77 / −7.42 … +1.25 /
-/// −1.92 … +0.42 / +0.93 … +2.96), these 11 circular notches in blanks shorter than 0.5 h met
-/// every target, and the circular notches' blank range was widened to 0.3 h after this
-/// comparison (`hinge::calibration::WIDE_MIN_B_OVER_H`; the rigid end faces' term validated on
-/// circular notches up to +8.80 %, `END_FACE_CIRCULAR_VALIDATED_GAIN`): since then all 12 are
-/// inside the ranges, −0.48 … +2.00 / −6.83 … +7.47 / −2.57 … +2.44 / −0.24 … +3.46, and no
-/// circular reference is outside them. A nineteenth design, drawn before the widening, judges
-/// it.
+/// asymptotic; against n = 6/8 +0.65 and +5.60 %: see [`PRE_ASYMPTOTIC_N6_TO_N8`].)
+/// The 6 circular notches of [`DOE19`] by the second set's ranges (its other 6, in tall very short
+/// blanks, beyond them; one of those [`UNCONVERGED`]), fitted on by no law and compared once:
+/// −0.05 … +1.43 / −5.41 … −0.76 / +0.86 … +3.71 / −1.36 … +1.86: every target met.
 /// The 9 circular notches of [`DOE17`] inside the calibrated ranges (3 of its 8 in tall short
 /// blanks, R 1.25–2.8, h/t 10.5–21, blank length 0.54–0.67 h, where the rigid end faces' torque
 /// term acts on a circular notch for the first time, and 6 by the second set's ranges), fitted on
@@ -785,6 +785,13 @@ const TARGET: [f64; 4] = [3.0, 10.0, 5.0, 5.0];
 /// once with the frozen model: −0.62 … +1.14 / −7.55 … +1.96 / −0.24 … +3.29 / −1.47 … +2.63:
 /// every target met.
 const CIRCULAR_TOL: [f64; 4] = TARGET;
+/// The circular notches outside the calibrated ranges, which warn (blanks shorter than 0.5 h):
+/// [`DOE17`]'s 5, [`DOE18`]'s 6 and [`DOE19`]'s 5 compared (its sixth is [`UNCONVERGED`]),
+/// −0.48 … +0.77 / −8.36 … +5.60 / −2.57 … +0.85 / +0.66 … +3.75: every target met. Pinned at
+/// 1 / 8.4 / 2.6 / 3.8 %. (A widening of the circular notches' blank range to 0.3 h, chosen on
+/// the first 11 after [`DOE18`]'s comparison, was judged by [`DOE19`] and reverted: its sixth
+/// notch there could not be judged, its reference not converged by n = 8.)
+const CIRCULAR_BEYOND_TOL: [f64; 4] = [1.0, 8.4, 2.6, 3.8];
 /// The 16 circular notches of [`DOE9`] (8 by the second set's ranges, 8 narrow: w/t 0.5–1.1),
 /// drawn and committed before [`DOE8`] was compared and before a compact waist stopped carrying
 /// warping restraint, held out from those laws and compared once with the frozen model:
@@ -837,18 +844,16 @@ const CIRCULAR_SEEN_TOL: [f64; 4] = TARGET;
 /// ranges in tall very short blanks, 0.31–0.48 h, and 6 in very tall blanks, h/t 10.7–15.9: all
 /// 14 beyond the calibrated ranges, checked with [`CORNER_BEYOND_TOL`]; 6 by the second set's
 /// ranges), fitted on by no law and compared once with the current model: the 6 inside the
-/// ranges −0.41 … +1.41 / −2.28 … +3.92 / +0.43 … +2.36 / −1.51 … +1.74, every target met. After
-/// that comparison the ranges of corner-filleted hinges with R/t ≥ 1 were widened to blanks
-/// 0.3 h long and 16 t tall (`hinge::calibration::ROUND_FILLET_R_OVER_T`: every miss beyond the
-/// first ranges had R/t ≤ 0.76; below): its 8 leaves with R/t 1.0–2.25 are inside them since, and
-/// its 14 inside rows read −1.55 … +1.41 / −3.20 … +7.87 / −3.04 … +2.36 / −1.51 … +1.74. A
-/// nineteenth design, drawn before the widening, judges it.
+/// ranges −0.41 … +1.41 / −2.28 … +3.92 / +0.43 … +2.36 / −1.51 … +1.74, every target met.
+/// The 20 corner-filleted hinges of [`DOE19`] (the same kinds; its 14 aimed ones beyond the
+/// ranges), fitted on by no law and compared once: the 6 inside the ranges −1.16 … +1.66 /
+/// −1.44 … +9.69 / +0.11 … +2.27 / −0.76 … +0.78, every target met. (It judged, and refuted, a
+/// widening of the ranges for R/t 1–2.5 chosen after [`DOE18`]'s comparison: its
+/// l8.15/R1.5/t1.5/w19.5/h15.05/b7.3, R/t 1.0 in a blank 0.49 h long, read torsion +11.32 %.)
 const CORNER_TOL: [f64; 4] = TARGET;
-/// The corner-filleted hinges outside the calibrated ranges, which warn: [`DOE16`]'s 16 (below)
-/// and [`DOE18`]'s 6 with R/t < 1 (0.56–0.97), together −2.37 … +0.83 / −10.74 … +21.50 /
-/// −5.82 … −0.64 / −0.26 … +1.17: pinned at 3 / 21.6 / 5.9 / 1.2 %. (Before the widening for
-/// R/t ≥ 1, with [`DOE18`]'s 14 beyond the first ranges: −2.37 … +0.83 / −10.74 … +21.50 /
-/// −5.82 … +0.05 / −1.08 … +1.49.) [`DOE18`]'s 14, with the second set's fillets (R/t
+/// The corner-filleted hinges outside the calibrated ranges, which warn: [`DOE16`]'s 16 (below),
+/// [`DOE18`]'s 14 and [`DOE19`]'s 14, together −2.37 … +0.84 / −10.74 … +21.50 / −5.82 … +0.05 /
+/// −1.14 … +1.56: pinned at 3 / 21.6 / 5.9 / 1.6 %. [`DOE18`]'s 14, with the second set's fillets (R/t
 /// 0.56–2.25) where [`DOE16`]'s had sharp ones (R/t 0.50–0.76), read far closer: in blanks
 /// 0.31–0.48 h long −1.60 … +0.83 / +1.39 … +8.80 / −4.53 … +0.05 / −1.08 … +1.17, every target
 /// met; in blanks 10.7–15.9 t tall −2.27 … +0.23 / −3.20 … +17.78 / −3.58 … −0.86 /
@@ -870,7 +875,7 @@ const CORNER_TOL: [f64; 4] = TARGET;
 /// corner-filleted h/t above 10: `hinge::calibration::short_blank_warning`, `CORNER_H_OVER_T`).
 /// Its 8 rows inside the ranges read −0.91 … +1.60 / −2.81 … +6.05 / −0.03 … +2.70 /
 /// −0.97 … +0.92 and are a seen design since ([`CORNER_SEEN_TOL`]).
-const CORNER_BEYOND_TOL: [f64; 4] = [3.0, 21.6, 5.9, 1.2];
+const CORNER_BEYOND_TOL: [f64; 4] = [3.0, 21.6, 5.9, 1.6];
 /// The 16 corner-filleted hinges of [`DOE17`] (8 short wide leaves with sharp fillets in tall short
 /// blanks, 4–8 t above the fillets, blank length 0.5–1 h: the regime the axial load's spreading
 /// into the blank was fitted on; 8 by the second set's ranges), fitted on by no law and compared
@@ -1145,17 +1150,28 @@ const CORNER_FIT_TOL: [f64; 4] = TARGET;
 /// leaves with sharp fillets (R/t ≈ 0.5), whose n = 3 mesh is too coarse
 /// for the asymptotic rate: there the n = 3/4 extrapolation over-corrects, and the tables take
 /// the n = 4/6 one ([`converged_stiffness`]).
-const N6_ROWS: [usize; 4] = [68, 177, 4, 1];
+/// With [`DOE19`]: 182 short or wide leaves, 5 with n = 3 too coarse (31.26 % bending on its
+/// R1.9/t0.75/w12.4/h11.9), 2 with n = 4 not asymptotic (one of them [`UNCONVERGED`]).
+const N6_ROWS: [usize; 4] = [68, 182, 5, 2];
 /// The references whose n = 4 is not yet asymptotic (n = 4 → 6 beyond 5 % in bending),
 /// re-solved at n = 8 ([`N8_RESULTS`]), and how far n = 6 → 8 moves their bending, % (measured:
 /// [`DOE18`]'s circular R1.1/t0.35/w5.8/h7.2/b3.45, bending 3268, 2733, 2085, 2081 N·mm/rad at
 /// n = 3, 4, 6, 8: −31.1 % from n = 4 to 6, −0.21 % from 6 to 8; its root-refined eighth reads
 /// 2080; against the n = 4/6 extrapolation, 1567, flexfem read +33.3 %, against the n = 6/8
 /// one, 2076, it reads +0.65 %).
-const PRE_ASYMPTOTIC_ROWS: usize = 1;
+const PRE_ASYMPTOTIC_ROWS: usize = 2;
+/// References whose mesh sequence has not converged by n = 8 (n = 6 → 8 beyond 5 % in bending),
+/// left out of every comparison until solved finer: [`DOE19`]'s circular
+/// R1.1/t0.5/w5.6/h9.05/b4.0 (bending 6194, 5195, 4736 N·mm/rad at n = 4, 6, 8, −8.8 % from 6 to
+/// 8; its root-refined eighth, an upper bound, 4727; its curved n = 3 meshes failed). Against
+/// the n = 6/8 extrapolation (4145) flexfem read bending +14.16 % and torsion +15.22 % at the
+/// one comparison; against n = 8 itself bending −0.1 %. Its torsion gets the end-face warning
+/// (+15.7 % term), and its blank (0.44 h) the short-blank warning.
+const UNCONVERGED: [&str; 1] =
+    [r#"{"type": "circular_notch", "R": 1.1, "t": 0.5, "w": 5.6, "h": 9.05, "blank_length": 4.0}"#];
 const PRE_ASYMPTOTIC_N6_TO_N8: f64 = 0.3;
 const EXTRAPOLATION_TOL: [f64; 3] = [1.2, 1.2, 0.55];
-const COARSE_N3_EXTRAPOLATION_TOL: [f64; 3] = [28.0, 10.3, 1.3];
+const COARSE_N3_EXTRAPOLATION_TOL: [f64; 3] = [31.3, 10.3, 1.3];
 const SHORT_WIDE_EXTRAPOLATION_TOL: [f64; 3] = [13.0, 11.0, 3.5];
 /// The nodal-averaged peak stress from n = 4 to n = 6 on those references, %: measured
 /// −7.15 … +24.25 ([`DOE18`]'s leaf in a very tall blank l4.45/R2.0/t1.2/w19.8/h19.1 and its
@@ -1216,7 +1232,7 @@ fn fit_rows() -> Vec<Row> {
 /// The designs of experiments held out from the law of their day, in the order they were
 /// compared: [`DOE3`] to [`DOE7`] are checked together, the later ones each; the last is the
 /// fresh design, held out from every law and compared once with the current model.
-const HELD_OUT: [(&str, &[CcxRef]); 16] = [
+const HELD_OUT: [(&str, &[CcxRef]); 17] = [
     ("DOE3", DOE3),
     ("DOE4", DOE4),
     ("DOE5", DOE5),
@@ -1233,53 +1249,37 @@ const HELD_OUT: [(&str, &[CcxRef]); 16] = [
     ("DOE16", DOE16),
     ("DOE17", DOE17),
     ("DOE18", DOE18),
+    ("DOE19", DOE19),
 ];
 
 /// How many of [`HELD_OUT`]'s first designs are checked together (DOE3 to DOE7).
 const EARLIER: usize = 5;
 
-/// The rigid end faces' term's validated gains (`hinge::calibration`) are the largest on the
-/// compared references inside the ranges, rounded up by less than 0.01 %: corner-filleted in
-/// the first box (blank ≥ 0.5 h, h/t ≤ 10; measured 0.17104, [`DOE15`]'s
-/// l4.7/R1.0/t1.95/w17.9/h17.05/b9.45), corner-filleted with R/t 1–2.5 beyond it (0.117717,
-/// [`DOE18`]'s l3.6/R1.15/t1.15/w8.4/h9.7/b4.15), circular (0.087954, [`DOE18`]'s
-/// R1.1/t0.35/w5.8/h7.2/b3.45).
+/// The rigid end faces' term's validated gain (`hinge::calibration::END_FACE_VALIDATED_GAIN`) is
+/// the largest on the corner-filleted references inside the ranges of the designs it was set on
+/// ([`DOE1`] to [`DOE18`]), rounded up by less than 0.01 %: measured 0.17104, [`DOE15`]'s
+/// l4.7/R1.0/t1.95/w17.9/h17.05/b9.45. ([`DOE19`]'s, compared after it was set, reach
+/// 0.0294, inside the cap.)
 #[test]
-fn end_face_validated_gains_are_the_largest_on_the_references() {
-    use flexfem::hinge::calibration::{
-        END_FACE_CIRCULAR_VALIDATED_GAIN, END_FACE_VALIDATED_GAIN, END_FACE_WIDE_VALIDATED_GAIN,
-    };
+fn end_face_validated_gain_is_the_largest_on_the_references() {
+    use flexfem::hinge::calibration::END_FACE_VALIDATED_GAIN;
     use flexfem::hinge::torsion::{continuous_ends, solid_torsion_stiffness};
-    let refs = FIRST_FIT
-        .iter()
-        .chain(FIRST_HELD_OUT)
-        .chain(DESIGNS.iter().flat_map(|d| d.1.iter()));
-    let mut largest = [0.0f64; 3];
-    for r in refs {
+    let gain = |r: &CcxRef| {
         let spec: HingeSpec = serde_json::from_str(r.hinge).unwrap();
-        if neck(&spec) || !in_range(&spec) {
-            continue;
+        if !corner(&spec) || !in_range(&spec) {
+            return 0.0;
         }
         let p = spec.profile().unwrap().with_rigid_end_faces();
-        let gain =
-            solid_torsion_stiffness(&p, r.e, r.nu) / solid_torsion_stiffness(&continuous_ends(&p), r.e, r.nu) - 1.0;
-        let first_box = p.blank / p.h >= 0.5 && p.h / p.t_min() <= 10.0;
-        let which = match (corner(&spec), first_box) {
-            (true, true) => 0,
-            (true, false) => 1,
-            (false, _) => 2,
-        };
-        largest[which] = largest[which].max(gain);
-    }
-    println!("largest end-face gains (first box, wider box, circular): {largest:?}");
-    // zip-checked: both hold the three boxes (their types say 3).
-    for (got, constant) in largest.iter().zip([
-        END_FACE_VALIDATED_GAIN,
-        END_FACE_WIDE_VALIDATED_GAIN,
-        END_FACE_CIRCULAR_VALIDATED_GAIN,
-    ]) {
-        assert!(*got <= constant && constant - got < 1e-4, "{got} against {constant}");
-    }
+        solid_torsion_stiffness(&p, r.e, r.nu) / solid_torsion_stiffness(&continuous_ends(&p), r.e, r.nu) - 1.0
+    };
+    let set_on = FIRST_FIT
+        .iter()
+        .chain(FIRST_HELD_OUT)
+        .chain(DESIGNS[..18].iter().flat_map(|d| d.1.iter()));
+    let largest = set_on.map(gain).fold(0.0, f64::max);
+    let later = DOE19.iter().map(gain).fold(0.0, f64::max);
+    println!("largest end-face gain, corner-filleted inside the ranges: {largest} (DOE19: {later})");
+    assert!(largest <= END_FACE_VALIDATED_GAIN && END_FACE_VALIDATED_GAIN - largest < 1e-4);
 }
 
 /// Whether a reference lies inside the calibrated ranges: no range warning
@@ -1301,7 +1301,7 @@ fn in_range(spec: &HingeSpec) -> bool {
 fn held_out(
     name: &str,
     f: fn(&HingeSpec) -> bool,
-    counts: ([usize; 16], [usize; 16]),
+    counts: ([usize; 17], [usize; 17]),
     fresh: [f64; 4],
     seen: [f64; 4],
     beyond: Option<[f64; 4]>,
@@ -1338,7 +1338,7 @@ fn held_out(
         seen,
     );
     let n = HELD_OUT.len();
-    // zip-checked: per_design is mapped from HELD_OUT (its type says 16).
+    // zip-checked: per_design is mapped from HELD_OUT (its type says 17).
     for ((design, _), rows) in HELD_OUT.iter().zip(&per_design).take(n - 1).skip(EARLIER) {
         check(
             &format!("{name}, {design}"),
@@ -1362,10 +1362,13 @@ fn circular_notches_held_out() {
     held_out(
         "circular notches",
         circular,
-        ([4, 12, 12, 12, 12, 18, 16, 6, 6, 6, 6, 6, 6, 6, 14, 12], [0; 16]),
+        (
+            [4, 12, 12, 12, 12, 18, 16, 6, 6, 6, 6, 6, 6, 6, 14, 12, 11],
+            [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5, 6, 5],
+        ),
         CIRCULAR_TOL,
         CIRCULAR_SEEN_TOL,
-        None,
+        Some(CIRCULAR_BEYOND_TOL),
     );
 }
 
@@ -1375,8 +1378,8 @@ fn corner_filleted_held_out() {
         "corner-filleted hinges",
         corner,
         (
-            [16, 12, 12, 12, 20, 20, 16, 24, 24, 24, 24, 24, 24, 24, 16, 20],
-            [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 16, 0, 6],
+            [16, 12, 12, 12, 20, 20, 16, 24, 24, 24, 24, 24, 24, 24, 16, 20, 20],
+            [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 16, 0, 14, 14],
         ),
         CORNER_TOL,
         CORNER_SEEN_TOL,
@@ -1393,10 +1396,8 @@ fn corner_filleted_held_out() {
 /// outside the regimes is within [`OUTSIDE_BIAS_TOL`] (bending, torsion, axial, %). The
 /// references outside the calibrated ranges, which get a range warning instead
 /// (`range_warnings`, and the `hinge` analysis's `short_blank_warning`), are counted: the 16 of
-/// [`DOE16`]'s leaves in tall very short or very tall blanks and the 6 of [`DOE18`]'s with R/t
-/// below 1 (checked in [`held_out`]); the 437 others include [`DOE17`]'s and [`DOE18`]'s 11
-/// circular notches in blanks 0.31–0.48 h long and [`DOE18`]'s 8 leaves with R/t ≥ 1 beyond the
-/// first ranges, inside the ranges since their widening.
+/// [`DOE16`]'s leaves in tall very short or very tall blanks, [`DOE17`]'s 5, [`DOE18`]'s 20 and
+/// [`DOE19`]'s 19 compared (checked in [`held_out`]), 60 in all; 430 others.
 #[test]
 fn known_bias_warnings_state_the_measured_bands() {
     use flexfem::hinge::calibration::{known_bias, range_warnings, short_blank_warning, SHORT_WIDE_LEAF};
@@ -1458,8 +1459,8 @@ fn known_bias_warnings_state_the_measured_bands() {
             }
         }
     }
-    assert_eq!(range_warned, 22, "references outside the calibrated ranges");
-    assert_eq!(others, 437, "references inside the ranges and outside the regimes");
+    assert_eq!(range_warned, 60, "references outside the calibrated ranges");
+    assert_eq!(others, 430, "references inside the ranges and outside the regimes");
     println!("outside the known-bias regimes: worst bending / torsion / axial / peak {outside:.2?} %");
     for q in 0..4 {
         assert!(
@@ -1572,8 +1573,9 @@ fn peak_stress_mesh_convergence() {
 /// solved at n = 3 as well as n = 4, and the stiffnesses compared are the order-2 Richardson
 /// extrapolation of the pair ([`CcxRef::converged`]). Checked here on the data alone, no flexfem
 /// number involved:
-/// * n = 4 is not converged: up to +39.98 % stiff in bending against the n = 3/4 extrapolation
-///   on [`DOE17`]'s circular R2.15/t0.7/w12.1/h10.9 (its n = 3 mesh too coarse), +22.01 % on
+/// * n = 4 is not converged: up to +47.14 % stiff in bending against the n = 3/4 extrapolation
+///   on [`DOE19`]'s circular R1.9/t0.75/w12.4/h11.9 and +39.98 % on [`DOE17`]'s
+///   R2.15/t0.7/w12.1/h10.9 (their n = 3 meshes too coarse), +22.01 % on
 ///   the sixteenth design's very tall blanks, +5.82 % before them (the
 ///   earlier claim, "within about 0.3 %", came from two hinges);
 /// * on the references re-solved at n = 6 (`tools/ccx_refine_n6_results.jsonl`: every one with
@@ -1618,7 +1620,7 @@ fn extrapolation_checked_on_finer_meshes() {
     }
     println!("n = 4 above the n = 3/4 extrapolation by up to {off:.2?} % (bending, torsion, axial)");
     assert!(
-        (39.9..40.1).contains(&off[0]),
+        (47.0..47.3).contains(&off[0]),
         "bending: n = 4 off by up to {:.2} %",
         off[0]
     );
@@ -1743,12 +1745,25 @@ fn extrapolation_checked_on_finer_meshes() {
             -steps[1],
             100.0 * (k46 / k68 - 1.0)
         );
-        assert!(
-            steps[1].abs() < PRE_ASYMPTOTIC_N6_TO_N8 && steps[1].abs() < steps[0].abs() / 4.0,
-            "n = 6 → 8 {:.2} % after n = 4 → 6 {:.2} %",
-            steps[1],
-            steps[0]
-        );
+        // Converged at n = 8, or still moving and listed as not converged (not compared).
+        let listed = UNCONVERGED.iter().any(|h| {
+            let spec: serde_json::Value = serde_json::from_str(h).unwrap();
+            spec.as_object().unwrap().iter().all(|(k, v)| l6[k.as_str()] == *v)
+        });
+        if listed {
+            assert!(
+                steps[1].abs() > 5.0,
+                "listed as not converged, n = 6 → 8 {:.2} %",
+                steps[1]
+            );
+        } else {
+            assert!(
+                steps[1].abs() < PRE_ASYMPTOTIC_N6_TO_N8 && steps[1].abs() < steps[0].abs() / 4.0,
+                "n = 6 → 8 {:.2} % after n = 4 → 6 {:.2} %",
+                steps[1],
+                steps[0]
+            );
+        }
     }
     assert_eq!(
         pre_asymptotic,
@@ -1816,7 +1831,7 @@ fn converged_peaks_checked() {
         .values()
         .map(|lines| lines.iter().filter(|l| l["type"] != "spherical_neck").count())
         .sum();
-    assert_eq!((sources.len(), k12.len(), flat_notches), (19, 560, 560));
+    assert_eq!((sources.len(), k12.len(), flat_notches), (20, 592, 592));
     let (n3, n6) = (
         compared_lines("ccx_refine_n3_results.jsonl"),
         compared_lines(N6_RESULTS),
@@ -1858,7 +1873,9 @@ fn converged_peaks_checked() {
     }
     println!("{on_flats} corner-filleted peaks on the flat, the others on the fillet arc");
     println!("n = 4 peak → converged {:+.2} … {:+.2} %; eighth's bending at least {:+.2} % from the full model's converged, at most {:+.2} % from its n = 4", moved.0, moved.1, bend.0, bend.1);
-    assert!(moved.0 > -7.0 && moved.1 < 24.3, "n = 4 → converged {moved:?}");
+    // +31.03 % on [`DOE19`]'s unconverged notch (its k = 12 eighth is converged; its full
+    // models are not), +24.20 % on [`DOE18`]'s R1.1/t0.35 notch.
+    assert!(moved.0 > -7.0 && moved.1 < 31.1, "n = 4 → converged {moved:?}");
     assert!(bend.0 > -EIGHTH_BEND_TOL && bend.1 < 0.0, "eighth's bending {bend:?}");
     // Refinement k = 12 → 16.
     let k16 = json_lines(PEAKS_K16);

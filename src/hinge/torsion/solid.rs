@@ -110,12 +110,9 @@
 //!   section before the face line rises above it). It never acts on a mechanism's hinge element
 //!   ([`EndFaces::Continuous`]), whose ends are nodes in continuous material: there the node's
 //!   place is a modelling choice, and a face term would make the torsion depend on it. On the
-//!   first sixteen CalculiX designs the term acts on corner-filleted leaves only (up to +17.1 %;
-//!   blanks down to 0.52 h long, h/t up to 9.8) and on no circular notch; the seventeenth and
-//!   eighteenth designs' circular notches in tall short blanks (0.31–0.67 h long, up to 21 t
-//!   tall) and leaves with R/t ≥ 1 in blanks down to 0.31 h long and up to 15.9 t tall, where it
-//!   acts by up to +8.8 % and +11.8 %, met every target too (the wider boxes judged by a
-//!   nineteenth design, pending); where it is extrapolated the `hinge` analysis warns with its size ([`crate::hinge::calibration::end_face_warning`]). Why: the thirteenth and fourteenth
+//!   CalculiX designs the term acts on corner-filleted leaves only (up to +17.1 %; blanks down to
+//!   0.52 h long, h/t up to 9.8) and on no circular notch; where it is extrapolated the `hinge`
+//!   analysis warns with its size ([`crate::hinge::calibration::end_face_warning`]). Why: the thirteenth and fourteenth
 //!   designs found short wide leaves in tall short blanks (h/t 6.3–9.0, blank length 0.5–1 h) too soft, down to −12.23 %, the error
 //!   growing with how far the bending's spreading zone is cut off by the end face (r = −0.85
 //!   over the 71 short wide leaves then known), while the spreading slopes alone only moved the
