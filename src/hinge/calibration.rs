@@ -21,7 +21,8 @@
 //! 4.40 %); the torsion law of [`super::torsion::solid_torsion_stiffness`], the axial load's
 //! spreading ([`super::profile::AXIAL_BLANK_SLOPE`]) and the corner-filleted peak law
 //! ([`super::stress::stress_factor`], with a one-dimension sweep of 85 notches) were fitted there.
-//! Corner-filleted hinges are range-checked in w/t and h/t ([`CORNER_H_OVER_T`]: a sixteenth
+//! Corner-filleted hinges are range-checked in l/t, R/t ([`CORNER_L_OVER_T`], [`CORNER_R_OVER_T`]),
+//! w/t and h/t ([`CORNER_H_OVER_T`]: a sixteenth
 //! design's leaves in blanks 10.3–13.7 t tall read torsion −10.7 … +19.7 %; the bundled pan-tilt
 //! hinge, h/t 25, warns, though the scikit-fem model of it reads within 3.3 %), and the `hinge`
 //! analysis checks the blank length of circular and corner-filleted hinges
@@ -227,6 +228,27 @@ pub fn range_warnings(profile: &Profile) -> Vec<String> {
                 CORNER_H_OVER_T.1,
                 "CalculiX designs; a sixteenth design's leaves at h/t 10.3–13.7 read torsion −10.7 … +19.7 %",
             );
+            if let Contour::CornerFilleted { l, r, .. } = profile.contour {
+                let what = "CalculiX designs";
+                check(
+                    &mut out,
+                    "corner_filleted",
+                    "l/t",
+                    l / t,
+                    CORNER_L_OVER_T.0,
+                    CORNER_L_OVER_T.1,
+                    what,
+                );
+                check(
+                    &mut out,
+                    "corner_filleted",
+                    "R/t",
+                    r / t,
+                    CORNER_R_OVER_T.0,
+                    CORNER_R_OVER_T.1,
+                    what,
+                );
+            }
         }
         Contour::Leaf { .. } => {
             check(&mut out, "leaf", "w/t", w / t, 0.5, 20.0, "plane-strain factor P");
@@ -244,6 +266,16 @@ pub fn range_warnings(profile: &Profile) -> Vec<String> {
 /// targets (2.63–9.97); the sixteenth design's leaves in taller blanks (h/t 10.3–13.7) read
 /// torsion −10.74 … +19.74 % (tests/hinge_ccx_reference.rs).
 pub const CORNER_H_OVER_T: (f64, f64) = (2.6, 10.0);
+
+/// Flat length over waist thickness of the corner-filleted CalculiX designs (2.0–10.0 over
+/// their 376 models): the torsion law, the axial spreading and the peak law were fitted and
+/// checked only there, so a longer or shorter leaf is warned about as extrapolated.
+pub const CORNER_L_OVER_T: (f64, f64) = (2.0, 10.0);
+
+/// Fillet radius over waist thickness of the corner-filleted CalculiX designs (0.5–2.5 over
+/// their 376 models): a sharper or blunter fillet is warned about as extrapolated (beyond the
+/// other ranges, the largest torsion misses were on leaves with R/t ≤ 1.0).
+pub const CORNER_R_OVER_T: (f64, f64) = (0.5, 2.5);
 
 /// The `hinge` analysis's warning of a circular or corner-filleted hinge whose blank is shorter
 /// than [`END_FACE_MIN_B_OVER_H`] times its height, below the CalculiX designs that meet the
@@ -321,8 +353,8 @@ pub fn end_face_extrapolation(profile: &Profile, gain: f64) -> Option<EndFaceExt
         Contour::SphericalNeck { .. } => None,
         Contour::CornerFilleted { l, r, .. } => {
             let ratios = [
-                ("l/t", l / t, 2.0, 10.0),
-                ("R/t", r / t, 0.5, 2.5),
+                ("l/t", l / t, CORNER_L_OVER_T.0, CORNER_L_OVER_T.1),
+                ("R/t", r / t, CORNER_R_OVER_T.0, CORNER_R_OVER_T.1),
                 ("w/t", w / t, 1.0, 20.0),
                 ("h/t", h / t, 0.0, CORNER_H_OVER_T.1),
                 (

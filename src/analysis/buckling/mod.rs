@@ -258,4 +258,7 @@ impl Analysis for Buckling {
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         named_materials(&case.model.materials)
     }
+    fn mesh_model(case: &Self::Case) -> Option<&crate::case::mesh::MeshSpec> {
+        Some(&case.model)
+    }
 }

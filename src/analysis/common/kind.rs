@@ -78,6 +78,12 @@ pub trait Analysis: 'static {
     fn case_warnings(_case: &Self::Case) -> Vec<String> {
         Vec::new()
     }
+    /// The model of a mesh case (`static`, `modal`, ...), whose hinge elements' calibration
+    /// warnings ([`crate::case::mesh::MeshSpec::hinge_warnings`]) every run lists after
+    /// [`Self::case_warnings`]; `None` for the kinds without one.
+    fn mesh_model(_case: &Self::Case) -> Option<&crate::case::mesh::MeshSpec> {
+        None
+    }
     /// Warnings that depend on the case and its result, listed after [`Self::case_warnings`].
     fn result_warnings(_case: &Self::Case, _result: &Self::Result) -> Vec<String> {
         Vec::new()
@@ -147,6 +153,7 @@ pub fn run_typed<A: Analysis>(case: &A::Case, ctx: &mut Ctx) -> Result<Typed<A::
     let result = A::run(case, ctx)?;
     let mut warnings = std::mem::take(&mut ctx.warnings);
     warnings.extend(A::case_warnings(case));
+    warnings.extend(A::mesh_model(case).map(|m| m.hinge_warnings()).unwrap_or_default());
     warnings.extend(material_warnings::<A>(case));
     warnings.extend(A::result_warnings(case, &result));
     Ok(Typed {

@@ -275,6 +275,9 @@ impl Analysis for CraigBamptonKind {
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         named_materials(&case.model.materials)
     }
+    fn mesh_model(case: &Self::Case) -> Option<&crate::case::mesh::MeshSpec> {
+        Some(&case.model)
+    }
 
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         case.build().map(|_| ())

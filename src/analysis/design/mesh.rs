@@ -60,9 +60,13 @@ pub fn check_sensitivity<A: StaticAnalysis>(c: &MeshSensitivityCase) -> Result<V
     validate(&c.inner, &c.parameters, None)
 }
 
-/// Runs a mesh sensitivity case.
-pub fn run_sensitivity<A: StaticAnalysis>(c: &MeshSensitivityCase) -> Result<MeshSensitivityResult, RunError> {
+/// Runs a mesh sensitivity case: the result, and the calibration warnings of the base design's
+/// hinge elements.
+pub fn run_sensitivity<A: StaticAnalysis>(
+    c: &MeshSensitivityCase,
+) -> Result<(MeshSensitivityResult, Vec<String>), RunError> {
     let v = check_sensitivity::<A>(c).map_err(case_error)?;
+    let warnings = v.case.model.hinge_warnings();
     let names = v.problem.responses().to_vec();
     let (r0, rows) =
         problem::sensitivity(&v.problem, &v.base, c.increment).map_err(|m| AnalysisError::new("sensitivity", m))?;
@@ -88,7 +92,7 @@ pub fn run_sensitivity<A: StaticAnalysis>(c: &MeshSensitivityCase) -> Result<Mes
             elasticity: named(&names, row.elasticity),
         })
         .collect();
-    Ok(MeshSensitivityResult {
+    let result = MeshSensitivityResult {
         base: named(&names, r0),
         increment: c.increment,
         rows,
@@ -96,7 +100,8 @@ pub fn run_sensitivity<A: StaticAnalysis>(c: &MeshSensitivityCase) -> Result<Mes
             "each row: the case run with one parameter increased by `increment` (the others at their declared values); expressions of the case follow the parameter".into(),
             "a stroke_at_allowable metric enters through its `stroke`".into(),
         ],
-    })
+    };
+    Ok((result, warnings))
 }
 
 /// Markdown/CSV of a mesh sensitivity.
@@ -279,8 +284,9 @@ pub fn check_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<(), CaseErr
     goals(c, &v.problem).map(|_| ())
 }
 
-/// Runs a mesh design case.
-pub fn run_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<MeshDesignResult, RunError> {
+/// Runs a mesh design case: the result, and the calibration warnings of the hinge elements of
+/// the design found (`design found, elements[i].hinge: ...`).
+pub fn run_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<(MeshDesignResult, Vec<String>), RunError> {
     c.check_fields()?;
     let v = validate::<A>(&c.inner, &c.parameters, compliance_node(c))?;
     let (reqs, objective) = goals(c, &v.problem)?;
@@ -341,7 +347,12 @@ pub fn run_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<MeshDesignRes
             "match_compliance: J = Σ w (C − C_target)² / Σ w C_target² over the 36 entries of node {n}'s compliance (global axes)"
         ));
     }
-    Ok(MeshDesignResult {
+    let warnings = p
+        .hinge_warnings_at(&out.params)
+        .into_iter()
+        .map(|w| format!("design found, {w}"))
+        .collect();
+    let result = MeshDesignResult {
         design: named(pnames, out.params.iter().copied()),
         meets: out.meets,
         metrics: named(mnames, out.responses.iter().copied()),
@@ -370,7 +381,8 @@ pub fn run_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<MeshDesignRes
             })
             .collect(),
         model,
-    })
+    };
+    Ok((result, warnings))
 }
 
 /// Markdown/CSV of a mesh design.

@@ -191,6 +191,16 @@ impl<A: StaticAnalysis> MeshProblem<A> {
         v
     }
 
+    /// The calibration warnings of the hinge elements of design `p`
+    /// ([`crate::case::mesh::MeshSpec::hinge_warnings`]); none if the design does not parse
+    /// (its run reports that).
+    pub fn hinge_warnings_at(&self, p: &[f64]) -> Vec<String> {
+        let wr = &self.written;
+        A::parse_static_in(self.design_value(p), wr.mesh.clone(), wr.dir.as_deref())
+            .map(|parsed| parsed.case.model.hinge_warnings())
+            .unwrap_or_default()
+    }
+
     /// Runs design `p` as a static case.
     fn run(&self, w: &mut SolverCache, p: &[f64]) -> Result<StaticResult, String> {
         let at = |e: CaseError| format!("{}: {}", e.path, e.message);

@@ -208,7 +208,9 @@ impl Analysis for Sensitivity {
                 Ok(design::SensitivityOut::Stage(r))
             }
             case::design_mesh::SensitivitySpec::Mesh(c) => {
-                design_mesh::run_sensitivity::<Static>(c).map(design::SensitivityOut::Mesh)
+                let (r, warnings) = design_mesh::run_sensitivity::<Static>(c)?;
+                ctx.warnings = warnings;
+                Ok(design::SensitivityOut::Mesh(r))
             }
         }
     }
@@ -246,7 +248,11 @@ impl Analysis for Design {
                 ctx.warnings = warnings;
                 Ok(design::DesignOut::Stage(r))
             }
-            case::design_mesh::DesignSpec::Mesh(c) => design_mesh::run_design::<Static>(c).map(design::DesignOut::Mesh),
+            case::design_mesh::DesignSpec::Mesh(c) => {
+                let (r, warnings) = design_mesh::run_design::<Static>(c)?;
+                ctx.warnings = warnings;
+                Ok(design::DesignOut::Mesh(r))
+            }
         }
     }
     fn report(r: &Self::Result) -> Report {
@@ -414,6 +420,9 @@ impl Analysis for Static {
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         named_materials(&case.model.materials)
     }
+    fn mesh_model(case: &Self::Case) -> Option<&crate::case::mesh::MeshSpec> {
+        Some(&case.model)
+    }
     fn material_map(case: &Self::Case) -> Option<&std::collections::BTreeMap<String, MaterialSpec>> {
         Some(&case.model.materials)
     }
@@ -460,6 +469,9 @@ impl Analysis for Modal {
     }
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         named_materials(&case.model.materials)
+    }
+    fn mesh_model(case: &Self::Case) -> Option<&crate::case::mesh::MeshSpec> {
+        Some(&case.model)
     }
 }
 

@@ -260,4 +260,7 @@ impl Analysis for FrfKind {
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         crate::analysis::common::kind::named_materials(&case.model.materials)
     }
+    fn mesh_model(case: &Self::Case) -> Option<&crate::case::mesh::MeshSpec> {
+        Some(&case.model)
+    }
 }

@@ -458,4 +458,7 @@ impl Analysis for TransientKind {
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         named_materials(&case.model.materials)
     }
+    fn mesh_model(case: &Self::Case) -> Option<&crate::case::mesh::MeshSpec> {
+        Some(&case.model)
+    }
 }

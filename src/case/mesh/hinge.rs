@@ -3,6 +3,7 @@
 
 pub use super::lookup::BuiltHinge;
 use super::lookup::Ctx;
+use super::shapes::ElementSpec;
 use crate::case::error::CaseError;
 use crate::case::hinge::hinge_error;
 use crate::fem;
@@ -206,5 +207,64 @@ fn strip_blank(v: &mut Value) {
         }
         Value::Array(a) => a.iter_mut().for_each(strip_blank),
         _ => {}
+    }
+}
+
+impl super::shapes::MeshSpec {
+    /// The calibration warnings of the model's `hinge` elements
+    /// ([`hinge::calibration::calibration_warnings`]: geometry outside the solid-calibrated
+    /// ranges, or inside them in a regime with a known bias), each distinct warning once, naming
+    /// every element it applies to (`elements[i].hinge`, then the others alike). A mechanism's
+    /// hinge element has continuous material at its ends, so the `hinge` analysis's warnings of
+    /// its blank and rigid end faces do not apply. Elements that do not build (a malformed hinge)
+    /// give none: building the model reports them.
+    pub fn hinge_warnings(&self) -> Vec<String> {
+        let mut found: Vec<(String, Vec<usize>)> = Vec::new();
+        // Hinges of one `hinge_types` entry are checked once.
+        let mut seen: Vec<(&Value, Vec<String>)> = Vec::new();
+        for (ie, e) in self.elements.iter().enumerate() {
+            let ElementSpec::Hinge { hinge, .. } = e else {
+                continue;
+            };
+            let warnings = match seen.iter().position(|(v, _)| *v == hinge) {
+                Some(i) => &seen[i].1,
+                None => {
+                    seen.push((hinge, element_calibration(hinge)));
+                    &seen[seen.len() - 1].1
+                }
+            };
+            for w in warnings {
+                match found.iter_mut().find(|(f, _)| f == w) {
+                    Some((_, elements)) => elements.push(ie),
+                    None => found.push((w.clone(), vec![ie])),
+                }
+            }
+        }
+        found
+            .into_iter()
+            .map(|(w, elements)| match elements.split_first() {
+                Some((first, [])) => format!("elements[{first}].hinge: {w}"),
+                Some((first, rest)) => {
+                    let rest: Vec<String> = rest.iter().map(usize::to_string).collect();
+                    format!("elements[{first}].hinge (likewise elements {}): {w}", rest.join(", "))
+                }
+                None => w,
+            })
+            .collect()
+    }
+}
+
+/// [`hinge::calibration::calibration_warnings`] of a hinge element's `hinge` object; none if it
+/// does not parse. They depend on the notch and the blank's section, not on the blank's length
+/// (which the node distance sets), so the notch alone is checked.
+fn element_calibration(hinge: &Value) -> Vec<String> {
+    // As [`parse_spec`], without its JSON-path tracking: an error here is the builder's to report.
+    let mut v = hinge.clone();
+    if let Value::Object(map) = &mut v {
+        map.entry("blank_length").or_insert(Value::from(0.0));
+    }
+    match serde_json::from_value::<HingeSpec>(v).map(|spec| spec.profile_with_blank(Some(0.0))) {
+        Ok(Ok(p)) => hinge::calibration::calibration_warnings(&p),
+        _ => Vec::new(),
     }
 }
