@@ -339,7 +339,8 @@ fn calibrated_hinge_has_no_warning() {
     assert!(warnings(&v).is_empty());
 }
 
-/// A turned neck with l/t = 8 (above 5) warns; so does a wide leaf (w/t = 40 > 20).
+/// A turned neck with l/t = 8 (above 5) warns; so do a wide leaf (w/t = 40 > 20) and a narrow
+/// corner-filleted one (w/t = 0.8 < 1).
 #[test]
 fn neck_and_leaf_outside_calibration_warn() {
     let v = json(&run_case_text(
@@ -357,6 +358,16 @@ fn neck_and_leaf_outside_calibration_warn() {
     ));
     let w = warnings(&v);
     assert!(w.len() == 1 && w[0].contains("w/t = 40"), "{w:?}");
+    // A corner-filleted leaf narrower than any CalculiX design's (w/t 0.8 < 1; the plane-strain
+    // factor's 0.5 does not cover its torsion law).
+    let v = json(&run_case_text(
+        "warn_narrow_leaf",
+        r#"{"analysis": "hinge", "hinge": {"type": "corner_filleted", "l": 5, "R": 1, "t": 1, "w": 0.8, "h": 6, "blank_length": 6}}"#,
+    ));
+    assert_eq!(
+        warnings(&v),
+        ["hinge: corner_filleted w/t = 0.8 is outside the solid-calibrated range 1–20 (CalculiX designs): extrapolated"]
+    );
 }
 
 /// The stage evaluates its hinges: a revolute notch outside the range is warned about with its

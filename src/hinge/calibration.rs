@@ -21,8 +21,8 @@
 //! 4.40 %); the torsion law of [`super::torsion::solid_torsion_stiffness`], the axial load's
 //! spreading ([`super::profile::AXIAL_BLANK_SLOPE`]) and the corner-filleted peak law
 //! ([`super::stress::stress_factor`], with a one-dimension sweep of 85 notches) were fitted there.
-//! Corner-filleted hinges are range-checked in l/t, R/t ([`CORNER_L_OVER_T`], [`CORNER_R_OVER_T`]),
-//! w/t and h/t ([`CORNER_H_OVER_T`]: a sixteenth
+//! Corner-filleted hinges are range-checked in l/t, R/t, w/t ([`CORNER_L_OVER_T`],
+//! [`CORNER_R_OVER_T`], [`CORNER_W_OVER_T`]) and h/t ([`CORNER_H_OVER_T`]: a sixteenth
 //! design's leaves in blanks 10.3–13.7 t tall read torsion −10.7 … +19.7 %; the bundled pan-tilt
 //! hinge, h/t 25, warns, though the scikit-fem model of it reads within 3.3 %), and the `hinge`
 //! analysis checks the blank length of circular and corner-filleted hinges
@@ -215,9 +215,9 @@ pub fn range_warnings(profile: &Profile) -> Vec<String> {
                 "corner_filleted",
                 "w/t",
                 w / t,
-                0.5,
-                20.0,
-                "plane-strain factor P",
+                CORNER_W_OVER_T.0,
+                CORNER_W_OVER_T.1,
+                "CalculiX designs",
             );
             check(
                 &mut out,
@@ -266,6 +266,13 @@ pub fn range_warnings(profile: &Profile) -> Vec<String> {
 /// targets (2.63–9.97); the sixteenth design's leaves in taller blanks (h/t 10.3–13.7) read
 /// torsion −10.74 … +19.74 % (tests/hinge_ccx_reference.rs).
 pub const CORNER_H_OVER_T: (f64, f64) = (2.6, 10.0);
+
+/// Width over waist thickness of the corner-filleted CalculiX designs (1.0–20.0 over their 376
+/// models): the plane-strain factor P holds down to 0.5 for every rectangular family, but the
+/// corner-filleted torsion and axial laws were fitted and checked only from 1 (a narrow
+/// circular notch, w/t 0.58–0.76, read torsion +10 … +13 % until compact waists stopped carrying
+/// warping restraint).
+pub const CORNER_W_OVER_T: (f64, f64) = (1.0, 20.0);
 
 /// Flat length over waist thickness of the corner-filleted CalculiX designs (2.0–10.0 over
 /// their 376 models): the torsion law, the axial spreading and the peak law were fitted and
@@ -355,7 +362,7 @@ pub fn end_face_extrapolation(profile: &Profile, gain: f64) -> Option<EndFaceExt
             let ratios = [
                 ("l/t", l / t, CORNER_L_OVER_T.0, CORNER_L_OVER_T.1),
                 ("R/t", r / t, CORNER_R_OVER_T.0, CORNER_R_OVER_T.1),
-                ("w/t", w / t, 1.0, 20.0),
+                ("w/t", w / t, CORNER_W_OVER_T.0, CORNER_W_OVER_T.1),
                 ("h/t", h / t, 0.0, CORNER_H_OVER_T.1),
                 (
                     "blank_length/h",
