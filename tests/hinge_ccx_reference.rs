@@ -1185,7 +1185,7 @@ const PRE_ASYMPTOTIC_ROWS: usize = 2;
 /// from 6 to 8, −0.11 % from 8 to 10; its root-refined eighth, an upper bound, 4727; its curved
 /// n = 3 meshes failed). It was left out of every comparison until then: against the n = 6/8
 /// extrapolation (4145) flexfem read bending +14.16 % and torsion +15.22 % at the one
-/// comparison; against the n = 8/10 one, 4722, bending +0.24 %, torsion +8.16 %. Its torsion
+/// comparison; against the n = 8/10 one, 4722, bending +0.22 %, torsion +8.16 %. Its torsion
 /// gets the end-face warning (+15.7 % term), and its blank (0.44 h) the short-blank warning.
 const PRE_ASYMPTOTIC_N6_ROWS: usize = 1;
 const PRE_ASYMPTOTIC_N6_TO_N8: f64 = 0.3;

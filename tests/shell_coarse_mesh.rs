@@ -25,7 +25,8 @@
 //! scaled by one factor f: the square is within ±5 % only for 0.58 ≤ f ≤ 0.68, the skew plate
 //! only for f ≥ 1.11 (and f would be a constant chosen on these plates). The tiles' polar moment
 //! shared equally between the two rotations (an isotropic rotary inertia, the tile's tensor's
-//! mean): the square is unchanged (its tiles are isotropic already; mode 4 −7.07 %), the skew
+//! mean; measured with a temporary switch in `flexfem::fem::shell::shell_local_mass`, not
+//! kept): the square is unchanged (its tiles are isotropic already; mode 4 −7.07 %), the skew
 //! plate −3.02…+2.80 %; on other clamped plates at 8×8 (largest |error| against Richardson of
 //! 48×48 and 96×96) skew 30° 5.29 → 4.07 %, skew 60° 23.9 → 12.4 %, a smoothly distorted square
 //! mesh 6.95 → 6.70 %, a trapezoid 4.78 → 4.22 %, but 2:1 rectangular elements 6.70 → 9.42 %: the

@@ -1,8 +1,10 @@
 //! Every result carries a top-level `warnings` list; hinges outside the range their solid
 //! calibration covers are warned about in the result and the report.
 //!
-//! Calibration ranges (tests/hinge_solid_reference.rs, converged quadratic-tetrahedron solid
-//! models): circular notches t/R 0.06–0.5, w/t 0.5–20; turned necks l/t 1–5, t/R 0.67–2.
+//! Calibration ranges (tests/hinge_solid_reference.rs and tests/hinge_ccx_reference.rs,
+//! converged quadratic-tetrahedron solid models): circular notches t/R 0.06–0.5, w/t 0.5–20;
+//! turned necks l/t 1–5, t/R 0.67–2; corner-filleted hinges l/t 2–10, R/t 0.5–2.5, w/t 1–20,
+//! h/t 2.6–10. A mechanism's hinge elements are checked as the `hinge` analysis's hinges are.
 
 mod common;
 
@@ -444,7 +446,8 @@ fn nonlinear_static_warns_beyond_small_strain() {
 /// analysis's hinges are (`hinge::calibration::calibration_warnings`; their ends are continuous
 /// material, so not the blank's), in every analysis of the model: one warning per distinct
 /// finding, naming the elements it applies to. The bundled lever's two circular notches (t/R
-/// 0.2, w/t 10) are inside the ranges and warn about nothing.
+/// 0.2, w/t 10) are inside the ranges and warn about nothing; the kinds other than `static`
+/// and `modal` take the same hook (`Analysis::mesh_model`), checked here through `frf`.
 #[test]
 fn mesh_hinge_elements_warn_outside_calibration() {
     // One leaf longer (l/t 10.5) and with sharper fillets (R/t 0.3) than any CalculiX design's.
@@ -480,6 +483,15 @@ fn mesh_hinge_elements_warn_outside_calibration() {
             "modal: {modal}"
         );
     }
+    // The frequency response of the stage's FE model: one of its twelve hinge elements, its
+    // first revolute notch, too thick for its radius (t/R 5/8).
+    let out = run_bundled_with("ruiz2019_stage_frf.json", |c| {
+        c["elements"][0]["hinge"]["t"] = serde_json::json!(5.0);
+    });
+    assert_eq!(
+        out.warnings,
+        ["elements[0].hinge: circular_notch t/R = 0.625 is outside the solid-calibrated range 0.06–0.5 (41 circular notches): extrapolated"]
+    );
 }
 
 /// A mesh `sensitivity` warns about the hinge elements of its base design and a mesh `design`
@@ -493,7 +505,7 @@ fn mesh_sensitivity_and_design_warn_about_their_hinge_elements() {
     });
     assert_eq!(
         out.warnings,
-        ["elements[0].hinge (likewise elements 1): circular_notch t/R = 0.6 is outside the solid-calibrated range 0.06–0.5 (41 circular notches): extrapolated"]
+        ["case.elements[0].hinge (likewise elements 1): circular_notch t/R = 0.6 is outside the solid-calibrated range 0.06–0.5 (41 circular notches): extrapolated"]
     );
     // Every parallelogram within these bounds has t/R ≥ 2.6/5 = 0.52 > 0.5.
     let out = run_bundled_with("parallelogram_design.json", |c| {
@@ -505,7 +517,7 @@ fn mesh_sensitivity_and_design_warn_about_their_hinge_elements() {
     assert!(!out.warnings.is_empty());
     for w in &out.warnings {
         assert!(
-            w.starts_with("design found, elements[0].hinge (likewise elements "),
+            w.starts_with("design found, case.elements[0].hinge (likewise elements "),
             "{w}"
         );
         assert!(w.contains("circular_notch t/R = "), "{w}");
@@ -514,7 +526,9 @@ fn mesh_sensitivity_and_design_warn_about_their_hinge_elements() {
 
 /// A hinge element's calibration warnings are those of its notch with no blank
 /// (`MeshSpec::hinge_warnings`): they depend on the blank's section, not on its length, which
-/// the node distance sets. Checked on a hinge of every kind of finding and on calibrated ones.
+/// the node distance sets. Checked on hinges with findings in h/t and R/t, in l/t and R/t, in
+/// t/R, in l/t of a turned neck, and on calibrated ones (a short wide leaf among them, the
+/// checked regime with no band).
 #[test]
 fn calibration_warnings_do_not_depend_on_the_blank_length() {
     use flexfem::hinge::{calibration::calibration_warnings, HingeSpec};

@@ -209,7 +209,7 @@ pub fn range_warnings(profile: &Profile) -> Vec<String> {
                 "plane-strain factor P",
             );
         }
-        Contour::CornerFilleted { .. } => {
+        Contour::CornerFilleted { l, r, .. } => {
             check(
                 &mut out,
                 "corner_filleted",
@@ -228,27 +228,25 @@ pub fn range_warnings(profile: &Profile) -> Vec<String> {
                 CORNER_H_OVER_T.1,
                 "CalculiX designs; a sixteenth design's leaves at h/t 10.3–13.7 read torsion −10.7 … +19.7 %",
             );
-            if let Contour::CornerFilleted { l, r, .. } = profile.contour {
-                let what = "CalculiX designs";
-                check(
-                    &mut out,
-                    "corner_filleted",
-                    "l/t",
-                    l / t,
-                    CORNER_L_OVER_T.0,
-                    CORNER_L_OVER_T.1,
-                    what,
-                );
-                check(
-                    &mut out,
-                    "corner_filleted",
-                    "R/t",
-                    r / t,
-                    CORNER_R_OVER_T.0,
-                    CORNER_R_OVER_T.1,
-                    what,
-                );
-            }
+            let what = "CalculiX designs";
+            check(
+                &mut out,
+                "corner_filleted",
+                "l/t",
+                l / t,
+                CORNER_L_OVER_T.0,
+                CORNER_L_OVER_T.1,
+                what,
+            );
+            check(
+                &mut out,
+                "corner_filleted",
+                "R/t",
+                r / t,
+                CORNER_R_OVER_T.0,
+                CORNER_R_OVER_T.1,
+                what,
+            );
         }
         Contour::Leaf { .. } => {
             check(&mut out, "leaf", "w/t", w / t, 0.5, 20.0, "plane-strain factor P");
@@ -275,8 +273,9 @@ pub const CORNER_H_OVER_T: (f64, f64) = (2.6, 10.0);
 pub const CORNER_W_OVER_T: (f64, f64) = (1.0, 20.0);
 
 /// Flat length over waist thickness of the corner-filleted CalculiX designs (2.0–10.0 over
-/// their 376 models): the torsion law, the axial spreading and the peak law were fitted and
-/// checked only there, so a longer or shorter leaf is warned about as extrapolated.
+/// their 376 models): the torsion law and the axial spreading were fitted and checked only
+/// there (the peak law's one-dimension sweep reaches further), so a longer or shorter leaf is
+/// warned about as extrapolated.
 pub const CORNER_L_OVER_T: (f64, f64) = (2.0, 10.0);
 
 /// Fillet radius over waist thickness of the corner-filleted CalculiX designs (0.5–2.5 over

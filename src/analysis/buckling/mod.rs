@@ -8,6 +8,7 @@ use crate::analysis::common::kind::{Analysis, Ctx, UsedMaterial};
 use crate::analysis::common::kind::named_materials;
 use super::{AnalysisError, Report, RunError};
 use crate::case::fem_case::{modes_of, read_model, shapes_default, split, ModalOptions};
+use crate::case::mesh::MeshSpec;
 use crate::case::{from_value, CaseError};
 use crate::fem::buckling::{solve_buckling, BucklingOptions, BucklingResults};
 use crate::fem::{Element, Model};
@@ -258,7 +259,7 @@ impl Analysis for Buckling {
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         named_materials(&case.model.materials)
     }
-    fn mesh_model(case: &Self::Case) -> Option<&crate::case::mesh::MeshSpec> {
+    fn mesh_model(case: &Self::Case) -> Option<&MeshSpec> {
         Some(&case.model)
     }
 }

@@ -80,7 +80,8 @@ pub trait Analysis: 'static {
     }
     /// The model of a mesh case (`static`, `modal`, ...), whose hinge elements' calibration
     /// warnings ([`crate::case::mesh::MeshSpec::hinge_warnings`]) every run lists after
-    /// [`Self::case_warnings`]; `None` for the kinds without one.
+    /// [`Self::case_warnings`]; `None` for the kinds without one and for `constraints`, which
+    /// takes hinges as rigid or as ideal joints and never uses their stiffness.
     fn mesh_model(_case: &Self::Case) -> Option<&crate::case::mesh::MeshSpec> {
         None
     }
@@ -142,7 +143,7 @@ pub struct Typed<R> {
     pub result: R,
     /// Markdown and CSV views.
     pub report: Report,
-    /// Run, case, material and result warnings, in that order.
+    /// Run, case, mesh hinge element, material and result warnings, in that order.
     pub warnings: Vec<String>,
     /// Extra output files.
     pub files: Files,

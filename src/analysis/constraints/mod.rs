@@ -176,7 +176,8 @@ pub struct ConstraintsResult {
     pub suggestions: Vec<text::SuggestionOut>,
 }
 
-/// `constraints`: the exact-constraint check.
+/// `constraints`: the exact-constraint check. Its hinge elements are rigid or ideal joints, so
+/// their calibration (`Analysis::mesh_model`) does not enter and is not warned about.
 pub struct ConstraintsAnalysis;
 
 impl Analysis for ConstraintsAnalysis {

@@ -275,7 +275,7 @@ impl Analysis for CraigBamptonKind {
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         named_materials(&case.model.materials)
     }
-    fn mesh_model(case: &Self::Case) -> Option<&crate::case::mesh::MeshSpec> {
+    fn mesh_model(case: &Self::Case) -> Option<&MeshSpec> {
         Some(&case.model)
     }
 

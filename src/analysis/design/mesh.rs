@@ -61,12 +61,19 @@ pub fn check_sensitivity<A: StaticAnalysis>(c: &MeshSensitivityCase) -> Result<V
 }
 
 /// Runs a mesh sensitivity case: the result, and the calibration warnings of the base design's
-/// hinge elements.
+/// hinge elements (`case.elements[i].hinge: ...`).
 pub fn run_sensitivity<A: StaticAnalysis>(
     c: &MeshSensitivityCase,
 ) -> Result<(MeshSensitivityResult, Vec<String>), RunError> {
     let v = check_sensitivity::<A>(c).map_err(case_error)?;
-    let warnings = v.case.model.hinge_warnings();
+    // The inner case's JSON paths are under `case` (as its errors are).
+    let warnings = v
+        .case
+        .model
+        .hinge_warnings()
+        .into_iter()
+        .map(|w| format!("case.{w}"))
+        .collect();
     let names = v.problem.responses().to_vec();
     let (r0, rows) =
         problem::sensitivity(&v.problem, &v.base, c.increment).map_err(|m| AnalysisError::new("sensitivity", m))?;
@@ -285,7 +292,7 @@ pub fn check_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<(), CaseErr
 }
 
 /// Runs a mesh design case: the result, and the calibration warnings of the hinge elements of
-/// the design found (`design found, elements[i].hinge: ...`).
+/// the design found (`design found, case.elements[i].hinge: ...`).
 pub fn run_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<(MeshDesignResult, Vec<String>), RunError> {
     c.check_fields()?;
     let v = validate::<A>(&c.inner, &c.parameters, compliance_node(c))?;
@@ -350,7 +357,7 @@ pub fn run_design<A: StaticAnalysis>(c: &MeshDesignCase) -> Result<(MeshDesignRe
     let warnings = p
         .hinge_warnings_at(&out.params)
         .into_iter()
-        .map(|w| format!("design found, {w}"))
+        .map(|w| format!("design found, case.{w}"))
         .collect();
     let result = MeshDesignResult {
         design: named(pnames, out.params.iter().copied()),

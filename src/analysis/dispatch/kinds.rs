@@ -420,7 +420,7 @@ impl Analysis for Static {
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         named_materials(&case.model.materials)
     }
-    fn mesh_model(case: &Self::Case) -> Option<&crate::case::mesh::MeshSpec> {
+    fn mesh_model(case: &Self::Case) -> Option<&case::mesh::MeshSpec> {
         Some(&case.model)
     }
     fn material_map(case: &Self::Case) -> Option<&std::collections::BTreeMap<String, MaterialSpec>> {
@@ -470,7 +470,7 @@ impl Analysis for Modal {
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         named_materials(&case.model.materials)
     }
-    fn mesh_model(case: &Self::Case) -> Option<&crate::case::mesh::MeshSpec> {
+    fn mesh_model(case: &Self::Case) -> Option<&case::mesh::MeshSpec> {
         Some(&case.model)
     }
 }

@@ -8,6 +8,7 @@ use result::{rows, DirectCheck, FrfMode, FrfResult, OutputInfo, Pair, StateSpace
 use crate::analysis::common::kind::{Analysis, Ctx, UsedMaterial};
 use super::{AnalysisError, Report, RunError};
 use crate::case::error::CaseError;
+use crate::case::mesh::MeshSpec;
 use crate::fem::frf::{modal_frf, relative_difference, Damping, DirectFrf, ModalFrf, Ports, C64};
 use crate::fem::state_space::{state_space, StateSpace};
 use crate::fem::Model;
@@ -260,7 +261,7 @@ impl Analysis for FrfKind {
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         crate::analysis::common::kind::named_materials(&case.model.materials)
     }
-    fn mesh_model(case: &Self::Case) -> Option<&crate::case::mesh::MeshSpec> {
+    fn mesh_model(case: &Self::Case) -> Option<&MeshSpec> {
         Some(&case.model)
     }
 }

@@ -12,7 +12,7 @@ use crate::analysis::common::kind::{Analysis, Ctx, UsedMaterial};
 use crate::analysis::common::kind::named_materials;
 use super::{Report, RunError};
 use crate::case::fem_case::{mesh_rules, parse_with_model};
-use crate::case::mesh::{DofName, ElementSpec, GmshMapping};
+use crate::case::mesh::{DofName, ElementSpec, GmshMapping, MeshSpec};
 use crate::case::CaseError;
 use crate::fem::transient::{Damping, PrescribedMotion, Scheme, TransientLoad, TransientOptions};
 use crate::fem::{Dof, NodeDof};
@@ -458,7 +458,7 @@ impl Analysis for TransientKind {
     fn materials(case: &Self::Case) -> Vec<UsedMaterial> {
         named_materials(&case.model.materials)
     }
-    fn mesh_model(case: &Self::Case) -> Option<&crate::case::mesh::MeshSpec> {
+    fn mesh_model(case: &Self::Case) -> Option<&MeshSpec> {
         Some(&case.model)
     }
 }
