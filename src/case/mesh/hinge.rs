@@ -214,45 +214,89 @@ impl super::shapes::MeshSpec {
     /// The calibration warnings of the model's `hinge` elements
     /// ([`hinge::calibration::calibration_warnings`]: geometry outside the solid-calibrated
     /// ranges, or inside them in a regime with a known bias), each distinct warning once, naming
-    /// every element it applies to (`elements[i].hinge`, then the others alike). A mechanism's
-    /// hinge element has continuous material at its ends, so the `hinge` analysis's warnings of
-    /// its blank and rigid end faces do not apply. Elements that do not build (a malformed hinge)
-    /// give none: building the model reports them.
+    /// every element it applies to (`elements[i].hinge`, then the others alike); past
+    /// [`MAX_HINGE_WARNINGS`] distinct warnings, one more line counts the rest and names their
+    /// elements. A mechanism's hinge element has continuous material at its ends, so the `hinge`
+    /// analysis's warnings of its blank and rigid end faces do not apply. Elements that do not
+    /// build (a malformed hinge) give none: building the model reports them. Linear in the
+    /// number of elements (each distinct hinge object is checked once).
     pub fn hinge_warnings(&self) -> Vec<String> {
+        use std::collections::HashMap;
         let mut found: Vec<(String, Vec<usize>)> = Vec::new();
-        // Hinges of one `hinge_types` entry are checked once.
-        let mut seen: Vec<(&Value, Vec<String>)> = Vec::new();
+        let mut found_at: HashMap<String, usize> = HashMap::new();
+        // Hinges of one `hinge_types` entry are checked once: an element's object equal to the
+        // previous hinge element's is not serialised; others are looked up by their text.
+        let mut checked: HashMap<String, Vec<String>> = HashMap::new();
+        let mut last: Option<(&Value, String)> = None;
         for (ie, e) in self.elements.iter().enumerate() {
             let ElementSpec::Hinge { hinge, .. } = e else {
                 continue;
             };
-            let warnings = match seen.iter().position(|(v, _)| *v == hinge) {
-                Some(i) => &seen[i].1,
-                None => {
-                    seen.push((hinge, element_calibration(hinge)));
-                    &seen[seen.len() - 1].1
-                }
+            let key = match &last {
+                Some((v, key)) if *v == hinge => key.clone(),
+                _ => hinge.to_string(),
             };
-            for w in warnings {
-                match found.iter_mut().find(|(f, _)| f == w) {
-                    Some((_, elements)) => elements.push(ie),
-                    None => found.push((w.clone(), vec![ie])),
+            let warnings = checked.entry(key.clone()).or_insert_with(|| element_calibration(hinge));
+            last = Some((hinge, key));
+            for w in warnings.iter() {
+                match found_at.get(w) {
+                    Some(&i) => found[i].1.push(ie),
+                    None => {
+                        found_at.insert(w.clone(), found.len());
+                        found.push((w.clone(), vec![ie]));
+                    }
                 }
             }
         }
-        found
-            .into_iter()
+        let mut out: Vec<String> = found
+            .iter()
+            .take(MAX_HINGE_WARNINGS)
             .map(|(w, elements)| match elements.split_first() {
                 Some((first, [])) => format!("elements[{first}].hinge: {w}"),
-                Some((first, rest)) => {
-                    let rest: Vec<String> = rest.iter().map(usize::to_string).collect();
-                    format!("elements[{first}].hinge (likewise elements {}): {w}", rest.join(", "))
-                }
-                None => w,
+                Some((first, rest)) => format!("elements[{first}].hinge (likewise elements {}): {w}", index_runs(rest)),
+                None => w.clone(),
             })
-            .collect()
+            .collect();
+        if found.len() > MAX_HINGE_WARNINGS {
+            let mut rest: Vec<usize> = found[MAX_HINGE_WARNINGS..]
+                .iter()
+                .flat_map(|(_, elements)| elements.iter().copied())
+                .collect();
+            rest.sort_unstable();
+            rest.dedup();
+            out.push(format!(
+                "hinge elements: {} more calibration warnings, not listed, on elements {}",
+                found.len() - MAX_HINGE_WARNINGS,
+                index_runs(&rest)
+            ));
+        }
+        out
     }
 }
+
+/// Ascending indices as a list with runs of three or more as `a–b`: `[1, 2, 3, 5]` → `1–3, 5`.
+fn index_runs(indices: &[usize]) -> String {
+    let mut out: Vec<String> = Vec::new();
+    let mut i = 0;
+    while i < indices.len() {
+        let mut j = i;
+        while j + 1 < indices.len() && indices[j + 1] == indices[j] + 1 {
+            j += 1;
+        }
+        if j >= i + 2 {
+            out.push(format!("{}–{}", indices[i], indices[j]));
+        } else {
+            out.extend(indices[i..=j].iter().map(usize::to_string));
+        }
+        i = j + 1;
+    }
+    out.join(", ")
+}
+
+/// Distinct calibration warnings [`super::shapes::MeshSpec::hinge_warnings`] lists one by one
+/// (a model of many different hinges, each a little outside a range, would otherwise list one
+/// per hinge).
+pub const MAX_HINGE_WARNINGS: usize = 20;
 
 /// [`hinge::calibration::calibration_warnings`] of a hinge element's `hinge` object; none if it
 /// does not parse. They depend on the notch and the blank's section, not on the blank's length
