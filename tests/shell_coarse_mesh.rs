@@ -30,10 +30,9 @@
 //! plate −3.02…+2.80 %; on other clamped plates at 8×8 (largest |error| against Richardson of
 //! 48×48 and 96×96) skew 30° 5.29 → 4.07 %, skew 60° 23.9 → 12.4 %, a smoothly distorted square
 //! mesh 6.95 → 6.70 %, a trapezoid 4.78 → 4.22 %, but 2:1 rectangular elements 6.70 → 9.42 %: the
-//! tile's own
-//! tensor is the one exact for waves constant along either family of mesh lines of any
-//! parallelogram mesh (it gives kᵀSk = m·h⊥²/12, h⊥ the distance between the lines), which the
-//! isotropic one is not, so the tensor stays.
+//! tile's own tensor is the one exact for waves constant along either family of mesh lines of
+//! any parallelogram mesh (it gives kᵀSk = m·h⊥²/12, h⊥ the distance between the lines), which
+//! the isotropic one is not, so the tensor stays.
 //!
 //! Stiffnesses measured at 8×8 in search of ±5 % (`tools/plate_dispersion.py` prints every number
 //! below; Bloch coefficients in the notation of the last test):

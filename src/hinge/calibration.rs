@@ -210,6 +210,7 @@ pub fn range_warnings(profile: &Profile) -> Vec<String> {
             );
         }
         Contour::CornerFilleted { l, r, .. } => {
+            let what = "CalculiX designs";
             check(
                 &mut out,
                 "corner_filleted",
@@ -217,7 +218,7 @@ pub fn range_warnings(profile: &Profile) -> Vec<String> {
                 w / t,
                 CORNER_W_OVER_T.0,
                 CORNER_W_OVER_T.1,
-                "CalculiX designs",
+                what,
             );
             check(
                 &mut out,
@@ -228,7 +229,6 @@ pub fn range_warnings(profile: &Profile) -> Vec<String> {
                 CORNER_H_OVER_T.1,
                 "CalculiX designs; a sixteenth design's leaves at h/t 10.3–13.7 read torsion −10.7 … +19.7 %",
             );
-            let what = "CalculiX designs";
             check(
                 &mut out,
                 "corner_filleted",
