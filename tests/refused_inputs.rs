@@ -6,6 +6,8 @@ use flexfem::analysis::{self, Case, RunError};
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
 
+mod common;
+
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
@@ -167,4 +169,29 @@ fn elements_shorter_than_1e_9_of_the_model_size() {
     );
     let case = analysis::parse_value(ok, Some(&cases())).unwrap();
     analysis::check(&case).expect("a 1e-4 mm beam in a 100 mm model is accepted");
+}
+
+/// An error in the model of a mesh file the case names is reported at `mesh`, naming the file
+/// and the path inside it, for a mesh file without parameters or hinge types too: before, a
+/// node index out of range in the bundled pan-tilt's mesh file was reported at
+/// `elements[1].nodes[1]`, a path the case file does not have.
+#[test]
+fn an_error_in_a_mesh_files_model_names_the_file() {
+    let d = common::tempdir("mesh-file-error");
+    let mut mesh: Value =
+        serde_json::from_str(&std::fs::read_to_string(root().join("meshes/pantilt_8r.json")).unwrap()).unwrap();
+    assert!(mesh.get("parameters").is_none() && mesh.get("hinge_types").is_none());
+    mesh["elements"][1]["nodes"] = json!([0, 99]);
+    common::write(&d, "my_mesh.json", &mesh.to_string());
+    let mut case = bundled("pantilt_8r");
+    case["mesh"] = json!("my_mesh.json");
+    common::write(&d, "case.json", &case.to_string());
+    for cmd in ["check", "run"] {
+        let err = common::exits_2(&common::run_in(&d, &[cmd, "case.json"]), &["node index must be < 16"]);
+        assert!(
+            err.contains("at `mesh`: in mesh file \"my_mesh.json\" at `elements[1].nodes[1]`"),
+            "{cmd}: {err}"
+        );
+    }
+    common::cleanup(&d);
 }

@@ -307,12 +307,10 @@ pub fn resolve_case_in(
     let declared = take_declared(value)?;
     let case_types = take_hinge_types(value)?;
     let (mut all, mut types) = (BTreeMap::new(), Map::new());
-    let mut mesh_parameterised = false;
     if let Some((name, mv)) = &mut mesh {
         let in_mesh = |e: CaseError| in_mesh_file(name, e);
         all = take_declared(mv).map_err(in_mesh)?;
         types = take_hinge_types(mv).map_err(in_mesh)?;
-        mesh_parameterised = !(all.is_empty() && types.is_empty());
         for d in all.values_mut() {
             d.file = Some(name.clone());
         }
@@ -364,11 +362,9 @@ pub fn resolve_case_in(
     }
     *value = fill(template)?;
     if let Some((name, mv)) = &mut mesh {
-        if mesh_parameterised {
-            let written = value.as_object().into_iter().flat_map(|m| m.keys().cloned());
-            let taken = ["parameters", "hinge_types"].map(str::to_string);
-            origins.set_mesh(name, written.chain(taken).collect());
-        }
+        let written = value.as_object().into_iter().flat_map(|m| m.keys().cloned());
+        let taken = ["parameters", "hinge_types"].map(str::to_string);
+        origins.set_mesh(name, written.chain(taken).collect());
         let in_mesh = |e: CaseError| in_mesh_file(name, e);
         let mut used = Vec::new();
         expand_hinge_types(mv, &types, &mut String::new(), &mut used).map_err(in_mesh)?;

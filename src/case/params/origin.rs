@@ -25,9 +25,9 @@ struct Origin {
 #[derive(Debug, Clone, Default)]
 pub struct Origins {
     all: Vec<Origin>,
-    /// The JSON mesh file, when it declares parameters or hinge types (its model then changes
-    /// with the case's parameter values), and the top-level keys of the case as written: an
-    /// error at a path under another key is in the mesh file's model and is reported at `mesh`.
+    /// The JSON mesh file the case names and the top-level keys of the case as written: an
+    /// error at a path under another key is in the mesh file's model and is reported at `mesh`,
+    /// naming the file (a path such as `elements[3].nodes` is not in the case as written).
     mesh: Option<(String, Vec<String>)>,
 }
 
@@ -43,7 +43,7 @@ impl Origins {
         });
     }
 
-    /// Errors under the model of the parameterised mesh file `name` (the case as written has
+    /// Errors under the model of the JSON mesh file `name` (the case as written has
     /// the top-level keys `case_keys`) are reported at `mesh` ([`Self::locate`]).
     pub(super) fn set_mesh(&mut self, name: &str, case_keys: Vec<String>) {
         self.mesh = Some((name.to_string(), case_keys));
@@ -51,7 +51,7 @@ impl Origins {
 
     /// `e` moved to where the value at its path is set, if that path is one recorded (an
     /// expression site first, else inside a hinge-type use), or to `mesh` if it lies in the
-    /// model of a parameterised mesh file (e.g. an element made too short by node coordinates
+    /// model of the JSON mesh file (e.g. an element made too short by node coordinates
     /// written as expressions); otherwise `e` unchanged.
     pub fn locate(&self, e: CaseError) -> CaseError {
         let inside = |o: &Origin| {
@@ -81,7 +81,7 @@ impl Origins {
         )
     }
 
-    /// `e` at `mesh` when its path is in the model of the parameterised mesh file (its first
+    /// `e` at `mesh` when its path is in the model of the JSON mesh file (its first
     /// key is not one of the case as written); otherwise `e` unchanged.
     fn in_mesh(&self, e: CaseError) -> CaseError {
         let Some((name, case_keys)) = &self.mesh else {
