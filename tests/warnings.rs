@@ -74,16 +74,16 @@ const KNOWN: [(&str, &[&str]); 10] = [
         "pantilt_8r.json",
         &[
             "element 4 (hinge) is above its allowable stress",
-            "elements[0].hinge (likewise elements 1–7): corner_filleted h/t = 25",
-            "elements[0].hinge (likewise elements 1–7): corner_filleted R/t = 2.9167",
+            "mesh: in mesh file \"../meshes/pantilt_8r.json\" at `elements[0].hinge` (likewise elements 1–7): corner_filleted h/t = 25",
+            "mesh: in mesh file \"../meshes/pantilt_8r.json\" at `elements[0].hinge` (likewise elements 1–7): corner_filleted R/t = 2.9167",
         ],
     ),
     // The same eight hinges in free vibration.
     (
         "pantilt_8r_modal.json",
         &[
-            "elements[0].hinge (likewise elements 1–7): corner_filleted h/t = 25",
-            "elements[0].hinge (likewise elements 1–7): corner_filleted R/t = 2.9167",
+            "mesh: in mesh file \"../meshes/pantilt_8r.json\" at `elements[0].hinge` (likewise elements 1–7): corner_filleted h/t = 25",
+            "mesh: in mesh file \"../meshes/pantilt_8r.json\" at `elements[0].hinge` (likewise elements 1–7): corner_filleted R/t = 2.9167",
         ],
     ),
     // Equal actuator forces load the three legs alike: the leg named is the one whose stress is
@@ -495,7 +495,8 @@ fn mesh_hinge_elements_warn_outside_calibration() {
 }
 
 /// A mesh `sensitivity` warns about the hinge elements of its base design and a mesh `design`
-/// about those of the design it found (the stage's do the same, above).
+/// about those of the design it found (the stage's do the same, above), naming the mesh file
+/// the elements are in, as errors there are (`case.mesh: in mesh file "F" at `elements[0].hinge``).
 #[test]
 fn mesh_sensitivity_and_design_warn_about_their_hinge_elements() {
     // The lever's notches at t = 3, R = 5: t/R 0.6 > 0.5.
@@ -505,7 +506,10 @@ fn mesh_sensitivity_and_design_warn_about_their_hinge_elements() {
     });
     assert_eq!(
         out.warnings,
-        ["case.elements[0].hinge (likewise elements 1): circular_notch t/R = 0.6 is outside the solid-calibrated range 0.06–0.5 (41 circular notches): extrapolated"]
+        [format!(
+            "case.mesh: in mesh file \"{}\" at `elements[0].hinge` (likewise elements 1): circular_notch t/R = 0.6 is outside the solid-calibrated range 0.06–0.5 (41 circular notches): extrapolated",
+            root().join("meshes/lever_parameters.json").display()
+        )]
     );
     // Every parallelogram within these bounds has t/R ≥ 2.6/5 = 0.52 > 0.5.
     let out = run_bundled_with("parallelogram_design.json", |c| {
@@ -517,7 +521,10 @@ fn mesh_sensitivity_and_design_warn_about_their_hinge_elements() {
     assert!(!out.warnings.is_empty());
     for w in &out.warnings {
         assert!(
-            w.starts_with("design found, case.elements[0].hinge (likewise elements "),
+            w.starts_with(&format!(
+                "design found, case.mesh: in mesh file \"{}\" at `elements[0].hinge` (likewise elements ",
+                root().join("meshes/parallelogram_parameters.json").display()
+            )),
             "{w}"
         );
         assert!(w.contains("circular_notch t/R = "), "{w}");

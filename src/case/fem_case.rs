@@ -413,7 +413,9 @@ pub fn read_model(
                     format!("in mesh file \"{name}\" at `{}`: {}", e.path, e.message),
                 )
             })?;
-            MeshSpec::merge_inline(from_file, inline)?
+            let mut merged = MeshSpec::merge_inline(from_file, inline)?;
+            merged.mesh_file = Some(name.to_string());
+            merged
         }
         None => inline,
     };

@@ -214,7 +214,8 @@ impl super::shapes::MeshSpec {
     /// The calibration warnings of the model's `hinge` elements
     /// ([`hinge::calibration::calibration_warnings`]: geometry outside the solid-calibrated
     /// ranges, or inside them in a regime with a known bias), each distinct warning once, naming
-    /// every element it applies to (`elements[i].hinge`, then the others alike); past
+    /// every element it applies to (`elements[i].hinge`, then the others alike; in a mesh file,
+    /// `mesh: in mesh file "F" at `elements[i].hinge``, as errors there are); past
     /// [`MAX_HINGE_WARNINGS`] distinct warnings, one more line counts the rest and names their
     /// elements. A mechanism's hinge element has continuous material at its ends, so the `hinge`
     /// analysis's warnings of its blank and rigid end faces do not apply. Elements that do not
@@ -248,12 +249,20 @@ impl super::shapes::MeshSpec {
                 }
             }
         }
+        // In a mesh file, named as errors in it are: `mesh: in mesh file "F" at `PATH` ...`.
+        let (at, path_quote) = match &self.mesh_file {
+            Some(f) => (format!("mesh: in mesh file \"{f}\" at "), "`"),
+            None => (String::new(), ""),
+        };
         let mut out: Vec<String> = found
             .iter()
             .take(MAX_HINGE_WARNINGS)
             .map(|(w, elements)| match elements.split_first() {
-                Some((first, [])) => format!("elements[{first}].hinge: {w}"),
-                Some((first, rest)) => format!("elements[{first}].hinge (likewise elements {}): {w}", index_runs(rest)),
+                Some((first, [])) => format!("{at}{path_quote}elements[{first}].hinge{path_quote}: {w}"),
+                Some((first, rest)) => format!(
+                    "{at}{path_quote}elements[{first}].hinge{path_quote} (likewise elements {}): {w}",
+                    index_runs(rest)
+                ),
                 None => w.clone(),
             })
             .collect();
@@ -264,8 +273,12 @@ impl super::shapes::MeshSpec {
                 .collect();
             rest.sort_unstable();
             rest.dedup();
+            let of = match &self.mesh_file {
+                Some(f) => format!("mesh: in mesh file \"{f}\", hinge elements"),
+                None => "hinge elements".to_string(),
+            };
             out.push(format!(
-                "hinge elements: {} more calibration warnings, not listed, on elements {}",
+                "{of}: {} more calibration warnings, not listed, on elements {}",
                 found.len() - MAX_HINGE_WARNINGS,
                 index_runs(&rest)
             ));

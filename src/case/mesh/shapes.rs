@@ -288,6 +288,12 @@ pub struct MeshSpec {
     #[serde(skip)]
     #[schemars(skip)]
     pub group_cells: BTreeMap<String, Vec<Vec<usize>>>,
+    /// The JSON mesh file the nodes and elements come from, as the case names it (set by the
+    /// case reader; not a case-file field): warnings about its elements name it, as errors in it
+    /// do, since a path such as `elements[0].hinge` is not in the case as written.
+    #[serde(skip)]
+    #[schemars(skip)]
+    pub mesh_file: Option<String>,
 }
 
 /// `"ordering"`: the fill-reducing ordering of the sparse Cholesky factor.
