@@ -483,6 +483,30 @@ fn mesh_hinge_elements_warn_outside_calibration() {
             "modal: {modal}"
         );
     }
+    // The notches given by name (`hinge_types` of the case): the warning names the types, in
+    // order of first use, and still each element once.
+    let out = run_bundled_with("lever_amplifier.json", |c| {
+        let notch = |t: f64| serde_json::json!({"type": "circular_notch", "R": 5.0, "t": t, "w": 20.0, "h": 12.0});
+        c["hinge_types"] = serde_json::json!({"a": notch(3.0), "b": notch(3.0), "ok": notch(1.0)});
+        for (e, name) in [(0, "b"), (1, "a")] {
+            c["elements"][e]["hinge"] = serde_json::json!(name);
+        }
+    });
+    assert_eq!(
+        out.warnings,
+        ["elements[0].hinge (hinge types \"b\", \"a\"; likewise elements 1): circular_notch t/R = 0.6 is outside the solid-calibrated range 0.06–0.5 (41 circular notches): extrapolated"]
+    );
+    let out = run_bundled_with("lever_amplifier.json", |c| {
+        let notch = |t: f64| serde_json::json!({"type": "circular_notch", "R": 5.0, "t": t, "w": 20.0, "h": 12.0});
+        c["hinge_types"] = serde_json::json!({"thick": notch(3.0), "ok": notch(1.0)});
+        for (e, name) in [(0, "ok"), (1, "thick")] {
+            c["elements"][e]["hinge"] = serde_json::json!(name);
+        }
+    });
+    assert_eq!(
+        out.warnings,
+        ["elements[1].hinge (hinge type \"thick\"): circular_notch t/R = 0.6 is outside the solid-calibrated range 0.06–0.5 (41 circular notches): extrapolated"]
+    );
     // The frequency response of the stage's FE model: one of its twelve hinge elements, its
     // first revolute notch, too thick for its radius (t/R 5/8).
     let out = run_bundled_with("ruiz2019_stage_frf.json", |c| {
@@ -507,7 +531,7 @@ fn mesh_sensitivity_and_design_warn_about_their_hinge_elements() {
     assert_eq!(
         out.warnings,
         [format!(
-            "case.mesh: in mesh file \"{}\" at `elements[0].hinge` (likewise elements 1): circular_notch t/R = 0.6 is outside the solid-calibrated range 0.06–0.5 (41 circular notches): extrapolated",
+            "case.mesh: in mesh file \"{}\" at `elements[0].hinge` (hinge type \"notch\"; likewise elements 1): circular_notch t/R = 0.6 is outside the solid-calibrated range 0.06–0.5 (41 circular notches): extrapolated",
             root().join("meshes/lever_parameters.json").display()
         )]
     );
@@ -522,7 +546,7 @@ fn mesh_sensitivity_and_design_warn_about_their_hinge_elements() {
     for w in &out.warnings {
         assert!(
             w.starts_with(&format!(
-                "design found, case.mesh: in mesh file \"{}\" at `elements[0].hinge` (likewise elements ",
+                "design found, case.mesh: in mesh file \"{}\" at `elements[0].hinge` (hinge type \"flex\"; likewise elements ",
                 root().join("meshes/parallelogram_parameters.json").display()
             )),
             "{w}"

@@ -420,6 +420,7 @@ pub fn read_model(
         None => inline,
     };
     super::mesh::superelement::load_files(&mut spec, base.dir)?;
+    spec.hinge_type_names = base.hinge_types().clone();
     Ok(spec)
 }
 

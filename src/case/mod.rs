@@ -59,6 +59,9 @@ pub struct Source<'a> {
     /// The case file's folder (`None`: the working folder).
     pub dir: Option<&'a Path>,
     mesh: std::cell::RefCell<Option<(String, Value)>>,
+    /// The `hinge_types` name each hinge element's `hinge` was given by (element index →
+    /// name), for the warnings about them ([`mesh::MeshSpec::hinge_type_names`]).
+    hinge_types: std::collections::BTreeMap<usize, String>,
 }
 
 impl<'a> Source<'a> {
@@ -67,6 +70,7 @@ impl<'a> Source<'a> {
         Source {
             dir,
             mesh: Default::default(),
+            hinge_types: Default::default(),
         }
     }
 
@@ -75,7 +79,18 @@ impl<'a> Source<'a> {
         Source {
             dir,
             mesh: std::cell::RefCell::new(mesh),
+            hinge_types: Default::default(),
         }
+    }
+
+    /// `self` with the hinge types the hinge elements were given by (element index → name).
+    pub fn with_hinge_types(self, hinge_types: std::collections::BTreeMap<usize, String>) -> Self {
+        Source { hinge_types, ..self }
+    }
+
+    /// The hinge types the hinge elements were given by ([`Self::with_hinge_types`]).
+    pub(crate) fn hinge_types(&self) -> &std::collections::BTreeMap<usize, String> {
+        &self.hinge_types
     }
 
     /// The content of mesh file `name` if it was read already (taken: a case reads its mesh

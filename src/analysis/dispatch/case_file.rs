@@ -216,7 +216,7 @@ pub fn parse_resolved(mut value: Value, base: Option<&Path>, check_arrays: bool)
 
 /// The typed parse of a case value resolved as `resolved` says ([`params::resolve_case_in`]).
 pub fn parse_with(value: Value, base: Option<&Path>, resolved: params::Resolved) -> Result<Parsed, CaseError> {
-    let source = Source::with_mesh(base, resolved.mesh);
+    let source = Source::with_mesh(base, resolved.mesh).with_hinge_types(resolved.origins.element_hinge_types());
     let case = parse_shaped(value, &source).map_err(|e| resolved.origins.locate(e))?;
     Ok(Parsed {
         case,

@@ -215,7 +215,8 @@ impl super::shapes::MeshSpec {
     /// ([`hinge::calibration::calibration_warnings`]: geometry outside the solid-calibrated
     /// ranges, or inside them in a regime with a known bias), each distinct warning once, naming
     /// every element it applies to (`elements[i].hinge`, then the others alike; in a mesh file,
-    /// `mesh: in mesh file "F" at `elements[i].hinge``, as errors there are); past
+    /// `mesh: in mesh file "F" at `elements[i].hinge``, as errors there are; the `hinge_types`
+    /// name they were given by, if any: `(hinge type "flex"; likewise elements 1–7)`); past
     /// [`MAX_HINGE_WARNINGS`] distinct warnings, one more line counts the rest and names their
     /// elements. A mechanism's hinge element has continuous material at its ends, so the `hinge`
     /// analysis's warnings of its blank and rigid end faces do not apply. Elements that do not
@@ -257,13 +258,19 @@ impl super::shapes::MeshSpec {
         let mut out: Vec<String> = found
             .iter()
             .take(MAX_HINGE_WARNINGS)
-            .map(|(w, elements)| match elements.split_first() {
-                Some((first, [])) => format!("{at}{path_quote}elements[{first}].hinge{path_quote}: {w}"),
-                Some((first, rest)) => format!(
-                    "{at}{path_quote}elements[{first}].hinge{path_quote} (likewise elements {}): {w}",
-                    index_runs(rest)
-                ),
-                None => w.clone(),
+            .map(|(w, elements)| {
+                let Some((first, rest)) = elements.split_first() else {
+                    return w.clone();
+                };
+                let mut notes = self.type_names_of(elements);
+                if !rest.is_empty() {
+                    notes.push(format!("likewise elements {}", index_runs(rest)));
+                }
+                let notes = match notes.is_empty() {
+                    true => String::new(),
+                    false => format!(" ({})", notes.join("; ")),
+                };
+                format!("{at}{path_quote}elements[{first}].hinge{path_quote}{notes}: {w}")
             })
             .collect();
         if found.len() > MAX_HINGE_WARNINGS {
@@ -284,6 +291,25 @@ impl super::shapes::MeshSpec {
             ));
         }
         out
+    }
+}
+
+impl super::shapes::MeshSpec {
+    /// `hinge type "NAME"` (or `hinge types "A", "B"`) for the `hinge_types` names that
+    /// `elements` were given by, in order of first use; empty when none was given by name.
+    fn type_names_of(&self, elements: &[usize]) -> Vec<String> {
+        let mut names: Vec<&str> = Vec::new();
+        for n in elements.iter().filter_map(|i| self.hinge_type_names.get(i)) {
+            if !names.contains(&n.as_str()) {
+                names.push(n);
+            }
+        }
+        let quoted: Vec<String> = names.iter().map(|n| format!("\"{n}\"")).collect();
+        match quoted.len() {
+            0 => Vec::new(),
+            1 => vec![format!("hinge type {}", quoted[0])],
+            _ => vec![format!("hinge types {}", quoted.join(", "))],
+        }
     }
 }
 

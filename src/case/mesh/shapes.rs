@@ -294,6 +294,11 @@ pub struct MeshSpec {
     #[serde(skip)]
     #[schemars(skip)]
     pub mesh_file: Option<String>,
+    /// The `hinge_types` name each hinge element's `hinge` was given by, by element index (set
+    /// by the case reader; not a case-file field): warnings about the element name it.
+    #[serde(skip)]
+    #[schemars(skip)]
+    pub hinge_type_names: BTreeMap<usize, String>,
 }
 
 /// `"ordering"`: the fill-reducing ordering of the sparse Cholesky factor.

@@ -43,6 +43,19 @@ impl Origins {
         });
     }
 
+    /// The hinge type each hinge element's `hinge` names, by element index (the uses at
+    /// `elements[i].hinge`, in the case's inline model or in its mesh file).
+    pub fn element_hinge_types(&self) -> std::collections::BTreeMap<usize, String> {
+        self.all
+            .iter()
+            .filter(|o| o.hinge)
+            .filter_map(|o| {
+                let i = o.at.strip_prefix("elements[")?.strip_suffix("].hinge")?;
+                Some((i.parse().ok()?, o.written.clone()))
+            })
+            .collect()
+    }
+
     /// Errors under the model of the JSON mesh file `name` (the case as written has
     /// the top-level keys `case_keys`) are reported at `mesh` ([`Self::locate`]).
     pub(super) fn set_mesh(&mut self, name: &str, case_keys: Vec<String>) {
