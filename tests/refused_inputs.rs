@@ -174,7 +174,8 @@ fn elements_shorter_than_1e_9_of_the_model_size() {
 /// An error in the model of a mesh file the case names is reported at `mesh`, naming the file
 /// and the path inside it, for a mesh file without parameters or hinge types too: before, a
 /// node index out of range in the bundled pan-tilt's mesh file was reported at
-/// `elements[1].nodes[1]`, a path the case file does not have.
+/// `elements[1].nodes[1]`, a path the case file does not have. Errors at keys the case writes,
+/// or that neither writes (a missing `modes`), stay the case's.
 #[test]
 fn an_error_in_a_mesh_files_model_names_the_file() {
     let d = common::tempdir("mesh-file-error");
@@ -192,6 +193,53 @@ fn an_error_in_a_mesh_files_model_names_the_file() {
             err.contains("at `mesh`: in mesh file \"my_mesh.json\" at `elements[1].nodes[1]`"),
             "{cmd}: {err}"
         );
+    }
+    // A section only the mesh file defines is the mesh file's, also when the case adds
+    // sections of its own (the model takes both); one the case defines is the case's.
+    let mut bad = mesh.clone();
+    bad["elements"][1]["nodes"] = json!([0, 1]);
+    let first = bad["sections"].as_object().unwrap().keys().next().unwrap().clone();
+    bad["sections"][&first]["w"] = json!(-1.0);
+    common::write(&d, "my_mesh.json", &bad.to_string());
+    let section = bad["sections"][&first].clone();
+    for (extra, at) in [
+        (None, "at `mesh`: in mesh file \"my_mesh.json\" at `sections."),
+        (Some("extra"), "at `mesh`: in mesh file \"my_mesh.json\" at `sections."),
+        (Some(first.as_str()), "at `sections."),
+    ] {
+        let mut c = case.clone();
+        if let Some(name) = extra {
+            let mut own = section.clone();
+            own["w"] = json!(if name == "extra" { 1.0 } else { -2.0 });
+            c["sections"] = json!({ name: own });
+        }
+        common::write(&d, "case.json", &c.to_string());
+        let err = common::exits_2(
+            &common::run_in(&d, &["check", "case.json"]),
+            &["w`", "must be a positive number"],
+        );
+        assert!(err.contains(&format!("{at}{first}.w`")), "{extra:?}: {err}");
+    }
+    // A key neither writes stays the case's: a modal case without `modes`, a case without
+    // `analysis`, a static case whose mesh file has no load cases.
+    common::write(&d, "my_mesh.json", &json!({"nodes": mesh["nodes"], "elements": bad["elements"], "materials": mesh["materials"], "sections": mesh["sections"], "supports": mesh["supports"]}).to_string());
+    for (c, at) in [
+        (
+            json!({"analysis": "modal", "mesh": "my_mesh.json"}),
+            "at `modes`: missing field `modes`",
+        ),
+        (
+            json!({"mesh": "my_mesh.json"}),
+            "at `analysis`: missing field `analysis`",
+        ),
+        (
+            json!({"analysis": "static", "mesh": "my_mesh.json"}),
+            "at `load_cases`: at least one load case",
+        ),
+    ] {
+        common::write(&d, "case.json", &c.to_string());
+        let err = common::exits_2(&common::run_in(&d, &["check", "case.json"]), &[at]);
+        assert!(!err.contains("in mesh file"), "{err}");
     }
     common::cleanup(&d);
 }

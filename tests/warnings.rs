@@ -621,4 +621,18 @@ fn many_distinct_hinge_findings_are_summarised() {
         w[20],
         "hinge elements: 40 more calibration warnings, not listed, on elements 10–29"
     );
+    // The same elements read from a mesh file, given by one hinge type: every line names both.
+    let mut spec = spec;
+    spec.mesh_file = Some("leaves.json".into());
+    spec.hinge_type_names = (0..n).map(|i| (i, "leaf".to_string())).collect();
+    let w = spec.hinge_warnings();
+    assert!(
+        w[0].starts_with("mesh: in mesh file \"leaves.json\" at `elements[0].hinge` (hinge type \"leaf\"): corner_filleted h/t = 25 "),
+        "{}",
+        w[0]
+    );
+    assert_eq!(
+        w[20],
+        "mesh: in mesh file \"leaves.json\", hinge elements: 40 more calibration warnings, not listed, on elements 10–29"
+    );
 }

@@ -362,9 +362,7 @@ pub fn resolve_case_in(
     }
     *value = fill(template)?;
     if let Some((name, mv)) = &mut mesh {
-        let written = value.as_object().into_iter().flat_map(|m| m.keys().cloned());
-        let taken = ["parameters", "hinge_types"].map(str::to_string);
-        origins.set_mesh(name, written.chain(taken).collect());
+        origins.set_mesh(name, value, &["parameters", "hinge_types"], mv);
         let in_mesh = |e: CaseError| in_mesh_file(name, e);
         let mut used = Vec::new();
         expand_hinge_types(mv, &types, &mut String::new(), &mut used).map_err(in_mesh)?;

@@ -25,10 +25,25 @@ struct Origin {
 #[derive(Debug, Clone, Default)]
 pub struct Origins {
     all: Vec<Origin>,
-    /// The JSON mesh file the case names and the top-level keys of the case as written: an
-    /// error at a path under another key is in the mesh file's model and is reported at `mesh`,
+    /// The JSON mesh file the case names and which top-level keys each side writes: an error at
+    /// a path the mesh file's model has and the case as written has not is reported at `mesh`,
     /// naming the file (a path such as `elements[3].nodes` is not in the case as written).
-    mesh: Option<(String, Vec<String>)>,
+    mesh: Option<MeshKeys>,
+}
+
+/// What the case and its JSON mesh file each write ([`Origins::set_mesh`]).
+#[derive(Debug, Clone)]
+struct MeshKeys {
+    /// The mesh file's name as the case writes it.
+    name: String,
+    /// Top-level keys of the case as written (with its `parameters` and `hinge_types`).
+    case: Vec<String>,
+    /// Top-level keys of the mesh file's model.
+    mesh: Vec<String>,
+    /// `materials.NAME` and `sections.NAME` the mesh file defines and the case does not (the
+    /// model takes both sides' entries, the case's where both define a name), and
+    /// `load_cases` when the case writes none (the model then takes the mesh file's).
+    mesh_only: Vec<String>,
 }
 
 impl Origins {
@@ -56,10 +71,34 @@ impl Origins {
             .collect()
     }
 
-    /// Errors under the model of the JSON mesh file `name` (the case as written has
-    /// the top-level keys `case_keys`) are reported at `mesh` ([`Self::locate`]).
-    pub(super) fn set_mesh(&mut self, name: &str, case_keys: Vec<String>) {
-        self.mesh = Some((name.to_string(), case_keys));
+    /// Errors in the model of the JSON mesh file `name`, whose content is `mesh` (the case as
+    /// written is `case`, `taken` the keys taken out of it before: `parameters`, `hinge_types`),
+    /// are reported at `mesh` ([`Self::locate`]).
+    pub(super) fn set_mesh(&mut self, name: &str, case: &serde_json::Value, taken: &[&str], mesh: &serde_json::Value) {
+        use serde_json::Value;
+        let keys = |v: &Value| -> Vec<String> { v.as_object().into_iter().flat_map(|m| m.keys().cloned()).collect() };
+        let mut mesh_only = Vec::new();
+        for field in ["materials", "sections"] {
+            let (in_case, in_mesh) = (keys(&case[field]), keys(&mesh[field]));
+            mesh_only.extend(
+                in_mesh
+                    .into_iter()
+                    .filter(|n| !in_case.contains(n))
+                    .map(|n| format!("{field}.{n}")),
+            );
+        }
+        if case["load_cases"].as_array().is_some_and(Vec::is_empty) {
+            mesh_only.push("load_cases".to_string());
+        }
+        let mut case_keys = keys(case);
+        case_keys.extend(taken.iter().map(|k| k.to_string()));
+        self.mesh = Some(MeshKeys {
+            name: name.to_string(),
+            case: case_keys,
+            // The model reader ignores a mesh file's `analysis`.
+            mesh: keys(mesh).into_iter().filter(|k| k != "analysis").collect(),
+            mesh_only,
+        });
     }
 
     /// `e` moved to where the value at its path is set, if that path is one recorded (an
@@ -94,19 +133,29 @@ impl Origins {
         )
     }
 
-    /// `e` at `mesh` when its path is in the model of the JSON mesh file (its first
-    /// key is not one of the case as written); otherwise `e` unchanged.
+    /// `e` at `mesh` when its path is in the model of the JSON mesh file: its first key is one
+    /// the mesh file writes and the case as written does not, or an entry of `materials` or
+    /// `sections` only the mesh file defines (or `load_cases` when the case's list is empty);
+    /// otherwise `e` unchanged (an error at a key neither writes, a missing `modes` say, stays
+    /// the case's).
     fn in_mesh(&self, e: CaseError) -> CaseError {
-        let Some((name, case_keys)) = &self.mesh else {
+        let Some(m) = &self.mesh else {
             return e;
         };
-        let first = e.path.split(['.', '[']).next().unwrap_or_default();
-        if first.is_empty() || case_keys.iter().any(|k| k == first) {
+        let mut segments = e.path.split(['.', '[']);
+        let first = segments.next().unwrap_or_default();
+        let has = |keys: &[String], k: &str| keys.iter().any(|x| x == k);
+        if first.is_empty() || !has(&m.mesh, first) {
+            return e;
+        }
+        let second = segments.next().unwrap_or_default();
+        let mesh_only = has(&m.mesh_only, first) || has(&m.mesh_only, &format!("{first}.{second}"));
+        if has(&m.case, first) && !mesh_only {
             return e;
         }
         CaseError::new(
             "mesh",
-            format!("in mesh file \"{name}\" at `{}`: {}", e.path, e.message),
+            format!("in mesh file \"{}\" at `{}`: {}", m.name, e.path, e.message),
         )
     }
 }
