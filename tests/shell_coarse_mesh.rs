@@ -40,7 +40,11 @@
 //!   the same) with the lumped mass: ω_h/ω − 1 = −(qh)²/8·(7 + ν)/24·sin²2φ, half MITC4's spread
 //!   and exact to O((qh)²) along mesh lines, but on the plates −6.5…−2.2 % (square) and
 //!   −24.4…−12.2 % (skew; 12×12 −13.6…−6.2 %, 24×24 −4.1…−1.7 %, converging to the reference):
-//!   the rhombic elements are far too flexible;
+//!   the rhombic elements are far too flexible. That is DKQ's, not the prototype's: with the
+//!   consistent translational mass the prototype gives 45° skew 8×8 −12.15…−3.18 % (square
+//!   +0.84…+10.76 %), and OpenSees 3.7.1's ShellDKGQ (a DKQ plate, that mass) gives the same
+//!   λ to every digit printed (59.707 … 201.579; `tools/opensees_shell.py plate_modes`, whose
+//!   ShellMITC4 also reproduces the consistent-mass +4.20…+28.48 % above);
 //! * MITC4 with the hourglass part of its bending energy (2×2 minus one-point Gauss, zero on
 //!   constant curvature, so the patch test still passes) scaled by f = 1 + (13 + ν)/(3 − ν) —
 //!   derived, not chosen: the hourglass part adds (3 − ν)/8·(f − 1)/3·sin²2φ to the bracket,

@@ -9,6 +9,7 @@ of the two finest meshes (the tests extrapolate the folded angle section with it
 
     python3 tools/opensees_shell.py            # all problems
     python3 tools/opensees_shell.py scordelis_lo   # one
+    python3 tools/opensees_shell.py plate_modes    # coarse-mesh plate frequencies (MITC4, DKQ)
 """
 import json
 import math
@@ -180,7 +181,37 @@ PROBLEMS = {
     "pinched_hemisphere": (pinched_hemisphere, [8, 16, 32, 64]),
 }
 
+def clamped_plate_modes(element, n, skew_deg, a=100.0, t=0.1, e=71700.0, nu=0.33, rho=2.81e-9):
+    """Frequency parameters λ = ωa²√(ρt/D) of modes 1–6 of the clamped square (skew 0) or 45°
+    rhombic plate of tests/shell_coarse_mesh.rs, n×n elements, with `element`'s own mass (the
+    consistent bilinear translational mass in ShellMITC4 and ShellDKGQ: ShellMITC4 8×8 square
+    +4.20…+28.48 %, skew +6.96…+47.82 %, as flexfem's MITC4 with that mass; ShellDKGQ, the
+    DKQ plate, 45° skew 8×8 −12.15…−3.18 %, as tools/plate_dispersion.py's DKQ)."""
+    ops.wipe()
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    sn, cs = math.sin(math.radians(skew_deg)), math.cos(math.radians(skew_deg))
+    tag = lambda i, j: j * (n + 1) + i + 1
+    for j in range(n + 1):
+        for i in range(n + 1):
+            u, v = a * i / n, a * j / n
+            ops.node(tag(i, j), u + v * sn, v * cs, 0.0)
+            if i in (0, n) or j in (0, n):
+                ops.fix(tag(i, j), 1, 1, 1, 1, 1, 1)
+    ops.section("ElasticMembranePlateSection", 1, e, nu, t, rho)
+    for k, (i, j) in enumerate((i, j) for j in range(n) for i in range(n)):
+        ops.element(element, k + 1, tag(i, j), tag(i + 1, j), tag(i + 1, j + 1), tag(i, j + 1), 1)
+    d = e * t**3 / (12 * (1 - nu**2))
+    return [math.sqrt(lam) * a * a * math.sqrt(rho * t / d) for lam in ops.eigen("-fullGenLapack", 6)]
+
+
 if __name__ == "__main__":
+    if sys.argv[1:] == ["plate_modes"]:
+        for element in ("ShellMITC4", "ShellDKGQ"):
+            for skew in (0, 45):
+                for n in (8, 12):
+                    lam = clamped_plate_modes(element, n, skew)
+                    print(json.dumps({"problem": "plate_modes", "element": element, "skew": skew, "n": n, "lambda": lam}), flush=True)
+        sys.exit(0)
     which = sys.argv[1:] or list(PROBLEMS)
     for name in which:
         build, meshes = PROBLEMS[name]
