@@ -220,6 +220,45 @@ fn an_error_in_a_mesh_files_model_names_the_file() {
         );
         assert!(err.contains(&format!("{at}{first}.w`")), "{extra:?}: {err}");
     }
+    // A list the case writes empty leaves the mesh file's in the model: its errors are the
+    // mesh file's (elements: the node index out of range again; load cases: `"load_cases": []`
+    // beside a mesh file whose load case names a missing node).
+    let mut c = case.clone();
+    c["elements"] = json!([]);
+    common::write(&d, "my_mesh.json", &mesh.to_string());
+    common::write(&d, "case.json", &c.to_string());
+    common::exits_2(
+        &common::run_in(&d, &["check", "case.json"]),
+        &["at `mesh`: in mesh file \"my_mesh.json\" at `elements[1].nodes[1]`"],
+    );
+    let mut with_loads = mesh.clone();
+    with_loads["elements"] = bad["elements"].clone();
+    with_loads["load_cases"] = json!([{"name": "push", "forces": [{"node": 99, "F": [1, 0, 0, 0, 0, 0]}]}]);
+    common::write(&d, "my_mesh.json", &with_loads.to_string());
+    let mut c = case.clone();
+    c["load_cases"] = json!([]);
+    common::write(&d, "case.json", &c.to_string());
+    common::exits_2(
+        &common::run_in(&d, &["check", "case.json"]),
+        &["at `mesh`: in mesh file \"my_mesh.json\" at `load_cases[0].forces[0].node`"],
+    );
+    // A material only the mesh file defines, its name holding a dot, beside the case's own.
+    let mut dotted = mesh.clone();
+    dotted["elements"] = bad["elements"].clone();
+    dotted["materials"] = json!({"PA6.6": {"E": -1.0, "nu": 0.3, "density": 1.1e-9}});
+    for e in dotted["elements"].as_array_mut().unwrap() {
+        if e.get("material").is_some() {
+            e["material"] = json!("PA6.6");
+        }
+    }
+    common::write(&d, "my_mesh.json", &dotted.to_string());
+    let mut c = case.clone();
+    c["materials"] = json!({"other": "steel"});
+    common::write(&d, "case.json", &c.to_string());
+    common::exits_2(
+        &common::run_in(&d, &["check", "case.json"]),
+        &["at `mesh`: in mesh file \"my_mesh.json\" at `materials.PA6.6.E`"],
+    );
     // A key neither writes stays the case's: a modal case without `modes`, a case without
     // `analysis`, a static case whose mesh file has no load cases.
     common::write(&d, "my_mesh.json", &json!({"nodes": mesh["nodes"], "elements": bad["elements"], "materials": mesh["materials"], "sections": mesh["sections"], "supports": mesh["supports"]}).to_string());
@@ -241,5 +280,36 @@ fn an_error_in_a_mesh_files_model_names_the_file() {
         let err = common::exits_2(&common::run_in(&d, &["check", "case.json"]), &[at]);
         assert!(!err.contains("in mesh file"), "{err}");
     }
+    common::cleanup(&d);
+}
+
+/// An expression error in a hinge type the mesh file declares is reported at `mesh`, naming the
+/// file and the path inside it (it was reported at `hinge_types.flex.t`, a path the case file
+/// does not have); one in a hinge type the case declares stays at the case's path.
+#[test]
+fn an_error_in_a_mesh_files_hinge_type_names_the_file() {
+    let d = common::tempdir("mesh-file-hinge-type");
+    let mut mesh: Value =
+        serde_json::from_str(&std::fs::read_to_string(root().join("meshes/pantilt_8r_parameters.json")).unwrap())
+            .unwrap();
+    mesh["hinge_types"]["flex"]["t"] = json!("$tt");
+    common::write(&d, "my_mesh.json", &mesh.to_string());
+    let mut case = bundled("pantilt_8r");
+    case["mesh"] = json!("my_mesh.json");
+    common::write(&d, "case.json", &case.to_string());
+    common::exits_2(
+        &common::run_in(&d, &["check", "case.json"]),
+        &[
+            "at `mesh`: in mesh file \"my_mesh.json\" at `hinge_types.flex.t`",
+            "$tt",
+        ],
+    );
+    case["hinge_types"] = mesh["hinge_types"].clone();
+    common::write(&d, "case.json", &case.to_string());
+    let err = common::exits_2(
+        &common::run_in(&d, &["check", "case.json"]),
+        &["at `hinge_types.flex.t`", "$tt"],
+    );
+    assert!(!err.contains("in mesh file"), "{err}");
     common::cleanup(&d);
 }

@@ -484,7 +484,7 @@ fn mesh_hinge_elements_warn_outside_calibration() {
         );
     }
     // The notches given by name (`hinge_types` of the case): the warning names the types, in
-    // order of first use, and still each element once.
+    // order of first use, with the elements each was given to, and still each element once.
     let out = run_bundled_with("lever_amplifier.json", |c| {
         let notch = |t: f64| serde_json::json!({"type": "circular_notch", "R": 5.0, "t": t, "w": 20.0, "h": 12.0});
         c["hinge_types"] = serde_json::json!({"a": notch(3.0), "b": notch(3.0), "ok": notch(1.0)});
@@ -494,7 +494,18 @@ fn mesh_hinge_elements_warn_outside_calibration() {
     });
     assert_eq!(
         out.warnings,
-        ["elements[0].hinge (hinge types \"b\", \"a\"; likewise elements 1): circular_notch t/R = 0.6 is outside the solid-calibrated range 0.06–0.5 (41 circular notches): extrapolated"]
+        ["elements[0].hinge (likewise elements 1; hinge type \"b\" on element 0, \"a\" on element 1): circular_notch t/R = 0.6 is outside the solid-calibrated range 0.06–0.5 (41 circular notches): extrapolated"]
+    );
+    // One element given by name, the other inline: the name is credited to its element only.
+    let out = run_bundled_with("lever_amplifier.json", |c| {
+        let notch = serde_json::json!({"type": "circular_notch", "R": 5.0, "t": 3.0, "w": 20.0, "h": 12.0});
+        c["hinge_types"] = serde_json::json!({"thick": notch});
+        c["elements"][0]["hinge"] = notch;
+        c["elements"][1]["hinge"] = serde_json::json!("thick");
+    });
+    assert_eq!(
+        out.warnings,
+        ["elements[0].hinge (likewise elements 1; hinge type \"thick\" on element 1): circular_notch t/R = 0.6 is outside the solid-calibrated range 0.06–0.5 (41 circular notches): extrapolated"]
     );
     let out = run_bundled_with("lever_amplifier.json", |c| {
         let notch = |t: f64| serde_json::json!({"type": "circular_notch", "R": 5.0, "t": t, "w": 20.0, "h": 12.0});
@@ -621,7 +632,8 @@ fn many_distinct_hinge_findings_are_summarised() {
         w[20],
         "hinge elements: 40 more calibration warnings, not listed, on elements 10–29"
     );
-    // The same elements read from a mesh file, given by one hinge type: every line names both.
+    // The same elements read from a mesh file, given by one hinge type: every listed line names
+    // the file and the type, the count of the rest names the file.
     let mut spec = spec;
     spec.mesh_file = Some("leaves.json".into());
     spec.hinge_type_names = (0..n).map(|i| (i, "leaf".to_string())).collect();
@@ -634,5 +646,20 @@ fn many_distinct_hinge_findings_are_summarised() {
     assert_eq!(
         w[20],
         "mesh: in mesh file \"leaves.json\", hinge elements: 40 more calibration warnings, not listed, on elements 10–29"
+    );
+    // Five equal leaves, each given by its own type: one line, three names and a count.
+    let elements: Vec<serde_json::Value> = (0..5)
+        .map(|i| {
+            serde_json::json!({"type": "hinge", "nodes": [2 * i, 2 * i + 1], "material": "m", "up": [0, 0, 1],
+                "hinge": {"type": "corner_filleted", "l": 5, "R": 1.75, "t": 0.6, "w": 10, "h": 15}})
+        })
+        .collect();
+    let mut spec: flexfem::case::mesh::MeshSpec =
+        serde_json::from_value(serde_json::json!({"nodes": nodes[..10], "elements": elements})).unwrap();
+    spec.hinge_type_names = (0..5).map(|i| (i, format!("t{i}"))).collect();
+    let w = spec.hinge_warnings();
+    assert!(
+        w[0].starts_with("elements[0].hinge (likewise elements 1–4; hinge type \"t0\" on element 0, \"t1\" on element 1, \"t2\" on element 2, 2 more): corner_filleted h/t = 25 "),
+        "{w:#?}"
     );
 }

@@ -216,7 +216,8 @@ impl super::shapes::MeshSpec {
     /// ranges, or inside them in a regime with a known bias), each distinct warning once, naming
     /// every element it applies to (`elements[i].hinge`, then the others alike; in a mesh file,
     /// `mesh: in mesh file "F" at `elements[i].hinge``, as errors there are; the `hinge_types`
-    /// name they were given by, if any: `(hinge type "flex"; likewise elements 1–7)`); past
+    /// names they were given by, if any: `(hinge type "flex"; likewise elements 1–7)`, or
+    /// `(likewise elements 1; hinge type "thick" on element 1)` when not all were); past
     /// [`MAX_HINGE_WARNINGS`] distinct warnings, one more line counts the rest and names their
     /// elements. A mechanism's hinge element has continuous material at its ends, so the `hinge`
     /// analysis's warnings of its blank and rigid end faces do not apply. Elements that do not
@@ -262,10 +263,17 @@ impl super::shapes::MeshSpec {
                 let Some((first, rest)) = elements.split_first() else {
                     return w.clone();
                 };
-                let mut notes = self.type_names_of(elements);
+                // One type for all first, else after the elements: which element has which.
+                let (all_one_type, mut by_type) = self.type_names_of(elements);
+                let mut notes = if all_one_type {
+                    std::mem::take(&mut by_type)
+                } else {
+                    Vec::new()
+                };
                 if !rest.is_empty() {
                     notes.push(format!("likewise elements {}", index_runs(rest)));
                 }
+                notes.append(&mut by_type);
                 let notes = match notes.is_empty() {
                     true => String::new(),
                     false => format!(" ({})", notes.join("; ")),
@@ -295,23 +303,50 @@ impl super::shapes::MeshSpec {
 }
 
 impl super::shapes::MeshSpec {
-    /// `hinge type "NAME"` (or `hinge types "A", "B"`) for the `hinge_types` names that
-    /// `elements` were given by, in order of first use; empty when none was given by name.
-    fn type_names_of(&self, elements: &[usize]) -> Vec<String> {
-        let mut names: Vec<&str> = Vec::new();
-        for n in elements.iter().filter_map(|i| self.hinge_type_names.get(i)) {
-            if !names.contains(&n.as_str()) {
-                names.push(n);
+    /// The `hinge_types` names that `elements` were given by: `(true, ["hinge type \"NAME\""])`
+    /// when every one of them was given by that one name; else `(false, [note])` naming, per
+    /// name in order of first use, the elements given by it (`hinge type "a" on elements 0–3,
+    /// "b" on element 4`), at most [`MAX_TYPE_NAMES`] names and then how many more; `(false,
+    /// [])` when none was.
+    fn type_names_of(&self, elements: &[usize]) -> (bool, Vec<String>) {
+        use std::collections::HashMap;
+        let mut order: Vec<(&str, Vec<usize>)> = Vec::new();
+        let mut at: HashMap<&str, usize> = HashMap::new();
+        for &i in elements {
+            let Some(n) = self.hinge_type_names.get(&i) else {
+                continue;
+            };
+            match at.get(n.as_str()) {
+                Some(&k) => order[k].1.push(i),
+                None => {
+                    at.insert(n, order.len());
+                    order.push((n, vec![i]));
+                }
             }
         }
-        let quoted: Vec<String> = names.iter().map(|n| format!("\"{n}\"")).collect();
-        match quoted.len() {
-            0 => Vec::new(),
-            1 => vec![format!("hinge type {}", quoted[0])],
-            _ => vec![format!("hinge types {}", quoted.join(", "))],
+        match order.as_slice() {
+            [] => (false, Vec::new()),
+            [(n, given)] if given.len() == elements.len() => (true, vec![format!("hinge type \"{n}\"")]),
+            _ => {
+                let mut named: Vec<String> = order
+                    .iter()
+                    .take(MAX_TYPE_NAMES)
+                    .map(|(n, given)| match given.as_slice() {
+                        [one] => format!("\"{n}\" on element {one}"),
+                        _ => format!("\"{n}\" on elements {}", index_runs(given)),
+                    })
+                    .collect();
+                if order.len() > MAX_TYPE_NAMES {
+                    named.push(format!("{} more", order.len() - MAX_TYPE_NAMES));
+                }
+                (false, vec![format!("hinge type {}", named.join(", "))])
+            }
         }
     }
 }
+
+/// Hinge-type names one warning line lists (the rest are counted).
+pub const MAX_TYPE_NAMES: usize = 3;
 
 /// Ascending indices as a list with runs of three or more as `a–b`: `[1, 2, 3, 5]` → `1–3, 5`.
 fn index_runs(indices: &[usize]) -> String {

@@ -316,7 +316,7 @@ pub fn resolve_case_in(
         }
     }
     all.extend(declared);
-    let case_type_names: Vec<String> = case_types.keys().cloned().collect();
+    let case_type_names: std::collections::BTreeSet<String> = case_types.keys().cloned().collect();
     types.extend(case_types);
     let parameters = resolve_table(&all)?;
     let tangent = along.map(|a| tangent::table(&all, &parameters, a.name)).transpose()?;
@@ -329,7 +329,13 @@ pub fn resolve_case_in(
         for (name, spec) in &types {
             Template::new(spec.clone())
                 .and_then(|t| t.fill(&parameters))
-                .map_err(|e| e.under(&format!("hinge_types.{name}")))?;
+                .map_err(|e| {
+                    let e = e.under(&format!("hinge_types.{name}"));
+                    match &mesh {
+                        Some((file, _)) if !case_type_names.contains(name) => in_mesh_file(file, e),
+                        _ => e,
+                    }
+                })?;
         }
     }
     // Errors found after resolution at a place the case does not have as written go to the
@@ -340,7 +346,7 @@ pub fn resolve_case_in(
         _ => "mesh".to_string(),
     };
     let type_target = |n: &str| {
-        if case_type_names.iter().any(|k| k == n) {
+        if case_type_names.contains(n) {
             format!("hinge_types.{n}")
         } else {
             "mesh".to_string()

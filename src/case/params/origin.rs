@@ -41,8 +41,8 @@ struct MeshKeys {
     /// Top-level keys of the mesh file's model.
     mesh: Vec<String>,
     /// `materials.NAME` and `sections.NAME` the mesh file defines and the case does not (the
-    /// model takes both sides' entries, the case's where both define a name), and
-    /// `load_cases` when the case writes none (the model then takes the mesh file's).
+    /// model takes both sides' entries, the case's where both define a name), and the keys
+    /// whose list the case writes empty (the model then takes the mesh file's).
     mesh_only: Vec<String>,
 }
 
@@ -87,9 +87,14 @@ impl Origins {
                     .map(|n| format!("{field}.{n}")),
             );
         }
-        if case["load_cases"].as_array().is_some_and(Vec::is_empty) {
-            mesh_only.push("load_cases".to_string());
-        }
+        // An empty list in the case (`"load_cases": []`, `"elements": []`) leaves the mesh
+        // file's in the model.
+        let empty = case.as_object().into_iter().flatten();
+        mesh_only.extend(
+            empty
+                .filter(|(_, v)| v.as_array().is_some_and(Vec::is_empty))
+                .map(|(k, _)| k.clone()),
+        );
         let mut case_keys = keys(case);
         case_keys.extend(taken.iter().map(|k| k.to_string()));
         self.mesh = Some(MeshKeys {
@@ -135,22 +140,25 @@ impl Origins {
 
     /// `e` at `mesh` when its path is in the model of the JSON mesh file: its first key is one
     /// the mesh file writes and the case as written does not, or an entry of `materials` or
-    /// `sections` only the mesh file defines (or `load_cases` when the case's list is empty);
+    /// `sections` only the mesh file defines (or a list the case writes empty);
     /// otherwise `e` unchanged (an error at a key neither writes, a missing `modes` say, stays
     /// the case's).
     fn in_mesh(&self, e: CaseError) -> CaseError {
         let Some(m) = &self.mesh else {
             return e;
         };
-        let mut segments = e.path.split(['.', '[']);
-        let first = segments.next().unwrap_or_default();
+        let first = e.path.split(['.', '[']).next().unwrap_or_default();
         let has = |keys: &[String], k: &str| keys.iter().any(|x| x == k);
         if first.is_empty() || !has(&m.mesh, first) {
             return e;
         }
-        let second = segments.next().unwrap_or_default();
-        let mesh_only = has(&m.mesh_only, first) || has(&m.mesh_only, &format!("{first}.{second}"));
-        if has(&m.case, first) && !mesh_only {
+        // An entry's path is the entry or under it (names may hold dots: `materials.PA6.6.E`).
+        let under = |entry: &String| {
+            e.path
+                .strip_prefix(entry.as_str())
+                .is_some_and(|r| r.is_empty() || r.starts_with(['.', '[']))
+        };
+        if has(&m.case, first) && !m.mesh_only.iter().any(under) {
             return e;
         }
         CaseError::new(
