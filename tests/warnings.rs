@@ -663,3 +663,73 @@ fn many_distinct_hinge_findings_are_summarised() {
         "{w:#?}"
     );
 }
+
+/// `flexfem check` lists the warnings a run gives that depend on the case alone
+/// (`analysis::check_warnings`): on every bundled case they are the run's own, in its order
+/// (the pan-tilt hinges' calibration warnings, the two deliberately implausible materials of
+/// [`KNOWN`]); `check` prints each on
+/// stderr as `warning: …`, `ok` alone on stdout, exit 0; a case whose run warns only about its
+/// results (the stage's stresses) checks silently.
+#[test]
+fn check_lists_the_warnings_that_depend_on_the_case_alone() {
+    let mut with = Vec::new();
+    for entry in std::fs::read_dir(root().join("cases")).unwrap() {
+        let p = entry.unwrap().path();
+        let c = analysis::load(&p).unwrap();
+        if matches!(c, analysis::Case::Sweep(_)) {
+            continue;
+        }
+        let checked = analysis::check_warnings(&c);
+        let run = analysis::run(&c).unwrap().warnings;
+        let mut at = run.iter();
+        for w in &checked {
+            assert!(
+                at.any(|r| r == w),
+                "{}: `{w}` not among the run's warnings in order: {run:?}",
+                p.display()
+            );
+        }
+        if !checked.is_empty() {
+            with.push(p.file_name().unwrap().to_string_lossy().into_owned());
+        }
+    }
+    with.sort();
+    assert_eq!(
+        with,
+        [
+            "pantilt_8r.json",
+            "pantilt_8r_modal.json",
+            "pantilt_hinge_corner_filleted.json",
+            "pantilt_hinge_damping.json",
+            "pendulum_nonlinear_transient.json",
+            "prs_stiffness_han_fsw_frame.json",
+        ],
+        "bundled cases with case-only warnings"
+    );
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_flexfem"))
+        .args(["check", "cases/pantilt_8r.json"])
+        .current_dir(root())
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(
+        String::from_utf8_lossy(&o.stdout),
+        "ok: static case cases/pantilt_8r.json\n"
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    let lines: Vec<&str> = err.lines().collect();
+    assert_eq!(lines.len(), 2, "{err}");
+    assert!(lines[0].starts_with("warning: mesh: in mesh file \"../meshes/pantilt_8r.json\" at `elements[0].hinge` (likewise elements 1–7): corner_filleted h/t = 25 "), "{err}");
+    assert!(lines[1].contains("corner_filleted R/t = 2.9167"), "{err}");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_flexfem"))
+        .args(["check", "cases/ruiz2019_stage.json"])
+        .current_dir(root())
+        .output()
+        .unwrap();
+    assert_eq!(
+        (o.status.code(), o.stderr.len()),
+        (Some(0), 0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}

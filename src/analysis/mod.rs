@@ -93,6 +93,15 @@ pub fn check(case: &Case) -> Result<(), CaseError> {
         .unwrap_or_else(|| Err(unregistered(case)))
 }
 
+/// The warnings a run of a checked case lists that depend on the case alone (hinges outside
+/// their calibrated ranges, implausible materials, …), which `flexfem check` prints; a run lists
+/// them too, after its own.
+pub fn check_warnings(case: &Case) -> Vec<String> {
+    dispatch::registry::find(case.analysis())
+        .and_then(|e| e.case_warnings(case))
+        .unwrap_or_default()
+}
+
 /// Validates and runs a case.
 ///
 /// Output files (VTK, SVG) are rendered only with [`run_with_files`]: batch runs skip them.

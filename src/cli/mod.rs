@@ -239,7 +239,14 @@ pub fn run(cli: Cli) -> ExitCode {
                     ))
                 }
                 c => analysis::check(c)
-                    .map(|_| format!("ok: {} case {}\n", c.analysis(), case.display()))
+                    .map(|_| {
+                        // What a run would warn about the case alone, on stderr: `ok` stays the
+                        // one line on stdout.
+                        for w in analysis::check_warnings(c) {
+                            eprintln!("warning: {w}");
+                        }
+                        format!("ok: {} case {}\n", c.analysis(), case.display())
+                    })
                     .map_err(|e| p.locate(e)),
             });
             match checked {

@@ -153,9 +153,7 @@ pub struct Typed<R> {
 pub fn run_typed<A: Analysis>(case: &A::Case, ctx: &mut Ctx) -> Result<Typed<A::Result>, RunError> {
     let result = A::run(case, ctx)?;
     let mut warnings = std::mem::take(&mut ctx.warnings);
-    warnings.extend(A::case_warnings(case));
-    warnings.extend(A::mesh_model(case).map(|m| m.hinge_warnings()).unwrap_or_default());
-    warnings.extend(material_warnings::<A>(case));
+    warnings.extend(case_only_warnings::<A>(case));
     warnings.extend(A::result_warnings(case, &result));
     Ok(Typed {
         report: if ctx.with_report {
@@ -171,6 +169,16 @@ pub fn run_typed<A: Analysis>(case: &A::Case, ctx: &mut Ctx) -> Result<Typed<A::
 
 /// The unit-slip warnings (Young's modulus, density; [`crate::case::material::plausibility_warnings`])
 /// of the materials a case of kind `A` uses: the one check of every kind that takes a material.
+/// The warnings a run of `case` lists that depend on the case alone, in the run's order: the
+/// kind's [`Analysis::case_warnings`], the mesh's hinge elements' calibration warnings, the
+/// materials' plausibility warnings (`flexfem check` lists them too).
+pub fn case_only_warnings<A: Analysis>(case: &A::Case) -> Vec<String> {
+    let mut warnings = A::case_warnings(case);
+    warnings.extend(A::mesh_model(case).map(|m| m.hinge_warnings()).unwrap_or_default());
+    warnings.extend(material_warnings::<A>(case));
+    warnings
+}
+
 fn material_warnings<A: Analysis>(case: &A::Case) -> Vec<String> {
     use crate::case::material::plausibility_warnings;
     match A::material_of(case) {

@@ -3,7 +3,7 @@
 //! [`Case`] enum, which the list of kinds generates, so it sits above the kinds, beside the list.
 
 use super::case_file::{Case, CaseOf};
-use crate::analysis::common::kind::{run_typed, Ctx, SweepFile, Typed, UsedMaterial};
+use crate::analysis::common::kind::{case_only_warnings, run_typed, Ctx, SweepFile, Typed, UsedMaterial};
 use crate::analysis::common::line::{Echoed, LineTarget, MaterialEcho, MaterialsEcho};
 use crate::analysis::common::units::UnitOf;
 use crate::analysis::RunError;
@@ -15,6 +15,9 @@ pub trait DynAnalysis: Sync {
     fn kind(&self) -> &'static str;
     /// [`Analysis::check`] of a parsed case of this kind (`None` if the case is another kind).
     fn check(&self, case: &Case) -> Option<Result<(), CaseError>>;
+    /// The warnings of a checked case of this kind that depend on the case alone
+    /// ([`crate::analysis::common::kind::case_only_warnings`]; `None` if another kind).
+    fn case_warnings(&self, case: &Case) -> Option<Vec<String>>;
     /// Runs a parsed case of this kind into its outcome (`None` if the case is another kind).
     fn run(&self, case: &Case, ctx: &mut Ctx) -> Option<Result<crate::analysis::Outcome, RunError>>;
     /// [`Analysis::materials`].
@@ -57,6 +60,9 @@ impl<A: CaseOf> DynAnalysis for Entry<A> {
     }
     fn check(&self, case: &Case) -> Option<Result<(), CaseError>> {
         A::case_of(case).map(A::check)
+    }
+    fn case_warnings(&self, case: &Case) -> Option<Vec<String>> {
+        A::case_of(case).map(case_only_warnings::<A>)
     }
     fn run(&self, case: &Case, ctx: &mut Ctx) -> Option<Result<crate::analysis::Outcome, RunError>> {
         let c = A::case_of(case)?;
