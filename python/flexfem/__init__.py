@@ -108,7 +108,9 @@ def check(case: Case) -> str:
     """Validates a case without solving it (``flexfem check``); returns its analysis kind.
 
     A sweep case is checked as ``flexfem check`` checks it: its axes, and the first design and
-    each varied path at its last value.
+    each varied path at its last value. What ``flexfem check`` prints as ``warning: …`` (the
+    warnings of a run that depend on the case alone: hinges outside their calibrated ranges,
+    implausible materials) is issued as one :class:`UserWarning` each.
 
     Raises:
         CaseError: what ``flexfem run`` would refuse, with the same JSON path.

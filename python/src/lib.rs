@@ -56,22 +56,35 @@ fn run(py: Python<'_>, case: &Bound<'_, PyAny>, threads: Option<usize>) -> PyRes
 }
 
 /// check(case) -> str: validates without solving, as `flexfem check CASE`; returns the
-/// analysis kind.
+/// analysis kind. The warnings `flexfem check` prints (those of a run that depend on the case
+/// alone: hinges outside their calibrated ranges, implausible materials) are issued as Python
+/// `UserWarning`s, one each.
 #[pyfunction]
 fn check(py: Python<'_>, case: &Bound<'_, PyAny>) -> PyResult<String> {
     let source = input::CaseInput::extract(case)?;
     let checked = py.detach(|| {
         let parsed = source.parse()?;
-        match &parsed.case {
+        let warnings = match &parsed.case {
             Case::Sweep(s) => {
                 let sweep = s.build()?;
                 flexfem::design::sweep::check(&sweep, source.base_dir())?;
+                Vec::new()
             }
-            c => analysis::check(c).map_err(|e| parsed.locate(e))?,
-        }
-        Ok::<_, flexfem::case::CaseError>(parsed.case.analysis().to_string())
+            c => {
+                analysis::check(c).map_err(|e| parsed.locate(e))?;
+                analysis::check_warnings(c)
+            }
+        };
+        Ok::<_, flexfem::case::CaseError>((parsed.case.analysis().to_string(), warnings))
     });
-    checked.map_err(|e| errors::to_py(py, &analysis::RunError::Case(e)))
+    let (kind, warnings) = checked.map_err(|e| errors::to_py(py, &analysis::RunError::Case(e)))?;
+    let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
+    for w in warnings {
+        let text = std::ffi::CString::new(w).map_err(|e| errors::internal(&e))?;
+        // Level 2: the caller of the package's `check` (this is called by its wrapper).
+        PyErr::warn(py, &category, &text, 2)?;
+    }
+    Ok(kind)
 }
 
 /// schema() -> dict: the JSON Schema of case files, as `flexfem schema` prints it.

@@ -27,6 +27,17 @@ def test_check_returns_the_kind_as_cli_does():
     assert flexfem.check(CASES / "ruiz2019_hinge_sweep.json") == "sweep"
 
 
+def test_check_warns_as_cli_does():
+    pantilt = CASES / "pantilt_8r.json"
+    code, out, err = cli("check", pantilt)
+    assert code == 0 and out.startswith("ok: static case"), err
+    want = [line[len("warning: "):] for line in err.splitlines()]
+    assert len(want) == 2 and "corner_filleted h/t = 25" in want[0], err
+    with pytest.warns(UserWarning) as record:
+        assert flexfem.check(pantilt) == "static"
+    assert [str(r.message) for r in record] == want
+
+
 def test_schema_equals_cli():
     want = cli_json("schema")
     got = flexfem.schema()
