@@ -167,8 +167,6 @@ pub fn run_typed<A: Analysis>(case: &A::Case, ctx: &mut Ctx) -> Result<Typed<A::
     })
 }
 
-/// The unit-slip warnings (Young's modulus, density; [`crate::case::material::plausibility_warnings`])
-/// of the materials a case of kind `A` uses: the one check of every kind that takes a material.
 /// The warnings a run of `case` lists that depend on the case alone, in the run's order: the
 /// kind's [`Analysis::case_warnings`], the mesh's hinge elements' calibration warnings, the
 /// materials' plausibility warnings (`flexfem check` lists them too).
@@ -179,6 +177,8 @@ pub fn case_only_warnings<A: Analysis>(case: &A::Case) -> Vec<String> {
     warnings
 }
 
+/// The unit-slip warnings (Young's modulus, density; [`crate::case::material::plausibility_warnings`])
+/// of the materials a case of kind `A` uses: the one check of every kind that takes a material.
 fn material_warnings<A: Analysis>(case: &A::Case) -> Vec<String> {
     use crate::case::material::plausibility_warnings;
     match A::material_of(case) {
