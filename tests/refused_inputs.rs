@@ -194,13 +194,18 @@ fn an_error_in_a_mesh_files_model_names_the_file() {
             "{cmd}: {err}"
         );
     }
+    // `check` of `case` beside the mesh file `mesh`: refused, the message holding `needle`.
+    let refused = |mesh: &Value, case: &Value, needle: &str| {
+        common::write(&d, "my_mesh.json", &mesh.to_string());
+        common::write(&d, "case.json", &case.to_string());
+        common::exits_2(&common::run_in(&d, &["check", "case.json"]), &[needle])
+    };
     // A section only the mesh file defines is the mesh file's, also when the case adds
     // sections of its own (the model takes both); one the case defines is the case's.
     let mut bad = mesh.clone();
     bad["elements"][1]["nodes"] = json!([0, 1]);
     let first = bad["sections"].as_object().unwrap().keys().next().unwrap().clone();
     bad["sections"][&first]["w"] = json!(-1.0);
-    common::write(&d, "my_mesh.json", &bad.to_string());
     let section = bad["sections"][&first].clone();
     for (extra, at) in [
         (None, "at `mesh`: in mesh file \"my_mesh.json\" at `sections."),
@@ -213,11 +218,7 @@ fn an_error_in_a_mesh_files_model_names_the_file() {
             own["w"] = json!(if name == "extra" { 1.0 } else { -2.0 });
             c["sections"] = json!({ name: own });
         }
-        common::write(&d, "case.json", &c.to_string());
-        let err = common::exits_2(
-            &common::run_in(&d, &["check", "case.json"]),
-            &["w`", "must be a positive number"],
-        );
+        let err = refused(&bad, &c, "must be a positive number");
         assert!(err.contains(&format!("{at}{first}.w`")), "{extra:?}: {err}");
     }
     // A list the case writes empty leaves the mesh file's in the model: its errors are the
@@ -225,22 +226,20 @@ fn an_error_in_a_mesh_files_model_names_the_file() {
     // beside a mesh file whose load case names a missing node).
     let mut c = case.clone();
     c["elements"] = json!([]);
-    common::write(&d, "my_mesh.json", &mesh.to_string());
-    common::write(&d, "case.json", &c.to_string());
-    common::exits_2(
-        &common::run_in(&d, &["check", "case.json"]),
-        &["at `mesh`: in mesh file \"my_mesh.json\" at `elements[1].nodes[1]`"],
+    refused(
+        &mesh,
+        &c,
+        "at `mesh`: in mesh file \"my_mesh.json\" at `elements[1].nodes[1]`",
     );
     let mut with_loads = mesh.clone();
     with_loads["elements"] = bad["elements"].clone();
     with_loads["load_cases"] = json!([{"name": "push", "forces": [{"node": 99, "F": [1, 0, 0, 0, 0, 0]}]}]);
-    common::write(&d, "my_mesh.json", &with_loads.to_string());
     let mut c = case.clone();
     c["load_cases"] = json!([]);
-    common::write(&d, "case.json", &c.to_string());
-    common::exits_2(
-        &common::run_in(&d, &["check", "case.json"]),
-        &["at `mesh`: in mesh file \"my_mesh.json\" at `load_cases[0].forces[0].node`"],
+    refused(
+        &with_loads,
+        &c,
+        "at `mesh`: in mesh file \"my_mesh.json\" at `load_cases[0].forces[0].node`",
     );
     // A material only the mesh file defines, its name holding a dot, beside the case's own.
     let mut dotted = mesh.clone();
@@ -251,17 +250,16 @@ fn an_error_in_a_mesh_files_model_names_the_file() {
             e["material"] = json!("PA6.6");
         }
     }
-    common::write(&d, "my_mesh.json", &dotted.to_string());
     let mut c = case.clone();
     c["materials"] = json!({"other": "steel"});
-    common::write(&d, "case.json", &c.to_string());
-    common::exits_2(
-        &common::run_in(&d, &["check", "case.json"]),
-        &["at `mesh`: in mesh file \"my_mesh.json\" at `materials.PA6.6.E`"],
+    refused(
+        &dotted,
+        &c,
+        "at `mesh`: in mesh file \"my_mesh.json\" at `materials.PA6.6.E`",
     );
     // A key neither writes stays the case's: a modal case without `modes`, a case without
     // `analysis`, a static case whose mesh file has no load cases.
-    common::write(&d, "my_mesh.json", &json!({"nodes": mesh["nodes"], "elements": bad["elements"], "materials": mesh["materials"], "sections": mesh["sections"], "supports": mesh["supports"]}).to_string());
+    let plain = json!({"nodes": mesh["nodes"], "elements": bad["elements"], "materials": mesh["materials"], "sections": mesh["sections"], "supports": mesh["supports"]});
     for (c, at) in [
         (
             json!({"analysis": "modal", "mesh": "my_mesh.json"}),
@@ -276,8 +274,7 @@ fn an_error_in_a_mesh_files_model_names_the_file() {
             "at `load_cases`: at least one load case",
         ),
     ] {
-        common::write(&d, "case.json", &c.to_string());
-        let err = common::exits_2(&common::run_in(&d, &["check", "case.json"]), &[at]);
+        let err = refused(&plain, &c, at);
         assert!(!err.contains("in mesh file"), "{err}");
     }
     common::cleanup(&d);

@@ -485,8 +485,8 @@ fn mesh_hinge_elements_warn_outside_calibration() {
     }
     // The notches given by name (`hinge_types` of the case): the warning names the types, in
     // order of first use, with the elements each was given to, and still each element once.
+    let notch = |t: f64| serde_json::json!({"type": "circular_notch", "R": 5.0, "t": t, "w": 20.0, "h": 12.0});
     let out = run_bundled_with("lever_amplifier.json", |c| {
-        let notch = |t: f64| serde_json::json!({"type": "circular_notch", "R": 5.0, "t": t, "w": 20.0, "h": 12.0});
         c["hinge_types"] = serde_json::json!({"a": notch(3.0), "b": notch(3.0), "ok": notch(1.0)});
         for (e, name) in [(0, "b"), (1, "a")] {
             c["elements"][e]["hinge"] = serde_json::json!(name);
@@ -498,9 +498,8 @@ fn mesh_hinge_elements_warn_outside_calibration() {
     );
     // One element given by name, the other inline: the name is credited to its element only.
     let out = run_bundled_with("lever_amplifier.json", |c| {
-        let notch = serde_json::json!({"type": "circular_notch", "R": 5.0, "t": 3.0, "w": 20.0, "h": 12.0});
-        c["hinge_types"] = serde_json::json!({"thick": notch});
-        c["elements"][0]["hinge"] = notch;
+        c["hinge_types"] = serde_json::json!({"thick": notch(3.0)});
+        c["elements"][0]["hinge"] = notch(3.0);
         c["elements"][1]["hinge"] = serde_json::json!("thick");
     });
     assert_eq!(
@@ -508,7 +507,6 @@ fn mesh_hinge_elements_warn_outside_calibration() {
         ["elements[0].hinge (likewise elements 1; hinge type \"thick\" on element 1): circular_notch t/R = 0.6 is outside the solid-calibrated range 0.06–0.5 (41 circular notches): extrapolated"]
     );
     let out = run_bundled_with("lever_amplifier.json", |c| {
-        let notch = |t: f64| serde_json::json!({"type": "circular_notch", "R": 5.0, "t": t, "w": 20.0, "h": 12.0});
         c["hinge_types"] = serde_json::json!({"thick": notch(3.0), "ok": notch(1.0)});
         for (e, name) in [(0, "ok"), (1, "thick")] {
             c["elements"][e]["hinge"] = serde_json::json!(name);

@@ -407,12 +407,7 @@ pub fn read_model(
             if let Value::Object(m) = &mut mv {
                 m.remove("analysis");
             }
-            let from_file: MeshSpec = from_value(mv, "").map_err(|e| {
-                CaseError::new(
-                    "mesh",
-                    format!("in mesh file \"{name}\" at `{}`: {}", e.path, e.message),
-                )
-            })?;
+            let from_file: MeshSpec = from_value(mv, "").map_err(|e| super::params::in_mesh_file(name, e))?;
             let mut merged = MeshSpec::merge_inline(from_file, inline)?;
             merged.mesh_file = Some(name.to_string());
             merged

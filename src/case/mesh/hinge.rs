@@ -252,9 +252,10 @@ impl super::shapes::MeshSpec {
             }
         }
         // In a mesh file, named as errors in it are: `mesh: in mesh file "F" at `PATH` ...`.
-        let (at, path_quote) = match &self.mesh_file {
-            Some(f) => (format!("mesh: in mesh file \"{f}\" at "), "`"),
-            None => (String::new(), ""),
+        let in_file = self.mesh_file.as_ref().map(|f| format!("mesh: in mesh file \"{f}\""));
+        let path = |first: &usize| match &in_file {
+            Some(file) => format!("{file} at `elements[{first}].hinge`"),
+            None => format!("elements[{first}].hinge"),
         };
         let mut out: Vec<String> = found
             .iter()
@@ -278,7 +279,7 @@ impl super::shapes::MeshSpec {
                     true => String::new(),
                     false => format!(" ({})", notes.join("; ")),
                 };
-                format!("{at}{path_quote}elements[{first}].hinge{path_quote}{notes}: {w}")
+                format!("{}{notes}: {w}", path(first))
             })
             .collect();
         if found.len() > MAX_HINGE_WARNINGS {
@@ -288,8 +289,8 @@ impl super::shapes::MeshSpec {
                 .collect();
             rest.sort_unstable();
             rest.dedup();
-            let of = match &self.mesh_file {
-                Some(f) => format!("mesh: in mesh file \"{f}\", hinge elements"),
+            let of = match &in_file {
+                Some(file) => format!("{file}, hinge elements"),
                 None => "hinge elements".to_string(),
             };
             out.push(format!(
@@ -300,9 +301,7 @@ impl super::shapes::MeshSpec {
         }
         out
     }
-}
 
-impl super::shapes::MeshSpec {
     /// The `hinge_types` names that `elements` were given by: `(true, ["hinge type \"NAME\""])`
     /// when every one of them was given by that one name; else `(false, [note])` naming, per
     /// name in order of first use, the elements given by it (`hinge type "a" on elements 0–3,

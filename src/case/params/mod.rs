@@ -389,8 +389,9 @@ pub fn resolve_case_in(
     })
 }
 
-/// An error inside mesh file `name`, reported at `mesh` as the model reader does.
-fn in_mesh_file(name: &str, e: CaseError) -> CaseError {
+/// An error inside mesh file `name`, reported at `mesh` (by the parameter resolution, the model
+/// reader and [`Origins::locate`] alike).
+pub(crate) fn in_mesh_file(name: &str, e: CaseError) -> CaseError {
     CaseError::new(
         "mesh",
         format!("in mesh file \"{name}\" at `{}`: {}", e.path, e.message),

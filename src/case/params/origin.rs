@@ -161,9 +161,6 @@ impl Origins {
         if has(&m.case, first) && !m.mesh_only.iter().any(under) {
             return e;
         }
-        CaseError::new(
-            "mesh",
-            format!("in mesh file \"{}\" at `{}`: {}", m.name, e.path, e.message),
-        )
+        super::in_mesh_file(&m.name, e)
     }
 }
