@@ -10,6 +10,8 @@ of the two finest meshes (the tests extrapolate the folded angle section with it
     python3 tools/opensees_shell.py            # all problems
     python3 tools/opensees_shell.py scordelis_lo   # one
     python3 tools/opensees_shell.py plate_modes    # coarse-mesh plate frequencies (MITC4, DKQ)
+    python3 tools/opensees_shell.py plate_modes_mitc9     # the same plates, nine-node ShellMITC9
+    python3 tools/opensees_shell.py plate_pressure_mitc9  # clamped square plate under pressure, ShellMITC9
 """
 import json
 import math
@@ -204,6 +206,81 @@ def clamped_plate_modes(element, n, skew_deg, a=100.0, t=0.1, e=71700.0, nu=0.33
     return [math.sqrt(lam) * a * a * math.sqrt(rho * t / d) for lam in ops.eigen("-fullGenLapack", 6)]
 
 
+# λ of modes 1–6 of the clamped plates (tests/shell_coarse_mesh.rs): square, Leissa NASA SP-160
+# Table 4.23; 45° rhombus, the converged (Richardson 32/64) reference computed there.
+SQUARE = [35.992, 73.413, 73.413, 108.27, 131.64, 132.24]
+SKEW45 = [65.642, 106.489, 148.300, 157.226, 196.743, 229.464]
+
+
+def nine_node_quads(ne):
+    """Elements of an ne x ne mesh of nine-node quads on the (2ne+1) x (2ne+1) node grid, in
+    ShellMITC9's node order (its shape2d: corners 1-4 counter-clockwise, then the midsides of
+    edges 1-2, 2-3, 3-4, 4-1, then the centre)."""
+    quads = []
+    for ej in range(ne):
+        for ei in range(ne):
+            i, j = 2 * ei, 2 * ej
+            quads.append(((i, j), (i + 2, j), (i + 2, j + 2), (i, j + 2),
+                          (i + 1, j), (i + 2, j + 1), (i + 1, j + 2), (i, j + 1), (i + 1, j + 1)))
+    return quads
+
+
+def area_loads9(nodes, quads, q):
+    """Consistent nodal loads of the traction q (per unit area) on nine-node parallelograms:
+    corner 1/36, midside 4/36, centre 16/36 of the element's area times q."""
+    w = [1.0 / 36.0] * 4 + [4.0 / 36.0] * 4 + [16.0 / 36.0]
+    f = {}
+    for qd in quads:
+        p = [nodes[ij] for ij in qd[:4]]
+        d1 = [p[2][k] - p[0][k] for k in range(3)]
+        d2 = [p[3][k] - p[1][k] for k in range(3)]
+        c = [d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]]
+        area = 0.5 * math.sqrt(sum(v * v for v in c))
+        for ij, wk in zip(qd, w):
+            acc = f.setdefault(ij, [0.0] * 6)
+            for k in range(3):
+                acc[k] += q[k] * area * wk
+    return f
+
+
+def clamped_plate_modes_mitc9(ne, skew_deg, a=100.0, t=0.1, e=71700.0, nu=0.33, rho=2.81e-9):
+    """As clamped_plate_modes, on ne x ne nine-node ShellMITC9 elements ((2ne+1)² nodes; its
+    own consistent biquadratic translational mass). OpenSees's ShellMITC9 (Tesser, Talledo)
+    takes the transverse shear strains from the displacements at the 3 x 3 Gauss points, with
+    no assumed-strain tying despite its name: a Lagrangian Q9 that locks at a/t = 1000 (8×8
+    square +3.27…+12.83 %, skew +8.58…+44.43 %; 2×2 ~100 times the reference)."""
+    ops.wipe()
+    ops.model("basic", "-ndm", 3, "-ndf", 6)
+    n = 2 * ne
+    sn, cs = math.sin(math.radians(skew_deg)), math.cos(math.radians(skew_deg))
+    tag = lambda ij: ij[1] * (n + 1) + ij[0] + 1
+    for j in range(n + 1):
+        for i in range(n + 1):
+            u, v = a * i / n, a * j / n
+            ops.node(tag((i, j)), u + v * sn, v * cs, 0.0)
+            if i in (0, n) or j in (0, n):
+                ops.fix(tag((i, j)), 1, 1, 1, 1, 1, 1)
+    ops.section("ElasticMembranePlateSection", 1, e, nu, t, rho)
+    for k, q in enumerate(nine_node_quads(ne)):
+        ops.element("ShellMITC9", k + 1, *[tag(ij) for ij in q], 1)
+    d = e * t**3 / (12 * (1 - nu**2))
+    return [math.sqrt(lam) * a * a * math.sqrt(rho * t / d) for lam in ops.eigen("-fullGenLapack", 6)]
+
+
+def clamped_plate_pressure_mitc9(ne, a=100.0, t=1.0, e=210000.0, nu=0.3, q=0.01):
+    """distorted_plate's clamped square plate (a = 100, t = 1, E = 210000, nu = 0.3, pressure
+    0.01 MPa in -z) undistorted, on ne x ne ShellMITC9 elements with consistent nodal loads;
+    returns the centre deflection in units of q a⁴/D (Timoshenko & Woinowsky-Krieger 0.00126;
+    2×2 −98.8 %, 4×4 −20.8 %, 8×8 −4.4 %: shear locking, as in the modes)."""
+    n = 2 * ne
+    nodes, _ = grid(n, n, lambda i, j: (a * i / n, a * j / n, 0.0))
+    quads = nine_node_quads(ne)
+    fixes = {ij: range(6) for ij in nodes if ij[0] in (0, n) or ij[1] in (0, n)}
+    loads = area_loads9(nodes, quads, (0.0, 0.0, -q))
+    w = -solve("ShellMITC9", nodes, quads, n, t, e, nu, fixes, loads, ((ne, ne), 2))
+    return w / (q * a**4 / (e * t**3 / (12 * (1 - nu**2))))
+
+
 if __name__ == "__main__":
     if sys.argv[1:] == ["plate_modes"]:
         for element in ("ShellMITC4", "ShellDKGQ"):
@@ -211,6 +288,20 @@ if __name__ == "__main__":
                 for n in (8, 12):
                     lam = clamped_plate_modes(element, n, skew)
                     print(json.dumps({"problem": "plate_modes", "element": element, "skew": skew, "n": n, "lambda": lam}), flush=True)
+        sys.exit(0)
+    if sys.argv[1:] == ["plate_modes_mitc9"]:
+        for skew, ref in ((0, SQUARE), (45, SKEW45)):
+            for ne in (2, 3, 4, 6, 8):
+                lam = clamped_plate_modes_mitc9(ne, skew)
+                err = [100.0 * (l / r - 1.0) for l, r in zip(lam, ref)]
+                print(json.dumps({"problem": "plate_modes_mitc9", "element": "ShellMITC9", "skew": skew, "ne": ne,
+                                  "lambda": [round(l, 4) for l in lam], "err_pct": [round(x, 2) for x in err]}), flush=True)
+        sys.exit(0)
+    if sys.argv[1:] == ["plate_pressure_mitc9"]:
+        for ne in (2, 4, 8):
+            c = clamped_plate_pressure_mitc9(ne)
+            print(json.dumps({"problem": "plate_pressure_mitc9", "element": "ShellMITC9", "ne": ne, "w_qa4_D": round(c, 7),
+                              "err_pct": round(100.0 * (c / 0.00126 - 1.0), 2)}), flush=True)
         sys.exit(0)
     which = sys.argv[1:] or list(PROBLEMS)
     for name in which:

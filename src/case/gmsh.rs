@@ -365,6 +365,12 @@ pub fn parse_msh_traced(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, 
                     section: section.clone(),
                     material: material.clone(),
                 },
+                // Gmsh's nine-node quadrangle has the node order of `shell9`.
+                (10, 9) => ElementSpec::Shell9 {
+                    nodes: std::array::from_fn(|k| nodes[k]),
+                    section: section.clone(),
+                    material: material.clone(),
+                },
                 (15, _) => {
                     skipped += 1;
                     continue;
@@ -378,7 +384,7 @@ pub fn parse_msh_traced(text: &str, mapping: &GmshMapping) -> Result<(MeshSpec, 
                     return Err(CaseError::new(
                         format!("gmsh.groups.{gname}"),
                         format!(
-                            "the group has {what} (.msh element {ie}); flexfem builds beams from 2-node lines and shells from 3-node triangles and 4-node quadrangles only: mesh this group with first-order elements (Gmsh: Mesh.ElementOrder = 1, and no volume elements in a group with a section)"
+                            "the group has {what} (.msh element {ie}); flexfem builds beams from 2-node lines and shells from 3-node triangles, 4-node quadrangles (shell4) and 9-node quadrangles (shell9) only: mesh this group with first-order elements (Gmsh: Mesh.ElementOrder = 1) or second-order quadrangles (Mesh.ElementOrder = 2, Mesh.RecombineAll = 1, Mesh.SecondOrderIncomplete = 0), and no volume elements in a group with a section"
                         ),
                     ));
                 }

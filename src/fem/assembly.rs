@@ -3,7 +3,8 @@
 //! (fenris's connectivity/values split).
 //!
 //! Triplet order: element by element, for each element the lower-triangle pairs (eq_a ≥ eq_b)
-//! of its free DOFs in local order a-major (12 DOFs for beams, 24 for shells); then the 6×6
+//! of its free DOFs in local order a-major (12 DOFs for beams, 24 for shells, 54 for nine-node
+//! shells); then the 6×6
 //! node block of each point mass; then one zero diagonal slot per equation so every diagonal
 //! entry exists in the pattern. Stiffness and mass share the pattern, so K − σM is a sum of
 //! value vectors.
@@ -19,7 +20,7 @@ use rayon::prelude::*;
 #[derive(Debug, Clone)]
 pub struct Pattern {
     /// Element node lists the pattern was built for (checked on refill), padded with NONE.
-    topology: Vec<[usize; 4]>,
+    topology: Vec<[usize; 9]>,
     /// Nodes of the point masses the pattern was built for.
     mass_nodes: Vec<usize>,
     /// Start of each element's (then each point mass's) values in the triplet list
@@ -54,7 +55,7 @@ pub(crate) fn for_each_pair(eqs: &[usize], n: usize, mut f: impl FnMut(usize, us
     }
 }
 
-fn element_topology(model: &Model) -> Result<Vec<[usize; 4]>, FemError> {
+fn element_topology(model: &Model) -> Result<Vec<[usize; 9]>, FemError> {
     let n = model.nodes.len();
     model
         .elements
@@ -71,7 +72,7 @@ fn element_topology(model: &Model) -> Result<Vec<[usize; 4]>, FemError> {
                     });
                 }
             }
-            let mut t = [NONE; 4];
+            let mut t = [NONE; 9];
             for (slot, &n) in t.iter_mut().zip(&nodes) {
                 *slot = n;
             }
@@ -117,9 +118,9 @@ impl Pattern {
         })
     }
 
-    fn eqs(map: &DofMap, nodes: &[usize; 4]) -> ([usize; 24], usize) {
+    fn eqs(map: &DofMap, nodes: &[usize; 9]) -> ([usize; 54], usize) {
         let nn = nodes.iter().take_while(|&&n| n != NONE).count();
-        let mut reps = [0usize; 4];
+        let mut reps = [0usize; 9];
         for (r, &n) in reps.iter_mut().zip(&nodes[..nn]) {
             *r = map.rep[n];
         }
@@ -209,6 +210,20 @@ impl Pattern {
                 let eqs = map.nodes_eqs(&reps);
                 let mut p = 0;
                 for_each_pair(&eqs, 24, |a, b, _, _| {
+                    chunk[p] = k[(a, b)];
+                    p += 1;
+                });
+                return Ok(());
+            }
+            if let Element::Shell9(_) = model.elements[ie] {
+                let em = match kind {
+                    MatrixKind::Stiffness => model.shell9_matrix(ie)?,
+                    MatrixKind::Mass => model.shell9_mass_matrix(ie)?,
+                };
+                let (reps, k) = map.shell9_on_independent(&em);
+                let eqs = map.nodes_eqs(&reps);
+                let mut p = 0;
+                for_each_pair(&eqs, 54, |a, b, _, _| {
                     chunk[p] = k[(a, b)];
                     p += 1;
                 });

@@ -8,10 +8,10 @@
 
 use super::dof::{describe, Dof, NodeDof};
 use super::error::FemError;
-use super::model::{ElementMatrix, Model, ShellMatrix};
+use super::model::{ElementMatrix, Model, Shell9Matrix, ShellMatrix};
 use super::shell::Mat24;
 use super::transform::{rigid_arm, Mat12};
-use nalgebra::{Matrix6, Vector3, Vector6};
+use nalgebra::{DMatrix, Matrix6, Vector3, Vector6};
 
 /// Marks a DOF without an equation (constrained, or belonging to a slave node).
 pub const NONE: usize = usize::MAX;
@@ -323,6 +323,22 @@ impl DofMap {
         (reps, t.transpose() * em.k * t)
     }
 
+    /// Nine-node shell matrix carried to the independent nodes (as
+    /// [`DofMap::shell_on_independent`]).
+    pub fn shell9_on_independent(&self, em: &Shell9Matrix) -> ([usize; 9], DMatrix<f64>) {
+        let reps = em.nodes.map(|n| self.rep[n]);
+        if em.nodes.iter().all(|&n| self.arm[n].is_none()) {
+            return (reps, em.k.clone());
+        }
+        let mut t = DMatrix::identity(54, 54);
+        for (i, &n) in em.nodes.iter().enumerate() {
+            if let Some(r) = &self.arm[n] {
+                t.view_mut((6 * i, 6 * i), (6, 6)).copy_from(r);
+            }
+        }
+        (reps, t.transpose() * &em.k * t)
+    }
+
     /// A node's 6×6 matrix (global axes, e.g. a point mass) carried to its independent node:
     /// Rᵀ M R with R the rigid arm / frame of the node.
     pub fn node_on_independent(&self, node: usize, m: &Matrix6<f64>) -> (usize, Matrix6<f64>) {
@@ -332,10 +348,10 @@ impl DofMap {
         }
     }
 
-    /// Equation numbers of the 6·len DOFs of independent nodes `reps` (up to four).
-    pub fn nodes_eqs(&self, reps: &[usize]) -> [usize; 24] {
-        let mut e = [NONE; 24];
-        for (i, slot) in e.iter_mut().enumerate().take(6 * reps.len().min(4)) {
+    /// Equation numbers of the 6·len DOFs of independent nodes `reps` (up to nine).
+    pub fn nodes_eqs(&self, reps: &[usize]) -> [usize; 54] {
+        let mut e = [NONE; 54];
+        for (i, slot) in e.iter_mut().enumerate().take(6 * reps.len().min(9)) {
             *slot = self.eq[6 * reps[i / 6] + i % 6];
         }
         e

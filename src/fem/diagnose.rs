@@ -154,6 +154,10 @@ fn mode_energy(model: &Model, map: &DofMap, x: &[f64]) -> (f64, f64) {
             let Ok(em) = model.shell_matrix(ie) else { continue };
             let (reps, k) = map.shell_on_independent(&em);
             add(&|a, b| k[(a, b)], &map.nodes_eqs(&reps));
+        } else if let Element::Shell9(_) = el {
+            let Ok(em) = model.shell9_matrix(ie) else { continue };
+            let (reps, k) = map.shell9_on_independent(&em);
+            add(&|a, b| k[(a, b)], &map.nodes_eqs(&reps));
         } else {
             let Ok(em) = model.element_matrix(ie) else { continue };
             let (reps, k) = map.element_on_independent(&em);

@@ -82,6 +82,13 @@ pub fn gravity_loads(model: &Model, g: [f64; 3]) -> Result<NodeLoads, FemError> 
                     add(&mut loads, n, &f.as_slice()[6 * k..6 * k + 6]);
                 }
             }
+            Element::Shell9(_) => {
+                let m = model.shell9_mass_matrix(ie)?;
+                let f = &m.k * nalgebra::DVector::from_vec(field(9));
+                for (k, &n) in m.nodes.iter().enumerate() {
+                    add(&mut loads, n, &f.as_slice()[6 * k..6 * k + 6]);
+                }
+            }
             _ => {
                 let Some(m) = element_mass(model, ie)? else {
                     continue;

@@ -103,7 +103,7 @@ pub fn beam_local_mass_shear(rho: f64, a: f64, iy: f64, iz: f64, l: f64, phi_y: 
 
 /// Global mass of a two-node element (beams, with the shear-deformable mass when the beam has
 /// shear on; flexibility elements and springs are massless —
-/// model their mass with point masses). `None` for shells.
+/// model their mass with point masses). `None` for shells (four- and nine-node).
 pub fn element_mass(model: &Model, ie: usize) -> Result<Option<ElementMatrix>, FemError> {
     match model.elements.get(ie) {
         Some(Element::Beam(b)) => {
@@ -133,7 +133,7 @@ pub fn element_mass(model: &Model, ie: usize) -> Result<Option<ElementMatrix>, F
             n_nodes: if s.b.is_some() { 2 } else { 1 },
             k: Mat12::zeros(),
         })),
-        Some(Element::Shell4(_)) => Ok(None),
+        Some(Element::Shell4(_) | Element::Shell9(_)) => Ok(None),
         Some(Element::Matrix(m)) => m.matrix(ie, true).map(Some),
         None => Err(FemError::BadInput(format!("no element {ie}"))),
     }

@@ -41,6 +41,7 @@ pub mod recovery;
 pub mod results;
 pub mod section;
 pub mod shell;
+pub mod shell9;
 pub mod shell_loads;
 pub mod shell_recovery;
 pub mod shell_spr;
@@ -56,7 +57,7 @@ pub use cache::{solve_static, solve_static_cached, solve_static_with};
 pub use dof::{Dof, NodeDof};
 pub use error::FemError;
 pub use model::{
-    Beam, Element, FlexElement, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink, Shell4, Spring,
+    Beam, Element, FlexElement, LoadCase, Model, NodalLoad, PointMass, Prescribed, RigidLink, Shell4, Shell9, Spring,
     SpringAxes, Support, Tie,
 };
 pub use nonlinear::{

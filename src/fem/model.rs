@@ -7,7 +7,8 @@ pub use validate::{model_size, COINCIDENT};
 
 use super::dof::Dof;
 pub use super::elements::{
-    Beam, Element, ElementMatrix, FlexElement, MatrixElement, Shell4, ShellMatrix, Spring, SpringAxes,
+    Beam, Element, ElementMatrix, FlexElement, MatrixElement, Shell4, Shell9, Shell9Matrix, ShellMatrix, Spring,
+    SpringAxes,
 };
 use super::error::FemError;
 use super::section::SectionProps;
@@ -228,7 +229,7 @@ impl Model {
         let k = match &self.elements[ie] {
             Element::Beam(b) => b.local_stiffness(ie, l)?,
             Element::Flex(f) => f.local_stiffness(ie, l)?,
-            Element::Spring(_) | Element::Shell4(_) | Element::Matrix(_) => {
+            Element::Spring(_) | Element::Shell4(_) | Element::Shell9(_) | Element::Matrix(_) => {
                 return Err(FemError::BadInput(format!("element {ie} is not a beam")))
             }
         };
@@ -270,6 +271,9 @@ impl Model {
             Some(Element::Shell4(_)) => Err(FemError::BadInput(format!(
                 "element {ie} is a shell (use Model::shell_matrix)"
             ))),
+            Some(Element::Shell9(_)) => Err(FemError::BadInput(format!(
+                "element {ie} is a nine-node shell (use Model::shell9_matrix)"
+            ))),
             Some(Element::Matrix(m)) => {
                 for &n in &m.nodes[..m.n_nodes.min(2)] {
                     self.check_node(|| format!("element {ie} (matrix)"), n)?;
@@ -304,6 +308,31 @@ impl Model {
     pub fn shell_matrix(&self, ie: usize) -> Result<ShellMatrix, FemError> {
         let (s, x) = self.shell_checked(ie)?;
         s.matrix(ie, &x)
+    }
+
+    /// Checks a nine-node shell element (nodes, thickness, material) and returns it with its
+    /// node coordinates.
+    pub fn shell9_checked(&self, ie: usize) -> Result<(&Shell9, [[f64; 3]; 9]), FemError> {
+        let Some(Element::Shell9(s)) = self.elements.get(ie) else {
+            return Err(FemError::BadInput(format!("element {ie} is not a nine-node shell")));
+        };
+        for &n in &s.nodes {
+            self.check_node(|| format!("element {ie} (shell9)"), n)?;
+        }
+        s.check(ie)?;
+        Ok((s, s.nodes.map(|n| self.nodes[n])))
+    }
+
+    /// Global stiffness of nine-node shell element `ie` (54×54).
+    pub fn shell9_matrix(&self, ie: usize) -> Result<Shell9Matrix, FemError> {
+        let (s, x) = self.shell9_checked(ie)?;
+        s.matrix(ie, &x)
+    }
+
+    /// Global consistent mass of nine-node shell element `ie` (54×54).
+    pub fn shell9_mass_matrix(&self, ie: usize) -> Result<Shell9Matrix, FemError> {
+        let (s, x) = self.shell9_checked(ie)?;
+        s.mass(ie, &x)
     }
 
     /// Tip stiffness C⁻¹ of a flexibility element (local axes at node 2).

@@ -7,6 +7,7 @@ use super::model::{Element, Model};
 pub use super::results::{CaseResult, ElementResult, Statics};
 use super::section::{Section, SectionProps, StressPoint};
 use super::shell::{shell_stress, Vec24};
+use super::shell9::{shell9_stress_at, G3};
 use nalgebra::{SVector, Vector3};
 use rayon::prelude::*;
 
@@ -67,6 +68,14 @@ fn shell_vec(u: &[f64], nodes: [usize; 4]) -> Vec24 {
     d
 }
 
+fn max3(v: &[f64; 3]) -> f64 {
+    v.iter().copied().fold(0.0, f64::max)
+}
+
+fn shell9_vec(u: &[f64], nodes: [usize; 9]) -> nalgebra::DVector<f64> {
+    nalgebra::DVector::from_iterator(54, nodes.iter().flat_map(|&n| u[6 * n..6 * n + 6].iter().copied()))
+}
+
 /// Internal force vector p = Σₑ Kₑ uₑ (6 per node, global axes), ground springs included.
 pub fn internal_forces(model: &Model, u: &[f64]) -> Result<Vec<f64>, FemError> {
     let mut p = vec![0.0; model.n_dofs()];
@@ -75,6 +84,16 @@ pub fn internal_forces(model: &Model, u: &[f64]) -> Result<Vec<f64>, FemError> {
             let em = model.shell_matrix(ie)?;
             let f = em.k * shell_vec(u, em.nodes);
             for k in 0..4 {
+                for i in 0..6 {
+                    p[6 * em.nodes[k] + i] += f[6 * k + i];
+                }
+            }
+            continue;
+        }
+        if let Element::Shell9(_) = model.elements[ie] {
+            let em = model.shell9_matrix(ie)?;
+            let f = &em.k * shell9_vec(u, em.nodes);
+            for k in 0..9 {
                 for i in 0..6 {
                     p[6 * em.nodes[k] + i] += f[6 * k + i];
                 }
@@ -110,6 +129,34 @@ pub fn element_result(model: &Model, ie: usize, u: &[f64]) -> Result<ElementResu
                 section_forces: [[0.0; 6]; 2],
                 von_mises: Some([vm, vm]),
                 strain_energy: 0.5 * d.dot(&(em.k * d)),
+                shell: Some(stress),
+            })
+        }
+        Element::Shell9(sh) => {
+            let em = model.shell9_matrix(ie)?;
+            let d = shell9_vec(u, em.nodes);
+            let x = sh.nodes.map(|n| model.nodes[n]);
+            // The element's stress is its largest over the centre and the 3×3 Gauss points.
+            let mut stress = shell9_stress_at(&x, sh.t, &sh.material, &d, 0.0, 0.0);
+            for xi in [-G3, 0.0, G3] {
+                for eta in [-G3, 0.0, G3] {
+                    if let (Ok(s), Ok(best)) = (shell9_stress_at(&x, sh.t, &sh.material, &d, xi, eta), &stress) {
+                        if max3(&s.von_mises) > max3(&best.von_mises) {
+                            stress = Ok(s);
+                        }
+                    }
+                }
+            }
+            let stress = stress.map_err(|e| FemError::BadElement {
+                element: ie,
+                reason: e.to_string(),
+            })?;
+            let vm = max3(&stress.von_mises);
+            Ok(ElementResult {
+                end_forces: [[0.0; 6]; 2],
+                section_forces: [[0.0; 6]; 2],
+                von_mises: Some([vm, vm]),
+                strain_energy: 0.5 * d.dot(&(&em.k * &d)),
                 shell: Some(stress),
             })
         }

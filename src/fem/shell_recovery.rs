@@ -179,6 +179,90 @@ pub fn shell_recovery(x: &[[f64; 3]; 4], t: f64, mat: &Material, d_global: &Vec2
     })
 }
 
+/// Recovery of one nine-node shell ([`super::shell9`]) from its global displacements (54 values):
+/// centre resultants and, per node, the surface stresses. Strains at the 3×3 Gauss points
+/// (membrane, curvatures, MITC9 shear) are extrapolated to the nodes by the biquadratic through
+/// them (node at ξ takes the quadratic Lagrange weights through −√⅗, 0, √⅗ at ξ); otherwise as
+/// [`shell_recovery`].
+pub fn shell9_recovery(
+    x: &[[f64; 3]; 9],
+    t: f64,
+    mat: &Material,
+    d_global: &nalgebra::DVector<f64>,
+) -> Option<(ShellForces, [[[f64; 6]; 3]; 9])> {
+    use super::shell9::{
+        cartesian9, curvature_b as curv9, lagrange, membrane_b, mitc9_shear_b, shell9_geometry, tying, G3,
+    };
+    let g = shell9_geometry(x).ok()?;
+    let d = &g.t * d_global;
+    let mut dm = SVector::<f64, 27>::zeros();
+    let mut dp = SVector::<f64, 27>::zeros();
+    for i in 0..9 {
+        for (k, (&a, &b)) in [0, 1, 5].iter().zip([2, 3, 4].iter()).enumerate() {
+            dm[3 * i + k] = d[6 * i + a];
+            dp[3 * i + k] = d[6 * i + b];
+        }
+    }
+    let c = plane_stress(mat.e, mat.nu);
+    let ds = transverse_shear_stiffness(t, mat);
+    let tie = tying(&g.xy);
+    let strains = |xi: f64, eta: f64| {
+        let (_, dx, dy, _, ji) = cartesian9(&g.xy, xi, eta)?;
+        Some((
+            membrane_b(&dx, &dy) * dm,
+            curv9(&dx, &dy) * dp,
+            mitc9_shear_b(&tie, xi, eta, &ji) * dp,
+        ))
+    };
+    let (e0, k0, g0) = strains(0.0, 0.0)?;
+    let n = c * t * e0;
+    let m = c * (t * t * t / 12.0) * k0;
+    let q = g0 * ds;
+    let pts = [-G3, 0.0, G3];
+    let mut at = Vec::with_capacity(9);
+    for &eta in &pts {
+        for &xi in &pts {
+            at.push(strains(xi, eta)?);
+        }
+    }
+    let mut nodal = [[[0.0; 6]; 3]; 9];
+    for (i, node) in nodal.iter_mut().enumerate() {
+        // Lagrange weights through the Gauss abscissae: l(ξ) through −1, 0, 1 at ξ/√⅗.
+        let (wx, _) = lagrange(super::shell9::NODE_XI[i] / G3);
+        let (we, _) = lagrange(super::shell9::NODE_ETA[i] / G3);
+        let (mut e, mut k, mut gm) = (Vector3::zeros(), Vector3::zeros(), Vector2::zeros());
+        for (b, w_eta) in we.iter().enumerate() {
+            for (a, w_xi) in wx.iter().enumerate() {
+                let (ea, ka, ga) = &at[3 * b + a];
+                let w = w_xi * w_eta;
+                e += ea * w;
+                k += ka * w;
+                gm += ga * w;
+            }
+        }
+        for (s, z) in [0.5 * t, 0.0, -0.5 * t].into_iter().enumerate() {
+            let sp = c * (e + k * z);
+            let (txz, tyz) = if s == 1 {
+                (1.5 * ds / t * gm.x, 1.5 * ds / t * gm.y)
+            } else {
+                (0.0, 0.0)
+            };
+            let local = tensor(&[sp.x, sp.y, 0.0, sp.z, tyz, txz]);
+            node[s] = voigt(&(g.lam.transpose() * local * g.lam));
+        }
+    }
+    let row = |r: usize| [g.lam[(r, 0)], g.lam[(r, 1)], g.lam[(r, 2)]];
+    Some((
+        ShellForces {
+            axes: [row(0), row(1), row(2)],
+            n: [n.x, n.y, n.z],
+            m: [m.x, m.y, m.z],
+            q: [q.x, q.y],
+        },
+        nodal,
+    ))
+}
+
 /// Shell stresses of a whole model for one displacement field.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct ShellField {
@@ -198,7 +282,7 @@ pub struct ShellField {
 /// shells.
 pub fn shell_field(model: &Model, u: &[[f64; 6]]) -> Result<ShellField, FemError> {
     let shells: Vec<usize> = (0..model.elements.len())
-        .filter(|&ie| matches!(model.elements[ie], Element::Shell4(_)))
+        .filter(|&ie| matches!(model.elements[ie], Element::Shell4(_) | Element::Shell9(_)))
         .collect();
     if shells.is_empty() {
         return Ok(ShellField::default());
@@ -210,43 +294,54 @@ pub fn shell_field(model: &Model, u: &[[f64; 6]]) -> Result<ShellField, FemError
             u.len()
         )));
     }
-    let rec: Vec<(usize, [usize; 4], ShellRecovery)> = shells
+    type Rec = (usize, Vec<usize>, ShellForces, Vec<[[f64; 6]; 3]>);
+    let rec: Vec<Rec> = shells
         .par_iter()
         .map(|&ie| {
-            let Element::Shell4(sh) = &model.elements[ie] else {
-                unreachable!("filtered to shells")
+            let degenerate = || FemError::BadElement {
+                element: ie,
+                reason: "degenerate shell geometry".into(),
             };
-            let x = sh.nodes.map(|n| model.nodes[n]);
-            let mut d = Vec24::zeros();
-            for (k, &n) in sh.nodes.iter().enumerate() {
-                for i in 0..6 {
-                    d[6 * k + i] = u[n][i];
+            match &model.elements[ie] {
+                Element::Shell4(sh) => {
+                    let x = sh.nodes.map(|n| model.nodes[n]);
+                    let mut d = Vec24::zeros();
+                    for (k, &n) in sh.nodes.iter().enumerate() {
+                        for i in 0..6 {
+                            d[6 * k + i] = u[n][i];
+                        }
+                    }
+                    shell_recovery(&x, sh.t, &sh.material, &d)
+                        .map(|r| (ie, sh.nodes.to_vec(), r.forces, r.nodal.to_vec()))
+                        .ok_or_else(degenerate)
                 }
+                Element::Shell9(sh) => {
+                    let x = sh.nodes.map(|n| model.nodes[n]);
+                    let d = nalgebra::DVector::from_iterator(54, sh.nodes.iter().flat_map(|&n| u[n]));
+                    shell9_recovery(&x, sh.t, &sh.material, &d)
+                        .map(|(f, nodal)| (ie, sh.nodes.to_vec(), f, nodal.to_vec()))
+                        .ok_or_else(degenerate)
+                }
+                _ => unreachable!("filtered to shells"),
             }
-            shell_recovery(&x, sh.t, &sh.material, &d)
-                .map(|r| (ie, sh.nodes, r))
-                .ok_or_else(|| FemError::BadElement {
-                    element: ie,
-                    reason: "degenerate shell geometry".into(),
-                })
         })
         .collect::<Result<_, _>>()?;
     let mut sum = vec![[[0.0; 6]; 3]; nn];
     let mut count = vec![0.0f64; nn];
     let mut forces = Vec::with_capacity(rec.len());
-    for (ie, nodes, r) in rec {
+    for (ie, nodes, r_forces, r_nodal) in rec {
         // A triangle [a, b, c, c] gives node c the mean of its two corner values.
-        let tri = nodes[3] == nodes[2];
+        let tri = nodes.len() == 4 && nodes[3] == nodes[2];
         for (k, &n) in nodes.iter().enumerate() {
             let w = if tri && k >= 2 { 0.5 } else { 1.0 };
-            for (acc, v) in sum[n].iter_mut().zip(&r.nodal[k]) {
+            for (acc, v) in sum[n].iter_mut().zip(&r_nodal[k]) {
                 for (a, b) in acc.iter_mut().zip(v) {
                     *a += w * b;
                 }
             }
             count[n] += w;
         }
-        forces.push((ie, r.forces));
+        forces.push((ie, r_forces));
     }
     let mut field = ShellField {
         forces,
@@ -269,9 +364,13 @@ pub fn orientation_conflicts(model: &Model) -> Vec<(usize, usize, [usize; 2])> {
     let mut seen: std::collections::HashMap<(usize, usize), usize> = std::collections::HashMap::new();
     let mut out = Vec::new();
     for (ie, e) in model.elements.iter().enumerate() {
-        let Element::Shell4(sh) = e else { continue };
+        let corners = match e {
+            Element::Shell4(sh) => sh.nodes,
+            Element::Shell9(sh) => [sh.nodes[0], sh.nodes[1], sh.nodes[2], sh.nodes[3]],
+            _ => continue,
+        };
         for k in 0..4 {
-            let (a, b) = (sh.nodes[k], sh.nodes[(k + 1) % 4]);
+            let (a, b) = (corners[k], corners[(k + 1) % 4]);
             if a == b {
                 continue;
             }

@@ -124,7 +124,7 @@ impl StageModel {
                     elements.push(h);
                 }
                 // The stage builds beams and hinges only.
-                Element::Spring(_) | Element::Shell4(_) | Element::Matrix(_) => return None,
+                Element::Spring(_) | Element::Shell4(_) | Element::Shell9(_) | Element::Matrix(_) => return None,
             }
         }
         if ideal {

@@ -122,11 +122,16 @@ fn build(case: &BucklingCase) -> Result<(Model, Vec<crate::case::mesh::BuiltHing
     crate::case::mesh::superelement::refuse_in(&case.model, "linear buckling")?;
     crate::case::limits::check_modal(case.modes, case.model.nodes.len())?;
     let (model, hinges) = case.model.build_with_hinges(true, false)?;
-    if let Some(ie) = model.elements.iter().position(|e| matches!(e, Element::Shell4(_))) {
+    if let Some(ie) = model
+        .elements
+        .iter()
+        .position(|e| matches!(e, Element::Shell4(_) | Element::Shell9(_)))
+    {
+        let kind = if matches!(model.elements[ie], Element::Shell9(_)) { "shell9" } else { "shell4" };
         return Err(CaseError::new(
             format!("elements[{}]", shell_case_element(case, ie)),
             format!(
-                "element {ie} is a shell (shell4): linear buckling has the geometric stiffness of beams, hinge (flexibility) elements, joints, springs and rigid links only; model the part with beams"
+                "element {ie} is a shell ({kind}): linear buckling has the geometric stiffness of beams, hinge (flexibility) elements, joints, springs and rigid links only; model the part with beams"
             ),
         ));
     }
@@ -138,7 +143,12 @@ fn shell_case_element(case: &BucklingCase, ie: usize) -> usize {
     case.model
         .elements
         .iter()
-        .position(|e| matches!(e, crate::case::mesh::ElementSpec::Shell4 { .. }))
+        .position(|e| {
+            matches!(
+                e,
+                crate::case::mesh::ElementSpec::Shell4 { .. } | crate::case::mesh::ElementSpec::Shell9 { .. }
+            )
+        })
         .unwrap_or(ie)
 }
 

@@ -103,6 +103,14 @@ pub fn render(scene: &Scene, req: &PictureRequest) -> String {
                     points: pts,
                 });
             }
+            // The outline through the edge midpoints.
+            Element::Shell9(s) => {
+                let n = s.nodes;
+                items.push(Item {
+                    shape: Shape::Shell { utilisation: None },
+                    points: vec![n[0], n[4], n[1], n[5], n[2], n[6], n[3], n[7]],
+                });
+            }
         }
     }
     for r in &model.rigid_links {

@@ -101,6 +101,14 @@ pub fn model_cells(model: &Model) -> ModelCells {
                 };
                 c.push(cell, ie, Part::Shell);
             }
+            // Four bilinear cells through the edge midpoints and the centre, each tagged with
+            // the element.
+            Element::Shell9(s) => {
+                let n = s.nodes;
+                for q in [[0, 4, 8, 7], [4, 1, 5, 8], [8, 5, 2, 6], [7, 8, 6, 3]] {
+                    c.push(Cell::Quad(q.map(|k| n[k])), ie, Part::Shell);
+                }
+            }
         }
     }
     for r in &model.rigid_links {

@@ -131,12 +131,17 @@ impl ConstraintsCase {
                         format!("no such element: the model has {n} elements (indices 0 … {})", n.max(1) - 1),
                     ))
                 }
-                Some(ElementSpec::Beam { .. } | ElementSpec::Hinge { .. } | ElementSpec::Shell4 { .. }) => {}
+                Some(
+                    ElementSpec::Beam { .. }
+                    | ElementSpec::Hinge { .. }
+                    | ElementSpec::Shell4 { .. }
+                    | ElementSpec::Shell9 { .. },
+                ) => {}
                 Some(_) => {
                     return Err(CaseError::value(
                         p,
                         e,
-                        "only beam, hinge and shell4 elements can be taken as compliant (springs and masses join nothing anyway; joints and rigid links are the constraints)",
+                        "only beam, hinge, shell4 and shell9 elements can be taken as compliant (springs and masses join nothing anyway; joints and rigid links are the constraints)",
                     ))
                 }
             }
@@ -238,6 +243,7 @@ pub fn kinematic(
         let group: Vec<usize> = match e {
             ElementSpec::Beam { nodes, .. } if rigid => nodes.to_vec(),
             ElementSpec::Shell4 { nodes, .. } if rigid => nodes.to_vec(),
+            ElementSpec::Shell9 { nodes, .. } if rigid => nodes.to_vec(),
             ElementSpec::Superelement { nodes, .. } if rigid => nodes.clone(),
             ElementSpec::Hinge { nodes, up, .. } if rigid => match hinges {
                 HingeView::Rigid => nodes.to_vec(),

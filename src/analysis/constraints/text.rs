@@ -191,6 +191,7 @@ impl<'a> Names<'a> {
                 let first = match &self.spec.elements[i] {
                     ElementSpec::Beam { nodes, .. } | ElementSpec::Hinge { nodes, .. } => nodes[0],
                     ElementSpec::Shell4 { nodes, .. } => nodes[0],
+                    ElementSpec::Shell9 { nodes, .. } => nodes[0],
                     ElementSpec::Rigid { master, .. } => *master,
                     _ => return false,
                 };

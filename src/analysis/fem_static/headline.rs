@@ -40,6 +40,7 @@ fn sites(model: &Model, case_index: &[Option<usize>], hinges: &[BuiltHinge]) -> 
             let (kind, allowable) = match e {
                 Element::Beam(b) => ("beam", b.material.allowable),
                 Element::Shell4(s) => ("shell", s.material.allowable),
+                Element::Shell9(s) => ("shell", s.material.allowable),
                 _ => return None,
             };
             Some(Site {

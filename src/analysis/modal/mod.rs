@@ -133,10 +133,10 @@ pub fn solve_with(
 /// gives 1.7e-14, a 1 kHz plate mode 1e-7.
 pub const RIGID_MODE_TOL: f64 = 3e-15;
 
-/// Strain energy φₑᵀKₑφₑ of one element (at most 4 nodes) in `shape` (global rows, mm and rad)
+/// Strain energy φₑᵀKₑφₑ of one element (at most 9 nodes) in `shape` (global rows, mm and rad)
 /// and its round-off scale |φₑ|ᵀ|Kₑ||φₑ| (|·| entrywise).
 fn element_energy(k: &dyn Fn(usize, usize) -> f64, nodes: &[usize], shape: &[[f64; 6]]) -> (f64, f64) {
-    let mut v = [0.0; 24];
+    let mut v = [0.0; 54];
     for (i, &n) in nodes.iter().enumerate() {
         v[6 * i..6 * i + 6].copy_from_slice(&shape[n]);
     }
@@ -174,6 +174,10 @@ pub fn mode_energies_with(
             if let Ok(em) = model.shell_matrix(ie) {
                 add(ie, &|a, b| em.k[(a, b)], &em.nodes);
             }
+        } else if let crate::fem::Element::Shell9(_) = el {
+            if let Ok(em) = model.shell9_matrix(ie) {
+                add(ie, &|a, b| em.k[(a, b)], &em.nodes);
+            }
         } else if let Ok(em) = model.element_matrix(ie) {
             add(ie, &|a, b| em.k[(a, b)], &em.nodes[..em.n_nodes]);
         }
@@ -196,14 +200,23 @@ pub const DRILLING_SHARE: f64 = 0.5;
 /// stiffness (e.g. a rotary inertia or a beam turning a shell node about the shell normal).
 /// Rigid-body modes are skipped.
 pub fn drilling_warnings(model: &Model, raw: &ModalResults) -> Vec<String> {
-    use crate::fem::{shell::shell_drilling_stiffness, Element};
-    let shells: Vec<_> = model
+    use crate::fem::{shell::shell_drilling_stiffness, shell9::shell9_drilling_stiffness, Element};
+    let shells: Vec<(nalgebra::DMatrix<f64>, Vec<usize>)> = model
         .elements
         .iter()
         .filter_map(|e| match e {
             Element::Shell4(s) => {
                 let x = s.nodes.map(|n| model.nodes[n]);
-                shell_drilling_stiffness(&x, s.t, &s.material).map(|k| (k, s.nodes))
+                shell_drilling_stiffness(&x, s.t, &s.material).map(|k| {
+                    (
+                        nalgebra::DMatrix::from_column_slice(24, 24, k.as_slice()),
+                        s.nodes.to_vec(),
+                    )
+                })
+            }
+            Element::Shell9(s) => {
+                let x = s.nodes.map(|n| model.nodes[n]);
+                shell9_drilling_stiffness(&x, s.t, &s.material).map(|k| (k, s.nodes.to_vec()))
             }
             _ => None,
         })
@@ -220,8 +233,9 @@ pub fn drilling_warnings(model: &Model, raw: &ModalResults) -> Vec<String> {
         let drill: f64 = shells
             .iter()
             .map(|(kd, nodes)| {
-                let v = nalgebra::SVector::<f64, 24>::from_iterator(nodes.iter().flat_map(|&n| m.shape[n]));
-                v.dot(&(kd * v))
+                let v =
+                    nalgebra::DVector::<f64>::from_iterator(6 * nodes.len(), nodes.iter().flat_map(|&n| m.shape[n]));
+                v.dot(&(kd * &v))
             })
             .sum();
         let share = drill / total;

@@ -245,7 +245,8 @@ impl TransientCase {
         if !self.motions.is_empty() {
             return refuse("motions", "a prescribed motion");
         }
-        if let Some(i) = self.model.elements.iter().position(|e| matches!(e, ElementSpec::Shell4 { .. })) {
+        if let Some(i) = self.model.elements.iter().position(|e| matches!(e, ElementSpec::Shell4 { .. } | ElementSpec::Shell9 { .. }))
+        {
             return refuse(&format!("elements[{i}]"), "a shell element");
         }
         crate::case::mesh::superelement::refuse_in(&self.model, "nonlinear transients")?;

@@ -320,6 +320,11 @@ fn element(cx: &mut Ctx, p: &str, e: &ElementSpec) -> Result<(), CaseError> {
             section,
             material,
         } => shell4(cx, p, *nodes, section, material)?,
+        ElementSpec::Shell9 {
+            nodes,
+            section,
+            material,
+        } => shell9(cx, p, *nodes, section, material)?,
         ElementSpec::Superelement {
             file,
             nodes,
@@ -364,6 +369,42 @@ fn shell4(cx: &mut Ctx, p: &str, nodes: [usize; 4], section: &str, material: &st
         ));
     }
     cx.model.add_element(fem::Element::Shell4(fem::Shell4 {
+        nodes: ns,
+        t,
+        material: mat,
+    }));
+    Ok(())
+}
+
+fn shell9(cx: &mut Ctx, p: &str, nodes: [usize; 9], section: &str, material: &str) -> Result<(), CaseError> {
+    let mut ns = [0usize; 9];
+    for (k, &nd) in nodes.iter().enumerate() {
+        ns[k] = cx.node(format!("{p}.nodes[{k}]"), nd)?;
+    }
+    for a in 0..9 {
+        for b in 0..a {
+            if ns[a] == ns[b] {
+                return Err(CaseError::value(
+                    format!("{p}.nodes"),
+                    format!("{ns:?}"),
+                    "a shell9 needs nine different nodes",
+                ));
+            }
+        }
+    }
+    let BuiltSection::Shell(t) = *cx.sections.get(&format!("{p}.section"), section)? else {
+        return Err(wrong_section(
+            p,
+            section,
+            "a shell9 needs a section with \"shape\": \"shell\"",
+        ));
+    };
+    let mat = *cx.materials.get(&format!("{p}.material"), material)?;
+    let x = ns.map(|i| cx.spec.nodes[i]);
+    if let Err(e) = fem::shell9::shell9_geometry(&x) {
+        return Err(CaseError::value(format!("{p}.nodes"), format!("{ns:?}"), e.to_string()));
+    }
+    cx.model.add_element(fem::Element::Shell9(fem::Shell9 {
         nodes: ns,
         t,
         material: mat,

@@ -76,10 +76,20 @@ pub(super) fn load_case(cx: &mut Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::
             let at = format!("{pp}.elements[{k}]");
             let me = cx.model_index.get(e).copied().flatten();
             match me.and_then(|m| cx.model.elements.get(m)) {
-                Some(fem::Element::Shell4(_)) => list.push((at, me.unwrap_or(e))),
-                Some(_) => return Err(CaseError::value(at, e, "a pressure acts on shell4 elements only")),
+                Some(fem::Element::Shell4(_) | fem::Element::Shell9(_)) => list.push((at, me.unwrap_or(e))),
+                Some(_) => {
+                    return Err(CaseError::value(
+                        at,
+                        e,
+                        "a pressure acts on shell4 and shell9 elements only",
+                    ))
+                }
                 None if e < cx.spec.elements.len() => {
-                    return Err(CaseError::value(at, e, "a pressure acts on shell4 elements only"))
+                    return Err(CaseError::value(
+                        at,
+                        e,
+                        "a pressure acts on shell4 and shell9 elements only",
+                    ))
                 }
                 None => {
                     return Err(CaseError::value(
@@ -108,7 +118,10 @@ pub(super) fn load_case(cx: &mut Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::
                     continue;
                 };
                 if groups.iter().any(|g| g == gname)
-                    && matches!(cx.model.elements.get(me), Some(fem::Element::Shell4(_)))
+                    && matches!(
+                        cx.model.elements.get(me),
+                        Some(fem::Element::Shell4(_) | fem::Element::Shell9(_))
+                    )
                 {
                     list.push((at.clone(), me));
                 }
@@ -128,14 +141,24 @@ pub(super) fn load_case(cx: &mut Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::
             ));
         }
         for (at, e) in list {
-            let Some(fem::Element::Shell4(sh)) = cx.model.elements.get(e) else {
-                continue;
-            };
-            let x = sh.nodes.map(|n| cx.model.nodes[n]);
-            let f = fem::shell_loads::pressure_loads(&x, pr.p)
-                .ok_or_else(|| CaseError::value(at, e, "degenerate shell geometry"))?;
-            for (k, &n) in sh.nodes.iter().enumerate() {
-                lc = lc.force(n, f[k]);
+            match cx.model.elements.get(e) {
+                Some(fem::Element::Shell4(sh)) => {
+                    let x = sh.nodes.map(|n| cx.model.nodes[n]);
+                    let f = fem::shell_loads::pressure_loads(&x, pr.p)
+                        .ok_or_else(|| CaseError::value(at, e, "degenerate shell geometry"))?;
+                    for (k, &n) in sh.nodes.iter().enumerate() {
+                        lc = lc.force(n, f[k]);
+                    }
+                }
+                Some(fem::Element::Shell9(sh)) => {
+                    let x = sh.nodes.map(|n| cx.model.nodes[n]);
+                    let f = fem::shell9::shell9_pressure_loads(&x, pr.p)
+                        .map_err(|err| CaseError::value(at, e, err.to_string()))?;
+                    for (k, &n) in sh.nodes.iter().enumerate() {
+                        lc = lc.force(n, f[k]);
+                    }
+                }
+                _ => continue,
             }
         }
     }
@@ -162,7 +185,7 @@ pub(super) fn load_case(cx: &mut Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::
             return Err(CaseError::value(
                 format!("{pe}.nodes"),
                 format!("[{a}, {b}]"),
-                "must be two nodes adjacent in the node list of a shell4 element (an element edge)",
+                "must be two nodes adjacent in the node list of a shell4 element (an element edge; edge loads on shell9 edges are not available: give nodal forces)",
             ));
         }
         let f = fem::shell_loads::edge_loads(cx.model.nodes[a], cx.model.nodes[b], el.q, el.m);

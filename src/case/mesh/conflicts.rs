@@ -25,6 +25,10 @@ pub(super) fn element_length(cx: &Ctx, p: &str, e: &ElementSpec, size: f64) -> R
             .map(|k| (nodes[k], nodes[(k + 1) % 4]))
             .filter(|(a, b)| a != b)
             .collect(),
+        // Each half edge: corner to midpoint to corner.
+        ElementSpec::Shell9 { nodes, .. } => (0..4)
+            .flat_map(|k| [(nodes[k], nodes[4 + k]), (nodes[4 + k], nodes[(k + 1) % 4])])
+            .collect(),
         _ => Vec::new(),
     };
     let tol = SHORTEST * size;

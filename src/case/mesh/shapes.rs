@@ -170,6 +170,19 @@ pub enum ElementSpec {
         /// Material name.
         material: String,
     },
+    /// 9-node flat shell (MITC9 plate, biquadratic membrane, consistent mass): corners around
+    /// the element, then the midpoints of edges 0–1, 1–2, 2–3, 3–0, then the centre (gmsh's
+    /// nine-node quadrangle). Flat only: a node more than 10⁻³ of the longer diagonal off the
+    /// element's plane is refused. Linear analyses (static, modal, frf, transient,
+    /// craig_bampton); no buckling or geometrically nonlinear solve.
+    Shell9 {
+        /// Node indices.
+        nodes: [usize; 9],
+        /// Section name (a `shell` section).
+        section: String,
+        /// Material name.
+        material: String,
+    },
     /// A reduced superelement: the `result.json` of a `craig_bampton` analysis (stiffness and
     /// mass on the six DOFs of each interface node plus its fixed-interface modal coordinates)
     /// attached to `nodes` (linear analyses: static, modal, transient, frf).

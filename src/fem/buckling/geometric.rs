@@ -86,6 +86,11 @@ pub fn element_geometric(model: &Model, ie: usize, u: &[f64]) -> Result<Option<M
                 "element {ie} is a shell (shell4): linear buckling has the geometric stiffness of beams, hinge (flexibility) elements, springs and rigid links only"
             )))
         }
+        Element::Shell9(_) => {
+            return Err(FemError::BadInput(format!(
+                "element {ie} is a shell (shell9): linear buckling has the geometric stiffness of beams, hinge (flexibility) elements, springs and rigid links only"
+            )))
+        }
         Element::Matrix(_) => {
             return Err(FemError::BadInput(format!(
                 "element {ie} is a piece of a superelement: linear buckling has the geometric stiffness of beams, hinge (flexibility) elements, springs and rigid links only (a reduced superelement has none)"

@@ -106,7 +106,7 @@ pub fn solve_buckling(model: &Model, case: usize, opts: &BucklingOptions) -> Res
     if let Some(ie) = model
         .elements
         .iter()
-        .position(|e| matches!(e, super::model::Element::Shell4(_)))
+        .position(|e| matches!(e, super::model::Element::Shell4(_) | super::model::Element::Shell9(_)))
     {
         return Err(geometric::element_geometric(model, ie, &[])
             .err()

@@ -198,6 +198,7 @@ fn renumber_element(e: &Element, map: &impl Fn(usize) -> usize) -> Element {
             s.b = s.b.map(map);
         }
         Element::Shell4(s) => s.nodes = s.nodes.map(map),
+        Element::Shell9(s) => s.nodes = s.nodes.map(map),
         Element::Matrix(m) => m.nodes = m.nodes.map(map),
     }
     e

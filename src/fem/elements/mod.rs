@@ -1,16 +1,18 @@
 //! The element kinds, one file each with its data and its matrices: [`Beam`], [`FlexElement`],
-//! [`Spring`], [`Shell4`], [`MatrixElement`]. [`super::model::Model`] dispatches to them by [`Element`].
+//! [`Spring`], [`Shell4`], [`Shell9`], [`MatrixElement`]. [`super::model::Model`] dispatches to them by [`Element`].
 
 pub mod beam;
 pub mod flex;
 pub mod matrix;
 pub mod shell4;
+pub mod shell9;
 pub mod spring;
 
 pub use beam::Beam;
 pub use flex::FlexElement;
 pub use matrix::MatrixElement;
 pub use shell4::{Shell4, ShellMatrix};
+pub use shell9::{Shell9, Shell9Matrix};
 pub use spring::{Spring, SpringAxes};
 
 use super::error::FemError;
@@ -24,6 +26,8 @@ pub enum Element {
     Flex(FlexElement),
     Spring(Spring),
     Shell4(Shell4),
+    /// Nine-node flat shell.
+    Shell9(Shell9),
     /// Given stiffness and mass matrices (superelement pieces); boxed, it is large.
     Matrix(Box<MatrixElement>),
 }
@@ -39,6 +43,7 @@ impl Element {
                 None => vec![s.a],
             },
             Element::Shell4(s) => s.nodes.to_vec(),
+            Element::Shell9(s) => s.nodes.to_vec(),
             Element::Matrix(m) => m.nodes[..m.n_nodes].to_vec(),
         }
     }
@@ -51,6 +56,7 @@ impl Element {
             Element::Flex(f) => f.nodes,
             Element::Spring(s) => [s.a, s.b.unwrap_or(s.a)],
             Element::Shell4(s) => [s.nodes[0], s.nodes[1]],
+            Element::Shell9(s) => [s.nodes[0], s.nodes[1]],
             Element::Matrix(m) if m.n_nodes == 2 => m.nodes,
             Element::Matrix(m) => [m.nodes[0]; 2],
         }

@@ -41,6 +41,9 @@ impl Model {
                 Element::Shell4(_) => {
                     self.shell_matrix(ie)?;
                 }
+                Element::Shell9(_) => {
+                    self.shell9_matrix(ie)?;
+                }
                 _ => {
                     self.element_matrix(ie)?;
                 }

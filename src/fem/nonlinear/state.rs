@@ -29,7 +29,7 @@ pub(super) enum ElemData {
 pub(super) fn element_data(model: &Model) -> Result<Vec<ElemData>, FemError> {
     (0..model.elements.len())
         .map(|ie| match &model.elements[ie] {
-            Element::Shell4(_) => Err(FemError::BadInput(format!(
+            Element::Shell4(_) | Element::Shell9(_) => Err(FemError::BadInput(format!(
                 "element {ie} is a shell: the geometrically nonlinear solver handles beams, flexibility elements (hinges) and springs"
             ))),
             Element::Matrix(_) => Err(FemError::BadInput(format!(

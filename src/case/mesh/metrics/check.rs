@@ -198,12 +198,17 @@ fn check_buckling(model: &MeshSpec) -> Result<(), CaseError> {
     if let Some(i) = model
         .elements
         .iter()
-        .position(|e| matches!(e, ElementSpec::Shell4 { .. }))
+        .position(|e| matches!(e, ElementSpec::Shell4 { .. } | ElementSpec::Shell9 { .. }))
     {
+        let kind = if matches!(model.elements[i], ElementSpec::Shell9 { .. }) {
+            "shell9"
+        } else {
+            "shell4"
+        };
         return Err(CaseError::value(
             "kind",
             "\"buckling_margin\"",
-            format!("needs linear buckling, which has the geometric stiffness of beams, hinges, springs and rigid links only; elements[{i}] is a shell (shell4)"),
+            format!("needs linear buckling, which has the geometric stiffness of beams, hinges, springs and rigid links only; elements[{i}] is a shell ({kind})"),
         ));
     }
     Ok(())
