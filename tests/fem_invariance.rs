@@ -67,7 +67,7 @@ fn rotate(m: &Model, q: &Matrix3<f64>) -> Model {
                     }
                 }
             }
-            Element::Shell4(_) => {}
+            Element::Shell4(_) | Element::Shell9(_) => {}
             // Given matrices in global axes turn with the model: K' = T K Tᵀ, T = diag(q, q, q, q).
             Element::Matrix(me) => {
                 let mut t = nalgebra::SMatrix::<f64, 12, 12>::zeros();
@@ -102,6 +102,11 @@ fn reverse(m: &Model) -> Model {
             }
             // Reversed orientation: the normal flips, the physics must not.
             Element::Shell4(s) => s.nodes = [s.nodes[0], s.nodes[3], s.nodes[2], s.nodes[1]],
+            // Corners 0 3 2 1, edges 3–0, 2–3, 1–2, 0–1, the centre.
+            Element::Shell9(s) => {
+                let n = s.nodes;
+                s.nodes = [n[0], n[3], n[2], n[1], n[7], n[6], n[5], n[4], n[8]];
+            }
             // Swapping the two nodes swaps the 6×6 blocks of the given matrices.
             Element::Matrix(me) if me.n_nodes == 2 => {
                 me.nodes.reverse();

@@ -75,6 +75,9 @@ pub fn result_of(
         "shells: 4-node flat shell (membrane with drilling rotation, MITC4 bending and transverse shear); von Mises at the element centre, max of top/mid/bottom"
             .to_string(),
     ];
+    if model.elements.iter().any(|e| matches!(e, fem::Element::Shell9(_))) {
+        notes.push(SHELL9_NOTE.to_string());
+    }
     notes.extend(fem::superelement::notes(model));
     Ok((
         StaticResult {
@@ -91,6 +94,9 @@ pub fn result_of(
         res,
     ))
 }
+
+/// The model note of nine-node shells (statics).
+pub const SHELL9_NOTE: &str = "shells: 9-node flat shell (shell9: biquadratic membrane with drilling rotation, MITC9 bending and transverse shear; flat elements only); von Mises the largest over the element centre and its 3×3 Gauss points, max of top/mid/bottom; surface stresses at the nodes extrapolated from the Gauss points (no patch recovery)";
 
 /// Geometrically nonlinear statics of every load case in `steps` load steps. Rotations in the
 /// output are the components of each node's rotation vector (degrees). Also returns the final

@@ -115,6 +115,13 @@ pub fn solve_with(
             r.n_eq, r.shift, r.lanczos_steps
         ),
     ];
+    if model
+        .elements
+        .iter()
+        .any(|e| matches!(e, crate::fem::Element::Shell9(_)))
+    {
+        notes.push("mass: 9-node shells (shell9) consistent (biquadratic ρt and ρt³/12 mass, none on the drilling rotation); the coarse-mesh frequency estimate covers 4-node shells only".to_string());
+    }
     notes.extend(crate::fem::superelement::notes(model));
     Ok((
         ModalResult {
