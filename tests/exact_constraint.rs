@@ -290,10 +290,11 @@ fn singular_static_solve_carries_the_diagnosis() {
     );
 }
 
-/// A `compliant` entry that is not a beam, hinge or shell4 element is refused with its path.
+/// A `compliant` entry that is not a beam, hinge, shell4 or shell9 element is refused with its
+/// path.
 #[test]
 fn compliant_must_name_a_deformable_element() {
-    for (bad, why) in [(9, "no such element"), (5, "only beam, hinge and shell4")] {
+    for (bad, why) in [(9, "no such element"), (5, "only beam, hinge, shell4 and shell9")] {
         let mut c = rrrr();
         c["compliant"] = json!([bad]);
         let o = run_case_text("exact-compliant", &c.to_string());

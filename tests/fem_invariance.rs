@@ -1,7 +1,10 @@
 //! Orientation invariance (proptest): the same model rotated by a random rigid rotation, and
-//! with every element's node order reversed, gives the same results transformed.
+//! with every element's node order reversed, gives the same results transformed (beams, a
+//! spring, a rigid link and a nine-node shell panel in a tilted plane).
 
-use flexfem::fem::{solve_static, Beam, Element, LoadCase, Model, RigidLink, Section, Spring, SpringAxes, Support};
+use flexfem::fem::{
+    solve_static, Beam, Element, LoadCase, Model, RigidLink, Section, Shell9, Spring, SpringAxes, Support,
+};
 use flexfem::material::Material;
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use proptest::prelude::*;
@@ -32,11 +35,40 @@ fn base() -> Model {
         k: [1e3, 2e3, 3e3, 1e5, 2e5, 3e5],
         axes: SpringAxes::from_x_up([1.0, -0.5, 0.0], [0.0, 0.0, 1.0]).unwrap(),
     }));
+    // A nine-node shell panel in a tilted plane, hung from node 2 (corner 0).
+    let (p, e1, e2) = (
+        Vector3::new(60.0, 40.0, 0.0),
+        Vector3::new(10.0, 0.0, 0.0),
+        Vector3::new(0.0, 8.0, 6.0),
+    );
+    let mut panel = [2usize; 9];
+    for (k, (a, b)) in [
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.0, 1.0),
+        (0.5, 0.0),
+        (1.0, 0.5),
+        (0.5, 1.0),
+        (0.0, 0.5),
+        (0.5, 0.5),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let x = p + e1 * a + e2 * b;
+        panel[k + 1] = m.add_node([x.x, x.y, x.z]);
+    }
+    m.add_element(Element::Shell9(Shell9 {
+        nodes: panel,
+        t: 1.0,
+        material: al,
+    }));
     m.supports.push(Support::clamp(0));
     m.load_cases.push(
         LoadCase::new("a")
             .force(3, [1.0, -2.0, 3.0, 20.0, -10.0, 5.0])
-            .force(5, [0.5, 0.5, -1.0, 0.0, 0.0, 10.0]),
+            .force(5, [0.5, 0.5, -1.0, 0.0, 0.0, 10.0])
+            .force(panel[2], [0.5, -0.3, 1.0, 5.0, 0.0, -2.0]),
     );
     m
 }

@@ -276,9 +276,11 @@ fn patch_tests_on_a_distorted_mesh() {
         let (fm, fb) = (field_m(m.nodes[k]), field_b(m.nodes[k]));
         if on {
             m.supports.push(Support::clamp(k));
+            // zip-checked: three DOFs, three field values.
             for (d, v) in [Dof::Ux, Dof::Uy, Dof::Rz].into_iter().zip(fm) {
                 lc = lc.displacement(k, d, v);
             }
+            // zip-checked: three DOFs, three field values.
             for (d, v) in [Dof::Uz, Dof::Rx, Dof::Ry].into_iter().zip(fb) {
                 lc = lc.displacement(k, d, v);
             }
@@ -293,10 +295,10 @@ fn patch_tests_on_a_distorted_mesh() {
             continue;
         }
         let (fm, fb) = (field_m(m.nodes[k]), field_b(m.nodes[k]));
-        for (got, want) in [u[k][0], u[k][1], u[k][5], u[k][2], u[k][3], u[k][4]]
-            .iter()
-            .zip(fm.iter().chain(&fb))
-        {
+        let got = [u[k][0], u[k][1], u[k][5], u[k][2], u[k][3], u[k][4]];
+        let want: Vec<f64> = fm.iter().chain(&fb).copied().collect();
+        assert_eq!(got.len(), want.len());
+        for (got, want) in got.iter().zip(&want) {
             worst = worst.max((got - want).abs() / 1e-2);
         }
     }

@@ -187,7 +187,7 @@ pub fn shell9_geometry(x: &[[f64; 3]; 9]) -> Result<Shell9Geometry, Shell9Geomet
         .enumerate()
         .max_by(|a, b| (a.1 - mean).abs().total_cmp(&(b.1 - mean).abs()))
     {
-        if !((offset - mean).abs() <= limit) {
+        if (offset - mean).abs() > limit || !offset.is_finite() {
             return Err(Shell9GeometryError::NotFlat {
                 node,
                 offset: (offset - mean).abs(),

@@ -1,0 +1,181 @@
+//! The nine-node shell through case files: the bundled cases against Leissa's and Timoshenko's
+//! plate values, a Gmsh nine-node quadrangle mesh against the same model written as JSON, and
+//! the refusals (curved, repeated nodes, a beam section, buckling, nonlinear statics, edge
+//! loads) with their JSON paths.
+
+use serde_json::{json, Value};
+
+mod common;
+use common::*;
+
+fn run_value(case: Value) -> Value {
+    let c = flexfem::analysis::parse_value(case, None).expect("valid case");
+    flexfem::analysis::run(&c).expect("analysis runs").json
+}
+
+fn mesh() -> Value {
+    serde_json::from_slice(&std::fs::read(root().join("meshes/plate_shell9_clamped.json")).unwrap()).unwrap()
+}
+
+/// Al 7075 as built in: E 72000 MPa, ν 0.33, ρ 2.81e-9 t/mm³; t = 1, a = 100.
+fn plate_d() -> f64 {
+    72_000.0 / (12.0 * (1.0 - 0.33 * 0.33))
+}
+
+/// `cases/static_plate_shell9_pressure.json` (clamped square plate a = 100, t = 1, q = 0.01 MPa,
+/// 8×8 nine-node shells): centre deflection against the thin-plate 0.0012653 q a⁴/D
+/// (Timoshenko & Woinowsky-Krieger 1959, Table 35). Measured +0.26 % (the Reissner–Mindlin
+/// shift at a/t = 100 is ≈ +0.2 %). `cases/modal_plate_shell9.json`: λ₁ = ωa²√(ρt/D) against
+/// Leissa's 35.992 (NASA SP-160, Table 4.23), measured −0.12 % (a/t = 100: the Mindlin plate
+/// is slightly softer).
+#[test]
+fn bundled_shell9_cases_match_the_plate_references() {
+    let (dir, r) = run_out("cases/static_plate_shell9_pressure.json", "shell9_static");
+    let w = -r["load_cases"][0]["displacements"][8 * 17 + 8][2].as_f64().unwrap();
+    let c = w / (0.01 * 1e8 / plate_d());
+    let err = c / 0.0012653 - 1.0;
+    eprintln!("shell9 case: w = {c:.7} q a^4/D ({:+.2} %)", 100.0 * err);
+    assert!(err.abs() < 0.003, "w = {c} q a^4/D");
+    let notes = r["model"].to_string();
+    assert!(notes.contains("9-node flat shell"), "{notes}");
+    cleanup(&dir);
+    let (dir, r) = run_out("cases/modal_plate_shell9.json", "shell9_modal");
+    let f1 = r["modes"][0]["frequency_hz"].as_f64().unwrap();
+    let lam = 2.0 * std::f64::consts::PI * f1 * 1e4 * (2.81e-9 / plate_d()).sqrt();
+    let err = lam / 35.992 - 1.0;
+    eprintln!("shell9 case: λ1 = {lam:.4} ({:+.2} %)", 100.0 * err);
+    assert!(err.abs() < 0.002, "λ1 = {lam}");
+    cleanup(&dir);
+}
+
+/// `cases/gmsh_plate_quad9.json` reads `meshes/plate_clamped_quad9.msh` (8×8 nine-node
+/// quadrangles, edge lines as three-node lines) into `shell9` elements: its displacements equal
+/// those of the same model given as JSON (`meshes/plate_shell9_clamped.json`, the same node
+/// numbering) to round-off.
+#[test]
+fn gmsh_nine_node_quadrangles_are_shell9() {
+    let (dir, g) = run_out("cases/gmsh_plate_quad9.json", "shell9_gmsh");
+    let mut m = mesh();
+    m["analysis"] = json!("static");
+    m["load_cases"] = json!([{"name": "centre", "forces": [{"node": 144, "F": [0, 0, -100, 0, 0, 0]}]}]);
+    let j = run_value(m);
+    let (a, b) = (
+        &g["load_cases"][0]["displacements"],
+        &j["load_cases"][0]["displacements"],
+    );
+    let wc = b[144][2].as_f64().unwrap();
+    assert!(wc < 0.0, "centre moves down: {wc}");
+    let mut worst: f64 = 0.0;
+    assert_eq!(a.as_array().unwrap().len(), b.as_array().unwrap().len());
+    for (ra, rb) in a.as_array().unwrap().iter().zip(b.as_array().unwrap()) {
+        for k in 0..6 {
+            worst = worst.max((ra[k].as_f64().unwrap() - rb[k].as_f64().unwrap()).abs());
+        }
+    }
+    assert_eq!(a.as_array().unwrap().len(), 289);
+    assert!(
+        worst <= 1e-12 * wc.abs() * 1e3,
+        "Gmsh and JSON models differ by {worst:e}"
+    );
+    cleanup(&dir);
+}
+
+/// A small static case with one nine-node shell (clamped along one edge) for the refusals.
+fn one_panel(nodes: Vec<[f64; 3]>) -> Value {
+    let supports: Vec<Value> = [0, 3, 7]
+        .iter()
+        .map(|&n| json!({"node": n, "fix": ["ux", "uy", "uz", "rx", "ry", "rz"]}))
+        .collect();
+    json!({
+        "analysis": "static",
+        "materials": {"al": "Al7075"},
+        "sections": {"plate": {"shape": "shell", "t": 1.0}, "bar": {"shape": "rect", "w": 1.0, "h": 1.0}},
+        "nodes": nodes,
+        "elements": [{"type": "shell9", "nodes": [0, 1, 2, 3, 4, 5, 6, 7, 8], "section": "plate", "material": "al"}],
+        "supports": supports,
+        "load_cases": [{"name": "tip", "forces": [{"node": 5, "F": [0, 0, -1, 0, 0, 0]}]}]
+    })
+}
+
+fn flat() -> Vec<[f64; 3]> {
+    let p = |x: f64, y: f64| [x, y, 0.0];
+    vec![
+        p(0., 0.),
+        p(20., 0.),
+        p(20., 20.),
+        p(0., 20.),
+        p(10., 0.),
+        p(20., 10.),
+        p(10., 20.),
+        p(0., 10.),
+        p(10., 10.),
+    ]
+}
+
+fn refused(name: &str, case: &Value, needles: &[&str]) {
+    let o = run_case_text(name, &serde_json::to_string_pretty(case).unwrap());
+    exits_2(&o, needles);
+}
+
+#[test]
+fn shell9_refusals_name_the_json_path() {
+    // The flat panel runs.
+    let o = run_case_text("shell9_ok", &one_panel(flat()).to_string());
+    assert!(o.status.success(), "{}", stderr(&o));
+    // Curved: the edge midpoints 1 mm off the corners' plane (a cylinder of radius 50).
+    let r = 50.0;
+    let curved: Vec<[f64; 3]> = flat()
+        .into_iter()
+        .map(|p| {
+            let a = (p[0] - 10.0) / r;
+            [10.0 + r * a.sin(), p[1], r * (1.0 - a.cos())]
+        })
+        .collect();
+    refused(
+        "shell9_curved",
+        &one_panel(curved),
+        &["`elements[0].nodes`", "flat element", "four-node shells"],
+    );
+    // Repeated nodes.
+    let mut c = one_panel(flat());
+    c["elements"][0]["nodes"][8] = json!(4);
+    refused("shell9_repeated", &c, &["`elements[0].nodes`", "nine different nodes"]);
+    // A beam section.
+    let mut c = one_panel(flat());
+    c["elements"][0]["section"] = json!("bar");
+    refused(
+        "shell9_section",
+        &c,
+        &["`elements[0]", "shell9 needs a section", "\"shell\""],
+    );
+    // Folded order (two midpoints swapped).
+    let mut c = one_panel(flat());
+    c["elements"][0]["nodes"] = json!([0, 1, 2, 3, 5, 4, 6, 7, 8]);
+    refused(
+        "shell9_folded",
+        &c,
+        &["`elements[0].nodes`", "do not form a valid quadrilateral"],
+    );
+    // Buckling and nonlinear statics have no nine-node shell.
+    let mut c = one_panel(flat());
+    c["analysis"] = json!("buckling");
+    c["modes"] = json!(1);
+    refused("shell9_buckling", &c, &["`elements[0]`", "shell9", "linear buckling"]);
+    let mut c = one_panel(flat());
+    c["nonlinear"] = json!(true);
+    let o = run_case_text("shell9_nonlinear", &c.to_string());
+    let err = stderr(&o);
+    assert_ne!(code(&o), Some(0), "nonlinear statics must refuse shell9: {err}");
+    assert!(
+        err.contains("shell") && err.contains("geometrically nonlinear"),
+        "{err}"
+    );
+    // Edge loads act on four-node shell edges only.
+    let mut c = one_panel(flat());
+    c["load_cases"][0]["edge_loads"] = json!([{"nodes": [1, 2], "q": [0, 0, -0.1]}]);
+    refused(
+        "shell9_edge_load",
+        &c,
+        &["edge_loads[0].nodes", "shell9 edges are not available"],
+    );
+}
