@@ -1,5 +1,10 @@
 //! Warnings for modes that bend shells meshed too coarsely to trust their frequency.
 //!
+//! Nine-node shells ([`crate::fem::shell9`]) are judged the same way with their own Bloch ratio,
+//! computed from the element's matrices on a unit square
+//! ([`crate::fem::shell9::square_mesh_frequency_ratio9`]): they read high, most along a mesh
+//! line, by O((qh)⁴) (h the element's side, two node spacings).
+//!
 //! The four-node shell (MITC4 with the lumped mass and the tiles' rotary inertia, see
 //! [`crate::fem::shell`]) carries a plane bending wave w = W·exp(i(ax + by)/h) on a mesh of
 //! squares of side h with a frequency error that follows in closed form from a Bloch analysis
@@ -74,6 +79,76 @@ pub fn worst_square_mesh_error(qh_h: f64, nu: f64) -> f64 {
     e
 }
 
+/// The nine-node shell's Bloch ratio ω_h/ω ([`crate::fem::shell9::Shell9Bloch`]) along a mesh
+/// line and along a diagonal, tabulated for one ν at qh = 0, [`SHELL9_TABLE_STEP`], … up to the
+/// largest qh asked for (at most [`SHELL9_TABLE_MAX`]) and interpolated linearly: each entry is
+/// an eigenproblem, and a model of many element sizes would otherwise solve one per element,
+/// mode and iteration.
+#[derive(Debug, Clone)]
+pub struct Shell9Dispersion {
+    along: Vec<f64>,
+    diagonal: Vec<f64>,
+}
+
+/// Step in qh of [`Shell9Dispersion`]'s table (linear interpolation of ω_h/ω − 1 ≈ C·(qh)⁴:
+/// error below 10⁻⁴ up to qh = 2, 2.2 elements per half-wave).
+pub const SHELL9_TABLE_STEP: f64 = 0.05;
+/// Largest qh of the table, 3π: one third of an element per half-wave; beyond it the last value.
+pub const SHELL9_TABLE_MAX: f64 = 3.0 * std::f64::consts::PI;
+
+impl Shell9Dispersion {
+    /// The table for Poisson's ratio `nu` up to `qh_max`. The unit square's mass is positive
+    /// definite, so every ratio exists (1, no error, otherwise).
+    pub fn new(nu: f64, qh_max: f64) -> Shell9Dispersion {
+        let bloch = crate::fem::shell9::Shell9Bloch::new(nu);
+        let n = (qh_max.clamp(0.0, SHELL9_TABLE_MAX) / SHELL9_TABLE_STEP).ceil() as usize + 1;
+        let qh = |k: usize| (k as f64 * SHELL9_TABLE_STEP).max(1e-3);
+        let ratio = |a: f64, b: f64| bloch.as_ref().and_then(|e| e.ratio(a, b)).unwrap_or(1.0);
+        let d = std::f64::consts::FRAC_1_SQRT_2;
+        Shell9Dispersion {
+            along: (0..=n).map(|k| ratio(qh(k), 0.0)).collect(),
+            diagonal: (0..=n).map(|k| ratio(d * qh(k), d * qh(k))).collect(),
+        }
+    }
+
+    fn at(table: &[f64], qh: f64) -> f64 {
+        let x = (qh / SHELL9_TABLE_STEP).clamp(0.0, (table.len() - 1) as f64);
+        let k = (x.floor() as usize).min(table.len() - 2);
+        let f = x - k as f64;
+        table[k] * (1.0 - f) + table[k + 1] * f
+    }
+
+    /// ω_h/ω along a mesh line and along a diagonal at `qh`.
+    pub fn ratios(&self, qh: f64) -> (f64, f64) {
+        (Self::at(&self.along, qh), Self::at(&self.diagonal, qh))
+    }
+}
+
+/// Worse |ω_h/ω − 1| of the nine-node shell ([`crate::fem::shell9`]) along a mesh line and
+/// along a diagonal of a mesh of squares ([`Shell9Dispersion`]), for `qh_h`, the qh that the
+/// computed frequency ω_h gives: the true qh = qh_h/√(ω_h/ω) (the element reads high, so the
+/// wave is longer than ω_h says), by fixed-point iteration.
+pub fn worst_shell9_error(qh_h: f64, table: &Shell9Dispersion) -> f64 {
+    let worst = |qh: f64| {
+        let (r0, r1) = table.ratios(qh);
+        let (r0, r1) = (r0 - 1.0, r1 - 1.0);
+        if r0.abs() >= r1.abs() {
+            r0
+        } else {
+            r1
+        }
+    };
+    let mut e = worst(qh_h);
+    for _ in 0..30 {
+        let next = worst(qh_h / (1.0 + e.clamp(-0.5, 2.0)).sqrt());
+        if (next - e).abs() <= 1e-12 {
+            return next.abs();
+        }
+        e = next;
+    }
+    e.abs()
+}
+
 /// Per mode: the strain-energy-weighted estimate of the shells' frequency error (fraction) and
 /// of their elements per bending half-wave π/(qh), or `None` for rigid-body modes and modes
 /// whose strain energy is mostly outside the shells (see the module docs). One pass over the
@@ -81,28 +156,37 @@ pub fn worst_square_mesh_error(qh_h: f64, nu: f64) -> f64 {
 pub fn shell_dispersion_estimates(model: &Model, raw: &ModalResults) -> Vec<Option<(f64, f64)>> {
     let n = raw.modes.len();
     // Each shell's qh per ω^½ and ν (its kind); the error estimates computed once per kind and mode.
-    let mut kinds: Vec<(f64, f64)> = Vec::new();
+    let mut kinds: Vec<(f64, f64, bool)> = Vec::new();
     let mut kind_of = std::collections::HashMap::new();
     let shell_kind: Vec<Option<usize>> = model
         .elements
         .iter()
         .map(|el| {
-            let Element::Shell4(sh) = el else { return None };
-            let mat = &sh.material;
-            let x = sh.nodes.map(|nd| model.nodes[nd]);
+            // The corners and the element's side: a nine-node element's side spans two node
+            // spacings.
+            let (corners, t, mat, nine) = match el {
+                Element::Shell4(sh) => (sh.nodes, sh.t, &sh.material, false),
+                Element::Shell9(sh) => (
+                    [sh.nodes[0], sh.nodes[1], sh.nodes[2], sh.nodes[3]],
+                    sh.t,
+                    &sh.material,
+                    true,
+                ),
+                _ => return None,
+            };
+            let x = corners.map(|nd| model.nodes[nd]);
             let h = (0..4)
                 .map(|i| {
                     let (a, b) = (x[i], x[(i + 1) % 4]);
                     ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
                 })
                 .fold(0.0, f64::max);
-            let qh_per_sqrt_omega =
-                (12.0 * (1.0 - mat.nu * mat.nu) * mat.density / (mat.e * sh.t * sh.t)).powf(0.25) * h;
+            let qh_per_sqrt_omega = (12.0 * (1.0 - mat.nu * mat.nu) * mat.density / (mat.e * t * t)).powf(0.25) * h;
             Some(
                 *kind_of
-                    .entry((qh_per_sqrt_omega.to_bits(), mat.nu.to_bits()))
+                    .entry((qh_per_sqrt_omega.to_bits(), mat.nu.to_bits(), nine))
                     .or_insert_with(|| {
-                        kinds.push((qh_per_sqrt_omega, mat.nu));
+                        kinds.push((qh_per_sqrt_omega, mat.nu, nine));
                         kinds.len() - 1
                     }),
             )
@@ -111,6 +195,25 @@ pub fn shell_dispersion_estimates(model: &Model, raw: &ModalResults) -> Vec<Opti
     if kinds.is_empty() {
         return vec![None; n];
     }
+    // The nine-node shells' Bloch tables, one per ν, up to the largest qh asked for (the true qh
+    // of a wave is below the qh its computed frequency gives where the element reads high).
+    let sqrt_omega_max = raw
+        .modes
+        .iter()
+        .map(|m| m.eigenvalue.max(0.0).powf(0.25))
+        .fold(0.0, f64::max);
+    let mut tables: Vec<(u64, Shell9Dispersion)> = Vec::new();
+    for &(_, nu, nine) in &kinds {
+        if nine && !tables.iter().any(|(b, _)| *b == nu.to_bits()) {
+            let qh_max = kinds
+                .iter()
+                .filter(|k| k.2 && k.1.to_bits() == nu.to_bits())
+                .map(|k| k.0 * sqrt_omega_max)
+                .fold(0.0, f64::max);
+            tables.push((nu.to_bits(), Shell9Dispersion::new(nu, 1.2 * qh_max)));
+        }
+    }
+    let table_of = |nu: f64| tables.iter().find(|(b, _)| *b == nu.to_bits()).map(|(_, t)| t);
     // Per mode and kind: (error estimate, elements per half-wave).
     let per_kind: Vec<Vec<(f64, f64)>> = raw
         .modes
@@ -119,9 +222,13 @@ pub fn shell_dispersion_estimates(model: &Model, raw: &ModalResults) -> Vec<Opti
             let sqrt_omega = m.eigenvalue.max(0.0).powf(0.25);
             kinds
                 .iter()
-                .map(|&(c, nu)| {
+                .map(|&(c, nu, nine)| {
                     let qh = (c * sqrt_omega).max(f64::MIN_POSITIVE);
-                    (worst_square_mesh_error(qh, nu), std::f64::consts::PI / qh)
+                    let error = match (nine, table_of(nu)) {
+                        (true, Some(table)) => worst_shell9_error(qh, table),
+                        _ => worst_square_mesh_error(qh, nu),
+                    };
+                    (error, std::f64::consts::PI / qh)
                 })
                 .collect()
         })
@@ -163,7 +270,20 @@ pub fn coarse_shell_warnings(model: &Model, raw: &ModalResults) -> Vec<String> {
         .map(|(k, e, n)| format!("mode {k}: {n:.1} elements per half-wave, about {:.1} %", 100.0 * e))
         .collect::<Vec<_>>()
         .join("; ");
+    let has = |nine: bool| {
+        model.elements.iter().any(|e| match e {
+            Element::Shell4(_) => !nine,
+            Element::Shell9(_) => nine,
+            _ => false,
+        })
+    };
+    let what = match (has(false), has(true)) {
+        (_, false) => "the four-node shell's frequencies can read low by about the figures given ({list}; the element's thin-plate dispersion on a mesh of squares in the worse direction, a wave along a mesh diagonal)",
+        (false, true) => "the nine-node shell's frequencies can read high by about the figures given ({list}; the element's thin-plate dispersion on a mesh of squares in the worse of a wave along a mesh line and along a diagonal)",
+        (true, true) => "the shells' frequencies can be off by about the figures given ({list}; each element's thin-plate dispersion on a mesh of squares in its worse direction: four-node shells read low, nine-node shells high)",
+    }
+    .replace("{list}", &list);
     vec![format!(
-        "coarse shell mesh: the shells that carry these modes' strain energy have few elements per bending half-wave, and the four-node shell's frequencies can read low by about the figures given ({list}; the element's thin-plate dispersion on a mesh of squares in the worse direction, a wave along a mesh diagonal): refine the shell mesh where these modes bend"
+        "coarse shell mesh: the shells that carry these modes' strain energy have few elements per bending half-wave, and {what}: refine the shell mesh where these modes bend"
     )]
 }
