@@ -163,13 +163,18 @@ fn shell9_refusals_name_the_json_path() {
     refused("shell9_buckling", &c, &["`elements[0]`", "shell9", "linear buckling"]);
     let mut c = one_panel(flat());
     c["nonlinear"] = json!(true);
-    let o = run_case_text("shell9_nonlinear", &c.to_string());
-    let err = stderr(&o);
-    assert_ne!(code(&o), Some(0), "nonlinear statics must refuse shell9: {err}");
-    assert!(
-        err.contains("shell") && err.contains("geometrically nonlinear"),
-        "{err}"
+    refused(
+        "shell9_nonlinear",
+        &c,
+        &["`elements[0]`", "shell9", "geometrically nonlinear statics"],
     );
+    let d = tempdir("shell9_nonlinear_check");
+    let p = write(&d, "case.json", &c.to_string());
+    exits_2(
+        &run_in(&d, &["check", p.to_str().unwrap()]),
+        &["`elements[0]`", "shell9"],
+    );
+    cleanup(&d);
     // Edge loads act on four-node shell edges only.
     let mut c = one_panel(flat());
     c["load_cases"][0]["edge_loads"] = json!([{"nodes": [1, 2], "q": [0, 0, -0.1]}]);
@@ -178,4 +183,49 @@ fn shell9_refusals_name_the_json_path() {
         &c,
         &["edge_loads[0].nodes", "shell9 edges are not available"],
     );
+}
+
+/// A static run of a model with nine-node shells: `shell_stress.recovered` (patch recovery of the
+/// four-node shell's Gauss points) is null, not a recovery of part of the model, and the model
+/// notes say so.
+#[test]
+fn patch_recovery_is_null_with_nine_node_shells() {
+    let r = run_value(one_panel(flat()));
+    let ss = &r["load_cases"][0]["shell_stress"];
+    assert!(ss["top"].is_array() && ss["recovered"].is_null(), "{ss}");
+    assert!(r["model"].to_string().contains("`shell_stress.recovered` is null"));
+}
+
+/// A nine-node shell whose node order runs against its four-node neighbours' is named in the
+/// orientation warning: the edges are compared by halves (corner to midpoint), so a nine-node
+/// shell meets a four-node one on a half edge.
+#[test]
+fn opposite_normals_of_a_nine_node_and_a_four_node_shell_are_named() {
+    let mut c = one_panel(flat());
+    // Two four-node shells along the nine-node panel's right edge (x = 20): nodes 1, 5, 2 shared.
+    for p in [[30.0, 0.0, 0.0], [30.0, 10.0, 0.0], [30.0, 20.0, 0.0]] {
+        c["nodes"].as_array_mut().unwrap().push(json!(p));
+    }
+    let quad = |n: [usize; 4]| json!({"type": "shell4", "nodes": n, "section": "plate", "material": "al"});
+    c["elements"].as_array_mut().unwrap().push(quad([1, 9, 10, 5]));
+    c["elements"].as_array_mut().unwrap().push(quad([5, 10, 11, 2]));
+    let r = run_value(c.clone());
+    assert_eq!(r["warnings"].as_array().unwrap().len(), 0, "{}", r["warnings"]);
+    // The nine-node panel reversed (corners 0 3 2 1): its normal points the other way.
+    c["elements"][0]["nodes"] = json!([0, 3, 2, 1, 7, 6, 5, 4, 8]);
+    let r = run_value(c);
+    let w = r["warnings"].to_string();
+    assert!(w.contains("elements 0 and 1 along nodes 5–1"), "{w}");
+}
+
+/// A `group_forces` entry on a Gmsh group of nine-node quadrangles is refused with what to do
+/// instead (such a group has no first-order cells to spread the force over).
+#[test]
+fn group_force_on_a_second_order_group_says_why() {
+    let mut c: Value =
+        serde_json::from_slice(&std::fs::read(root().join("cases/gmsh_plate_quad9.json")).unwrap()).unwrap();
+    c["mesh"] = json!(root().join("meshes/plate_clamped_quad9.msh").to_str().unwrap());
+    c["load_cases"][0]["group_forces"] = json!([{"group": "plate", "F": [0, 0, -100, 0, 0, 0]}]);
+    let o = run_case_text("shell9_group_force", &c.to_string());
+    exits_2(&o, &["group_forces[0].group", "second-order", "pressures"]);
 }

@@ -140,7 +140,7 @@ pub fn element_mass(model: &Model, ie: usize) -> Result<Option<ElementMatrix>, F
 }
 
 /// `rho` (tonne/mm³) if finite and non-negative, else the error of element `ie`.
-fn checked_density(ie: usize, rho: f64) -> Result<f64, FemError> {
+pub(crate) fn checked_density(ie: usize, rho: f64) -> Result<f64, FemError> {
     if !(rho.is_finite() && rho >= 0.0) {
         return Err(FemError::BadElement {
             element: ie,

@@ -26,7 +26,8 @@
 //! wave across the mesh (its module notes), so no mass balances it; the biquadratic element
 //! interpolates a wave well enough that the consistent mass needs no balancing. Clamped square
 //! and 45° skew plates, modes 1–6, at 8×8 and 4×4 (the node grid of the four-node shell's 8×8):
-//! `tests/shell_coarse_mesh.rs`.
+//! `tests/shell9.rs`, with an independent MITC9 written from the papers
+//! (`tools/mitc9_reference/`).
 //!
 //! Local axes and sign conventions are those of [`super::shell`]: u(z) = u + z·θy,
 //! v(z) = v − z·θx; κ = (∂θy/∂x, −∂θx/∂y, ∂θy/∂y − ∂θx/∂x), γxz = ∂w/∂x + θy, γyz = ∂w/∂y − θx.

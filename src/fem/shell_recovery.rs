@@ -363,19 +363,25 @@ pub fn shell_field(model: &Model, u: &[[f64; 6]]) -> Result<ShellField, FemError
 pub fn orientation_conflicts(model: &Model) -> Vec<(usize, usize, [usize; 2])> {
     let mut seen: std::collections::HashMap<(usize, usize), usize> = std::collections::HashMap::new();
     let mut out = Vec::new();
+    let mut pairs = std::collections::HashSet::new();
     for (ie, e) in model.elements.iter().enumerate() {
-        let corners = match e {
-            Element::Shell4(sh) => sh.nodes,
-            Element::Shell9(sh) => [sh.nodes[0], sh.nodes[1], sh.nodes[2], sh.nodes[3]],
+        // Edges in the element's order: a nine-node shell's by halves (corner to midpoint to
+        // corner), so that it meets a four-node shell on a half edge too.
+        let edges: Vec<(usize, usize)> = match e {
+            Element::Shell4(sh) => (0..4).map(|k| (sh.nodes[k], sh.nodes[(k + 1) % 4])).collect(),
+            Element::Shell9(sh) => (0..4)
+                .flat_map(|k| [(sh.nodes[k], sh.nodes[4 + k]), (sh.nodes[4 + k], sh.nodes[(k + 1) % 4])])
+                .collect(),
             _ => continue,
         };
-        for k in 0..4 {
-            let (a, b) = (corners[k], corners[(k + 1) % 4]);
+        for (a, b) in edges {
             if a == b {
                 continue;
             }
             match seen.get(&(a, b)) {
-                Some(&other) if other != ie => out.push((other, ie, [a, b])),
+                // One entry per pair of elements (two nine-node shells share two half edges).
+                Some(&other) if other != ie && pairs.insert((other, ie)) => out.push((other, ie, [a, b])),
+                Some(_) => {}
                 _ => {
                     seen.insert((a, b), ie);
                 }

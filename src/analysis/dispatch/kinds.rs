@@ -314,6 +314,7 @@ impl Analysis for Static {
     fn check(case: &Self::Case) -> Result<(), CaseError> {
         if case.nonlinear {
             case::mesh::superelement::refuse_in(&case.model, "geometrically nonlinear statics")?;
+            case::mesh::superelement::refuse_shells_in(&case.model, "geometrically nonlinear statics")?;
         }
         let (_, hinges) = case.model.build_with_hinges(true, case.nonlinear)?;
         case.fatigue.as_ref().map_or(Ok(()), |f| f.check_hinges(&hinges))
@@ -321,6 +322,7 @@ impl Analysis for Static {
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         if case.nonlinear {
             case::mesh::superelement::refuse_in(&case.model, "geometrically nonlinear statics")?;
+            case::mesh::superelement::refuse_shells_in(&case.model, "geometrically nonlinear statics")?;
         }
         let (model, hinges, case_index) = case.model.build_indexed(true, case.nonlinear)?;
         let (mut r, raw, path_files) = match case.steps.filter(|_| case.nonlinear) {

@@ -63,7 +63,11 @@ pub fn result_of(
             let mut r = row(c);
             let in_case = |e: fem::FemError| AnalysisError::new(format!("load case `{}`", c.name), e.to_string());
             let field = fem::shell_recovery::shell_field(model, &c.displacements).map_err(in_case)?;
-            let spr = fem::shell_spr::spr_field(model, &c.displacements, &field).map_err(in_case)?;
+            let spr = if has_shell9(model) {
+                None
+            } else {
+                Some(fem::shell_spr::spr_field(model, &c.displacements, &field).map_err(in_case)?)
+            };
             add_shell_field(&mut r, field, spr);
             Ok(r)
         })
@@ -75,7 +79,11 @@ pub fn result_of(
         "shells: 4-node flat shell (membrane with drilling rotation, MITC4 bending and transverse shear); von Mises at the element centre, max of top/mid/bottom"
             .to_string(),
     ];
-    if model.elements.iter().any(|e| matches!(e, fem::Element::Shell9(_))) {
+    if has_shell9(model) {
+        // A model of nine-node shells without four-node ones: the four-node note does not apply.
+        if !model.elements.iter().any(|e| matches!(e, fem::Element::Shell4(_))) {
+            notes.retain(|n| !n.starts_with("shells: 4-node"));
+        }
         notes.push(SHELL9_NOTE.to_string());
     }
     notes.extend(fem::superelement::notes(model));
@@ -95,8 +103,13 @@ pub fn result_of(
     ))
 }
 
+/// Does `model` hold nine-node shells?
+fn has_shell9(model: &Model) -> bool {
+    model.elements.iter().any(|e| matches!(e, fem::Element::Shell9(_)))
+}
+
 /// The model note of nine-node shells (statics).
-pub const SHELL9_NOTE: &str = "shells: 9-node flat shell (shell9: biquadratic membrane with drilling rotation, MITC9 bending and transverse shear; flat elements only); von Mises the largest over the element centre and its 3×3 Gauss points, max of top/mid/bottom; surface stresses at the nodes extrapolated from the Gauss points (no patch recovery)";
+pub const SHELL9_NOTE: &str = "shells: 9-node flat shell (shell9: biquadratic membrane with drilling rotation, MITC9 bending and transverse shear; flat elements only); von Mises the largest over the element centre and its 3×3 Gauss points, max of top/mid/bottom; surface stresses at the nodes extrapolated from the Gauss points; no patch recovery (`shell_stress.recovered` is null)";
 
 /// Geometrically nonlinear statics of every load case in `steps` load steps. Rotations in the
 /// output are the components of each node's rotation vector (degrees). Also returns the final
@@ -208,7 +221,7 @@ pub fn shell_orientation_warnings(model: &Model) -> Vec<String> {
 }
 
 /// Puts a model's shell stresses into its load-case row (nothing without shells).
-fn add_shell_field(r: &mut StaticCaseRow, f: fem::shell_recovery::ShellField, spr: fem::shell_spr::SprField) {
+fn add_shell_field(r: &mut StaticCaseRow, f: fem::shell_recovery::ShellField, spr: Option<fem::shell_spr::SprField>) {
     if f.forces.is_empty() {
         return;
     }
@@ -227,7 +240,7 @@ fn add_shell_field(r: &mut StaticCaseRow, f: fem::shell_recovery::ShellField, sp
         top: f.top,
         mid: f.mid,
         bottom: f.bottom,
-        recovered: rows::ShellRecoveredRow::of(spr),
+        recovered: spr.map(rows::ShellRecoveredRow::of),
     });
 }
 

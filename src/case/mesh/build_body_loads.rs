@@ -91,6 +91,13 @@ pub(super) fn body_loads(cx: &Ctx, p: &str, c: &LoadCaseSpec, lc: &mut fem::Load
                 }
                 match cx.spec.group_cells.get(gname) {
                     Some(c) => c.clone(),
+                    None if cx.spec.element_groups.iter().any(|g| g.iter().any(|n| n == gname)) => {
+                        return Err(CaseError::value(
+                            at,
+                            format!("\"{gname}\""),
+                            "the group holds only second-order elements (nine-node quadrangles, three-node lines): a group force is spread over points, first-order lines, triangles and quadrangles only; load it with `pressures` or nodal `forces`",
+                        ));
+                    }
                     None => {
                         let known: Vec<&String> = cx.spec.group_cells.keys().collect();
                         return Err(CaseError::value(

@@ -192,6 +192,23 @@ fn rotation(p: &str, placement: Option<&PlacementSpec>) -> Result<(Matrix3<f64>,
     Ok((*r.matrix(), Vector3::from(pl.translation)))
 }
 
+/// Refuses four- and nine-node shells in an analysis that cannot take them (`what` names it),
+/// at the first one's JSON path.
+pub fn refuse_shells_in(spec: &MeshSpec, what: &str) -> Result<(), CaseError> {
+    let kind = |e: &ElementSpec| match e {
+        ElementSpec::Shell4 { .. } => Some("shell4"),
+        ElementSpec::Shell9 { .. } => Some("shell9"),
+        _ => None,
+    };
+    match spec.elements.iter().enumerate().find_map(|(i, e)| kind(e).map(|k| (i, k))) {
+        Some((i, k)) => Err(CaseError::new(
+            format!("elements[{i}]"),
+            format!("a shell element ({k}) is not available in {what}, which handles beams, hinges, joints, springs, masses and rigid links; use a linear analysis, or model the part with beams"),
+        )),
+        None => Ok(()),
+    }
+}
+
 /// Refuses a `superelement` element of `spec` in an analysis it cannot take (`what`: e.g.
 /// "geometrically nonlinear analyses"): its matrices are linear and carry no geometric
 /// stiffness. The error names the element's JSON path.

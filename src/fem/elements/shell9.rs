@@ -53,7 +53,8 @@ impl Shell9 {
 
     /// Global 54×54 consistent mass at node coordinates `x` (mm).
     pub fn mass(&self, ie: usize, x: &[[f64; 3]; 9]) -> Result<Shell9Matrix, FemError> {
-        let k = shell9_mass(x, self.t, self.material.density).map_err(|e| self.bad(ie, e))?;
+        let rho = crate::fem::mass::checked_density(ie, self.material.density)?;
+        let k = shell9_mass(x, self.t, rho).map_err(|e| self.bad(ie, e))?;
         Ok(Shell9Matrix { nodes: self.nodes, k })
     }
 }
