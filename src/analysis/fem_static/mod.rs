@@ -109,7 +109,7 @@ fn has_shell9(model: &Model) -> bool {
 }
 
 /// The model note of nine-node shells (statics).
-pub const SHELL9_NOTE: &str = "shells: 9-node flat shell (shell9: biquadratic membrane with drilling rotation, MITC9 bending and transverse shear; flat elements only); von Mises the largest over the element centre and its 3×3 Gauss points, max of top/mid/bottom; surface stresses at the nodes extrapolated from the Gauss points; no patch recovery (`shell_stress.recovered` is null)";
+pub const SHELL9_NOTE: &str = "shells: 9-node flat shell (shell9: biquadratic membrane with drilling rotation, MITC9 bending and transverse shear; flat elements only); von Mises the largest over the element centre and its 3×3 Gauss points, max of top/mid/bottom; surface stresses at the nodes extrapolated from the Gauss points; no patch recovery (no `shell_stress.recovered`)";
 
 /// Geometrically nonlinear statics of every load case in `steps` load steps. Rotations in the
 /// output are the components of each node's rotation vector (degrees). Also returns the final

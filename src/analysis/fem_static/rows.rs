@@ -195,8 +195,9 @@ pub struct ShellStressRow {
     /// Bottom surface (z = −t/2).
     pub bottom: Vec<Option<[f64; 6]>>,
     /// The same stresses by superconvergent patch recovery, with the error indicator per
-    /// element ([`crate::fem::shell_spr`]); `null` for a model with nine-node shells (the
+    /// element ([`crate::fem::shell_spr`]); absent for a model with nine-node shells (the
     /// recovery is of the four-node shell's Gauss points).
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub recovered: Option<ShellRecoveredRow>,
 }
 
