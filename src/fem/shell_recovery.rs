@@ -294,7 +294,8 @@ pub fn shell_field(model: &Model, u: &[[f64; 6]]) -> Result<ShellField, FemError
             u.len()
         )));
     }
-    type Rec = (usize, Vec<usize>, ShellForces, Vec<[[f64; 6]; 3]>);
+    // (element, its nodes padded to nine, their number, centre resultants, nodal stresses).
+    type Rec = (usize, [usize; 9], usize, ShellForces, [[[f64; 6]; 3]; 9]);
     let rec: Vec<Rec> = shells
         .par_iter()
         .map(|&ie| {
@@ -312,14 +313,20 @@ pub fn shell_field(model: &Model, u: &[[f64; 6]]) -> Result<ShellField, FemError
                         }
                     }
                     shell_recovery(&x, sh.t, &sh.material, &d)
-                        .map(|r| (ie, sh.nodes.to_vec(), r.forces, r.nodal.to_vec()))
+                        .map(|r| {
+                            let mut nodes = [0; 9];
+                            nodes[..4].copy_from_slice(&sh.nodes);
+                            let mut nodal = [[[0.0; 6]; 3]; 9];
+                            nodal[..4].copy_from_slice(&r.nodal);
+                            (ie, nodes, 4, r.forces, nodal)
+                        })
                         .ok_or_else(degenerate)
                 }
                 Element::Shell9(sh) => {
                     let x = sh.nodes.map(|n| model.nodes[n]);
                     let d = nalgebra::DVector::from_iterator(54, sh.nodes.iter().flat_map(|&n| u[n]));
                     shell9_recovery(&x, sh.t, &sh.material, &d)
-                        .map(|(f, nodal)| (ie, sh.nodes.to_vec(), f, nodal.to_vec()))
+                        .map(|(f, nodal)| (ie, sh.nodes, 9, f, nodal))
                         .ok_or_else(degenerate)
                 }
                 _ => unreachable!("filtered to shells"),
@@ -329,9 +336,10 @@ pub fn shell_field(model: &Model, u: &[[f64; 6]]) -> Result<ShellField, FemError
     let mut sum = vec![[[0.0; 6]; 3]; nn];
     let mut count = vec![0.0f64; nn];
     let mut forces = Vec::with_capacity(rec.len());
-    for (ie, nodes, r_forces, r_nodal) in rec {
+    for (ie, nodes, len, r_forces, r_nodal) in rec {
+        let nodes = &nodes[..len];
         // A triangle [a, b, c, c] gives node c the mean of its two corner values.
-        let tri = nodes.len() == 4 && nodes[3] == nodes[2];
+        let tri = len == 4 && nodes[3] == nodes[2];
         for (k, &n) in nodes.iter().enumerate() {
             let w = if tri && k >= 2 { 0.5 } else { 1.0 };
             for (acc, v) in sum[n].iter_mut().zip(&r_nodal[k]) {
@@ -367,14 +375,24 @@ pub fn orientation_conflicts(model: &Model) -> Vec<(usize, usize, [usize; 2])> {
     for (ie, e) in model.elements.iter().enumerate() {
         // Edges in the element's order: a nine-node shell's by halves (corner to midpoint to
         // corner), so that it meets a four-node shell on a half edge too.
-        let edges: Vec<(usize, usize)> = match e {
-            Element::Shell4(sh) => (0..4).map(|k| (sh.nodes[k], sh.nodes[(k + 1) % 4])).collect(),
-            Element::Shell9(sh) => (0..4)
-                .flat_map(|k| [(sh.nodes[k], sh.nodes[4 + k]), (sh.nodes[4 + k], sh.nodes[(k + 1) % 4])])
-                .collect(),
+        let mut edges = [(0, 0); 8];
+        let count = match e {
+            Element::Shell4(sh) => {
+                for (k, edge) in edges.iter_mut().take(4).enumerate() {
+                    *edge = (sh.nodes[k], sh.nodes[(k + 1) % 4]);
+                }
+                4
+            }
+            Element::Shell9(sh) => {
+                for k in 0..4 {
+                    edges[2 * k] = (sh.nodes[k], sh.nodes[4 + k]);
+                    edges[2 * k + 1] = (sh.nodes[4 + k], sh.nodes[(k + 1) % 4]);
+                }
+                8
+            }
             _ => continue,
         };
-        for (a, b) in edges {
+        for &(a, b) in &edges[..count] {
             if a == b {
                 continue;
             }
