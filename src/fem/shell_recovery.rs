@@ -294,8 +294,12 @@ pub fn shell_field(model: &Model, u: &[[f64; 6]]) -> Result<ShellField, FemError
             u.len()
         )));
     }
-    // (element, its nodes padded to nine, their number, centre resultants, nodal stresses).
-    type Rec = (usize, [usize; 9], usize, ShellForces, [[[f64; 6]; 3]; 9]);
+    // One element's recovery: a four-node shell's inline (most models), a nine-node shell's
+    // nodal stresses boxed (so the list of four-node ones stays as small as before).
+    enum Rec {
+        Four(usize, [usize; 4], ShellRecovery),
+        Nine(usize, [usize; 9], ShellForces, Box<[[[f64; 6]; 3]; 9]>),
+    }
     let rec: Vec<Rec> = shells
         .par_iter()
         .map(|&ie| {
@@ -313,20 +317,14 @@ pub fn shell_field(model: &Model, u: &[[f64; 6]]) -> Result<ShellField, FemError
                         }
                     }
                     shell_recovery(&x, sh.t, &sh.material, &d)
-                        .map(|r| {
-                            let mut nodes = [0; 9];
-                            nodes[..4].copy_from_slice(&sh.nodes);
-                            let mut nodal = [[[0.0; 6]; 3]; 9];
-                            nodal[..4].copy_from_slice(&r.nodal);
-                            (ie, nodes, 4, r.forces, nodal)
-                        })
+                        .map(|r| Rec::Four(ie, sh.nodes, r))
                         .ok_or_else(degenerate)
                 }
                 Element::Shell9(sh) => {
                     let x = sh.nodes.map(|n| model.nodes[n]);
                     let d = nalgebra::DVector::from_iterator(54, sh.nodes.iter().flat_map(|&n| u[n]));
                     shell9_recovery(&x, sh.t, &sh.material, &d)
-                        .map(|(f, nodal)| (ie, sh.nodes, 9, f, nodal))
+                        .map(|(f, nodal)| Rec::Nine(ie, sh.nodes, f, Box::new(nodal)))
                         .ok_or_else(degenerate)
                 }
                 _ => unreachable!("filtered to shells"),
@@ -336,10 +334,13 @@ pub fn shell_field(model: &Model, u: &[[f64; 6]]) -> Result<ShellField, FemError
     let mut sum = vec![[[0.0; 6]; 3]; nn];
     let mut count = vec![0.0f64; nn];
     let mut forces = Vec::with_capacity(rec.len());
-    for (ie, nodes, len, r_forces, r_nodal) in rec {
-        let nodes = &nodes[..len];
+    for r in &rec {
+        let (ie, nodes, r_forces, r_nodal): (usize, &[usize], &ShellForces, &[[[f64; 6]; 3]]) = match r {
+            Rec::Four(ie, nodes, r) => (*ie, nodes, &r.forces, &r.nodal),
+            Rec::Nine(ie, nodes, f, nodal) => (*ie, nodes, f, &nodal[..]),
+        };
         // A triangle [a, b, c, c] gives node c the mean of its two corner values.
-        let tri = len == 4 && nodes[3] == nodes[2];
+        let tri = nodes.len() == 4 && nodes[3] == nodes[2];
         for (k, &n) in nodes.iter().enumerate() {
             let w = if tri && k >= 2 { 0.5 } else { 1.0 };
             for (acc, v) in sum[n].iter_mut().zip(&r_nodal[k]) {
@@ -349,7 +350,7 @@ pub fn shell_field(model: &Model, u: &[[f64; 6]]) -> Result<ShellField, FemError
             }
             count[n] += w;
         }
-        forces.push((ie, r_forces));
+        forces.push((ie, *r_forces));
     }
     let mut field = ShellField {
         forces,
