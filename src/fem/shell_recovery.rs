@@ -296,6 +296,8 @@ pub fn shell_field(model: &Model, u: &[[f64; 6]]) -> Result<ShellField, FemError
     }
     // One element's recovery: a four-node shell's inline (most models), a nine-node shell's
     // nodal stresses boxed (so the list of four-node ones stays as small as before).
+    // Four-node shells are the bulk: boxing their recovery would cost an allocation each.
+    #[allow(clippy::large_enum_variant)]
     enum Rec {
         Four(usize, [usize; 4], ShellRecovery),
         Nine(usize, [usize; 9], ShellForces, Box<[[[f64; 6]; 3]; 9]>),
