@@ -310,6 +310,15 @@ impl Model {
         s.matrix(ie, &x)
     }
 
+    /// Whether the model holds four-node and nine-node shells: (shell4, shell9).
+    pub fn shell_kinds(&self) -> (bool, bool) {
+        self.elements.iter().fold((false, false), |(four, nine), e| match e {
+            Element::Shell4(_) => (true, nine),
+            Element::Shell9(_) => (four, true),
+            _ => (four, nine),
+        })
+    }
+
     /// Checks a nine-node shell element (nodes, thickness, material) and returns it with its
     /// node coordinates.
     pub fn shell9_checked(&self, ie: usize) -> Result<(&Shell9, [[f64; 3]; 9]), FemError> {

@@ -6,8 +6,8 @@ use super::error::FemError;
 use super::model::{Element, Model};
 pub use super::results::{CaseResult, ElementResult, Statics};
 use super::section::{Section, SectionProps, StressPoint};
-use super::shell::{shell_stress, Vec24};
-use super::shell9::{shell9_stress_at, G3};
+use super::shell::{shell_stress, ShellStress, Vec24};
+use super::shell9::shell9_largest_stress;
 use nalgebra::{SVector, Vector3};
 use rayon::prelude::*;
 
@@ -68,8 +68,17 @@ fn shell_vec(u: &[f64], nodes: [usize; 4]) -> Vec24 {
     d
 }
 
-fn max3(v: &[f64; 3]) -> f64 {
-    v.iter().copied().fold(0.0, f64::max)
+/// A shell's element result: its stresses and strain energy (N·mm); von Mises the largest of
+/// its top, middle and bottom values at both "ends".
+fn shell_result(stress: ShellStress, strain_energy: f64) -> ElementResult {
+    let vm = stress.von_mises.iter().copied().fold(0.0, f64::max);
+    ElementResult {
+        end_forces: [[0.0; 6]; 2],
+        section_forces: [[0.0; 6]; 2],
+        von_mises: Some([vm, vm]),
+        strain_energy,
+        shell: Some(stress),
+    }
 }
 
 fn shell9_vec(u: &[f64], nodes: [usize; 9]) -> nalgebra::DVector<f64> {
@@ -123,42 +132,18 @@ pub fn element_result(model: &Model, ie: usize, u: &[f64]) -> Result<ElementResu
                 element: ie,
                 reason: "degenerate shell geometry".into(),
             })?;
-            let vm = stress.von_mises.iter().cloned().fold(0.0, f64::max);
-            Ok(ElementResult {
-                end_forces: [[0.0; 6]; 2],
-                section_forces: [[0.0; 6]; 2],
-                von_mises: Some([vm, vm]),
-                strain_energy: 0.5 * d.dot(&(em.k * d)),
-                shell: Some(stress),
-            })
+            Ok(shell_result(stress, 0.5 * d.dot(&(em.k * d))))
         }
         Element::Shell9(sh) => {
             let em = model.shell9_matrix(ie)?;
             let d = shell9_vec(u, em.nodes);
             let x = sh.nodes.map(|n| model.nodes[n]);
-            // The element's stress is its largest over the centre and the 3×3 Gauss points.
-            let mut stress = shell9_stress_at(&x, sh.t, &sh.material, &d, 0.0, 0.0);
-            for xi in [-G3, 0.0, G3] {
-                for eta in [-G3, 0.0, G3] {
-                    if let (Ok(s), Ok(best)) = (shell9_stress_at(&x, sh.t, &sh.material, &d, xi, eta), &stress) {
-                        if max3(&s.von_mises) > max3(&best.von_mises) {
-                            stress = Ok(s);
-                        }
-                    }
-                }
-            }
-            let stress = stress.map_err(|e| FemError::BadElement {
+            // The element's stress is its largest over the 3×3 Gauss points (the centre among them).
+            let stress = shell9_largest_stress(&x, sh.t, &sh.material, &d).map_err(|e| FemError::BadElement {
                 element: ie,
                 reason: e.to_string(),
             })?;
-            let vm = max3(&stress.von_mises);
-            Ok(ElementResult {
-                end_forces: [[0.0; 6]; 2],
-                section_forces: [[0.0; 6]; 2],
-                von_mises: Some([vm, vm]),
-                strain_energy: 0.5 * d.dot(&(&em.k * &d)),
-                shell: Some(stress),
-            })
+            Ok(shell_result(stress, 0.5 * d.dot(&(&em.k * &d))))
         }
         Element::Spring(s) => {
             let (b, k, n) = model.spring_b(ie)?;

@@ -66,6 +66,7 @@ pub use membrane::shell_drilling_stiffness;
 use plate::plate_k;
 pub use plate::transverse_shear_stiffness;
 pub(crate) use plate::{curvature_b, mitc_shear_b};
+pub(crate) use stress::stress_from_strains;
 pub use stress::{shell_stress, von_mises_plane, ShellStress};
 
 /// 24×24 matrix (four nodes × six DOFs).
@@ -107,10 +108,10 @@ fn shape(xi: f64, eta: f64) -> ([f64; 4], [f64; 4], [f64; 4]) {
     (n, dxi, deta)
 }
 
-/// Jacobian J = [[x_ξ, y_ξ], [x_η, y_η]].
-fn jacobian(xy: &[[f64; 2]; 4], dxi: &[f64; 4], deta: &[f64; 4]) -> Matrix2<f64> {
+/// Jacobian J = [[x_ξ, y_ξ], [x_η, y_η]] of an `N`-node map (four- and nine-node shells).
+pub(crate) fn jacobian<const N: usize>(xy: &[[f64; 2]; N], dxi: &[f64; N], deta: &[f64; N]) -> Matrix2<f64> {
     let mut j = Matrix2::zeros();
-    for i in 0..4 {
+    for i in 0..N {
         j[(0, 0)] += dxi[i] * xy[i][0];
         j[(0, 1)] += dxi[i] * xy[i][1];
         j[(1, 0)] += deta[i] * xy[i][0];
@@ -119,21 +120,32 @@ fn jacobian(xy: &[[f64; 2]; 4], dxi: &[f64; 4], deta: &[f64; 4]) -> Matrix2<f64>
     j
 }
 
-/// N, ∂N/∂x, ∂N/∂y, det J and J⁻¹ at one point.
-type Cartesian = ([f64; 4], [f64; 4], [f64; 4], f64, Matrix2<f64>);
+/// N, ∂N/∂x, ∂N/∂y, det J and J⁻¹ at one point of an `N`-node element.
+pub(crate) type Cartesian<const N: usize> = ([f64; N], [f64; N], [f64; N], f64, Matrix2<f64>);
 
 /// Cartesian derivatives (∂N/∂x, ∂N/∂y) and det J at (ξ, η); `None` for a degenerate map.
-pub(crate) fn cartesian(xy: &[[f64; 2]; 4], xi: f64, eta: f64) -> Option<Cartesian> {
+pub(crate) fn cartesian(xy: &[[f64; 2]; 4], xi: f64, eta: f64) -> Option<Cartesian<4>> {
     let (n, dxi, deta) = shape(xi, eta);
-    let j = jacobian(xy, &dxi, &deta);
+    to_cartesian(xy, n, &dxi, &deta)
+}
+
+/// Shape functions `n` with natural derivatives (`dxi`, `deta`) of an `N`-node map to its
+/// Cartesian derivatives, det J and J⁻¹; `None` where det J ≤ 0 (a folded or degenerate map).
+pub(crate) fn to_cartesian<const N: usize>(
+    xy: &[[f64; 2]; N],
+    n: [f64; N],
+    dxi: &[f64; N],
+    deta: &[f64; N],
+) -> Option<Cartesian<N>> {
+    let j = jacobian(xy, dxi, deta);
     let det = j.determinant();
     if !(det > 0.0 && det.is_finite()) {
         return None;
     }
     let ji = j.try_inverse()?;
-    let mut dx = [0.0; 4];
-    let mut dy = [0.0; 4];
-    for i in 0..4 {
+    let mut dx = [0.0; N];
+    let mut dy = [0.0; N];
+    for i in 0..N {
         dx[i] = ji[(0, 0)] * dxi[i] + ji[(0, 1)] * deta[i];
         dy[i] = ji[(1, 0)] * dxi[i] + ji[(1, 1)] * deta[i];
     }

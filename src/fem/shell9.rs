@@ -32,7 +32,7 @@
 //! Local axes and sign conventions are those of [`super::shell`]: u(z) = u + z·θy,
 //! v(z) = v − z·θx; κ = (∂θy/∂x, −∂θx/∂y, ∂θy/∂y − ∂θx/∂x), γxz = ∂w/∂x + θy, γyz = ∂w/∂y − θx.
 
-use super::shell::{plane_stress, von_mises_plane, ShellStress, KAPPA};
+use super::shell::{jacobian, plane_stress, stress_from_strains, to_cartesian, Cartesian, ShellStress, KAPPA};
 use super::transform::{rigid_arm, t6};
 use crate::material::Material;
 use nalgebra::{DMatrix, DVector, Matrix2, Matrix3, SMatrix, Vector3};
@@ -80,37 +80,10 @@ pub fn shape9(xi: f64, eta: f64) -> ([f64; 9], [f64; 9], [f64; 9]) {
     (n, dxi, deta)
 }
 
-/// Jacobian [[x_ξ, y_ξ], [x_η, y_η]].
-fn jacobian(xy: &[[f64; 2]; 9], dxi: &[f64; 9], deta: &[f64; 9]) -> Matrix2<f64> {
-    let mut j = Matrix2::zeros();
-    for i in 0..9 {
-        j[(0, 0)] += dxi[i] * xy[i][0];
-        j[(0, 1)] += dxi[i] * xy[i][1];
-        j[(1, 0)] += deta[i] * xy[i][0];
-        j[(1, 1)] += deta[i] * xy[i][1];
-    }
-    j
-}
-
-/// N, ∂N/∂x, ∂N/∂y, det J, J⁻¹ at one point.
-type Cartesian9 = ([f64; 9], [f64; 9], [f64; 9], f64, Matrix2<f64>);
-
 /// Cartesian derivatives at (ξ, η); `None` where det J ≤ 0 (a folded or degenerate map).
-pub(crate) fn cartesian9(xy: &[[f64; 2]; 9], xi: f64, eta: f64) -> Option<Cartesian9> {
+pub(crate) fn cartesian9(xy: &[[f64; 2]; 9], xi: f64, eta: f64) -> Option<Cartesian<9>> {
     let (n, dxi, deta) = shape9(xi, eta);
-    let j = jacobian(xy, &dxi, &deta);
-    let det = j.determinant();
-    if !(det > 0.0 && det.is_finite()) {
-        return None;
-    }
-    let ji = j.try_inverse()?;
-    let mut dx = [0.0; 9];
-    let mut dy = [0.0; 9];
-    for i in 0..9 {
-        dx[i] = ji[(0, 0)] * dxi[i] + ji[(0, 1)] * deta[i];
-        dy[i] = ji[(1, 0)] * dxi[i] + ji[(1, 1)] * deta[i];
-    }
-    Some((n, dx, dy, det, ji))
+    to_cartesian(xy, n, &dxi, &deta)
 }
 
 /// Local frame and projected coordinates of a nine-node element.
@@ -444,40 +417,45 @@ pub fn shell9_mass(x: &[[f64; 3]; 9], t: f64, rho: f64) -> Result<DMatrix<f64>, 
     Ok((&mg + mg.transpose()) * 0.5)
 }
 
-/// Stresses at the point (ξ, η) of the element from its global displacements (54), local axes:
-/// von Mises at the top, middle and bottom surfaces, membrane forces and moments.
-pub fn shell9_stress_at(
+/// The element's stresses (local axes: von Mises at the top, middle and bottom surfaces,
+/// membrane forces and moments) from its global displacements (54) at the point of its 3×3
+/// Gauss points (the centre among them) with the largest von Mises; the centre on a tie.
+/// Geometry and local displacements are computed once for the nine points.
+pub fn shell9_largest_stress(
     x: &[[f64; 3]; 9],
     t: f64,
     mat: &Material,
     d_global: &DVector<f64>,
-    xi: f64,
-    eta: f64,
 ) -> Result<ShellStress, Shell9GeometryError> {
     let g = shell9_geometry(x)?;
     let d = &g.t * d_global;
-    let (_, dx, dy, _, _) = cartesian9(&g.xy, xi, eta).ok_or(Shell9GeometryError::Degenerate)?;
-    let mut eps = Vector3::zeros();
-    let mut kap = Vector3::zeros();
-    for i in 0..9 {
-        let (u, v) = (d[6 * i], d[6 * i + 1]);
-        let (tx, ty) = (d[6 * i + 3], d[6 * i + 4]);
-        eps += Vector3::new(dx[i] * u, dy[i] * v, dy[i] * u + dx[i] * v);
-        kap += Vector3::new(dx[i] * ty, -dy[i] * tx, dy[i] * ty - dx[i] * tx);
-    }
     let c = plane_stress(mat.e, mat.nu);
-    let sm = c * eps;
-    let sb = c * kap * (t / 2.0);
-    let arr = |v: Vector3<f64>| [v.x, v.y, v.z];
-    Ok(ShellStress {
-        von_mises: [
-            von_mises_plane(&arr(sm + sb)),
-            von_mises_plane(&arr(sm)),
-            von_mises_plane(&arr(sm - sb)),
-        ],
-        n: arr(sm * t),
-        m: arr(c * kap * (t * t * t / 12.0)),
-    })
+    let at = |xi: f64, eta: f64| {
+        let (_, dx, dy, _, _) = cartesian9(&g.xy, xi, eta).ok_or(Shell9GeometryError::Degenerate)?;
+        let mut eps = Vector3::zeros();
+        let mut kap = Vector3::zeros();
+        for i in 0..9 {
+            let (u, v) = (d[6 * i], d[6 * i + 1]);
+            let (tx, ty) = (d[6 * i + 3], d[6 * i + 4]);
+            eps += Vector3::new(dx[i] * u, dy[i] * v, dy[i] * u + dx[i] * v);
+            kap += Vector3::new(dx[i] * ty, -dy[i] * tx, dy[i] * ty - dx[i] * tx);
+        }
+        Ok(stress_from_strains(&c, &eps, &kap, t))
+    };
+    let largest = |s: &ShellStress| s.von_mises.iter().copied().fold(0.0, f64::max);
+    let mut best = at(0.0, 0.0)?;
+    for &(xi, _) in &GAUSS3 {
+        for &(eta, _) in &GAUSS3 {
+            if (xi, eta) == (0.0, 0.0) {
+                continue;
+            }
+            let s = at(xi, eta)?;
+            if largest(&s) > largest(&best) {
+                best = s;
+            }
+        }
+    }
+    Ok(best)
 }
 
 /// ω_h/ω of a thin-plate bending wave w = W·exp(i(ax + by)/h) with phase steps (a, b) per

@@ -41,6 +41,46 @@ pub struct ShellForces {
     pub q: [f64; 2],
 }
 
+impl ShellForces {
+    /// Resultants N, M, Q of an element with axes `lam` (rows: local x, y, z in global axes).
+    fn new(lam: &Matrix3<f64>, n: &Vector3<f64>, m: &Vector3<f64>, q: &Vector2<f64>) -> ShellForces {
+        let row = |r: usize| [lam[(r, 0)], lam[(r, 1)], lam[(r, 2)]];
+        ShellForces {
+            axes: [row(0), row(1), row(2)],
+            n: [n.x, n.y, n.z],
+            m: [m.x, m.y, m.z],
+            q: [q.x, q.y],
+        }
+    }
+}
+
+/// Global stress tensors [top, mid, bottom] at a point of a shell with membrane strains `e`,
+/// curvatures `k` and transverse shear strains `gm` (element axes `lam`): σ(z) = C(ε + zκ) at
+/// z = +t/2, 0, −t/2, plane stress, and at the mid-surface the shear peak 1.5·Q/t with
+/// Q = `ds`·γ (`ds` = κ_s·G·t, N/mm). Shared by the four- and nine-node shells.
+fn surface_tensors(
+    c: &Matrix3<f64>,
+    e: &Vector3<f64>,
+    k: &Vector3<f64>,
+    gm: &Vector2<f64>,
+    t: f64,
+    ds: f64,
+    lam: &Matrix3<f64>,
+) -> [[f64; 6]; 3] {
+    let mut out = [[0.0; 6]; 3];
+    for (s, z) in [0.5 * t, 0.0, -0.5 * t].into_iter().enumerate() {
+        let sp = c * (e + k * z);
+        let (txz, tyz) = if s == 1 {
+            (1.5 * ds / t * gm.x, 1.5 * ds / t * gm.y)
+        } else {
+            (0.0, 0.0)
+        };
+        let local = tensor(&[sp.x, sp.y, 0.0, sp.z, tyz, txz]);
+        out[s] = voigt(&(lam.transpose() * local * lam));
+    }
+    out
+}
+
 /// One element's recovery: centre resultants and, per corner node, the global stress tensor
 /// [sxx, syy, szz, sxy, syz, szx] (MPa) on the top, mid and bottom surfaces.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -156,25 +196,10 @@ pub fn shell_recovery(x: &[[f64; 3]; 4], t: f64, mat: &Material, d_global: &Vec2
             k += kap_g[gp] * w;
             gm += gam_g[gp] * w;
         }
-        for (s, z) in [0.5 * t, 0.0, -0.5 * t].into_iter().enumerate() {
-            let sp = c * (e + k * z);
-            let (txz, tyz) = if s == 1 {
-                (1.5 * ds / t * gm.x, 1.5 * ds / t * gm.y)
-            } else {
-                (0.0, 0.0)
-            };
-            let local = tensor(&[sp.x, sp.y, 0.0, sp.z, tyz, txz]);
-            nodal[i][s] = voigt(&(g.lam.transpose() * local * g.lam));
-        }
+        nodal[i] = surface_tensors(&c, &e, &k, &gm, t, ds, &g.lam);
     }
-    let row = |r: usize| [g.lam[(r, 0)], g.lam[(r, 1)], g.lam[(r, 2)]];
     Some(ShellRecovery {
-        forces: ShellForces {
-            axes: [row(0), row(1), row(2)],
-            n: [n.x, n.y, n.z],
-            m: [m.x, m.y, m.z],
-            q: [q.x, q.y],
-        },
+        forces: ShellForces::new(&g.lam, &n, &m, &q),
         nodal,
     })
 }
@@ -240,27 +265,9 @@ pub fn shell9_recovery(
                 gm += ga * w;
             }
         }
-        for (s, z) in [0.5 * t, 0.0, -0.5 * t].into_iter().enumerate() {
-            let sp = c * (e + k * z);
-            let (txz, tyz) = if s == 1 {
-                (1.5 * ds / t * gm.x, 1.5 * ds / t * gm.y)
-            } else {
-                (0.0, 0.0)
-            };
-            let local = tensor(&[sp.x, sp.y, 0.0, sp.z, tyz, txz]);
-            node[s] = voigt(&(g.lam.transpose() * local * g.lam));
-        }
+        *node = surface_tensors(&c, &e, &k, &gm, t, ds, &g.lam);
     }
-    let row = |r: usize| [g.lam[(r, 0)], g.lam[(r, 1)], g.lam[(r, 2)]];
-    Some((
-        ShellForces {
-            axes: [row(0), row(1), row(2)],
-            n: [n.x, n.y, n.z],
-            m: [m.x, m.y, m.z],
-            q: [q.x, q.y],
-        },
-        nodal,
-    ))
+    Some((ShellForces::new(&g.lam, &n, &m, &q), nodal))
 }
 
 /// Shell stresses of a whole model for one displacement field.

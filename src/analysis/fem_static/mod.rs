@@ -53,6 +53,7 @@ pub fn result_of(
     res: fem::StaticResults,
     checked: bool,
 ) -> Result<(StaticResult, fem::StaticResults), AnalysisError> {
+    let (shell4, shell9) = model.shell_kinds();
     let rows = res
         .load_cases
         .iter()
@@ -63,7 +64,7 @@ pub fn result_of(
             let mut r = row(c);
             let in_case = |e: fem::FemError| AnalysisError::new(format!("load case `{}`", c.name), e.to_string());
             let field = fem::shell_recovery::shell_field(model, &c.displacements).map_err(in_case)?;
-            let spr = if has_shell9(model) {
+            let spr = if shell9 {
                 None
             } else {
                 Some(fem::shell_spr::spr_field(model, &c.displacements, &field).map_err(in_case)?)
@@ -76,14 +77,12 @@ pub fn result_of(
         "linear statics, small displacements".to_string(),
         "beams: 2-node exact Timoshenko (Euler–Bernoulli where \"shear\": false); stresses at section critical points"
             .to_string(),
-        "shells: 4-node flat shell (membrane with drilling rotation, MITC4 bending and transverse shear); von Mises at the element centre, max of top/mid/bottom"
-            .to_string(),
     ];
-    if has_shell9(model) {
-        // A model of nine-node shells without four-node ones: the four-node note does not apply.
-        if !model.elements.iter().any(|e| matches!(e, fem::Element::Shell4(_))) {
-            notes.retain(|n| !n.starts_with("shells: 4-node"));
-        }
+    // The four-node note stands for every model but one of nine-node shells alone.
+    if shell4 || !shell9 {
+        notes.push("shells: 4-node flat shell (membrane with drilling rotation, MITC4 bending and transverse shear); von Mises at the element centre, max of top/mid/bottom".to_string());
+    }
+    if shell9 {
         notes.push(SHELL9_NOTE.to_string());
     }
     notes.extend(fem::superelement::notes(model));
@@ -101,11 +100,6 @@ pub fn result_of(
         },
         res,
     ))
-}
-
-/// Does `model` hold nine-node shells?
-fn has_shell9(model: &Model) -> bool {
-    model.elements.iter().any(|e| matches!(e, fem::Element::Shell9(_)))
 }
 
 /// The model note of nine-node shells (statics).

@@ -270,14 +270,7 @@ pub fn coarse_shell_warnings(model: &Model, raw: &ModalResults) -> Vec<String> {
         .map(|(k, e, n)| format!("mode {k}: {n:.1} elements per half-wave, about {:.1} %", 100.0 * e))
         .collect::<Vec<_>>()
         .join("; ");
-    let has = |nine: bool| {
-        model.elements.iter().any(|e| match e {
-            Element::Shell4(_) => !nine,
-            Element::Shell9(_) => nine,
-            _ => false,
-        })
-    };
-    let what = match (has(false), has(true)) {
+    let what = match model.shell_kinds() {
         (_, false) => "the four-node shell's frequencies can read low by about the figures given ({list}; the element's thin-plate dispersion on a mesh of squares in the worse direction, a wave along a mesh diagonal)",
         (false, true) => "the nine-node shell's frequencies can read high by about the figures given ({list}; the element's thin-plate dispersion on a mesh of squares in the worse of a wave along a mesh line and along a diagonal)",
         (true, true) => "the shells' frequencies can be off by about the figures given ({list}; each element's thin-plate dispersion on a mesh of squares in its worse direction: four-node shells read low, nine-node shells high)",

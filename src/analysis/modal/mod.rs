@@ -115,12 +115,11 @@ pub fn solve_with(
             r.n_eq, r.shift, r.lanczos_steps
         ),
     ];
-    if model
-        .elements
-        .iter()
-        .any(|e| matches!(e, crate::fem::Element::Shell9(_)))
-    {
-        notes.push("mass: 9-node shells (shell9) consistent (biquadratic ρt and ρt³/12 mass, none on the drilling rotation); the coarse-mesh frequency estimate covers 4-node shells only".to_string());
+    if model.shell_kinds().1 {
+        notes.push(
+            "mass: 9-node shells (shell9) consistent (biquadratic ρt and ρt³/12 mass, none on the drilling rotation)"
+                .to_string(),
+        );
     }
     notes.extend(crate::fem::superelement::notes(model));
     Ok((
@@ -208,22 +207,23 @@ pub const DRILLING_SHARE: f64 = 0.5;
 /// Rigid-body modes are skipped.
 pub fn drilling_warnings(model: &Model, raw: &ModalResults) -> Vec<String> {
     use crate::fem::{shell::shell_drilling_stiffness, shell9::shell9_drilling_stiffness, Element};
-    let shells: Vec<(nalgebra::DMatrix<f64>, Vec<usize>)> = model
+    // Each shell's drilling stiffness on its nodes (four-node shells, the bulk, inline).
+    #[allow(clippy::large_enum_variant)]
+    enum Drilling {
+        Four(crate::fem::shell::Mat24, [usize; 4]),
+        Nine(nalgebra::DMatrix<f64>, [usize; 9]),
+    }
+    let shells: Vec<Drilling> = model
         .elements
         .iter()
         .filter_map(|e| match e {
             Element::Shell4(s) => {
                 let x = s.nodes.map(|n| model.nodes[n]);
-                shell_drilling_stiffness(&x, s.t, &s.material).map(|k| {
-                    (
-                        nalgebra::DMatrix::from_column_slice(24, 24, k.as_slice()),
-                        s.nodes.to_vec(),
-                    )
-                })
+                shell_drilling_stiffness(&x, s.t, &s.material).map(|k| Drilling::Four(k, s.nodes))
             }
             Element::Shell9(s) => {
                 let x = s.nodes.map(|n| model.nodes[n]);
-                shell9_drilling_stiffness(&x, s.t, &s.material).map(|k| (k, s.nodes.to_vec()))
+                shell9_drilling_stiffness(&x, s.t, &s.material).map(|k| Drilling::Nine(k, s.nodes))
             }
             _ => None,
         })
@@ -239,10 +239,9 @@ pub fn drilling_warnings(model: &Model, raw: &ModalResults) -> Vec<String> {
         }
         let drill: f64 = shells
             .iter()
-            .map(|(kd, nodes)| {
-                let v =
-                    nalgebra::DVector::<f64>::from_iterator(6 * nodes.len(), nodes.iter().flat_map(|&n| m.shape[n]));
-                v.dot(&(kd * &v))
+            .map(|d| match d {
+                Drilling::Four(k, nodes) => element_energy(&|a, b| k[(a, b)], nodes, &m.shape).0,
+                Drilling::Nine(k, nodes) => element_energy(&|a, b| k[(a, b)], nodes, &m.shape).0,
             })
             .sum();
         let share = drill / total;

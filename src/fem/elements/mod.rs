@@ -73,6 +73,18 @@ pub struct ElementMatrix {
     pub k: Mat12,
 }
 
+/// Checks a shell element `ie`: its material and a positive, finite thickness `t` (mm).
+pub(crate) fn check_shell(ie: usize, t: f64, m: &Material) -> Result<(), FemError> {
+    check_material(ie, m)?;
+    if !(t.is_finite() && t > 0.0) {
+        return Err(FemError::BadElement {
+            element: ie,
+            reason: format!("shell thickness must be positive and finite, got {t}"),
+        });
+    }
+    Ok(())
+}
+
 /// Checks an isotropic material of element `ie`: E > 0 and −1 < ν < 0.5.
 pub(crate) fn check_material(ie: usize, m: &Material) -> Result<(), FemError> {
     if !(m.e.is_finite() && m.e > 0.0 && m.nu.is_finite() && m.nu > -1.0 && m.nu < 0.5) {

@@ -1,6 +1,6 @@
 //! Four-node flat shell: data, checks and global stiffness (see [`crate::fem::shell`]).
 
-use super::check_material;
+use super::check_shell;
 use crate::fem::error::FemError;
 use crate::fem::shell::{shell_stiffness, Mat24};
 use crate::material::Material;
@@ -25,14 +25,7 @@ pub struct ShellMatrix {
 impl Shell4 {
     /// Checks material and thickness (`ie`: the element's index, for errors).
     pub fn check(&self, ie: usize) -> Result<(), FemError> {
-        check_material(ie, &self.material)?;
-        if !(self.t.is_finite() && self.t > 0.0) {
-            return Err(FemError::BadElement {
-                element: ie,
-                reason: format!("shell thickness must be positive and finite, got {}", self.t),
-            });
-        }
-        Ok(())
+        check_shell(ie, self.t, &self.material)
     }
 
     /// The error for nodes that do not form a convex quadrilateral.

@@ -1,6 +1,6 @@
 //! Nine-node flat shell: data, checks and global matrices (see [`crate::fem::shell9`]).
 
-use super::check_material;
+use super::check_shell;
 use crate::fem::error::FemError;
 use crate::fem::shell9::{shell9_mass, shell9_stiffness};
 use crate::material::Material;
@@ -28,14 +28,7 @@ pub struct Shell9Matrix {
 impl Shell9 {
     /// Checks material and thickness (`ie`: the element's index, for errors).
     pub fn check(&self, ie: usize) -> Result<(), FemError> {
-        check_material(ie, &self.material)?;
-        if !(self.t.is_finite() && self.t > 0.0) {
-            return Err(FemError::BadElement {
-                element: ie,
-                reason: format!("shell thickness must be positive and finite, got {}", self.t),
-            });
-        }
-        Ok(())
+        check_shell(ie, self.t, &self.material)
     }
 
     fn bad(&self, ie: usize, e: crate::fem::shell9::Shell9GeometryError) -> FemError {

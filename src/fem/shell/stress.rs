@@ -3,7 +3,7 @@
 
 use super::{cartesian, plane_stress, shell_geometry, Vec24};
 use crate::material::Material;
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 
 /// Stresses at the element centre, local axes (MPa): von Mises at the top (z = +t/2), middle
 /// and bottom surfaces, plus the membrane forces n = (nxx, nyy, nxy) (N/mm) and moments
@@ -39,19 +39,23 @@ pub fn shell_stress(x: &[[f64; 3]; 4], t: f64, mat: &Material, d_global: &Vec24)
         eps += Vector3::new(dx[i] * u, dy[i] * v, dy[i] * u + dx[i] * v);
         kap += Vector3::new(dx[i] * ty, -dy[i] * tx, dy[i] * ty - dx[i] * tx);
     }
-    let c = plane_stress(mat.e, mat.nu);
+    Some(stress_from_strains(&plane_stress(mat.e, mat.nu), &eps, &kap, t))
+}
+
+/// The [`ShellStress`] of membrane strains `eps` and curvatures `kap` (local axes) of a shell of
+/// thickness `t` (mm) with plane-stress elasticity `c` (MPa). Shared by the four- and nine-node
+/// shells.
+pub(crate) fn stress_from_strains(c: &Matrix3<f64>, eps: &Vector3<f64>, kap: &Vector3<f64>, t: f64) -> ShellStress {
     let sm = c * eps;
     let sb = c * kap * (t / 2.0);
-    let top = sm + sb;
-    let bot = sm - sb;
     let arr = |v: Vector3<f64>| [v.x, v.y, v.z];
-    Some(ShellStress {
+    ShellStress {
         von_mises: [
-            von_mises_plane(&arr(top)),
+            von_mises_plane(&arr(sm + sb)),
             von_mises_plane(&arr(sm)),
-            von_mises_plane(&arr(bot)),
+            von_mises_plane(&arr(sm - sb)),
         ],
         n: arr(sm * t),
         m: arr(c * kap * (t * t * t / 12.0)),
-    })
+    }
 }
