@@ -8,6 +8,8 @@ use flexfem::fem::modal::{solve_modal, ModalOptions};
 use flexfem::fem::{self, Element, LoadCase, Model, Shell9, Support};
 use flexfem::material::Material;
 
+mod common;
+
 const A: f64 = 100.0;
 
 /// Clamped square plate, thin-plate theory: A. W. Leissa, Vibration of Plates, NASA SP-160
@@ -18,30 +20,39 @@ const SQUARE: [f64; 6] = [35.992, 73.413, 73.413, 108.27, 131.64, 132.24];
 /// independent of this element).
 const SKEW45: [f64; 6] = [65.642, 106.489, 148.300, 157.226, 196.743, 229.464];
 
-/// A (2ne+1)² node grid of `ne`×`ne` nine-node elements over the skewed square of side `a`
-/// (node (i, j) at u = a·i/2ne, v = a·j/2ne, x = u + v·sin φ, y = v·cos φ, then `map`);
-/// returns the node id function of the grid.
-fn grid9(
-    m: &mut Model,
+/// The clamped-plate family of these tests: the skewed square of side A (node (i, j) of its
+/// (2ne+1)² grid at u = A·i/2ne, v = A·j/2ne, x = u + v·sin φ, y = v·cos φ; φ = 0: square) on
+/// `ne`×`ne` nine-node shells, each boundary node held by `edge(node)`. Returns the model and the
+/// node id function of the grid.
+fn plate9(
     ne: usize,
-    a: [f64; 2],
     skew_deg: f64,
     t: f64,
     mat: Material,
-    map: impl Fn([f64; 3]) -> [f64; 3],
-) -> impl Fn(usize, usize) -> usize {
+    edge: impl Fn(usize) -> Support,
+) -> (Model, impl Fn(usize, usize) -> usize) {
     let n = 2 * ne;
     let (sn, cs) = (skew_deg.to_radians().sin(), skew_deg.to_radians().cos());
-    let base = m.nodes.len();
-    for j in 0..=n {
-        for i in 0..=n {
-            let (u, v) = (a[0] * i as f64 / n as f64, a[1] * j as f64 / n as f64);
-            m.add_node(map([u + v * sn, v * cs, 0.0]));
+    let mut m = Model::new();
+    common::meshes::each_node(n, |i, j, _| {
+        let (u, v) = (A * i as f64 / n as f64, A * j as f64 / n as f64);
+        m.add_node([u + v * sn, v * cs, 0.0]);
+    });
+    let id = move |i: usize, j: usize| j * (n + 1) + i;
+    add_elements9(&mut m, (ne, ne), &id, t, mat);
+    common::meshes::each_node(n, |i, j, on_edge| {
+        if on_edge {
+            m.supports.push(edge(id(i, j)));
         }
-    }
-    let id = move |i: usize, j: usize| base + j * (n + 1) + i;
-    for ej in 0..ne {
-        for ei in 0..ne {
+    });
+    (m, id)
+}
+
+/// Adds the `nx`×`ny` nine-node shells of a (2nx+1)×(2ny+1) node grid whose node (i, j) is
+/// `id(i, j)`: corners around each element, then its edge midpoints, then its centre.
+fn add_elements9(m: &mut Model, (nx, ny): (usize, usize), id: &impl Fn(usize, usize) -> usize, t: f64, mat: Material) {
+    for ej in 0..ny {
+        for ei in 0..nx {
             let (i, j) = (2 * ei, 2 * ej);
             let nodes = [
                 id(i, j),
@@ -61,7 +72,6 @@ fn grid9(
             }));
         }
     }
-    id
 }
 
 /// λ = ωa²√(ρt/D) of modes 1–6 of the clamped plate, `ne`×`ne` nine-node elements, a = 100,
@@ -73,16 +83,7 @@ fn clamped_plate(ne: usize, skew_deg: f64) -> Vec<f64> {
 /// [`clamped_plate`] with the model and the modal results.
 fn clamped_plate_solved(ne: usize, skew_deg: f64) -> (Vec<f64>, Model, flexfem::fem::modal::ModalResults) {
     let (t, mat) = (0.1, Material::AL7075);
-    let mut m = Model::new();
-    let id = grid9(&mut m, ne, [A, A], skew_deg, t, mat, |x| x);
-    let n = 2 * ne;
-    for j in 0..=n {
-        for i in 0..=n {
-            if i == 0 || j == 0 || i == n || j == n {
-                m.supports.push(Support::clamp(id(i, j)));
-            }
-        }
-    }
+    let (m, _) = plate9(ne, skew_deg, t, mat, Support::clamp);
     let r = solve_modal(&m, &ModalOptions::new(6)).unwrap();
     let d = mat.e * t.powi(3) / (12.0 * (1.0 - mat.nu * mat.nu));
     let lam = r
@@ -178,16 +179,7 @@ fn clamped_square_plate_under_pressure() {
 /// `t`) under the pressure `q` (MPa) on `ne`×`ne` nine-node shells, shell9's own consistent
 /// pressure loads.
 fn pressure_deflection(ne: usize, t: f64, mat: Material, q: f64) -> f64 {
-    let mut m = Model::new();
-    let id = grid9(&mut m, ne, [A, A], 0.0, t, mat, |x| x);
-    let n = 2 * ne;
-    for j in 0..=n {
-        for i in 0..=n {
-            if i == 0 || j == 0 || i == n || j == n {
-                m.supports.push(Support::clamp(id(i, j)));
-            }
-        }
-    }
+    let (mut m, id) = plate9(ne, 0.0, t, mat, Support::clamp);
     let mut f = vec![[0.0; 6]; m.nodes.len()];
     for e in &m.elements {
         let Element::Shell9(s) = e else { unreachable!() };
@@ -234,27 +226,7 @@ fn distorted_patch(t: f64, mat: Material) -> (Model, Vec<bool>) {
         }
     }
     let id = |i: usize, j: usize| j * 5 + i;
-    for ej in 0..2 {
-        for ei in 0..2 {
-            let (i, j) = (2 * ei, 2 * ej);
-            let nodes = [
-                id(i, j),
-                id(i + 2, j),
-                id(i + 2, j + 2),
-                id(i, j + 2),
-                id(i + 1, j),
-                id(i + 2, j + 1),
-                id(i + 1, j + 2),
-                id(i, j + 1),
-                id(i + 1, j + 1),
-            ];
-            m.add_element(Element::Shell9(Shell9 {
-                nodes,
-                t,
-                material: mat,
-            }));
-        }
-    }
+    add_elements9(&mut m, (2, 2), &id, t, mat);
     (m, boundary)
 }
 
@@ -380,27 +352,7 @@ fn leaf_root_stress_against_the_beam_value() {
         }
     }
     let id = |i: usize, j: usize| j * (gx + 1) + i;
-    for ej in 0..ny {
-        for ei in 0..nx {
-            let (i, j) = (2 * ei, 2 * ej);
-            let nodes = [
-                id(i, j),
-                id(i + 2, j),
-                id(i + 2, j + 2),
-                id(i, j + 2),
-                id(i + 1, j),
-                id(i + 2, j + 1),
-                id(i + 1, j + 2),
-                id(i, j + 1),
-                id(i + 1, j + 1),
-            ];
-            m.add_element(Element::Shell9(Shell9 {
-                nodes,
-                t,
-                material: mat,
-            }));
-        }
-    }
+    add_elements9(&mut m, (nx, ny), &id, t, mat);
     for j in 0..=gy {
         m.supports.push(Support::clamp(id(0, j)));
     }
@@ -496,16 +448,9 @@ fn simply_supported_plate_errors_are_the_bloch_ratio() {
     use flexfem::fem::shell9::square_mesh_frequency_ratio9;
     use flexfem::fem::Dof;
     let (t, mat, ne) = (1.0, Material::AL7075, 4);
-    let mut m = Model::new();
-    let id = grid9(&mut m, ne, [A, A], 0.0, t, mat, |x| x);
-    let n = 2 * ne;
-    for j in 0..=n {
-        for i in 0..=n {
-            if i == 0 || j == 0 || i == n || j == n {
-                m.supports.push(Support::dofs(id(i, j), &[Dof::Ux, Dof::Uy, Dof::Uz]));
-            }
-        }
-    }
+    let (m, _) = plate9(ne, 0.0, t, mat, |node| {
+        Support::dofs(node, &[Dof::Ux, Dof::Uy, Dof::Uz])
+    });
     let r = solve_modal(&m, &ModalOptions::new(6)).unwrap();
     let d = mat.e * t.powi(3) / (12.0 * (1.0 - mat.nu * mat.nu));
     let navier = |mm: f64, nn: f64| {
