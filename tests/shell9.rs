@@ -51,26 +51,12 @@ fn plate9(
 /// Adds the `nx`×`ny` nine-node shells of a (2nx+1)×(2ny+1) node grid whose node (i, j) is
 /// `id(i, j)`: corners around each element, then its edge midpoints, then its centre.
 fn add_elements9(m: &mut Model, (nx, ny): (usize, usize), id: &impl Fn(usize, usize) -> usize, t: f64, mat: Material) {
-    for ej in 0..ny {
-        for ei in 0..nx {
-            let (i, j) = (2 * ei, 2 * ej);
-            let nodes = [
-                id(i, j),
-                id(i + 2, j),
-                id(i + 2, j + 2),
-                id(i, j + 2),
-                id(i + 1, j),
-                id(i + 2, j + 1),
-                id(i + 1, j + 2),
-                id(i, j + 1),
-                id(i + 1, j + 1),
-            ];
-            m.add_element(Element::Shell9(Shell9 {
-                nodes,
-                t,
-                material: mat,
-            }));
-        }
+    for nodes in common::meshes::nine_node_cells(nx, ny, id) {
+        m.add_element(Element::Shell9(Shell9 {
+            nodes,
+            t,
+            material: mat,
+        }));
     }
 }
 

@@ -9,7 +9,9 @@
 //! excess of waves along a mesh line (square modes 5–6, +0.8 %) but over-corrects waves along a
 //! diagonal (square mode 4, −7.1 %) and leaves the skew plate's mode 6 at +7.1 %. The last test
 //! shows why no mass balances every direction (the spread between them is a property of the
-//! MITC4 stiffness), so 8×8 is held to ±7.5 % and 12×12 to ±5 %.
+//! MITC4 stiffness), so 8×8 is held to ±7.5 % and 12×12 to ±5 %. The same 8×8 meshes solved
+//! with `"shell_elements": "shell9"` (nine-node shells on the same corners) are within ±5 %:
+//! `tests/shell_promote.rs`.
 //!
 //! Masses measured at 8×8 in search of ±5 % (square / skew, min…max over modes 1–6, with a
 //! prototype of the element's plate part that reproduces the numbers of this file to 0.01 %):

@@ -187,7 +187,7 @@ pub(crate) struct ModalOptions {
 
 /// The top-level fields of a `static` or `modal` case that are the model's (those of
 /// [`MeshSpec`]).
-pub const MODEL_FIELDS: [&str; 8] = [
+pub const MODEL_FIELDS: [&str; 9] = [
     "materials",
     "sections",
     "nodes",
@@ -196,6 +196,7 @@ pub const MODEL_FIELDS: [&str; 8] = [
     "supports",
     "load_cases",
     "ordering",
+    "shell_elements",
 ];
 
 const STATIC_OWN: [&str; 12] = [
@@ -415,6 +416,9 @@ pub fn read_model(
         None => inline,
     };
     super::mesh::superelement::load_files(&mut spec, base.dir)?;
+    if spec.shell_elements == super::mesh::promote::ShellElements::Shell9 {
+        super::mesh::promote::promote(&mut spec)?;
+    }
     spec.hinge_type_names = base.hinge_types().clone();
     Ok(spec)
 }

@@ -152,3 +152,27 @@ pub fn with_loads(mut m: Model, f: &[[f64; 6]]) -> Model {
     m.load_cases.push(lc);
     m
 }
+
+/// The node lists of the `nx`×`ny` nine-node quadrangles on a (2nx+1)×(2ny+1) node grid whose
+/// node (i, j) is `id(i, j)`: corners around each element, then its edge midpoints (edges 0–1,
+/// 1–2, 2–3, 3–0), then its centre; elements row by row.
+pub fn nine_node_cells(nx: usize, ny: usize, id: impl Fn(usize, usize) -> usize) -> Vec<[usize; 9]> {
+    let mut cells = Vec::with_capacity(nx * ny);
+    for ej in 0..ny {
+        for ei in 0..nx {
+            let (i, j) = (2 * ei, 2 * ej);
+            cells.push([
+                id(i, j),
+                id(i + 2, j),
+                id(i + 2, j + 2),
+                id(i, j + 2),
+                id(i + 1, j),
+                id(i + 2, j + 1),
+                id(i + 1, j + 2),
+                id(i, j + 1),
+                id(i + 1, j + 1),
+            ]);
+        }
+    }
+    cells
+}

@@ -248,7 +248,8 @@ impl Analysis for FrfKind {
         validated(case).map(drop)
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
-        let (r, ss) = run(&validated(case)?, ctx.cache)?;
+        let (mut r, ss) = run(&validated(case)?, ctx.cache)?;
+        r.model.extend(case.model.promoted.as_ref().map(|p| p.note()));
         ctx.warnings.extend(crate::analysis::common::warn::fewer_modes(case.modes, r.modes.len(), None));
         if ctx.with_files {
             ctx.files = files::files(&r, &ss)?;

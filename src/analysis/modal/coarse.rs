@@ -276,7 +276,13 @@ pub fn coarse_shell_warnings(model: &Model, raw: &ModalResults) -> Vec<String> {
         (true, true) => "the shells' frequencies can be off by about the figures given ({list}; each element's thin-plate dispersion on a mesh of squares in its worse direction: four-node shells read low, nine-node shells high)",
     }
     .replace("{list}", &list);
+    // Flat four-node shells can be solved as nine-node ones on the same mesh, unless they are.
+    let promote = if model.shell_kinds().0 {
+        ", or solve flat four-node shells as nine-node shells on the same corners (`\"shell_elements\": \"shell9\"`)"
+    } else {
+        ""
+    };
     vec![format!(
-        "coarse shell mesh: the shells that carry these modes' strain energy have few elements per bending half-wave, and {what}: refine the shell mesh where these modes bend"
+        "coarse shell mesh: the shells that carry these modes' strain energy have few elements per bending half-wave, and {what}: refine the shell mesh where these modes bend{promote}"
     )]
 }

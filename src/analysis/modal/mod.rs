@@ -108,14 +108,21 @@ pub fn solve_with(
             }
         })
         .collect();
+    let (shell4, shell9) = model.shell_kinds();
+    // The four-node shells' part stands in every model but one of nine-node shells alone.
+    let four_node = if shell4 || !shell9 {
+        "four-node shells lumped (row sums of the bilinear ρt and ρt³/12 mass, plus the rotary inertia of each node's tributary tile), "
+    } else {
+        ""
+    };
     let mut notes = vec![
-        "mass: beams consistent (Hermite, with rotary inertia), shells lumped (row sums of the bilinear ρt and ρt³/12 mass, plus the rotary inertia of each node's tributary tile), point masses".to_string(),
+        format!("mass: beams consistent (Hermite, with rotary inertia), {four_node}point masses"),
         format!(
             "block shift-invert Lanczos on {} equations, shift {:.4e} (rad/s)², {} solves",
             r.n_eq, r.shift, r.lanczos_steps
         ),
     ];
-    if model.shell_kinds().1 {
+    if shell9 {
         notes.push(
             "mass: 9-node shells (shell9) consistent (biquadratic ρt and ρt³/12 mass, none on the drilling rotation)"
                 .to_string(),

@@ -448,7 +448,8 @@ impl Analysis for TransientKind {
         }
         let mut r = output::result(case, &inputs.opts, &raw);
         let segments = crate::analysis::common::warn::default_segments_note(&hinges);
-        for note in crate::fem::superelement::notes(&model).into_iter().chain(segments) {
+        let promoted = case.model.promoted.as_ref().map(|p| p.note());
+        for note in crate::fem::superelement::notes(&model).into_iter().chain(segments).chain(promoted) {
             r.model = format!("{}; {note}", r.model);
         }
         Ok(r)

@@ -34,6 +34,9 @@ impl MeshSpec {
         if inline.ordering.is_some() {
             mesh.ordering = inline.ordering;
         }
+        if inline.shell_elements != super::shapes::ShellElements::AsGiven {
+            mesh.shell_elements = inline.shell_elements;
+        }
         Ok(mesh)
     }
 
@@ -90,6 +93,10 @@ impl MeshSpec {
                 check::finite(format_args!("nodes[{i}][{k}]"), *v)?;
             }
             cx.model.add_node(*x);
+        }
+        // Nodes added by "shell_elements": "shell9" follow their parents (a sweep moves corners).
+        if let Some(p) = &self.promoted {
+            p.place(&mut cx.model.nodes);
         }
         let size = super::joint::model_size(&self.nodes);
         let mut rigid: Vec<(String, RigidSpec)> = self

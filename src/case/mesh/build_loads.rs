@@ -174,23 +174,47 @@ pub(super) fn load_case(cx: &mut Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::
             };
             check::finite(format_args!("{pe}.{name}"), *v)?;
         }
-        let is_edge = cx.model.elements.iter().any(|e| match e {
-            fem::Element::Shell4(sh) => (0..4).any(|k| {
-                let (x, y) = (sh.nodes[k], sh.nodes[(k + 1) % 4]);
-                x != y && ((x, y) == (a, b) || (x, y) == (b, a))
-            }),
-            _ => false,
-        });
-        if !is_edge {
-            return Err(CaseError::value(
-                format!("{pe}.nodes"),
-                format!("[{a}, {b}]"),
-                "must be two nodes adjacent in the node list of a shell4 element (an element edge; edge loads on shell9 edges are not available: give nodal forces)",
-            ));
+        // A four-node shell's edge, or two corners of a nine-node shell's edge (its midpoint).
+        let mut edge: Option<Option<usize>> = None;
+        for e in &cx.model.elements {
+            match e {
+                fem::Element::Shell4(sh) if (0..4).any(|k| same_edge(sh.nodes[k], sh.nodes[(k + 1) % 4], a, b)) => {
+                    edge = Some(None);
+                    break;
+                }
+                fem::Element::Shell9(sh) => {
+                    if let Some(k) = (0..4).find(|&k| same_edge(sh.nodes[k], sh.nodes[(k + 1) % 4], a, b)) {
+                        edge = Some(Some(sh.nodes[4 + k]));
+                        break;
+                    }
+                }
+                _ => {}
+            }
         }
-        let f = fem::shell_loads::edge_loads(cx.model.nodes[a], cx.model.nodes[b], el.q, el.m);
-        lc = lc.force(a, f[0]).force(b, f[1]);
+        match edge {
+            None => {
+                return Err(CaseError::value(
+                    format!("{pe}.nodes"),
+                    format!("[{a}, {b}]"),
+                    "must be two nodes adjacent in the node list of a shell4 element, or two corners of one edge of a shell9 element (its midpoint node is loaded too)",
+                ))
+            }
+            Some(None) => {
+                let f = fem::shell_loads::edge_loads(cx.model.nodes[a], cx.model.nodes[b], el.q, el.m);
+                lc = lc.force(a, f[0]).force(b, f[1]);
+            }
+            Some(Some(mid)) => {
+                let x = &cx.model.nodes;
+                let f = fem::shell_loads::edge_loads3(x[a], x[mid], x[b], el.q, el.m);
+                lc = lc.force(a, f[0]).force(mid, f[1]).force(b, f[2]);
+            }
+        }
     }
     super::build_body_loads::body_loads(cx, p, c, &mut lc)?;
     Ok(lc)
+}
+
+/// Whether the element edge x–y (distinct nodes) joins `a` and `b`, in either direction.
+fn same_edge(x: usize, y: usize, a: usize, b: usize) -> bool {
+    x != y && ((x, y) == (a, b) || (x, y) == (b, a))
 }

@@ -173,7 +173,7 @@ pub struct PressureSpec {
     /// over the node order (n = +z for nodes listed counter-clockwise seen from +z; for a
     /// warped quad, the normal of its mean plane).
     pub p: f64,
-    /// Indices (in `elements`) of the `shell4` elements loaded.
+    /// Indices (in `elements`) of the `shell4` and `shell9` elements loaded.
     #[serde(default)]
     pub elements: Vec<usize>,
     /// Name of a Gmsh physical group (listed in `gmsh.groups`) whose shell elements are loaded
@@ -182,11 +182,13 @@ pub struct PressureSpec {
     pub group: Option<String>,
 }
 
-/// A uniform load along the straight edge between two nodes of one `shell4` element.
+/// A uniform load along an edge of a shell: two adjacent nodes of a `shell4`, or two corners of
+/// one edge of a `shell9` (whose midpoint node takes its share).
 #[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct EdgeLoadSpec {
-    /// The edge's end nodes: two nodes adjacent in some `shell4` element's node list.
+    /// The edge's end nodes: two nodes adjacent in some `shell4` element's node list, or the two
+    /// corners of an edge of a `shell9`.
     pub nodes: [usize; 2],
     /// Force per length [qx, qy, qz], N/mm, global axes.
     #[serde(default)]

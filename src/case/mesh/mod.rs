@@ -18,6 +18,7 @@ pub mod load_shapes;
 mod lookup;
 pub mod metrics;
 pub mod path_control;
+pub mod promote;
 pub mod requests;
 pub mod shapes;
 pub mod slots;

@@ -290,6 +290,16 @@ pub struct MeshSpec {
     /// minimum degree) or `"nd"` (nested dissection, METIS).
     #[serde(default)]
     pub ordering: Option<OrderingSpec>,
+    /// `"as_given"` (default) or `"shell9"`: every `shell4` becomes a nine-node `shell9` on the
+    /// same corners (a node added at each edge midpoint and element centre; supports, rigid
+    /// links and prescribed displacements carried to them; triangles and warped quadrangles
+    /// refused).
+    #[serde(default)]
+    pub shell_elements: ShellElements,
+    /// What `"shell_elements": "shell9"` added (set by the case reader; not a case-file field).
+    #[serde(skip)]
+    #[schemars(skip)]
+    pub promoted: Option<Promoted>,
     /// Gmsh meshes: the mapped physical groups of each element (filled by the `.msh` reader;
     /// not a case-file field).
     #[serde(skip)]
@@ -385,4 +395,52 @@ pub struct GroupSpec {
 pub struct GmshMapping {
     /// Physical group name → what it becomes.
     pub groups: BTreeMap<String, GroupSpec>,
+}
+
+/// `"shell_elements"`: which element the model's shells are solved with.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, schemars::JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum ShellElements {
+    /// As written: `shell4` four-node, `shell9` nine-node (the default).
+    #[default]
+    AsGiven,
+    /// Every `shell4` becomes a `shell9` on the same corners, a node added at each edge midpoint
+    /// and element centre.
+    Shell9,
+}
+
+/// What the promotion added to a model.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Promoted {
+    /// Index of the first added node (the model's own nodes come before).
+    pub first_node: usize,
+    /// Parents of each added node, in node order: the two ends of an edge or four corners.
+    pub parents: Vec<Vec<usize>>,
+    /// Number of four-node shells that became nine-node shells.
+    pub shells: usize,
+}
+
+impl Promoted {
+    /// Sets every added node of `nodes` (mm) to the mean of its parents.
+    pub fn place(&self, nodes: &mut [[f64; 3]]) {
+        for (k, parents) in self.parents.iter().enumerate() {
+            let mut x = [0.0; 3];
+            for &p in parents {
+                for c in 0..3 {
+                    x[c] += nodes[p][c] / parents.len() as f64;
+                }
+            }
+            nodes[self.first_node + k] = x;
+        }
+    }
+
+    /// The model note of a promoted model.
+    pub fn note(&self) -> String {
+        format!(
+            "\"shell_elements\": \"shell9\": the {} four-node shells were solved as nine-node shells on the same corners ({} nodes added, numbered from {}: edge midpoints, then element centres)",
+            self.shells,
+            self.parents.len(),
+            self.first_node
+        )
+    }
 }
