@@ -335,6 +335,26 @@ fn what_cannot_become_nine_node_shells_is_refused_with_its_path() {
             "{name}: {err}"
         );
     }
+    // In a mesh file, the error names the file; in a Gmsh mesh, the physical group.
+    let d = tempdir("promote_mesh_file");
+    let mut mesh = as_given_triangle.clone();
+    for k in ["analysis", "load_cases", "shell_elements"] {
+        mesh.as_object_mut().unwrap().remove(k);
+    }
+    write(&d, "mesh.json", &mesh.to_string());
+    let c = json!({"analysis": "modal", "modes": 2, "mesh": "mesh.json", "shell_elements": "shell9"});
+    let p = write(&d, "case.json", &c.to_string());
+    let o = run_in(&d, &["run", p.to_str().unwrap()]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("in mesh file \"mesh.json\" at `elements[1].nodes`") && err.contains("triangle"), "{err}");
+    let mut tris: Value = serde_json::from_slice(&std::fs::read(root().join("cases/gmsh_plate_tris.json")).unwrap()).unwrap();
+    tris["mesh"] = json!(root().join("meshes/plate_clamped_tris.msh").to_str().unwrap());
+    tris["shell_elements"] = json!("shell9");
+    let o = run_case_text("promote_gmsh_tris", &tris.to_string());
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("`gmsh.groups.plate`") && err.contains("triangle"), "{err}");
     // Without the option the triangle is a valid four-node shell.
     let o = run_case_text("promote_as_given", &as_given_triangle.to_string());
     assert!(o.status.success(), "{}", stderr(&o));

@@ -4,6 +4,7 @@
 use super::error::CaseError;
 use super::fields::case_struct;
 use super::gmsh::{self, GmshMapping};
+use super::mesh::promote::{self, ShellElements};
 use super::mesh::MeshSpec;
 use super::stage::{self, nonlinear_true, steps_given};
 use super::{check_node_count, from_value, limits, read_json, resolve_file};
@@ -386,11 +387,14 @@ pub fn read_model(
                 .map_err(|e| CaseError::new(e.path.clone(), format!("in {name}: {}", e.message)))?;
             let (from_file, _notes, origin) = gmsh::parse_msh_traced(text, mapping)
                 .map_err(|e| CaseError::new(e.path.clone(), format!("in {name}: {}", e.message)))?;
-            let merged = MeshSpec::merge_inline(from_file, inline)?;
+            let mut merged = MeshSpec::merge_inline(from_file, inline)?;
             // Errors in elements built from the .msh belong to the user's group mapping.
             merged
                 .build_model(false)
                 .map_err(|e| gmsh::group_error(e, &origin, name))?;
+            if merged.shell_elements == ShellElements::Shell9 {
+                promote::promote(&mut merged).map_err(|e| gmsh::group_error(e, &origin, name))?;
+            }
             merged
         }
         Some(_) | None if gmsh_map.is_some() => {
@@ -416,8 +420,12 @@ pub fn read_model(
         None => inline,
     };
     super::mesh::superelement::load_files(&mut spec, base.dir)?;
-    if spec.shell_elements == super::mesh::promote::ShellElements::Shell9 {
-        super::mesh::promote::promote(&mut spec)?;
+    if spec.shell_elements == ShellElements::Shell9 && spec.promoted.is_none() {
+        let file = spec.mesh_file.clone();
+        promote::promote(&mut spec).map_err(|e| match &file {
+            Some(name) => super::params::in_mesh_file(name, e),
+            None => e,
+        })?;
     }
     spec.hinge_type_names = base.hinge_types().clone();
     Ok(spec)
