@@ -148,7 +148,7 @@ pub const RIGID_MODE_TOL: f64 = 3e-15;
 
 /// Strain energy φₑᵀKₑφₑ of one element (at most 9 nodes) in `shape` (global rows, mm and rad)
 /// and its round-off scale |φₑ|ᵀ|Kₑ||φₑ| (|·| entrywise).
-fn element_energy(k: &dyn Fn(usize, usize) -> f64, nodes: &[usize], shape: &[[f64; 6]]) -> (f64, f64) {
+fn element_energy(k: impl Fn(usize, usize) -> f64, nodes: &[usize], shape: &[[f64; 6]]) -> (f64, f64) {
     let mut v = [0.0; 54];
     for (i, &n) in nodes.iter().enumerate() {
         v[6 * i..6 * i + 6].copy_from_slice(&shape[n]);
@@ -174,25 +174,41 @@ pub fn mode_energies_with(
     mut each: impl FnMut(usize, usize, f64),
 ) -> Vec<(f64, f64)> {
     let mut out = vec![(0.0, 0.0); raw.modes.len()];
-    let mut add = |ie: usize, k: &dyn Fn(usize, usize) -> f64, nodes: &[usize]| {
+    // Generic over the matrix (inlined entry access: this loop is most of a shell model's
+    // post-processing).
+    fn add<K: Fn(usize, usize) -> f64>(
+        raw: &ModalResults,
+        out: &mut [(f64, f64)],
+        each: &mut impl FnMut(usize, usize, f64),
+        ie: usize,
+        k: K,
+        nodes: &[usize],
+    ) {
         for (mode, (m, (e, s))) in raw.modes.iter().zip(out.iter_mut()).enumerate() {
-            let (de, ds) = element_energy(k, nodes, &m.shape);
+            let (de, ds) = element_energy(&k, nodes, &m.shape);
             *e += de;
             *s += ds;
             each(ie, mode, de);
         }
-    };
+    }
     for (ie, el) in model.elements.iter().enumerate() {
         if let crate::fem::Element::Shell4(_) = el {
             if let Ok(em) = model.shell_matrix(ie) {
-                add(ie, &|a, b| em.k[(a, b)], &em.nodes);
+                add(raw, &mut out, &mut each, ie, |a, b| em.k[(a, b)], &em.nodes);
             }
         } else if let crate::fem::Element::Shell9(_) = el {
             if let Ok(em) = model.shell9_matrix(ie) {
-                add(ie, &|a, b| em.k[(a, b)], &em.nodes);
+                add(raw, &mut out, &mut each, ie, |a, b| em.k[(a, b)], &em.nodes);
             }
         } else if let Ok(em) = model.element_matrix(ie) {
-            add(ie, &|a, b| em.k[(a, b)], &em.nodes[..em.n_nodes]);
+            add(
+                raw,
+                &mut out,
+                &mut each,
+                ie,
+                |a, b| em.k[(a, b)],
+                &em.nodes[..em.n_nodes],
+            );
         }
     }
     out
@@ -247,8 +263,8 @@ pub fn drilling_warnings(model: &Model, raw: &ModalResults) -> Vec<String> {
         let drill: f64 = shells
             .iter()
             .map(|d| match d {
-                Drilling::Four(k, nodes) => element_energy(&|a, b| k[(a, b)], nodes, &m.shape).0,
-                Drilling::Nine(k, nodes) => element_energy(&|a, b| k[(a, b)], nodes, &m.shape).0,
+                Drilling::Four(k, nodes) => element_energy(|a, b| k[(a, b)], nodes, &m.shape).0,
+                Drilling::Nine(k, nodes) => element_energy(|a, b| k[(a, b)], nodes, &m.shape).0,
             })
             .sum();
         let share = drill / total;
