@@ -447,3 +447,34 @@ fn on_equal_nodes_seventeen_square_the_promoted_mesh_is_the_closer() {
         assert!(w9.abs() < w4.abs());
     }
 }
+
+/// `"shell_elements"` in a mesh file applies to every case using it; given in the case, it wins
+/// (either way).
+#[test]
+fn the_case_overrides_the_mesh_files_choice() {
+    let d = tempdir("promote_override");
+    let mut mesh = case("modal", "Al7075", 1.0, &grid(2, 1, (20.0, 10.0), 0.0), shells4(2, 1));
+    mesh.as_object_mut().unwrap().remove("analysis");
+    mesh["supports"] = json!([{"node": 0, "fix": CLAMP}, {"node": 3, "fix": CLAMP}]);
+    for (file, in_file, in_case, promoted) in [
+        ("m9.json", Some("shell9"), None, true),
+        ("m9.json", Some("shell9"), Some("as_given"), false),
+        ("m4.json", None, Some("shell9"), true),
+        ("m4.json", None, None, false),
+    ] {
+        let mut m = mesh.clone();
+        if let Some(v) = in_file {
+            m["shell_elements"] = json!(v);
+        }
+        write(&d, file, &m.to_string());
+        let mut c = json!({"analysis": "modal", "modes": 2, "mesh": file});
+        if let Some(v) = in_case {
+            c["shell_elements"] = json!(v);
+        }
+        let c = flexfem::analysis::parse_value(c, Some(d.as_path())).expect("valid case");
+        let r = flexfem::analysis::run(&c).expect("runs").json;
+        let n = r["modes"][0]["shape"].as_array().unwrap().len();
+        assert_eq!(n, if promoted { 15 } else { 6 }, "{file} {in_file:?} {in_case:?}");
+        assert_eq!(r["model"].to_string().contains("shell_elements"), promoted);
+    }
+}

@@ -392,7 +392,7 @@ pub fn read_model(
             merged
                 .build_model(false)
                 .map_err(|e| gmsh::group_error(e, &origin, name))?;
-            if merged.shell_elements == ShellElements::Shell9 {
+            if merged.shell_elements == Some(ShellElements::Shell9) {
                 promote::promote(&mut merged).map_err(|e| gmsh::group_error(e, &origin, name))?;
             }
             merged
@@ -420,7 +420,7 @@ pub fn read_model(
         None => inline,
     };
     super::mesh::superelement::load_files(&mut spec, base.dir)?;
-    if spec.shell_elements == ShellElements::Shell9 && spec.promoted.is_none() {
+    if spec.shell_elements == Some(ShellElements::Shell9) && spec.promoted.is_none() {
         let file = spec.mesh_file.clone();
         promote::promote(&mut spec).map_err(|e| match &file {
             Some(name) => super::params::in_mesh_file(name, e),

@@ -34,7 +34,7 @@ impl MeshSpec {
         if inline.ordering.is_some() {
             mesh.ordering = inline.ordering;
         }
-        if inline.shell_elements != super::shapes::ShellElements::AsGiven {
+        if inline.shell_elements.is_some() {
             mesh.shell_elements = inline.shell_elements;
         }
         Ok(mesh)

@@ -293,9 +293,9 @@ pub struct MeshSpec {
     /// `"as_given"` (default) or `"shell9"`: every `shell4` becomes a nine-node `shell9` on the
     /// same corners (a node added at each edge midpoint and element centre; supports, rigid
     /// links and prescribed displacements carried to them; triangles and warped quadrangles
-    /// refused).
+    /// refused). Given in the case, it overrides the mesh file's.
     #[serde(default)]
-    pub shell_elements: ShellElements,
+    pub shell_elements: Option<ShellElements>,
     /// What `"shell_elements": "shell9"` added (set by the case reader; not a case-file field).
     #[serde(skip)]
     #[schemars(skip)]
