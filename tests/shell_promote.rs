@@ -478,3 +478,194 @@ fn the_case_overrides_the_mesh_files_choice() {
         assert_eq!(r["model"].to_string().contains("shell_elements"), promoted);
     }
 }
+
+/// The one-element plate of the review cases: 10 × 10 × 1, Al 7075, corners 0–3 with 0 and 3
+/// clamped; promoted, node 7 is the midpoint of edge 3–0 and node 5 that of edge 1–2.
+fn one_element(analysis: &str) -> Value {
+    let mut c = case(analysis, "Al7075", 1.0, &grid(1, 1, (10.0, 10.0), 0.0), shells4(1, 1));
+    // grid(1, 1) numbers the corners 0, 1, 3, 2 around; shells4 lists them counter-clockwise.
+    c["supports"] = json!([{"node": 0, "fix": CLAMP}, {"node": 2, "fix": CLAMP}]);
+    c["shell_elements"] = json!("shell9");
+    c
+}
+
+/// What the midpoint of a held edge takes when its ends move: in statics a settlement of one end
+/// (the other held) gives the midpoint half of it, linear along the edge as on the four-node
+/// edge; in a transient, the ends' base motion moves the midpoint with them (it did not: the
+/// clamped edge bent between its corners, and the free corner rose to 0.15 mm instead of 1). The
+/// promoted transient equals the same plate written out in nine-node shells with all three edge
+/// nodes moved, to 1e-9; ends moving by different histories are refused.
+#[test]
+fn prescribed_and_base_motions_reach_the_held_edges_midpoint() {
+    // Statics: node 0 settles 1 mm, node 2 is held; the edge midpoint (node 7 of edge 2–0).
+    let mut c = one_element("static");
+    c["load_cases"] = json!([{"name": "settle", "displacements": [{"node": 0, "dof": "uz", "value": 1.0}]}]);
+    let r = run_value(c);
+    let u = &r["load_cases"][0]["displacements"];
+    assert_eq!(u.as_array().unwrap().len(), 9);
+    assert!((u[7][2].as_f64().unwrap() - 0.5).abs() < 1e-12, "midpoint {}", u[7]);
+    // Transient: both clamped corners move 1 mm in uz by a ramp.
+    let ramp = json!({"type": "ramp", "start": 0.0, "end": 1e-3});
+    let transient = |c: &mut Value, moved: &[usize], free: usize| {
+        c["dt"] = json!(1e-4);
+        c["steps"] = json!(20);
+        c["motions"] = json!(moved
+            .iter()
+            .map(|&n| json!({"node": n, "dof": "uz", "value": 1.0, "history": ramp}))
+            .collect::<Vec<_>>());
+        c["record"] = json!([{"node": free, "dof": "uz"}]);
+    };
+    let mut c4 = one_element("transient");
+    transient(&mut c4, &[0, 2], 3);
+    let r4 = run_value(c4);
+    let mut c9 = case(
+        "transient",
+        "Al7075",
+        1.0,
+        &grid(2, 2, (10.0, 10.0), 0.0),
+        shells9(1, 1),
+    );
+    c9["supports"] = json!([0, 3, 6].map(|n| json!({"node": n, "fix": CLAMP})));
+    transient(&mut c9, &[0, 3, 6], 8);
+    let r9 = run_value(c9);
+    let (a, b) = (&r4["records"][0], &r9["records"][0]);
+    for k in ["max", "final_value"] {
+        let (x, y) = (a[k].as_f64().unwrap(), b[k].as_f64().unwrap());
+        assert!((x - y).abs() < 1e-9 * y.abs(), "{k}: promoted {x} vs written out {y}");
+    }
+    assert!(a["max"].as_f64().unwrap() > 1.0, "{a}");
+    // Different histories at the two ends of the edge.
+    let mut c = one_element("transient");
+    transient(&mut c, &[0, 2], 3);
+    c["motions"][1]["history"]["end"] = json!(2e-3);
+    let o = run_case_text("promote_motions", &c.to_string());
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("`motions[0]`") && err.contains("different histories"),
+        "{err}"
+    );
+}
+
+/// A model that has nine-node shells already: a four-node shell beside one keeps the nine-node
+/// shell's midpoint on their common edge (it got a second, unconnected node there: a crack), and
+/// equals the model written out in nine-node shells to 1e-9.
+#[test]
+fn a_nine_node_neighbours_midpoint_is_kept() {
+    let nodes = grid(4, 2, (20.0, 10.0), 0.0);
+    let id = |i: usize, j: usize| j * 5 + i;
+    let left = [id(0, 0), id(2, 0), id(2, 2), id(0, 2)];
+    let right = [
+        id(2, 0),
+        id(4, 0),
+        id(4, 2),
+        id(2, 2),
+        id(3, 0),
+        id(4, 1),
+        id(3, 2),
+        id(2, 1),
+        id(3, 1),
+    ];
+    let shell = |t: &str, n: &[usize]| json!({"type": t, "nodes": n, "section": "plate", "material": "m"});
+    let build = |first: Value| {
+        let mut c = case("static", "Al7075", 1.0, &nodes, vec![first, shell("shell9", &right)]);
+        c["supports"] = json!([id(0, 0), id(0, 1), id(0, 2)].map(|n| json!({"node": n, "fix": CLAMP})));
+        c["load_cases"] = json!([{"name": "tip", "forces": [{"node": id(4, 0), "F": [0, 0, 1, 0, 0, 0]}, {"node": id(4, 2), "F": [0, 0, 1, 0, 0, 0]}]}]);
+        c
+    };
+    // Promoted: the left shell's own midpoints are nodes 15 (bottom), 16 (top), 17 (left; its
+    // right edge's is the nine-node shell's id(2, 1)) and its centre 18; written out: the grid's
+    // nodes id(1, 0), id(1, 2), id(0, 1), id(1, 1).
+    let mut c4 = build(shell("shell4", &left));
+    c4["shell_elements"] = json!("shell9");
+    // The grid nodes only the written-out shell uses, held out of the way.
+    for n in [id(1, 0), id(1, 1), id(1, 2)] {
+        c4["supports"]
+            .as_array_mut()
+            .unwrap()
+            .push(json!({"node": n, "fix": CLAMP}));
+    }
+    let r4 = run_value(c4);
+    let u4 = r4["load_cases"][0]["displacements"].as_array().unwrap().clone();
+    assert_eq!(u4.len(), 19, "one midpoint per edge: three new edges, one centre");
+    let left9 = [
+        id(0, 0),
+        id(2, 0),
+        id(2, 2),
+        id(0, 2),
+        id(1, 0),
+        id(2, 1),
+        id(1, 2),
+        id(0, 1),
+        id(1, 1),
+    ];
+    let r9 = run_value(build(shell("shell9", &left9)));
+    let u9 = r9["load_cases"][0]["displacements"].as_array().unwrap().clone();
+    let scale = u9.iter().map(|r| r[2].as_f64().unwrap().abs()).fold(0.0, f64::max);
+    for (a, b) in [
+        (id(4, 0), id(4, 0)),
+        (id(2, 1), id(2, 1)),
+        (15, id(1, 0)),
+        (16, id(1, 2)),
+        (17, id(0, 1)),
+        (18, id(1, 1)),
+    ] {
+        for k in 0..6 {
+            let (x, y) = (u4[a][k].as_f64().unwrap(), u9[b][k].as_f64().unwrap());
+            assert!((x - y).abs() < 1e-9 * scale, "node {a} / {b} dof {k}: {x} vs {y}");
+        }
+    }
+}
+
+/// What the review found further: a non-convex quadrangle gets the four-node shell's own error
+/// (it got the promotion's, which said to keep `as_given`, where it fails too); the added nodes
+/// count against the node limit; `constraints` names an inherited support by the option, not by
+/// a `supports[i]` the case does not have; `craig_bampton` refuses a shell edge on its interface.
+#[test]
+fn degenerate_quads_node_limit_constraints_and_craig_bampton() {
+    let mut bow = one_element("static");
+    bow["nodes"][3] = json!([2.0, 2.0, 0.0]); // concave: (0, 0), (10, 0), (2, 2), (0, 10)
+    bow["load_cases"] = json!([{"name": "f", "forces": [{"node": 1, "F": [0, 0, 1, 0, 0, 0]}]}]);
+    let o = run_case_text("promote_bowtie", &bow.to_string());
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("`elements[0].nodes`") && err.contains("convex quadrilateral"),
+        "{err}"
+    );
+
+    let mut ok = one_element("static");
+    ok["load_cases"] = json!([{"name": "f", "forces": [{"node": 1, "F": [0, 0, 1, 0, 0, 0]}]}]);
+    let d = tempdir("promote_limit");
+    let p = write(&d, "case.json", &ok.to_string());
+    for (limit, code) in [("nodes=8", 2), ("nodes=9", 0)] {
+        let o = std::process::Command::new(bin())
+            .args(["check", p.to_str().unwrap()])
+            .env("FLEXFEM_LIMITS", limit)
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(code), "{limit}: {}", stderr(&o));
+        if code == 2 {
+            assert!(
+                stderr(&o).contains("`shell_elements`") && stderr(&o).contains("(9 nodes)"),
+                "{}",
+                stderr(&o)
+            );
+        }
+    }
+
+    let r = run_value(one_element("constraints"));
+    let text = r.to_string();
+    assert!(
+        !text.contains("supports[2]") && text.contains("the support added node 7 inherits"),
+        "{text}"
+    );
+
+    let mut cb = one_element("craig_bampton");
+    cb["interface"] = json!([1, 3]);
+    cb["modes"] = json!(2);
+    let o = run_case_text("promote_cb", &cb.to_string());
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("`shell_elements`") && err.contains("edge 1–3"), "{err}");
+}

@@ -394,6 +394,7 @@ pub fn read_model(
                 .map_err(|e| gmsh::group_error(e, &origin, name))?;
             if merged.shell_elements == Some(ShellElements::Shell9) {
                 promote::promote(&mut merged).map_err(|e| gmsh::group_error(e, &origin, name))?;
+                limits::check_nodes("shell_elements", merged.nodes.len())?;
             }
             merged
         }
@@ -426,6 +427,8 @@ pub fn read_model(
             Some(name) => super::params::in_mesh_file(name, e),
             None => e,
         })?;
+        // The added nodes count against the node limit.
+        limits::check_nodes("shell_elements", spec.nodes.len())?;
     }
     spec.hinge_type_names = base.hinge_types().clone();
     Ok(spec)

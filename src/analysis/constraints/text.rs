@@ -112,6 +112,11 @@ impl<'a> Names<'a> {
     fn owner(&self, row: usize) -> (String, String) {
         let c = &self.k.constraints[row];
         match c.source {
+            // Supports the nodes added by "shell_elements": "shell9" inherited are not in the case.
+            Source::Support(i) if self.spec.promoted.as_ref().is_some_and(|p| i >= p.first_support) => (
+                "shell_elements".to_string(),
+                format!("the support added node {} inherits from the ends of its edge (\"shell_elements\": \"shell9\")", c.node),
+            ),
             Source::Support(i) => (format!("supports[{i}]"), format!("supports[{i}] (node {})", c.node)),
             Source::Prescribed { case, .. } => {
                 let name = self.spec.load_cases.get(case).map(|l| l.name.as_str()).unwrap_or("");

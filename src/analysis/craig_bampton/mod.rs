@@ -77,6 +77,20 @@ pub fn parse(value: Value, base: &crate::case::Source<'_>) -> Result<CraigBampto
         interface,
         modes,
     };
+    // A shell edge on the interface would get a midpoint inside the superelement, so the
+    // host's edge and the superelement's would not match.
+    if let Some(p) = &case.model.promoted {
+        if let Some((m, a, b)) = p
+            .midpoints()
+            .find(|(_, a, b)| case.interface.contains(a) && case.interface.contains(b))
+        {
+            return Err(CaseError::value(
+                "shell_elements",
+                "shell9",
+                format!("the shell edge {a}–{b} lies on the interface and its added midpoint (node {m}) would be an interior node of the superelement, so the superelement's edge would not match its host's: write the shells as `shell9` with their midpoints in `interface`, or keep \"shell_elements\": \"as_given\""),
+            ));
+        }
+    }
     case.check_options().map(|()| case)
 }
 
@@ -218,7 +232,10 @@ fn result(case: &CraigBamptonCase, se: &Superelement, model: &crate::fem::Model)
             .fold(0.0, f64::max)
     });
     CraigBamptonResult {
-        model: "Craig–Bampton (1968): boundary = every equation of the interface nodes (node frames kept), constraint modes plus mass-normalised fixed-interface modes; dense reduction".into(),
+        model: std::iter::once("Craig–Bampton (1968): boundary = every equation of the interface nodes (node frames kept), constraint modes plus mass-normalised fixed-interface modes; dense reduction".to_string())
+            .chain(case.model.promoted.as_ref().map(|p| p.note()))
+            .collect::<Vec<_>>()
+            .join("; "),
         boundary: se
             .boundary
             .iter()

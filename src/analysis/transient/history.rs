@@ -5,7 +5,7 @@ use crate::fem::transient::History;
 use serde::Deserialize;
 
 /// A time history g(t) by `type` (times in s).
-#[derive(Debug, Clone, Deserialize, schemars::JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Deserialize, schemars::JsonSchema)]
 #[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
 pub enum HistorySpec {
     /// 0 before `start` (default 0), 1 from `start` on.

@@ -207,7 +207,7 @@ pub fn parse_transient(value: Value, base: &crate::case::Source<'_>) -> Result<T
     let (o, model) = parse_with_model(value, "transient", &OWN, &["load_cases"], base, |o: &Options| {
         (o.mesh.as_deref(), o.gmsh.as_ref())
     })?;
-    let case = TransientCase {
+    let mut case = TransientCase {
         description: o.description,
         mesh: o.mesh,
         gmsh: o.gmsh,
@@ -224,8 +224,50 @@ pub fn parse_transient(value: Value, base: &crate::case::Source<'_>) -> Result<T
         nonlinear: o.nonlinear,
         model,
     };
+    case.motions.extend(promoted_motions(&case.model, &case.motions)?);
     case.options(case.model.nodes.len())?;
     Ok(case)
+}
+
+/// The motions of the edge midpoints `"shell_elements": "shell9"` added, as their prescribed
+/// displacements in statics ([`crate::case::mesh::promote::midpoint_value`]): the mean of the
+/// ends' amplitudes when both ends move by one history in a DOF, half the amplitude when one
+/// moves and the other is held. Ends moving by different histories are refused (the midpoint
+/// cannot follow both).
+fn promoted_motions(model: &crate::case::mesh::MeshSpec, motions: &[MotionSpec]) -> Result<Vec<MotionSpec>, CaseError> {
+    use crate::case::mesh::promote::{holds, midpoint_value};
+    let Some(p) = &model.promoted else {
+        return Ok(Vec::new());
+    };
+    let supports = &model.supports[..p.first_support];
+    let mut added = Vec::new();
+    for (m, a, b) in p.midpoints() {
+        for (i, mv) in motions.iter().enumerate().filter(|(_, mv)| mv.node == a || mv.node == b) {
+            let other = if mv.node == a { b } else { a };
+            let at_other = motions.iter().position(|o| o.node == other && o.dof == mv.dof);
+            if let Some(j) = at_other {
+                if motions[j].history != mv.history {
+                    return Err(CaseError::new(
+                        format!("motions[{i}]"),
+                        format!("\"shell_elements\": \"shell9\": nodes {a} and {b} move in {} by different histories (`motions[{i}]`, `motions[{j}]`), and the node added at the middle of their shell edge ({m}) cannot follow both: give them one history, or keep \"shell_elements\": \"as_given\"", format!("{:?}", mv.dof).to_lowercase()),
+                    ));
+                }
+                if mv.node != a {
+                    continue; // the pair is taken once, from its `a` end
+                }
+            }
+            let v = midpoint_value(Some(mv.value), at_other.map(|j| motions[j].value), false, holds(supports, other, mv.dof));
+            if let Some(value) = v {
+                added.push(MotionSpec {
+                    node: m,
+                    dof: mv.dof,
+                    value,
+                    history: mv.history.clone(),
+                });
+            }
+        }
+    }
+    Ok(added)
 }
 
 /// What the solver needs from a case, checked.

@@ -11,7 +11,11 @@
 //! - **rigid links**: a midpoint whose two ends belong to one link (as master or slave) becomes a
 //!   slave of it, and a centre whose four corners do;
 //! - **prescribed displacements**: a midpoint whose two ends prescribe one DOF (the same
-//!   `frame`/`axis`) prescribes the mean of the two values (linear along the edge).
+//!   `frame`/`axis`) prescribes the mean of the two values (linear along the edge), and so does
+//!   one whose other end holds that DOF (counted as 0) — [`midpoint_value`]; a transient's
+//!   `motions` alike when both ends share a history.
+//!
+//! An edge that a `shell9` of the model has already keeps that element's midpoint.
 //!
 //! Refused, with the element's JSON path: triangles (`[a, b, c, c]`), warped quadrangles (the
 //! nine-node shell is flat), shells with a node in a `joint` (the ties would have to be
@@ -22,6 +26,7 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 
+use super::load_shapes::DofName;
 use super::shapes::{ElementSpec, MeshSpec, RigidSpec, SupportSpec};
 pub use super::shapes::{Promoted, ShellElements};
 use crate::case::CaseError;
@@ -51,6 +56,14 @@ pub fn promote(spec: &mut MeshSpec) -> Result<(), CaseError> {
         })
         .flatten()
         .collect();
+    // A quadrangle the four-node shell refuses (not convex, zero area, non-finite corners): left
+    // as written, so that the build names what is wrong with it.
+    if quads.iter().any(|(_, q)| {
+        let distinct = q.iter().collect::<BTreeSet<_>>().len() == 4;
+        distinct && crate::fem::shell::shell_geometry(&q.map(|a| spec.nodes[a])).is_none()
+    }) {
+        return Ok(());
+    }
     for &(i, q) in &quads {
         let p = format!("elements[{i}].nodes");
         let distinct: BTreeSet<usize> = q.iter().copied().collect();
@@ -69,8 +82,17 @@ pub fn promote(spec: &mut MeshSpec) -> Result<(), CaseError> {
             ));
         }
     }
-    // Midpoints, edges in the order first met, then centres.
+    // Midpoints, edges in the order first met, then centres; an edge a nine-node shell of the
+    // model has already keeps its midpoint.
     let mut edge_node: BTreeMap<(usize, usize), usize> = BTreeMap::new();
+    for e in &spec.elements {
+        if let ElementSpec::Shell9 { nodes, .. } = e {
+            for k in 0..4 {
+                let (a, b) = (nodes[k], nodes[(k + 1) % 4]);
+                edge_node.insert((a.min(b), a.max(b)), nodes[4 + k]);
+            }
+        }
+    }
     let mut parents: Vec<Vec<usize>> = Vec::new();
     for &(_, q) in &quads {
         for k in 0..4 {
@@ -87,6 +109,7 @@ pub fn promote(spec: &mut MeshSpec) -> Result<(), CaseError> {
         first_node: n,
         parents,
         shells: quads.len(),
+        first_support: spec.supports.len(),
     };
     spec.nodes.resize(n + promoted.parents.len(), [0.0; 3]);
     promoted.place(&mut spec.nodes);
@@ -112,15 +135,35 @@ pub fn promote(spec: &mut MeshSpec) -> Result<(), CaseError> {
             material: material.clone(),
         };
     }
-    inherit(spec, &promoted, &edge_node);
+    inherit(spec, &promoted);
     spec.promoted = Some(promoted);
     Ok(())
 }
 
+/// Whether `node` is held in `dof` by a support without a frame.
+pub fn holds(supports: &[SupportSpec], node: usize, dof: DofName) -> bool {
+    supports
+        .iter()
+        .any(|s| s.node == node && s.frame.is_none() && s.axis.is_none() && s.fix.contains(&dof))
+}
+
+/// The prescribed value of an added edge midpoint in one DOF, from what its ends prescribe
+/// (`a`, `b`: `Some` where prescribed) or hold (`held_a`, `held_b`, as 0): the mean when both
+/// ends are prescribed, or one prescribed and the other held; none otherwise (both held: the
+/// midpoint inherits the support; one free: the midpoint is free).
+pub fn midpoint_value(a: Option<f64>, b: Option<f64>, held_a: bool, held_b: bool) -> Option<f64> {
+    match (a, b) {
+        (Some(x), Some(y)) => Some(0.5 * (x + y)),
+        (Some(x), None) if held_b => Some(0.5 * x),
+        (None, Some(y)) if held_a => Some(0.5 * y),
+        _ => None,
+    }
+}
+
 /// Supports, rigid links and prescribed displacements of the added nodes (module docs).
-fn inherit(spec: &mut MeshSpec, promoted: &Promoted, edge_node: &BTreeMap<(usize, usize), usize>) {
+fn inherit(spec: &mut MeshSpec, promoted: &Promoted) {
     let mut supports = Vec::new();
-    for (&(a, b), &m) in edge_node {
+    for (m, a, b) in promoted.midpoints() {
         for sa in spec.supports.iter().filter(|s| s.node == a) {
             for sb in spec
                 .supports
@@ -176,18 +219,34 @@ fn inherit(spec: &mut MeshSpec, promoted: &Promoted, edge_node: &BTreeMap<(usize
             *slaves = r.slaves;
         }
     }
+    let supports = &spec.supports[..promoted.first_support];
     for c in &mut spec.load_cases {
         let mut added = Vec::new();
-        for (&(a, b), &m) in edge_node {
-            for da in c.displacements.iter().filter(|d| d.node == a) {
-                let same = |d: &&super::DisplacementSpec| {
-                    d.node == b && d.dof == da.dof && d.frame == da.frame && d.axis == da.axis
+        for (m, a, b) in promoted.midpoints() {
+            // Each DOF (and frame) prescribed at either end.
+            for d in c.displacements.iter().filter(|d| d.node == a || d.node == b) {
+                let (other, this_a) = if d.node == a { (b, true) } else { (a, false) };
+                let at_other = c
+                    .displacements
+                    .iter()
+                    .find(|o| o.node == other && o.dof == d.dof && o.frame == d.frame && o.axis == d.axis);
+                // A pair prescribed at both ends is taken once, from its `a` end.
+                if at_other.is_some() && !this_a {
+                    continue;
+                }
+                let global = d.frame.is_none() && d.axis.is_none();
+                let held = global && holds(supports, other, d.dof);
+                let (va, vb) = if this_a {
+                    (Some(d.value), at_other.map(|o| o.value))
+                } else {
+                    (at_other.map(|o| o.value), Some(d.value))
                 };
-                if let Some(db) = c.displacements.iter().find(same) {
-                    let mut d = da.clone();
-                    d.node = m;
-                    d.value = 0.5 * (da.value + db.value);
-                    added.push(d);
+                let (ha, hb) = if this_a { (false, held) } else { (held, false) };
+                if let Some(v) = midpoint_value(va, vb, ha, hb) {
+                    let mut p = d.clone();
+                    p.node = m;
+                    p.value = v;
+                    added.push(p);
                 }
             }
         }

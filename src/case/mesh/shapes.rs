@@ -418,6 +418,9 @@ pub struct Promoted {
     pub parents: Vec<Vec<usize>>,
     /// Number of four-node shells that became nine-node shells.
     pub shells: usize,
+    /// Index of the first support the added nodes inherited (`supports` written in the case
+    /// come before).
+    pub first_support: usize,
 }
 
 impl Promoted {
@@ -434,11 +437,23 @@ impl Promoted {
         }
     }
 
+    /// Each added edge midpoint with the two ends of its edge: (midpoint, a, b).
+    pub fn midpoints(&self) -> impl Iterator<Item = (usize, usize, usize)> + '_ {
+        self.parents
+            .iter()
+            .enumerate()
+            .filter(|(_, ps)| ps.len() == 2)
+            .map(|(k, ps)| (self.first_node + k, ps[0], ps[1]))
+    }
+
     /// The model note of a promoted model.
     pub fn note(&self) -> String {
+        let shells = match self.shells {
+            1 => "the four-node shell was solved as a nine-node shell".to_string(),
+            n => format!("the {n} four-node shells were solved as nine-node shells"),
+        };
         format!(
-            "\"shell_elements\": \"shell9\": the {} four-node shells were solved as nine-node shells on the same corners ({} nodes added, numbered from {}: edge midpoints, then element centres)",
-            self.shells,
+            "\"shell_elements\": \"shell9\": {shells} on the same corners ({} nodes added, numbered from {}: edge midpoints, then element centres)",
             self.parents.len(),
             self.first_node
         )
