@@ -545,6 +545,36 @@ fn prescribed_and_base_motions_reach_the_held_edges_midpoint() {
         err.contains("`motions[0]`") && err.contains("different histories"),
         "{err}"
     );
+    // Supports in a frame (local uy = global uz) at both ends: a settlement or a base motion of
+    // one end in that frame reaches the midpoint as in global axes (it did not: the framed
+    // support held it at 0). Second review.
+    let frame = json!([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]]);
+    let framed = |analysis: &str| {
+        let mut c = one_element(analysis);
+        c["supports"] = json!([0, 2].map(|n| json!({"node": n, "fix": CLAMP, "frame": frame})));
+        c
+    };
+    let mut c = framed("static");
+    c["load_cases"] =
+        json!([{"name": "settle", "displacements": [{"node": 0, "dof": "uy", "value": 1.0, "frame": frame}]}]);
+    let r = run_value(c);
+    let u7 = r["load_cases"][0]["displacements"][7][2].as_f64().unwrap();
+    assert!((u7 - 0.5).abs() < 1e-12, "framed settlement: midpoint uz {u7}");
+    let mut c = framed("transient");
+    transient(&mut c, &[0], 7);
+    c["motions"][0]["dof"] = json!("uy");
+    let r = run_value(c);
+    let peak = r["records"][0]["max"].as_f64().unwrap();
+    assert!((peak - 0.5).abs() < 1e-12, "framed base motion: midpoint peak {peak}");
+    // One end framed, the other not: the midpoint's axes are not defined, so its motion is not.
+    let mut c = one_element("transient");
+    c["supports"][0]["frame"] = frame.clone();
+    transient(&mut c, &[0], 3);
+    c["motions"][0]["dof"] = json!("uy");
+    let o = run_case_text("promote_motion_frames", &c.to_string());
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("`motions[0]`") && err.contains("other axes"), "{err}");
 }
 
 /// A model that has nine-node shells already: a four-node shell beside one keeps the nine-node

@@ -232,32 +232,51 @@ pub fn parse_transient(value: Value, base: &crate::case::Source<'_>) -> Result<T
 /// The motions of the edge midpoints `"shell_elements": "shell9"` added, as their prescribed
 /// displacements in statics ([`crate::case::mesh::promote::midpoint_value`]): the mean of the
 /// ends' amplitudes when both ends move by one history in a DOF, half the amplitude when one
-/// moves and the other is held. Ends moving by different histories are refused (the midpoint
-/// cannot follow both).
+/// moves and the other is held. A motion acts in its node's axes, so the ends and the midpoint
+/// must share them (a framed support at each, or none); refused otherwise, and when the ends
+/// move by different histories (the midpoint cannot follow both).
 fn promoted_motions(model: &crate::case::mesh::MeshSpec, motions: &[MotionSpec]) -> Result<Vec<MotionSpec>, CaseError> {
-    use crate::case::mesh::promote::{holds, midpoint_value};
+    use crate::case::mesh::promote::{holds, midpoint_value, node_axes};
     let Some(p) = &model.promoted else {
         return Ok(Vec::new());
     };
-    let supports = &model.supports[..p.first_support];
+    let own = &model.supports[..p.first_support];
+    let refuse = |i: usize, why: String| {
+        CaseError::new(
+            format!("motions[{i}]"),
+            format!("\"shell_elements\": \"shell9\": {why}: give the edge's nodes one frame and one history, or keep \"shell_elements\": \"as_given\""),
+        )
+    };
     let mut added = Vec::new();
     for (m, a, b) in p.midpoints() {
         for (i, mv) in motions.iter().enumerate().filter(|(_, mv)| mv.node == a || mv.node == b) {
             let other = if mv.node == a { b } else { a };
             let at_other = motions.iter().position(|o| o.node == other && o.dof == mv.dof);
+            let axes = node_axes(own, mv.node);
+            let other_held = own.iter().any(|s| s.node == other && !s.fix.is_empty());
+            if at_other.is_none() && !other_held {
+                continue; // the other end is free: so is the midpoint
+            }
+            let dof = format!("{:?}", mv.dof).to_lowercase();
+            if node_axes(own, other) != axes || node_axes(&model.supports, m) != axes {
+                return Err(refuse(
+                    i,
+                    format!("node {} moves in {dof} of its own axes, and the other end of its shell edge ({other}) or the node added at the edge's middle ({m}) has other axes, so the midpoint's motion is not defined", mv.node),
+                ));
+            }
             if let Some(j) = at_other {
                 if motions[j].history != mv.history {
-                    return Err(CaseError::new(
-                        format!("motions[{i}]"),
-                        format!("\"shell_elements\": \"shell9\": nodes {a} and {b} move in {} by different histories (`motions[{i}]`, `motions[{j}]`), and the node added at the middle of their shell edge ({m}) cannot follow both: give them one history, or keep \"shell_elements\": \"as_given\"", format!("{:?}", mv.dof).to_lowercase()),
+                    return Err(refuse(
+                        i,
+                        format!("nodes {a} and {b} move in {dof} by different histories (`motions[{i}]`, `motions[{j}]`), and the node added at the middle of their shell edge ({m}) cannot follow both"),
                     ));
                 }
                 if mv.node != a {
                     continue; // the pair is taken once, from its `a` end
                 }
             }
-            let v = midpoint_value(Some(mv.value), at_other.map(|j| motions[j].value), false, holds(supports, other, mv.dof));
-            if let Some(value) = v {
+            let held = holds(own, other, mv.dof, axes);
+            if let Some(value) = midpoint_value(Some(mv.value), at_other.map(|j| motions[j].value), false, held) {
                 added.push(MotionSpec {
                     node: m,
                     dof: mv.dof,

@@ -140,11 +140,22 @@ pub fn promote(spec: &mut MeshSpec) -> Result<(), CaseError> {
     Ok(())
 }
 
-/// Whether `node` is held in `dof` by a support without a frame.
-pub fn holds(supports: &[SupportSpec], node: usize, dof: DofName) -> bool {
+/// A node's axes as a support gives them: (`frame`, `axis`), both `None` for global axes.
+pub type Axes = (Option<[[f64; 3]; 3]>, Option<[f64; 3]>);
+
+/// Whether `node` is held in `dof` of the axes `axes` by a support.
+pub fn holds(supports: &[SupportSpec], node: usize, dof: DofName, axes: Axes) -> bool {
     supports
         .iter()
-        .any(|s| s.node == node && s.frame.is_none() && s.axis.is_none() && s.fix.contains(&dof))
+        .any(|s| s.node == node && (s.frame, s.axis) == axes && s.fix.contains(&dof))
+}
+
+/// The axes the supports give `node` (the first framed support's; global without one).
+pub fn node_axes(supports: &[SupportSpec], node: usize) -> Axes {
+    supports
+        .iter()
+        .find(|s| s.node == node && (s.frame.is_some() || s.axis.is_some()))
+        .map_or((None, None), |s| (s.frame, s.axis))
 }
 
 /// The prescribed value of an added edge midpoint in one DOF, from what its ends prescribe
@@ -234,8 +245,7 @@ fn inherit(spec: &mut MeshSpec, promoted: &Promoted) {
                 if at_other.is_some() && !this_a {
                     continue;
                 }
-                let global = d.frame.is_none() && d.axis.is_none();
-                let held = global && holds(supports, other, d.dof);
+                let held = holds(supports, other, d.dof, (d.frame, d.axis));
                 let (va, vb) = if this_a {
                     (Some(d.value), at_other.map(|o| o.value))
                 } else {
