@@ -392,10 +392,7 @@ pub fn read_model(
             merged
                 .build_model(false)
                 .map_err(|e| gmsh::group_error(e, &origin, name))?;
-            if merged.shell_elements == Some(ShellElements::Shell9) {
-                promote::promote(&mut merged).map_err(|e| gmsh::group_error(e, &origin, name))?;
-                limits::check_nodes("shell_elements", merged.nodes.len())?;
-            }
+            promote_asked(&mut merged, |e| gmsh::group_error(e, &origin, name))?;
             merged
         }
         Some(_) | None if gmsh_map.is_some() => {
@@ -421,17 +418,25 @@ pub fn read_model(
         None => inline,
     };
     super::mesh::superelement::load_files(&mut spec, base.dir)?;
-    if spec.shell_elements == Some(ShellElements::Shell9) && spec.promoted.is_none() {
+    if spec.promoted.is_none() {
         let file = spec.mesh_file.clone();
-        promote::promote(&mut spec).map_err(|e| match &file {
+        promote_asked(&mut spec, |e| match &file {
             Some(name) => super::params::in_mesh_file(name, e),
             None => e,
         })?;
-        // The added nodes count against the node limit.
-        limits::check_nodes("shell_elements", spec.nodes.len())?;
     }
     spec.hinge_type_names = base.hinge_types().clone();
     Ok(spec)
+}
+
+/// Promotes the shells of `spec` when it asks for `"shell_elements": "shell9"`, its errors
+/// placed by `place` (a Gmsh group, a mesh file); the added nodes count against the node limit.
+fn promote_asked(spec: &mut MeshSpec, place: impl Fn(CaseError) -> CaseError) -> Result<(), CaseError> {
+    if spec.shell_elements != Some(ShellElements::Shell9) {
+        return Ok(());
+    }
+    promote::promote(spec).map_err(place)?;
+    limits::check_nodes("shell_elements", spec.nodes.len())
 }
 
 /// Refuses a top-level field that a `static` or `modal` case does not take, listing all it does.

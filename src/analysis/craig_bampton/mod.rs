@@ -233,7 +233,7 @@ fn result(case: &CraigBamptonCase, se: &Superelement, model: &crate::fem::Model)
     });
     CraigBamptonResult {
         model: std::iter::once("Craig–Bampton (1968): boundary = every equation of the interface nodes (node frames kept), constraint modes plus mass-normalised fixed-interface modes; dense reduction".to_string())
-            .chain(case.model.promoted.as_ref().map(|p| p.note()))
+            .chain(case.model.promotion_note())
             .collect::<Vec<_>>()
             .join("; "),
         boundary: se

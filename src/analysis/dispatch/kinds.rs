@@ -342,7 +342,7 @@ impl Analysis for Static {
         }
         fem_static::add_headlines(&mut r, &model, &case_index, &hinges);
         r.model.extend(warn::default_segments_note(&hinges));
-        r.model.extend(case.model.promoted.as_ref().map(|p| p.note()));
+        r.model.extend(case.model.promotion_note());
         if case.output.section_forces {
             fem_static::add_beam_forces(&mut r, &model, &raw);
         }
@@ -447,7 +447,7 @@ impl Analysis for Modal {
         let (model, hinges) = case.model.build_with_hinges(false, false)?;
         let (mut r, raw) = modal::solve_with(&model, case.modes, case.shift_hz, ctx.cache)?;
         modal::mark_rigid_body(&model, &raw, &mut r);
-        r.model.extend(case.model.promoted.as_ref().map(|p| p.note()));
+        r.model.extend(case.model.promotion_note());
         if !case.shapes {
             r.modes.iter_mut().for_each(|row| row.shape = None);
         }

@@ -249,7 +249,7 @@ impl Analysis for FrfKind {
     }
     fn run(case: &Self::Case, ctx: &mut Ctx) -> Result<Self::Result, RunError> {
         let (mut r, ss) = run(&validated(case)?, ctx.cache)?;
-        r.model.extend(case.model.promoted.as_ref().map(|p| p.note()));
+        r.model.extend(case.model.promotion_note());
         ctx.warnings.extend(crate::analysis::common::warn::fewer_modes(case.modes, r.modes.len(), None));
         if ctx.with_files {
             ctx.files = files::files(&r, &ss)?;

@@ -102,7 +102,7 @@ impl Shell9Dispersion {
     pub fn new(nu: f64, qh_max: f64) -> Shell9Dispersion {
         let bloch = crate::fem::shell9::Shell9Bloch::new(nu);
         let n = (qh_max.clamp(0.0, SHELL9_TABLE_MAX) / SHELL9_TABLE_STEP).ceil() as usize + 1;
-        let qh = |k: usize| (k as f64 * SHELL9_TABLE_STEP).max(1e-3);
+        let qh = |k: usize| k as f64 * SHELL9_TABLE_STEP;
         let ratio = |a: f64, b: f64| bloch.as_ref().and_then(|e| e.ratio(a, b)).unwrap_or(1.0);
         let d = std::f64::consts::FRAC_1_SQRT_2;
         Shell9Dispersion {
@@ -270,14 +270,15 @@ pub fn coarse_shell_warnings(model: &Model, raw: &ModalResults) -> Vec<String> {
         .map(|(k, e, n)| format!("mode {k}: {n:.1} elements per half-wave, about {:.1} %", 100.0 * e))
         .collect::<Vec<_>>()
         .join("; ");
-    let what = match model.shell_kinds() {
+    let (shell4, shell9) = model.shell_kinds();
+    let what = match (shell4, shell9) {
         (_, false) => "the four-node shell's frequencies can read low by about the figures given ({list}; the element's thin-plate dispersion on a mesh of squares in the worse direction, a wave along a mesh diagonal)",
         (false, true) => "the nine-node shell's frequencies can read high by about the figures given ({list}; the element's thin-plate dispersion on a mesh of squares in the worse of a wave along a mesh line and along a diagonal)",
         (true, true) => "the shells' frequencies can be off by about the figures given ({list}; each element's thin-plate dispersion on a mesh of squares in its worse direction: four-node shells read low, nine-node shells high)",
     }
     .replace("{list}", &list);
     // Flat four-node shells can be solved as nine-node ones on the same mesh, unless they are.
-    let promote = if model.shell_kinds().0 {
+    let promote = if shell4 {
         ", or solve flat four-node shells as nine-node shells on the same corners (`\"shell_elements\": \"shell9\"`)"
     } else {
         ""

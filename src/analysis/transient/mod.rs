@@ -236,7 +236,7 @@ pub fn parse_transient(value: Value, base: &crate::case::Source<'_>) -> Result<T
 /// must share them (a framed support at each, or none); refused otherwise, and when the ends
 /// move by different histories (the midpoint cannot follow both).
 fn promoted_motions(model: &crate::case::mesh::MeshSpec, motions: &[MotionSpec]) -> Result<Vec<MotionSpec>, CaseError> {
-    use crate::case::mesh::promote::{holds, midpoint_value, node_axes};
+    use crate::case::mesh::promote::{edge_prescriptions, holds, midpoint_value, node_axes};
     let Some(p) = &model.promoted else {
         return Ok(Vec::new());
     };
@@ -248,42 +248,35 @@ fn promoted_motions(model: &crate::case::mesh::MeshSpec, motions: &[MotionSpec])
         )
     };
     let mut added = Vec::new();
-    for (m, a, b) in p.midpoints() {
-        for (i, mv) in motions.iter().enumerate().filter(|(_, mv)| mv.node == a || mv.node == b) {
-            let other = if mv.node == a { b } else { a };
-            let at_other = motions.iter().position(|o| o.node == other && o.dof == mv.dof);
-            let axes = node_axes(own, mv.node);
-            let other_held = own.iter().any(|s| s.node == other && !s.fix.is_empty());
-            if at_other.is_none() && !other_held {
-                continue; // the other end is free: so is the midpoint
-            }
-            let dof = format!("{:?}", mv.dof).to_lowercase();
-            if node_axes(own, other) != axes || node_axes(&model.supports, m) != axes {
-                return Err(refuse(
-                    i,
-                    format!("node {} moves in {dof} of its own axes, and the other end of its shell edge ({other}) or the node added at the edge's middle ({m}) has other axes, so the midpoint's motion is not defined", mv.node),
-                ));
-            }
-            if let Some(j) = at_other {
-                if motions[j].history != mv.history {
-                    return Err(refuse(
-                        i,
-                        format!("nodes {a} and {b} move in {dof} by different histories (`motions[{i}]`, `motions[{j}]`), and the node added at the middle of their shell edge ({m}) cannot follow both"),
-                    ));
-                }
-                if mv.node != a {
-                    continue; // the pair is taken once, from its `a` end
-                }
-            }
-            let held = holds(own, other, mv.dof, axes);
-            if let Some(value) = midpoint_value(Some(mv.value), at_other.map(|j| motions[j].value), false, held) {
-                added.push(MotionSpec {
-                    node: m,
-                    dof: mv.dof,
-                    value,
-                    history: mv.history.clone(),
-                });
-            }
+    for e in edge_prescriptions(p, motions.len(), |i| (motions[i].node, motions[i].dof)) {
+        let (i, mv, other, m) = (e.item, &motions[e.item], e.other, e.midpoint);
+        let other_held = own.iter().any(|s| s.node == other && !s.fix.is_empty());
+        if e.paired.is_none() && !other_held {
+            continue; // the other end is free: so is the midpoint
+        }
+        let dof = format!("{:?}", mv.dof).to_lowercase();
+        let axes = node_axes(own, mv.node);
+        if node_axes(own, other) != axes || node_axes(&model.supports, m) != axes {
+            return Err(refuse(
+                i,
+                format!("node {} moves in {dof} of its own axes, and the other end of its shell edge ({other}) or the node added at the edge's middle ({m}) has other axes, so the midpoint's motion is not defined", mv.node),
+            ));
+        }
+        if let Some(j) = e.paired.filter(|&j| motions[j].history != mv.history) {
+            let (a, b) = (mv.node.min(other), mv.node.max(other));
+            return Err(refuse(
+                i,
+                format!("nodes {a} and {b} move in {dof} by different histories (`motions[{i}]`, `motions[{j}]`), and the node added at the middle of their shell edge ({m}) cannot follow both"),
+            ));
+        }
+        let held = holds(own, other, mv.dof, axes);
+        if let Some(value) = midpoint_value(mv.value, e.paired.map(|j| motions[j].value), held) {
+            added.push(MotionSpec {
+                node: m,
+                dof: mv.dof,
+                value,
+                history: mv.history.clone(),
+            });
         }
     }
     Ok(added)
@@ -509,7 +502,7 @@ impl Analysis for TransientKind {
         }
         let mut r = output::result(case, &inputs.opts, &raw);
         let segments = crate::analysis::common::warn::default_segments_note(&hinges);
-        let promoted = case.model.promoted.as_ref().map(|p| p.note());
+        let promoted = case.model.promotion_note();
         for note in crate::fem::superelement::notes(&model).into_iter().chain(segments).chain(promoted) {
             r.model = format!("{}; {note}", r.model);
         }

@@ -175,22 +175,12 @@ pub(super) fn load_case(cx: &mut Ctx, p: &str, c: &LoadCaseSpec) -> Result<fem::
             check::finite(format_args!("{pe}.{name}"), *v)?;
         }
         // A four-node shell's edge, or two corners of a nine-node shell's edge (its midpoint).
-        let mut edge: Option<Option<usize>> = None;
-        for e in &cx.model.elements {
-            match e {
-                fem::Element::Shell4(sh) if (0..4).any(|k| same_edge(sh.nodes[k], sh.nodes[(k + 1) % 4], a, b)) => {
-                    edge = Some(None);
-                    break;
-                }
-                fem::Element::Shell9(sh) => {
-                    if let Some(k) = (0..4).find(|&k| same_edge(sh.nodes[k], sh.nodes[(k + 1) % 4], a, b)) {
-                        edge = Some(Some(sh.nodes[4 + k]));
-                        break;
-                    }
-                }
-                _ => {}
-            }
-        }
+        let on_edge = |nodes: &[usize]| (0..4).find(|&k| same_edge(nodes[k], nodes[(k + 1) % 4], a, b));
+        let edge: Option<Option<usize>> = cx.model.elements.iter().find_map(|e| match e {
+            fem::Element::Shell4(sh) => on_edge(&sh.nodes).map(|_| None),
+            fem::Element::Shell9(sh) => on_edge(&sh.nodes).map(|k| Some(sh.nodes[4 + k])),
+            _ => None,
+        });
         match edge {
             None => {
                 return Err(CaseError::value(

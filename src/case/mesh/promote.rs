@@ -56,14 +56,6 @@ pub fn promote(spec: &mut MeshSpec) -> Result<(), CaseError> {
         })
         .flatten()
         .collect();
-    // A quadrangle the four-node shell refuses (not convex, zero area, non-finite corners): left
-    // as written, so that the build names what is wrong with it.
-    if quads.iter().any(|(_, q)| {
-        let distinct = q.iter().collect::<BTreeSet<_>>().len() == 4;
-        distinct && crate::fem::shell::shell_geometry(&q.map(|a| spec.nodes[a])).is_none()
-    }) {
-        return Ok(());
-    }
     for &(i, q) in &quads {
         let p = format!("elements[{i}].nodes");
         let distinct: BTreeSet<usize> = q.iter().copied().collect();
@@ -81,6 +73,14 @@ pub fn promote(spec: &mut MeshSpec) -> Result<(), CaseError> {
                 format!("\"shell_elements\": \"shell9\": node {a} of this shell is in a `joint`, whose ties are not carried to the nodes added on its edges; join the shells by a rigid link or a beam, or keep \"shell_elements\": \"as_given\""),
             ));
         }
+    }
+    // A quadrangle the four-node shell refuses (not convex, zero area, non-finite corners): left
+    // as written, so that the build names what is wrong with it.
+    if quads
+        .iter()
+        .any(|(_, q)| crate::fem::shell::shell_geometry(&q.map(|a| spec.nodes[a])).is_none())
+    {
+        return Ok(());
     }
     // Midpoints, edges in the order first met, then centres; an edge a nine-node shell of the
     // model has already keeps its midpoint.
@@ -158,17 +158,63 @@ pub fn node_axes(supports: &[SupportSpec], node: usize) -> Axes {
         .map_or((None, None), |s| (s.frame, s.axis))
 }
 
-/// The prescribed value of an added edge midpoint in one DOF, from what its ends prescribe
-/// (`a`, `b`: `Some` where prescribed) or hold (`held_a`, `held_b`, as 0): the mean when both
-/// ends are prescribed, or one prescribed and the other held; none otherwise (both held: the
-/// midpoint inherits the support; one free: the midpoint is free).
-pub fn midpoint_value(a: Option<f64>, b: Option<f64>, held_a: bool, held_b: bool) -> Option<f64> {
-    match (a, b) {
-        (Some(x), Some(y)) => Some(0.5 * (x + y)),
-        (Some(x), None) if held_b => Some(0.5 * x),
-        (None, Some(y)) if held_a => Some(0.5 * y),
-        _ => None,
+/// The prescribed value of an added edge midpoint in one DOF, from the value `this` one end of
+/// its edge prescribes and what the other end does: the mean with the value it prescribes
+/// (`other`), or with 0 where it holds the DOF (`other_held`); none where it is free (the
+/// midpoint is then free too).
+pub fn midpoint_value(this: f64, other: Option<f64>, other_held: bool) -> Option<f64> {
+    match other {
+        Some(y) => Some(0.5 * (this + y)),
+        None => other_held.then_some(0.5 * this),
     }
+}
+
+/// One prescription an added edge midpoint takes from its edge's ends.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct EdgePrescription {
+    /// The added midpoint.
+    pub midpoint: usize,
+    /// The item prescribed at one end of the edge.
+    pub item: usize,
+    /// The other end.
+    pub other: usize,
+    /// The item prescribing the same DOF at the other end, if one does.
+    pub paired: Option<usize>,
+}
+
+/// For each added edge midpoint, the items of `n` (`key(i)`: the node and the DOF an item
+/// prescribes) prescribed at either end of its edge; an item paired with one at the other end
+/// comes once, as the lower index. Shared by the static prescribed displacements and the
+/// transient motions.
+pub fn edge_prescriptions<K: PartialEq>(
+    promoted: &Promoted,
+    n: usize,
+    key: impl Fn(usize) -> (usize, K),
+) -> Vec<EdgePrescription> {
+    let mut out = Vec::new();
+    for (midpoint, a, b) in promoted.midpoints() {
+        for item in 0..n {
+            let (node, dof) = key(item);
+            if node != a && node != b {
+                continue;
+            }
+            let other = if node == a { b } else { a };
+            let paired = (0..n).find(|&j| {
+                let (o, d) = key(j);
+                o == other && d == dof
+            });
+            if paired.is_some_and(|j| j < item) {
+                continue;
+            }
+            out.push(EdgePrescription {
+                midpoint,
+                item,
+                other,
+                paired,
+            });
+        }
+    }
+    out
 }
 
 /// Supports, rigid links and prescribed displacements of the added nodes (module docs).
@@ -232,34 +278,21 @@ fn inherit(spec: &mut MeshSpec, promoted: &Promoted) {
     }
     let supports = &spec.supports[..promoted.first_support];
     for c in &mut spec.load_cases {
-        let mut added = Vec::new();
-        for (m, a, b) in promoted.midpoints() {
-            // Each DOF (and frame) prescribed at either end.
-            for d in c.displacements.iter().filter(|d| d.node == a || d.node == b) {
-                let (other, this_a) = if d.node == a { (b, true) } else { (a, false) };
-                let at_other = c
-                    .displacements
-                    .iter()
-                    .find(|o| o.node == other && o.dof == d.dof && o.frame == d.frame && o.axis == d.axis);
-                // A pair prescribed at both ends is taken once, from its `a` end.
-                if at_other.is_some() && !this_a {
-                    continue;
-                }
-                let held = holds(supports, other, d.dof, (d.frame, d.axis));
-                let (va, vb) = if this_a {
-                    (Some(d.value), at_other.map(|o| o.value))
-                } else {
-                    (at_other.map(|o| o.value), Some(d.value))
-                };
-                let (ha, hb) = if this_a { (false, held) } else { (held, false) };
-                if let Some(v) = midpoint_value(va, vb, ha, hb) {
-                    let mut p = d.clone();
-                    p.node = m;
-                    p.value = v;
-                    added.push(p);
-                }
-            }
-        }
+        let ds = &c.displacements;
+        let added: Vec<_> = edge_prescriptions(promoted, ds.len(), |i| {
+            (ds[i].node, (ds[i].dof, ds[i].frame, ds[i].axis))
+        })
+        .into_iter()
+        .filter_map(|e| {
+            let d = &ds[e.item];
+            let held = holds(supports, e.other, d.dof, (d.frame, d.axis));
+            let value = midpoint_value(d.value, e.paired.map(|j| ds[j].value), held)?;
+            let mut p = d.clone();
+            p.node = e.midpoint;
+            p.value = value;
+            Some(p)
+        })
+        .collect();
         c.displacements.extend(added);
     }
 }

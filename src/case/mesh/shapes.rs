@@ -409,6 +409,13 @@ pub enum ShellElements {
     Shell9,
 }
 
+impl MeshSpec {
+    /// The model note of `"shell_elements": "shell9"`, if the model was promoted.
+    pub fn promotion_note(&self) -> Option<String> {
+        self.promoted.as_ref().map(Promoted::note)
+    }
+}
+
 /// What the promotion added to a model.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Promoted {
